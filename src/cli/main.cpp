@@ -1,0 +1,80 @@
+// The tackle command: a thin shell over the library. Exit codes: 0 ok, 1 input error,
+// 2 usage error, 3 internal error.
+#include <fstream>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "core/diagnostics.hpp"
+#include "pipeline/pipeline.hpp"
+
+namespace {
+
+int report_input_error(const tackle::InputError& e) {
+  for (const auto& d : e.diagnostics()) std::cerr << tackle::format(d) << "\n";
+  return 1;
+}
+
+int emit(const std::string& text, const std::string& out) {
+  if (out.empty() || out == "-") {
+    std::cout << text;
+    return 0;
+  }
+  std::ofstream f(out, std::ios::binary);
+  if (!f) {
+    std::cerr << out << ": cannot write the output file\n";
+    return 1;
+  }
+  f << text;
+  return f ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"tackle: free-body-diagram equations for constrained straight-line motion, solved in closed form"};
+  app.require_subcommand(1);
+  std::string rules_dir = tackle::default_rules_dir();
+  app.add_option("--rules", rules_dir, "Directory of connection rules (rules/*.yaml)")->capture_default_str();
+
+  std::string file, out, format = "text";
+  const std::map<std::string, tackle::Format> formats{{"text", tackle::Format::text},
+                                                     {"latex", tackle::Format::latex},
+                                                     {"markdown", tackle::Format::markdown},
+                                                     {"json", tackle::Format::json}};
+  auto* derive = app.add_subcommand("derive", "Print the derivation: FBD equations, constraints, solve, results");
+  derive->add_option("file", file, "Problem description (YAML)")->required();
+  derive->add_option("--format", format, "Output format")
+      ->check(CLI::IsMember({"text", "latex", "markdown", "json"}))
+      ->capture_default_str();
+  derive->add_option("-o,--output", out, "Write to this file instead of standard output");
+
+  auto* solve = app.add_subcommand("solve", "Print the answers only: closed forms and numbers");
+  solve->add_option("file", file, "Problem description (YAML)")->required();
+  solve->add_option("--format", format, "Output format")
+      ->check(CLI::IsMember({"text", "latex", "markdown", "json"}))
+      ->capture_default_str();
+  solve->add_option("-o,--output", out, "Write to this file instead of standard output");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+
+  try {
+    const tackle::RuleSet rules = tackle::load_rules(rules_dir);
+    const auto analysis = tackle::analyze_file(file, rules);
+    const tackle::Derivation d = tackle::explain(*analysis);
+    return emit(tackle::write(d, formats.at(format), derive->parsed()), out);
+  } catch (const tackle::InputError& e) {
+    return report_input_error(e);
+  } catch (const tackle::InternalError& e) {
+    std::cerr << "tackle: internal error: " << e.what() << "\n";
+    return 3;
+  } catch (const std::exception& e) {
+    std::cerr << "tackle: internal error: " << e.what() << "\n";
+    return 3;
+  }
+}

@@ -1,0 +1,294 @@
+#include "core/units.hpp"
+
+#include <cctype>
+#include <map>
+#include <vector>
+
+namespace tackle {
+
+using GiNaC::numeric;
+
+namespace {
+
+struct Atom {
+  numeric to_si;
+  Dimension dim;
+};
+
+const std::map<std::string, Atom, std::less<>>& atoms() {
+  static const std::map<std::string, Atom, std::less<>> table = {
+      {"kg", {1, Dimension::mass()}},
+      {"g", {numeric(1, 1000), Dimension::mass()}},
+      {"t", {1000, Dimension::mass()}},
+      {"m", {1, Dimension::length()}},
+      {"s", {1, Dimension::time()}},
+      {"min", {60, Dimension::time()}},
+      {"h", {3600, Dimension::time()}},
+      {"N", {1, Dimension::force()}},
+      {"J", {1, Dimension::force() * Dimension::length()}},
+      {"W", {1, Dimension::force() * Dimension::length() / Dimension::time()}},
+      {"Pa", {1, Dimension::force() / Dimension::length().pow(2)}},
+      {"Hz", {1, Dimension::time().pow(-1)}},
+      {"rad", {1, Dimension::none()}},
+      {"1", {1, Dimension::none()}},
+  };
+  return table;
+}
+
+const std::vector<std::pair<std::string, numeric>>& prefixes() {
+  static const std::vector<std::pair<std::string, numeric>> table = {
+      {"G", numeric(1000000000)}, {"M", numeric(1000000)}, {"k", numeric(1000)},
+      {"c", numeric(1, 100)},     {"m", numeric(1, 1000)}, {"u", numeric(1, 1000000)},
+      {"µ", numeric(1, 1000000)}, {"n", numeric(1, 1000000000)},
+  };
+  return table;
+}
+
+std::optional<Atom> find_atom(std::string_view name) {
+  if (auto it = atoms().find(name); it != atoms().end()) return it->second;
+  for (const auto& [p, f] : prefixes()) {
+    if (name.size() > p.size() && name.substr(0, p.size()) == p) {
+      auto it = atoms().find(name.substr(p.size()));
+      // Prefixes go on SI units, not on kg, min, h or a bare number.
+      if (it != atoms().end() && it->first != "kg" && it->first != "min" && it->first != "h" &&
+          it->first != "1")
+        return Atom{f * it->second.to_si, it->second.dim};
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Unit> parse_unit(std::string_view text, std::string& error, int& error_column) {
+  Unit u{1, Dimension::none(), std::string(text)};
+  std::size_t i = 0;
+  int sign = 1;  // +1 after '*' or at start, -1 after '/'
+  bool expect_atom = true;
+  auto skip_space = [&] {
+    while (i < text.size() && text[i] == ' ') ++i;
+  };
+  skip_space();
+  if (i == text.size()) {
+    error = "empty unit";
+    error_column = 0;
+    return std::nullopt;
+  }
+  while (i < text.size()) {
+    skip_space();
+    if (expect_atom) {
+      const std::size_t start = i;
+      while (i < text.size() &&
+             (std::isalnum(static_cast<unsigned char>(text[i])) || static_cast<unsigned char>(text[i]) >= 0x80))
+        ++i;
+      if (start == i) {
+        error = "expected a unit name";
+        error_column = static_cast<int>(start);
+        return std::nullopt;
+      }
+      const std::string_view name = text.substr(start, i - start);
+      auto atom = find_atom(name);
+      if (!atom) {
+        error = "unknown unit '" + std::string(name) + "'";
+        error_column = static_cast<int>(start);
+        return std::nullopt;
+      }
+      int power = 1;
+      if (i < text.size() && text[i] == '^') {
+        ++i;
+        const std::size_t pstart = i;
+        int psign = 1;
+        if (i < text.size() && text[i] == '-') {
+          psign = -1;
+          ++i;
+        }
+        const std::size_t dstart = i;
+        while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+        if (dstart == i || i - dstart > 2) {
+          error = "expected a small integer exponent";
+          error_column = static_cast<int>(pstart);
+          return std::nullopt;
+        }
+        power = psign * std::stoi(std::string(text.substr(dstart, i - dstart)));
+      }
+      const int p = sign * power;
+      u.to_si = u.to_si * atom->to_si.power(p);
+      u.dimension = u.dimension * atom->dim.pow(p);
+      expect_atom = false;
+    } else {
+      if (text[i] == '*' || text[i] == '.') {
+        sign = 1;
+      } else if (text[i] == '/') {
+        sign = -1;
+      } else {
+        error = std::string("unexpected '") + text[i] + "' in unit";
+        error_column = static_cast<int>(i);
+        return std::nullopt;
+      }
+      ++i;
+      expect_atom = true;
+    }
+    skip_space();
+  }
+  if (expect_atom) {
+    error = "unit ends after an operator";
+    error_column = static_cast<int>(text.size());
+    return std::nullopt;
+  }
+  return u;
+}
+
+std::string Dimension::describe() const {
+  static const std::vector<std::pair<Dimension, std::string>> names = {
+      {Dimension::none(), "dimensionless"},
+      {Dimension::mass(), "mass"},
+      {Dimension::length(), "length"},
+      {Dimension::time(), "time"},
+      {Dimension::force(), "force"},
+      {Dimension::velocity(), "velocity"},
+      {Dimension::acceleration(), "acceleration"},
+      {Dimension::force() / Dimension::length(), "stiffness (force per length)"},
+      {Dimension::force() * Dimension::length(), "energy"},
+  };
+  for (const auto& [d, n] : names)
+    if (d == *this) return n;
+  static const char* base[] = {"mass", "length", "time"};
+  std::string s;
+  for (int i = 0; i < 3; ++i) {
+    if (exp[i] == 0) continue;
+    if (!s.empty()) s += " ";
+    s += base[i];
+    if (exp[i] != 1) s += "^" + std::to_string(exp[i]);
+  }
+  return s;
+}
+
+std::optional<Dimension> Dimension::from_name(std::string_view name) {
+  static const std::map<std::string, Dimension, std::less<>> names = {
+      {"dimensionless", Dimension::none()}, {"mass", Dimension::mass()},
+      {"length", Dimension::length()},      {"time", Dimension::time()},
+      {"force", Dimension::force()},        {"velocity", Dimension::velocity()},
+      {"acceleration", Dimension::acceleration()},
+      {"stiffness", Dimension::force() / Dimension::length()},
+      {"energy", Dimension::force() * Dimension::length()},
+  };
+  if (auto it = names.find(name); it != names.end()) return it->second;
+  return std::nullopt;
+}
+
+std::string si_unit_name(const Dimension& d) {
+  static const std::vector<std::pair<Dimension, std::string>> names = {
+      {Dimension::none(), ""},
+      {Dimension::mass(), "kg"},
+      {Dimension::length(), "m"},
+      {Dimension::time(), "s"},
+      {Dimension::force(), "N"},
+      {Dimension::velocity(), "m/s"},
+      {Dimension::acceleration(), "m/s^2"},
+      {Dimension::force() / Dimension::length(), "N/m"},
+      {Dimension::force() * Dimension::length(), "J"},
+      {Dimension::force() * Dimension::length() / Dimension::time(), "W"},
+  };
+  for (const auto& [dim, n] : names)
+    if (dim == d) return n;
+  static const char* base[] = {"kg", "m", "s"};
+  std::string s;
+  for (int i = 0; i < 3; ++i) {
+    if (d.exp[i] == 0) continue;
+    if (!s.empty()) s += "*";
+    s += base[i];
+    if (d.exp[i] != 1) s += "^" + std::to_string(d.exp[i]);
+  }
+  return s;
+}
+
+std::string unit_latex(std::string_view unit_text) {
+  std::string out = "\\mathrm{";
+  for (std::size_t i = 0; i < unit_text.size(); ++i) {
+    const char c = unit_text[i];
+    if (c == '^') {
+      std::size_t j = i + 1;
+      std::string e;
+      if (j < unit_text.size() && unit_text[j] == '-') e += unit_text[j++];
+      while (j < unit_text.size() && std::isdigit(static_cast<unsigned char>(unit_text[j])))
+        e += unit_text[j++];
+      out += "^{" + e + "}";
+      i = j - 1;
+    } else if (c == '*' || c == '.') {
+      out += "\\,";
+    } else {
+      out += c;
+    }
+  }
+  return out + "}";
+}
+
+std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup& lookup,
+                                      std::string& problem) {
+  using namespace GiNaC;
+  if (is_a<numeric>(e)) return Dimension::none();
+  if (is_a<symbol>(e)) return lookup.dimension_of(ex_to<symbol>(e));
+  if (is_a<add>(e)) {
+    std::optional<Dimension> first;
+    for (const auto& term : e) {
+      auto d = dimension_of(term, lookup, problem);
+      if (!d) return std::nullopt;
+      if (!first) {
+        first = d;
+      } else if (!(*first == *d)) {
+        problem = "adds a " + first->describe() + " to a " + d->describe();
+        return std::nullopt;
+      }
+    }
+    return first;
+  }
+  if (is_a<mul>(e)) {
+    Dimension total;
+    for (const auto& f : e) {
+      auto d = dimension_of(f, lookup, problem);
+      if (!d) return std::nullopt;
+      total = total * *d;
+    }
+    return total;
+  }
+  if (is_a<power>(e)) {
+    auto base = dimension_of(e.op(0), lookup, problem);
+    if (!base) return std::nullopt;
+    const ex expo = e.op(1);
+    if (base->exp == Dimension::none().exp) return Dimension::none();
+    if (is_a<numeric>(expo)) {
+      const numeric n = ex_to<numeric>(expo);
+      if (n.is_integer()) return base->pow(n.to_int());
+      if (n.is_rational()) {
+        const int den = n.denom().to_int();
+        Dimension r;
+        for (int i = 0; i < 3; ++i) {
+          if ((base->exp[i] * n.numer().to_int()) % den != 0) {
+            problem = "takes a fractional power of a " + base->describe();
+            return std::nullopt;
+          }
+          r.exp[i] = base->exp[i] * n.numer().to_int() / den;
+        }
+        return r;
+      }
+    }
+    problem = "raises a " + base->describe() + " to a non-numeric power";
+    return std::nullopt;
+  }
+  if (is_a<function>(e)) {
+    // sin, cos, tan, exp, log...: arguments must be dimensionless; abs keeps the dimension.
+    const std::string name = ex_to<function>(e).get_name();
+    auto arg = dimension_of(e.op(0), lookup, problem);
+    if (!arg) return std::nullopt;
+    if (name == "abs") return arg;
+    if (!(*arg == Dimension::none())) {
+      problem = "takes " + name + " of a " + arg->describe();
+      return std::nullopt;
+    }
+    return Dimension::none();
+  }
+  problem = "has a term whose dimension tackle cannot tell";
+  return std::nullopt;
+}
+
+}  // namespace tackle

@@ -1,0 +1,281 @@
+#include "description/description.hpp"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "description/yaml_reader.hpp"
+
+namespace tackle {
+
+const ArgDesc* ConnectionDesc::arg(const std::string& key) const {
+  for (const auto& a : args)
+    if (a.key.text == key) return &a;
+  return nullptr;
+}
+
+namespace {
+
+using yaml::check_map;
+using yaml::scalar;
+using yaml::scalar_list;
+using yaml::where;
+
+struct Reader {
+  const std::string& file;
+  Diagnostics& diags;
+  Description& d;
+
+  std::optional<Text> opt_scalar(const YAML::Node& map, const char* key, const std::string& what) {
+    const YAML::Node n = map[key];
+    if (!n) return std::nullopt;
+    return scalar(n, "'" + std::string(key) + "' of " + what, file, diags);
+  }
+
+  Text key_text(const YAML::Node& key) { return {key.Scalar(), where(key, file)}; }
+
+  void read_parameters(const YAML::Node& n) {
+    if (!n.IsMap()) {
+      diags.error(where(n, file), "'parameters' is " + yaml::kind_name(n) + " (expected a mapping of names)");
+      return;
+    }
+    yaml::check_unique_keys(n, "'parameters'", file, diags);
+    for (const auto& kv : n) {
+      ParameterDesc p;
+      p.name = key_text(kv.first);
+      const std::string what = "parameter '" + p.name.text + "'";
+      const YAML::Node v = kv.second;
+      if (v.IsNull()) {
+        // symbolic only
+      } else if (v.IsScalar()) {
+        p.value = Text{v.Scalar(), where(v, file)};
+      } else if (check_map(v, {"value", "unit", "dimension", "tex", "positive", "description"}, what, file, diags)) {
+        p.value = opt_scalar(v, "value", what);
+        p.unit = opt_scalar(v, "unit", what);
+        p.dimension = opt_scalar(v, "dimension", what);
+        p.tex = opt_scalar(v, "tex", what);
+        if (auto pos = opt_scalar(v, "positive", what)) {
+          if (pos->text == "true")
+            p.positive = true;
+          else if (pos->text == "false")
+            p.positive = false;
+          else
+            diags.error(pos->at, "'positive' of " + what + " is '" + pos->text + "' (expected true or false)");
+        }
+      }
+      d.parameters.push_back(std::move(p));
+    }
+  }
+
+  void read_bodies(const YAML::Node& n) {
+    if (!n.IsMap()) {
+      diags.error(where(n, file), "'bodies' is " + yaml::kind_name(n) + " (expected a mapping of names)");
+      return;
+    }
+    yaml::check_unique_keys(n, "'bodies'", file, diags);
+    for (const auto& kv : n) {
+      BodyDesc b;
+      b.name = key_text(kv.first);
+      const std::string what = "body '" + b.name.text + "'";
+      if (check_map(kv.second, {"mass", "position"}, what, file, diags)) {
+        b.mass = opt_scalar(kv.second, "mass", what);
+        b.position = opt_scalar(kv.second, "position", what);
+        if (!b.position)
+          diags.error(where(kv.second, file), what + " has no 'position' (expected the name of its coordinate, e.g. x_" +
+                                                  b.name.text + ")");
+      }
+      d.bodies.push_back(std::move(b));
+    }
+  }
+
+  void read_points(const YAML::Node& n) {
+    if (!n.IsMap()) {
+      diags.error(where(n, file), "'points' is " + yaml::kind_name(n) + " (expected a mapping of names)");
+      return;
+    }
+    yaml::check_unique_keys(n, "'points'", file, diags);
+    for (const auto& kv : n) {
+      PointDesc p;
+      p.name = key_text(kv.first);
+      const std::string what = "point '" + p.name.text + "'";
+      if (kv.second.IsScalar()) {
+        p.at = Text{kv.second.Scalar(), where(kv.second, file)};
+      } else if (check_map(kv.second, {"at", "on", "offset"}, what, file, diags)) {
+        p.at = opt_scalar(kv.second, "at", what);
+        p.on = opt_scalar(kv.second, "on", what);
+        p.offset = opt_scalar(kv.second, "offset", what);
+        if (p.at && p.on)
+          diags.error(where(kv.second, file), what + " has both 'at' and 'on' (expected a fixed point or a point on a body)");
+        else if (!p.at && !p.on)
+          diags.error(where(kv.second, file), what + " has neither 'at' nor 'on' (expected a fixed position or a body)");
+        if (p.offset && !p.on)
+          diags.error(p.offset->at, "'offset' of " + what + " needs 'on' (an offset is measured from a body)");
+      }
+      d.points.push_back(std::move(p));
+    }
+  }
+
+  // A connection entry: `type` (given, or implied by the section), optional `name`, and
+  // arguments the rule checks later.
+  void read_connection(const YAML::Node& n, const std::optional<std::string>& implied_type,
+                       const std::string& section) {
+    if (!n.IsMap()) {
+      diags.error(where(n, file), "an entry of '" + section + "' is " + yaml::kind_name(n) + " (expected a mapping)");
+      return;
+    }
+    ConnectionDesc c;
+    c.at = where(n, file);
+    std::set<std::string> seen;
+    for (const auto& kv : n) {
+      if (!kv.first.IsScalar()) {
+        diags.error(where(kv.first, file), "a key in an entry of '" + section + "' is not a name");
+        continue;
+      }
+      const std::string key = kv.first.Scalar();
+      if (!seen.insert(key).second) {
+        diags.error(where(kv.first, file), "duplicate key '" + key + "' in an entry of '" + section + "'");
+        continue;
+      }
+      if (key == "type" && !implied_type) {
+        if (auto t = scalar(kv.second, "'type'", file, diags)) c.type = *t;
+      } else if (key == "name") {
+        c.name = scalar(kv.second, "'name'", file, diags);
+      } else {
+        ArgDesc a;
+        a.key = key_text(kv.first);
+        a.is_list = kv.second.IsSequence();
+        if (auto items = scalar_list(kv.second, "'" + key + "'", file, diags)) a.items = *items;
+        c.args.push_back(std::move(a));
+      }
+    }
+    if (implied_type) {
+      c.type = Text{*implied_type, c.at};
+    } else if (c.type.text.empty()) {
+      diags.error(c.at, "a connection has no 'type' (expected a rule name from rules/)");
+      return;
+    }
+    d.connections.push_back(std::move(c));
+  }
+
+  void read_list(const YAML::Node& n, const std::string& section, const std::optional<std::string>& implied) {
+    if (!n.IsSequence()) {
+      diags.error(where(n, file), "'" + section + "' is " + yaml::kind_name(n) + " (expected a list)");
+      return;
+    }
+    for (const auto& item : n) read_connection(item, implied, section);
+  }
+
+  void read_layout(const YAML::Node& n) {
+    if (!n.IsMap()) {
+      diags.error(where(n, file), "'layout' is " + yaml::kind_name(n) + " (expected a mapping of coordinates to numbers)");
+      return;
+    }
+    yaml::check_unique_keys(n, "'layout'", file, diags);
+    for (const auto& kv : n)
+      if (auto v = scalar(kv.second, "layout value of '" + kv.first.Scalar() + "'", file, diags))
+        d.layout.emplace_back(key_text(kv.first), *v);
+  }
+
+  void read_find(const YAML::Node& n) {
+    if (!n.IsSequence()) {
+      diags.error(where(n, file), "'find' is " + yaml::kind_name(n) + " (expected a list of unknowns)");
+      return;
+    }
+    for (const auto& item : n) {
+      FindDesc f;
+      if (item.IsScalar()) {
+        f.name = Text{item.Scalar(), where(item, file)};
+      } else if (check_map(item, {"name", "expr", "tex"}, "an entry of 'find'", file, diags)) {
+        if (auto nm = opt_scalar(item, "name", "an entry of 'find'"))
+          f.name = *nm;
+        else {
+          diags.error(where(item, file), "an entry of 'find' has no 'name'");
+          continue;
+        }
+        f.expr = opt_scalar(item, "expr", "'" + f.name.text + "' in 'find'");
+        f.tex = opt_scalar(item, "tex", "'" + f.name.text + "' in 'find'");
+      } else {
+        continue;
+      }
+      d.find.push_back(std::move(f));
+    }
+  }
+
+  void read_derive(const YAML::Node& n) {
+    if (!n.IsSequence()) {
+      diags.error(where(n, file), "'derive' is " + yaml::kind_name(n) + " (expected a list of balances)");
+      return;
+    }
+    for (const auto& item : n) {
+      if (!check_map(item, {"lmb", "constraint"}, "an entry of 'derive'", file, diags)) continue;
+      if (item.size() != 1) {
+        diags.error(where(item, file), "an entry of 'derive' has " + std::to_string(item.size()) +
+                                           " keys (expected one: lmb or constraint)");
+        continue;
+      }
+      const auto kv = *item.begin();
+      DeriveDesc dd;
+      dd.kind = key_text(kv.first);
+      dd.is_list = kv.second.IsSequence();
+      if (auto items = scalar_list(kv.second, "'" + dd.kind.text + "'", file, diags)) dd.items = *items;
+      if (dd.is_list && dd.items.empty()) {
+        diags.error(where(kv.second, file), "'" + dd.kind.text + "' lists no bodies (expected at least one)");
+        continue;
+      }
+      d.derive.push_back(std::move(dd));
+    }
+  }
+};
+
+}  // namespace
+
+Description parse_description(const std::string& text, const std::string& file) {
+  Diagnostics diags;
+  Description d;
+  d.file = file;
+  const YAML::Node root = yaml::load(text, file, diags);
+  if (!diags.empty()) diags.throw_if_any();
+  if (!root.IsMap()) {
+    diags.error({file, 1, 1}, "the description is " + yaml::kind_name(root) + " (expected a mapping with title, bodies, ...)");
+    diags.throw_if_any();
+  }
+  Reader r{file, diags, d};
+  check_map(root,
+            {"title", "source", "axes", "parameters", "gravity", "bodies", "points", "connections", "loads",
+             "strings", "layout", "given", "find", "derive", "expected", "notes"},
+            "the description", file, diags);
+  if (auto t = root["title"]) {
+    if (auto s = scalar(t, "'title'", file, diags)) d.title = *s;
+  } else {
+    diags.error({file, 1, 1}, "the description has no 'title' (expected a one-line title)");
+  }
+  if (auto a = root["axes"]) {
+    if (auto items = scalar_list(a, "'axes'", file, diags)) d.axes = *items;
+  }
+  if (auto p = root["parameters"]) r.read_parameters(p);
+  if (auto g = root["gravity"]) d.gravity = scalar(g, "'gravity'", file, diags);
+  if (auto b = root["bodies"]) r.read_bodies(b);
+  else diags.error({file, 1, 1}, "the description has no 'bodies' (expected at least one body)");
+  if (auto p = root["points"]) r.read_points(p);
+  if (auto c = root["connections"]) r.read_list(c, "connections", std::nullopt);
+  if (auto l = root["loads"]) r.read_list(l, "loads", std::string("force"));
+  if (auto s = root["strings"]) r.read_list(s, "strings", std::string("string"));
+  if (auto l = root["layout"]) r.read_layout(l);
+  if (auto g = root["given"]) {
+    if (auto items = scalar_list(g, "'given'", file, diags)) d.given = *items;
+  }
+  if (auto f = root["find"]) r.read_find(f);
+  if (auto dv = root["derive"]) r.read_derive(dv);
+  diags.throw_if_any();
+  return d;
+}
+
+Description read_description(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({{{path, 0, 0}, "cannot read the file"}});
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return parse_description(ss.str(), path);
+}
+
+}  // namespace tackle

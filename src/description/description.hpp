@@ -1,0 +1,89 @@
+// The description of a problem as the user wrote it: plain data with locations, no GiNaC.
+// Expressions stay text here; the model stage parses them against the problem's names.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/diagnostics.hpp"
+
+namespace tackle {
+
+/// A scalar as written, with where it was written.
+struct Text {
+  std::string text;
+  Location at;
+};
+
+struct ParameterDesc {
+  Text name;
+  std::optional<Text> value;      // an expression in numbers (exact: 9.81 is 981/100)
+  std::optional<Text> unit;       // unit of value, e.g. "m/s^2"
+  std::optional<Text> dimension;  // "force", "mass", ... when there is no unit
+  std::optional<Text> tex;        // TeX name, e.g. "\mu_{k}"
+  std::optional<bool> positive;   // default: true for masses, lengths and g
+};
+
+struct BodyDesc {
+  Text name;
+  std::optional<Text> mass;      // expression; 0 for an ideal pulley block
+  std::optional<Text> position;  // the body's coordinate along the axis (a new name)
+};
+
+struct PointDesc {
+  Text name;
+  std::optional<Text> at;      // fixed point: position expression
+  std::optional<Text> on;      // point on a body
+  std::optional<Text> offset;  // with `on`: constant offset from the body's coordinate
+};
+
+/// An argument of a connection: a scalar or a list of scalars.
+struct ArgDesc {
+  Text key;
+  std::vector<Text> items;  // one item for a scalar
+  bool is_list = false;
+};
+
+struct ConnectionDesc {
+  Text type;
+  std::optional<Text> name;
+  std::vector<ArgDesc> args;  // everything but type and name
+  Location at;
+  [[nodiscard]] const ArgDesc* arg(const std::string& key) const;
+};
+
+struct FindDesc {
+  Text name;                 // unknown name, e.g. ddot(x_A), or a new name for `expr`
+  std::optional<Text> expr;  // a quantity defined from the unknowns, e.g. F/ddot(x_B)
+  std::optional<Text> tex;
+};
+
+struct DeriveDesc {
+  Text kind;                // lmb | constraint
+  std::vector<Text> items;  // bodies (lmb), or a connection name (constraint)
+  bool is_list = false;     // lmb over a list: one balance for the system of those bodies
+};
+
+struct Description {
+  std::string file;
+  Text title;
+  std::vector<Text> axes;
+  std::vector<ParameterDesc> parameters;
+  std::optional<Text> gravity;
+  std::vector<BodyDesc> bodies;
+  std::vector<PointDesc> points;
+  std::vector<ConnectionDesc> connections;  // `loads` and `strings` entries land here too
+  std::vector<std::pair<Text, Text>> layout;
+  std::vector<Text> given;
+  std::vector<FindDesc> find;
+  std::vector<DeriveDesc> derive;  // empty: tackle chooses a complete set
+};
+
+/// Reads a description; every problem in the file is reported at once (InputError).
+[[nodiscard]] Description read_description(const std::string& path);
+/// The same from text already in memory; `file` names it in messages.
+[[nodiscard]] Description parse_description(const std::string& text, const std::string& file);
+
+}  // namespace tackle

@@ -1,0 +1,44 @@
+// The EquationSystem: labelled equations with provenance. Linear momentum balance for each
+// body (or a chosen system of bodies), and for each constraint its quantity, differentiated
+// once and twice in time. Only the acceleration-level equations enter the solve; the
+// quantity and its rate are kept for the derivation.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "model/model.hpp"
+
+namespace tackle {
+
+struct Equation {
+  enum class Kind { lmb, constraint_acceleration } kind;
+  std::string label;                // "LMB A (x)", "string s: acceleration"
+  GiNaC::ex lhs, rhs;
+  std::vector<std::string> sources; // where each term of the lhs comes from
+  std::vector<GiNaC::ex> terms;     // the lhs terms, one per source
+};
+
+/// A constraint as the derivation shows it: the constant quantity, its rate, its acceleration.
+struct ConstraintSteps {
+  std::string label;
+  std::string meaning;
+  GiNaC::ex quantity;
+  GiNaC::ex rate;          // d/dt of the quantity (= 0)
+  GiNaC::ex acceleration;  // d2/dt2 of the quantity (= 0)
+};
+
+struct EquationSystem {
+  std::vector<Equation> equations;         // what is solved
+  std::vector<ConstraintSteps> constraints;
+  std::vector<GiNaC::ex> unknowns;         // candidates that appear in the equations, in order
+};
+
+/// d/dt of an expression in the model's coordinates and rates (chain rule).
+[[nodiscard]] GiNaC::ex time_derivative(const GiNaC::ex& e, const Model& m);
+
+[[nodiscard]] EquationSystem build_equations(const Model& m);
+
+}  // namespace tackle

@@ -1,0 +1,350 @@
+#include "expr/parse.hpp"
+
+#include <cctype>
+
+#include "core/diagnostics.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+
+namespace {
+
+enum class Tok { number, name, op, lparen, rparen, comma, end };
+
+struct Token {
+  Tok kind;
+  std::string text;
+  int column;
+};
+
+bool is_name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
+bool is_name_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+}
+
+struct Failure {
+  ParseProblem problem;
+};
+
+class Parser {
+ public:
+  Parser(std::string_view text, const NameResolver& names, const ExprLimits& limits)
+      : text_(text), names_(names), limits_(limits) {}
+
+  ex parse_all() {
+    tokenize();
+    ex e = sum();
+    if (peek().kind != Tok::end) fail(peek().column, "unexpected '" + peek().text + "'");
+    return e;
+  }
+
+  // For relations: parse a sum, stop at a relational operator.
+  void tokenize_only() { tokenize(); }
+  ex sum_only() { return sum(); }
+  const Token& peek() const { return tokens_[pos_]; }
+  void advance() { ++pos_; }
+
+  [[noreturn]] void fail(int column, std::string message) {
+    throw Failure{{column, std::move(message)}};
+  }
+
+ private:
+  void tokenize() {
+    if (text_.size() > limits_.max_length)
+      fail(0, "expression is too long (" + std::to_string(text_.size()) + " characters; at most " +
+                  std::to_string(limits_.max_length) + ")");
+    std::size_t i = 0;
+    while (i < text_.size()) {
+      const char c = text_[i];
+      const int col = static_cast<int>(i);
+      if (c == ' ' || c == '\t') {
+        ++i;
+        continue;
+      }
+      if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && i + 1 < text_.size() &&
+                                                          std::isdigit(static_cast<unsigned char>(text_[i + 1])))) {
+        std::size_t j = i;
+        while (j < text_.size() && std::isdigit(static_cast<unsigned char>(text_[j]))) ++j;
+        if (j < text_.size() && text_[j] == '.') {
+          ++j;
+          while (j < text_.size() && std::isdigit(static_cast<unsigned char>(text_[j]))) ++j;
+        }
+        if (j < text_.size() && (text_[j] == 'e' || text_[j] == 'E')) {
+          std::size_t k = j + 1;
+          if (k < text_.size() && (text_[k] == '+' || text_[k] == '-')) ++k;
+          if (k < text_.size() && std::isdigit(static_cast<unsigned char>(text_[k]))) {
+            while (k < text_.size() && std::isdigit(static_cast<unsigned char>(text_[k]))) ++k;
+            j = k;
+          }
+        }
+        push(Tok::number, text_.substr(i, j - i), col);
+        i = j;
+        continue;
+      }
+      if (is_name_start(c)) {
+        std::size_t j = i;
+        while (j < text_.size() && is_name_char(text_[j])) ++j;
+        push(Tok::name, text_.substr(i, j - i), col);
+        i = j;
+        continue;
+      }
+      switch (c) {
+        case '+': case '-': case '*': case '/': case '^':
+          push(Tok::op, text_.substr(i, 1), col);
+          ++i;
+          continue;
+        case '>': case '<': case '=': {
+          std::size_t len = (i + 1 < text_.size() && text_[i + 1] == '=') ? 2 : 1;
+          push(Tok::op, text_.substr(i, len), col);
+          i += len;
+          continue;
+        }
+        case '(': push(Tok::lparen, "(", col); ++i; continue;
+        case ')': push(Tok::rparen, ")", col); ++i; continue;
+        case ',': push(Tok::comma, ",", col); ++i; continue;
+        default: break;
+      }
+      fail(col, std::string("unexpected character '") + c + "'");
+    }
+    tokens_.push_back({Tok::end, "end of expression", static_cast<int>(text_.size())});
+  }
+
+  void push(Tok kind, std::string_view text, int col) {
+    if (tokens_.size() >= limits_.max_tokens)
+      fail(col, "expression has too many tokens (at most " + std::to_string(limits_.max_tokens) + ")");
+    tokens_.push_back({kind, std::string(text), col});
+  }
+
+  struct DepthGuard {
+    Parser& p;
+    DepthGuard(Parser& parser, int column) : p(parser) {
+      if (++p.depth_ > p.limits_.max_depth)
+        p.fail(column, "expression is nested too deeply (at most " +
+                           std::to_string(p.limits_.max_depth) + " levels)");
+    }
+    ~DepthGuard() { --p.depth_; }
+  };
+
+  bool at_op(std::string_view op) const { return peek().kind == Tok::op && peek().text == op; }
+
+  ex sum() {
+    ex e = product();
+    while (at_op("+") || at_op("-")) {
+      const bool minus = peek().text == "-";
+      advance();
+      ex rhs = product();
+      e = minus ? e - rhs : e + rhs;
+    }
+    return e;
+  }
+
+  ex product() {
+    ex e = unary();
+    while (true) {
+      if (at_op("*") || at_op("/")) {
+        const bool divide = peek().text == "/";
+        const int col = peek().column;
+        advance();
+        ex rhs = unary();
+        if (divide) {
+          if (rhs.is_zero()) fail(col, "division by zero");
+          e = e / rhs;
+        } else {
+          e = e * rhs;
+        }
+      } else if (peek().kind == Tok::number || peek().kind == Tok::name || peek().kind == Tok::lparen) {
+        fail(peek().column, "missing '*' before '" + peek().text + "'");
+      } else {
+        return e;
+      }
+    }
+  }
+
+  ex unary() {
+    if (at_op("-") || at_op("+")) {
+      const bool minus = peek().text == "-";
+      DepthGuard guard(*this, peek().column);
+      advance();
+      ex e = unary();
+      return minus ? -e : e;
+    }
+    return power_();
+  }
+
+  ex power_() {
+    ex base = primary();
+    if (!at_op("^")) return base;
+    const int col = peek().column;
+    DepthGuard guard(*this, col);
+    advance();
+    ex expo = unary();
+    if (is_a<numeric>(expo)) {
+      const numeric n = ex_to<numeric>(expo);
+      if (!n.is_rational()) fail(col, "exponent must be a rational number");
+      if (abs(n.numer()) > limits_.max_exponent || n.denom() > limits_.max_exponent)
+        fail(col, "exponent is too large (at most " + std::to_string(limits_.max_exponent) + ")");
+      if (base.is_zero() && n.is_negative()) fail(col, "division by zero");
+      if (is_a<numeric>(base)) {
+        // Bound the size of the number the power would make (in bits) before making it.
+        const numeric b = ex_to<numeric>(base);
+        const long bits = b.is_rational() ? b.numer().int_length() + b.denom().int_length() : 64;
+        if (bits * std::abs(n.numer().to_long()) > 16384) fail(col, "number is too large");
+      }
+    }
+    return pow(base, expo);
+  }
+
+  ex number(const Token& t) {
+    std::size_t digits = 0;
+    for (char c : t.text)
+      if (std::isdigit(static_cast<unsigned char>(c))) ++digits;
+    if (digits > limits_.max_number_digits)
+      fail(t.column, "number has too many digits (at most " +
+                         std::to_string(limits_.max_number_digits) + ")");
+    // Exact: mantissa digits over a power of ten, times 10^exponent.
+    std::string mant = t.text;
+    long exp10 = 0;
+    if (auto e = mant.find_first_of("eE"); e != std::string::npos) {
+      const std::string es = mant.substr(e + 1);
+      mant = mant.substr(0, e);
+      if (es.size() > 4) fail(t.column, "number exponent is too large");
+      exp10 = std::stol(es);
+      if (exp10 > 30 || exp10 < -30) fail(t.column, "number exponent is too large (at most 30)");
+    }
+    std::string intdigits = mant;
+    if (auto dot = mant.find('.'); dot != std::string::npos) {
+      intdigits = mant.substr(0, dot) + mant.substr(dot + 1);
+      exp10 -= static_cast<long>(mant.size() - dot - 1);
+    }
+    if (intdigits.empty()) intdigits = "0";
+    numeric value(intdigits.c_str());
+    return value * GiNaC::pow(numeric(10), numeric(exp10));
+  }
+
+  ex call(const Token& name) {
+    DepthGuard guard(*this, name.column);
+    advance();  // '('
+    std::vector<ex> args;
+    std::vector<Token> first_tokens;
+    if (peek().kind != Tok::rparen) {
+      while (true) {
+        first_tokens.push_back(peek());
+        args.push_back(sum());
+        if (peek().kind == Tok::comma) {
+          advance();
+          continue;
+        }
+        break;
+      }
+    }
+    if (peek().kind != Tok::rparen) fail(peek().column, "expected ')' to close '" + name.text + "('");
+    advance();
+    const std::string& f = name.text;
+    auto one_arg = [&] {
+      if (args.size() != 1) fail(name.column, "'" + f + "' takes one argument");
+      return args[0];
+    };
+    if (f == "dot" || f == "ddot") {
+      if (args.size() != 1 || first_tokens[0].kind != Tok::name || !is_a<symbol>(args[0]))
+        fail(name.column, "'" + f + "' takes the name of a coordinate, as in " + f + "(x_A)");
+      const std::string key = f + "(" + first_tokens[0].text + ")";
+      if (auto r = names_.resolve(key)) return *r;
+      fail(name.column, "'" + first_tokens[0].text + "' is not a coordinate, so '" + key + "' is not defined");
+    }
+    if (f == "sqrt") return sqrt(one_arg());
+    if (f == "abs") return abs(one_arg());
+    if (f == "sin") return sin(one_arg());
+    if (f == "cos") return cos(one_arg());
+    if (f == "tan") return tan(one_arg());
+    if (f == "exp") return exp(one_arg());
+    if (f == "log") return log(one_arg());
+    fail(name.column, "unknown function '" + f + "' (known: sqrt, abs, sin, cos, tan, exp, log, dot, ddot)");
+  }
+
+  ex primary() {
+    const Token t = peek();
+    switch (t.kind) {
+      case Tok::number:
+        advance();
+        return number(t);
+      case Tok::name: {
+        advance();
+        if (peek().kind == Tok::lparen) {
+          --pos_;
+          const Token name = t;
+          advance();
+          return call(name);
+        }
+        if (auto r = names_.resolve(t.text)) return *r;
+        std::string msg = "unknown name '" + t.text + "'";
+        const auto known = names_.known_names();
+        if (auto near = nearest(t.text, known); !near.empty()) msg += " (did you mean '" + near + "'?)";
+        fail(t.column, msg);
+      }
+      case Tok::lparen: {
+        DepthGuard guard(*this, t.column);
+        advance();
+        ex e = sum();
+        if (peek().kind != Tok::rparen) fail(peek().column, "expected ')' to close the '(' at column " +
+                                                              std::to_string(t.column + 1));
+        advance();
+        return e;
+      }
+      case Tok::end:
+        fail(t.column, "expression ends too early");
+      default:
+        fail(t.column, "unexpected '" + t.text + "'");
+    }
+  }
+
+  std::string_view text_;
+  const NameResolver& names_;
+  const ExprLimits& limits_;
+  std::vector<Token> tokens_;
+  std::size_t pos_ = 0;
+  std::size_t depth_ = 0;
+};
+
+}  // namespace
+
+ParseResult parse_expression(std::string_view text, const NameResolver& names, const ExprLimits& limits) {
+  try {
+    Parser p(text, names, limits);
+    return {p.parse_all(), {}};
+  } catch (const Failure& f) {
+    return {std::nullopt, {f.problem}};
+  } catch (const std::exception& e) {
+    // GiNaC arithmetic errors (for example 0^0) are input problems too.
+    return {std::nullopt, {{0, std::string("cannot evaluate: ") + e.what()}}};
+  }
+}
+
+RelationResult parse_relation(std::string_view text, const NameResolver& names, const ExprLimits& limits) {
+  try {
+    Parser p(text, names, limits);
+    p.tokenize_only();
+    ex lhs = p.sum_only();
+    const Token op = p.peek();
+    if (op.kind != Tok::op || (op.text != ">=" && op.text != "<=" && op.text != ">" && op.text != "<" &&
+                               op.text != "=" && op.text != "=="))
+      p.fail(op.column, "expected a relation such as 'T >= 0'");
+    p.advance();
+    ex rhs = p.sum_only();
+    if (p.peek().kind != Tok::end) p.fail(p.peek().column, "unexpected '" + p.peek().text + "'");
+    return {ParsedRelation{lhs, rhs, op.text == "==" ? "=" : op.text}, {}};
+  } catch (const Failure& f) {
+    return {std::nullopt, {f.problem}};
+  } catch (const std::exception& e) {
+    return {std::nullopt, {{0, std::string("cannot evaluate: ") + e.what()}}};
+  }
+}
+
+bool is_identifier(std::string_view name) {
+  if (name.empty() || !is_name_start(name[0])) return false;
+  for (char c : name)
+    if (!is_name_char(c)) return false;
+  return true;
+}
+
+}  // namespace tackle

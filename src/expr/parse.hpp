@@ -1,0 +1,64 @@
+// A strict expression parser over a problem's own names. Every limit (length, tokens,
+// nesting, exponent size, number size) is checked before the GiNaC object that would
+// exceed it exists. Decimals become exact rationals: `9.81` is 981/100.
+//
+// Grammar (no implicit multiplication):
+//   sum     := product (('+' | '-') product)*
+//   product := unary (('*' | '/') unary)*
+//   unary   := ('+' | '-') unary | power
+//   power   := primary ('^' unary)?            right associative
+//   primary := number | name | name '(' args ')' | '(' sum ')'
+// `dot(q)` and `ddot(q)` name the rate and acceleration symbols of a coordinate q; `sqrt`,
+// `abs`, `sin`, `cos`, `tan`, `exp`, `log` are the functions.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "core/limits.hpp"
+
+namespace tackle {
+
+/// Resolves names to expressions: a parameter, a coordinate, `ddot(x_A)`, a local name.
+class NameResolver {
+ public:
+  virtual ~NameResolver() = default;
+  [[nodiscard]] virtual std::optional<GiNaC::ex> resolve(std::string_view name) const = 0;
+  /// Every name it knows, for "did you mean" suggestions.
+  [[nodiscard]] virtual std::vector<std::string> known_names() const = 0;
+};
+
+struct ParseProblem {
+  int column = 0;  // 0-based offset within the text
+  std::string message;
+};
+
+struct ParseResult {
+  std::optional<GiNaC::ex> value;
+  std::vector<ParseProblem> problems;  // empty when value is set
+};
+
+[[nodiscard]] ParseResult parse_expression(std::string_view text, const NameResolver& names,
+                                           const ExprLimits& limits = {});
+
+/// A relation `lhs OP rhs` with OP one of `>=`, `<=`, `>`, `<`, `=`; used by validity rules and
+/// equation answers.
+struct ParsedRelation {
+  GiNaC::ex lhs, rhs;
+  std::string op;
+};
+struct RelationResult {
+  std::optional<ParsedRelation> value;
+  std::vector<ParseProblem> problems;
+};
+[[nodiscard]] RelationResult parse_relation(std::string_view text, const NameResolver& names,
+                                            const ExprLimits& limits = {});
+
+/// True for names the parser accepts as a plain identifier: a letter, then letters, digits, `_`.
+[[nodiscard]] bool is_identifier(std::string_view name);
+
+}  // namespace tackle

@@ -1,0 +1,279 @@
+#include "expr/print.hpp"
+
+#include <algorithm>
+#include <sstream>
+#include <vector>
+
+namespace tackle {
+
+using namespace GiNaC;
+
+tackle_text::tackle_text() : print_dflt(std::cout) {}
+tackle_latex::tackle_latex() : print_latex(std::cout) {}
+GINAC_IMPLEMENT_PRINT_CONTEXT(tackle_text, print_dflt)
+GINAC_IMPLEMENT_PRINT_CONTEXT(tackle_latex, print_latex)
+
+namespace {
+
+constexpr unsigned add_prec = 40, mul_prec = 50, pow_prec = 60;
+
+bool latex_ctx(const print_context& c) { return dynamic_cast<const print_latex*>(&c) != nullptr; }
+
+std::string render(const ex& e, const print_context& like, unsigned level = 0) {
+  std::ostringstream os;
+  if (latex_ctx(like)) {
+    tackle_latex c(os);
+    e.print(c, level);
+  } else {
+    tackle_text c(os);
+    e.print(c, level);
+  }
+  return os.str();
+}
+
+// Sort key: the text form of an expression with its numeric coefficient removed.
+std::string key_of(const ex& e) {
+  if (is_a<numeric>(e)) return "~";  // numbers after names in sums
+  if (is_a<mul>(e)) {
+    ex rest = 1;
+    for (const auto& f : e)
+      if (!is_a<numeric>(f)) rest *= f;
+    std::ostringstream os;
+    tackle_text t(os);
+    rest.print(t);
+    return os.str();
+  }
+  std::ostringstream os;
+  tackle_text t(os);
+  e.print(t);
+  return os.str();
+}
+
+numeric coefficient(const ex& e) {
+  if (is_a<numeric>(e)) return ex_to<numeric>(e);
+  if (is_a<mul>(e)) {
+    numeric c = 1;
+    for (const auto& f : e)
+      if (is_a<numeric>(f)) c *= ex_to<numeric>(f);
+    return c;
+  }
+  return 1;
+}
+
+bool is_negative_term(const ex& e) {
+  const numeric c = coefficient(e);
+  return c.is_real() && c.is_negative();
+}
+
+void print_number(const numeric& n, const print_context& c, unsigned level) {
+  std::ostream& os = c.s;
+  const bool latex = latex_ctx(c);
+  if (!n.is_rational()) {
+    // Floating point or complex: GiNaC's own form.
+    n.print(print_dflt(os), level);
+    return;
+  }
+  const bool neg = n.is_negative();
+  const numeric a = abs(n);
+  const bool paren = neg && level > add_prec;
+  if (paren) os << (latex ? "\\left(" : "(");
+  if (neg) os << "-";
+  if (a.is_integer()) {
+    os << a.numer();
+  } else if (latex) {
+    os << "\\frac{" << a.numer() << "}{" << a.denom() << "}";
+  } else {
+    if (level >= mul_prec && !paren) os << "(";
+    os << a.numer() << "/" << a.denom();
+    if (level >= mul_prec && !paren) os << ")";
+  }
+  if (paren) os << (latex ? "\\right)" : ")");
+}
+
+void print_numeric_fn(const numeric& n, const print_context& c, unsigned level) { print_number(n, c, level); }
+
+void print_add(const add& s, const print_context& c, unsigned level) {
+  const bool latex = latex_ctx(c);
+  std::vector<ex> pos, neg;
+  for (std::size_t i = 0; i < s.nops(); ++i) (is_negative_term(s.op(i)) ? neg : pos).push_back(s.op(i));
+  auto by_key = [](const ex& a, const ex& b) {
+    const std::string ka = key_of(a), kb = key_of(b);
+    if (ka != kb) return ka < kb;
+    return render(a, tackle_text(std::cout)) < render(b, tackle_text(std::cout));
+  };
+  std::sort(pos.begin(), pos.end(), by_key);
+  std::sort(neg.begin(), neg.end(), by_key);
+  std::ostream& os = c.s;
+  const bool paren = level >= add_prec;
+  if (paren) os << (latex ? "\\left(" : "(");
+  bool first = true;
+  for (const auto& t : pos) {
+    if (!first) os << " + ";
+    os << render(t, c, add_prec);
+    first = false;
+  }
+  for (const auto& t : neg) {
+    os << (first ? "-" : " - ");
+    os << render(-t, c, add_prec);
+    first = false;
+  }
+  if (paren) os << (latex ? "\\right)" : ")");
+}
+
+// Splits a product into |coefficient|, numerator factors and denominator factors.
+struct Fraction {
+  bool negative = false;
+  numeric num_c = 1, den_c = 1;
+  std::vector<ex> num, den;
+};
+
+Fraction split(const ex& e) {
+  Fraction f;
+  auto factor = [&](const ex& x) {
+    if (is_a<numeric>(x)) {
+      const numeric n = ex_to<numeric>(x);
+      if (n.is_rational()) {
+        if (n.is_negative()) f.negative = !f.negative;
+        f.num_c *= abs(n).numer();
+        f.den_c *= abs(n).denom();
+      } else {
+        f.num.push_back(x);
+      }
+    } else if (is_a<power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_negative()) {
+      f.den.push_back(pow(x.op(0), -x.op(1)));
+    } else {
+      f.num.push_back(x);
+    }
+  };
+  if (is_a<mul>(e))
+    for (const auto& x : e) factor(x);
+  else
+    factor(e);
+  // Factors: plain names first (m_A), then rates and accelerations (ddot(x_A)), then the rest.
+  auto rank = [](const ex& x) {
+    const ex base = is_a<power>(x) ? x.op(0) : x;
+    if (is_a<symbol>(base)) return ex_to<symbol>(base).get_name().find('(') == std::string::npos ? 0 : 1;
+    return 2;
+  };
+  auto by_key = [&](const ex& a, const ex& b) {
+    const int ra = rank(a), rb = rank(b);
+    if (ra != rb) return ra < rb;
+    return key_of(a) < key_of(b);
+  };
+  std::sort(f.num.begin(), f.num.end(), by_key);
+  std::sort(f.den.begin(), f.den.end(), by_key);
+  return f;
+}
+
+std::string product_text(const numeric& coeff, const std::vector<ex>& factors, const print_context& c,
+                         bool standalone_parens) {
+  const bool latex = latex_ctx(c);
+  std::string out;
+  bool first = true;
+  if (coeff != 1 || factors.empty()) {
+    std::ostringstream os;
+    os << coeff;
+    out += os.str();
+    first = false;
+  }
+  for (const auto& f : factors) {
+    if (!first) {
+      // In LaTeX a number directly before a number needs a visible product sign.
+      out += latex ? ((is_a<numeric>(f)) ? " \\cdot " : " ") : "*";
+    }
+    out += render(f, c, (standalone_parens || !first || factors.size() > 1 || coeff != 1) ? mul_prec : 0);
+    first = false;
+  }
+  return out;
+}
+
+void print_fraction(const Fraction& f, const print_context& c, unsigned level) {
+  const bool latex = latex_ctx(c);
+  std::ostream& os = c.s;
+  const bool has_den = f.den_c != 1 || !f.den.empty();
+  const bool paren = (f.negative && level > add_prec) || (!latex && has_den && level >= pow_prec) ||
+                     (!has_den && level >= pow_prec);
+  if (paren) os << (latex ? "\\left(" : "(");
+  if (f.negative) os << "-";
+  if (!has_den) {
+    os << product_text(f.num_c, f.num, c, false);
+  } else if (latex) {
+    os << "\\frac{" << product_text(f.num_c, f.num, c, false) << "}{"
+       << product_text(f.den_c, f.den, c, false) << "}";
+  } else {
+    os << product_text(f.num_c, f.num, c, true) << "/";
+    const std::size_t n_den = f.den.size() + (f.den_c != 1 ? 1 : 0);
+    if (n_den > 1) os << "(";
+    os << product_text(f.den_c, f.den, c, n_den == 1);
+    if (n_den > 1) os << ")";
+  }
+  if (paren) os << (latex ? "\\right)" : ")");
+}
+
+void print_mul(const mul& m, const print_context& c, unsigned level) { print_fraction(split(ex(m)), c, level); }
+
+void print_power(const power& p, const print_context& c, unsigned level) {
+  const bool latex = latex_ctx(c);
+  std::ostream& os = c.s;
+  const ex base = p.op(0), expo = p.op(1);
+  if (is_a<numeric>(expo) && ex_to<numeric>(expo).is_negative()) {
+    print_fraction(split(ex(p)), c, level);
+    return;
+  }
+  if (expo.is_equal(numeric(1, 2))) {
+    if (latex)
+      os << "\\sqrt{" << render(base, c, 0) << "}";
+    else
+      os << "sqrt(" << render(base, c, 0) << ")";
+    return;
+  }
+  const bool paren = level >= pow_prec;
+  if (paren) os << (latex ? "\\left(" : "(");
+  const bool base_paren = !(is_a<symbol>(base) || (is_a<numeric>(base) && ex_to<numeric>(base).is_pos_integer()) ||
+                            is_a<function>(base));
+  if (base_paren) os << (latex ? "\\left(" : "(");
+  os << render(base, c, base_paren ? 0 : pow_prec);
+  if (base_paren) os << (latex ? "\\right)" : ")");
+  if (latex) {
+    os << "^{" << render(expo, c, 0) << "}";
+  } else {
+    const bool simple = is_a<symbol>(expo) || (is_a<numeric>(expo) && ex_to<numeric>(expo).is_pos_integer());
+    os << "^" << (simple ? "" : "(") << render(expo, c, 0) << (simple ? "" : ")");
+  }
+  if (paren) os << (latex ? "\\right)" : ")");
+}
+
+struct Registration {
+  Registration() {
+    set_print_func<add, tackle_text>(print_add);
+    set_print_func<add, tackle_latex>(print_add);
+    set_print_func<mul, tackle_text>(print_mul);
+    set_print_func<mul, tackle_latex>(print_mul);
+    set_print_func<power, tackle_text>(print_power);
+    set_print_func<power, tackle_latex>(print_power);
+    set_print_func<numeric, tackle_text>(print_numeric_fn);
+    set_print_func<numeric, tackle_latex>(print_numeric_fn);
+  }
+};
+
+void ensure_registered() { static Registration once; }
+
+}  // namespace
+
+std::string to_text(const ex& e) {
+  ensure_registered();
+  std::ostringstream os;
+  tackle_text c(os);
+  e.print(c);
+  return os.str();
+}
+
+std::string to_latex(const ex& e) {
+  ensure_registered();
+  std::ostringstream os;
+  tackle_latex c(os);
+  e.print(c);
+  return os.str();
+}
+
+}  // namespace tackle

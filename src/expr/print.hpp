@@ -1,0 +1,32 @@
+// Print contexts for tackle's output. Expressions are printed only through these contexts
+// (registered GiNaC print functions), never by string surgery. They fix the order of terms
+// and factors so that output is identical from run to run (GiNaC's own order depends on
+// hash values that can change between runs): numbers first in products, then factors
+// sorted by name; positive terms first in sums, each group sorted by name.
+//
+//   tackle_text  : GiNaC input syntax (`-9*F/(9*m_A+4*m_B)`), parseable back by tackle.
+//   tackle_latex : textbook LaTeX (`-\frac{9 F}{9 m_{A} + 4 m_{B}}`), symbols by TeX name.
+#pragma once
+
+#include <string>
+
+#include <ginac/ginac.h>
+
+namespace tackle {
+
+class tackle_text : public GiNaC::print_dflt {
+  GINAC_DECLARE_PRINT_CONTEXT(tackle_text, GiNaC::print_dflt)
+ public:
+  explicit tackle_text(std::ostream& os, unsigned opt = 0) : GiNaC::print_dflt(os, opt) {}
+};
+
+class tackle_latex : public GiNaC::print_latex {
+  GINAC_DECLARE_PRINT_CONTEXT(tackle_latex, GiNaC::print_latex)
+ public:
+  explicit tackle_latex(std::ostream& os, unsigned opt = 0) : GiNaC::print_latex(os, opt) {}
+};
+
+[[nodiscard]] std::string to_text(const GiNaC::ex& e);
+[[nodiscard]] std::string to_latex(const GiNaC::ex& e);
+
+}  // namespace tackle

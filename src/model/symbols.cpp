@@ -1,0 +1,105 @@
+#include "model/symbols.hpp"
+
+#include <set>
+
+namespace tackle {
+
+namespace {
+
+std::string tex_atom(std::string_view s) {
+  static const std::set<std::string, std::less<>> greek = {
+      "alpha", "beta",  "gamma", "delta", "epsilon", "zeta", "eta",   "theta", "iota", "kappa", "lambda",
+      "mu",    "nu",    "xi",    "pi",    "rho",     "sigma", "tau",  "upsilon", "phi", "chi",  "psi",
+      "omega", "Gamma", "Delta", "Theta", "Lambda",  "Xi",   "Pi",    "Sigma", "Phi",  "Psi",  "Omega"};
+  if (greek.count(s)) return "\\" + std::string(s);
+  if (s.size() > 1) return "\\mathrm{" + std::string(s) + "}";
+  return std::string(s);
+}
+
+}  // namespace
+
+std::string default_tex(std::string_view name) {
+  for (const char* op : {"ddot", "dot"}) {
+    const std::string prefix = std::string(op) + "(";
+    if (name.substr(0, prefix.size()) == prefix && name.back() == ')') {
+      const std::string inner(name.substr(prefix.size(), name.size() - prefix.size() - 1));
+      const auto us = inner.find('_');
+      const std::string base = inner.substr(0, us);
+      std::string t = "\\" + std::string(op) + "{" + tex_atom(base) + "}";
+      if (us != std::string::npos) t += "_{" + inner.substr(us + 1) + "}";
+      return t;
+    }
+  }
+  const auto us = name.find('_');
+  if (us == std::string_view::npos) return tex_atom(name);
+  std::string sub(name.substr(us + 1));
+  for (auto& c : sub)
+    if (c == '_') c = ',';
+  return tex_atom(name.substr(0, us)) + "_{" + sub + "}";
+}
+
+const SymbolInfo& SymbolTable::add(const std::string& name, std::optional<std::string> tex, SymbolRole role,
+                                   std::optional<Dimension> dimension, bool positive, Location where) {
+  if (by_name_.count(name)) throw InternalError("symbol '" + name + "' made twice");
+  auto info = std::make_unique<SymbolInfo>();
+  info->name = name;
+  info->tex = tex ? *tex : default_tex(name);
+  if (positive)
+    info->sym = GiNaC::possymbol(name, info->tex);
+  else
+    info->sym = GiNaC::realsymbol(name, info->tex);
+  info->role = role;
+  info->dimension = dimension;
+  info->positive = positive;
+  info->where = std::move(where);
+  by_name_[name] = items_.size();
+  by_symbol_[info->sym] = items_.size();
+  items_.push_back(std::move(info));
+  return *items_.back();
+}
+
+const SymbolInfo* SymbolTable::find(std::string_view name) const {
+  auto it = by_name_.find(name);
+  return it == by_name_.end() ? nullptr : items_[it->second].get();
+}
+
+const SymbolInfo* SymbolTable::find(const GiNaC::ex& sym) const {
+  auto it = by_symbol_.find(sym);
+  return it == by_symbol_.end() ? nullptr : items_[it->second].get();
+}
+
+void SymbolTable::set_value(const std::string& name, GiNaC::numeric value, std::string unit) {
+  auto it = by_name_.find(name);
+  if (it == by_name_.end()) throw InternalError("no symbol '" + name + "'");
+  items_[it->second]->value = value;
+  items_[it->second]->unit = std::move(unit);
+}
+
+std::optional<GiNaC::ex> SymbolTable::resolve(std::string_view name) const {
+  if (const SymbolInfo* s = find(name)) {
+    if (s->role == SymbolRole::defined) return std::nullopt;
+    return GiNaC::ex(s->sym);
+  }
+  return std::nullopt;
+}
+
+std::vector<std::string> SymbolTable::known_names() const {
+  std::vector<std::string> n;
+  for (const auto& s : items_)
+    if (s->role != SymbolRole::defined) n.push_back(s->name);
+  return n;
+}
+
+std::optional<Dimension> SymbolTable::dimension_of(const GiNaC::symbol& s) const {
+  if (const SymbolInfo* i = find(s)) return i->dimension;
+  return std::nullopt;
+}
+
+GiNaC::exmap SymbolTable::values() const {
+  GiNaC::exmap m;
+  for (const auto& s : items_)
+    if (s->value) m[s->sym] = *s->value;
+  return m;
+}
+
+}  // namespace tackle

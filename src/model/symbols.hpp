@@ -1,0 +1,65 @@
+// The SymbolTable: every symbol of a problem is made here, once, with its name as typed
+// (`m_A`, `ddot(x_A)`, `T_s`), its TeX name, its role, its dimension and (for parameters)
+// its value in SI. Everything else looks symbols up here.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "core/diagnostics.hpp"
+#include "core/units.hpp"
+#include "expr/parse.hpp"
+
+namespace tackle {
+
+enum class SymbolRole { parameter, coordinate, rate, acceleration, unknown, defined };
+
+struct SymbolInfo {
+  std::string name;
+  std::string tex;
+  GiNaC::ex sym;  // an ex, so that possymbol / realsymbol keep their domain (no slicing)
+  SymbolRole role = SymbolRole::parameter;
+  std::optional<Dimension> dimension;
+  std::optional<GiNaC::numeric> value;  // parameters: value in SI
+  std::string unit;                     // parameters: the unit the value was given in
+  bool positive = false;
+  Location where;
+
+  [[nodiscard]] const GiNaC::symbol& symbol() const { return GiNaC::ex_to<GiNaC::symbol>(sym); }
+};
+
+/// TeX for a name as typed: `m_A` -> `m_{A}`, `mu` -> `\mu`, `mu_k` -> `\mu_{k}`,
+/// `ddot(x_A)` -> `\ddot{x}_{A}`, `T_HI` -> `T_{HI}`.
+[[nodiscard]] std::string default_tex(std::string_view name);
+
+class SymbolTable : public NameResolver, public DimensionLookup {
+ public:
+  /// Makes a symbol; the caller has checked that the name is free (InternalError if not).
+  const SymbolInfo& add(const std::string& name, std::optional<std::string> tex, SymbolRole role,
+                        std::optional<Dimension> dimension, bool positive, Location where);
+  [[nodiscard]] const SymbolInfo* find(std::string_view name) const;
+  [[nodiscard]] const SymbolInfo* find(const GiNaC::ex& sym) const;
+  [[nodiscard]] const std::vector<std::unique_ptr<SymbolInfo>>& all() const { return items_; }
+  void set_value(const std::string& name, GiNaC::numeric value, std::string unit);
+
+  // NameResolver
+  [[nodiscard]] std::optional<GiNaC::ex> resolve(std::string_view name) const override;
+  [[nodiscard]] std::vector<std::string> known_names() const override;
+  // DimensionLookup
+  [[nodiscard]] std::optional<Dimension> dimension_of(const GiNaC::symbol& s) const override;
+
+  /// Substitution map of every parameter that has a value (SI).
+  [[nodiscard]] GiNaC::exmap values() const;
+
+ private:
+  std::vector<std::unique_ptr<SymbolInfo>> items_;
+  std::map<std::string, std::size_t, std::less<>> by_name_;
+  std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> by_symbol_;
+};
+
+}  // namespace tackle

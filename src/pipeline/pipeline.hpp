@@ -1,0 +1,27 @@
+// The whole chain for one description file: read, build, balance, solve. Each stage's
+// result is kept (immutable) so that reports, tests and benchmarks can look at any of them.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "description/description.hpp"
+#include "equations/equations.hpp"
+#include "model/model.hpp"
+#include "report/derivation.hpp"
+#include "ruleset/ruleset.hpp"
+#include "solve/solve.hpp"
+
+namespace tackle {
+
+struct Analysis {
+  Model model;
+  EquationSystem system;
+  Solution solution;
+};
+
+[[nodiscard]] std::unique_ptr<const Analysis> analyze(const Description& d, const RuleSet& rules);
+[[nodiscard]] std::unique_ptr<const Analysis> analyze_file(const std::string& path, const RuleSet& rules);
+[[nodiscard]] Derivation explain(const Analysis& a);
+
+}  // namespace tackle

@@ -1,0 +1,177 @@
+#include "report/derivation.hpp"
+
+#include <algorithm>
+
+#include "expr/print.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+
+namespace {
+
+std::string joined(const std::vector<ex>& xs) {
+  std::vector<std::string> s;
+  for (const auto& x : xs) s.push_back(to_text(x));
+  return join(s);
+}
+
+}  // namespace
+
+Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol) {
+  Derivation d;
+  d.title = m.title;
+  d.file = m.file;
+  d.rank = sol.rank;
+  d.n_equations = s.equations.size();
+  d.unknowns = s.unknowns;
+  d.system = &s;
+  const SymbolTable& table = *m.symbols;
+  auto section = [&](std::string t) { d.steps.push_back({Step::Kind::section, std::move(t)}); };
+  auto text = [&](std::string t) { d.steps.push_back({Step::Kind::text, std::move(t)}); };
+  auto bullet = [&](std::string t) { d.steps.push_back({Step::Kind::bullet, std::move(t)}); };
+  auto equation = [&](std::string label, ex lhs, ex rhs, std::string note = {}) {
+    Step st{Step::Kind::equation, std::move(label), lhs, rhs};
+    st.note = std::move(note);
+    d.steps.push_back(st);
+    return &d.steps.back();
+  };
+
+  section("Model");
+  for (const auto& a : m.assumptions) bullet("Assumed: " + a + ".");
+  for (const auto& c : m.connections) bullet(c + ".");
+  for (const auto& sym : table.all()) {
+    if (sym->role != SymbolRole::parameter) continue;
+    std::string line = "Parameter " + sym->name;
+    if (sym->value) {
+      auto v = evaluate(sym->sym, table, sym->dimension);
+      if (v) line += " = " + v->decimal + (v->unit.empty() ? "" : " " + v->unit);
+    } else {
+      line += " (symbolic)";
+    }
+    bullet(line + ".");
+  }
+
+  section("Free body diagrams: linear momentum balance");
+  for (const auto& eq : s.equations) {
+    if (eq.kind != Equation::Kind::lmb) continue;
+    std::vector<std::string> parts;
+    for (std::size_t i = 0; i < eq.terms.size(); ++i) parts.push_back(eq.sources[i] + ": " + to_text(eq.terms[i]));
+    text(eq.label + ". Forces along " + m.axis + ": " + (parts.empty() ? "none" : join(parts, "; ")) + ".");
+    equation(eq.label, eq.lhs, eq.rhs);
+  }
+
+  if (!s.constraints.empty()) {
+    section("Constraints: constant lengths, differentiated twice");
+    for (const auto& c : s.constraints) {
+      text("The " + c.meaning + " is constant in time.");
+      Step* st = equation(c.label + ": " + c.meaning, c.quantity, 0);
+      st->equals_constant = true;
+      equation(c.label + ": rate", 0, c.rate);
+      equation(c.label + ": acceleration", 0, c.acceleration);
+    }
+  }
+
+  section("Solving");
+  text(std::to_string(s.equations.size()) + " equations in " + std::to_string(s.unknowns.size()) + " unknowns (" +
+       joined(s.unknowns) + "); rank " + std::to_string(sol.rank) + ".");
+  for (const auto& group : sol.redundant)
+    text("Redundant: " + join(group, ", ") + " are linearly dependent (one follows from the others).");
+  switch (sol.status) {
+    case Solution::Status::determined: d.status = "determined"; text("Every unknown is determined."); break;
+    case Solution::Status::underdetermined:
+      d.status = "underdetermined";
+      text("Not every unknown is determined; free: " + joined(sol.free) + ".");
+      break;
+    case Solution::Status::inconsistent:
+      d.status = "inconsistent";
+      text("The equations are inconsistent: " + join(sol.conflicts, ", ") + " contradict each other.");
+      break;
+  }
+  d.conflicts = sol.conflicts;
+  for (const auto& f : sol.free) d.free.push_back(to_text(f));
+
+  // Answers: what `find` asks for, or every unknown.
+  std::vector<Wanted> wanted = m.wanted;
+  if (wanted.empty())
+    for (const auto& u : s.unknowns) {
+      const SymbolInfo* info = table.find(u);
+      wanted.push_back({info->name, info->tex, u, false, info->dimension});
+    }
+  for (const auto& w : wanted) {
+    Answer a{w.name, w.tex, table.find(w.name)->sym};
+    const bool is_unknown = std::find(s.unknowns.begin(), s.unknowns.end(), w.expr) != s.unknowns.end();
+    const bool is_candidate = std::find(m.candidates.begin(), m.candidates.end(), w.expr) != m.candidates.end();
+    if (sol.status == Solution::Status::inconsistent) {
+      a.status = Answer::Status::not_in_equations;
+    } else if (!w.defined && is_candidate && !is_unknown) {
+      a.status = Answer::Status::not_in_equations;
+    } else {
+      const ex general = w.expr.subs(sol.general);
+      bool free = false;
+      for (const auto& f : sol.free) free = free || general.has(f);
+      if (free) {
+        const bool is_free = std::find(sol.free.begin(), sol.free.end(), w.expr) != sol.free.end();
+        a.status = is_free ? Answer::Status::free : Answer::Status::in_combination;
+      } else {
+        a.closed_form = simplest(general);
+        a.value = evaluate(*a.closed_form, table, w.dimension);
+      }
+    }
+    d.answers.push_back(a);
+  }
+  for (const auto& c : sol.combinations) {
+    std::string problem;
+    auto dim = dimension_of(c.combination, table, problem);
+    d.combinations.push_back({c.combination, c.value, evaluate(c.value, table, dim)});
+  }
+
+  if (sol.status != Solution::Status::inconsistent) {
+    section("Results");
+    for (const auto& a : d.answers) {
+      if (a.closed_form) {
+        Step* st = equation(a.name, table.find(a.name)->sym, *a.closed_form);
+        st->boxed = true;
+        if (a.value) st->note = a.value->decimal + (a.value->unit.empty() ? "" : " " + a.value->unit);
+      } else if (a.status == Answer::Status::not_in_equations) {
+        text(a.name + " does not appear in the chosen equations.");
+      } else {
+        text(a.name + " is not determined by the equations" +
+             std::string(a.status == Answer::Status::free ? " (free)." : " (only in combination)."));
+      }
+    }
+    for (const auto& c : d.combinations) {
+      Step* st = equation("determined combination", c.combination, c.value);
+      st->boxed = true;
+      if (c.number) st->note = c.number->decimal + (c.number->unit.empty() ? "" : " " + c.number->unit);
+    }
+  }
+
+  if (!sol.conditions.empty()) {
+    section("Validity");
+    for (const auto& cc : sol.conditions) {
+      ConditionReport r{cc.condition->source, cc.condition->lhs, cc.condition->rhs, cc.condition->op, cc.expr,
+                        std::nullopt, cc.condition->meaning, cc.condition->otherwise};
+      if (!cc.depends_on_free) {
+        if (auto v = evaluate(cc.expr, table, std::nullopt)) {
+          const double x = v->approx;
+          const std::string& op = r.op;
+          r.holds = op == ">=" ? x >= 0 : op == ">" ? x > 0 : op == "<=" ? x <= 0 : op == "<" ? x < 0 : x == 0;
+          if (is_a<numeric>(v->exact)) {
+            const numeric n = ex_to<numeric>(v->exact);
+            r.holds = op == ">=" ? n >= 0 : op == ">" ? n > 0 : op == "<=" ? n <= 0 : op == "<" ? n < 0 : n.is_zero();
+          }
+        }
+      }
+      std::string line = cc.condition->source + ": " + to_text(r.lhs) + " " + r.op + " " + to_text(r.rhs) + " (" +
+                         r.meaning + ") requires " + to_text(r.simplified) + " " + r.op + " 0";
+      if (r.holds) line += *r.holds ? "; holds for the given numbers" : "; VIOLATED for the given numbers: " + r.otherwise;
+      else if (cc.depends_on_free) line += "; depends on an undetermined unknown";
+      bullet(line + ".");
+      d.conditions.push_back(r);
+    }
+  }
+  return d;
+}
+
+}  // namespace tackle

@@ -1,0 +1,73 @@
+// The Derivation: what is said about a solved problem, in the book's order, independent of
+// how it is encoded. Writers (text, latex, json) only format it.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "equations/equations.hpp"
+#include "model/model.hpp"
+#include "numeric/evaluate.hpp"
+#include "solve/solve.hpp"
+
+namespace tackle {
+
+struct Step {
+  enum class Kind { section, text, bullet, equation } kind = Kind::text;
+  std::string text;   // section title, paragraph, bullet, or an equation's label
+  GiNaC::ex lhs, rhs;
+  std::string relation = "=";
+  bool equals_constant = false;  // "lhs = const" (a length sum held constant)
+  bool boxed = false;          // a final closed form
+  std::string note;            // provenance or a number with its unit
+};
+
+struct Answer {
+  std::string name;
+  std::string tex;
+  GiNaC::ex symbol;  // the name as a symbol (from the symbol table)
+  enum class Status { determined, free, in_combination, not_in_equations } status = Status::determined;
+  std::optional<GiNaC::ex> closed_form;
+  std::optional<NumericValue> value;
+};
+
+struct ConditionReport {
+  std::string source;
+  GiNaC::ex lhs, rhs;  // as the rule states it (T_s >= 0)
+  std::string op;
+  GiNaC::ex simplified;  // closed form, `simplified op 0`
+  std::optional<bool> holds;  // with the given numbers
+  std::string meaning, otherwise;
+};
+
+struct CombinationReport {
+  GiNaC::ex combination, value;
+  std::optional<NumericValue> number;
+};
+
+struct Derivation {
+  std::string title;
+  std::string file;
+  std::vector<Step> steps;
+  std::vector<Answer> answers;
+  std::vector<CombinationReport> combinations;
+  std::vector<ConditionReport> conditions;
+  std::vector<std::string> free;
+  std::vector<std::string> conflicts;
+  std::string status;  // determined | underdetermined | inconsistent
+  std::size_t rank = 0;
+  std::size_t n_equations = 0;
+  std::vector<GiNaC::ex> unknowns;
+  const EquationSystem* system = nullptr;  // for the JSON equations list
+};
+
+[[nodiscard]] Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol);
+
+enum class Format { text, latex, json, markdown };
+/// `full`: the whole derivation; otherwise the answers only (`tackle solve`).
+[[nodiscard]] std::string write(const Derivation& d, Format f, bool full);
+
+}  // namespace tackle

@@ -1,0 +1,270 @@
+// Writers: the same Derivation as text, LaTeX (a standalone document), Markdown or JSON.
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "expr/print.hpp"
+#include "report/derivation.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+
+namespace {
+
+std::string status_name(Answer::Status s) {
+  switch (s) {
+    case Answer::Status::determined: return "determined";
+    case Answer::Status::free: return "free";
+    case Answer::Status::in_combination: return "in_combination";
+    case Answer::Status::not_in_equations: return "not_in_equations";
+  }
+  return "";
+}
+
+std::string tex_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '_': out += "\\_"; break;
+      case '&': out += "\\&"; break;
+      case '%': out += "\\%"; break;
+      case '#': out += "\\#"; break;
+      case '$': out += "\\$"; break;
+      case '{': out += "\\{"; break;
+      case '}': out += "\\}"; break;
+      case '^': out += "\\textasciicircum{}"; break;
+      case '~': out += "\\textasciitilde{}"; break;
+      case '\\': out += "\\textbackslash{}"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string tex_relation(const std::string& op) {
+  if (op == ">=") return "\\geq";
+  if (op == "<=") return "\\leq";
+  return op;
+}
+
+std::string value_text(const std::optional<NumericValue>& v) {
+  if (!v) return "";
+  return v->decimal + (v->unit.empty() ? "" : " " + v->unit);
+}
+
+std::string value_latex(const std::optional<NumericValue>& v) {
+  if (!v) return "";
+  return v->decimal + (v->unit.empty() ? "" : "\\," + unit_latex(v->unit));
+}
+
+// ---- text ---------------------------------------------------------------------------------
+
+std::string answers_text(const Derivation& d) {
+  std::string out;
+  for (const auto& a : d.answers) {
+    if (a.closed_form) {
+      out += a.name + " = " + to_text(*a.closed_form);
+      if (a.value) out += "  = " + value_text(a.value);
+      out += "\n";
+    } else {
+      out += a.name + ": " + status_name(a.status) + "\n";
+    }
+  }
+  for (const auto& c : d.combinations)
+    out += to_text(c.combination) + " = " + to_text(c.value) + (c.number ? "  = " + value_text(c.number) : "") +
+           "  (determined combination)\n";
+  if (!d.conflicts.empty()) out += "inconsistent: " + join(d.conflicts, ", ") + "\n";
+  for (const auto& c : d.conditions)
+    if (c.holds && !*c.holds) out += "warning: " + c.source + ": " + c.otherwise + " (" + to_text(c.simplified) + " " + c.op + " 0 fails)\n";
+  return out;
+}
+
+std::string derivation_text(const Derivation& d) {
+  std::string out = d.title + "\n" + std::string(d.title.size(), '=') + "\n";
+  for (const auto& st : d.steps) {
+    switch (st.kind) {
+      case Step::Kind::section: out += "\n" + st.text + "\n" + std::string(st.text.size(), '-') + "\n"; break;
+      case Step::Kind::text: out += st.text + "\n"; break;
+      case Step::Kind::bullet: out += "  - " + st.text + "\n"; break;
+      case Step::Kind::equation: {
+        std::string eq = st.equals_constant ? to_text(st.lhs) + " = const"
+                                            : to_text(st.lhs) + " " + st.relation + " " + to_text(st.rhs);
+        if (!st.note.empty()) eq += "  = " + st.note;
+        out += "    " + eq + "    [" + st.text + "]\n";
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+// ---- LaTeX --------------------------------------------------------------------------------
+
+std::string latex_equation(const Step& st) {
+  std::string body = st.equals_constant ? to_latex(st.lhs) + " = \\text{const}"
+                                        : to_latex(st.lhs) + " " + tex_relation(st.relation) + " " + to_latex(st.rhs);
+  if (st.boxed) body = "\\boxed{" + body + "}";
+  if (!st.note.empty()) body += " \\quad \\left(= " + [&] {
+    // note is "decimal unit"
+    const auto sp = st.note.find(' ');
+    if (sp == std::string::npos) return st.note;
+    return st.note.substr(0, sp) + "\\," + unit_latex(st.note.substr(sp + 1));
+  }() + "\\right)";
+  return "\\begin{equation*}\n  " + body + " \\tag*{" + tex_escape(st.text) + "}\n\\end{equation*}\n";
+}
+
+std::string latex_document(const Derivation& d, bool full) {
+  std::string out =
+      "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{amsmath}\n"
+      "\\usepackage[margin=2.5cm]{geometry}\n\\begin{document}\n";
+  out += "\\section*{" + tex_escape(d.title) + "}\n";
+  if (full) {
+    bool in_list = false;
+    for (const auto& st : d.steps) {
+      if (st.kind != Step::Kind::bullet && in_list) {
+        out += "\\end{itemize}\n";
+        in_list = false;
+      }
+      switch (st.kind) {
+        case Step::Kind::section: out += "\\subsection*{" + tex_escape(st.text) + "}\n"; break;
+        case Step::Kind::text: out += tex_escape(st.text) + "\n\n"; break;
+        case Step::Kind::bullet:
+          if (!in_list) out += "\\begin{itemize}\n";
+          in_list = true;
+          out += "  \\item " + tex_escape(st.text) + "\n";
+          break;
+        case Step::Kind::equation: out += latex_equation(st); break;
+      }
+    }
+    if (in_list) out += "\\end{itemize}\n";
+  } else {
+    for (const auto& a : d.answers) {
+      if (!a.closed_form) continue;
+      Step st{Step::Kind::equation, a.name, a.symbol, *a.closed_form};
+      st.boxed = true;
+      st.note = value_text(a.value);
+      out += latex_equation(st);
+    }
+  }
+  return out + "\\end{document}\n";
+}
+
+// ---- JSON ---------------------------------------------------------------------------------
+
+nlohmann::json number_json(const std::optional<NumericValue>& v) {
+  if (!v) return nullptr;
+  return {{"value", v->approx}, {"exact", to_text(v->exact)}, {"decimal", v->decimal}, {"unit", v->unit}};
+}
+
+std::string json_document(const Derivation& d, bool full) {
+  nlohmann::json j;
+  j["version"] = 1;
+  j["title"] = d.title;
+  j["file"] = d.file;
+  j["status"] = d.status;
+  j["rank"] = d.rank;
+  j["unknowns"] = nlohmann::json::array();
+  for (const auto& a : d.answers) {
+    nlohmann::json u{{"name", a.name}, {"status", status_name(a.status)}};
+    if (a.closed_form) {
+      u["closed_form"] = to_text(*a.closed_form);
+      u["latex"] = to_latex(*a.closed_form);
+    }
+    if (a.value) {
+      u["value"] = a.value->approx;
+      u["exact"] = to_text(a.value->exact);
+      u["decimal"] = a.value->decimal;
+      u["unit"] = a.value->unit;
+    }
+    j["unknowns"].push_back(u);
+  }
+  j["combinations"] = nlohmann::json::array();
+  for (const auto& c : d.combinations) {
+    nlohmann::json x{{"expression", to_text(c.combination)}, {"closed_form", to_text(c.value)},
+                     {"latex", to_latex(c.combination) + " = " + to_latex(c.value)}};
+    if (c.number) {
+      x["value"] = c.number->approx;
+      x["unit"] = c.number->unit;
+    }
+    j["combinations"].push_back(x);
+  }
+  j["free"] = d.free;
+  j["conflicts"] = d.conflicts;
+  j["conditions"] = nlohmann::json::array();
+  for (const auto& c : d.conditions) {
+    nlohmann::json x{{"source", c.source},
+                     {"inequality", to_text(c.lhs) + " " + c.op + " " + to_text(c.rhs)},
+                     {"simplified", to_text(c.simplified) + " " + c.op + " 0"},
+                     {"meaning", c.meaning},
+                     {"otherwise", c.otherwise}};
+    x["holds"] = c.holds ? nlohmann::json(*c.holds) : nlohmann::json(nullptr);
+    j["conditions"].push_back(x);
+  }
+  if (full && d.system) {
+    j["equations"] = nlohmann::json::array();
+    for (const auto& eq : d.system->equations) {
+      nlohmann::json e{{"label", eq.label},
+                       {"kind", eq.kind == Equation::Kind::lmb ? "lmb" : "constraint"},
+                       {"lhs", to_text(eq.lhs)},
+                       {"rhs", to_text(eq.rhs)},
+                       {"latex", to_latex(eq.lhs) + " = " + to_latex(eq.rhs)},
+                       {"sources", eq.sources}};
+      j["equations"].push_back(e);
+    }
+    j["constraints"] = nlohmann::json::array();
+    for (const auto& c : d.system->constraints)
+      j["constraints"].push_back({{"label", c.label},
+                                  {"quantity", to_text(c.quantity)},
+                                  {"rate", to_text(c.rate)},
+                                  {"acceleration", to_text(c.acceleration)}});
+  }
+  return j.dump(2) + "\n";
+}
+
+// ---- Markdown -----------------------------------------------------------------------------
+
+std::string markdown_document(const Derivation& d, bool full) {
+  std::string out = "# " + d.title + "\n\n";
+  auto eq = [](const Step& st) {
+    std::string body = st.equals_constant ? to_latex(st.lhs) + " = \\text{const}"
+                                          : to_latex(st.lhs) + " " + tex_relation(st.relation) + " " + to_latex(st.rhs);
+    if (st.boxed) body = "\\boxed{" + body + "}";
+    std::string line = "$$" + body + "$$ *(" + st.text + ")*";
+    if (!st.note.empty()) line += " = " + st.note;
+    return line + "\n\n";
+  };
+  if (full) {
+    for (const auto& st : d.steps) {
+      switch (st.kind) {
+        case Step::Kind::section: out += "\n## " + st.text + "\n\n"; break;
+        case Step::Kind::text: out += st.text + "\n\n"; break;
+        case Step::Kind::bullet: out += "- " + st.text + "\n"; break;
+        case Step::Kind::equation: out += eq(st); break;
+      }
+    }
+  } else {
+    for (const auto& a : d.answers)
+      if (a.closed_form) {
+        Step st{Step::Kind::equation, a.name, a.symbol, *a.closed_form};
+        st.note = value_text(a.value);
+        out += eq(st);
+      }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string write(const Derivation& d, Format f, bool full) {
+  switch (f) {
+    case Format::text: return full ? derivation_text(d) : answers_text(d);
+    case Format::latex: return latex_document(d, full);
+    case Format::json: return json_document(d, full);
+    case Format::markdown: return markdown_document(d, full);
+  }
+  return {};
+}
+
+}  // namespace tackle

@@ -1,0 +1,302 @@
+#include "ruleset/ruleset.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "description/yaml_reader.hpp"
+#include "expr/parse.hpp"
+
+namespace tackle {
+
+const ArgSpec* Rule::arg(const std::string& key) const {
+  for (const auto& a : args)
+    if (a.key == key) return &a;
+  return nullptr;
+}
+
+const Rule* RuleSet::find(const std::string& type) const {
+  auto it = rules_.find(type);
+  return it == rules_.end() ? nullptr : &it->second;
+}
+
+std::vector<std::string> RuleSet::names() const {
+  std::vector<std::string> n;
+  for (const auto& [k, v] : rules_) n.push_back(k);
+  return n;
+}
+
+std::string default_rules_dir() {
+  if (const char* env = std::getenv("TACKLE_RULES"); env && *env) return env;
+  return TACKLE_RULES_DIR;
+}
+
+namespace {
+
+using yaml::check_map;
+using yaml::scalar;
+using yaml::where;
+
+// Resolves a rule's local names to placeholder symbols, to check its expressions at load.
+class LocalNames : public NameResolver {
+ public:
+  explicit LocalNames(std::vector<std::string> names) : names_(std::move(names)) {
+    for (const auto& n : names_) symbols_.emplace(n, GiNaC::symbol(n));
+  }
+  std::optional<GiNaC::ex> resolve(std::string_view name) const override {
+    auto it = symbols_.find(std::string(name));
+    if (it == symbols_.end()) return std::nullopt;
+    return GiNaC::ex(it->second);
+  }
+  std::vector<std::string> known_names() const override { return names_; }
+
+ private:
+  std::vector<std::string> names_;
+  std::map<std::string, GiNaC::symbol> symbols_;
+};
+
+struct RuleReader {
+  const std::string& file;
+  Diagnostics& diags;
+
+  std::optional<ArgKind> kind_of(const Text& t) {
+    static const std::map<std::string, ArgKind> kinds = {{"body", ArgKind::body},
+                                                         {"point", ArgKind::point},
+                                                         {"points", ArgKind::points},
+                                                         {"expr", ArgKind::expr},
+                                                         {"name", ArgKind::name}};
+    if (auto it = kinds.find(t.text); it != kinds.end()) return it->second;
+    diags.error(t.at, "unknown argument kind '" + t.text + "' (expected one of: body, point, points, expr, name)");
+    return std::nullopt;
+  }
+
+  void read_args(const YAML::Node& n, bool required, Rule& r) {
+    if (!n.IsMap()) {
+      diags.error(where(n, file), "'" + std::string(required ? "needs" : "optional") + "' is " +
+                                      yaml::kind_name(n) + " (expected a mapping of argument names to kinds)");
+      return;
+    }
+    for (const auto& kv : n) {
+      ArgSpec a;
+      a.key = kv.first.Scalar();
+      a.required = required;
+      if (kv.second.IsScalar()) {
+        if (auto k = kind_of({kv.second.Scalar(), where(kv.second, file)})) a.kind = *k;
+      } else if (check_map(kv.second, {"kind", "dimension"}, "argument '" + a.key + "'", file, diags)) {
+        if (auto k = kv.second["kind"]) {
+          if (auto t = scalar(k, "'kind'", file, diags))
+            if (auto kk = kind_of(*t)) a.kind = *kk;
+        }
+        if (auto d = kv.second["dimension"]) {
+          if (auto t = scalar(d, "'dimension'", file, diags)) {
+            a.dimension = Dimension::from_name(t->text);
+            if (!a.dimension) diags.error(t->at, "unknown dimension '" + t->text + "' (expected force, mass, length, ...)");
+          }
+        }
+      }
+      r.args.push_back(std::move(a));
+    }
+  }
+
+  std::string need_scalar(const YAML::Node& map, const char* key, const std::string& what) {
+    const YAML::Node n = map[key];
+    if (!n) {
+      diags.error(where(map, file), what + " has no '" + key + "'");
+      return {};
+    }
+    auto t = scalar(n, "'" + std::string(key) + "' of " + what, file, diags);
+    return t ? t->text : std::string{};
+  }
+
+  // Which single key of `kinds` the map uses, e.g. `on` or `along` for a load.
+  std::optional<std::string> which(const YAML::Node& item, const std::vector<std::string>& kinds,
+                                   const std::string& what) {
+    std::optional<std::string> found;
+    for (const auto& k : kinds)
+      if (item[k]) {
+        if (found) {
+          diags.error(where(item, file), what + " has both '" + *found + "' and '" + k + "' (expected one)");
+          return std::nullopt;
+        }
+        found = k;
+      }
+    if (!found) diags.error(where(item, file), what + " has none of: " + join(kinds));
+    return found;
+  }
+
+  void check_arg_ref(const Rule& r, const std::string& key, ArgKind expected, const Location& at,
+                     const std::string& what) {
+    const ArgSpec* a = r.arg(key);
+    if (!a) {
+      diags.error(at, what + " names argument '" + key + "', which the rule does not declare");
+      return;
+    }
+    if (a->kind != expected && !(expected == ArgKind::body && a->kind == ArgKind::point))
+      diags.error(at, what + " needs argument '" + key + "' to be of another kind");
+  }
+
+  Rule read(const YAML::Node& root) {
+    Rule r;
+    r.at = where(root, file);
+    if (!check_map(root, {"type", "summary", "needs", "optional", "one_of", "unknowns", "loads", "constraints",
+                          "validity", "checks", "assumptions"},
+                   "the rule", file, diags))
+      return r;
+    r.type = need_scalar(root, "type", "the rule");
+    if (auto s = root["summary"]) r.summary = scalar(s, "'summary'", file, diags).value_or(Text{}).text;
+    if (auto n = root["needs"]) read_args(n, true, r);
+    if (auto n = root["optional"]) read_args(n, false, r);
+    if (auto n = root["one_of"]) {
+      for (const auto& group : n) {
+        std::vector<std::string> g;
+        for (const auto& k : group) {
+          g.push_back(k.Scalar());
+          if (!r.arg(g.back())) diags.error(where(k, file), "'one_of' names argument '" + g.back() + "', which the rule does not declare");
+        }
+        r.one_of.push_back(g);
+      }
+    }
+    std::vector<std::string> locals;
+    for (const auto& a : r.args)
+      if (a.kind == ArgKind::expr) locals.push_back(a.key);
+    if (auto n = root["unknowns"]) {
+      for (const auto& u : n) {
+        if (!check_map(u, {"local", "name", "rename", "dimension"}, "an unknown of the rule", file, diags)) continue;
+        UnknownSpec s;
+        s.local = need_scalar(u, "local", "an unknown");
+        s.name_template = need_scalar(u, "name", "an unknown");
+        if (auto rn = u["rename"]) {
+          s.rename_arg = rn.Scalar();
+          if (!r.arg(*s.rename_arg)) diags.error(where(rn, file), "'rename' names argument '" + *s.rename_arg + "', which the rule does not declare");
+        }
+        const std::string dim = need_scalar(u, "dimension", "an unknown");
+        if (auto d = Dimension::from_name(dim))
+          s.dimension = *d;
+        else if (!dim.empty())
+          diags.error(where(u["dimension"], file), "unknown dimension '" + dim + "' (expected force, mass, length, ...)");
+        locals.push_back(s.local);
+        r.unknowns.push_back(std::move(s));
+      }
+    }
+    LocalNames names(locals);
+    auto check_expr = [&](const std::string& text, const Location& at) {
+      auto res = parse_expression(text, names);
+      for (const auto& p : res.problems) diags.error(at, "in '" + text + "': " + p.message);
+    };
+    if (auto n = root["loads"]) {
+      for (const auto& l : n) {
+        if (!check_map(l, {"on", "along", "from_length", "force", "tension"}, "a load of the rule", file, diags)) continue;
+        auto kind = which(l, {"on", "along", "from_length"}, "a load");
+        if (!kind) continue;
+        LoadSpec s;
+        s.at = where(l, file);
+        s.arg = l[*kind].Scalar();
+        if (*kind == "on") {
+          s.kind = LoadSpec::Kind::on;
+          s.expr = need_scalar(l, "force", "a load");
+          check_arg_ref(r, s.arg, ArgKind::body, s.at, "a load");
+        } else {
+          s.kind = *kind == "along" ? LoadSpec::Kind::along : LoadSpec::Kind::from_length;
+          s.expr = need_scalar(l, "tension", "a load");
+          check_arg_ref(r, s.arg, *kind == "along" ? ArgKind::points : ArgKind::expr, s.at, "a load");
+        }
+        if (!s.expr.empty()) check_expr(s.expr, s.at);
+        r.loads.push_back(std::move(s));
+      }
+    }
+    if (auto n = root["constraints"]) {
+      for (const auto& c : n) {
+        if (!check_map(c, {"length", "length_sum", "still"}, "a constraint of the rule", file, diags)) continue;
+        auto kind = which(c, {"length", "length_sum", "still"}, "a constraint");
+        if (!kind) continue;
+        ConstraintSpec s;
+        s.at = where(c, file);
+        s.arg = c[*kind].Scalar();
+        if (*kind == "length") {
+          s.kind = ConstraintSpec::Kind::length;
+          check_arg_ref(r, s.arg, ArgKind::points, s.at, "a constraint");
+        } else if (*kind == "length_sum") {
+          s.kind = ConstraintSpec::Kind::length_sum;
+          check_arg_ref(r, s.arg, ArgKind::expr, s.at, "a constraint");
+        } else {
+          s.kind = ConstraintSpec::Kind::still;
+          check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
+        }
+        r.constraints.push_back(std::move(s));
+      }
+    }
+    if (auto n = root["validity"]) {
+      for (const auto& v : n) {
+        if (!check_map(v, {"holds", "meaning", "otherwise"}, "a validity condition", file, diags)) continue;
+        ValiditySpec s;
+        s.at = where(v, file);
+        s.holds = need_scalar(v, "holds", "a validity condition");
+        s.meaning = need_scalar(v, "meaning", "a validity condition");
+        s.otherwise = need_scalar(v, "otherwise", "a validity condition");
+        auto res = parse_relation(s.holds, names);
+        for (const auto& p : res.problems) diags.error(s.at, "in '" + s.holds + "': " + p.message);
+        r.validity.push_back(std::move(s));
+      }
+    }
+    if (auto n = root["checks"]) {
+      for (const auto& c : n) {
+        if (!check_map(c, {"passes_over"}, "a check of the rule", file, diags)) continue;
+        CheckSpec s{CheckSpec::Kind::passes_over, c["passes_over"] ? c["passes_over"].Scalar() : "", where(c, file)};
+        check_arg_ref(r, s.arg, ArgKind::point, s.at, "a check");
+        r.checks.push_back(std::move(s));
+      }
+    }
+    if (auto n = root["assumptions"]) {
+      for (const auto& a : n)
+        if (auto t = scalar(a, "an assumption", file, diags)) r.assumptions.push_back(t->text);
+    }
+    return r;
+  }
+};
+
+}  // namespace
+
+Rule parse_rule(const std::string& text, const std::string& file) {
+  Diagnostics diags;
+  const YAML::Node root = yaml::load(text, file, diags);
+  Rule r;
+  if (diags.empty()) r = RuleReader{file, diags}.read(root);
+  diags.throw_if_any();
+  return r;
+}
+
+RuleSet load_rules(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw InputError({{{dir, 0, 0}, "the rules directory does not exist (expected rules/*.yaml)"}});
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".yaml") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  RuleSet set;
+  std::vector<Diagnostic> all;
+  std::map<std::string, std::string> defined_in;
+  for (const auto& f : files) {
+    std::ifstream in(f);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    try {
+      Rule r = parse_rule(ss.str(), f.string());
+      if (auto it = defined_in.find(r.type); it != defined_in.end()) {
+        all.push_back({r.at, "rule type '" + r.type + "' is defined twice (also in " + it->second + ")"});
+        continue;
+      }
+      defined_in[r.type] = f.string();
+      set.add(std::move(r));
+    } catch (const InputError& e) {
+      all.insert(all.end(), e.diagnostics().begin(), e.diagnostics().end());
+    }
+  }
+  if (!all.empty()) throw InputError(all);
+  return set;
+}
+
+}  // namespace tackle

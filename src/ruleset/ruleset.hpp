@@ -1,0 +1,100 @@
+// Connection and element types as data (rules/*.yaml). A rule declares the arguments a
+// connection gives, the unknowns it introduces, the loads it applies, the constraints it
+// imposes, the conditions under which it holds and the assumptions it stands for. The model
+// instantiates rules through a handful of primitives (a force on a body, tension along a
+// path, a length held constant, a body held still); no C++ code names a connection type.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/diagnostics.hpp"
+#include "core/units.hpp"
+
+namespace tackle {
+
+enum class ArgKind { body, point, points, expr, name };
+
+struct ArgSpec {
+  std::string key;
+  ArgKind kind = ArgKind::expr;
+  std::optional<Dimension> dimension;  // for expr arguments
+  bool required = true;
+};
+
+struct UnknownSpec {
+  std::string local;          // name inside the rule's expressions, e.g. T
+  std::string name_template;  // e.g. "T_{name}": {key} is replaced by the argument's text
+  std::optional<std::string> rename_arg;  // a `name` argument that overrides the template
+  Dimension dimension;
+};
+
+/// Loads: `on` applies `expr` to a body or a point's body; `along` pulls every point of a
+/// path towards its neighbours with tension `expr`; `from_length` applies the generalized
+/// force -expr * d(length)/dq to every coordinate q of a hand-written length sum.
+struct LoadSpec {
+  enum class Kind { on, along, from_length } kind;
+  std::string arg;
+  std::string expr;
+  Location at;
+};
+
+/// Constraints: `length` holds a path's length constant, `length_sum` a hand-written length
+/// sum, `still` a body's acceleration at zero.
+struct ConstraintSpec {
+  enum class Kind { length, length_sum, still } kind;
+  std::string arg;
+  Location at;
+};
+
+struct ValiditySpec {
+  std::string holds;  // relation over the rule's local names, e.g. "T >= 0"
+  std::string meaning;
+  std::string otherwise;
+  Location at;
+};
+
+/// Checks on the description: `passes_over` requires a string path to run over the point.
+struct CheckSpec {
+  enum class Kind { passes_over } kind;
+  std::string arg;
+  Location at;
+};
+
+struct Rule {
+  std::string type;
+  std::string summary;
+  std::vector<ArgSpec> args;
+  std::vector<std::vector<std::string>> one_of;  // exactly one argument of each group
+  std::vector<UnknownSpec> unknowns;
+  std::vector<LoadSpec> loads;
+  std::vector<ConstraintSpec> constraints;
+  std::vector<ValiditySpec> validity;
+  std::vector<CheckSpec> checks;
+  std::vector<std::string> assumptions;
+  Location at;
+
+  [[nodiscard]] const ArgSpec* arg(const std::string& key) const;
+};
+
+class RuleSet {
+ public:
+  void add(Rule r) { rules_[r.type] = std::move(r); }
+  [[nodiscard]] const Rule* find(const std::string& type) const;
+  [[nodiscard]] std::vector<std::string> names() const;
+
+ private:
+  std::map<std::string, Rule> rules_;
+};
+
+/// Reads every `*.yaml` in `dir` (sorted by name); problems are reported all at once.
+[[nodiscard]] RuleSet load_rules(const std::string& dir);
+/// One rule from text (tests).
+[[nodiscard]] Rule parse_rule(const std::string& text, const std::string& file);
+
+/// The built-in rules directory (set at build time), or $TACKLE_RULES when set.
+[[nodiscard]] std::string default_rules_dir();
+
+}  // namespace tackle

@@ -1,0 +1,162 @@
+#include "solve/solve.hpp"
+
+#include <algorithm>
+#include <random>
+
+#include "core/diagnostics.hpp"
+#include "expr/print.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+
+std::optional<ex> Solution::value_of(const ex& unknown) const {
+  for (const auto& d : values)
+    if (d.unknown.is_equal(unknown)) return d.value;
+  return std::nullopt;
+}
+
+ex simplest(const ex& e) {
+  const ex n = normal(e);
+  const ex nd = n.numer_denom();
+  const ex f = factor(nd.op(0)) / factor(nd.op(1));
+  return to_text(f).size() < to_text(n).size() ? f : n;
+}
+
+namespace {
+
+bool zero(const ex& e) { return normal(e).is_zero(); }
+
+// Random exact positive rationals for every symbol in `e` that `keep` does not hold.
+exmap random_point(const ex& e, std::mt19937& rng) {
+  exmap m;
+  std::uniform_int_distribution<int> num(1, 97), den(1, 13);
+  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+    if (is_a<symbol>(*it) && !m.count(*it)) m[*it] = numeric(num(rng), den(rng));
+  return m;
+}
+
+}  // namespace
+
+Solution solve(const Model& model, const EquationSystem& s) {
+  Solution sol;
+  const std::size_t n_eq = s.equations.size(), n_unk = s.unknowns.size();
+  const std::size_t width = n_unk + 1 + n_eq;  // [A | b | tracking]
+  std::vector<std::vector<ex>> rows(n_eq, std::vector<ex>(width, 0));
+  std::vector<std::string> problems;
+  for (std::size_t i = 0; i < n_eq; ++i) {
+    const ex residual = (s.equations[i].lhs - s.equations[i].rhs).expand();
+    exmap zero_unknowns;
+    for (const auto& u : s.unknowns) zero_unknowns[u] = 0;
+    for (std::size_t j = 0; j < n_unk; ++j) {
+      const ex a = residual.diff(ex_to<symbol>(s.unknowns[j]));
+      for (const auto& u : s.unknowns)
+        if (a.has(u)) {
+          problems.push_back("equation '" + s.equations[i].label + "' is not linear in " + to_text(s.unknowns[j]) +
+                             " (tackle solves linear systems)");
+          break;
+        }
+      rows[i][j] = a;
+    }
+    rows[i][n_unk] = -residual.subs(zero_unknowns);
+    rows[i][n_unk + 1 + i] = 1;
+  }
+  if (!problems.empty()) {
+    std::vector<Diagnostic> ds;
+    for (auto& p : problems) ds.push_back({{model.file, 0, 0}, p});
+    throw InputError(ds);
+  }
+
+  // Gauss-Jordan elimination.
+  std::vector<int> pivot_col_of_row;
+  std::size_t r = 0;
+  for (std::size_t j = 0; j < n_unk && r < n_eq; ++j) {
+    std::optional<std::size_t> best;
+    std::size_t best_size = 0;
+    for (std::size_t k = r; k < n_eq; ++k) {
+      if (zero(rows[k][j])) continue;
+      const std::size_t size = is_a<numeric>(rows[k][j]) ? 0 : to_text(rows[k][j]).size();
+      if (!best || size < best_size) {
+        best = k;
+        best_size = size;
+      }
+    }
+    if (!best) continue;
+    std::swap(rows[r], rows[*best]);
+    const ex p = rows[r][j];
+    for (auto& x : rows[r]) x = normal(x / p);
+    for (std::size_t k = 0; k < n_eq; ++k) {
+      if (k == r || zero(rows[k][j])) continue;
+      const ex f = rows[k][j];
+      for (std::size_t c = 0; c < width; ++c) rows[k][c] = normal(rows[k][c] - f * rows[r][c]);
+    }
+    pivot_col_of_row.push_back(static_cast<int>(j));
+    ++r;
+  }
+  sol.rank = r;
+
+  auto involved = [&](const std::vector<ex>& row) {
+    std::vector<std::string> labels;
+    for (std::size_t i = 0; i < n_eq; ++i)
+      if (!zero(row[n_unk + 1 + i])) labels.push_back(s.equations[i].label);
+    return labels;
+  };
+  // Rows without a pivot: 0 = b. Nonzero b: the equations that combine to it conflict.
+  for (std::size_t k = r; k < n_eq; ++k) {
+    if (!zero(rows[k][n_unk])) {
+      sol.status = Solution::Status::inconsistent;
+      for (const auto& l : involved(rows[k]))
+        if (std::find(sol.conflicts.begin(), sol.conflicts.end(), l) == sol.conflicts.end()) sol.conflicts.push_back(l);
+    } else {
+      sol.redundant.push_back(involved(rows[k]));
+    }
+  }
+  if (sol.status == Solution::Status::inconsistent) return sol;
+
+  std::vector<bool> is_pivot(n_unk, false);
+  for (int c : pivot_col_of_row) is_pivot[c] = true;
+  for (std::size_t j = 0; j < n_unk; ++j)
+    if (!is_pivot[j]) sol.free.push_back(s.unknowns[j]);
+  if (!sol.free.empty()) sol.status = Solution::Status::underdetermined;
+
+  for (std::size_t k = 0; k < r; ++k) {
+    const ex u = s.unknowns[pivot_col_of_row[k]];
+    ex rest = 0;  // the free unknowns in this row
+    for (std::size_t j = 0; j < n_unk; ++j)
+      if (!is_pivot[j] && !zero(rows[k][j])) rest += rows[k][j] * s.unknowns[j];
+    const ex value = simplest(rows[k][n_unk]);
+    sol.general[u] = value - rest;
+    if (rest.is_zero())
+      sol.values.push_back({u, value});
+    else
+      sol.combinations.push_back({u + rest, value});
+  }
+
+  // Verify: the general solution satisfies every equation, symbolically and at random exact
+  // rational values of the parameters and free unknowns.
+  std::mt19937 rng(20261121);
+  for (const auto& eq : s.equations) {
+    const ex residual = (eq.lhs - eq.rhs).subs(sol.general);
+    if (!zero(residual))
+      throw InternalError("solution fails equation '" + eq.label + "': residual " + to_text(normal(residual)));
+    for (int trial = 0; trial < 3; ++trial) {
+      const ex at = residual.subs(random_point(residual, rng));
+      if (!zero(at)) throw InternalError("solution fails equation '" + eq.label + "' at a random point");
+    }
+  }
+
+  for (const auto& c : model.conditions) {
+    CheckedCondition cc;
+    cc.condition = &c;
+    cc.expr = simplest((c.lhs - c.rhs).subs(sol.general));
+    for (const auto& f : sol.free) cc.depends_on_free = cc.depends_on_free || cc.expr.has(f);
+    // Conditions on unknowns that the chosen equations do not contain are left out.
+    bool relevant = true;
+    for (const auto& u : model.candidates)
+      if (cc.expr.has(u) && std::find(s.unknowns.begin(), s.unknowns.end(), u) == s.unknowns.end()) relevant = false;
+    if (relevant) sol.conditions.push_back(cc);
+  }
+  return sol;
+}
+
+}  // namespace tackle

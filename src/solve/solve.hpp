@@ -1,0 +1,56 @@
+// Solving the linear system for the unknowns with explicit rank and consistency checks
+// (Gauss-Jordan over rational functions, pivots decided by `normal(.).is_zero()`, so the
+// rank is the generic rank: parameters are treated as independent symbols). Every reported
+// solution has been substituted back into every equation, symbolically and at random exact
+// rational parameter values.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "equations/equations.hpp"
+#include "model/model.hpp"
+
+namespace tackle {
+
+struct Determined {
+  GiNaC::ex unknown;
+  GiNaC::ex value;  // closed form in the parameters
+};
+
+/// A combination of unknowns that the equations determine although its parts are free
+/// (`O_y + G_y = -3 N`).
+struct Combination {
+  GiNaC::ex combination;
+  GiNaC::ex value;
+};
+
+struct CheckedCondition {
+  const Condition* condition = nullptr;
+  GiNaC::ex expr;  // lhs - rhs with the solution substituted, simplified; the condition is `expr op 0`
+  bool depends_on_free = false;
+};
+
+struct Solution {
+  enum class Status { determined, underdetermined, inconsistent } status = Status::determined;
+  std::size_t rank = 0;
+  std::vector<Determined> values;
+  std::vector<GiNaC::ex> free;
+  std::vector<Combination> combinations;
+  std::vector<std::string> conflicts;                // inconsistent: the equations that conflict
+  std::vector<std::vector<std::string>> redundant;   // groups of equations that depend on each other
+  std::vector<CheckedCondition> conditions;
+  GiNaC::exmap general;  // every unknown in terms of the parameters and the free unknowns
+
+  [[nodiscard]] std::optional<GiNaC::ex> value_of(const GiNaC::ex& unknown) const;
+};
+
+/// Shortest of the normal form and its factored form.
+[[nodiscard]] GiNaC::ex simplest(const GiNaC::ex& e);
+
+[[nodiscard]] Solution solve(const Model& m, const EquationSystem& s);
+
+}  // namespace tackle

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Derives every example as LaTeX and compiles it with pdflatex; fails on the first error.
+set -euo pipefail
+tackle=$1
+examples=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+count=0
+for f in "$examples"/*.yaml; do
+  name=$(basename "$f" .yaml)
+  "$tackle" derive "$f" --format latex -o "$work/$name.tex"
+  if ! (cd "$work" && pdflatex -interaction=nonstopmode -halt-on-error "$name.tex" >"$name.out" 2>&1); then
+    echo "pdflatex failed for $f:"; tail -30 "$work/$name.out"; exit 1
+  fi
+  "$tackle" solve "$f" --format latex -o "$work/$name-key.tex"
+  (cd "$work" && pdflatex -interaction=nonstopmode -halt-on-error "$name-key.tex" >"$name-key.out" 2>&1) \
+    || { echo "pdflatex failed for the answers of $f"; tail -30 "$work/$name-key.out"; exit 1; }
+  count=$((count + 1))
+done
+echo "compiled $count examples"
+[ "$count" -gt 0 ]
