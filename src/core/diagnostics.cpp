@@ -64,8 +64,9 @@ std::string nearest(std::string_view word, const std::vector<std::string>& candi
       best_d = d;
     }
   }
-  // Close enough to be a plausible typo: at most a third of the longer word.
-  const std::size_t limit = std::max<std::size_t>(1, std::max(word.size(), best.size()) / 3);
+  // Close enough to be a plausible typo: at most a third of the longer word (so one- and
+  // two-letter names are suggested only when they differ in case).
+  const std::size_t limit = std::max(word.size(), best.size()) / 3;
   return (!best.empty() && best_d <= limit) ? best : std::string{};
 }
 

@@ -40,7 +40,9 @@ struct Reader {
       return;
     }
     yaml::check_unique_keys(n, "'parameters'", file, diags);
+    std::set<std::string> seen;
     for (const auto& kv : n) {
+      if (!seen.insert(kv.first.Scalar()).second) continue;  // reported as a duplicate key
       ParameterDesc p;
       p.name = key_text(kv.first);
       const std::string what = "parameter '" + p.name.text + "'";
@@ -73,7 +75,9 @@ struct Reader {
       return;
     }
     yaml::check_unique_keys(n, "'bodies'", file, diags);
+    std::set<std::string> seen;
     for (const auto& kv : n) {
+      if (!seen.insert(kv.first.Scalar()).second) continue;
       BodyDesc b;
       b.name = key_text(kv.first);
       const std::string what = "body '" + b.name.text + "'";
@@ -94,7 +98,9 @@ struct Reader {
       return;
     }
     yaml::check_unique_keys(n, "'points'", file, diags);
+    std::set<std::string> seen;
     for (const auto& kv : n) {
+      if (!seen.insert(kv.first.Scalar()).second) continue;
       PointDesc p;
       p.name = key_text(kv.first);
       const std::string what = "point '" + p.name.text + "'";
@@ -229,15 +235,18 @@ struct Reader {
 
 }  // namespace
 
-Description parse_description(const std::string& text, const std::string& file) {
+DescriptionRead read_description_text(const std::string& text, const std::string& file) {
   Diagnostics diags;
-  Description d;
+  DescriptionRead out;
+  Description& d = out.description;
   d.file = file;
   const YAML::Node root = yaml::load(text, file, diags);
-  if (!diags.empty()) diags.throw_if_any();
-  if (!root.IsMap()) {
+  if (diags.empty() && !root.IsMap())
     diags.error({file, 1, 1}, "the description is " + yaml::kind_name(root) + " (expected a mapping with title, bodies, ...)");
-    diags.throw_if_any();
+  if (!diags.empty()) {
+    out.problems = diags.items();
+    out.usable = false;
+    return out;
   }
   Reader r{file, diags, d};
   check_map(root,
@@ -266,16 +275,26 @@ Description parse_description(const std::string& text, const std::string& file) 
   }
   if (auto f = root["find"]) r.read_find(f);
   if (auto dv = root["derive"]) r.read_derive(dv);
-  diags.throw_if_any();
-  return d;
+  out.problems = diags.items();
+  return out;
 }
 
-Description read_description(const std::string& path) {
+Description parse_description(const std::string& text, const std::string& file) {
+  DescriptionRead r = read_description_text(text, file);
+  if (!r.problems.empty()) throw InputError(r.problems);
+  return std::move(r.description);
+}
+
+std::string read_text_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({{{path, 0, 0}, "cannot read the file"}});
   std::ostringstream ss;
   ss << in.rdbuf();
-  return parse_description(ss.str(), path);
+  return ss.str();
+}
+
+Description read_description(const std::string& path) {
+  return parse_description(read_text_file(path), path);
 }
 
 }  // namespace tackle

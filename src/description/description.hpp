@@ -81,8 +81,19 @@ struct Description {
   std::vector<DeriveDesc> derive;  // empty: tackle chooses a complete set
 };
 
+/// A description and the problems found while reading it; what could be read is kept so that
+/// the model stage can report its own problems in the same run.
+struct DescriptionRead {
+  Description description;
+  std::vector<Diagnostic> problems;
+  bool usable = true;  // false when the file is not YAML or not a mapping
+};
+[[nodiscard]] DescriptionRead read_description_text(const std::string& text, const std::string& file);
+
 /// Reads a description; every problem in the file is reported at once (InputError).
 [[nodiscard]] Description read_description(const std::string& path);
+/// The whole file as text (InputError when it cannot be read).
+[[nodiscard]] std::string read_text_file(const std::string& path);
 /// The same from text already in memory; `file` names it in messages.
 [[nodiscard]] Description parse_description(const std::string& text, const std::string& file);
 

@@ -41,8 +41,15 @@ Equation lmb(const Model& m, const std::vector<int>& bodies, bool system) {
 
 EquationSystem build_equations(const Model& m) {
   EquationSystem s;
+  exmap still_coordinates;
+  for (const auto& b : m.bodies)
+    if (!b.coord.is_zero()) still_coordinates[b.coord] = 0;
   auto add_constraint = [&](const Constraint& c) {
-    ConstraintSteps steps{c.label, c.meaning, c.quantity, time_derivative(c.quantity, m), 0};
+    // Constant parts (fixed points, offsets, wrap around pulleys) drop out of the derivatives;
+    // the book leaves them out of the length sum too.
+    const ex q = c.quantity.expand();
+    const ex varying = (q - q.subs(still_coordinates)).expand();
+    ConstraintSteps steps{c.label, c.meaning, varying, time_derivative(varying, m), 0};
     steps.acceleration = time_derivative(steps.rate, m);
     s.constraints.push_back(steps);
     Equation eq;

@@ -189,7 +189,7 @@ class Parser {
         // Bound the size of the number the power would make (in bits) before making it.
         const numeric b = ex_to<numeric>(base);
         const long bits = b.is_rational() ? b.numer().int_length() + b.denom().int_length() : 64;
-        if (bits * std::abs(n.numer().to_long()) > 16384) fail(col, "number is too large");
+        if (bits * std::abs(n.numer().to_long()) > 4096) fail(col, "number is too large");
       }
     }
     return pow(base, expo);
@@ -279,7 +279,14 @@ class Parser {
         if (auto r = names_.resolve(t.text)) return *r;
         std::string msg = "unknown name '" + t.text + "'";
         const auto known = names_.known_names();
-        if (auto near = nearest(t.text, known); !near.empty()) msg += " (did you mean '" + near + "'?)";
+        if (auto near = nearest(t.text, known); !near.empty()) {
+          msg += " (did you mean '" + near + "'?)";
+        } else {
+          std::vector<std::string> plain;  // names a user types, without dot(...) and ddot(...)
+          for (const auto& k : known)
+            if (k.find('(') == std::string::npos && plain.size() < 12) plain.push_back(k);
+          if (!plain.empty()) msg += " (known: " + join(plain) + (plain.size() == 12 ? ", ..." : "") + ")";
+        }
         fail(t.column, msg);
       }
       case Tok::lparen: {

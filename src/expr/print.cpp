@@ -149,6 +149,25 @@ Fraction split(const ex& e) {
     for (const auto& x : e) factor(x);
   else
     factor(e);
+  // A textbook writes g (m_B - m_A), not -g (m_A - m_B): a minus sign in front of a product
+  // with a sum in it moves into the first such sum that has a negative term.
+  if (f.negative) {
+    for (auto* side : {&f.num, &f.den}) {
+      bool moved = false;
+      for (auto& x : *side)
+        if (is_a<add>(x)) {
+          bool has_negative = false;
+          for (std::size_t i = 0; i < x.nops(); ++i) has_negative = has_negative || is_negative_term(x.op(i));
+          if (has_negative) {
+            x = (-x).expand();
+            f.negative = false;
+            moved = true;
+            break;
+          }
+        }
+      if (moved) break;
+    }
+  }
   // Factors: plain names first (m_A), then rates and accelerations (ddot(x_A)), then the rest.
   auto rank = [](const ex& x) {
     const ex base = is_a<power>(x) ? x.op(0) : x;

@@ -40,12 +40,16 @@ struct Builder {
   Diagnostics diags;
   std::shared_ptr<SymbolTable> table = std::make_shared<SymbolTable>();
   Model m;
-  std::map<std::string, Location> names_in_use;  // every name a user defines, with where
+  std::map<std::string, Location> names_in_use;   // symbol names: parameters, coordinates, unknowns
+  std::map<std::string, Location> places_in_use;  // body and point names
   std::map<std::string, int> body_index;
   std::map<std::string, int> point_index;  // bodies are points too
   exmap layout;                            // values for telling strand directions
 
-  bool claim(const Text& name, const std::string& what) {
+  bool claim(const Text& name, const std::string& what) { return claim_in(names_in_use, name, what); }
+  bool claim_place(const Text& name, const std::string& what) { return claim_in(places_in_use, name, what); }
+
+  bool claim_in(std::map<std::string, Location>& names_in_use, const Text& name, const std::string& what) {
     if (!is_identifier(name.text)) {
       diags.error(name.at, what + " name '" + name.text +
                                "' is not a valid name (expected a letter, then letters, digits or _)");
@@ -128,7 +132,7 @@ struct Builder {
 
   void bodies() {
     for (const auto& b : d.bodies) {
-      if (!claim(b.name, "body")) continue;
+      if (!claim_place(b.name, "body")) continue;
       Body body;
       body.name = b.name.text;
       body.at = b.name.at;
@@ -162,7 +166,7 @@ struct Builder {
 
   void points() {
     for (const auto& p : d.points) {
-      if (!claim(p.name, "point")) continue;
+      if (!claim_place(p.name, "point")) continue;
       Point pt;
       pt.name = p.name.text;
       pt.at = p.name.at;
@@ -217,10 +221,12 @@ struct Builder {
     for (const auto& [name, value] : d.layout) {
       const SymbolInfo* s = table->find(name.text);
       if (!s || (s->role != SymbolRole::coordinate && s->role != SymbolRole::parameter)) {
-        std::vector<std::string> coords;
-        for (const auto& b : m.bodies)
-          if (!b.coord.is_zero()) coords.push_back(to_text(b.coord));
-        unknown_name(name, "coordinate in 'layout'", coords);
+        std::vector<std::string> known;
+        for (const auto& sym : table->all())
+          if (sym->role == SymbolRole::coordinate || sym->role == SymbolRole::parameter) known.push_back(sym->name);
+        std::string msg = "'layout' names '" + name.text + "', which is not a coordinate or a parameter";
+        if (auto near = nearest(name.text, known); !near.empty()) msg += " (did you mean '" + near + "'?)";
+        diags.error(name.at, msg);
         continue;
       }
       struct NoNames : NameResolver {
@@ -236,6 +242,9 @@ struct Builder {
   // strand's length is constant (both ends on one body, or both fixed).
   std::optional<int> strand_sign(const Point& a, const Point& b, const Location& at, const std::string& label) {
     if (a.body == b.body) return 0;
+    // A body whose coordinate could not be made has been reported already.
+    for (const Point* p : {&a, &b})
+      if (p->body >= 0 && m.bodies[p->body].coord.is_zero()) return std::nullopt;
     const ex diff = (b.position - a.position).subs(layout);
     if (!is_a<numeric>(diff)) {
       std::set<std::string> missing;
@@ -525,8 +534,8 @@ struct Builder {
     }
     for (const auto& pc : pending_checks)
       if (pc.check->kind == CheckSpec::Kind::passes_over && pc.point >= 0 && !interior_points.count(pc.point))
-        diags.error(pc.at, "no string runs over " + pc.what + " at '" + m.points[pc.point].name +
-                               "' (expected it inside some string's path)");
+        diags.error(pc.at, "no string runs over point '" + m.points[pc.point].name + "' of a " + pc.what +
+                               " (expected it inside some string's path)");
   }
 
   void gravity() {

@@ -1,5 +1,7 @@
 #include "pipeline/pipeline.hpp"
 
+#include <algorithm>
+
 namespace tackle {
 
 std::unique_ptr<const Analysis> analyze(const Description& d, const RuleSet& rules) {
@@ -10,8 +12,29 @@ std::unique_ptr<const Analysis> analyze(const Description& d, const RuleSet& rul
   return a;
 }
 
+std::unique_ptr<const Analysis> analyze_text(const std::string& text, const std::string& file, const RuleSet& rules) {
+  DescriptionRead read = read_description_text(text, file);
+  if (!read.usable) throw InputError(read.problems);
+  std::vector<Diagnostic> all = read.problems;
+  auto a = std::make_unique<Analysis>();
+  try {
+    a->model = build_model(read.description, rules);
+  } catch (const InputError& e) {
+    all.insert(all.end(), e.diagnostics().begin(), e.diagnostics().end());
+  }
+  if (!all.empty()) {
+    std::stable_sort(all.begin(), all.end(), [](const Diagnostic& x, const Diagnostic& y) {
+      return std::pair(x.where.line, x.where.column) < std::pair(y.where.line, y.where.column);
+    });
+    throw InputError(all);
+  }
+  a->system = build_equations(a->model);
+  a->solution = solve(a->model, a->system);
+  return a;
+}
+
 std::unique_ptr<const Analysis> analyze_file(const std::string& path, const RuleSet& rules) {
-  return analyze(read_description(path), rules);
+  return analyze_text(read_text_file(path), path, rules);
 }
 
 Derivation explain(const Analysis& a) { return explain(a.model, a.system, a.solution); }

@@ -21,6 +21,10 @@ struct Analysis {
 };
 
 [[nodiscard]] std::unique_ptr<const Analysis> analyze(const Description& d, const RuleSet& rules);
+/// Reads and analyzes text; problems of the description and of the model are reported
+/// together, in file order.
+[[nodiscard]] std::unique_ptr<const Analysis> analyze_text(const std::string& text, const std::string& file,
+                                                           const RuleSet& rules);
 [[nodiscard]] std::unique_ptr<const Analysis> analyze_file(const std::string& path, const RuleSet& rules);
 [[nodiscard]] Derivation explain(const Analysis& a);
 

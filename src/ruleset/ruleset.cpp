@@ -83,11 +83,18 @@ struct RuleReader {
       a.key = kv.first.Scalar();
       a.required = required;
       if (kv.second.IsScalar()) {
-        if (auto k = kind_of({kv.second.Scalar(), where(kv.second, file)})) a.kind = *k;
+        if (auto k = kind_of({kv.second.Scalar(), where(kv.second, file)}))
+          a.kind = *k;
+        else
+          a.kind_known = false;
       } else if (check_map(kv.second, {"kind", "dimension"}, "argument '" + a.key + "'", file, diags)) {
         if (auto k = kv.second["kind"]) {
-          if (auto t = scalar(k, "'kind'", file, diags))
-            if (auto kk = kind_of(*t)) a.kind = *kk;
+          if (auto t = scalar(k, "'kind'", file, diags)) {
+            if (auto kk = kind_of(*t))
+              a.kind = *kk;
+            else
+              a.kind_known = false;
+          }
         }
         if (auto d = kv.second["dimension"]) {
           if (auto t = scalar(d, "'dimension'", file, diags)) {
@@ -133,8 +140,10 @@ struct RuleReader {
       diags.error(at, what + " names argument '" + key + "', which the rule does not declare");
       return;
     }
-    if (a->kind != expected && !(expected == ArgKind::body && a->kind == ArgKind::point))
-      diags.error(at, what + " needs argument '" + key + "' to be of another kind");
+    static const char* names[] = {"body", "point", "points", "expr", "name"};
+    if (a->kind_known && a->kind != expected && !(expected == ArgKind::body && a->kind == ArgKind::point))
+      diags.error(at, what + " uses argument '" + key + "' as " + names[static_cast<int>(expected)] +
+                          " but the rule declares it as " + names[static_cast<int>(a->kind)]);
   }
 
   Rule read(const YAML::Node& root) {

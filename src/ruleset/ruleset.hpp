@@ -22,6 +22,7 @@ struct ArgSpec {
   ArgKind kind = ArgKind::expr;
   std::optional<Dimension> dimension;  // for expr arguments
   bool required = true;
+  bool kind_known = true;  // false when the rule file named an unknown kind (already reported)
 };
 
 struct UnknownSpec {

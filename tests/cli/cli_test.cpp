@@ -1,0 +1,132 @@
+// The tackle command as a user runs it: outputs, golden reports, exit codes.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "expr/parse.hpp"
+#include "../support/helpers.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run {
+  int code;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+Run run_tackle(const std::string& args) {
+  const fs::path dir = fs::temp_directory_path() / ("tackle-cli-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string cmd = std::string(TACKLE_BINARY) + " " + args + " >" + (dir / "out").string() + " 2>" +
+                          (dir / "err").string() + " </dev/null";
+  const int status = std::system(cmd.c_str());
+  Run r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "out"), slurp(dir / "err")};
+  fs::remove_all(dir);
+  return r;
+}
+
+const std::string examples = TACKLE_SOURCE_DIR "/examples/";
+
+}  // namespace
+
+TEST_CASE("CLI: solve --format json gives sample 12.3's numbers and parseable closed forms", "[cli]") {
+  const Run r = run_tackle("solve " + examples + "sample-12.3-two-mass-pulley.yaml --format json");
+  REQUIRE(r.code == 0);
+  CHECK(r.err.empty());
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["version"] == 1);
+  CHECK(j["status"] == "determined");
+  std::map<std::string, nlohmann::json> by_name;
+  for (const auto& u : j["unknowns"]) by_name[u["name"]] = u;
+  CHECK(by_name["T"]["value"] == 20.0);
+  CHECK(by_name["T"]["unit"] == "N");
+  CHECK(by_name["T"]["closed_form"] == "2*F*m_B/(9*m_A + 4*m_B)");
+  CHECK(by_name["T"]["latex"] == "\\frac{2 F m_{B}}{9 m_{A} + 4 m_{B}}");
+  CHECK(by_name["ddot(x_A)"]["value"] == -2.25);
+  CHECK(by_name["ddot(x_A)"]["unit"] == "m/s^2");
+  CHECK(by_name["ddot(x_B)"]["value"] == -1.5);
+  // closed_form parses back with the problem's own symbols.
+  const auto a = tackle::analyze_file(examples + "sample-12.3-two-mass-pulley.yaml", tackle::test::rules());
+  for (const auto& [name, u] : by_name) {
+    auto parsed = tackle::parse_expression(u["closed_form"].get<std::string>(), *a->model.symbols);
+    REQUIRE(parsed.value);
+    CHECK(GiNaC::normal(*parsed.value - *a->solution.value_of(a->model.symbols->find(name)->sym)).is_zero());
+  }
+}
+
+TEST_CASE("CLI: derive prints each example as in its approved text report", "[cli][golden]") {
+  for (const auto& e : fs::directory_iterator(examples)) {
+    if (e.path().extension() != ".yaml") continue;
+    SECTION(e.path().stem().string()) {
+      // Run from the source directory so that file names in the report are relative.
+      const Run r = run_tackle("derive examples/" + e.path().filename().string());
+      REQUIRE(r.code == 0);
+      const fs::path approved = fs::path(TACKLE_SOURCE_DIR) / "tests/approved" / (e.path().stem().string() + ".txt");
+      if (std::getenv("TACKLE_UPDATE_GOLDEN")) {
+        std::ofstream(approved, std::ios::binary) << r.out;
+      }
+      CHECK(r.out == slurp(approved));
+    }
+  }
+}
+
+TEST_CASE("CLI: output is identical from run to run", "[cli]") {
+  const std::string args = "derive " + examples + "atwood-machine.yaml --format latex";
+  CHECK(run_tackle(args).out == run_tackle(args).out);
+}
+
+TEST_CASE("CLI: exit codes: 0 ok, 1 input error, 2 usage", "[cli]") {
+  CHECK(run_tackle("--help").code == 0);
+  CHECK(run_tackle("derive --help").code == 0);
+  CHECK(run_tackle("").code == 2);
+  CHECK(run_tackle("derive").code == 2);
+  CHECK(run_tackle("solve " + examples + "atwood-machine.yaml --format pdf").code == 2);
+  CHECK(run_tackle("frobnicate").code == 2);
+  const Run missing = run_tackle("solve no/such/file.yaml");
+  CHECK(missing.code == 1);
+  CHECK(missing.err == "no/such/file.yaml: cannot read the file\n");
+}
+
+TEST_CASE("CLI: a bad description reports every located problem on stderr and exits 1", "[cli]") {
+  const fs::path bad = fs::temp_directory_path() / "tackle-bad.yaml";
+  std::ofstream(bad) << "title: bad\nbodies:\n  A: {mas: m, position: x_A}\nloads:\n  - {on: Q, force: F}\n";
+  const Run r = run_tackle("derive " + bad.string());
+  CHECK(r.code == 1);
+  CHECK(r.out.empty());
+  CHECK(r.err == bad.string() + ":3:7: unknown key 'mas' in body 'A' (did you mean 'mass'?)\n" + bad.string() +
+                     ":5:10: unknown body 'Q' (known: A)\n" + bad.string() +
+                     ":5:20: 'force' of a 'force' connection: unknown name 'F' (known: x_A)\n");
+  fs::remove(bad);
+}
+
+TEST_CASE("CLI: a bad rules directory is an input error", "[cli]") {
+  const Run r = run_tackle("--rules /no/such/dir solve " + examples + "atwood-machine.yaml");
+  CHECK(r.code == 1);
+  CHECK(r.err == "/no/such/dir: the rules directory does not exist (expected rules/*.yaml)\n");
+}
+
+TEST_CASE("CLI: -o writes the report to a file", "[cli]") {
+  const fs::path out = fs::temp_directory_path() / "tackle-out.tex";
+  const Run r = run_tackle("derive " + examples + "figure-12.5c-force-doubled.yaml --format latex -o " + out.string());
+  CHECK(r.code == 0);
+  CHECK(r.out.empty());
+  const std::string tex = slurp(out);
+  CHECK(tex.find("\\documentclass") == 0);
+  CHECK(tex.find("m_{\\mathrm{eff}} = \\frac{m}{4}") != std::string::npos);
+  fs::remove(out);
+}

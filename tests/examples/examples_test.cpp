@@ -1,0 +1,96 @@
+// Table-driven: every example in examples/ states its expected closed forms and numbers
+// (derived by hand, in its `notes`). Each is derived and compared algebraically
+// (normal(a - b) == 0), at random exact rational points, and numerically.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <random>
+
+#include <yaml-cpp/yaml.h>
+
+#include "expr/parse.hpp"
+#include "expr/print.hpp"
+#include "../support/helpers.hpp"
+
+using namespace tackle;
+using namespace GiNaC;
+
+namespace {
+
+std::vector<std::string> example_files() {
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(TACKLE_SOURCE_DIR "/examples"))
+    if (e.path().extension() == ".yaml") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace
+
+TEST_CASE("Examples: every example derives its expected closed forms and numbers", "[examples]") {
+  const auto files = example_files();
+  REQUIRE(files.size() >= 9);
+  for (const auto& file : files) {
+    SECTION(std::filesystem::path(file).filename().string()) {
+      const YAML::Node root = YAML::LoadFile(file);
+      const YAML::Node expected = root["expected"];
+      INFO(file);
+      REQUIRE(expected.IsMap());
+      const auto analysis = analyze_file(file, test::rules());
+      const Derivation d = explain(*analysis);
+      const SymbolTable& table = *analysis->model.symbols;
+      // Every answer the example asks for has an expectation, and the reverse.
+      REQUIRE(d.answers.size() == expected.size());
+      std::mt19937 rng(7);
+      std::uniform_int_distribution<int> num(1, 60), den(1, 7);
+      for (const auto& answer : d.answers) {
+        INFO("answer " << answer.name);
+        const YAML::Node want = expected[answer.name];
+        REQUIRE(want.IsMap());
+        REQUIRE(answer.closed_form);
+        const auto parsed = parse_expression(want["closed_form"].as<std::string>(), table);
+        REQUIRE(parsed.value);
+        const ex difference = *answer.closed_form - *parsed.value;
+        INFO("tackle: " << to_text(*answer.closed_form) << "  expected: " << to_text(*parsed.value));
+        CHECK(normal(difference).is_zero());
+        for (int trial = 0; trial < 3; ++trial) {
+          exmap point;
+          for (const auto& s : table.all()) point[s->sym] = numeric(num(rng), den(rng));
+          CHECK(normal(difference.subs(point)).is_zero());
+        }
+        if (want["value"]) {
+          REQUIRE(answer.value);
+          const double v = want["value"].as<double>();
+          CHECK(answer.value->approx == Approx(v).epsilon(1e-9).margin(1e-12));
+        }
+      }
+      CHECK(d.status == "determined");
+    }
+  }
+}
+
+TEST_CASE("Examples: sample 12.3 gives the book's numbers exactly", "[examples]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.3-two-mass-pulley.yaml", test::rules());
+  const Derivation d = explain(*a);
+  std::map<std::string, std::string> got;
+  for (const auto& ans : d.answers) got[ans.name] = to_text(ans.value->exact) + " " + ans.value->unit;
+  CHECK(got == std::map<std::string, std::string>{{"T", "20 N"}, {"ddot(x_A)", "-9/4 m/s^2"}, {"ddot(x_B)", "-3/2 m/s^2"}});
+}
+
+TEST_CASE("Examples: the string's tension must stay non-negative", "[examples][validity]") {
+  const auto a = test::run_text(R"(
+title: pushing on a string (A is pushed towards B)
+parameters: {F: {value: 10, unit: N}, m: {value: 2, unit: kg}}
+bodies: {A: {mass: m, position: x_A}, B: {mass: m, position: x_B}}
+loads: [{on: A, force: F}]
+strings: [{name: s, path: [A, B], tension: T}]
+layout: {x_A: 0, x_B: 1}
+)");
+  const Derivation d = explain(*a);
+  REQUIRE(d.conditions.size() == 1);
+  CHECK(to_text(d.conditions[0].simplified) == "-F/2");
+  REQUIRE(d.conditions[0].holds);
+  CHECK_FALSE(*d.conditions[0].holds);
+  CHECK(d.conditions[0].otherwise == "the string goes slack");
+}

@@ -1,0 +1,47 @@
+#include <catch2/catch.hpp>
+
+#include "core/units.hpp"
+
+using namespace tackle;
+using GiNaC::numeric;
+
+namespace {
+Unit unit(const std::string& text) {
+  std::string err;
+  int col = 0;
+  auto u = parse_unit(text, err, col);
+  INFO(text << ": " << err);
+  REQUIRE(u);
+  return *u;
+}
+}  // namespace
+
+TEST_CASE("Units: SI units and prefixes convert exactly", "[units]") {
+  CHECK(unit("N").to_si == 1);
+  CHECK(unit("kN").to_si == 1000);
+  CHECK(unit("g").to_si == numeric(1, 1000));
+  CHECK(unit("mm").to_si == numeric(1, 1000));
+  CHECK(unit("km/h").to_si == numeric(1000, 3600));
+  CHECK(unit("m/s^2").dimension == Dimension::acceleration());
+  CHECK(unit("kg*m/s^2").dimension == Dimension::force());
+  CHECK(unit("N/m").dimension == Dimension::force() / Dimension::length());
+}
+
+TEST_CASE("Units: an unknown unit is located within the text", "[units]") {
+  std::string err;
+  int col = -1;
+  CHECK_FALSE(parse_unit("m/ss^2", err, col));
+  CHECK(err == "unknown unit 'ss'");
+  CHECK(col == 2);
+  CHECK_FALSE(parse_unit("kg*", err, col));
+  CHECK(err == "unit ends after an operator");
+}
+
+TEST_CASE("Units: dimensions are named and given SI units", "[units]") {
+  CHECK(Dimension::force().describe() == "force");
+  CHECK((Dimension::force() / Dimension::length()).describe() == "stiffness (force per length)");
+  CHECK(si_unit_name(Dimension::acceleration()) == "m/s^2");
+  CHECK(si_unit_name(Dimension::force()) == "N");
+  CHECK(si_unit_name(Dimension::mass().pow(2)) == "kg^2");
+  CHECK(unit_latex("m/s^2") == "\\mathrm{m/s^{2}}");
+}

@@ -1,0 +1,136 @@
+// Bad descriptions: each kind of mistake gets a located message, word for word, and every
+// problem in a file is reported at once.
+#include <catch2/catch.hpp>
+
+#include "../../support/helpers.hpp"
+
+using tackle::test::errors_of;
+using Messages = std::vector<std::string>;
+
+namespace {
+// A correct two-mass pulley problem; the cases below break one thing at a time.
+const std::string good = R"(title: ok
+parameters:
+  F: {value: 130, unit: N}
+  m: {value: 40, unit: kg}
+bodies:
+  A: {mass: m, position: x_A}
+  B: {mass: m, position: x_B}
+points:
+  C: 0
+loads:
+  - {on: A, force: -F}
+strings:
+  - {name: s, path: [B, C, A], tension: T}
+layout: {x_A: -1, x_B: 1}
+)";
+
+std::string with(std::string text, const std::string& from, const std::string& to) {
+  const auto pos = text.find(from);
+  REQUIRE(pos != std::string::npos);
+  text.replace(pos, from.size(), to);
+  return text;
+}
+}  // namespace
+
+TEST_CASE("Description: the unbroken problem is accepted", "[errors]") { CHECK(errors_of(good).empty()); }
+
+TEST_CASE("Description: bad YAML is located", "[errors]") {
+  CHECK(errors_of(with(good, "layout: {x_A: -1, x_B: 1}", "layout: {x_A: -1, x_B: 1")) ==
+        Messages{"t.yaml:15:1: invalid YAML: end of map flow not found"});
+}
+
+TEST_CASE("Description: an unknown key suggests the nearest valid key", "[errors]") {
+  CHECK(errors_of(with(good, "A: {mass: m,", "A: {mas: m,")) ==
+        Messages{"t.yaml:6:7: unknown key 'mas' in body 'A' (did you mean 'mass'?)"});
+  CHECK(errors_of(with(good, "layout:", "layuot:")) ==
+        Messages{"t.yaml:13:5: cannot tell the direction of strand B-C of string s (give 'layout' values for x_B)",
+                 "t.yaml:13:5: cannot tell the direction of strand C-A of string s (give 'layout' values for x_A)",
+                 "t.yaml:14:1: unknown key 'layuot' in the description (did you mean 'layout'?)"});
+}
+
+TEST_CASE("Description: an undefined name in an expression is located inside it", "[errors]") {
+  CHECK(errors_of(with(good, "force: -F", "force: -G")) ==
+        Messages{"t.yaml:11:21: 'force' of a 'force' connection: unknown name 'G' (known: F, m, x_A, x_B)"});
+}
+
+TEST_CASE("Description: a duplicate name says where the first one is", "[errors]") {
+  // A point may not share a body's name; a coordinate may not share a parameter's.
+  CHECK(errors_of(with(good, "  C: 0", "  A: 0")) ==
+        Messages{"t.yaml:9:3: duplicate name 'A' (first defined at line 6)",
+                 "t.yaml:13:25: unknown point 'C' (known: A, B)"});
+  CHECK(errors_of(with(good, "position: x_B", "position: m")) ==
+        Messages{"t.yaml:7:26: duplicate name 'm' (first defined at line 4)",
+                 "t.yaml:14:19: 'layout' names 'x_B', which is not a coordinate or a parameter (did you mean 'x_A'?)"});
+}
+
+TEST_CASE("Description: an expression that does not parse", "[errors]") {
+  CHECK(errors_of(with(good, "A: {mass: m,", "A: {mass: 2*m*,")) ==
+        Messages{"t.yaml:6:17: mass of body 'A': expression ends too early"});
+}
+
+TEST_CASE("Description: a string path through an unknown point", "[errors]") {
+  CHECK(errors_of(with(good, "path: [B, C, A]", "path: [B, D, A]")) ==
+        Messages{"t.yaml:13:25: unknown point 'D' (known: A, B, C)"});
+}
+
+TEST_CASE("Description: an unknown unit and a unit of the wrong dimension", "[errors]") {
+  CHECK(errors_of(with(good, "unit: kg}", "unit: kgg}")) ==
+        Messages{"t.yaml:4:24: unit of parameter 'm': unknown unit 'kgg' (expected SI units such as kg, m, s, N, m/s^2, kN)"});
+  CHECK(errors_of(with(good, "unit: kg}", "unit: m}")) ==
+        Messages{"t.yaml:6:13: mass of body 'A' is a length (expected a mass)",
+                 "t.yaml:7:13: mass of body 'B' is a length (expected a mass)"});
+}
+
+TEST_CASE("Description: a force that is not a force", "[errors]") {
+  CHECK(errors_of(with(good, "force: -F", "force: -m")) ==
+        Messages{"t.yaml:11:20: 'force' of a 'force' connection is a mass (expected a force)"});
+}
+
+TEST_CASE("Description: an unknown connection type suggests the nearest rule", "[errors]") {
+  CHECK(errors_of(good + "connections:\n  - {type: pully, at: C}\n") ==
+        Messages{"t.yaml:16:12: unknown connection type 'pully' (did you mean 'pulley'?; known: fixed, force, pulley, string)"});
+}
+
+TEST_CASE("Description: a connection without what its rule needs", "[errors]") {
+  CHECK(errors_of(good + "connections:\n  - {type: fixed}\n") ==
+        Messages{"t.yaml:16:5: a 'fixed' connection needs 'body'"});
+  CHECK(errors_of(with(good, "path: [B, C, A]", "length: x_B - x_A, path: [B, C, A]")) ==
+        Messages{"t.yaml:13:5: a 'string' connection 's' has path and length (expected one of them)"});
+}
+
+TEST_CASE("Description: a pulley that no string runs over", "[errors]") {
+  CHECK(errors_of(good + "connections:\n  - {type: pulley, at: A}\n") ==
+        Messages{"t.yaml:16:5: no string runs over point 'A' of a 'pulley' connection (expected it inside some string's path)"});
+}
+
+TEST_CASE("Description: a strand whose direction cannot be told", "[errors]") {
+  CHECK(errors_of(with(good, "layout: {x_A: -1, x_B: 1}", "layout: {x_A: 0, x_B: 1}")) ==
+        Messages{"t.yaml:13:5: strand C-A of string s has zero length in the layout (expected its ends apart)"});
+}
+
+TEST_CASE("Description: duplicate keys and wrong shapes", "[errors]") {
+  CHECK(errors_of(with(good, "  C: 0\n", "  C: 0\n  C: 1\n")) ==
+        Messages{"t.yaml:10:3: duplicate key 'C' in 'points'"});
+  CHECK(errors_of(with(good, "points:", "points: 3\nx:")) ==
+        Messages{"t.yaml:8:9: 'points' is a scalar (expected a mapping of names)",
+                 "t.yaml:9:1: unknown key 'x' in the description (expected one of: title, source, axes, parameters, "
+                 "gravity, bodies, points, connections, loads, strings, layout, given, find, derive, expected, notes)",
+                 "t.yaml:14:25: unknown point 'C' (known: A, B)"});
+}
+
+TEST_CASE("Description: every problem in the file is reported at once", "[errors]") {
+  std::string bad = with(good, "A: {mass: m,", "A: {mas: m,");
+  bad = with(bad, "force: -F", "force: -G");
+  bad = with(bad, "path: [B, C, A]", "path: [B, Q, A]");
+  CHECK(errors_of(bad) == Messages{"t.yaml:6:7: unknown key 'mas' in body 'A' (did you mean 'mass'?)",
+                                   "t.yaml:11:21: 'force' of a 'force' connection: unknown name 'G' (known: F, m, x_A, x_B)",
+                                   "t.yaml:13:25: unknown point 'Q' (known: A, B, C)"});
+}
+
+TEST_CASE("Description: a missing title and missing bodies", "[errors]") {
+  CHECK(errors_of("axes: [x]\n") == Messages{"t.yaml:1:1: the description has no 'title' (expected a one-line title)",
+                                             "t.yaml:1:1: the description has no 'bodies' (expected at least one body)"});
+  CHECK(errors_of("- just\n- a list\n") ==
+        Messages{"t.yaml:1:1: the description is a list (expected a mapping with title, bodies, ...)"});
+}

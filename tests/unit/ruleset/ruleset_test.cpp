@@ -1,0 +1,59 @@
+#include <catch2/catch.hpp>
+
+#include "core/diagnostics.hpp"
+#include "ruleset/ruleset.hpp"
+
+using namespace tackle;
+
+TEST_CASE("Rules: the bundled rules load and declare what they need", "[rules]") {
+  const RuleSet rules = load_rules(TACKLE_SOURCE_DIR "/rules");
+  CHECK(rules.names() == std::vector<std::string>{"fixed", "force", "pulley", "string"});
+  const Rule* s = rules.find("string");
+  REQUIRE(s);
+  REQUIRE(s->unknowns.size() == 1);
+  CHECK(s->unknowns[0].name_template == "T_{name}");
+  CHECK(s->unknowns[0].dimension == Dimension::force());
+  CHECK(s->validity.size() == 1);
+  CHECK(s->one_of == std::vector<std::vector<std::string>>{{"path", "length"}});
+}
+
+TEST_CASE("Rules: a rule file with errors is reported like a description, all at once", "[rules]") {
+  const std::string text =
+      "type: spring\n"
+      "summry: a spring\n"
+      "needs: {on: bdy}\n"
+      "loads:\n"
+      "  - {on: on, force: \"-k*\"}\n";
+  try {
+    (void)parse_rule(text, "rules/spring.yaml");
+    FAIL("expected an InputError");
+  } catch (const InputError& e) {
+    std::vector<std::string> got;
+    for (const auto& d : e.diagnostics()) got.push_back(format(d));
+    CHECK(got == std::vector<std::string>{
+                     "rules/spring.yaml:2:1: unknown key 'summry' in the rule (did you mean 'summary'?)",
+                     "rules/spring.yaml:3:13: unknown argument kind 'bdy' (expected one of: body, point, points, expr, name)",
+                     "rules/spring.yaml:5:5: in '-k*': unknown name 'k' (known: on)",
+                 });
+  }
+}
+
+TEST_CASE("Rules: an argument used as the wrong kind", "[rules]") {
+  const std::string text =
+      "type: weight\n"
+      "needs: {on: expr}\n"
+      "loads:\n"
+      "  - {on: on, force: on}\n";
+  try {
+    (void)parse_rule(text, "rules/weight.yaml");
+    FAIL("expected an InputError");
+  } catch (const InputError& e) {
+    REQUIRE(e.diagnostics().size() == 1);
+    CHECK(format(e.diagnostics()[0]) ==
+          "rules/weight.yaml:4:5: a load uses argument 'on' as body but the rule declares it as expr");
+  }
+}
+
+TEST_CASE("Rules: a missing rules directory is an input error", "[rules]") {
+  CHECK_THROWS_AS(load_rules("/nonexistent/rules"), InputError);
+}

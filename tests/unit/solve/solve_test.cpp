@@ -1,0 +1,65 @@
+#include <catch2/catch.hpp>
+
+#include "expr/print.hpp"
+#include "../../support/helpers.hpp"
+
+using namespace tackle;
+
+TEST_CASE("Solve: a free unknown is named when the equations do not fix it", "[solve]") {
+  const auto a = test::run_text(R"(
+title: one balance, two unknowns
+parameters: {m: {unit: kg}}
+bodies: {A: {mass: m, position: x_A}, B: {mass: 0, position: x_B}}
+strings: [{name: s, path: [A, B], tension: T}]
+layout: {x_A: 0, x_B: 1}
+derive: [{lmb: A}]
+)");
+  CHECK(a->solution.status == Solution::Status::underdetermined);
+  REQUIRE(a->solution.free.size() == 1);
+  CHECK(to_text(a->solution.free[0]) == "T");
+  REQUIRE(a->solution.combinations.size() == 1);
+  CHECK(to_text(a->solution.combinations[0].combination) == "ddot(x_A) - T/m");
+}
+
+TEST_CASE("Solve: an inconsistent system names the conflicting equations", "[solve]") {
+  const auto a = test::run_text(R"(
+title: a massless block pulled by a force and nothing else
+parameters: {F: {unit: N}}
+bodies: {A: {mass: 0, position: x_A}}
+loads: [{on: A, force: F}]
+)");
+  CHECK(a->solution.status == Solution::Status::inconsistent);
+  CHECK(a->solution.conflicts == std::vector<std::string>{"LMB A (x)"});
+}
+
+TEST_CASE("Solve: a system balance next to the body balances is reported redundant", "[solve]") {
+  const auto a = test::run_text(R"(
+title: towing, every balance
+parameters: {F: {unit: N}, m_1: {unit: kg}, m_2: {unit: kg}}
+bodies: {car1: {mass: m_1, position: x_1}, car2: {mass: m_2, position: x_2}}
+loads: [{on: car2, force: F}]
+strings: [{name: chain, path: [car1, car2], tension: T}]
+layout: {x_1: 0, x_2: 1}
+derive: [{lmb: car1}, {lmb: car2}, {lmb: [car1, car2]}, {constraint: chain}]
+)");
+  CHECK(a->solution.status == Solution::Status::determined);
+  CHECK(a->solution.rank == 3);
+  REQUIRE(a->solution.redundant.size() == 1);
+  CHECK(a->solution.redundant[0] ==
+        std::vector<std::string>{"LMB car1 (x)", "LMB car2 (x)", "LMB of the system {car1, car2} (x)"});
+}
+
+TEST_CASE("Pulley: three strands at B give a third of the travel", "[string]") {
+  const auto a = test::run_text(R"(
+title: three strands at B, one at A
+bodies: {A: {position: x_A}, B: {position: x_B}}
+points: {C: 0, pB: {on: B}}
+strings: [{name: s, path: [A, C, pB, C, pB]}]
+layout: {x_A: -1, x_B: 1}
+derive: [{constraint: s}]
+given: [ddot(x_A)]
+)");
+  REQUIRE(a->solution.values.size() == 1);
+  CHECK(to_text(a->solution.values[0].unknown) == "ddot(x_B)");
+  CHECK(to_text(a->solution.values[0].value) == "ddot(x_A)/3");
+}
