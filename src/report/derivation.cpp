@@ -27,30 +27,39 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
   d.unknowns = s.unknowns;
   d.system = &s;
   const SymbolTable& table = *m.symbols;
-  auto section = [&](std::string t) { d.steps.push_back({Step::Kind::section, std::move(t)}); };
-  auto text = [&](std::string t) { d.steps.push_back({Step::Kind::text, std::move(t)}); };
-  auto bullet = [&](std::string t) { d.steps.push_back({Step::Kind::bullet, std::move(t)}); };
-  auto equation = [&](std::string label, ex lhs, ex rhs, std::string note = {}) {
-    Step st{Step::Kind::equation, std::move(label), lhs, rhs};
-    st.note = std::move(note);
-    d.steps.push_back(st);
+  auto step = [&](Step::Kind kind, std::string t) {
+    Step st;
+    st.kind = kind;
+    st.text = std::move(t);
+    d.steps.push_back(std::move(st));
     return &d.steps.back();
+  };
+  auto section = [&](std::string t) { step(Step::Kind::section, std::move(t)); };
+  auto text = [&](std::string t) { step(Step::Kind::text, std::move(t)); };
+  auto bullet = [&](std::string t) { step(Step::Kind::bullet, std::move(t)); };
+  auto equation = [&](std::string label, ex lhs, ex rhs) {
+    Step* st = step(Step::Kind::equation, std::move(label));
+    st->lhs = lhs;
+    st->rhs = rhs;
+    return st;
   };
 
   section("Model");
   for (const auto& a : m.assumptions) bullet("Assumed: " + a + ".");
   for (const auto& c : m.connections) bullet(c + ".");
+  std::vector<std::string> symbolic;
   for (const auto& sym : table.all()) {
     if (sym->role != SymbolRole::parameter) continue;
-    std::string line = "Parameter " + sym->name;
-    if (sym->value) {
-      auto v = evaluate(sym->sym, table, sym->dimension);
-      if (v) line += " = " + v->decimal + (v->unit.empty() ? "" : " " + v->unit);
+    if (auto v = sym->value ? evaluate(sym->sym, table, sym->dimension) : std::nullopt) {
+      Step* st = step(Step::Kind::given, sym->name);
+      st->lhs = sym->sym;
+      st->rhs = v->exact;
+      st->note = v->unit;
     } else {
-      line += " (symbolic)";
+      symbolic.push_back(sym->name);
     }
-    bullet(line + ".");
   }
+  if (!symbolic.empty()) bullet("Symbolic parameters (no value given): " + join(symbolic) + ".");
 
   section("Free body diagrams: linear momentum balance");
   for (const auto& eq : s.equations) {
@@ -99,7 +108,10 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
       wanted.push_back({info->name, info->tex, u, false, info->dimension});
     }
   for (const auto& w : wanted) {
-    Answer a{w.name, w.tex, table.find(w.name)->sym};
+    Answer a;
+    a.name = w.name;
+    a.tex = w.tex;
+    a.symbol = table.find(w.name)->sym;
     const bool is_unknown = std::find(s.unknowns.begin(), s.unknowns.end(), w.expr) != s.unknowns.end();
     const bool is_candidate = std::find(m.candidates.begin(), m.candidates.end(), w.expr) != m.candidates.end();
     if (sol.status == Solution::Status::inconsistent) {
@@ -130,7 +142,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
     section("Results");
     for (const auto& a : d.answers) {
       if (a.closed_form) {
-        Step* st = equation(a.name, table.find(a.name)->sym, *a.closed_form);
+        Step* st = equation("", table.find(a.name)->sym, *a.closed_form);
         st->boxed = true;
         if (a.value) st->note = a.value->decimal + (a.value->unit.empty() ? "" : " " + a.value->unit);
       } else if (a.status == Answer::Status::not_in_equations) {
@@ -141,7 +153,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
       }
     }
     for (const auto& c : d.combinations) {
-      Step* st = equation("determined combination", c.combination, c.value);
+      Step* st = equation("determined in combination", c.combination, c.value);
       st->boxed = true;
       if (c.number) st->note = c.number->decimal + (c.number->unit.empty() ? "" : " " + c.number->unit);
     }
@@ -163,11 +175,16 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
           }
         }
       }
-      std::string line = cc.condition->source + ": " + to_text(r.lhs) + " " + r.op + " " + to_text(r.rhs) + " (" +
-                         r.meaning + ") requires " + to_text(r.simplified) + " " + r.op + " 0";
-      if (r.holds) line += *r.holds ? "; holds for the given numbers" : "; VIOLATED for the given numbers: " + r.otherwise;
-      else if (cc.depends_on_free) line += "; depends on an undetermined unknown";
-      bullet(line + ".");
+      text(cc.condition->source + ": the model holds while " + r.meaning + ":");
+      Step* rule = equation(cc.condition->source, r.lhs, r.rhs);
+      rule->relation = r.op;
+      Step* closed = equation("closed form", r.simplified, 0);
+      closed->relation = r.op;
+      if (r.holds)
+        text(*r.holds ? "This holds for the given numbers."
+                      : "This is VIOLATED for the given numbers: " + r.otherwise + ".");
+      else if (cc.depends_on_free)
+        text("This depends on an unknown the equations do not determine.");
       d.conditions.push_back(r);
     }
   }

@@ -16,7 +16,8 @@
 namespace tackle {
 
 struct Step {
-  enum class Kind { section, text, bullet, equation } kind = Kind::text;
+  // given: a parameter's value (lhs = rhs, unit in note), listed like a bullet.
+  enum class Kind { section, text, bullet, equation, given } kind = Kind::text;
   std::string text;   // section title, paragraph, bullet, or an equation's label
   GiNaC::ex lhs, rhs;
   std::string relation = "=";

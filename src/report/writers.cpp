@@ -54,11 +54,6 @@ std::string value_text(const std::optional<NumericValue>& v) {
   return v->decimal + (v->unit.empty() ? "" : " " + v->unit);
 }
 
-std::string value_latex(const std::optional<NumericValue>& v) {
-  if (!v) return "";
-  return v->decimal + (v->unit.empty() ? "" : "\\," + unit_latex(v->unit));
-}
-
 // ---- text ---------------------------------------------------------------------------------
 
 std::string answers_text(const Derivation& d) {
@@ -88,11 +83,14 @@ std::string derivation_text(const Derivation& d) {
       case Step::Kind::section: out += "\n" + st.text + "\n" + std::string(st.text.size(), '-') + "\n"; break;
       case Step::Kind::text: out += st.text + "\n"; break;
       case Step::Kind::bullet: out += "  - " + st.text + "\n"; break;
+      case Step::Kind::given:
+        out += "  - " + to_text(st.lhs) + " = " + to_text(st.rhs) + (st.note.empty() ? "" : " " + st.note) + "\n";
+        break;
       case Step::Kind::equation: {
         std::string eq = st.equals_constant ? to_text(st.lhs) + " = const"
                                             : to_text(st.lhs) + " " + st.relation + " " + to_text(st.rhs);
         if (!st.note.empty()) eq += "  = " + st.note;
-        out += "    " + eq + "    [" + st.text + "]\n";
+        out += "    " + eq + (st.text.empty() ? "" : "    [" + st.text + "]") + "\n";
         break;
       }
     }
@@ -112,7 +110,8 @@ std::string latex_equation(const Step& st) {
     if (sp == std::string::npos) return st.note;
     return st.note.substr(0, sp) + "\\," + unit_latex(st.note.substr(sp + 1));
   }() + "\\right)";
-  return "\\begin{equation*}\n  " + body + " \\tag*{" + tex_escape(st.text) + "}\n\\end{equation*}\n";
+  const std::string tag = st.text.empty() ? "" : " \\tag*{" + tex_escape(st.text) + "}";
+  return "\\begin{equation*}\n  " + body + tag + "\n\\end{equation*}\n";
 }
 
 std::string latex_document(const Derivation& d, bool full) {
@@ -123,7 +122,8 @@ std::string latex_document(const Derivation& d, bool full) {
   if (full) {
     bool in_list = false;
     for (const auto& st : d.steps) {
-      if (st.kind != Step::Kind::bullet && in_list) {
+      const bool listed = st.kind == Step::Kind::bullet || st.kind == Step::Kind::given;
+      if (!listed && in_list) {
         out += "\\end{itemize}\n";
         in_list = false;
       }
@@ -135,6 +135,12 @@ std::string latex_document(const Derivation& d, bool full) {
           in_list = true;
           out += "  \\item " + tex_escape(st.text) + "\n";
           break;
+        case Step::Kind::given:
+          if (!in_list) out += "\\begin{itemize}\n";
+          in_list = true;
+          out += "  \\item $" + to_latex(st.lhs) + " = " + to_latex(st.rhs) +
+                 (st.note.empty() ? "" : "\\," + unit_latex(st.note)) + "$\n";
+          break;
         case Step::Kind::equation: out += latex_equation(st); break;
       }
     }
@@ -142,7 +148,10 @@ std::string latex_document(const Derivation& d, bool full) {
   } else {
     for (const auto& a : d.answers) {
       if (!a.closed_form) continue;
-      Step st{Step::Kind::equation, a.name, a.symbol, *a.closed_form};
+      Step st;
+      st.kind = Step::Kind::equation;
+      st.lhs = a.symbol;
+      st.rhs = *a.closed_form;
       st.boxed = true;
       st.note = value_text(a.value);
       out += latex_equation(st);
@@ -152,11 +161,6 @@ std::string latex_document(const Derivation& d, bool full) {
 }
 
 // ---- JSON ---------------------------------------------------------------------------------
-
-nlohmann::json number_json(const std::optional<NumericValue>& v) {
-  if (!v) return nullptr;
-  return {{"value", v->approx}, {"exact", to_text(v->exact)}, {"decimal", v->decimal}, {"unit", v->unit}};
-}
 
 std::string json_document(const Derivation& d, bool full) {
   nlohmann::json j;
@@ -231,7 +235,7 @@ std::string markdown_document(const Derivation& d, bool full) {
     std::string body = st.equals_constant ? to_latex(st.lhs) + " = \\text{const}"
                                           : to_latex(st.lhs) + " " + tex_relation(st.relation) + " " + to_latex(st.rhs);
     if (st.boxed) body = "\\boxed{" + body + "}";
-    std::string line = "$$" + body + "$$ *(" + st.text + ")*";
+    std::string line = "$$" + body + "$$" + (st.text.empty() ? "" : " *(" + st.text + ")*");
     if (!st.note.empty()) line += " = " + st.note;
     return line + "\n\n";
   };
@@ -241,13 +245,19 @@ std::string markdown_document(const Derivation& d, bool full) {
         case Step::Kind::section: out += "\n## " + st.text + "\n\n"; break;
         case Step::Kind::text: out += st.text + "\n\n"; break;
         case Step::Kind::bullet: out += "- " + st.text + "\n"; break;
-        case Step::Kind::equation: out += eq(st); break;
+        case Step::Kind::given:
+          out += "- $" + to_latex(st.lhs) + " = " + to_latex(st.rhs) + (st.note.empty() ? "" : "\\," + unit_latex(st.note)) + "$\n";
+          break;
+        case Step::Kind::equation: out += "\n" + eq(st); break;
       }
     }
   } else {
     for (const auto& a : d.answers)
       if (a.closed_form) {
-        Step st{Step::Kind::equation, a.name, a.symbol, *a.closed_form};
+        Step st;
+        st.kind = Step::Kind::equation;
+        st.lhs = a.symbol;
+        st.rhs = *a.closed_form;
         st.note = value_text(a.value);
         out += eq(st);
       }
