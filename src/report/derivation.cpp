@@ -54,6 +54,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
       Step* st = step(Step::Kind::given, sym->name);
       st->lhs = sym->sym;
       st->rhs = v->exact;
+      st->number = v->decimal;
       st->note = v->unit;
     } else {
       symbolic.push_back(sym->name);

@@ -23,7 +23,8 @@ struct Step {
   std::string relation = "=";
   bool equals_constant = false;  // "lhs = const" (a length sum held constant)
   bool boxed = false;          // a final closed form
-  std::string note;            // provenance or a number with its unit
+  std::string note;            // a number with its unit ("20 N"); for `given`, the unit only
+  std::string number;          // given: the value as a decimal ("0.3")
 };
 
 struct Answer {

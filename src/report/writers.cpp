@@ -84,7 +84,7 @@ std::string derivation_text(const Derivation& d) {
       case Step::Kind::text: out += st.text + "\n"; break;
       case Step::Kind::bullet: out += "  - " + st.text + "\n"; break;
       case Step::Kind::given:
-        out += "  - " + to_text(st.lhs) + " = " + to_text(st.rhs) + (st.note.empty() ? "" : " " + st.note) + "\n";
+        out += "  - " + to_text(st.lhs) + " = " + st.number + (st.note.empty() ? "" : " " + st.note) + "\n";
         break;
       case Step::Kind::equation: {
         std::string eq = st.equals_constant ? to_text(st.lhs) + " = const"
@@ -138,7 +138,7 @@ std::string latex_document(const Derivation& d, bool full) {
         case Step::Kind::given:
           if (!in_list) out += "\\begin{itemize}\n";
           in_list = true;
-          out += "  \\item $" + to_latex(st.lhs) + " = " + to_latex(st.rhs) +
+          out += "  \\item $" + to_latex(st.lhs) + " = " + st.number +
                  (st.note.empty() ? "" : "\\," + unit_latex(st.note)) + "$\n";
           break;
         case Step::Kind::equation: out += latex_equation(st); break;
@@ -163,15 +163,15 @@ std::string latex_document(const Derivation& d, bool full) {
 // ---- JSON ---------------------------------------------------------------------------------
 
 std::string json_document(const Derivation& d, bool full) {
-  nlohmann::json j;
+  nlohmann::ordered_json j;
   j["version"] = 1;
   j["title"] = d.title;
   j["file"] = d.file;
   j["status"] = d.status;
   j["rank"] = d.rank;
-  j["unknowns"] = nlohmann::json::array();
+  j["unknowns"] = nlohmann::ordered_json::array();
   for (const auto& a : d.answers) {
-    nlohmann::json u{{"name", a.name}, {"status", status_name(a.status)}};
+    nlohmann::ordered_json u{{"name", a.name}, {"status", status_name(a.status)}};
     if (a.closed_form) {
       u["closed_form"] = to_text(*a.closed_form);
       u["latex"] = to_latex(*a.closed_form);
@@ -184,9 +184,9 @@ std::string json_document(const Derivation& d, bool full) {
     }
     j["unknowns"].push_back(u);
   }
-  j["combinations"] = nlohmann::json::array();
+  j["combinations"] = nlohmann::ordered_json::array();
   for (const auto& c : d.combinations) {
-    nlohmann::json x{{"expression", to_text(c.combination)}, {"closed_form", to_text(c.value)},
+    nlohmann::ordered_json x{{"expression", to_text(c.combination)}, {"closed_form", to_text(c.value)},
                      {"latex", to_latex(c.combination) + " = " + to_latex(c.value)}};
     if (c.number) {
       x["value"] = c.number->approx;
@@ -196,20 +196,20 @@ std::string json_document(const Derivation& d, bool full) {
   }
   j["free"] = d.free;
   j["conflicts"] = d.conflicts;
-  j["conditions"] = nlohmann::json::array();
+  j["conditions"] = nlohmann::ordered_json::array();
   for (const auto& c : d.conditions) {
-    nlohmann::json x{{"source", c.source},
+    nlohmann::ordered_json x{{"source", c.source},
                      {"inequality", to_text(c.lhs) + " " + c.op + " " + to_text(c.rhs)},
                      {"simplified", to_text(c.simplified) + " " + c.op + " 0"},
                      {"meaning", c.meaning},
                      {"otherwise", c.otherwise}};
-    x["holds"] = c.holds ? nlohmann::json(*c.holds) : nlohmann::json(nullptr);
+    x["holds"] = c.holds ? nlohmann::ordered_json(*c.holds) : nlohmann::ordered_json(nullptr);
     j["conditions"].push_back(x);
   }
   if (full && d.system) {
-    j["equations"] = nlohmann::json::array();
+    j["equations"] = nlohmann::ordered_json::array();
     for (const auto& eq : d.system->equations) {
-      nlohmann::json e{{"label", eq.label},
+      nlohmann::ordered_json e{{"label", eq.label},
                        {"kind", eq.kind == Equation::Kind::lmb ? "lmb" : "constraint"},
                        {"lhs", to_text(eq.lhs)},
                        {"rhs", to_text(eq.rhs)},
@@ -217,7 +217,7 @@ std::string json_document(const Derivation& d, bool full) {
                        {"sources", eq.sources}};
       j["equations"].push_back(e);
     }
-    j["constraints"] = nlohmann::json::array();
+    j["constraints"] = nlohmann::ordered_json::array();
     for (const auto& c : d.system->constraints)
       j["constraints"].push_back({{"label", c.label},
                                   {"quantity", to_text(c.quantity)},
@@ -240,15 +240,19 @@ std::string markdown_document(const Derivation& d, bool full) {
     return line + "\n\n";
   };
   if (full) {
+    bool in_list = false;
     for (const auto& st : d.steps) {
+      const bool listed = st.kind == Step::Kind::bullet || st.kind == Step::Kind::given;
+      if (in_list && !listed) out += "\n";
+      in_list = listed;
       switch (st.kind) {
-        case Step::Kind::section: out += "\n## " + st.text + "\n\n"; break;
+        case Step::Kind::section: out += "## " + st.text + "\n\n"; break;
         case Step::Kind::text: out += st.text + "\n\n"; break;
         case Step::Kind::bullet: out += "- " + st.text + "\n"; break;
         case Step::Kind::given:
-          out += "- $" + to_latex(st.lhs) + " = " + to_latex(st.rhs) + (st.note.empty() ? "" : "\\," + unit_latex(st.note)) + "$\n";
+          out += "- $" + to_latex(st.lhs) + " = " + st.number + (st.note.empty() ? "" : "\\," + unit_latex(st.note)) + "$\n";
           break;
-        case Step::Kind::equation: out += "\n" + eq(st); break;
+        case Step::Kind::equation: out += eq(st); break;
       }
     }
   } else {
