@@ -42,19 +42,17 @@ int main(int argc, char** argv) {
                                                      {"latex", tackle::Format::latex},
                                                      {"markdown", tackle::Format::markdown},
                                                      {"json", tackle::Format::json}};
-  auto* derive = app.add_subcommand("derive", "Print the derivation: FBD equations, constraints, solve, results");
-  derive->add_option("file", file, "Problem description (YAML)")->required();
-  derive->add_option("--format", format, "Output format")
-      ->check(CLI::IsMember({"text", "latex", "markdown", "json"}))
-      ->capture_default_str();
-  derive->add_option("-o,--output", out, "Write to this file instead of standard output");
-
-  auto* solve = app.add_subcommand("solve", "Print the answers only: closed forms and numbers");
-  solve->add_option("file", file, "Problem description (YAML)")->required();
-  solve->add_option("--format", format, "Output format")
-      ->check(CLI::IsMember({"text", "latex", "markdown", "json"}))
-      ->capture_default_str();
-  solve->add_option("-o,--output", out, "Write to this file instead of standard output");
+  auto with_common_options = [&](CLI::App* sub) {
+    sub->add_option("file", file, "Problem description (YAML)")->required();
+    sub->add_option("--format", format, "Output format")
+        ->check(CLI::IsMember({"text", "latex", "markdown", "json"}))
+        ->capture_default_str();
+    sub->add_option("-o,--output", out, "Write to this file instead of standard output");
+    return sub;
+  };
+  auto* derive = with_common_options(
+      app.add_subcommand("derive", "Print the derivation: FBD equations, constraints, solve, results"));
+  with_common_options(app.add_subcommand("solve", "Print the answers only: closed forms and numbers"));
 
   try {
     app.parse(argc, argv);

@@ -138,68 +138,64 @@ std::optional<Unit> parse_unit(std::string_view text, std::string& error, int& e
   return u;
 }
 
-std::string Dimension::describe() const {
-  static const std::vector<std::pair<Dimension, std::string>> names = {
-      {Dimension::none(), "dimensionless"},
-      {Dimension::mass(), "mass"},
-      {Dimension::length(), "length"},
-      {Dimension::time(), "time"},
-      {Dimension::force(), "force"},
-      {Dimension::velocity(), "velocity"},
-      {Dimension::acceleration(), "acceleration"},
-      {Dimension::force() / Dimension::length(), "stiffness (force per length)"},
-      {Dimension::force() * Dimension::length(), "energy"},
+namespace {
+
+// Named dimensions: what a message calls them, the `dimension:` key, and the SI unit printed.
+struct Named {
+  Dimension dimension;
+  const char* description;
+  const char* key;
+  const char* si_unit;
+};
+
+const std::vector<Named>& named_dimensions() {
+  static const std::vector<Named> table = {
+      {Dimension::none(), "dimensionless", "dimensionless", ""},
+      {Dimension::mass(), "mass", "mass", "kg"},
+      {Dimension::length(), "length", "length", "m"},
+      {Dimension::time(), "time", "time", "s"},
+      {Dimension::force(), "force", "force", "N"},
+      {Dimension::velocity(), "velocity", "velocity", "m/s"},
+      {Dimension::acceleration(), "acceleration", "acceleration", "m/s^2"},
+      {Dimension::force() / Dimension::length(), "stiffness (force per length)", "stiffness", "N/m"},
+      {Dimension::force() * Dimension::length(), "energy", "energy", "J"},
+      {Dimension::force() * Dimension::length() / Dimension::time(), "power", "power", "W"},
   };
-  for (const auto& [d, n] : names)
-    if (d == *this) return n;
-  static const char* base[] = {"mass", "length", "time"};
-  std::string s;
-  for (int i = 0; i < 3; ++i) {
-    if (exp[i] == 0) continue;
-    if (!s.empty()) s += " ";
-    s += base[i];
-    if (exp[i] != 1) s += "^" + std::to_string(exp[i]);
-  }
-  return s;
+  return table;
 }
 
-std::optional<Dimension> Dimension::from_name(std::string_view name) {
-  static const std::map<std::string, Dimension, std::less<>> names = {
-      {"dimensionless", Dimension::none()}, {"mass", Dimension::mass()},
-      {"length", Dimension::length()},      {"time", Dimension::time()},
-      {"force", Dimension::force()},        {"velocity", Dimension::velocity()},
-      {"acceleration", Dimension::acceleration()},
-      {"stiffness", Dimension::force() / Dimension::length()},
-      {"energy", Dimension::force() * Dimension::length()},
-  };
-  if (auto it = names.find(name); it != names.end()) return it->second;
-  return std::nullopt;
-}
-
-std::string si_unit_name(const Dimension& d) {
-  static const std::vector<std::pair<Dimension, std::string>> names = {
-      {Dimension::none(), ""},
-      {Dimension::mass(), "kg"},
-      {Dimension::length(), "m"},
-      {Dimension::time(), "s"},
-      {Dimension::force(), "N"},
-      {Dimension::velocity(), "m/s"},
-      {Dimension::acceleration(), "m/s^2"},
-      {Dimension::force() / Dimension::length(), "N/m"},
-      {Dimension::force() * Dimension::length(), "J"},
-      {Dimension::force() * Dimension::length() / Dimension::time(), "W"},
-  };
-  for (const auto& [dim, n] : names)
-    if (dim == d) return n;
-  static const char* base[] = {"kg", "m", "s"};
+// "mass^a length^b time^c" or "kg^a*m^b*s^c" for a dimension without a name.
+std::string compose(const Dimension& d, const char* const base[3], const char* sep) {
   std::string s;
   for (int i = 0; i < 3; ++i) {
     if (d.exp[i] == 0) continue;
-    if (!s.empty()) s += "*";
+    if (!s.empty()) s += sep;
     s += base[i];
     if (d.exp[i] != 1) s += "^" + std::to_string(d.exp[i]);
   }
   return s;
+}
+
+}  // namespace
+
+std::string Dimension::describe() const {
+  for (const auto& n : named_dimensions())
+    if (n.dimension == *this) return n.description;
+  static const char* const base[] = {"mass", "length", "time"};
+  return compose(*this, base, " ");
+}
+
+std::optional<Dimension> Dimension::from_name(std::string_view name) {
+  for (const auto& n : named_dimensions())
+    if (name == n.key) return n.dimension;
+  return std::nullopt;
+}
+
+std::string si_unit_name(const Dimension& d) {
+  for (const auto& n : named_dimensions())
+    if (n.dimension == d) return n.si_unit;
+  static const char* const base[] = {"kg", "m", "s"};
+  return compose(d, base, "*");
 }
 
 std::string unit_latex(std::string_view unit_text) {

@@ -34,12 +34,18 @@ struct Reader {
 
   Text key_text(const YAML::Node& key) { return {key.Scalar(), where(key, file)}; }
 
-  void read_parameters(const YAML::Node& n) {
+  // A section that maps names to entries (parameters, bodies, points).
+  bool name_map(const YAML::Node& n, const std::string& section) {
     if (!n.IsMap()) {
-      diags.error(where(n, file), "'parameters' is " + yaml::kind_name(n) + " (expected a mapping of names)");
-      return;
+      diags.error(where(n, file), "'" + section + "' is " + yaml::kind_name(n) + " (expected a mapping of names)");
+      return false;
     }
-    yaml::check_unique_keys(n, "'parameters'", file, diags);
+    yaml::check_unique_keys(n, "'" + section + "'", file, diags);
+    return true;
+  }
+
+  void read_parameters(const YAML::Node& n) {
+    if (!name_map(n, "parameters")) return;
     std::set<std::string> seen;
     for (const auto& kv : n) {
       if (!seen.insert(kv.first.Scalar()).second) continue;  // reported as a duplicate key
@@ -70,11 +76,7 @@ struct Reader {
   }
 
   void read_bodies(const YAML::Node& n) {
-    if (!n.IsMap()) {
-      diags.error(where(n, file), "'bodies' is " + yaml::kind_name(n) + " (expected a mapping of names)");
-      return;
-    }
-    yaml::check_unique_keys(n, "'bodies'", file, diags);
+    if (!name_map(n, "bodies")) return;
     std::set<std::string> seen;
     for (const auto& kv : n) {
       if (!seen.insert(kv.first.Scalar()).second) continue;
@@ -93,11 +95,7 @@ struct Reader {
   }
 
   void read_points(const YAML::Node& n) {
-    if (!n.IsMap()) {
-      diags.error(where(n, file), "'points' is " + yaml::kind_name(n) + " (expected a mapping of names)");
-      return;
-    }
-    yaml::check_unique_keys(n, "'points'", file, diags);
+    if (!name_map(n, "points")) return;
     std::set<std::string> seen;
     for (const auto& kv : n) {
       if (!seen.insert(kv.first.Scalar()).second) continue;

@@ -33,6 +33,13 @@ class Scope : public NameResolver {
   std::map<std::string, ex> locals_;
 };
 
+// Numbers only: parameter values and layout values may not use names.
+struct NoNames : NameResolver {
+  std::optional<ex> resolve(std::string_view) const override { return std::nullopt; }
+  std::vector<std::string> known_names() const override { return {}; }
+};
+const NoNames none;
+
 struct Builder {
   Builder(const Description& desc, const RuleSet& rs) : d(desc), rules(rs) {}
   const Description& d;
@@ -111,10 +118,6 @@ struct Builder {
       table->add(p.name.text, p.tex ? std::optional<std::string>(p.tex->text) : std::nullopt, SymbolRole::parameter,
                  dim, positive, p.name.at);
       if (p.value) {
-        struct NoNames : NameResolver {
-          std::optional<ex> resolve(std::string_view) const override { return std::nullopt; }
-          std::vector<std::string> known_names() const override { return {}; }
-        } none;
         auto v = parse(*p.value, none, "value of parameter '" + p.name.text + "'");
         if (v && !is_a<numeric>(*v))
           diags.error(p.value->at, "value of parameter '" + p.name.text + "' is not a number");
@@ -229,10 +232,6 @@ struct Builder {
         diags.error(name.at, msg);
         continue;
       }
-      struct NoNames : NameResolver {
-        std::optional<ex> resolve(std::string_view) const override { return std::nullopt; }
-        std::vector<std::string> known_names() const override { return {}; }
-      } none;
       auto v = parse(value, none, "layout value of '" + name.text + "'");
       if (v && is_a<numeric>(*v)) layout[s->sym] = *v;
     }
