@@ -7,7 +7,10 @@ namespace tackle::yaml {
 Location where(const YAML::Node& n, const std::string& file) {
   const YAML::Mark m = n.Mark();
   if (m.line < 0) return {file, 0, 0};
-  return {file, m.line + 1, m.column + 1};
+  // A quoted scalar's mark is its opening quote (yaml-cpp tags quoted scalars "!"); columns
+  // inside it count from the first character after the quote.
+  const int quote = (n.IsScalar() && n.Tag() == "!") ? 1 : 0;
+  return {file, m.line + 1, m.column + 1 + quote};
 }
 
 YAML::Node load(const std::string& text, const std::string& file, Diagnostics& diags) {

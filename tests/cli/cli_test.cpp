@@ -29,10 +29,10 @@ std::string slurp(const fs::path& p) {
   return ss.str();
 }
 
-Run run_tackle(const std::string& args) {
+Run run_tackle(const std::string& args, const std::string& cwd = "") {
   const fs::path dir = fs::temp_directory_path() / ("tackle-cli-" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  const std::string cmd = std::string(TACKLE_BINARY) + " " + args + " >" + (dir / "out").string() + " 2>" +
+  const std::string cmd = (cwd.empty() ? "" : "cd '" + cwd + "' && ") + std::string(TACKLE_BINARY) + " " + args + " >" + (dir / "out").string() + " 2>" +
                           (dir / "err").string() + " </dev/null";
   const int status = std::system(cmd.c_str());
   Run r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "out"), slurp(dir / "err")};
@@ -112,6 +112,25 @@ TEST_CASE("CLI: a bad description reports every located problem on stderr and ex
                      ":5:10: unknown body 'Q' (known: A)\n" + bad.string() +
                      ":5:20: 'force' of a 'force' connection: unknown name 'F' (known: x_A)\n");
   fs::remove(bad);
+}
+
+TEST_CASE("CLI: each kind of bad description gets its located errors and exit 1", "[cli][errors]") {
+  // tests/data/bad/NAME.yaml holds one mistake; NAME.expected is the exact stderr.
+  const fs::path dir = fs::path(TACKLE_SOURCE_DIR) / "tests/data/bad";
+  int kinds = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    if (e.path().extension() != ".yaml") continue;
+    ++kinds;
+    SECTION(e.path().stem().string()) {
+      const Run r = run_tackle("solve " + e.path().filename().string(), dir.string());
+      CHECK(r.code == 1);
+      CHECK(r.out.empty());
+      fs::path expected = e.path();
+      expected.replace_extension(".expected");
+      CHECK(r.err == slurp(expected));
+    }
+  }
+  CHECK(kinds >= 10);
 }
 
 TEST_CASE("CLI: a bad rules directory is an input error", "[cli]") {
