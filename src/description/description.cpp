@@ -34,6 +34,34 @@ struct Reader {
 
   Text key_text(const YAML::Node& key) { return {key.Scalar(), where(key, file)}; }
 
+  // A scalar (one item) or a list of scalars.
+  std::optional<VectorDesc> vector(const YAML::Node& n, const std::string& what) {
+    VectorDesc v;
+    v.at = where(n, file);
+    if (n.IsScalar()) {
+      v.items.push_back({n.Scalar(), where(n, file)});
+      return v;
+    }
+    if (!n.IsSequence()) {
+      diags.error(where(n, file), what + " is " + yaml::kind_name(n) + " (expected an expression or a list of them)");
+      return std::nullopt;
+    }
+    for (const auto& item : n) {
+      if (auto t = scalar(item, "an entry of " + what, file, diags)) v.items.push_back(*t);
+      else return std::nullopt;
+    }
+    if (v.items.empty()) {
+      diags.error(v.at, what + " is an empty list (expected one entry per axis)");
+      return std::nullopt;
+    }
+    return v;
+  }
+  std::optional<VectorDesc> opt_vector(const YAML::Node& map, const char* key, const std::string& what) {
+    const YAML::Node n = map[key];
+    if (!n) return std::nullopt;
+    return vector(n, "'" + std::string(key) + "' of " + what);
+  }
+
   // A section that maps names to entries (parameters, bodies, points).
   bool name_map(const YAML::Node& n, const std::string& section) {
     if (!n.IsMap()) {
@@ -82,13 +110,24 @@ struct Reader {
       if (!seen.insert(kv.first.Scalar()).second) continue;
       BodyDesc b;
       b.name = key_text(kv.first);
+      b.at = where(kv.second, file);
       const std::string what = "body '" + b.name.text + "'";
-      if (check_map(kv.second, {"mass", "position"}, what, file, diags)) {
+      if (check_map(kv.second, {"mass", "position", "center_of_mass", "acceleration"}, what, file, diags)) {
         b.mass = opt_scalar(kv.second, "mass", what);
         b.position = opt_scalar(kv.second, "position", what);
-        if (!b.position)
-          diags.error(where(kv.second, file), what + " has no 'position' (expected the name of its coordinate, e.g. x_" +
-                                                  b.name.text + ")");
+        b.center_of_mass = opt_vector(kv.second, "center_of_mass", what);
+        if (const YAML::Node acc = kv.second["acceleration"]) {
+          if (acc.IsMap()) {
+            if (check_map(acc, {"along", "name"}, "'acceleration' of " + what, file, diags)) {
+              b.accel_along = opt_vector(acc, "along", "'acceleration' of " + what);
+              b.accel_name = opt_scalar(acc, "name", "'acceleration' of " + what);
+              if (!b.accel_along)
+                diags.error(where(acc, file), "'acceleration' of " + what + " has no 'along' (expected the direction of motion)");
+            }
+          } else {
+            b.acceleration = vector(acc, "'acceleration' of " + what);
+          }
+        }
       }
       d.bodies.push_back(std::move(b));
     }
@@ -102,10 +141,10 @@ struct Reader {
       PointDesc p;
       p.name = key_text(kv.first);
       const std::string what = "point '" + p.name.text + "'";
-      if (kv.second.IsScalar()) {
-        p.at = Text{kv.second.Scalar(), where(kv.second, file)};
+      if (kv.second.IsScalar() || kv.second.IsSequence()) {
+        p.at = vector(kv.second, what);
       } else if (check_map(kv.second, {"at", "on", "offset"}, what, file, diags)) {
-        p.at = opt_scalar(kv.second, "at", what);
+        p.at = opt_vector(kv.second, "at", what);
         p.on = opt_scalar(kv.second, "on", what);
         p.offset = opt_scalar(kv.second, "offset", what);
         if (p.at && p.on)
@@ -211,19 +250,32 @@ struct Reader {
       return;
     }
     for (const auto& item : n) {
-      if (!check_map(item, {"lmb", "constraint"}, "an entry of 'derive'", file, diags)) continue;
-      if (item.size() != 1) {
-        diags.error(where(item, file), "an entry of 'derive' has " + std::to_string(item.size()) +
-                                           " keys (expected one: lmb or constraint)");
+      if (!check_map(item, {"lmb", "amb", "constraint", "about", "axis"}, "an entry of 'derive'", file, diags)) continue;
+      DeriveDesc dd;
+      int kinds = 0;
+      YAML::Node value;
+      for (const char* k : {"lmb", "amb", "constraint"})
+        if (item[k]) {
+          ++kinds;
+          value = item[k];
+          for (const auto& kv : item)
+            if (kv.first.Scalar() == k) dd.kind = key_text(kv.first);
+        }
+      if (kinds != 1) {
+        diags.error(where(item, file), "an entry of 'derive' names " + std::to_string(kinds) +
+                                           " balances (expected one of: lmb, amb, constraint)");
         continue;
       }
-      const auto kv = *item.begin();
-      DeriveDesc dd;
-      dd.kind = key_text(kv.first);
-      dd.is_list = kv.second.IsSequence();
-      if (auto items = scalar_list(kv.second, "'" + dd.kind.text + "'", file, diags)) dd.items = *items;
+      dd.is_list = value.IsSequence();
+      if (auto items = scalar_list(value, "'" + dd.kind.text + "'", file, diags)) dd.items = *items;
+      dd.about = opt_scalar(item, "about", "an entry of 'derive'");
+      dd.axis = opt_vector(item, "axis", "an entry of 'derive'");
+      if (dd.kind.text == "amb" && !dd.about)
+        diags.error(where(item, file), "an 'amb' entry of 'derive' has no 'about' (expected the point the moments are taken about)");
+      if (dd.kind.text != "amb" && (dd.about || dd.axis))
+        diags.error(where(item, file), "'about' and 'axis' belong to an 'amb' entry of 'derive'");
       if (dd.is_list && dd.items.empty()) {
-        diags.error(where(kv.second, file), "'" + dd.kind.text + "' lists no bodies (expected at least one)");
+        diags.error(where(value, file), "'" + dd.kind.text + "' lists no bodies (expected at least one)");
         continue;
       }
       d.derive.push_back(std::move(dd));
@@ -249,7 +301,8 @@ DescriptionRead read_description_text(const std::string& text, const std::string
   Reader r{file, diags, d};
   check_map(root,
             {"title", "source", "axes", "parameters", "gravity", "bodies", "points", "connections", "loads",
-             "strings", "layout", "given", "find", "derive", "expected", "notes"},
+             "strings", "layout", "given", "find", "derive", "expected", "expected_combinations", "expected_free",
+             "notes"},
             "the description", file, diags);
   if (auto t = root["title"]) {
     if (auto s = scalar(t, "'title'", file, diags)) d.title = *s;
@@ -260,7 +313,7 @@ DescriptionRead read_description_text(const std::string& text, const std::string
     if (auto items = scalar_list(a, "'axes'", file, diags)) d.axes = *items;
   }
   if (auto p = root["parameters"]) r.read_parameters(p);
-  if (auto g = root["gravity"]) d.gravity = scalar(g, "'gravity'", file, diags);
+  if (auto g = root["gravity"]) d.gravity = r.vector(g, "'gravity'");
   if (auto b = root["bodies"]) r.read_bodies(b);
   else diags.error({file, 1, 1}, "the description has no 'bodies' (expected at least one body)");
   if (auto p = root["points"]) r.read_points(p);

@@ -26,17 +26,30 @@ struct ParameterDesc {
   std::optional<bool> positive;   // default: true for masses, lengths and g
 };
 
+/// A vector as written: one expression per axis (one item for a 1-D scalar).
+struct VectorDesc {
+  std::vector<Text> items;
+  Location at;
+};
+
 struct BodyDesc {
   Text name;
   std::optional<Text> mass;      // expression; 0 for an ideal pulley block
-  std::optional<Text> position;  // the body's coordinate along the axis (a new name)
+  std::optional<Text> position;  // 1-D: the body's coordinate along the axis (a new name)
+  std::optional<VectorDesc> center_of_mass;  // 2-D and 3-D
+  // 2-D and 3-D straight-line motion: a given acceleration vector, or an unknown scalar
+  // acceleration `accel_name` along `accel_along`; neither means at rest.
+  std::optional<VectorDesc> acceleration;
+  std::optional<VectorDesc> accel_along;
+  std::optional<Text> accel_name;
+  Location at;
 };
 
 struct PointDesc {
   Text name;
-  std::optional<Text> at;      // fixed point: position expression
-  std::optional<Text> on;      // point on a body
-  std::optional<Text> offset;  // with `on`: constant offset from the body's coordinate
+  std::optional<VectorDesc> at;  // fixed point: position (an expression in 1-D, a list else)
+  std::optional<Text> on;        // 1-D: point on a body
+  std::optional<Text> offset;    // with `on`: constant offset from the body's coordinate
 };
 
 /// An argument of a connection: a scalar or a list of scalars.
@@ -61,9 +74,11 @@ struct FindDesc {
 };
 
 struct DeriveDesc {
-  Text kind;                // lmb | constraint
-  std::vector<Text> items;  // bodies (lmb), or a connection name (constraint)
-  bool is_list = false;     // lmb over a list: one balance for the system of those bodies
+  Text kind;                // lmb | amb | constraint
+  std::vector<Text> items;  // bodies (lmb, amb), or a connection name (constraint)
+  bool is_list = false;     // a list of bodies: one balance for the system of those bodies
+  std::optional<Text> about;         // amb: the point
+  std::optional<VectorDesc> axis;    // amb: a direction, or two point names
 };
 
 struct Description {
@@ -71,7 +86,7 @@ struct Description {
   Text title;
   std::vector<Text> axes;
   std::vector<ParameterDesc> parameters;
-  std::optional<Text> gravity;
+  std::optional<VectorDesc> gravity;
   std::vector<BodyDesc> bodies;
   std::vector<PointDesc> points;
   std::vector<ConnectionDesc> connections;  // `loads` and `strings` entries land here too

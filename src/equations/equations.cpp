@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "expr/print.hpp"
+
 namespace tackle {
 
 using namespace GiNaC;
@@ -17,27 +19,73 @@ ex time_derivative(const ex& e, const Model& m) {
 
 namespace {
 
-Equation lmb(const Model& m, const std::vector<int>& bodies, bool system) {
-  Equation eq;
-  eq.kind = Equation::Kind::lmb;
+std::string body_list(const Model& m, const std::vector<int>& bodies, bool system) {
   std::string names;
   for (int b : bodies) names += (names.empty() ? "" : ", ") + m.bodies[b].name;
-  eq.label = std::string(system ? "LMB of the system {" + names + "}" : "LMB " + names) + " (" + m.axis + ")";
-  ex sum = 0;
-  ex rhs = 0;
-  for (const auto& l : m.loads) {
-    if (std::find(bodies.begin(), bodies.end(), l.body) == bodies.end()) continue;
-    eq.terms.push_back(l.force);
-    eq.sources.push_back(l.source);
-    sum += l.force;
-  }
-  for (int b : bodies) rhs += m.bodies[b].mass * m.bodies[b].accel;
-  eq.lhs = sum;  // forces internal to a system cancel here
-  eq.rhs = rhs;
-  return eq;
+  return system ? "the system {" + names + "}" : names;
+}
+
+bool in(const std::vector<int>& bodies, int b) { return std::find(bodies.begin(), bodies.end(), b) != bodies.end(); }
+
+Vec axis_vec(int i) {
+  Vec v = zero_vec();
+  v[i] = 1;
+  return v;
 }
 
 }  // namespace
+
+Equation lmb_along(const Model& m, const std::vector<int>& bodies, bool system, const Vec& direction,
+                   const std::string& direction_label) {
+  Equation eq;
+  eq.kind = Equation::Kind::lmb;
+  eq.label = "LMB " + std::string(system ? "of " : "") + body_list(m, bodies, system) + " (" + direction_label + ")";
+  ex sum = 0, rhs = 0;
+  for (const auto& l : m.loads) {
+    if (!in(bodies, l.body)) continue;
+    const ex f = inner(l.force, direction).expand();
+    if (f.is_zero()) continue;
+    eq.terms.push_back(f);
+    eq.sources.push_back(l.source);
+    sum += f;
+  }
+  for (int b : bodies) rhs += m.bodies[b].mass * inner(m.bodies[b].acceleration, direction);
+  eq.lhs = sum;  // forces internal to a system cancel here
+  eq.rhs = rhs.expand();
+  return eq;
+}
+
+Equation amb_along(const Model& m, const std::vector<int>& bodies, bool system, const Vec& about,
+                   const std::string& about_label, const Vec& direction, const std::string& direction_label) {
+  Equation eq;
+  eq.kind = Equation::Kind::amb;
+  eq.label = "AMB " + std::string(system ? "of " : "") + body_list(m, bodies, system) + " about " + about_label + " (" +
+             direction_label + ")";
+  ex sum = 0, rhs = 0;
+  std::vector<std::string> eliminated;
+  for (const auto& l : m.loads) {
+    if (!in(bodies, l.body)) continue;
+    Vec moment = l.couple;
+    if (l.at) moment = moment + cross(*l.at - about, l.force);
+    const ex mz = normal(inner(moment, direction));
+    if (mz.is_zero()) {
+      if (!is_zero_vec(l.force)) eliminated.push_back(l.source);
+      continue;
+    }
+    eq.terms.push_back(mz);
+    eq.sources.push_back(l.source);
+    sum += mz;
+  }
+  // Straight-line motion: the rate of change of angular momentum about C is r_cm/C x m a.
+  for (int b : bodies) {
+    const Body& body = m.bodies[b];
+    rhs += inner(cross(body.cm - about, body.mass * body.acceleration), direction);
+  }
+  if (!eliminated.empty()) eq.why = "no moment from: " + join(eliminated, "; ");
+  eq.lhs = sum;
+  eq.rhs = normal(rhs);
+  return eq;
+}
 
 EquationSystem build_equations(const Model& m) {
   EquationSystem s;
@@ -61,16 +109,37 @@ EquationSystem build_equations(const Model& m) {
     eq.sources = {"second time derivative of the " + c.meaning};
     s.equations.push_back(eq);
   };
+  // One equation per axis; a 2-D moment has only a z component.
+  auto add_lmb = [&](const std::vector<int>& bodies, bool system) {
+    for (int i = 0; i < m.dims(); ++i) s.equations.push_back(lmb_along(m, bodies, system, axis_vec(i), m.axes[i]));
+  };
+  auto add_amb = [&](const std::vector<int>& bodies, bool system, const Vec& about, const std::string& about_label,
+                     const std::optional<Vec>& axis, const std::string& axis_label) {
+    if (axis) {
+      s.equations.push_back(amb_along(m, bodies, system, about, about_label, *axis, "axis " + axis_label));
+    } else if (m.dims() == 2) {
+      s.equations.push_back(amb_along(m, bodies, system, about, about_label, axis_vec(2), "z"));
+    } else {
+      for (int i = 0; i < 3; ++i)
+        s.equations.push_back(amb_along(m, bodies, system, about, about_label, axis_vec(i), m.axes[i]));
+    }
+  };
   if (m.derive.empty()) {
-    // A complete set: LMB for every body that has a mass (0 for a pulley block), and every
-    // constraint.
-    for (std::size_t i = 0; i < m.bodies.size(); ++i)
-      if (m.bodies[i].has_mass) s.equations.push_back(lmb(m, {static_cast<int>(i)}, false));
+    // A complete set: LMB for every body that has a mass (0 for a pulley block), AMB about
+    // its center of mass in 2-D and 3-D, and every constraint.
+    for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+      const Body& b = m.bodies[i];
+      if (!b.has_mass) continue;
+      add_lmb({static_cast<int>(i)}, false);
+      if (m.dims() > 1 && b.has_cm) add_amb({static_cast<int>(i)}, false, b.cm, "its center of mass", std::nullopt, "");
+    }
     for (const auto& c : m.constraints) add_constraint(c);
   } else {
     for (const auto& sel : m.derive) {
       if (sel.kind == Selection::Kind::lmb) {
-        s.equations.push_back(lmb(m, sel.bodies, sel.system));
+        add_lmb(sel.bodies, sel.system);
+      } else if (sel.kind == Selection::Kind::amb) {
+        add_amb(sel.bodies, sel.system, sel.about_position, sel.about, sel.axis, sel.axis_label);
       } else {
         for (const auto& c : m.constraints)
           if (c.connection == sel.constraint) add_constraint(c);

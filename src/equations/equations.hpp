@@ -14,11 +14,12 @@
 namespace tackle {
 
 struct Equation {
-  enum class Kind { lmb, constraint_acceleration } kind;
-  std::string label;                // "LMB A (x)", "string s: acceleration"
+  enum class Kind { lmb, amb, constraint_acceleration } kind;
+  std::string label;                // "LMB A (x)", "AMB board about G (axis OG)", "string s: acceleration"
   GiNaC::ex lhs, rhs;
   std::vector<std::string> sources; // where each term of the lhs comes from
   std::vector<GiNaC::ex> terms;     // the lhs terms, one per source
+  std::string why;                  // amb: what the choice of point or axis eliminates
 };
 
 /// A constraint as the derivation shows it: the constant quantity, its rate, its acceleration.
@@ -40,5 +41,13 @@ struct EquationSystem {
 [[nodiscard]] GiNaC::ex time_derivative(const GiNaC::ex& e, const Model& m);
 
 [[nodiscard]] EquationSystem build_equations(const Model& m);
+
+/// Linear momentum balance of a body or a system, along a unit direction.
+[[nodiscard]] Equation lmb_along(const Model& m, const std::vector<int>& bodies, bool system, const Vec& direction,
+                                 const std::string& direction_label);
+/// Angular momentum balance about a point, along a unit direction (the axis, or a coordinate
+/// direction for one component of the vector balance).
+[[nodiscard]] Equation amb_along(const Model& m, const std::vector<int>& bodies, bool system, const Vec& about,
+                                 const std::string& about_label, const Vec& direction, const std::string& direction_label);
 
 }  // namespace tackle

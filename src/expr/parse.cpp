@@ -10,7 +10,7 @@ using namespace GiNaC;
 
 namespace {
 
-enum class Tok { number, name, op, lparen, rparen, comma, end };
+enum class Tok { number, name, op, lparen, rparen, lbracket, rbracket, comma, end };
 
 struct Token {
   Tok kind;
@@ -27,6 +27,11 @@ struct Failure {
   ParseProblem problem;
 };
 
+ex cross3(const ex& u, const ex& v) {
+  return make_vector(u.op(1) * v.op(2) - u.op(2) * v.op(1), u.op(2) * v.op(0) - u.op(0) * v.op(2),
+                     u.op(0) * v.op(1) - u.op(1) * v.op(0));
+}
+
 class Parser {
  public:
   Parser(std::string_view text, const NameResolver& names, const ExprLimits& limits)
@@ -35,6 +40,7 @@ class Parser {
   ex parse_all() {
     tokenize();
     ex e = sum();
+    if (peek().kind == Tok::rbracket) fail(peek().column, "unexpected ']'");
     if (peek().kind != Tok::end) fail(peek().column, "unexpected '" + peek().text + "'");
     return e;
   }
@@ -101,6 +107,8 @@ class Parser {
           continue;
         }
         case '(': push(Tok::lparen, "(", col); ++i; continue;
+        case '[': push(Tok::lbracket, "[", col); ++i; continue;
+        case ']': push(Tok::rbracket, "]", col); ++i; continue;
         case ')': push(Tok::rparen, ")", col); ++i; continue;
         case ',': push(Tok::comma, ",", col); ++i; continue;
         default: break;
@@ -132,12 +140,19 @@ class Parser {
     ex e = product();
     while (at_op("+") || at_op("-")) {
       const bool minus = peek().text == "-";
+      const int col = peek().column;
       advance();
       ex rhs = product();
-      e = minus ? e - rhs : e + rhs;
+      if (is_vector(e) != is_vector(rhs)) fail(col, "cannot add a vector and a number");
+      e = is_vector(e) ? combine(e, rhs, minus ? -1 : 1) : (minus ? e - rhs : e + rhs);
     }
     return e;
   }
+
+  static ex combine(const ex& u, const ex& v, int sign) {
+    return make_vector(u.op(0) + sign * v.op(0), u.op(1) + sign * v.op(1), u.op(2) + sign * v.op(2));
+  }
+  static ex scaled(const ex& v, const ex& f) { return make_vector(v.op(0) * f, v.op(1) * f, v.op(2) * f); }
 
   ex product() {
     ex e = unary();
@@ -147,9 +162,13 @@ class Parser {
         const int col = peek().column;
         advance();
         ex rhs = unary();
+        if (is_vector(rhs) && (divide || is_vector(e)))
+          fail(col, divide ? "cannot divide by a vector" : "cannot multiply two vectors (use cross or inner)");
         if (divide) {
           if (rhs.is_zero()) fail(col, "division by zero");
-          e = e / rhs;
+          e = is_vector(e) ? scaled(e, 1 / rhs) : e / rhs;
+        } else if (is_vector(e) || is_vector(rhs)) {
+          e = is_vector(e) ? scaled(e, rhs) : scaled(rhs, e);
         } else {
           e = e * rhs;
         }
@@ -167,7 +186,8 @@ class Parser {
       DepthGuard guard(*this, peek().column);
       advance();
       ex e = unary();
-      return minus ? -e : e;
+      if (!minus) return e;
+      return is_vector(e) ? scaled(e, -1) : -e;
     }
     return power_();
   }
@@ -179,6 +199,7 @@ class Parser {
     DepthGuard guard(*this, col);
     advance();
     ex expo = unary();
+    if (is_vector(base) || is_vector(expo)) fail(col, "cannot raise a vector to a power, or to a vector");
     if (is_a<numeric>(expo)) {
       const numeric n = ex_to<numeric>(expo);
       if (!n.is_rational()) fail(col, "exponent must be a rational number");
@@ -252,6 +273,44 @@ class Parser {
       if (auto r = names_.resolve(key)) return *r;
       fail(name.column, "'" + first_tokens[0].text + "' is not a coordinate, so '" + key + "' is not defined");
     }
+    auto vector_arg = [&](std::size_t i) {
+      if (!is_vector(args[i])) fail(first_tokens[i].column, "'" + f + "' takes a vector");
+      return args[i];
+    };
+    auto arity = [&](std::size_t n) {
+      if (args.size() != n) fail(name.column, "'" + f + "' takes " + std::to_string(n) + (n == 1 ? " argument" : " arguments"));
+    };
+    if (f == "unit" || f == "norm" || f == "perp1" || f == "perp2") {
+      arity(1);
+      const ex v = vector_arg(0);
+      const ex n = sqrt(v.op(0) * v.op(0) + v.op(1) * v.op(1) + v.op(2) * v.op(2));
+      if (normal(n).is_zero()) fail(first_tokens[0].column, "'" + f + "' of a zero vector");
+      if (f == "norm") return n;
+      if (f == "unit") return scaled(v, 1 / n);
+      // perp1: the unit vector along v x e, e the coordinate axis least aligned with v;
+      // perp2 = unit(v) x perp1. Chosen from v's components when they are numbers, else e_z.
+      int least = 2;
+      if (is_a<numeric>(v.op(0)) && is_a<numeric>(v.op(1)) && is_a<numeric>(v.op(2))) {
+        least = 0;
+        for (int k = 1; k < 3; ++k)
+          if (abs(ex_to<numeric>(v.op(k))) < abs(ex_to<numeric>(v.op(least)))) least = k;
+      }
+      const ex e = make_vector(least == 0 ? 1 : 0, least == 1 ? 1 : 0, least == 2 ? 1 : 0);
+      const ex c = cross3(v, e);
+      const ex cn = sqrt(c.op(0) * c.op(0) + c.op(1) * c.op(1) + c.op(2) * c.op(2));
+      if (normal(cn).is_zero()) fail(first_tokens[0].column, "'" + f + "' of a vector along the z axis is taken with its numbers given");
+      const ex p1 = scaled(c, 1 / cn);
+      if (f == "perp1") return p1;
+      return cross3(scaled(v, 1 / n), p1);
+    }
+    if (f == "cross" || f == "inner") {
+      arity(2);
+      const ex u = vector_arg(0), v = vector_arg(1);
+      if (f == "cross") return cross3(u, v);
+      return u.op(0) * v.op(0) + u.op(1) * v.op(1) + u.op(2) * v.op(2);
+    }
+    for (const auto& a : args)
+      if (is_vector(a)) fail(name.column, "'" + f + "' takes a number, not a vector");
     if (f == "sqrt") return sqrt(one_arg());
     if (f == "abs") return abs(one_arg());
     if (f == "sin") return sin(one_arg());
@@ -259,7 +318,7 @@ class Parser {
     if (f == "tan") return tan(one_arg());
     if (f == "exp") return exp(one_arg());
     if (f == "log") return log(one_arg());
-    fail(name.column, "unknown function '" + f + "' (known: sqrt, abs, sin, cos, tan, exp, log, dot, ddot)");
+    fail(name.column, "unknown function '" + f + "' (known: sqrt, abs, sin, cos, tan, exp, log, dot, ddot, unit, norm, cross, inner, perp1, perp2)");
   }
 
   ex primary() {
@@ -288,6 +347,26 @@ class Parser {
           if (!plain.empty()) msg += " (known: " + join(plain) + (plain.size() == 12 ? ", ..." : "") + ")";
         }
         fail(t.column, msg);
+      }
+      case Tok::lbracket: {
+        DepthGuard guard(*this, t.column);
+        advance();
+        std::vector<ex> items;
+        while (peek().kind != Tok::rbracket) {
+          const Token first = peek();
+          ex item = sum();
+          if (is_vector(item)) fail(first.column, "a vector's entries are numbers, not vectors");
+          items.push_back(item);
+          if (peek().kind == Tok::comma) {
+            advance();
+            continue;
+          }
+          if (peek().kind != Tok::rbracket) fail(peek().column, "expected ',' or ']' in a vector");
+        }
+        if (items.empty() || items.size() > 3) fail(t.column, "a vector has one to three entries");
+        advance();
+        while (items.size() < 3) items.push_back(0);
+        return make_vector(items[0], items[1], items[2]);
       }
       case Tok::lparen: {
         DepthGuard guard(*this, t.column);
@@ -346,6 +425,12 @@ RelationResult parse_relation(std::string_view text, const NameResolver& names, 
     return {std::nullopt, {{0, std::string("cannot evaluate: ") + e.what()}}};
   }
 }
+
+bool is_vector(const ex& e) {
+  return is_a<matrix>(e) && ex_to<matrix>(e).rows() == 3 && ex_to<matrix>(e).cols() == 1;
+}
+
+ex make_vector(const ex& x, const ex& y, const ex& z) { return matrix(3, 1, lst{x, y, z}); }
 
 bool is_identifier(std::string_view name) {
   if (name.empty() || !is_name_start(name[0])) return false;

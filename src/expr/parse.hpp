@@ -10,6 +10,12 @@
 //   primary := number | name | name '(' args ')' | '(' sum ')'
 // `dot(q)` and `ddot(q)` name the rate and acceleration symbols of a coordinate q; `sqrt`,
 // `abs`, `sin`, `cos`, `tan`, `exp`, `log` are the functions.
+//
+// Vectors (for rule templates): `[a, b, c]` is a vector (fewer than three entries are padded
+// with zeros), a resolver may give vectors (a point's position), and `unit(v)`, `norm(v)`,
+// `cross(u, v)`, `inner(u, v)`, `perp1(v)`, `perp2(v)` (two unit vectors perpendicular to v
+// and to each other) work on them. Vectors add, subtract and scale; anything else is an error.
+// A vector is a GiNaC 3x1 matrix.
 #pragma once
 
 #include <optional>
@@ -57,6 +63,11 @@ struct RelationResult {
 };
 [[nodiscard]] RelationResult parse_relation(std::string_view text, const NameResolver& names,
                                             const ExprLimits& limits = {});
+
+/// True when `e` is a vector (a 3x1 matrix) as the parser makes them.
+[[nodiscard]] bool is_vector(const GiNaC::ex& e);
+/// A vector from three components.
+[[nodiscard]] GiNaC::ex make_vector(const GiNaC::ex& x, const GiNaC::ex& y, const GiNaC::ex& z);
 
 /// True for names the parser accepts as a plain identifier: a letter, then letters, digits, `_`.
 [[nodiscard]] bool is_identifier(std::string_view name);

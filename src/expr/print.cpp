@@ -149,21 +149,29 @@ Fraction split(const ex& e) {
     for (const auto& x : e) factor(x);
   else
     factor(e);
-  // A textbook writes g (m_B - m_A), not -g (m_A - m_B): a minus sign in front of a product
-  // with a sum in it moves into the first such sum that has a negative term.
+  // Signs as a textbook writes them: a sum with more negative than positive terms is
+  // negated (c + d - h mu, not h mu - c - d), and a leading minus moves into a sum when that
+  // leaves the sum no worse: g (m_B - m_A), not -g (m_A - m_B).
+  auto balance = [](const ex& x) {
+    int b = 0;
+    for (std::size_t i = 0; i < x.nops(); ++i) b += is_negative_term(x.op(i)) ? -1 : 1;
+    return b;  // positive terms minus negative terms
+  };
+  for (auto* side : {&f.num, &f.den})
+    for (auto& x : *side)
+      if (is_a<add>(x) && balance(x) < 0) {
+        x = (-x).expand();
+        f.negative = !f.negative;
+      }
   if (f.negative) {
+    bool moved = false;
     for (auto* side : {&f.num, &f.den}) {
-      bool moved = false;
       for (auto& x : *side)
-        if (is_a<add>(x)) {
-          bool has_negative = false;
-          for (std::size_t i = 0; i < x.nops(); ++i) has_negative = has_negative || is_negative_term(x.op(i));
-          if (has_negative) {
-            x = (-x).expand();
-            f.negative = false;
-            moved = true;
-            break;
-          }
+        if (is_a<add>(x) && balance(x) == 0) {
+          x = (-x).expand();
+          f.negative = false;
+          moved = true;
+          break;
         }
       if (moved) break;
     }

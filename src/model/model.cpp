@@ -133,25 +133,98 @@ struct Builder {
     }
   }
 
+  // A vector as written: one expression per axis (a bare expression in 1-D). Each entry is
+  // checked against `expected` when given (plain numbers are taken in SI).
+  std::optional<Vec> vector(const VectorDesc& v, const NameResolver& names, const std::string& what,
+                            std::optional<Dimension> expected) {
+    if (static_cast<int>(v.items.size()) != m.dims()) {
+      diags.error(v.at, what + " has " + std::to_string(v.items.size()) + (v.items.size() == 1 ? " entry" : " entries") +
+                            " (expected " + std::to_string(m.dims()) + ", one per axis: " + join(m.axes) + ")");
+      return std::nullopt;
+    }
+    Vec out = zero_vec();
+    bool ok = true;
+    for (std::size_t i = 0; i < v.items.size(); ++i) {
+      auto e = parse(v.items[i], names, what);
+      if (!e) {
+        ok = false;
+        continue;
+      }
+      if (is_vector(*e)) {
+        diags.error(v.items[i].at, what + ": an entry is a vector (expected a number)");
+        ok = false;
+        continue;
+      }
+      if (expected && !is_a<numeric>(*e)) check_dimension(*e, *expected, v.items[i].at, what);
+      out[i] = *e;
+    }
+    if (!ok) return std::nullopt;
+    return out;
+  }
+
   void bodies() {
+    const bool one_d = m.dims() == 1;
+    std::vector<ex> accelerations;  // unknown accelerations come first among the unknowns
     for (const auto& b : d.bodies) {
       if (!claim_place(b.name, "body")) continue;
       Body body;
       body.name = b.name.text;
       body.at = b.name.at;
-      if (b.position && claim(*b.position, "coordinate")) {
-        const std::string q = b.position->text;
-        body.coord = table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::length(), false, b.position->at).sym;
-        body.rate = table->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, Dimension::velocity(), false,
-                               b.position->at).sym;
-        body.accel = table->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration,
-                                Dimension::acceleration(), false, b.position->at).sym;
+      if (one_d) {
+        if (!b.position)
+          diags.error(b.at, "body '" + body.name + "' has no 'position' (expected the name of its coordinate, e.g. x_" +
+                                body.name + ")");
+        for (const auto* v : {&b.center_of_mass, &b.acceleration})
+          if (*v) diags.error((*v)->at, "body '" + body.name + "': 'center_of_mass' and 'acceleration' are for 2-D and 3-D problems (in 1-D, 'position' names the coordinate)");
+        if (b.accel_along) diags.error(b.accel_along->at, "body '" + body.name + "': 'acceleration' is for 2-D and 3-D problems");
+        if (b.position && claim(*b.position, "coordinate")) {
+          const std::string q = b.position->text;
+          body.coord = table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::length(), false, b.position->at).sym;
+          body.rate = table->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, Dimension::velocity(), false,
+                                 b.position->at).sym;
+          body.accel = table->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration,
+                                  Dimension::acceleration(), false, b.position->at).sym;
+          body.cm = {body.coord, 0, 0};
+          body.has_cm = true;
+          body.acceleration = {body.accel, 0, 0};
+          accelerations.push_back(body.accel);
+        }
+      } else {
+        if (b.position)
+          diags.error(b.position->at, "body '" + body.name + "': 'position' is for 1-D problems (in 2-D and 3-D give 'center_of_mass' and 'acceleration')");
+        if (b.center_of_mass) {
+          if (auto cm = vector(*b.center_of_mass, *table, "'center_of_mass' of body '" + body.name + "'", Dimension::length())) {
+            body.cm = *cm;
+            body.has_cm = true;
+          }
+        }
+        if (b.acceleration) {
+          if (auto a = vector(*b.acceleration, *table, "'acceleration' of body '" + body.name + "'", Dimension::acceleration()))
+            body.acceleration = *a;
+        } else if (b.accel_along) {
+          auto dir = vector(*b.accel_along, *table, "'along' of the acceleration of body '" + body.name + "'", std::nullopt);
+          const Text name = b.accel_name ? *b.accel_name : Text{"a_" + body.name, b.accel_along->at};
+          if (dir && is_zero_vec(*dir)) {
+            diags.error(b.accel_along->at, "the direction of motion of body '" + body.name + "' is a zero vector");
+          } else if (dir && claim(name, "acceleration")) {
+            const SymbolInfo& a = table->add(name.text, std::nullopt, SymbolRole::unknown, Dimension::acceleration(), false, name.at);
+            body.accel = a.sym;
+            body.acceleration = a.sym * unit(*dir);
+            accelerations.push_back(a.sym);
+          }
+        }
       }
       body_index[body.name] = static_cast<int>(m.bodies.size());
       point_index[body.name] = static_cast<int>(m.points.size());
-      m.points.push_back({body.name, body.coord, static_cast<int>(m.bodies.size()), body.at});
+      Point self;
+      self.name = body.name;
+      self.position = body.cm;
+      self.body = one_d ? static_cast<int>(m.bodies.size()) : -1;
+      self.at = body.at;
+      m.points.push_back(self);
       m.bodies.push_back(body);
     }
+    m.candidates.insert(m.candidates.begin(), accelerations.begin(), accelerations.end());
     // Masses after every coordinate exists (a mass may not depend on them, but the message
     // for a misused name is clearer this way).
     for (std::size_t i = 0; i < d.bodies.size(); ++i) {
@@ -163,6 +236,8 @@ struct Builder {
         body.mass = *mass;
         body.has_mass = true;
         if (!mass->is_zero()) check_dimension(*mass, Dimension::mass(), b.mass->at, "mass of body '" + body.name + "'");
+        if (!one_d && !mass->is_zero() && !body.has_cm)
+          diags.error(b.at, "body '" + body.name + "' has no 'center_of_mass' (needed for its weight and its angular momentum balance)");
       }
     }
   }
@@ -174,22 +249,22 @@ struct Builder {
       pt.name = p.name.text;
       pt.at = p.name.at;
       if (p.at) {
-        if (auto pos = parse(*p.at, *table, "position of point '" + pt.name + "'")) {
-          pt.position = *pos;
-          // A plain number is a position in metres.
-          if (!is_a<numeric>(*pos)) check_dimension(*pos, Dimension::length(), p.at->at, "position of point '" + pt.name + "'");
-        }
+        if (auto pos = vector(*p.at, *table, "position of point '" + pt.name + "'", Dimension::length())) pt.position = *pos;
       } else if (p.on) {
+        if (m.dims() > 1) {
+          diags.error(p.on->at, "point '" + pt.name + "': 'on' is for 1-D problems (in 2-D and 3-D a point is a position)");
+          continue;
+        }
         auto it = body_index.find(p.on->text);
         if (it == body_index.end()) {
           unknown_name(*p.on, "body", body_names());
           continue;
         }
         pt.body = it->second;
-        pt.position = m.bodies[pt.body].coord;
+        pt.position = {m.bodies[pt.body].coord, 0, 0};
         if (p.offset) {
           if (auto off = parse(*p.offset, *table, "offset of point '" + pt.name + "'")) {
-            pt.position += *off;
+            pt.position[0] += *off;
             if (!off->is_zero()) check_dimension(*off, Dimension::length(), p.offset->at, "offset of point '" + pt.name + "'");
           }
         }
@@ -244,7 +319,7 @@ struct Builder {
     // A body whose coordinate could not be made has been reported already.
     for (const Point* p : {&a, &b})
       if (p->body >= 0 && m.bodies[p->body].coord.is_zero()) return std::nullopt;
-    const ex diff = (b.position - a.position).subs(layout);
+    const ex diff = (b.position[0] - a.position[0]).subs(layout);
     if (!is_a<numeric>(diff)) {
       std::set<std::string> missing;
       for (const_preorder_iterator it = diff.preorder_begin(); it != diff.preorder_end(); ++it)
@@ -290,9 +365,10 @@ struct Builder {
     const Rule* rule = rules.find(c.type.text);
     if (!rule) {
       std::string msg = "unknown connection type '" + c.type.text + "'";
-      if (auto near = nearest(c.type.text, rules.names()); !near.empty()) msg += " (did you mean '" + near + "'?";
-      else msg += " (";
-      msg += (msg.back() == '(' ? "" : "; ") + std::string("known: ") + join(rules.names()) + ")";
+      if (auto near = nearest(c.type.text, rules.names()); !near.empty())
+        msg += " (did you mean '" + near + "'?)";
+      else
+        msg += " (known: " + join(rules.names()) + ")";
       diags.error(c.type.at, msg);
       return;
     }
@@ -331,15 +407,23 @@ struct Builder {
     }
     if (!ok) return;
 
+    if (std::find(rule->dimensions.begin(), rule->dimensions.end(), m.dims()) == rule->dimensions.end()) {
+      std::vector<std::string> dims;
+      for (int n : rule->dimensions) dims.push_back(std::to_string(n) + "-D");
+      diags.error(c.type.at, "a " + what + " is for " + join(dims, " and ") + " problems (this one has " +
+                                 std::to_string(m.dims()) + (m.dims() == 1 ? " axis)" : " axes)"));
+      return;
+    }
     Scope scope(*table);
-    std::map<std::string, int> point_args;                 // point / body arguments
+    std::map<std::string, int> point_args;                 // point / body arguments: the point
+    std::map<std::string, int> body_args;                  // body arguments: the body
     std::map<std::string, std::vector<int>> path_args;     // points arguments
     std::map<std::string, std::pair<ex, Location>> expr_args;
     for (const auto& spec : rule->args) {
       const ArgDesc* a = c.arg(spec.key);
       if (!a) continue;
       const bool list = spec.kind == ArgKind::points;
-      if (list != a->is_list) {
+      if (spec.kind != ArgKind::vector && list != a->is_list) {
         diags.error(a->key.at, "'" + spec.key + "' of a " + what + (list ? " is a single name (expected a list of points)"
                                                                          : " is a list (expected a single value)"));
         ok = false;
@@ -348,14 +432,27 @@ struct Builder {
       switch (spec.kind) {
         case ArgKind::body: {
           auto it = body_index.find(a->items[0].text);
-          if (it == body_index.end()) { unknown_name(a->items[0], "body", body_names()); ok = false; }
-          else point_args[spec.key] = point_index.at(a->items[0].text);
+          if (it == body_index.end()) {
+            unknown_name(a->items[0], "body", body_names());
+            ok = false;
+          } else {
+            point_args[spec.key] = point_index.at(a->items[0].text);
+            body_args[spec.key] = it->second;
+            const Vec& cm = m.bodies[it->second].cm;
+            scope.bind(spec.key, make_vector(cm[0], cm[1], cm[2]));
+          }
           break;
         }
         case ArgKind::point: {
           auto it = point_index.find(a->items[0].text);
-          if (it == point_index.end()) { unknown_name(a->items[0], "point", point_names()); ok = false; }
-          else point_args[spec.key] = it->second;
+          if (it == point_index.end()) {
+            unknown_name(a->items[0], "point", point_names());
+            ok = false;
+          } else {
+            point_args[spec.key] = it->second;
+            const Vec& p = m.points[it->second].position;
+            scope.bind(spec.key, make_vector(p[0], p[1], p[2]));
+          }
           break;
         }
         case ArgKind::points: {
@@ -384,6 +481,14 @@ struct Builder {
           }
           break;
         }
+        case ArgKind::vector: {
+          const VectorDesc vd{a->items, a->key.at};
+          if (auto v = vector(vd, *table, "'" + spec.key + "' of a " + what, spec.dimension))
+            scope.bind(spec.key, make_vector((*v)[0], (*v)[1], (*v)[2]));
+          else
+            ok = false;
+          break;
+        }
         case ArgKind::name:
           if (!is_identifier(a->items[0].text)) {
             diags.error(a->items[0].at, "'" + a->items[0].text + "' is not a valid name");
@@ -394,16 +499,20 @@ struct Builder {
     }
     if (!ok) return;
 
-    // "string s", or after the first body or point argument: "pulley at C", "force on A".
+    // "string s", or after the first point argument ("pulley at C", "rod from H"), else the
+    // first body argument ("force on A").
     std::string label = rule->type;
     if (c.name) {
       label += " " + c.name->text;
     } else {
-      for (const auto& spec : rule->args)
-        if ((spec.kind == ArgKind::body || spec.kind == ArgKind::point) && c.arg(spec.key)) {
-          label += " " + spec.key + " " + c.arg(spec.key)->items[0].text;
+      for (const ArgKind kind : {ArgKind::point, ArgKind::body}) {
+        const auto spec = std::find_if(rule->args.begin(), rule->args.end(),
+                                       [&](const ArgSpec& a) { return a.kind == kind && c.arg(a.key); });
+        if (spec != rule->args.end()) {
+          label += " " + spec->key + " " + c.arg(spec->key)->items[0].text;
           break;
         }
+      }
     }
     // Unknowns.
     for (const auto& u : rule->unknowns) {
@@ -427,19 +536,61 @@ struct Builder {
       for (const auto& p : r.problems) diags.error(at, "rule '" + rule->type + "': in '" + text + "': " + p.message);
       return r.value;
     };
+    // A rule expression as a vector: a number is along the axis in 1-D (a force) or about z
+    // in 2-D (a couple).
+    auto as_vec = [&](const ex& e, bool couple, const Location& at) -> std::optional<Vec> {
+      if (is_vector(e)) return Vec{e.op(0), e.op(1), e.op(2)};
+      if (!couple && m.dims() == 1) return Vec{e, 0, 0};
+      if (couple && m.dims() == 2) return Vec{0, 0, e};
+      diags.error(at, "rule '" + rule->type + "': a " + std::string(couple ? "couple" : "force") + " in a " +
+                          std::to_string(m.dims()) + "-D problem must be a vector");
+      return std::nullopt;
+    };
     // Loads.
     for (const auto& l : rule->loads) {
       if (l.kind == LoadSpec::Kind::on) {
         auto it = point_args.find(l.arg);
         if (it == point_args.end()) continue;  // optional argument not given
-        const Point& p = m.points[it->second];
-        auto f = rule_expr(l.expr, l.at);
-        if (!f) continue;
-        if (p.body < 0) {
-          diags.error(c.at, "a " + what + " acts on fixed point '" + p.name + "' (expected a body or a point on one)");
+        int body = -1;
+        if (auto bt = body_args.find(l.arg); bt != body_args.end()) body = bt->second;
+        else body = m.points[it->second].body;
+        if (body < 0) {
+          diags.error(c.at, "a " + what + " acts on fixed point '" + m.points[it->second].name +
+                                "' (expected a body or a point on one)");
           continue;
         }
-        m.loads.push_back({p.body, *f, label});
+        Load load;
+        load.body = body;
+        load.source = label;
+        if (!l.at_arg.empty()) {
+          if (auto at = point_args.find(l.at_arg); at != point_args.end()) {
+            load.at = m.points[at->second].position;
+            load.at_name = m.points[at->second].name;
+          }
+        } else if (!body_args.count(l.arg)) {
+          load.at = m.points[it->second].position;
+          load.at_name = m.points[it->second].name;
+        }
+        bool good = true;
+        if (!l.expr.empty()) {
+          auto f = rule_expr(l.expr, l.at);
+          auto v = f ? as_vec(*f, false, l.at) : std::nullopt;
+          if (v) load.force = *v;
+          else good = false;
+        }
+        if (!l.couple.empty()) {
+          auto f = rule_expr(l.couple, l.at);
+          auto v = f ? as_vec(*f, true, l.at) : std::nullopt;
+          if (v) load.couple = *v;
+          else good = false;
+        }
+        if (!good) continue;
+        if (m.dims() > 1 && !load.at && !is_zero_vec(load.force)) {
+          diags.error(c.at, "a " + what + " needs a point of application in a " + std::to_string(m.dims()) +
+                                "-D problem (give '" + (l.at_arg.empty() ? std::string("at") : l.at_arg) + "')");
+          continue;
+        }
+        m.loads.push_back(load);
       } else if (l.kind == LoadSpec::Kind::along) {
         auto it = path_args.find(l.arg);
         if (it == path_args.end()) continue;
@@ -453,8 +604,16 @@ struct Builder {
           auto sign = strand_sign(a, b, c.at, strand + " of " + label);
           if (!sign || *sign == 0) continue;
           // The strand pulls each end towards the other.
-          if (a.body >= 0) m.loads.push_back({a.body, *sign * *tension, label + ": strand " + strand + " at " + a.name});
-          if (b.body >= 0) m.loads.push_back({b.body, -*sign * *tension, label + ": strand " + strand + " at " + b.name});
+          for (const auto& [end, s] : {std::pair{&a, *sign}, std::pair{&b, -*sign}}) {
+            if (end->body < 0) continue;
+            Load load;
+            load.body = end->body;
+            load.force = {s * *tension, 0, 0};
+            load.at = end->position;
+            load.at_name = end->name;
+            load.source = label + ": strand " + strand + " at " + end->name;
+            m.loads.push_back(load);
+          }
         }
       } else {
         auto it = expr_args.find(l.arg);
@@ -466,8 +625,12 @@ struct Builder {
           const Body& b = m.bodies[bi];
           if (b.coord.is_zero()) continue;
           const ex dl = it->second.first.diff(ex_to<symbol>(b.coord));
-          if (!dl.is_zero())
-            m.loads.push_back({static_cast<int>(bi), -*tension * dl, label + " (from its length sum) on " + b.name});
+          if (dl.is_zero()) continue;
+          Load load;
+          load.body = static_cast<int>(bi);
+          load.force = {-*tension * dl, 0, 0};
+          load.source = label + " (from its length sum) on " + b.name;
+          m.loads.push_back(load);
         }
       }
     }
@@ -484,12 +647,12 @@ struct Builder {
           const Point& a = m.points[path[i]];
           const Point& b = m.points[path[i + 1]];
           if (a.body == b.body) continue;  // constant length
-          const ex diff = (b.position - a.position).subs(layout);
+          const ex diff = (b.position[0] - a.position[0]).subs(layout);
           if (!is_a<numeric>(diff) || ex_to<numeric>(diff).is_zero()) {
             complete = false;  // reported with the loads
             continue;
           }
-          length += (ex_to<numeric>(diff).is_positive() ? 1 : -1) * (b.position - a.position);
+          length += (ex_to<numeric>(diff).is_positive() ? 1 : -1) * (b.position[0] - a.position[0]);
         }
         if (complete) m.constraints.push_back({label, cname, length, "length of " + label});
       } else if (k.kind == ConstraintSpec::Kind::length_sum) {
@@ -500,10 +663,11 @@ struct Builder {
         auto it = point_args.find(k.arg);
         if (it == point_args.end()) continue;
         const Point& p = m.points[it->second];
-        m.constraints.push_back({label, cname, p.position, "position of " + p.name});
+        m.constraints.push_back({label, cname, p.position[0], "position of " + p.name});
       }
     }
     for (const auto& v : rule->validity) {
+      if (!v.when.empty() && !c.arg(v.when)) continue;
       auto r = parse_relation(v.holds, scope);
       for (const auto& p : r.problems) diags.error(v.at, "rule '" + rule->type + "': " + p.message);
       if (r.value) m.conditions.push_back({r.value->lhs, r.value->rhs, r.value->op, v.meaning, v.otherwise, label});
@@ -539,20 +703,25 @@ struct Builder {
 
   void gravity() {
     if (!d.gravity) return;
-    auto g = parse(*d.gravity, *table, "'gravity'");
+    auto g = vector(*d.gravity, *table, "'gravity'", Dimension::acceleration());
     if (!g) return;
-    check_dimension(*g, Dimension::acceleration(), d.gravity->at, "'gravity'");
     m.gravity = *g;
-    for (std::size_t i = 0; i < m.bodies.size(); ++i)
-      if (m.bodies[i].has_mass && !m.bodies[i].mass.is_zero())
-        m.loads.push_back({static_cast<int>(i), m.bodies[i].mass * *g, "gravity on " + m.bodies[i].name});
+    for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+      const Body& b = m.bodies[i];
+      if (!b.has_mass || b.mass.is_zero()) continue;
+      Load weight;
+      weight.body = static_cast<int>(i);
+      weight.force = b.mass * *g;
+      if (b.has_cm) {
+        weight.at = b.cm;
+        weight.at_name = "the center of mass of " + b.name;
+      }
+      weight.source = "gravity on " + b.name;
+      m.loads.push_back(weight);
+    }
   }
 
   void given_and_find() {
-    std::vector<ex> accelerations;
-    for (const auto& b : m.bodies)
-      if (!b.accel.is_zero()) accelerations.push_back(b.accel);
-    m.candidates.insert(m.candidates.begin(), accelerations.begin(), accelerations.end());
     for (const auto& g : d.given) {
       auto r = parse_expression(g.text, *table);
       if (!r.value) {
@@ -594,26 +763,78 @@ struct Builder {
     }
   }
 
+  // Bodies named by an lmb or amb entry; all need a mass.
+  std::optional<std::vector<int>> selected_bodies(const DeriveDesc& dd) {
+    std::vector<int> out;
+    bool ok = true;
+    for (const auto& item : dd.items) {
+      auto it = body_index.find(item.text);
+      if (it == body_index.end()) {
+        unknown_name(item, "body", body_names());
+        ok = false;
+      } else if (!m.bodies[it->second].has_mass) {
+        diags.error(item.at, "body '" + item.text + "' has no 'mass' (needed for its momentum balance; 0 for a pulley block)");
+        ok = false;
+      } else {
+        out.push_back(it->second);
+      }
+    }
+    if (!ok) return std::nullopt;
+    return out;
+  }
+
   void derive() {
     std::set<std::string> constraint_names;
     for (const auto& c : m.constraints) constraint_names.insert(c.connection);
     for (const auto& dd : d.derive) {
       if (dd.kind.text == "lmb") {
-        Selection s{Selection::Kind::lmb, {}, dd.is_list, {}};
-        bool ok = true;
-        for (const auto& item : dd.items) {
-          auto it = body_index.find(item.text);
-          if (it == body_index.end()) {
-            unknown_name(item, "body", body_names());
-            ok = false;
-          } else if (!m.bodies[it->second].has_mass) {
-            diags.error(item.at, "body '" + item.text + "' has no 'mass' (needed for its momentum balance; 0 for a pulley block)");
-            ok = false;
+        Selection s{Selection::Kind::lmb, {}, dd.is_list, {}, {}, zero_vec(), std::nullopt, {}};
+        if (auto bodies = selected_bodies(dd)) {
+          s.bodies = *bodies;
+          m.derive.push_back(s);
+        }
+      } else if (dd.kind.text == "amb") {
+        if (m.dims() == 1) {
+          diags.error(dd.kind.at, "angular momentum balance needs a 2-D or 3-D problem (this one has one axis)");
+          continue;
+        }
+        Selection s{Selection::Kind::amb, {}, dd.is_list, {}, {}, zero_vec(), std::nullopt, {}};
+        auto bodies = selected_bodies(dd);
+        if (!bodies || !dd.about) continue;
+        s.bodies = *bodies;
+        auto p = point_index.find(dd.about->text);
+        if (p == point_index.end()) {
+          unknown_name(*dd.about, "point", point_names());
+          continue;
+        }
+        s.about = dd.about->text;
+        s.about_position = m.points[p->second].position;
+        if (dd.axis) {
+          // Two point names: the line through them; else a direction vector.
+          const auto& items = dd.axis->items;
+          if (items.size() == 2 && point_index.count(items[0].text) && point_index.count(items[1].text)) {
+            const Vec from = m.points[point_index[items[0].text]].position;
+            const Vec to = m.points[point_index[items[1].text]].position;
+            if (is_zero_vec(to - from)) {
+              diags.error(dd.axis->at, "the axis " + items[0].text + items[1].text + " has zero length (expected two different points)");
+              continue;
+            }
+            s.axis = unit(to - from);
+            s.axis_label = items[0].text + items[1].text;
+          } else if (auto v = vector(*dd.axis, *table, "'axis' of an 'amb' entry", std::nullopt)) {
+            if (is_zero_vec(*v)) {
+              diags.error(dd.axis->at, "the axis of an 'amb' entry is a zero vector");
+              continue;
+            }
+            s.axis = unit(*v);
+            std::vector<std::string> parts;
+            for (const auto& t : items) parts.push_back(t.text);
+            s.axis_label = "[" + join(parts) + "]";
           } else {
-            s.bodies.push_back(it->second);
+            continue;
           }
         }
-        if (ok) m.derive.push_back(s);
+        m.derive.push_back(s);
       } else {
         for (const auto& item : dd.items) {
           if (!constraint_names.count(item.text)) {
@@ -622,18 +843,32 @@ struct Builder {
             unknown_name(item, "constraint (a named connection with a constraint)", known);
             continue;
           }
-          m.derive.push_back({Selection::Kind::constraint, {}, false, item.text});
+          m.derive.push_back({Selection::Kind::constraint, {}, false, item.text, {}, zero_vec(), std::nullopt, {}});
         }
       }
     }
   }
 
+  void axes() {
+    if (d.axes.empty()) return;  // default: one axis named x
+    if (d.axes.size() > 3) {
+      diags.error(d.axes[3].at, "'axes' lists " + std::to_string(d.axes.size()) + " axes (expected one to three)");
+      return;
+    }
+    std::set<std::string> seen;
+    m.axes.clear();
+    for (const auto& a : d.axes) {
+      if (!is_identifier(a.text)) diags.error(a.at, "axis name '" + a.text + "' is not a valid name");
+      if (!seen.insert(a.text).second) diags.error(a.at, "duplicate axis '" + a.text + "'");
+      m.axes.push_back(a.text);
+    }
+    m.axis = m.axes[0];
+  }
+
   Model build() {
     m.file = d.file;
     m.title = d.title.text;
-    if (d.axes.size() > 1)
-      diags.error(d.axes[1].at, "this version of tackle handles one axis (2-D and 3-D balances are not available yet)");
-    if (!d.axes.empty()) m.axis = d.axes[0].text;
+    axes();
     parameters();
     bodies();
     points();

@@ -11,6 +11,7 @@
 
 #include "description/description.hpp"
 #include "model/symbols.hpp"
+#include "model/vec.hpp"
 #include "ruleset/ruleset.hpp"
 
 namespace tackle {
@@ -19,24 +20,30 @@ struct Body {
   std::string name;
   GiNaC::ex mass;      // 0 for an ideal pulley block
   bool has_mass = false;
-  GiNaC::ex coord;     // x_A
-  GiNaC::ex rate;      // dot(x_A)
-  GiNaC::ex accel;     // ddot(x_A)
+  GiNaC::ex coord;     // 1-D: x_A (0 in 2-D and 3-D, where bodies have no coordinate)
+  GiNaC::ex rate;      // 1-D: dot(x_A)
+  GiNaC::ex accel;     // 1-D: ddot(x_A)
+  Vec cm = zero_vec();            // center of mass (1-D: the coordinate)
+  bool has_cm = false;
+  Vec acceleration = zero_vec();  // the same for every point of the body
   Location at;
 };
 
 struct Point {
   std::string name;
-  GiNaC::ex position;  // along the axis
-  int body = -1;       // -1: fixed to the ground
+  Vec position = zero_vec();
+  int body = -1;       // 1-D: the body the point moves with; -1: fixed to the ground
   Location at;
 };
 
-/// A force on a body, with where it comes from (a small immutable value).
+/// A force (and couple) on a body, with where it acts and where it comes from.
 struct Load {
   int body = -1;
-  GiNaC::ex force;
-  std::string source;  // "force F on A", "string s: strand pB-C", "gravity"
+  Vec force = zero_vec();
+  std::optional<Vec> at;   // point of application (needed for angular momentum balance)
+  std::string at_name;     // the point's name, for reports
+  Vec couple = zero_vec();
+  std::string source;      // "force on A", "string s: strand pB-C at pB", "gravity on A"
 };
 
 /// A quantity held constant in time (a string's length sum, a still body's coordinate); its
@@ -66,16 +73,22 @@ struct Wanted {
 
 /// A balance or constraint the user asked for (`derive`).
 struct Selection {
-  enum class Kind { lmb, constraint } kind;
-  std::vector<int> bodies;  // lmb: one body, or a system
+  enum class Kind { lmb, amb, constraint } kind;
+  std::vector<int> bodies;  // lmb, amb: one body, or a system
   bool system = false;
   std::string constraint;   // constraint: the connection name
+  std::string about;        // amb: the point's name
+  Vec about_position = zero_vec();
+  std::optional<Vec> axis;  // amb: unit vector of the axis (all components when absent)
+  std::string axis_label;   // "OG", "[0, 1, 0]"
 };
 
 struct Model {
   std::string file;
   std::string title;
-  std::string axis = "x";
+  std::string axis = "x";             // the first axis' name
+  std::vector<std::string> axes{"x"};  // one name per axis (1 to 3)
+  [[nodiscard]] int dims() const { return static_cast<int>(axes.size()); }
   std::shared_ptr<const SymbolTable> symbols;
   std::vector<Body> bodies;
   std::vector<Point> points;
@@ -84,7 +97,7 @@ struct Model {
   std::vector<Condition> conditions;
   std::vector<std::string> assumptions;
   std::vector<std::string> connections;  // one line per connection: "string s: <summary>"
-  std::optional<GiNaC::ex> gravity;
+  std::optional<Vec> gravity;
   std::vector<GiNaC::ex> candidates;  // possible unknowns: accelerations, then rule unknowns
   std::vector<GiNaC::ex> given;       // kinematic quantities given as known
   std::vector<Wanted> wanted;

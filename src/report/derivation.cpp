@@ -62,12 +62,17 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
   }
   if (!symbolic.empty()) bullet("Symbolic parameters (no value given): " + join(symbolic) + ".");
 
-  section("Free body diagrams: linear momentum balance");
+  const bool has_amb = std::any_of(s.equations.begin(), s.equations.end(),
+                                   [](const Equation& e) { return e.kind == Equation::Kind::amb; });
+  section(has_amb ? "Free body diagrams: linear and angular momentum balance"
+                  : "Free body diagrams: linear momentum balance");
   for (const auto& eq : s.equations) {
-    if (eq.kind != Equation::Kind::lmb) continue;
+    if (eq.kind == Equation::Kind::constraint_acceleration) continue;
     std::vector<std::string> parts;
     for (std::size_t i = 0; i < eq.terms.size(); ++i) parts.push_back(eq.sources[i] + ": " + to_text(eq.terms[i]));
-    text(eq.label + ". Forces along " + m.axis + ": " + (parts.empty() ? "none" : join(parts, "; ")) + ".");
+    const std::string what = eq.kind == Equation::Kind::lmb ? "Forces" : "Moments";
+    text(eq.label + ". " + what + ": " + (parts.empty() ? "none" : join(parts, "; ")) + ".");
+    if (!eq.why.empty()) text("About this point and axis there is " + eq.why + ".");
     equation(eq.label, eq.lhs, eq.rhs);
   }
 
@@ -164,7 +169,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
     section("Validity");
     for (const auto& cc : sol.conditions) {
       ConditionReport r{cc.condition->source, cc.condition->lhs, cc.condition->rhs, cc.condition->op, cc.expr,
-                        std::nullopt, cc.condition->meaning, cc.condition->otherwise};
+                        std::nullopt, cc.condition->meaning, cc.condition->otherwise, cc.solved, cc.always};
       if (!cc.depends_on_free) {
         if (auto v = evaluate(cc.expr, table, std::nullopt)) {
           const double x = v->approx;
@@ -181,6 +186,17 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
       rule->relation = r.op;
       Step* closed = equation("closed form", r.simplified, 0);
       closed->relation = r.op;
+      if (r.always) {
+        text(*r.always ? "This holds for all positive values of the parameters."
+                       : "This fails for all positive values of the parameters: " + r.otherwise + ".");
+      } else if (!r.solved.empty() && !(r.solved.size() == 1 && r.solved[0].bound.is_zero() &&
+                                        r.simplified.is_equal(r.solved[0].parameter))) {
+        text(r.solved.size() == 1 ? "It holds exactly when:" : "It holds exactly when (each form is equivalent):");
+        for (const auto& sv : r.solved) {
+          Step* solved = equation("solved for " + to_text(sv.parameter), sv.parameter, sv.bound);
+          solved->relation = sv.op;
+        }
+      }
       if (r.holds)
         text(*r.holds ? "This holds for the given numbers."
                       : "This is VIOLATED for the given numbers: " + r.otherwise + ".");

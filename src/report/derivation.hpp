@@ -43,6 +43,8 @@ struct ConditionReport {
   GiNaC::ex simplified;  // closed form, `simplified op 0`
   std::optional<bool> holds;  // with the given numbers
   std::string meaning, otherwise;
+  std::vector<SolvedFor> solved;  // the condition solved for a parameter, when it can be
+  std::optional<bool> always;     // for every positive value of the parameters
 };
 
 struct CombinationReport {

@@ -204,6 +204,12 @@ std::string json_document(const Derivation& d, bool full) {
                      {"meaning", c.meaning},
                      {"otherwise", c.otherwise}};
     x["holds"] = c.holds ? nlohmann::ordered_json(*c.holds) : nlohmann::ordered_json(nullptr);
+    x["always"] = c.always ? nlohmann::ordered_json(*c.always) : nlohmann::ordered_json(nullptr);
+    x["solved"] = nlohmann::ordered_json::array();
+    for (const auto& sv : c.solved)
+      x["solved"].push_back({{"parameter", to_text(sv.parameter)},
+                             {"condition", to_text(sv.parameter) + " " + sv.op + " " + to_text(sv.bound)},
+                             {"latex", to_latex(sv.parameter) + " " + tex_relation(sv.op) + " " + to_latex(sv.bound)}});
     j["conditions"].push_back(x);
   }
   if (full && d.system) {

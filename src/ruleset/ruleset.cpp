@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "description/yaml_reader.hpp"
@@ -42,19 +43,25 @@ using yaml::where;
 // Resolves a rule's local names to placeholder symbols, to check its expressions at load.
 class LocalNames : public NameResolver {
  public:
-  explicit LocalNames(std::vector<std::string> names) : names_(std::move(names)) {
-    for (const auto& n : names_) symbols_.emplace(n, GiNaC::symbol(n));
+  // `vectors`: names that stand for vectors (points, vector arguments).
+  LocalNames(std::vector<std::string> names, const std::set<std::string>& vectors) : names_(std::move(names)) {
+    for (const auto& n : names_) {
+      if (vectors.count(n))
+        values_.emplace(n, make_vector(GiNaC::symbol(n + "_1"), GiNaC::symbol(n + "_2"), GiNaC::symbol(n + "_3")));
+      else
+        values_.emplace(n, GiNaC::symbol(n));
+    }
   }
   std::optional<GiNaC::ex> resolve(std::string_view name) const override {
-    auto it = symbols_.find(std::string(name));
-    if (it == symbols_.end()) return std::nullopt;
-    return GiNaC::ex(it->second);
+    auto it = values_.find(std::string(name));
+    if (it == values_.end()) return std::nullopt;
+    return it->second;
   }
   std::vector<std::string> known_names() const override { return names_; }
 
  private:
   std::vector<std::string> names_;
-  std::map<std::string, GiNaC::symbol> symbols_;
+  std::map<std::string, GiNaC::ex> values_;
 };
 
 struct RuleReader {
@@ -62,13 +69,11 @@ struct RuleReader {
   Diagnostics& diags;
 
   std::optional<ArgKind> kind_of(const Text& t) {
-    static const std::map<std::string, ArgKind> kinds = {{"body", ArgKind::body},
-                                                         {"point", ArgKind::point},
-                                                         {"points", ArgKind::points},
-                                                         {"expr", ArgKind::expr},
-                                                         {"name", ArgKind::name}};
+    static const std::map<std::string, ArgKind> kinds = {{"body", ArgKind::body},   {"point", ArgKind::point},
+                                                         {"points", ArgKind::points}, {"expr", ArgKind::expr},
+                                                         {"name", ArgKind::name},   {"vector", ArgKind::vector}};
     if (auto it = kinds.find(t.text); it != kinds.end()) return it->second;
-    diags.error(t.at, "unknown argument kind '" + t.text + "' (expected one of: body, point, points, expr, name)");
+    diags.error(t.at, "unknown argument kind '" + t.text + "' (expected one of: body, point, points, expr, name, vector)");
     return std::nullopt;
   }
 
@@ -140,7 +145,7 @@ struct RuleReader {
       diags.error(at, what + " names argument '" + key + "', which the rule does not declare");
       return;
     }
-    static const char* names[] = {"body", "point", "points", "expr", "name"};
+    static const char* names[] = {"body", "point", "points", "expr", "name", "vector"};
     if (a->kind_known && a->kind != expected && !(expected == ArgKind::body && a->kind == ArgKind::point))
       diags.error(at, what + " uses argument '" + key + "' as " + names[static_cast<int>(expected)] +
                           " but the rule declares it as " + names[static_cast<int>(a->kind)]);
@@ -150,7 +155,7 @@ struct RuleReader {
     Rule r;
     r.at = where(root, file);
     if (!check_map(root, {"type", "summary", "needs", "optional", "one_of", "unknowns", "loads", "constraints",
-                          "validity", "checks", "assumptions"},
+                          "validity", "checks", "assumptions", "dimensions"},
                    "the rule", file, diags))
       return r;
     r.type = need_scalar(root, "type", "the rule");
@@ -167,9 +172,21 @@ struct RuleReader {
         r.one_of.push_back(g);
       }
     }
+    if (auto n = root["dimensions"]) {
+      r.dimensions.clear();
+      for (const auto& k : n) {
+        const std::string v = k.Scalar();
+        if (v == "1" || v == "2" || v == "3")
+          r.dimensions.push_back(std::stoi(v));
+        else
+          diags.error(where(k, file), "'dimensions' lists '" + v + "' (expected 1, 2 or 3)");
+      }
+    }
+    // Names a rule's expressions may use: its expression, vector and point arguments (points
+    // as position vectors) and its unknowns.
     std::vector<std::string> locals;
     for (const auto& a : r.args)
-      if (a.kind == ArgKind::expr) locals.push_back(a.key);
+      if (a.kind == ArgKind::expr || a.kind == ArgKind::vector || a.kind == ArgKind::point) locals.push_back(a.key);
     if (auto n = root["unknowns"]) {
       for (const auto& u : n) {
         if (!check_map(u, {"local", "name", "rename", "dimension"}, "an unknown of the rule", file, diags)) continue;
@@ -189,14 +206,18 @@ struct RuleReader {
         r.unknowns.push_back(std::move(s));
       }
     }
-    LocalNames names(locals);
+    std::set<std::string> vectors;
+    for (const auto& a : r.args)
+      if (a.kind == ArgKind::vector || a.kind == ArgKind::point) vectors.insert(a.key);
+    LocalNames names(locals, vectors);
     auto check_expr = [&](const std::string& text, const Location& at) {
       auto res = parse_expression(text, names);
       for (const auto& p : res.problems) diags.error(at, "in '" + text + "': " + p.message);
     };
     if (auto n = root["loads"]) {
       for (const auto& l : n) {
-        if (!check_map(l, {"on", "along", "from_length", "force", "tension"}, "a load of the rule", file, diags)) continue;
+        if (!check_map(l, {"on", "along", "from_length", "force", "tension", "at", "couple"}, "a load of the rule", file, diags))
+          continue;
         auto kind = which(l, {"on", "along", "from_length"}, "a load");
         if (!kind) continue;
         LoadSpec s;
@@ -204,7 +225,16 @@ struct RuleReader {
         s.arg = l[*kind].Scalar();
         if (*kind == "on") {
           s.kind = LoadSpec::Kind::on;
-          s.expr = need_scalar(l, "force", "a load");
+          if (l["force"]) s.expr = need_scalar(l, "force", "a load");
+          if (l["couple"]) {
+            s.couple = need_scalar(l, "couple", "a load");
+            if (!s.couple.empty()) check_expr(s.couple, s.at);
+          }
+          if (!l["force"] && !l["couple"]) diags.error(s.at, "a load has neither 'force' nor 'couple'");
+          if (l["at"]) {
+            s.at_arg = l["at"].Scalar();
+            check_arg_ref(r, s.at_arg, ArgKind::point, s.at, "a load");
+          }
           check_arg_ref(r, s.arg, ArgKind::body, s.at, "a load");
         } else {
           s.kind = *kind == "along" ? LoadSpec::Kind::along : LoadSpec::Kind::from_length;
@@ -238,9 +268,13 @@ struct RuleReader {
     }
     if (auto n = root["validity"]) {
       for (const auto& v : n) {
-        if (!check_map(v, {"holds", "meaning", "otherwise"}, "a validity condition", file, diags)) continue;
+        if (!check_map(v, {"holds", "meaning", "otherwise", "when"}, "a validity condition", file, diags)) continue;
         ValiditySpec s;
         s.at = where(v, file);
+        if (v["when"]) {
+          s.when = v["when"].Scalar();
+          if (!r.arg(s.when)) diags.error(s.at, "'when' names argument '" + s.when + "', which the rule does not declare");
+        }
         s.holds = need_scalar(v, "holds", "a validity condition");
         s.meaning = need_scalar(v, "meaning", "a validity condition");
         s.otherwise = need_scalar(v, "otherwise", "a validity condition");

@@ -15,7 +15,7 @@
 
 namespace tackle {
 
-enum class ArgKind { body, point, points, expr, name };
+enum class ArgKind { body, point, points, expr, name, vector };
 
 struct ArgSpec {
   std::string key;
@@ -32,13 +32,16 @@ struct UnknownSpec {
   Dimension dimension;
 };
 
-/// Loads: `on` applies `expr` to a body or a point's body; `along` pulls every point of a
-/// path towards its neighbours with tension `expr`; `from_length` applies the generalized
-/// force -expr * d(length)/dq to every coordinate q of a hand-written length sum.
+/// Loads: `on` applies the force `expr` (and the couple `couple`) to a body, at the point
+/// argument `at` (or at the `on` point itself); `along` pulls every point of a path towards
+/// its neighbours with tension `expr`; `from_length` applies the generalized force
+/// -expr * d(length)/dq to every coordinate q of a hand-written length sum.
 struct LoadSpec {
   enum class Kind { on, along, from_length } kind;
   std::string arg;
-  std::string expr;
+  std::string expr;    // force (on) or tension (along, from_length); may be empty for a pure couple
+  std::string at_arg;  // on: the point of application
+  std::string couple;  // on: a couple, as an expression
   Location at;
 };
 
@@ -54,6 +57,7 @@ struct ValiditySpec {
   std::string holds;  // relation over the rule's local names, e.g. "T >= 0"
   std::string meaning;
   std::string otherwise;
+  std::string when;   // an optional argument; the condition applies only when it is given
   Location at;
 };
 
@@ -75,6 +79,7 @@ struct Rule {
   std::vector<ValiditySpec> validity;
   std::vector<CheckSpec> checks;
   std::vector<std::string> assumptions;
+  std::vector<int> dimensions{1, 2, 3};  // numbers of axes the rule is for
   Location at;
 
   [[nodiscard]] const ArgSpec* arg(const std::string& key) const;

@@ -38,6 +38,69 @@ exmap random_point(const ex& e, std::mt19937& rng) {
 
 }  // namespace
 
+namespace {
+
+std::string flipped(const std::string& op) {
+  if (op == ">=") return "<=";
+  if (op == "<=") return ">=";
+  if (op == ">") return "<";
+  if (op == "<") return ">";
+  return op;
+}
+
+int known_sign(const ex& e) {
+  if (e.info(info_flags::positive)) return 1;
+  if (e.info(info_flags::negative)) return -1;
+  if (is_a<numeric>(e)) return ex_to<numeric>(e).is_zero() ? 0 : (ex_to<numeric>(e).is_positive() ? 1 : -1);
+  return 0;
+}
+
+// `e op 0` with the factors of known sign divided out: returns the factors left (their
+// product), and flips `op` for each negative factor divided out.
+ex strip_signed_factors(const ex& e, std::string& op) {
+  const ex nd = normal(e).numer_denom();
+  ex rest = 1;
+  for (int side = 0; side < 2; ++side) {
+    const bool denominator = side == 1;
+    const ex f = factor(nd.op(side));
+    std::vector<ex> factors;
+    if (is_a<mul>(f))
+      for (std::size_t i = 0; i < f.nops(); ++i) factors.push_back(f.op(i));
+    else
+      factors.push_back(f);
+    for (const ex& x : factors) {
+      const int sign = known_sign(x);
+      if (sign > 0) continue;
+      if (sign < 0) {
+        op = flipped(op);
+        continue;
+      }
+      rest = denominator ? rest / x : rest * x;
+    }
+  }
+  return rest;
+}
+
+}  // namespace
+
+std::vector<SolvedFor> solve_condition(const ex& expr, const std::string& op, const std::vector<ex>& parameters) {
+  std::vector<SolvedFor> out;
+  if (op == "=") return out;
+  std::string reduced_op = op;
+  const ex rest = strip_signed_factors(expr, reduced_op);
+  const ex nd = rest.numer_denom();
+  if (!nd.op(1).is_equal(1)) return out;  // a denominator of unknown sign remains
+  const ex poly = nd.op(0).expand();
+  for (const ex& p : parameters) {
+    if (!poly.has(p) || poly.degree(p) != 1) continue;
+    const ex a = normal(poly.coeff(p, 1)), b = normal(poly.coeff(p, 0));
+    const int sign = known_sign(factor(a));
+    if (sign == 0) continue;
+    out.push_back({p, sign > 0 ? reduced_op : flipped(reduced_op), simplest(-b / a)});
+  }
+  return out;
+}
+
 Solution solve(const Model& model, const EquationSystem& s) {
   Solution sol;
   const std::size_t n_eq = s.equations.size(), n_unk = s.unknowns.size();
@@ -154,7 +217,20 @@ Solution solve(const Model& model, const EquationSystem& s) {
     bool relevant = true;
     for (const auto& u : model.candidates)
       if (cc.expr.has(u) && std::find(s.unknowns.begin(), s.unknowns.end(), u) == s.unknowns.end()) relevant = false;
-    if (relevant) sol.conditions.push_back(cc);
+    if (!relevant) continue;
+    if (!cc.depends_on_free) {
+      std::vector<ex> parameters;
+      for (const auto& sym : model.symbols->all())
+        if (sym->role == SymbolRole::parameter) parameters.push_back(sym->sym);
+      cc.solved = solve_condition(cc.expr, c.op, parameters);
+      std::string op = c.op;
+      const ex rest = strip_signed_factors(cc.expr, op);
+      if (is_a<numeric>(rest) && c.op != "=") {
+        const numeric r = ex_to<numeric>(rest);
+        cc.always = op == ">=" ? r >= 0 : op == ">" ? r > 0 : op == "<=" ? r <= 0 : r < 0;
+      }
+    }
+    sol.conditions.push_back(cc);
   }
   return sol;
 }

@@ -28,11 +28,26 @@ struct Combination {
   GiNaC::ex value;
 };
 
+/// A condition solved for one parameter: `parameter op bound`, equivalent to the condition
+/// (found when the condition is linear in that parameter with a coefficient of known sign,
+/// once factors of known sign are divided out).
+struct SolvedFor {
+  GiNaC::ex parameter;
+  std::string op;
+  GiNaC::ex bound;
+};
+
 struct CheckedCondition {
   const Condition* condition = nullptr;
   GiNaC::ex expr;  // lhs - rhs with the solution substituted, simplified; the condition is `expr op 0`
   bool depends_on_free = false;
+  std::optional<bool> always;    // true: holds for every positive value of the parameters; false: never
+  std::vector<SolvedFor> solved;  // one per parameter it could be solved for, in parameter order
 };
+
+/// Solves `expr op 0` for each parameter it is linear in (see SolvedFor).
+[[nodiscard]] std::vector<SolvedFor> solve_condition(const GiNaC::ex& expr, const std::string& op,
+                                                     const std::vector<GiNaC::ex>& parameters);
 
 struct Solution {
   enum class Status { determined, underdetermined, inconsistent } status = Status::determined;

@@ -65,7 +65,24 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
           CHECK(answer.value->approx == Approx(v).epsilon(1e-9).margin(1e-12));
         }
       }
-      CHECK(d.status == "determined");
+      // An indeterminate example names its free unknowns and determined combinations.
+      std::vector<std::string> free;
+      if (root["expected_free"])
+        for (const auto& f : root["expected_free"]) free.push_back(f.as<std::string>());
+      CHECK(d.free == free);
+      CHECK(d.status == (free.empty() ? "determined" : "underdetermined"));
+      const YAML::Node combos = root["expected_combinations"];
+      REQUIRE(d.combinations.size() == (combos ? combos.size() : 0));
+      for (std::size_t i = 0; i < d.combinations.size(); ++i) {
+        const auto combination = parse_expression(combos[i]["combination"].as<std::string>(), table);
+        const auto value = parse_expression(combos[i]["closed_form"].as<std::string>(), table);
+        REQUIRE(combination.value);
+        REQUIRE(value.value);
+        CHECK(normal(d.combinations[i].combination - *combination.value).is_zero());
+        CHECK(normal(d.combinations[i].value - *value.value).is_zero());
+        REQUIRE(d.combinations[i].number);
+        CHECK(d.combinations[i].number->approx == Approx(combos[i]["value"].as<double>()));
+      }
     }
   }
 }

@@ -7,7 +7,10 @@ using namespace tackle;
 
 TEST_CASE("Rules: the bundled rules load and declare what they need", "[rules]") {
   const RuleSet rules = load_rules(TACKLE_SOURCE_DIR "/rules");
-  CHECK(rules.names() == std::vector<std::string>{"fixed", "force", "pulley", "string"});
+  CHECK(rules.names() == std::vector<std::string>{"ball_and_socket", "cable", "couple", "driven_wheel", "fixed",
+                                                 "fixed_support", "force", "free_wheel", "hinge", "hinge_with_moments",
+                                                 "pin", "pulley", "rod", "roller", "skidding_wheel", "sliding",
+                                                 "sticking", "string", "weld"});
   const Rule* s = rules.find("string");
   REQUIRE(s);
   REQUIRE(s->unknowns.size() == 1);
@@ -32,7 +35,7 @@ TEST_CASE("Rules: a rule file with errors is reported like a description, all at
     for (const auto& d : e.diagnostics()) got.push_back(format(d));
     CHECK(got == std::vector<std::string>{
                      "rules/spring.yaml:2:1: unknown key 'summry' in the rule (did you mean 'summary'?)",
-                     "rules/spring.yaml:3:13: unknown argument kind 'bdy' (expected one of: body, point, points, expr, name)",
+                     "rules/spring.yaml:3:13: unknown argument kind 'bdy' (expected one of: body, point, points, expr, name, vector)",
                      "rules/spring.yaml:5:5: in '-k*': unknown name 'k' (known: on)",
                  });
   }
