@@ -6,7 +6,10 @@
 #include <CLI/CLI.hpp>
 
 #include "core/diagnostics.hpp"
+#include "expr/parse.hpp"
+#include "isolate/isolate.hpp"
 #include "pipeline/pipeline.hpp"
+#include "report/isolation_report.hpp"
 
 namespace {
 
@@ -54,6 +57,17 @@ int main(int argc, char** argv) {
       app.add_subcommand("derive", "Print the derivation: FBD equations, constraints, solve, results"));
   with_common_options(app.add_subcommand("solve", "Print the answers only: closed forms and numbers"));
 
+  std::string target;
+  bool all = false;
+  auto* isolate = app.add_subcommand("isolate", "Find one balance equation (LMB along a direction, AMB about a point "
+                                                "and axis) that contains an unknown alone");
+  isolate->add_option("file", file, "Problem description (YAML)")->required();
+  auto* target_opt = isolate->add_option("unknown", target, "The unknown, e.g. T_HI");
+  auto* all_opt = isolate->add_flag("--all", all, "Report for every unknown whether one equation gives it");
+  target_opt->excludes(all_opt);
+  isolate->add_option("--format", format, "Output format")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
+  isolate->add_option("-o,--output", out, "Write to this file instead of standard output");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -61,8 +75,32 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
 
+  if (isolate->parsed() && target.empty() && !all) {
+    std::cerr << "tackle isolate: give an unknown or --all\n";
+    return 2;
+  }
   try {
     const tackle::RuleSet rules = tackle::load_rules(rules_dir);
+    if (isolate->parsed()) {
+      const tackle::Model model = tackle::build_model(tackle::read_description(file), rules);
+      const auto unknowns = tackle::model_unknowns(model);
+      std::vector<GiNaC::ex> wanted = unknowns;
+      if (!all) {
+        const auto parsed = tackle::parse_expression(target, *model.symbols);
+        if (!parsed.value || std::find(unknowns.begin(), unknowns.end(), *parsed.value) == unknowns.end()) {
+          std::vector<std::string> names;
+          for (const auto& u : unknowns) names.push_back(model.symbols->find(u)->name);
+          std::cerr << file << ": '" << target << "' is not an unknown of this problem (unknowns: "
+                    << tackle::join(names) << ")\n";
+          return 1;
+        }
+        wanted = {*parsed.value};
+      }
+      const auto candidates = tackle::candidate_equations(model);
+      std::vector<tackle::Isolation> found;
+      for (const auto& u : wanted) found.push_back(tackle::isolate(model, candidates, u));
+      return emit(tackle::write_isolations(model, found, formats.at(format)), out);
+    }
     const auto analysis = tackle::analyze_file(file, rules);
     const tackle::Derivation d = tackle::explain(*analysis);
     return emit(tackle::write(d, formats.at(format), derive->parsed()), out);

@@ -482,7 +482,7 @@ struct Builder {
           break;
         }
         case ArgKind::vector: {
-          const VectorDesc vd{a->items, a->key.at};
+          const VectorDesc vd{a->items, a->items.empty() ? a->key.at : a->items[0].at};
           if (auto v = vector(vd, *table, "'" + spec.key + "' of a " + what, spec.dimension))
             scope.bind(spec.key, make_vector((*v)[0], (*v)[1], (*v)[2]));
           else

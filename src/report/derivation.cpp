@@ -131,6 +131,15 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
       if (free) {
         const bool is_free = std::find(sol.free.begin(), sol.free.end(), w.expr) != sol.free.end();
         a.status = is_free ? Answer::Status::free : Answer::Status::in_combination;
+        if (!is_free) {
+          // Affine in the free unknowns: each free unknown with its coefficient, then the rest.
+          exmap none;
+          for (const auto& f : sol.free) none[f] = 0;
+          const ex g = general.expand();
+          ex shown = simplest(g.subs(none));
+          for (const auto& f : sol.free) shown += simplest(g.coeff(f, 1)) * f;
+          a.general = shown;
+        }
       } else {
         a.closed_form = simplest(general);
         a.value = evaluate(*a.closed_form, table, w.dimension);
@@ -153,9 +162,11 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
         if (a.value) st->note = a.value->decimal + (a.value->unit.empty() ? "" : " " + a.value->unit);
       } else if (a.status == Answer::Status::not_in_equations) {
         text(a.name + " does not appear in the chosen equations.");
+      } else if (a.general) {
+        text(a.name + " is determined only together with the free unknowns:");
+        equation("", a.symbol, *a.general);
       } else {
-        text(a.name + " is not determined by the equations" +
-             std::string(a.status == Answer::Status::free ? " (free)." : " (only in combination)."));
+        text(a.name + " is not determined by the equations (free).");
       }
     }
     for (const auto& c : d.combinations) {

@@ -34,6 +34,7 @@ struct Answer {
   enum class Status { determined, free, in_combination, not_in_equations } status = Status::determined;
   std::optional<GiNaC::ex> closed_form;
   std::optional<NumericValue> value;
+  std::optional<GiNaC::ex> general;  // free or in combination: in terms of the free unknowns
 };
 
 struct ConditionReport {

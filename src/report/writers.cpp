@@ -63,6 +63,8 @@ std::string answers_text(const Derivation& d) {
       out += a.name + " = " + to_text(*a.closed_form);
       if (a.value) out += "  = " + value_text(a.value);
       out += "\n";
+    } else if (a.general) {
+      out += a.name + " = " + to_text(*a.general) + "  (" + status_name(a.status) + ")\n";
     } else {
       out += a.name + ": " + status_name(a.status) + "\n";
     }
@@ -176,6 +178,7 @@ std::string json_document(const Derivation& d, bool full) {
       u["closed_form"] = to_text(*a.closed_form);
       u["latex"] = to_latex(*a.closed_form);
     }
+    if (a.general) u["general"] = to_text(*a.general);
     if (a.value) {
       u["value"] = a.value->approx;
       u["exact"] = to_text(a.value->exact);

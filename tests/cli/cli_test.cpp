@@ -149,3 +149,62 @@ TEST_CASE("CLI: -o writes the report to a file", "[cli]") {
   CHECK(tex.find("m_{\\mathrm{eff}} = \\frac{m}{4}") != std::string::npos);
   fs::remove(out);
 }
+
+TEST_CASE("CLI: sample 12.9 reports exactly the O_y + G_y combination and the other five values", "[cli]") {
+  const Run r = run_tackle("solve " + examples + "sample-12.9-indeterminate.yaml --format json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["status"] == "underdetermined");
+  CHECK(j["free"] == nlohmann::json::array({"G_y"}));
+  REQUIRE(j["combinations"].size() == 1);
+  CHECK(j["combinations"][0]["expression"] == "G_y + O_y");
+  CHECK(j["combinations"][0]["closed_form"] == "-a*b*m/(2*d)");
+  CHECK(j["combinations"][0]["value"] == Approx(-3.0));
+  CHECK(j["combinations"][0]["unit"] == "N");
+  std::map<std::string, double> values;
+  for (const auto& u : j["unknowns"]) values[u["name"]] = u["value"];
+  CHECK(values["O_x"] == Approx(0.0).margin(1e-12));
+  CHECK(values["O_z"] == Approx(97.0));
+  CHECK(values["G_x"] == Approx(6.0));
+  CHECK(values["G_z"] == Approx(102.0));
+  CHECK(values["T_HI"] == Approx(6.78233).epsilon(1e-5));
+}
+
+TEST_CASE("CLI: sample 12.8's JSON gives T = 6.78 N and its closed form", "[cli]") {
+  const Run r = run_tackle("solve " + examples + "sample-12.8-sign-board.yaml --format json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["unknowns"][0]["closed_form"] == "a*m*sqrt(b^2 + d^2 + e^2)/(2*d)");
+  CHECK(j["unknowns"][0]["value"] == Approx(6.78233).epsilon(1e-5));
+}
+
+TEST_CASE("CLI: JSON conditions carry the solved forms and whether they hold", "[cli][validity]") {
+  const Run r = run_tackle("solve " + examples + "sample-12.7-suitcase.yaml --format json");
+  REQUIRE(r.code == 0);
+  const auto c = nlohmann::json::parse(r.out)["conditions"][0];
+  CHECK(c["inequality"] == "N_A >= 0");
+  CHECK(c["simplified"] == "g*m*(l - 2*h*mu)/(2*l) >= 0");
+  CHECK(c["holds"] == true);
+  CHECK(c["solved"][1]["condition"] == "l >= 2*h*mu");
+  CHECK(c["meaning"] == "the contact pushes");
+}
+
+TEST_CASE("CLI: isolate finds axis OG for the sign-board's rod; usage and input errors", "[cli][isolate]") {
+  const Run r = run_tackle("isolate " + examples + "sample-12.8-sign-board.yaml T_HI");
+  CHECK(r.code == 0);
+  CHECK(r.out ==
+        "T_HI: AMB board about G (axis OG, along y) contains it alone.\n"
+        "    T_HI*d*(c - e)/sqrt(b^2 + d^2 + e^2) = a*m*(c - e)/2\n"
+        "    T_HI = a*m*sqrt(b^2 + d^2 + e^2)/(2*d)  = 6.78233 N\n");
+  CHECK(run_tackle("isolate " + examples + "sample-12.8-sign-board.yaml").code == 2);
+  CHECK(run_tackle("isolate " + examples + "sample-12.8-sign-board.yaml T_HI --all").code == 2);
+  const Run bad = run_tackle("isolate " + examples + "sample-12.8-sign-board.yaml T");
+  CHECK(bad.code == 1);
+  CHECK(bad.err == examples + "sample-12.8-sign-board.yaml: 'T' is not an unknown of this problem (unknowns: O_x, O_y, "
+                              "O_z, G_x, G_y, G_z, T_HI)\n");
+  const auto j = nlohmann::json::parse(run_tackle("isolate " + examples + "sample-12.9-indeterminate.yaml --all --format json").out);
+  REQUIRE(j["isolations"].size() == 7);
+  CHECK(j["isolations"][1]["unknown"] == "O_y");
+  CHECK(j["isolations"][1]["found"] == false);
+  CHECK(j["isolations"][1]["impossible"] == true);
+}

@@ -17,6 +17,9 @@ inline std::unique_ptr<const Analysis> run_text(const std::string& yaml, const s
   return tackle::analyze_text(yaml, file, rules());
 }
 
+/// An example's text, to vary it in a test.
+inline std::string read_example(const std::string& name) { return read_text_file(TACKLE_SOURCE_DIR "/examples/" + name); }
+
 /// Every diagnostic the text produces, formatted; empty when it is accepted.
 inline std::vector<std::string> errors_of(const std::string& yaml) {
   try {

@@ -135,3 +135,54 @@ TEST_CASE("Description: a missing title and missing bodies", "[errors]") {
   CHECK(errors_of("- just\n- a list\n") ==
         Messages{"t.yaml:1:1: the description is a list (expected a mapping with title, bodies, ...)"});
 }
+
+namespace {
+// A correct 2-D problem (a block on a cart held by a pin and a rod); cases break one thing.
+const std::string plate = R"(title: ok
+axes: [x, y]
+parameters:
+  m: {value: 10, unit: kg}
+  g: {value: 9.81, unit: m/s^2}
+gravity: [0, -g]
+points:
+  B: [0, 0]
+  D: [2, 2]
+  E: [3, 0]
+bodies:
+  plate: {mass: m, center_of_mass: [1, 1], acceleration: [3, 0]}
+connections:
+  - {type: pin, body: plate, at: B}
+  - {type: rod, body: plate, from: D, to: E}
+)";
+}  // namespace
+
+TEST_CASE("Description: the unbroken 2-D problem is accepted", "[errors]") { CHECK(errors_of(plate).empty()); }
+
+TEST_CASE("Description: a support at an unknown point, and a rule used in the wrong dimension", "[errors]") {
+  CHECK(errors_of(with(plate, "to: E}", "to: Q}")) == Messages{"t.yaml:15:43: unknown point 'Q' (known: plate, B, D, E)"});
+  CHECK(errors_of(with(plate, "type: pin", "type: ball_and_socket")) ==
+        Messages{"t.yaml:14:12: a 'ball_and_socket' connection is for 3-D problems (this one has 2 axes)"});
+  CHECK(errors_of(with(plate, "bodie", "bodie") + "strings: [{name: s, path: [B, D]}]\n") ==
+        Messages{"t.yaml:16:11: a 'string' connection 's' is for 1-D problems (this one has 2 axes)"});
+}
+
+TEST_CASE("Description: a vector with the wrong number of entries", "[errors]") {
+  CHECK(errors_of(with(plate, "D: [2, 2]", "D: [2, 2, 0]")) ==
+        Messages{"t.yaml:9:6: position of point 'D' has 3 entries (expected 2, one per axis: x, y)"});
+}
+
+TEST_CASE("Description: a force in 2-D needs its point of application", "[errors]") {
+  CHECK(errors_of(plate + "loads: [{on: plate, force: [1, 0]}]\n") ==
+        Messages{"t.yaml:16:9: a 'force' connection needs a point of application in a 2-D problem (give 'at')"});
+  CHECK(errors_of(plate + "loads: [{on: plate, force: 5, at: D}]\n") ==
+        Messages{"t.yaml:16:28: 'force' of a 'force' connection has 1 entry (expected 2, one per axis: x, y)"});
+}
+
+TEST_CASE("Description: a 2-D body needs its center of mass; AMB needs 2-D or 3-D", "[errors]") {
+  CHECK(errors_of(with(plate, "center_of_mass: [1, 1], ", "")) ==
+        Messages{"t.yaml:12:10: body 'plate' has no 'center_of_mass' (needed for its weight and its angular momentum balance)"});
+  CHECK(errors_of(good + "derive: [{amb: A, about: C}]\n") ==
+        Messages{"t.yaml:15:11: angular momentum balance needs a 2-D or 3-D problem (this one has one axis)"});
+  CHECK(errors_of(plate + "derive: [{amb: plate, about: Z}]\n") ==
+        Messages{"t.yaml:16:30: unknown point 'Z' (known: plate, B, D, E)"});
+}

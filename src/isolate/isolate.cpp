@@ -1,0 +1,230 @@
+#include "isolate/isolate.hpp"
+
+#include <algorithm>
+
+#include "expr/print.hpp"
+#include "solve/solve.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+
+namespace {
+
+Vec axis_vec(int i) {
+  Vec v = zero_vec();
+  v[i] = 1;
+  return v;
+}
+
+}  // namespace
+
+std::vector<ex> model_unknowns(const Model& m) {
+  std::vector<ex> out;
+  for (const auto& u : m.candidates)
+    if (std::find(m.given.begin(), m.given.end(), u) == m.given.end()) out.push_back(u);
+  return out;
+}
+
+std::vector<Equation> candidate_equations(const Model& m) {
+  std::vector<Equation> out;
+  std::vector<int> bodies;
+  for (std::size_t i = 0; i < m.bodies.size(); ++i)
+    if (m.bodies[i].has_mass) bodies.push_back(static_cast<int>(i));
+  // Points that are not bodies' own (the places forces act), then the bodies' centers of mass.
+  std::vector<const Point*> points;
+  for (const auto& p : m.points)
+    if (std::none_of(m.bodies.begin(), m.bodies.end(), [&](const Body& b) { return b.name == p.name; }))
+      points.push_back(&p);
+  for (const auto& p : m.points)
+    if (std::any_of(m.bodies.begin(), m.bodies.end(), [&](const Body& b) { return b.name == p.name && b.has_cm; }))
+      points.push_back(&p);
+  for (int b : bodies) {
+    for (int i = 0; i < m.dims(); ++i) out.push_back(lmb_along(m, {b}, false, axis_vec(i), m.axes[i]));
+    if (m.dims() == 1) continue;
+    for (const Point* p : points)
+      for (const Point* q : points) {
+        if (p >= q) continue;
+        const Vec along = q->position - p->position;
+        if (is_zero_vec(along)) continue;
+        out.push_back(lmb_along(m, {b}, false, unit(along), "along " + p->name + q->name));
+        if (m.dims() == 2)
+          out.push_back(lmb_along(m, {b}, false, unit(Vec{-along[1], along[0], 0}), "across " + p->name + q->name));
+      }
+    for (const Point* c : points) {
+      if (m.dims() == 2) {
+        out.push_back(amb_along(m, {b}, false, c->position, c->name, axis_vec(2), "z"));
+        continue;
+      }
+      for (int i = 0; i < 3; ++i) {
+        // A coordinate axis through C that also passes through a point Q is the line QC.
+        std::string label = m.axes[i];
+        for (const Point* q : points)
+          if (q != c && !is_zero_vec(q->position - c->position) && is_zero_vec(cross(q->position - c->position, axis_vec(i)))) {
+            label = "axis " + q->name + c->name + ", along " + m.axes[i];
+            break;
+          }
+        out.push_back(amb_along(m, {b}, false, c->position, c->name, axis_vec(i), label));
+      }
+      for (const Point* q : points) {
+        if (q == c) continue;
+        const Vec along = c->position - q->position;
+        if (is_zero_vec(along)) continue;
+        out.push_back(amb_along(m, {b}, false, c->position, c->name, unit(along), "axis " + q->name + c->name));
+      }
+    }
+  }
+  if (m.dims() == 1) {
+    const EquationSystem all = build_equations(m);
+    for (const auto& eq : all.equations)
+      if (eq.kind == Equation::Kind::constraint_acceleration) out.push_back(eq);
+  }
+  return out;
+}
+
+namespace {
+
+// Basis of the null space of `rows` (each of length k): the vectors y with row . y = 0 for
+// every row. Gauss-Jordan over rational functions, pivots decided by normal().
+std::vector<std::vector<ex>> null_space(std::vector<std::vector<ex>> rows, std::size_t k) {
+  std::vector<int> pivot_of_col(k, -1);
+  std::size_t r = 0;
+  for (std::size_t j = 0; j < k && r < rows.size(); ++j) {
+    std::size_t p = r;
+    while (p < rows.size() && normal(rows[p][j]).is_zero()) ++p;
+    if (p == rows.size()) continue;
+    std::swap(rows[r], rows[p]);
+    const ex pv = rows[r][j];
+    for (auto& x : rows[r]) x = normal(x / pv);
+    for (std::size_t q = 0; q < rows.size(); ++q) {
+      if (q == r || normal(rows[q][j]).is_zero()) continue;
+      const ex f = rows[q][j];
+      for (std::size_t c = 0; c < k; ++c) rows[q][c] = normal(rows[q][c] - f * rows[r][c]);
+    }
+    pivot_of_col[j] = static_cast<int>(r);
+    ++r;
+  }
+  std::vector<std::vector<ex>> basis;
+  for (std::size_t f = 0; f < k; ++f) {
+    if (pivot_of_col[f] >= 0) continue;
+    std::vector<ex> y(k, 0);
+    y[f] = 1;
+    for (std::size_t j = 0; j < k; ++j)
+      if (pivot_of_col[j] >= 0) y[j] = normal(-rows[pivot_of_col[j]][f]);
+    basis.push_back(y);
+  }
+  return basis;
+}
+
+std::string vec_text(const Vec& v, int dims) {
+  std::vector<std::string> parts;
+  for (int i = 0; i < dims; ++i) parts.push_back(to_text(simplest(v[i])));
+  return "[" + join(parts) + "]";
+}
+
+// Clears denominators and common factors of a direction (its length does not matter).
+Vec tidy(const Vec& v) {
+  ex l = 1;
+  for (const auto& x : v) l = lcm(l, normal(x).denom());
+  Vec w = {normal(v[0] * l), normal(v[1] * l), normal(v[2] * l)};
+  ex g = 0;
+  for (const auto& x : w) g = x.is_zero() ? g : (g.is_zero() ? x : gcd(g, x));
+  if (!g.is_zero()) w = {normal(w[0] / g), normal(w[1] / g), normal(w[2] / g)};
+  return w;
+}
+
+// The exact test for one body; fills `r` when a combination is found.
+bool isolate_in_body(const Model& m, int b, const std::vector<ex>& unknowns, const ex& unknown, Isolation& r) {
+  const int dims = m.dims();
+  // Balance components: LMB (dims of them), AMB about the origin (z in 2-D; x, y, z in 3-D).
+  Vec force_residual = zero_vec(), moment_residual = zero_vec();
+  for (const auto& l : m.loads) {
+    if (l.body != b) continue;
+    force_residual = force_residual + l.force;
+    moment_residual = moment_residual + l.couple;
+    if (l.at) moment_residual = moment_residual + cross(*l.at, l.force);
+  }
+  const Body& body = m.bodies[b];
+  force_residual = force_residual - body.mass * body.acceleration;
+  moment_residual = moment_residual - cross(body.cm, body.mass * body.acceleration);
+  std::vector<ex> components;
+  for (int i = 0; i < dims; ++i) components.push_back(force_residual[i].expand());
+  const int first_moment = dims == 2 ? 2 : 0;
+  for (int i = first_moment; i < 3; ++i) components.push_back(moment_residual[i].expand());
+  const std::size_t k = components.size();
+  auto column = [&](const ex& u) {
+    std::vector<ex> c;
+    for (const auto& comp : components) c.push_back(comp.diff(ex_to<symbol>(u)));
+    return c;
+  };
+  const std::vector<ex> target = column(unknown);
+  if (std::all_of(target.begin(), target.end(), [](const ex& x) { return normal(x).is_zero(); })) return false;
+  std::vector<std::vector<ex>> others;
+  for (const auto& u : unknowns)
+    if (!u.is_equal(unknown)) others.push_back(column(u));
+  for (const auto& y : null_space(others, k)) {
+    ex dot = 0;
+    for (std::size_t i = 0; i < k; ++i) dot += y[i] * target[i];
+    if (normal(dot).is_zero()) continue;
+    // y = (lambda, mu): lambda . LMB + mu . AMB_origin.
+    Vec lambda = zero_vec(), mu = zero_vec();
+    for (int i = 0; i < dims; ++i) lambda[i] = y[i];
+    for (int i = first_moment; i < 3; ++i) mu[i] = y[dims + i - first_moment];
+    Equation eq;
+    if (is_zero_vec(mu)) {
+      const Vec dir = tidy(lambda);
+      eq = lmb_along(m, {b}, false, dir, "along " + vec_text(dir, dims));
+    } else if (normal(inner(lambda, mu)).is_zero()) {
+      // lambda . F + mu . M_O = mu . M_C with C x mu = lambda: C = (mu x lambda)/|mu|^2.
+      const Vec c = (1 / inner(mu, mu)) * cross(mu, lambda);
+      const Vec point = {simplest(c[0]), simplest(c[1]), simplest(c[2])};
+      const Vec axis = tidy(mu);
+      std::string point_label = "the point " + vec_text(point, dims);
+      for (const auto& p : m.points)
+        if (is_zero_vec(p.position - point)) {
+          point_label = p.name;
+          break;
+        }
+      eq = amb_along(m, {b}, false, point, point_label, axis, dims == 2 ? "z" : "along " + vec_text(axis, 3));
+    } else {
+      continue;  // a screw combination, not one LMB or AMB: try another null-space vector
+    }
+    const ex residual = normal(eq.lhs - eq.rhs);
+    const ex expanded = residual.numer().expand();
+    if (expanded.degree(unknown) != 1) continue;
+    r.equation = eq;
+    r.value = simplest(-expanded.coeff(unknown, 0) / expanded.coeff(unknown, 1));
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+Isolation isolate(const Model& m, const std::vector<Equation>& candidates, const ex& unknown) {
+  Isolation r;
+  r.unknown = unknown;
+  const std::vector<ex> unknowns = model_unknowns(m);
+  for (const auto& eq : candidates) {
+    ++r.tried;
+    const ex residual = normal(eq.lhs - eq.rhs);
+    if (!residual.has(unknown)) continue;
+    const bool alone = std::none_of(unknowns.begin(), unknowns.end(), [&](const ex& u) {
+      return !u.is_equal(unknown) && residual.has(u);
+    });
+    if (!alone) continue;
+    const ex expanded = residual.numer().expand();
+    if (expanded.degree(unknown) != 1) continue;  // not linear in it: keep looking
+    const ex a = expanded.coeff(unknown, 1), b = expanded.coeff(unknown, 0);
+    r.equation = eq;
+    r.value = simplest(-b / a);
+    return r;
+  }
+  if (m.dims() == 1) return r;
+  for (std::size_t b = 0; b < m.bodies.size(); ++b)
+    if (m.bodies[b].has_mass && isolate_in_body(m, static_cast<int>(b), unknowns, unknown, r)) return r;
+  r.impossible = true;
+  return r;
+}
+
+}  // namespace tackle
