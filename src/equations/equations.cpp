@@ -131,7 +131,10 @@ EquationSystem build_equations(const Model& m) {
       const Body& b = m.bodies[i];
       if (!b.has_mass) continue;
       add_lmb({static_cast<int>(i)}, false);
-      if (m.dims() > 1 && b.has_cm) add_amb({static_cast<int>(i)}, false, b.cm, "its center of mass", std::nullopt, "");
+      // A massless body has no center of mass to speak of: take moments about the origin.
+      if (m.dims() > 1)
+        add_amb({static_cast<int>(i)}, false, b.has_cm ? b.cm : zero_vec(), b.has_cm ? "its center of mass" : "the origin",
+                std::nullopt, "");
     }
     for (const auto& c : m.constraints) add_constraint(c);
   } else {

@@ -31,17 +31,27 @@ std::string render(const ex& e, const print_context& like, unsigned level = 0) {
   return os.str();
 }
 
-// Sort key: the text form of an expression with its numeric coefficient removed.
+// A product as printed: its sign, numeric coefficient, and the factors above and below the
+// line, each sum factor oriented canonically. GiNaC itself picks the sign of a sum inside a
+// product by hash order (which varies between runs), so the printer keeps the sign here and
+// never multiplies the pieces back together.
+struct Fraction {
+  bool negative = false;
+  numeric num_c = 1, den_c = 1;
+  std::vector<ex> num, den;
+};
+Fraction split(const ex& e);
+std::string fraction_text(const Fraction& f, const print_context& like, unsigned level);
+
+// Sort key: the text form of an expression without its sign and numeric coefficient.
 std::string key_of(const ex& e) {
   if (is_a<numeric>(e)) return "~";  // numbers after names in sums
-  if (is_a<mul>(e)) {
-    ex rest = 1;
-    for (const auto& f : e)
-      if (!is_a<numeric>(f)) rest *= f;
-    std::ostringstream os;
-    tackle_text t(os);
-    rest.print(t);
-    return os.str();
+  if (is_a<mul>(e) || is_a<power>(e)) {
+    Fraction f = split(e);
+    f.negative = false;
+    f.num_c = 1;
+    f.den_c = 1;
+    return fraction_text(f, tackle_text(std::cout), 0);
   }
   std::ostringstream os;
   tackle_text t(os);
@@ -63,6 +73,23 @@ numeric coefficient(const ex& e) {
 bool is_negative_term(const ex& e) {
   const numeric c = coefficient(e);
   return c.is_real() && c.is_negative();
+}
+
+// A sum and its negation print differently; which one GiNaC's normal() returns can vary from
+// run to run. Orient every sum factor of a term canonically: more positive than negative
+// terms, and on a tie the first term (sorted by name) positive. Returns the oriented term.
+int balance_of(const ex& sum) {
+  int b = 0;
+  for (std::size_t i = 0; i < sum.nops(); ++i) b += is_negative_term(sum.op(i)) ? -1 : 1;
+  return b;
+}
+
+bool flip_sum(const ex& sum) {
+  const int b = balance_of(sum);
+  if (b != 0) return b < 0;
+  std::vector<ex> terms(sum.begin(), sum.end());
+  const auto first = std::min_element(terms.begin(), terms.end(), [](const ex& a, const ex& c) { return key_of(a) < key_of(c); });
+  return is_negative_term(*first);
 }
 
 void print_number(const numeric& n, const print_context& c, unsigned level) {
@@ -94,13 +121,19 @@ void print_numeric_fn(const numeric& n, const print_context& c, unsigned level) 
 
 void print_add(const add& s, const print_context& c, unsigned level) {
   const bool latex = latex_ctx(c);
-  std::vector<ex> pos, neg;
-  for (std::size_t i = 0; i < s.nops(); ++i) (is_negative_term(s.op(i)) ? neg : pos).push_back(s.op(i));
-  auto by_key = [](const ex& a, const ex& b) {
-    const std::string ka = key_of(a), kb = key_of(b);
-    if (ka != kb) return ka < kb;
-    return render(a, tackle_text(std::cout)) < render(b, tackle_text(std::cout));
+  struct Term {
+    Fraction f;
+    std::string key, text;
   };
+  std::vector<Term> pos, neg;
+  for (std::size_t i = 0; i < s.nops(); ++i) {
+    Term t{split(s.op(i)), key_of(s.op(i)), {}};
+    const bool negative = t.f.negative;
+    t.f.negative = false;
+    t.text = fraction_text(t.f, c, add_prec);
+    (negative ? neg : pos).push_back(std::move(t));
+  }
+  auto by_key = [](const Term& a, const Term& b) { return a.key != b.key ? a.key < b.key : a.text < b.text; };
   std::sort(pos.begin(), pos.end(), by_key);
   std::sort(neg.begin(), neg.end(), by_key);
   std::ostream& os = c.s;
@@ -109,24 +142,17 @@ void print_add(const add& s, const print_context& c, unsigned level) {
   bool first = true;
   for (const auto& t : pos) {
     if (!first) os << " + ";
-    os << render(t, c, add_prec);
+    os << t.text;
     first = false;
   }
   for (const auto& t : neg) {
-    os << (first ? "-" : " - ");
-    os << render(-t, c, add_prec);
+    os << (first ? "-" : " - ") << t.text;
     first = false;
   }
   if (paren) os << (latex ? "\\right)" : ")");
 }
 
-// Splits a product into |coefficient|, numerator factors and denominator factors.
-struct Fraction {
-  bool negative = false;
-  numeric num_c = 1, den_c = 1;
-  std::vector<ex> num, den;
-};
-
+// Splits a product into sign, |coefficient|, numerator factors and denominator factors.
 Fraction split(const ex& e) {
   Fraction f;
   auto factor = [&](const ex& x) {
@@ -159,7 +185,7 @@ Fraction split(const ex& e) {
   };
   for (auto* side : {&f.num, &f.den})
     for (auto& x : *side)
-      if (is_a<add>(x) && balance(x) < 0) {
+      if (is_a<add>(x) && flip_sum(x)) {
         x = (-x).expand();
         f.negative = !f.negative;
       }
@@ -235,6 +261,18 @@ void print_fraction(const Fraction& f, const print_context& c, unsigned level) {
     if (n_den > 1) os << ")";
   }
   if (paren) os << (latex ? "\\right)" : ")");
+}
+
+std::string fraction_text(const Fraction& f, const print_context& like, unsigned level) {
+  std::ostringstream os;
+  if (latex_ctx(like)) {
+    tackle_latex c(os);
+    print_fraction(f, c, level);
+  } else {
+    tackle_text c(os);
+    print_fraction(f, c, level);
+  }
+  return os.str();
 }
 
 void print_mul(const mul& m, const print_context& c, unsigned level) { print_fraction(split(ex(m)), c, level); }

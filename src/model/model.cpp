@@ -423,7 +423,7 @@ struct Builder {
       const ArgDesc* a = c.arg(spec.key);
       if (!a) continue;
       const bool list = spec.kind == ArgKind::points;
-      if (spec.kind != ArgKind::vector && list != a->is_list) {
+      if (spec.kind != ArgKind::vector && spec.kind != ArgKind::moment && list != a->is_list) {
         diags.error(a->key.at, "'" + spec.key + "' of a " + what + (list ? " is a single name (expected a list of points)"
                                                                          : " is a list (expected a single value)"));
         ok = false;
@@ -487,6 +487,27 @@ struct Builder {
             scope.bind(spec.key, make_vector((*v)[0], (*v)[1], (*v)[2]));
           else
             ok = false;
+          break;
+        }
+        case ArgKind::moment: {
+          // 2-D: one number, about z; 3-D: a vector.
+          const Location at = a->items.empty() ? a->key.at : a->items[0].at;
+          if (m.dims() == 2) {
+            if (a->items.size() != 1) {
+              diags.error(at, "'" + spec.key + "' of a " + what + " has " + std::to_string(a->items.size()) +
+                                  " entries (expected one number, the moment about z)");
+              ok = false;
+            } else if (auto e = parse(a->items[0], *table, "'" + spec.key + "' of a " + what)) {
+              if (spec.dimension && !is_a<numeric>(*e)) check_dimension(*e, *spec.dimension, at, "'" + spec.key + "' of a " + what);
+              scope.bind(spec.key, make_vector(0, 0, *e));
+            } else {
+              ok = false;
+            }
+          } else if (auto v = vector(VectorDesc{a->items, at}, *table, "'" + spec.key + "' of a " + what, spec.dimension)) {
+            scope.bind(spec.key, make_vector((*v)[0], (*v)[1], (*v)[2]));
+          } else {
+            ok = false;
+          }
           break;
         }
         case ArgKind::name:

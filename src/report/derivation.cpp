@@ -88,8 +88,9 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
   }
 
   section("Solving");
-  text(std::to_string(s.equations.size()) + " equations in " + std::to_string(s.unknowns.size()) + " unknowns (" +
-       joined(s.unknowns) + "); rank " + std::to_string(sol.rank) + ".");
+  auto count = [](std::size_t n, const std::string& word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); };
+  text(count(s.equations.size(), "equation") + " in " + count(s.unknowns.size(), "unknown") + " (" + joined(s.unknowns) +
+       "); rank " + std::to_string(sol.rank) + ".");
   for (const auto& group : sol.redundant)
     text("Redundant: " + join(group, ", ") + " are linearly dependent (one follows from the others).");
   switch (sol.status) {

@@ -71,9 +71,10 @@ struct RuleReader {
   std::optional<ArgKind> kind_of(const Text& t) {
     static const std::map<std::string, ArgKind> kinds = {{"body", ArgKind::body},   {"point", ArgKind::point},
                                                          {"points", ArgKind::points}, {"expr", ArgKind::expr},
-                                                         {"name", ArgKind::name},   {"vector", ArgKind::vector}};
+                                                         {"name", ArgKind::name},   {"vector", ArgKind::vector},
+                                                         {"moment", ArgKind::moment}};
     if (auto it = kinds.find(t.text); it != kinds.end()) return it->second;
-    diags.error(t.at, "unknown argument kind '" + t.text + "' (expected one of: body, point, points, expr, name, vector)");
+    diags.error(t.at, "unknown argument kind '" + t.text + "' (expected one of: body, point, points, expr, name, vector, moment)");
     return std::nullopt;
   }
 
@@ -145,7 +146,7 @@ struct RuleReader {
       diags.error(at, what + " names argument '" + key + "', which the rule does not declare");
       return;
     }
-    static const char* names[] = {"body", "point", "points", "expr", "name", "vector"};
+    static const char* names[] = {"body", "point", "points", "expr", "name", "vector", "moment"};
     if (a->kind_known && a->kind != expected && !(expected == ArgKind::body && a->kind == ArgKind::point))
       diags.error(at, what + " uses argument '" + key + "' as " + names[static_cast<int>(expected)] +
                           " but the rule declares it as " + names[static_cast<int>(a->kind)]);
@@ -186,7 +187,8 @@ struct RuleReader {
     // as position vectors) and its unknowns.
     std::vector<std::string> locals;
     for (const auto& a : r.args)
-      if (a.kind == ArgKind::expr || a.kind == ArgKind::vector || a.kind == ArgKind::point) locals.push_back(a.key);
+      if (a.kind == ArgKind::expr || a.kind == ArgKind::vector || a.kind == ArgKind::moment || a.kind == ArgKind::point)
+        locals.push_back(a.key);
     if (auto n = root["unknowns"]) {
       for (const auto& u : n) {
         if (!check_map(u, {"local", "name", "rename", "dimension"}, "an unknown of the rule", file, diags)) continue;
@@ -208,7 +210,7 @@ struct RuleReader {
     }
     std::set<std::string> vectors;
     for (const auto& a : r.args)
-      if (a.kind == ArgKind::vector || a.kind == ArgKind::point) vectors.insert(a.key);
+      if (a.kind == ArgKind::vector || a.kind == ArgKind::moment || a.kind == ArgKind::point) vectors.insert(a.key);
     LocalNames names(locals, vectors);
     auto check_expr = [&](const std::string& text, const Location& at) {
       auto res = parse_expression(text, names);

@@ -15,7 +15,7 @@
 
 namespace tackle {
 
-enum class ArgKind { body, point, points, expr, name, vector };
+enum class ArgKind { body, point, points, expr, name, vector, moment };  // moment: a number in 2-D (about z), a vector in 3-D
 
 struct ArgSpec {
   std::string key;

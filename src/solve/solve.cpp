@@ -16,10 +16,31 @@ std::optional<ex> Solution::value_of(const ex& unknown) const {
   return std::nullopt;
 }
 
+namespace {
+
+// GiNaC's factor() can leave a sum partly factored (d*g - a*(e - c)), and which part it
+// factors can vary between runs; keep only the factorization into whole factors, each
+// expanded, so that the result is canonical.
+ex factored(const ex& polynomial) {
+  const ex f = factor(polynomial);
+  if (is_a<mul>(f)) {
+    ex out = 1;
+    for (std::size_t i = 0; i < f.nops(); ++i) {
+      const ex x = f.op(i);
+      out *= is_a<power>(x) ? pow(x.op(0).expand(), x.op(1)) : x.expand();
+    }
+    return out;
+  }
+  if (is_a<power>(f)) return pow(f.op(0).expand(), f.op(1));
+  return f.expand();
+}
+
+}  // namespace
+
 ex simplest(const ex& e) {
   const ex n = normal(e);
   const ex nd = n.numer_denom();
-  const ex f = factor(nd.op(0)) / factor(nd.op(1));
+  const ex f = factored(nd.op(0)) / factored(nd.op(1));
   return to_text(f).size() < to_text(n).size() ? f : n;
 }
 

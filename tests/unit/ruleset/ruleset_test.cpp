@@ -35,7 +35,7 @@ TEST_CASE("Rules: a rule file with errors is reported like a description, all at
     for (const auto& d : e.diagnostics()) got.push_back(format(d));
     CHECK(got == std::vector<std::string>{
                      "rules/spring.yaml:2:1: unknown key 'summry' in the rule (did you mean 'summary'?)",
-                     "rules/spring.yaml:3:13: unknown argument kind 'bdy' (expected one of: body, point, points, expr, name, vector)",
+                     "rules/spring.yaml:3:13: unknown argument kind 'bdy' (expected one of: body, point, points, expr, name, vector, moment)",
                      "rules/spring.yaml:5:5: in '-k*': unknown name 'k' (known: on)",
                  });
   }
