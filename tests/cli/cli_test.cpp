@@ -90,7 +90,7 @@ TEST_CASE("CLI: output is identical from run to run", "[cli]") {
   for (const auto& e : fs::directory_iterator(examples)) {
     if (e.path().extension() != ".yaml") continue;
     SECTION(e.path().stem().string()) {
-      for (const std::string args : {"derive " + e.path().string() + " --format latex",
+      for (const std::string& args : {"derive " + e.path().string() + " --format latex",
                                      "derive " + e.path().string() + " --format json"}) {
         const std::string first = run_tackle(args).out;
         for (int i = 0; i < 3; ++i) CHECK(run_tackle(args).out == first);
