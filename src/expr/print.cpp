@@ -19,16 +19,22 @@ constexpr unsigned add_prec = 40, mul_prec = 50, pow_prec = 60;
 
 bool latex_ctx(const print_context& c) { return dynamic_cast<const print_latex*>(&c) != nullptr; }
 
-std::string render(const ex& e, const print_context& like, unsigned level = 0) {
+// Prints with a fresh context of the same kind (text or LaTeX) as `like`, into a string.
+template <class Body>
+std::string in_context(const print_context& like, Body body) {
   std::ostringstream os;
   if (latex_ctx(like)) {
     tackle_latex c(os);
-    e.print(c, level);
+    body(c);
   } else {
     tackle_text c(os);
-    e.print(c, level);
+    body(c);
   }
   return os.str();
+}
+
+std::string render(const ex& e, const print_context& like, unsigned level = 0) {
+  return in_context(like, [&](const print_context& c) { e.print(c, level); });
 }
 
 // A product as printed: its sign, numeric coefficient, and the factors above and below the
@@ -264,15 +270,7 @@ void print_fraction(const Fraction& f, const print_context& c, unsigned level) {
 }
 
 std::string fraction_text(const Fraction& f, const print_context& like, unsigned level) {
-  std::ostringstream os;
-  if (latex_ctx(like)) {
-    tackle_latex c(os);
-    print_fraction(f, c, level);
-  } else {
-    tackle_text c(os);
-    print_fraction(f, c, level);
-  }
-  return os.str();
+  return in_context(like, [&](const print_context& c) { print_fraction(f, c, level); });
 }
 
 void print_mul(const mul& m, const print_context& c, unsigned level) { print_fraction(split(ex(m)), c, level); }

@@ -361,9 +361,23 @@ struct Builder {
     return tmpl;
   }
 
+  // One connection being instantiated from its rule: its arguments resolved, its local
+  // names bound, its label. The stages below fill the model from it.
+  struct Instance {
+    const ConnectionDesc& c;
+    const Rule& rule;
+    std::string what;   // "'string' connection 's'" for messages
+    std::string label;  // "string s", "pulley at C", "force on A" for reports
+    Scope scope;
+    std::map<std::string, int> point_args;              // point / body arguments: the point
+    std::map<std::string, int> body_args;               // body arguments: the body
+    std::map<std::string, std::vector<int>> path_args;  // points arguments
+    std::map<std::string, std::pair<ex, Location>> expr_args;
+  };
+
   void connection(const ConnectionDesc& c, std::set<std::string>& connection_names) {
-    const Rule* rule = rules.find(c.type.text);
-    if (!rule) {
+    const Rule* found = rules.find(c.type.text);
+    if (!found) {
       std::string msg = "unknown connection type '" + c.type.text + "'";
       if (auto near = nearest(c.type.text, rules.names()); !near.empty())
         msg += " (did you mean '" + near + "'?)";
@@ -372,11 +386,23 @@ struct Builder {
       diags.error(c.type.at, msg);
       return;
     }
-    const std::string what = "'" + rule->type + "' connection" + (c.name ? " '" + c.name->text + "'" : "");
-    if (c.name) {
-      if (!connection_names.insert(c.name->text).second)
-        diags.error(c.name->at, "duplicate connection name '" + c.name->text + "'");
-    }
+    Instance in{c, *found, "'" + found->type + "' connection" + (c.name ? " '" + c.name->text + "'" : ""), {}, Scope(*table),
+                {}, {}, {}, {}};
+    if (c.name && !connection_names.insert(c.name->text).second)
+      diags.error(c.name->at, "duplicate connection name '" + c.name->text + "'");
+    if (!arguments_fit(in) || !bind_arguments(in)) return;
+    in.label = label_of(in);
+    if (!make_unknowns(in)) return;
+    add_loads(in);
+    add_constraints(in);
+    add_conditions(in);
+  }
+
+  // The connection gives what its rule needs, and the rule is for this many axes.
+  bool arguments_fit(const Instance& in) {
+    const ConnectionDesc& c = in.c;
+    const Rule* rule = &in.rule;
+    const std::string& what = in.what;
     bool ok = true;
     // Arguments: known keys, required ones present, exactly one of each group.
     std::vector<std::string> arg_keys;
@@ -405,20 +431,30 @@ struct Builder {
         ok = false;
       }
     }
-    if (!ok) return;
+    if (!ok) return false;
 
     if (std::find(rule->dimensions.begin(), rule->dimensions.end(), m.dims()) == rule->dimensions.end()) {
       std::vector<std::string> dims;
       for (int n : rule->dimensions) dims.push_back(std::to_string(n) + "-D");
       diags.error(c.type.at, "a " + what + " is for " + join(dims, " and ") + " problems (this one has " +
                                  std::to_string(m.dims()) + (m.dims() == 1 ? " axis)" : " axes)"));
-      return;
+      return false;
     }
-    Scope scope(*table);
-    std::map<std::string, int> point_args;                 // point / body arguments: the point
-    std::map<std::string, int> body_args;                  // body arguments: the body
-    std::map<std::string, std::vector<int>> path_args;     // points arguments
-    std::map<std::string, std::pair<ex, Location>> expr_args;
+    return true;
+  }
+
+  // Resolves every argument: bodies and points by name (bound as position vectors in the
+  // rule's scope), paths, expressions, vectors and moments.
+  bool bind_arguments(Instance& in) {
+    const ConnectionDesc& c = in.c;
+    const Rule* rule = &in.rule;
+    const std::string& what = in.what;
+    Scope& scope = in.scope;
+    auto& point_args = in.point_args;
+    auto& body_args = in.body_args;
+    auto& path_args = in.path_args;
+    auto& expr_args = in.expr_args;
+    bool ok = true;
     for (const auto& spec : rule->args) {
       const ArgDesc* a = c.arg(spec.key);
       if (!a) continue;
@@ -518,8 +554,15 @@ struct Builder {
           break;
       }
     }
-    if (!ok) return;
 
+    for (const auto& [key, path] : path_args)
+      for (std::size_t i = 1; i + 1 < path.size(); ++i) interior_points.insert(path[i]);
+    return ok;
+  }
+
+  static std::string label_of(const Instance& in) {
+    const ConnectionDesc& c = in.c;
+    const Rule* rule = &in.rule;
     // "string s", or after the first point argument ("pulley at C", "rod from H"), else the
     // first body argument ("force on A").
     std::string label = rule->type;
@@ -535,8 +578,12 @@ struct Builder {
         }
       }
     }
-    // Unknowns.
-    for (const auto& u : rule->unknowns) {
+    return label;
+  }
+
+  bool make_unknowns(Instance& in) {
+    const ConnectionDesc& c = in.c;
+    for (const auto& u : in.rule.unknowns) {
       std::string name;
       Location at = c.at;
       if (u.rename_arg && c.arg(*u.rename_arg)) {
@@ -545,29 +592,43 @@ struct Builder {
       } else {
         bool named = true;
         name = substitute(u.name_template, c, named);
-        if (!named) return;
+        if (!named) return false;
       }
-      if (!claim(Text{name, at}, "unknown")) return;
+      if (!claim(Text{name, at}, "unknown")) return false;
       const SymbolInfo& s = table->add(name, std::nullopt, SymbolRole::unknown, u.dimension, false, at);
-      scope.bind(u.local, s.sym);
+      in.scope.bind(u.local, s.sym);
       m.candidates.push_back(s.sym);
     }
-    auto rule_expr = [&](const std::string& text, const Location& at) -> std::optional<ex> {
-      auto r = parse_expression(text, scope);
-      for (const auto& p : r.problems) diags.error(at, "rule '" + rule->type + "': in '" + text + "': " + p.message);
-      return r.value;
-    };
-    // A rule expression as a vector: a number is along the axis in 1-D (a force) or about z
-    // in 2-D (a couple).
-    auto as_vec = [&](const ex& e, bool couple, const Location& at) -> std::optional<Vec> {
-      if (is_vector(e)) return Vec{e.op(0), e.op(1), e.op(2)};
-      if (!couple && m.dims() == 1) return Vec{e, 0, 0};
-      if (couple && m.dims() == 2) return Vec{0, 0, e};
-      diags.error(at, "rule '" + rule->type + "': a " + std::string(couple ? "couple" : "force") + " in a " +
-                          std::to_string(m.dims()) + "-D problem must be a vector");
-      return std::nullopt;
-    };
-    // Loads.
+    return true;
+  }
+
+  // A rule expression in the instance's scope; problems are the rule's.
+  std::optional<ex> rule_expr(Instance& in, const std::string& text, const Location& at) {
+    auto r = parse_expression(text, in.scope);
+    for (const auto& p : r.problems) diags.error(at, "rule '" + in.rule.type + "': in '" + text + "': " + p.message);
+    return r.value;
+  }
+
+  // A rule expression as a vector: a number is along the axis in 1-D (a force) or about z
+  // in 2-D (a couple).
+  std::optional<Vec> as_vec(const Instance& in, const ex& e, bool couple, const Location& at) {
+    if (is_vector(e)) return Vec{e.op(0), e.op(1), e.op(2)};
+    if (!couple && m.dims() == 1) return Vec{e, 0, 0};
+    if (couple && m.dims() == 2) return Vec{0, 0, e};
+    diags.error(at, "rule '" + in.rule.type + "': a " + std::string(couple ? "couple" : "force") + " in a " +
+                        std::to_string(m.dims()) + "-D problem must be a vector");
+    return std::nullopt;
+  }
+
+  void add_loads(Instance& in) {
+    const ConnectionDesc& c = in.c;
+    const Rule* rule = &in.rule;
+    const std::string& what = in.what;
+    const std::string& label = in.label;
+    auto& point_args = in.point_args;
+    auto& body_args = in.body_args;
+    auto& path_args = in.path_args;
+    auto& expr_args = in.expr_args;
     for (const auto& l : rule->loads) {
       if (l.kind == LoadSpec::Kind::on) {
         auto it = point_args.find(l.arg);
@@ -594,14 +655,14 @@ struct Builder {
         }
         bool good = true;
         if (!l.expr.empty()) {
-          auto f = rule_expr(l.expr, l.at);
-          auto v = f ? as_vec(*f, false, l.at) : std::nullopt;
+          auto f = rule_expr(in, l.expr, l.at);
+          auto v = f ? as_vec(in, *f, false, l.at) : std::nullopt;
           if (v) load.force = *v;
           else good = false;
         }
         if (!l.couple.empty()) {
-          auto f = rule_expr(l.couple, l.at);
-          auto v = f ? as_vec(*f, true, l.at) : std::nullopt;
+          auto f = rule_expr(in, l.couple, l.at);
+          auto v = f ? as_vec(in, *f, true, l.at) : std::nullopt;
           if (v) load.couple = *v;
           else good = false;
         }
@@ -615,7 +676,7 @@ struct Builder {
       } else if (l.kind == LoadSpec::Kind::along) {
         auto it = path_args.find(l.arg);
         if (it == path_args.end()) continue;
-        auto tension = rule_expr(l.expr, l.at);
+        auto tension = rule_expr(in, l.expr, l.at);
         if (!tension) continue;
         const auto& path = it->second;
         for (std::size_t i = 0; i + 1 < path.size(); ++i) {
@@ -639,7 +700,7 @@ struct Builder {
       } else {
         auto it = expr_args.find(l.arg);
         if (it == expr_args.end()) continue;
-        auto tension = rule_expr(l.expr, l.at);
+        auto tension = rule_expr(in, l.expr, l.at);
         if (!tension) continue;
         // Generalized force of a length sum L on coordinate q: -T dL/dq (virtual work).
         for (std::size_t bi = 0; bi < m.bodies.size(); ++bi) {
@@ -655,12 +716,17 @@ struct Builder {
         }
       }
     }
-    // Constraints.
+  }
+
+  void add_constraints(Instance& in) {
+    const ConnectionDesc& c = in.c;
+    const Rule* rule = &in.rule;
+    const std::string& label = in.label;
     const std::string cname = c.name ? c.name->text : "";
     for (const auto& k : rule->constraints) {
       if (k.kind == ConstraintSpec::Kind::length) {
-        auto it = path_args.find(k.arg);
-        if (it == path_args.end()) continue;
+        auto it = in.path_args.find(k.arg);
+        if (it == in.path_args.end()) continue;
         ex length = 0;
         bool complete = true;
         const auto& path = it->second;
@@ -677,26 +743,35 @@ struct Builder {
         }
         if (complete) m.constraints.push_back({label, cname, length, "length of " + label});
       } else if (k.kind == ConstraintSpec::Kind::length_sum) {
-        auto it = expr_args.find(k.arg);
-        if (it == expr_args.end()) continue;
+        auto it = in.expr_args.find(k.arg);
+        if (it == in.expr_args.end()) continue;
         m.constraints.push_back({label, cname, it->second.first, "length of " + label});
       } else {
-        auto it = point_args.find(k.arg);
-        if (it == point_args.end()) continue;
+        auto it = in.point_args.find(k.arg);
+        if (it == in.point_args.end()) continue;
         const Point& p = m.points[it->second];
         m.constraints.push_back({label, cname, p.position[0], "position of " + p.name});
       }
     }
+  }
+
+  // Validity conditions, assumptions, the model's list of connections, and checks that need
+  // every connection (run after all of them).
+  void add_conditions(Instance& in) {
+    const ConnectionDesc& c = in.c;
+    const Rule* rule = &in.rule;
+    const std::string& label = in.label;
     for (const auto& v : rule->validity) {
       if (!v.when.empty() && !c.arg(v.when)) continue;
-      auto r = parse_relation(v.holds, scope);
+      auto r = parse_relation(v.holds, in.scope);
       for (const auto& p : r.problems) diags.error(v.at, "rule '" + rule->type + "': " + p.message);
       if (r.value) m.conditions.push_back({r.value->lhs, r.value->rhs, r.value->op, v.meaning, v.otherwise, label});
     }
     for (const auto& a : rule->assumptions)
       if (std::find(m.assumptions.begin(), m.assumptions.end(), a) == m.assumptions.end()) m.assumptions.push_back(a);
     m.connections.push_back(label + ": " + rule->summary);
-    for (const auto& chk : rule->checks) pending_checks.push_back({&chk, point_args.count(chk.arg) ? point_args[chk.arg] : -1, c.at, what});
+    for (const auto& chk : rule->checks)
+      pending_checks.push_back({&chk, in.point_args.count(chk.arg) ? in.point_args[chk.arg] : -1, c.at, in.what});
   }
 
   struct PendingCheck {
@@ -710,12 +785,7 @@ struct Builder {
 
   void connections() {
     std::set<std::string> names;
-    for (const auto& c : d.connections) {
-      connection(c, names);
-      if (const ArgDesc* p = c.arg("path"); p && p->items.size() > 2)
-        for (std::size_t i = 1; i + 1 < p->items.size(); ++i)
-          if (auto it = point_index.find(p->items[i].text); it != point_index.end()) interior_points.insert(it->second);
-    }
+    for (const auto& c : d.connections) connection(c, names);
     for (const auto& pc : pending_checks)
       if (pc.check->kind == CheckSpec::Kind::passes_over && pc.point >= 0 && !interior_points.count(pc.point))
         diags.error(pc.at, "no string runs over point '" + m.points[pc.point].name + "' of a " + pc.what +
