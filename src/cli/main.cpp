@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/diagnostics.hpp"
+#include "check/batch.hpp"
 #include "expr/parse.hpp"
 #include "isolate/isolate.hpp"
 #include "pipeline/pipeline.hpp"
@@ -68,6 +69,29 @@ int main(int argc, char** argv) {
   isolate->add_option("--format", format, "Output format")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
   isolate->add_option("-o,--output", out, "Write to this file instead of standard output");
 
+  std::string unknown, answer, batch, results;
+  double tolerance = 0.01;
+  int sig_figs = 0;
+  bool require_simplified = false;
+  auto* check = app.add_subcommand("check", "Check a student's answer (or a batch of them) against the closed form");
+  check->add_option("file", file, "Problem description (YAML)")->required();
+  auto* unknown_opt = check->add_option("--unknown", unknown, "The unknown the answer is for, e.g. T_HI");
+  auto* answer_opt = check->add_option("--answer", answer, "The answer: an expression, 'T = ...', or a number with a unit");
+  auto* batch_opt = check->add_option("--batch", batch, "JSON Lines file of {\"id\", \"unknown\", \"answer\"} (- for standard input)");
+  check->add_option("--results", results, "With --batch: also write a grader results file (Gradescope / PrairieLearn shape)")
+      ->needs(batch_opt);
+  check->add_option("--tolerance", tolerance, "Relative tolerance for numbers with units")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  check->add_option("--sig-figs", sig_figs, "Instead of the tolerance: numbers must match to this many significant figures")
+      ->check(CLI::Range(1, 15));
+  check->add_flag("--require-simplified", require_simplified, "A correct answer that is not simplified is incorrect");
+  check->add_option("--format", format, "Output format (single answers)")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
+  check->add_option("-o,--output", out, "Write to this file instead of standard output");
+  answer_opt->needs(unknown_opt);
+  unknown_opt->needs(answer_opt);
+  batch_opt->excludes(answer_opt);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -75,6 +99,10 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
 
+  if (check->parsed() && answer_opt->count() == 0 && batch_opt->count() == 0) {
+    std::cerr << "tackle check: give --unknown and --answer, or --batch\n";
+    return 2;
+  }
   if (isolate->parsed() && target.empty() && !all) {
     std::cerr << "tackle isolate: give an unknown or --all\n";
     return 2;
@@ -102,6 +130,38 @@ int main(int argc, char** argv) {
       return emit(tackle::write_isolations(model, found, formats.at(format)), out);
     }
     const auto analysis = tackle::analyze_file(file, rules);
+    if (check->parsed()) {
+      tackle::CheckOptions options;
+      options.relative_tolerance = tolerance;
+      if (sig_figs > 0) options.significant_figures = sig_figs;
+      options.require_simplified = require_simplified;
+      const tackle::Checker checker(*analysis, options);
+      if (batch_opt->count() > 0) {
+        std::ifstream batch_file;
+        if (batch != "-") {
+          batch_file.open(batch, std::ios::binary);
+          if (!batch_file) {
+            std::cerr << batch << ": cannot read the file\n";
+            return 1;
+          }
+        }
+        std::ofstream out_file;
+        if (!out.empty() && out != "-") out_file.open(out, std::ios::binary);
+        std::ostream& sink = out_file.is_open() ? static_cast<std::ostream&>(out_file) : std::cout;
+        const auto summary = tackle::check_batch(checker, batch == "-" ? std::cin : batch_file, sink);
+        if (!results.empty()) {
+          std::ofstream r(results, std::ios::binary);
+          if (!r) {
+            std::cerr << results << ": cannot write the results file\n";
+            return 1;
+          }
+          r << summary.grader_json;
+        }
+        return 0;
+      }
+      const auto result = checker.check(unknown, answer);
+      return emit(format == "json" ? tackle::result_json(result, answer) : tackle::result_text(result), out);
+    }
     const tackle::Derivation d = tackle::explain(*analysis);
     return emit(tackle::write(d, formats.at(format), derive->parsed()), out);
   } catch (const tackle::InputError& e) {

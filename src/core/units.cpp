@@ -31,6 +31,18 @@ const std::map<std::string, Atom, std::less<>>& atoms() {
       {"Hz", {1, Dimension::time().pow(-1)}},
       {"rad", {1, Dimension::none()}},
       {"1", {1, Dimension::none()}},
+      // US customary, exact by definition (international foot and avoirdupois pound; the
+      // pound-force uses standard gravity 9.80665 m/s^2).
+      {"ft", {numeric(3048, 10000), Dimension::length()}},
+      {"in", {numeric(254, 10000), Dimension::length()}},
+      {"yd", {numeric(9144, 10000), Dimension::length()}},
+      {"mi", {numeric(1609344, 1000), Dimension::length()}},
+      {"mph", {numeric(1609344, 3600000), Dimension::velocity()}},
+      {"lbm", {numeric(45359237, 100000000), Dimension::mass()}},
+      {"lbf", {numeric(45359237, 100000000) * numeric(980665, 100000), Dimension::force()}},
+      {"kip", {numeric(45359237, 100000) * numeric(980665, 100000), Dimension::force()}},
+      {"slug", {numeric(45359237, 100000000) * numeric(980665, 100000) / numeric(3048, 10000), Dimension::mass()}},
+      {"pdl", {numeric(45359237, 100000000) * numeric(3048, 10000), Dimension::force()}},
   };
   return table;
 }
@@ -44,14 +56,20 @@ const std::vector<std::pair<std::string, numeric>>& prefixes() {
   return table;
 }
 
+// SI units take prefixes; kg, min, h, a bare number and the US customary units do not.
+bool is_si_atom(std::string_view name) {
+  for (const char* s : {"g", "t", "m", "s", "N", "J", "W", "Pa", "Hz", "rad"})
+    if (name == s) return true;
+  return false;
+}
+
 std::optional<Atom> find_atom(std::string_view name) {
   if (auto it = atoms().find(name); it != atoms().end()) return it->second;
   for (const auto& [p, f] : prefixes()) {
     if (name.size() > p.size() && name.substr(0, p.size()) == p) {
       auto it = atoms().find(name.substr(p.size()));
       // Prefixes go on SI units, not on kg, min, h or a bare number.
-      if (it != atoms().end() && it->first != "kg" && it->first != "min" && it->first != "h" &&
-          it->first != "1")
+      if (it != atoms().end() && is_si_atom(it->first))
         return Atom{f * it->second.to_si, it->second.dim};
     }
   }

@@ -85,8 +85,11 @@ struct Reader {
         // symbolic only
       } else if (v.IsScalar()) {
         p.value = Text{v.Scalar(), where(v, file)};
-      } else if (check_map(v, {"value", "unit", "dimension", "tex", "positive", "description"}, what, file, diags)) {
+      } else if (check_map(v, {"value", "unit", "dimension", "tex", "positive", "description", "define"}, what, file, diags)) {
         p.value = opt_scalar(v, "value", what);
+        p.define = opt_scalar(v, "define", what);
+        if (p.define && (p.value || p.unit || p.dimension))
+          diags.error(p.define->at, what + " has 'define' with 'value', 'unit' or 'dimension' (a defined name takes all of them from its expression)");
         p.unit = opt_scalar(v, "unit", what);
         p.dimension = opt_scalar(v, "dimension", what);
         p.tex = opt_scalar(v, "tex", what);

@@ -24,6 +24,7 @@ struct ParameterDesc {
   std::optional<Text> dimension;  // "force", "mass", ... when there is no unit
   std::optional<Text> tex;        // TeX name, e.g. "\mu_{k}"
   std::optional<bool> positive;   // default: true for masses, lengths and g
+  std::optional<Text> define;     // a name for an expression in earlier parameters (l = sqrt(b^2 + d^2))
 };
 
 /// A vector as written: one expression per axis (one item for a 1-D scalar).

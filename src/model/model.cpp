@@ -113,10 +113,25 @@ struct Builder {
         else
           dim = named;
       }
+      // A defined parameter: its dimension, sign and value come from its expression.
+      std::optional<ex> definition;
+      if (p.define) {
+        definition = parse(*p.define, *table, "'define' of parameter '" + p.name.text + "'");
+        if (!definition) continue;
+        std::string problem;
+        dim = dimension_of(*definition, *table, problem);
+        if (!problem.empty()) diags.error(p.define->at, "'define' of parameter '" + p.name.text + "' " + problem);
+      }
       const bool positive = p.positive.value_or(
-          p.name.text == "g" || (dim && (*dim == Dimension::mass() || *dim == Dimension::length())));
+          p.name.text == "g" || (dim && (*dim == Dimension::mass() || *dim == Dimension::length())) ||
+          (definition && definition->info(info_flags::positive)));
       table->add(p.name.text, p.tex ? std::optional<std::string>(p.tex->text) : std::nullopt, SymbolRole::parameter,
                  dim, positive, p.name.at);
+      if (definition) {
+        table->set_definition(p.name.text, *definition);
+        const ex v = evalf(definition->subs(table->values()));
+        if (is_a<numeric>(v)) table->set_value(p.name.text, ex_to<numeric>(v), si_unit_name(dim.value_or(Dimension{})));
+      }
       if (p.value) {
         auto v = parse(*p.value, none, "value of parameter '" + p.name.text + "'");
         if (v && !is_a<numeric>(*v))

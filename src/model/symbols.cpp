@@ -95,6 +95,19 @@ std::optional<Dimension> SymbolTable::dimension_of(const GiNaC::symbol& s) const
   return std::nullopt;
 }
 
+GiNaC::exmap SymbolTable::definitions() const {
+  GiNaC::exmap m;
+  for (const auto& s : items_)
+    if (s->definition) m[s->sym] = *s->definition;
+  return m;
+}
+
+void SymbolTable::set_definition(const std::string& name, GiNaC::ex definition) {
+  auto it = by_name_.find(name);
+  if (it == by_name_.end()) throw InternalError("no symbol '" + name + "'");
+  items_[it->second]->definition = std::move(definition);
+}
+
 GiNaC::exmap SymbolTable::values() const {
   GiNaC::exmap m;
   for (const auto& s : items_)

@@ -28,6 +28,7 @@ struct SymbolInfo {
   std::optional<GiNaC::numeric> value;  // parameters: value in SI
   std::string unit;                     // parameters: the unit the value was given in
   bool positive = false;
+  std::optional<GiNaC::ex> definition;  // a defined parameter: its expression in the others
   Location where;
 
   [[nodiscard]] const GiNaC::symbol& symbol() const { return GiNaC::ex_to<GiNaC::symbol>(sym); }
@@ -55,6 +56,9 @@ class SymbolTable : public NameResolver, public DimensionLookup {
 
   /// Substitution map of every parameter that has a value (SI).
   [[nodiscard]] GiNaC::exmap values() const;
+  /// Substitution map of every defined parameter to its expression.
+  [[nodiscard]] GiNaC::exmap definitions() const;
+  void set_definition(const std::string& name, GiNaC::ex definition);
 
  private:
   std::vector<std::unique_ptr<SymbolInfo>> items_;

@@ -16,6 +16,17 @@ std::string joined(const std::vector<ex>& xs) {
   return join(s);
 }
 
+// A closed form with each defined parameter folded back in where that is shorter
+// (T = a*l*m/(2*d) rather than a*m*sqrt(b^2 + d^2 + e^2)/(2*d)).
+ex with_definitions(const ex& e, const SymbolTable& table) {
+  ex best = e;
+  for (const auto& [name_sym, definition] : table.definitions()) {
+    const ex folded = simplest(best.subs(definition == name_sym, subs_options::algebraic));
+    if (to_text(folded).size() < to_text(best).size()) best = folded;
+  }
+  return best;
+}
+
 }  // namespace
 
 Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol) {
@@ -142,7 +153,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
           a.general = shown;
         }
       } else {
-        a.closed_form = simplest(general);
+        a.closed_form = with_definitions(simplest(general), table);
         a.value = evaluate(*a.closed_form, table, w.dimension);
       }
     }

@@ -45,3 +45,17 @@ TEST_CASE("Units: dimensions are named and given SI units", "[units]") {
   CHECK(si_unit_name(Dimension::mass().pow(2)) == "kg^2");
   CHECK(unit_latex("m/s^2") == "\\mathrm{m/s^{2}}");
 }
+
+TEST_CASE("Units: US customary units convert exactly", "[units]") {
+  CHECK(unit("ft").to_si == numeric(3048, 10000));
+  CHECK(unit("lbf").to_si == numeric(44482216152605LL, 10000000000000LL));
+  CHECK(unit("slug").dimension == Dimension::mass());
+  CHECK(unit("slug").to_si == unit("lbf").to_si / unit("ft").to_si);
+  CHECK(unit("mph").to_si == numeric(44704, 100000));
+  CHECK(unit("ft/s^2").dimension == Dimension::acceleration());
+  CHECK(unit("pdl").to_si == unit("lbm").to_si * unit("ft").to_si);
+  std::string err;
+  int col = 0;
+  CHECK_FALSE(parse_unit("klbf", err, col));  // no prefixes on US units
+  CHECK(err == "unknown unit 'klbf'");
+}

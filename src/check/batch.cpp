@@ -1,0 +1,100 @@
+#include "check/batch.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace tackle {
+
+namespace {
+
+nlohmann::ordered_json to_json(const CheckResult& r, const std::string& answer, const std::string& id) {
+  nlohmann::ordered_json j;
+  if (!id.empty()) j["id"] = id;
+  j["unknown"] = r.unknown;
+  j["answer"] = answer;
+  j["verdict"] = verdict_name(r.verdict);
+  j["score"] = r.score;
+  j["summary"] = r.summary;
+  j["findings"] = nlohmann::ordered_json::array();
+  for (const auto& f : r.findings) j["findings"].push_back({{"code", f.code}, {"message", f.message}});
+  j["method"] = r.method;
+  j["read_as"] = r.echo_text;
+  j["latex"] = r.echo_latex;
+  return j;
+}
+
+}  // namespace
+
+std::string result_json(const CheckResult& r, const std::string& answer, const std::string& id) {
+  const nlohmann::ordered_json j = to_json(r, answer, id);
+  nlohmann::ordered_json out;
+  out["version"] = 1;
+  for (auto it = j.begin(); it != j.end(); ++it)
+    if (it.key() != "version") out[it.key()] = it.value();
+  return out.dump(2) + "\n";
+}
+
+std::string result_text(const CheckResult& r) {
+  std::string out = verdict_name(r.verdict) + ": " + r.summary + "\n";
+  if (!r.echo_text.empty()) out += "  read as: " + r.echo_text + "\n";
+  for (const auto& f : r.findings)
+    if (f.message != r.summary) out += "  also: " + f.message + "\n";
+  return out;
+}
+
+BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream& out) {
+  BatchSummary s;
+  nlohmann::ordered_json tests = nlohmann::ordered_json::array();
+  double total = 0;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    ++s.lines;
+    std::string id = "line " + std::to_string(s.lines), unknown, answer;
+    CheckResult r;
+    std::string problem;
+    // Bounded before parsing: a submission line is at most a few answers long.
+    if (line.size() > 4 * checker.options().limits.max_length + 1024) {
+      problem = "the line is too long (" + std::to_string(line.size()) + " characters)";
+    } else {
+      try {
+        const auto j = nlohmann::json::parse(line);
+        if (!j.is_object()) throw std::runtime_error("not an object");
+        if (j.contains("id")) id = j["id"].is_string() ? j["id"].get<std::string>() : j["id"].dump();
+        if (!j.contains("unknown") || !j["unknown"].is_string()) problem = "no \"unknown\" (a string)";
+        else unknown = j["unknown"].get<std::string>();
+        if (!j.contains("answer")) problem = "no \"answer\"";
+        else answer = j["answer"].is_string() ? j["answer"].get<std::string>() : j["answer"].dump();
+      } catch (const std::exception&) {
+        problem = "not a JSON object with id, unknown and answer";
+      }
+    }
+    if (!problem.empty()) {
+      r.unknown = unknown;
+      r.verdict = Verdict::invalid;
+      r.summary = "line " + std::to_string(s.lines) + ": " + problem;
+      r.findings.push_back({"not_an_answer", r.summary});
+    } else {
+      r = checker.check(unknown, answer);
+    }
+    if (r.verdict == Verdict::correct) ++s.correct;
+    total += r.score;
+    out << to_json(r, answer, id).dump() << "\n";
+    tests.push_back({{"name", id + (unknown.empty() ? "" : ": " + unknown)},
+                     {"score", r.score},
+                     {"max_score", 1},
+                     {"points", r.score},
+                     {"max_points", 1},
+                     {"status", r.verdict == Verdict::correct ? "passed" : "failed"},
+                     {"output", verdict_name(r.verdict) + ": " + r.summary},
+                     {"message", verdict_name(r.verdict) + ": " + r.summary}});
+  }
+  nlohmann::ordered_json grader;
+  grader["gradable"] = true;
+  grader["score"] = s.lines ? total / static_cast<double>(s.lines) : 0.0;
+  grader["output"] = std::to_string(s.correct) + " of " + std::to_string(s.lines) + " answers correct";
+  grader["tests"] = tests;
+  s.grader_json = grader.dump(2) + "\n";
+  return s;
+}
+
+}  // namespace tackle

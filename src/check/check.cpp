@@ -1,0 +1,584 @@
+#include "check/check.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <random>
+#include <regex>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "expr/parse.hpp"
+#include "expr/print.hpp"
+#include "numeric/evaluate.hpp"
+#include "solve/solve.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+
+ExprLimits answer_limits() {
+  ExprLimits l;
+  l.max_length = 1000;
+  l.max_tokens = 400;
+  l.max_depth = 32;
+  l.max_exponent = 32;
+  l.max_number_digits = 20;
+  return l;
+}
+
+std::string verdict_name(Verdict v) {
+  switch (v) {
+    case Verdict::correct: return "correct";
+    case Verdict::incorrect: return "incorrect";
+    case Verdict::invalid: return "invalid";
+    case Verdict::undecided: return "undecided";
+  }
+  return "";
+}
+
+namespace {
+
+// The names an answer may use, remembering those it could not resolve (for hints).
+class AnswerNames : public NameResolver {
+ public:
+  explicit AnswerNames(const std::map<std::string, ex, std::less<>>& names) : names_(names) {}
+  std::optional<ex> resolve(std::string_view name) const override {
+    if (auto it = names_.find(name); it != names_.end()) return it->second;
+    missing_.emplace_back(name);
+    return std::nullopt;
+  }
+  std::vector<std::string> known_names() const override {
+    std::vector<std::string> out;
+    for (const auto& [k, v] : names_) out.push_back(k);
+    return out;
+  }
+  const std::vector<std::string>& missing() const { return missing_; }
+
+ private:
+  const std::map<std::string, ex, std::less<>>& names_;
+  mutable std::vector<std::string> missing_;
+};
+
+std::string trim(std::string_view s) {
+  std::size_t a = 0, b = s.size();
+  while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
+  while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
+  return std::string(s.substr(a, b - a));
+}
+
+std::string lower_without_underscores(std::string_view s) {
+  std::string out;
+  for (char c : s)
+    if (c != '_') out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// `ma` -> `m*a` when the identifier splits into known names (longest names first).
+std::optional<std::string> split_into_names(const std::string& word, const std::vector<std::string>& names,
+                                            int depth = 0) {
+  if (word.empty()) return std::string{};
+  if (depth > 6) return std::nullopt;
+  std::vector<std::string> sorted = names;
+  std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+  for (const auto& n : sorted) {
+    if (n.empty() || n.find('(') != std::string::npos || word.compare(0, n.size(), n) != 0) continue;
+    if (auto rest = split_into_names(word.substr(n.size()), names, depth + 1))
+      return rest->empty() ? n : n + "*" + *rest;
+  }
+  return std::nullopt;
+}
+
+// An upper bound on the number of terms normal() might expand an expression into.
+double expanded_size(const ex& e) {
+  if (is_a<add>(e)) {
+    double s = 0;
+    for (std::size_t i = 0; i < e.nops(); ++i) s += expanded_size(e.op(i));
+    return s;
+  }
+  if (is_a<mul>(e)) {
+    double s = 1;
+    for (std::size_t i = 0; i < e.nops(); ++i) s *= expanded_size(e.op(i));
+    return s;
+  }
+  if (is_a<power>(e) && is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer()) {
+    const double k = expanded_size(e.op(0));
+    const double n = std::abs(ex_to<numeric>(e.op(1)).to_double());
+    // Terms of (t_1 + ... + t_k)^n: C(n + k - 1, k - 1).
+    double c = 1;
+    for (int i = 1; i < k && c < 1e12; ++i) c = c * (n + i) / i;
+    return c;
+  }
+  return 1;
+}
+
+std::size_t tree_size(const ex& e) {
+  std::size_t n = 0;
+  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) ++n;
+  return n;
+}
+
+std::set<ex, ex_is_less> symbols_of(const ex& e) {
+  std::set<ex, ex_is_less> out;
+  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+    if (is_a<symbol>(*it)) out.insert(*it);
+  return out;
+}
+
+std::string fmt_percent(double fraction) { return fmt::format("{:g} %", fraction * 100); }
+
+// "twice", "half", "3 times", "2/3 of"
+std::string factor_words(const numeric& c) {
+  if (c == 2) return "twice the correct answer";
+  if (c == numeric(1, 2)) return "half the correct answer";
+  if (c == -1) return "the correct answer with the wrong sign";
+  return to_text(c) + " times the correct answer";
+}
+
+}  // namespace
+
+Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(options), symbols_(analysis.model.symbols) {
+  const Model& m = analysis.model;
+  GiNaC::Digits = std::max<long>(GiNaC::Digits, options_.digits);
+  // The names an answer may use: the parameters and the given quantities.
+  for (const auto& s : symbols_->all())
+    if (s->role == SymbolRole::parameter) parameters_.push_back({s->name, s->sym, s->dimension});
+  for (const auto& g : m.given) {
+    const SymbolInfo* s = symbols_->find(g);
+    parameters_.push_back({s->name, s->sym, s->dimension});
+  }
+  for (const auto& u : m.candidates) problem_unknowns_.push_back(symbols_->find(u)->name);
+  definitions_ = symbols_->definitions();
+  // Random points: exact positive rationals near each parameter's value (between half and
+  // twice it), or in [1, 10] when it has none. A fixed seed keeps verdicts reproducible.
+  std::mt19937 rng(12);
+  std::uniform_int_distribution<int> spread(500, 2000), whole(10, 100);
+  for (int k = 0; k < options_.points; ++k) {
+    exmap point;
+    for (const auto& p : parameters_) {
+      const SymbolInfo* s = symbols_->find(p.symbol);
+      if (s->definition) continue;  // follows from the others
+      if (s->value && !s->value->is_zero())
+        point[p.symbol] = *s->value * numeric(spread(rng), 1000);
+      else
+        point[p.symbol] = numeric(whole(rng), 10) + numeric(1, 7 + k);
+    }
+    points_.push_back(point);
+  }
+  // References: every determined unknown, and the defined quantities of `find`.
+  auto add_reference = [&](const std::string& name, const ex& closed_form, std::optional<Dimension> dim) {
+    const ex closed = closed_form.subs(definitions_);
+    Reference ref{name, closed, dim, std::nullopt, {}};
+    if (auto v = evaluate(closed, *symbols_, dim); v && is_a<numeric>(evalf(v->exact)))
+      ref.value = ex_to<numeric>(evalf(v->exact));
+    bool ok = true;
+    for (std::size_t k = 0; k < points_.size() && ok; ++k) {
+      auto v = value_at(closed, k);
+      if (v) ref.at_points.push_back(*v);
+      else ok = false;
+    }
+    if (ok) references_.emplace(name, std::move(ref));
+  };
+  for (const auto& d : analysis.solution.values) {
+    const SymbolInfo* s = symbols_->find(d.unknown);
+    add_reference(s->name, d.value, s->dimension);
+  }
+  for (const auto& w : m.wanted) {
+    if (!w.defined) continue;
+    const ex general = w.expr.subs(analysis.solution.general);
+    if (std::none_of(analysis.solution.free.begin(), analysis.solution.free.end(), [&](const ex& f) { return general.has(f); }))
+      add_reference(w.name, simplest(general), w.dimension);
+  }
+}
+
+std::vector<std::string> Checker::unknowns() const {
+  std::vector<std::string> out;
+  for (const auto& [k, v] : references_) out.push_back(k);
+  return out;
+}
+
+std::optional<numeric> Checker::value_at(const ex& e, std::size_t point) const {
+  try {
+    ex v = e.subs(definitions_).subs(points_[point]);
+    if (!is_a<numeric>(v)) v = evalf(v);
+    if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
+    return ex_to<numeric>(v);
+  } catch (const std::exception&) {
+    return std::nullopt;  // division by zero at this point, and the like
+  }
+}
+
+bool Checker::same(const numeric& a, const numeric& b) const {
+  if (a.is_rational() && b.is_rational()) return a == b;
+  const numeric scale = std::max(abs(a), abs(b));
+  if (scale.is_zero()) return true;
+  return abs(a - b) <= scale * GiNaC::pow(numeric(10), numeric(-(options_.digits - 8)));
+}
+
+std::string Checker::describe(const ex& parameter) const {
+  const std::string name = to_text(parameter);
+  // A dimensionless parameter named mu is a friction coefficient.
+  if (name.rfind("mu", 0) == 0) return "without friction (" + name + " = 0)";
+  return "for " + name + " = 0";
+}
+
+CheckResult Checker::check(const std::string& unknown, std::string_view answer) const {
+  const auto start = std::chrono::steady_clock::now();
+  CheckResult r;
+  r.unknown = unknown;
+  auto invalid = [&](std::string code, std::string message) {
+    r.verdict = Verdict::invalid;
+    r.summary = message;
+    r.findings.push_back({std::move(code), std::move(message)});
+    return r;
+  };
+  const auto ref_it = references_.find(unknown);
+  if (ref_it == references_.end()) {
+    std::string msg = "'" + unknown + "' is not an unknown tackle can check for this problem";
+    const auto known = unknowns();
+    if (auto near = nearest(unknown, known); !near.empty()) msg += " (did you mean '" + near + "'?)";
+    else msg += " (checkable: " + join(known) + ")";
+    return invalid("wrong_unknown", msg);
+  }
+  const Reference& ref = ref_it->second;
+  // Length first: nothing else looks at a huge answer.
+  if (answer.size() > options_.limits.max_length)
+    return invalid("too_large", "the answer is too long (" + std::to_string(answer.size()) + " characters; at most " +
+                                    std::to_string(options_.limits.max_length) + ")");
+  std::string text = trim(answer);
+  if (text.empty()) return invalid("not_an_answer", "the answer is empty");
+  // "T = ...": the left side must name the unknown asked for.
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '=' || (i > 0 && (text[i - 1] == '<' || text[i - 1] == '>' || text[i - 1] == '!')) ||
+        (i + 1 < text.size() && text[i + 1] == '='))
+      continue;
+    const std::string lhs = trim(std::string_view(text).substr(0, i));
+    if (lhs != unknown) {
+      if (std::find(problem_unknowns_.begin(), problem_unknowns_.end(), lhs) != problem_unknowns_.end() ||
+          references_.count(lhs))
+        return invalid("wrong_unknown", "this is an answer for " + lhs + ", but " + unknown + " was asked for");
+      return invalid("not_an_answer", "write '" + unknown + " = ...' or just the expression (found '" + lhs + " = ')");
+    }
+    text = trim(std::string_view(text).substr(i + 1));
+    break;
+  }
+  // A number with a unit: "6.8 N", "0.0068 kN", "1.53 lbf", "-2.25 m/s^2".
+  static const std::regex number_unit(R"(^([-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*([A-Za-z][A-Za-z0-9/^*.\- ]*)?$)");
+  std::smatch match;
+  if (std::regex_match(text, match, number_unit))
+    return check_number(ref, match[1].str(), match[2].matched ? trim(match[2].str()) : "", r);
+  return check_expression(ref, text, r, start);
+}
+
+CheckResult Checker::check_number(const Reference& ref, std::string_view number, std::string_view unit_text,
+                                  CheckResult r) const {
+  r.method = "number";
+  auto finish = [&](Verdict v, std::string code, std::string message) {
+    r.verdict = v;
+    r.summary = message;
+    r.findings.push_back({std::move(code), std::move(message)});
+    r.score = v == Verdict::correct ? 1.0 : 0.0;
+    return r;
+  };
+  struct NoNames : NameResolver {
+    std::optional<ex> resolve(std::string_view) const override { return std::nullopt; }
+    std::vector<std::string> known_names() const override { return {}; }
+  } none;
+  const auto parsed = parse_expression(number, none, options_.limits);
+  if (!parsed.value || !is_a<numeric>(*parsed.value))
+    return finish(Verdict::invalid, "syntax", "the number could not be read");
+  numeric value = ex_to<numeric>(*parsed.value);
+  const Dimension expected = ref.dimension.value_or(Dimension::none());
+  std::string unit_shown = std::string(unit_text);
+  if (unit_text.empty()) {
+    if (!(expected == Dimension::none()))
+      return finish(Verdict::invalid, "no_unit", "give the unit: the answer is a " + expected.describe() + " (in SI, " +
+                                                     si_unit_name(expected) + ")");
+  } else {
+    std::string err;
+    int col = 0;
+    auto unit = parse_unit(unit_text, err, col);
+    if (!unit) return finish(Verdict::invalid, "unit", err + " (expected a unit such as " + si_unit_name(expected) + ")");
+    if (!(unit->dimension == expected))
+      return finish(Verdict::incorrect, "dimension", "the unit " + std::string(unit_text) + " is a " +
+                                                         unit->dimension.describe() + "; a " + expected.describe() +
+                                                         " was expected");
+    value *= unit->to_si;
+  }
+  r.echo_text = std::string(number) + (unit_text.empty() ? "" : " " + std::string(unit_text));
+  r.echo_latex = std::string(number) + (unit_text.empty() ? "" : "\\," + unit_latex(unit_text));
+  if (!ref.value)
+    return finish(Verdict::invalid, "not_an_answer",
+                  "this problem gives no numbers for every parameter: answer with a closed form in its symbols");
+  const numeric expect = *ref.value;
+  const double got = value.to_double(), want = expect.to_double();
+  bool ok;
+  std::string how;
+  if (options_.significant_figures) {
+    const int n = *options_.significant_figures;
+    auto round_to = [n](double x) {
+      if (x == 0) return 0.0;
+      const double scale = std::pow(10.0, n - 1 - static_cast<int>(std::floor(std::log10(std::abs(x)))));
+      return std::round(x * scale) / scale;
+    };
+    ok = round_to(got) == round_to(want);
+    how = "to " + std::to_string(n) + " significant figures";
+  } else {
+    ok = std::abs(got - want) <= options_.relative_tolerance * std::abs(want) + 1e-300;
+    how = "within " + fmt_percent(options_.relative_tolerance);
+  }
+  const std::string unit = si_unit_name(expected);
+  if (ok) {
+    r.verdict = Verdict::correct;
+    r.score = 1.0;
+    r.summary = "correct " + how + " (the answer is " + decimal_string(expect, 6) + (unit.empty() ? "" : " " + unit) + ")";
+    return r;
+  }
+  r.verdict = Verdict::incorrect;
+  r.score = 0.0;
+  // Why: the sign, a factor of ten (a unit prefix), a simple factor, or g (mass for weight).
+  const double ratio = want != 0 ? got / want : 0;
+  auto near = [](double x, double y) { return std::abs(x - y) <= 0.01 * std::abs(y); };
+  if (near(ratio, -1)) {
+    r.findings.push_back({"sign", "the sign is wrong"});
+  } else if (ratio != 0) {
+    const double l10 = std::log10(std::abs(ratio));
+    const double k = std::round(l10);
+    if (k != 0 && std::abs(l10 - k) < 0.005)
+      r.findings.push_back({"factor", "off by a factor of 10^" + std::to_string(static_cast<int>(k)) +
+                                          ": check the unit prefix or the conversion"});
+    else if (near(std::abs(ratio), 9.81) || near(std::abs(ratio), 1 / 9.81))
+      r.findings.push_back({"factor", "off by a factor of g: a mass where a weight belongs, or the reverse?"});
+    else
+      for (const double f : {2.0, 0.5, 3.0, 1.0 / 3, 4.0, 0.25})
+        if (near(std::abs(ratio), f)) {
+          r.findings.push_back({"factor", "off by a factor of " + std::string(f == 2.0 ? "2" : f == 0.5 ? "1/2" : f == 3.0 ? "3" : f == 4.0 ? "4" : f == 0.25 ? "1/4" : "1/3")});
+          break;
+        }
+  }
+  r.findings.push_back({"tolerance", "expected " + decimal_string(expect, 6) + (unit.empty() ? "" : " " + unit) + " " + how +
+                                         "; got " + decimal_string(value, 6) + (unit.empty() ? "" : " " + unit)});
+  r.summary = r.findings.front().message;
+  return r;
+}
+
+CheckResult Checker::check_expression(const Reference& ref, std::string_view text, CheckResult r,
+                                      std::chrono::steady_clock::time_point start) const {
+  auto over_budget = [&] { return std::chrono::steady_clock::now() - start > options_.time_budget; };
+  auto finish = [&](Verdict v, std::string code, std::string message) {
+    r.verdict = v;
+    r.summary = message;
+    if (!code.empty()) r.findings.push_back({std::move(code), std::move(message)});
+    r.score = v == Verdict::correct ? 1.0 : 0.0;
+    return r;
+  };
+  std::map<std::string, ex, std::less<>> names;
+  for (const auto& p : parameters_) names.emplace(p.name, p.symbol);
+  AnswerNames resolver(names);
+  const ParseResult parsed = parse_expression(text, resolver, options_.limits);
+  if (!parsed.value) {
+    const ParseProblem& p = parsed.problems.front();
+    const std::string where = "at column " + std::to_string(p.column + 1) + ": ";
+    if (!resolver.missing().empty()) {
+      // The most useful hint for a name the problem does not have.
+      const std::string& bad = resolver.missing().back();
+      std::vector<std::string> known;
+      for (const auto& q : parameters_) known.push_back(q.name);
+      std::string hint;
+      if (std::find(problem_unknowns_.begin(), problem_unknowns_.end(), bad) != problem_unknowns_.end()) {
+        hint = bad + " is an unknown of this problem; write the answer in the given quantities (" + join(known) + ")";
+      } else {
+        for (const auto& k : known)
+          if (lower_without_underscores(k) == lower_without_underscores(bad)) {
+            hint = "unknown name '" + bad + "': did you mean '" + k + "'? (names are case-sensitive; subscripts are written with _)";
+            break;
+          }
+        if (hint.empty())
+          if (auto split = split_into_names(bad, known))
+            hint = "unknown name '" + bad + "': did you mean '" + *split + "'? (write products with *)";
+        if (hint.empty()) {
+          hint = "unknown name '" + bad + "'";
+          if (auto near = nearest(bad, known); !near.empty())
+            hint += ": did you mean '" + near + "'?";
+          else
+            hint += " (the problem's names: " + join(known) + ")";
+        }
+      }
+      return finish(Verdict::invalid, "unknown_name", where + hint);
+    }
+    const bool limit = p.message.find("too ") != std::string::npos || p.message.find("at most") != std::string::npos;
+    return finish(Verdict::invalid, limit ? "too_large" : "syntax", where + p.message);
+  }
+  const ex answer = *parsed.value;
+  if (is_vector(answer)) return finish(Verdict::invalid, "syntax", "the answer is a vector; a single value was expected");
+  r.echo_text = to_text(answer);
+  r.echo_latex = to_latex(answer);
+  // Dimensions, from the parameters' own.
+  std::string problem;
+  const auto dim = dimension_of(answer, *symbols_, problem);
+  if (!dim && !problem.empty()) return finish(Verdict::incorrect, "dimension", "the answer is dimensionally inconsistent: it " + problem);
+  if (dim && ref.dimension && !(*dim == *ref.dimension))
+    return finish(Verdict::incorrect, "dimension",
+                  "this is a " + dim->describe() + "; a " + ref.dimension->describe() + " was expected");
+  // Exact: normal(answer - reference), when the expansion stays within the budget.
+  bool proved_equal = false;
+  if (expanded_size(answer) <= static_cast<double>(options_.exact_size_budget) && !over_budget()) {
+    try {
+      proved_equal = normal(answer.subs(definitions_) - ref.closed_form).is_zero();
+    } catch (const std::exception&) {
+      proved_equal = false;
+    }
+  }
+  // Numeric: exact rationals at random points, else CLN to `digits`.
+  std::vector<numeric> values;
+  bool evaluated = true;
+  if (!proved_equal) {
+    for (std::size_t k = 0; k < points_.size(); ++k) {
+      if (over_budget()) return finish(Verdict::undecided, "budget", "the answer took too long to check");
+      auto v = value_at(answer, k);
+      if (!v) {
+        evaluated = false;
+        break;
+      }
+      values.push_back(*v);
+    }
+    if (!evaluated)
+      return finish(Verdict::undecided, "evaluation",
+                    "the answer could not be evaluated at the test values (a division by zero or a negative square root?)");
+  }
+  bool equal = proved_equal;
+  if (!proved_equal) {
+    equal = true;
+    for (std::size_t k = 0; k < values.size(); ++k) equal = equal && same(values[k], ref.at_points[k]);
+  }
+  if (equal) {
+    r.method = proved_equal ? "exact" : "numeric";
+    r.verdict = Verdict::correct;
+    r.score = 1.0;
+    r.summary = proved_equal ? "equal to the closed form"
+                             : "equal to the closed form at " + std::to_string(points_.size()) + " random points, to " +
+                                   std::to_string(options_.digits - 8) + " digits";
+    // Simplified? The typed answer against tackle's simplest form of it.
+    std::string typed;
+    for (char c : text)
+      if (!std::isspace(static_cast<unsigned char>(c))) typed += c;
+    const std::string simple = to_text(simplest(answer));
+    if (typed.size() > simple.size() + simple.size() / 2 + 4) {
+      const std::string msg = "correct, but it simplifies to " + simple;
+      r.findings.push_back({"not_simplified", msg});
+      if (options_.require_simplified) {
+        r.verdict = Verdict::incorrect;
+        r.score = 0.0;
+        r.summary = msg + " (a simplified answer is required)";
+      }
+    }
+    return r;
+  }
+  r.method = "numeric";
+  r.verdict = Verdict::incorrect;
+  r.score = 0.0;
+  if (values.size() < points_.size()) {
+    values.clear();
+    for (std::size_t k = 0; k < points_.size(); ++k)
+      if (auto v = value_at(answer, k)) values.push_back(*v);
+  }
+  diagnose(ref, answer, values, r);
+  if (r.findings.empty()) r.findings.push_back({"value", "the answer differs from the correct one"});
+  r.summary = r.findings.front().message;
+  return r;
+}
+
+void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector<numeric>& values, CheckResult& r) const {
+  const std::size_t n = std::min(values.size(), ref.at_points.size());
+  auto matches = [&](const ex& candidate, const ex& target) {
+    for (std::size_t k = 0; k < points_.size(); ++k) {
+      auto a = value_at(candidate, k), b = value_at(target, k);
+      if (!a || !b || !same(*a, *b)) return false;
+    }
+    return true;
+  };
+  // The sign, or a constant factor (exact when the ratio simplifies to a number).
+  bool constant_ratio = n > 0;
+  std::optional<numeric> ratio;
+  for (std::size_t k = 0; k < n && constant_ratio; ++k) {
+    if (ref.at_points[k].is_zero()) {
+      constant_ratio = false;
+      break;
+    }
+    const numeric q = values[k] / ref.at_points[k];
+    if (!ratio) ratio = q;
+    else constant_ratio = same(q, *ratio);
+  }
+  if (constant_ratio && ratio) {
+    const ex exact = normal(answer.subs(definitions_) / ref.closed_form);
+    const numeric c = is_a<numeric>(exact) ? ex_to<numeric>(exact) : *ratio;
+    if (c == -1)
+      r.findings.push_back({"sign", "the sign is wrong"});
+    else
+      r.findings.push_back({"factor", "off by a factor of " + to_text(c) + " (the answer is " + factor_words(c) + ")"});
+    return;
+  }
+  // The value of another unknown of the problem.
+  for (const auto& [name, other] : references_) {
+    if (name == ref.name || !(other.dimension == ref.dimension)) continue;
+    bool all = other.at_points.size() == values.size() && !values.empty();
+    for (std::size_t k = 0; all && k < values.size(); ++k) all = same(values[k], other.at_points[k]);
+    if (all) r.findings.push_back({"other_unknown", "this is the value of " + name + ", not of " + ref.name});
+  }
+  // Most specific first: swapped parameters, special cases, a factor in the parameters,
+  // then the parameters the answer has or lacks.
+  std::vector<Finding> factor_findings;
+  const ex quotient = normal(answer.subs(definitions_) / ref.closed_form);
+  if (!is_a<numeric>(quotient) && tree_size(quotient) <= 7)
+    factor_findings.push_back({"factor", "off by a factor of " + to_text(quotient)});
+  // Two parameters swapped.
+  std::vector<ex> params;
+  for (const auto& p : parameters_) params.push_back(p.symbol);
+  for (std::size_t i = 0; i < params.size() && i < 16; ++i)
+    for (std::size_t j = i + 1; j < params.size() && j < 16; ++j) {
+      if (!answer.has(params[i]) && !answer.has(params[j])) continue;
+      exmap swap{{params[i], params[j]}, {params[j], params[i]}};
+      if (matches(answer.subs(swap), ref.closed_form))
+        r.findings.push_back({"swapped", to_text(params[i]) + " and " + to_text(params[j]) + " are swapped"});
+    }
+  // Correct only in a special case: a parameter at zero, or two parameters equal.
+  for (const auto& p : params) {
+    if (!ref.closed_form.has(p)) continue;
+    ex special;
+    try {
+      special = ref.closed_form.subs(p == 0);
+    } catch (const std::exception&) {
+      continue;
+    }
+    if (!special.is_zero() && matches(answer, special))
+      r.findings.push_back({"special_case", "this is correct only " + describe(p)});
+  }
+  for (std::size_t i = 0; i < params.size() && i < 16; ++i)
+    for (std::size_t j = i + 1; j < params.size() && j < 16; ++j) {
+      const auto& a = parameters_[i];
+      const auto& b = parameters_[j];
+      if (!(a.dimension == b.dimension) || !ref.closed_form.has(params[i]) || !ref.closed_form.has(params[j])) continue;
+      const exmap same_value{{params[j], params[i]}};
+      if (matches(answer.subs(same_value), ref.closed_form.subs(same_value)))
+        r.findings.push_back({"special_case", "this is correct only when " + a.name + " = " + b.name});
+    }
+  r.findings.insert(r.findings.end(), factor_findings.begin(), factor_findings.end());
+  // Parameters the answer depends on, or misses (named in the problem's order).
+  const auto used = symbols_of(answer.subs(definitions_)), needed = symbols_of(ref.closed_form);
+  std::vector<std::string> extra, missing;
+  for (const auto& p : parameters_) {
+    if (used.count(p.symbol) && !needed.count(p.symbol)) extra.push_back(p.name);
+    if (needed.count(p.symbol) && !used.count(p.symbol)) missing.push_back(p.name);
+  }
+  auto words = [](const std::vector<std::string>& names) {
+    if (names.size() == 1) return names[0];
+    return join(std::vector<std::string>(names.begin(), names.end() - 1)) + " and " + names.back();
+  };
+  if (!extra.empty())
+    r.findings.push_back({"extra_parameter", "the answer depends on " + words(extra) + ", which the correct answer does not"});
+  if (!missing.empty())
+    r.findings.push_back({"missing_parameter", "the correct answer depends on " + words(missing) + ", and this one does not"});
+}
+
+}  // namespace tackle

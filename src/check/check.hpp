@@ -1,0 +1,103 @@
+// Checking answers: is a student's answer for an unknown right, and if not, why not, in
+// terms a student can act on. Answers are hostile input: they are bounded (length, tokens,
+// nesting, exponents, number sizes) before any GiNaC object exists, and every check runs
+// within a size and time budget. A Checker is prepared once per problem and then checks any
+// number of answers; it never changes after construction.
+#pragma once
+
+#include <chrono>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "core/limits.hpp"
+#include "core/units.hpp"
+#include "pipeline/pipeline.hpp"
+
+namespace tackle {
+
+/// Limits for a typed answer: tighter than for a description.
+[[nodiscard]] ExprLimits answer_limits();
+
+struct CheckOptions {
+  ExprLimits limits = answer_limits();
+  double relative_tolerance = 0.01;            // numbers with units
+  std::optional<int> significant_figures;      // instead of the tolerance: match to N figures
+  bool require_simplified = false;             // a correct but unsimplified answer is incorrect
+  std::size_t exact_size_budget = 2000;        // largest expanded size normal() is given
+  std::chrono::milliseconds time_budget{250};  // per answer
+  int points = 4;                              // random points for the numeric comparison
+  int digits = 40;                             // precision of the numeric comparison (CLN)
+};
+
+enum class Verdict { correct, incorrect, invalid, undecided };
+[[nodiscard]] std::string verdict_name(Verdict v);
+
+/// One thing found about an answer: a code for machines, a sentence for students.
+/// Codes: unknown_name, syntax, too_large, not_an_answer, wrong_unknown, no_unit, unit,
+/// dimension, sign, factor, other_unknown, swapped, special_case, extra_parameter,
+/// missing_parameter, value, not_simplified, tolerance, budget, evaluation.
+struct Finding {
+  std::string code;
+  std::string message;
+};
+
+struct CheckResult {
+  std::string unknown;
+  Verdict verdict = Verdict::undecided;
+  std::string summary;  // the first thing to tell the student
+  std::vector<Finding> findings;
+  std::string method;   // exact, numeric, number (with unit), or empty
+  std::string echo_text;   // the answer as tackle read it
+  std::string echo_latex;
+  double score = 0.0;
+};
+
+class Checker {
+ public:
+  Checker(const Analysis& analysis, CheckOptions options = {});
+
+  /// Checks `answer` for the unknown `unknown` (a name such as `T_HI` or `ddot(x_A)`).
+  [[nodiscard]] CheckResult check(const std::string& unknown, std::string_view answer) const;
+  /// The names that can be checked (determined unknowns and defined quantities).
+  [[nodiscard]] std::vector<std::string> unknowns() const;
+  [[nodiscard]] const CheckOptions& options() const { return options_; }
+
+ private:
+  struct Reference {
+    std::string name;
+    GiNaC::ex closed_form;
+    std::optional<Dimension> dimension;
+    std::optional<GiNaC::numeric> value;     // SI, when every parameter has a value
+    std::vector<GiNaC::numeric> at_points;   // the closed form at each random point
+  };
+  struct Parameter {
+    std::string name;
+    GiNaC::ex symbol;
+    std::optional<Dimension> dimension;
+  };
+
+  CheckResult check_number(const Reference& ref, std::string_view number, std::string_view unit_text,
+                           CheckResult r) const;
+  CheckResult check_expression(const Reference& ref, std::string_view text, CheckResult r,
+                               std::chrono::steady_clock::time_point start) const;
+  void diagnose(const Reference& ref, const GiNaC::ex& answer, const std::vector<GiNaC::numeric>& values,
+                CheckResult& r) const;
+  std::optional<GiNaC::numeric> value_at(const GiNaC::ex& e, std::size_t point) const;
+  bool same(const GiNaC::numeric& a, const GiNaC::numeric& b) const;
+  std::string describe(const GiNaC::ex& parameter) const;
+
+  CheckOptions options_;
+  std::shared_ptr<const SymbolTable> symbols_;
+  std::vector<Parameter> parameters_;       // names an answer may use
+  std::vector<std::string> problem_unknowns_;
+  GiNaC::exmap definitions_;                // defined parameters, expanded before comparing
+  std::vector<GiNaC::exmap> points_;
+  std::map<std::string, Reference, std::less<>> references_;
+};
+
+}  // namespace tackle
