@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <regex>
 #include <set>
@@ -155,21 +156,21 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   std::mt19937 rng(12);
   std::uniform_int_distribution<int> spread(500, 2000), whole(10, 100);
   for (int k = 0; k < options_.points; ++k) {
-    exmap point;
+    Point point;
     for (const auto& p : parameters_) {
       const SymbolInfo* s = symbols_->find(p.symbol);
       if (s->definition) continue;  // follows from the others
-      if (s->value && !s->value->is_zero())
-        point[p.symbol] = *s->value * numeric(spread(rng), 1000);
+      if (s->value && !s->value->is_zero() && s->value->is_rational())
+        point.emplace_back(p.symbol, *s->value * numeric(spread(rng), 1000));
       else
-        point[p.symbol] = numeric(whole(rng), 10) + numeric(1, 7 + k);
+        point.emplace_back(p.symbol, numeric(whole(rng), 10) + numeric(1, 7 + k));
     }
     points_.push_back(point);
   }
   // References: every determined unknown, and the defined quantities of `find`.
   auto add_reference = [&](const std::string& name, const ex& closed_form, std::optional<Dimension> dim) {
     const ex closed = closed_form.subs(definitions_);
-    Reference ref{name, closed, dim, std::nullopt, {}};
+    Reference ref{name, closed, dim, std::nullopt, {}, to_text(closed_form).size()};
     if (auto v = evaluate(closed, *symbols_, dim); v && is_a<numeric>(evalf(v->exact)))
       ref.value = ex_to<numeric>(evalf(v->exact));
     bool ok = true;
@@ -199,14 +200,49 @@ std::vector<std::string> Checker::unknowns() const {
 }
 
 std::optional<numeric> Checker::value_at(const ex& e, std::size_t point) const {
+  return evaluate_at(e.subs(definitions_), points_[point]);
+}
+
+// Walks the expression with numbers: exact rationals as long as the operations allow, CLN
+// floats at the current Digits after a fractional power or a function. No expression is
+// rebuilt. nullopt: a symbol without a value, a division by zero, a complex value.
+std::optional<numeric> Checker::evaluate_at(const ex& e, const Point& point) {
   try {
-    ex v = e.subs(definitions_).subs(points_[point]);
-    if (!is_a<numeric>(v)) v = evalf(v);
-    if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
-    return ex_to<numeric>(v);
+    if (is_a<numeric>(e)) return ex_to<numeric>(e);
+    if (is_a<symbol>(e)) {
+      for (const auto& [s, v] : point)
+        if (s.is_equal(e)) return v;
+      return std::nullopt;
+    }
+    if (is_a<add>(e) || is_a<mul>(e)) {
+      const bool sum = is_a<add>(e);
+      numeric acc = sum ? 0 : 1;
+      for (std::size_t i = 0; i < e.nops(); ++i) {
+        auto v = evaluate_at(e.op(i), point);
+        if (!v) return std::nullopt;
+        acc = sum ? acc + *v : acc * *v;
+      }
+      return acc;
+    }
+    if (is_a<power>(e)) {
+      auto base = evaluate_at(e.op(0), point), expo = evaluate_at(e.op(1), point);
+      if (!base || !expo) return std::nullopt;
+      if (base->is_zero() && !expo->is_pos_integer()) return std::nullopt;
+      if (!expo->is_integer() && base->is_negative()) return std::nullopt;  // complex
+      numeric v = expo->is_integer() ? base->power(*expo) : ex_to<numeric>(evalf(pow(*base, *expo)));
+      if (!v.is_real()) return std::nullopt;
+      return v;
+    }
+    if (is_a<function>(e) && e.nops() == 1) {
+      auto arg = evaluate_at(e.op(0), point);
+      if (!arg) return std::nullopt;
+      const ex v = evalf(function(ex_to<function>(e).get_serial(), ex(*arg)));
+      if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
+      return ex_to<numeric>(v);
+    }
   } catch (const std::exception&) {
-    return std::nullopt;  // division by zero at this point, and the like
   }
+  return std::nullopt;
 }
 
 bool Checker::same(const numeric& a, const numeric& b) const {
@@ -421,56 +457,58 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
   if (dim && ref.dimension && !(*dim == *ref.dimension))
     return finish(Verdict::incorrect, "dimension",
                   "this is a " + dim->describe() + "; a " + ref.dimension->describe() + " was expected");
-  // Exact: normal(answer - reference), when the expansion stays within the budget.
-  bool proved_equal = false;
-  if (expanded_size(answer) <= static_cast<double>(options_.exact_size_budget) && !over_budget()) {
-    try {
-      proved_equal = normal(answer.subs(definitions_) - ref.closed_form).is_zero();
-    } catch (const std::exception&) {
-      proved_equal = false;
-    }
-  }
-  // Numeric: exact rationals at random points, else CLN to `digits`.
+  // Numeric first (cheap, and it settles every wrong answer): the answer at the random points,
+  // exactly in rationals where it can be, else in CLN floats to `digits`.
+  const ex expanded = answer.subs(definitions_);
   std::vector<numeric> values;
-  bool evaluated = true;
-  if (!proved_equal) {
-    for (std::size_t k = 0; k < points_.size(); ++k) {
-      if (over_budget()) return finish(Verdict::undecided, "budget", "the answer took too long to check");
-      auto v = value_at(answer, k);
-      if (!v) {
-        evaluated = false;
-        break;
-      }
-      values.push_back(*v);
-    }
-    if (!evaluated)
+  for (std::size_t k = 0; k < points_.size(); ++k) {
+    if (over_budget()) return finish(Verdict::undecided, "budget", "the answer took too long to check");
+    auto v = evaluate_at(expanded, points_[k]);
+    if (!v)
       return finish(Verdict::undecided, "evaluation",
                     "the answer could not be evaluated at the test values (a division by zero or a negative square root?)");
+    values.push_back(*v);
   }
-  bool equal = proved_equal;
-  if (!proved_equal) {
-    equal = true;
-    for (std::size_t k = 0; k < values.size(); ++k) equal = equal && same(values[k], ref.at_points[k]);
+  bool equal = true, exact_values = true;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    equal = equal && same(values[k], ref.at_points[k]);
+    exact_values = exact_values && values[k].is_rational() && ref.at_points[k].is_rational();
   }
   if (equal) {
-    r.method = proved_equal ? "exact" : "numeric";
+    // Exact rationals that agree at random points prove a rational identity with
+    // overwhelming probability; with square roots and the like, try to prove it with normal()
+    // when the expansion stays within the budget.
+    bool proved = false;
+    if (!exact_values && expanded_size(expanded) <= static_cast<double>(options_.exact_size_budget) && !over_budget()) {
+      try {
+        proved = normal(expanded - ref.closed_form).is_zero();
+      } catch (const std::exception&) {
+        proved = false;
+      }
+    }
+    r.method = exact_values ? "exact rationals" : proved ? "exact" : "numeric";
     r.verdict = Verdict::correct;
     r.score = 1.0;
-    r.summary = proved_equal ? "equal to the closed form"
+    r.summary = exact_values ? "equal to the closed form (in exact arithmetic at " + std::to_string(points_.size()) +
+                                   " random points)"
+                : proved     ? "equal to the closed form"
                              : "equal to the closed form at " + std::to_string(points_.size()) + " random points, to " +
                                    std::to_string(options_.digits - 8) + " digits";
-    // Simplified? The typed answer against tackle's simplest form of it.
+    // Simplified? Only a typed answer much longer than its canonical form can be.
     std::string typed;
     for (char c : text)
       if (!std::isspace(static_cast<unsigned char>(c))) typed += c;
-    const std::string simple = to_text(simplest(answer));
-    if (typed.size() > simple.size() + simple.size() / 2 + 4) {
-      const std::string msg = "correct, but it simplifies to " + simple;
-      r.findings.push_back({"not_simplified", msg});
-      if (options_.require_simplified) {
-        r.verdict = Verdict::incorrect;
-        r.score = 0.0;
-        r.summary = msg + " (a simplified answer is required)";
+    const auto longer = [](std::size_t a, std::size_t b) { return a > b + b / 2 + 4; };
+    if (longer(typed.size(), r.echo_text.size()) || longer(typed.size(), ref.text_size)) {
+      const std::string simple = to_text(simplest(answer));
+      if (longer(typed.size(), simple.size())) {
+        const std::string msg = "correct, but it simplifies to " + simple;
+        r.findings.push_back({"not_simplified", msg});
+        if (options_.require_simplified) {
+          r.verdict = Verdict::incorrect;
+          r.score = 0.0;
+          r.summary = msg + " (a simplified answer is required)";
+        }
       }
     }
     return r;
@@ -478,11 +516,6 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
   r.method = "numeric";
   r.verdict = Verdict::incorrect;
   r.score = 0.0;
-  if (values.size() < points_.size()) {
-    values.clear();
-    for (std::size_t k = 0; k < points_.size(); ++k)
-      if (auto v = value_at(answer, k)) values.push_back(*v);
-  }
   diagnose(ref, answer, values, r);
   if (r.findings.empty()) r.findings.push_back({"value", "the answer differs from the correct one"});
   r.summary = r.findings.front().message;
@@ -491,13 +524,26 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
 
 void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector<numeric>& values, CheckResult& r) const {
   const std::size_t n = std::min(values.size(), ref.at_points.size());
-  auto matches = [&](const ex& candidate, const ex& target) {
+  const ex expanded = answer.subs(definitions_);
+  // Does the answer, at points changed by `change`, equal the reference at the points changed
+  // by `change_ref`? (Swapping two parameters or setting one to zero changes the point, not
+  // the expression.)
+  auto matches_at = [&](const std::function<void(Point&)>& change, const std::function<void(Point&)>& change_ref) {
     for (std::size_t k = 0; k < points_.size(); ++k) {
-      auto a = value_at(candidate, k), b = value_at(target, k);
+      Point pa = points_[k], pr = points_[k];
+      change(pa);
+      change_ref(pr);
+      auto a = evaluate_at(expanded, pa), b = evaluate_at(ref.closed_form, pr);
       if (!a || !b || !same(*a, *b)) return false;
     }
     return true;
   };
+  auto value_of = [](Point& p, const ex& s) -> numeric* {
+    for (auto& [sym, v] : p)
+      if (sym.is_equal(s)) return &v;
+    return nullptr;
+  };
+  const auto keep = [](Point&) {};
   // The sign, or a constant factor (exact when the ratio simplifies to a number).
   bool constant_ratio = n > 0;
   std::optional<numeric> ratio;
@@ -511,8 +557,16 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
     else constant_ratio = same(q, *ratio);
   }
   if (constant_ratio && ratio) {
-    const ex exact = normal(answer.subs(definitions_) / ref.closed_form);
-    const numeric c = is_a<numeric>(exact) ? ex_to<numeric>(exact) : *ratio;
+    // Exact when the values are; else the ratio rounded to a simple fraction.
+    numeric c = *ratio;
+    if (!c.is_rational()) {
+      const double x = c.to_double();
+      for (int den = 1; den <= 12; ++den)
+        if (std::abs(x * den - std::round(x * den)) < 1e-9 * std::max(1.0, std::abs(x * den))) {
+          c = numeric(static_cast<long>(std::round(x * den)), den);
+          break;
+        }
+    }
     if (c == -1)
       r.findings.push_back({"sign", "the sign is wrong"});
     else
@@ -538,29 +592,45 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
   for (std::size_t i = 0; i < params.size() && i < 16; ++i)
     for (std::size_t j = i + 1; j < params.size() && j < 16; ++j) {
       if (!answer.has(params[i]) && !answer.has(params[j])) continue;
-      exmap swap{{params[i], params[j]}, {params[j], params[i]}};
-      if (matches(answer.subs(swap), ref.closed_form))
+      if (definitions_.count(params[i]) || definitions_.count(params[j])) {
+        // A defined parameter has no value of its own at the point: swap in the expression.
+        const exmap swap{{params[i], params[j]}, {params[j], params[i]}};
+        const ex swapped = answer.subs(swap).subs(definitions_);
+        bool all = true;
+        for (std::size_t k = 0; all && k < points_.size(); ++k) {
+          auto a = evaluate_at(swapped, points_[k]);
+          all = a && same(*a, ref.at_points[k]);
+        }
+        if (all) r.findings.push_back({"swapped", to_text(params[i]) + " and " + to_text(params[j]) + " are swapped"});
+        continue;
+      }
+      const auto swap = [&](Point& p) {
+        numeric* x = value_of(p, params[i]);
+        numeric* y = value_of(p, params[j]);
+        if (x && y) std::swap(*x, *y);
+      };
+      if (matches_at(swap, keep))
         r.findings.push_back({"swapped", to_text(params[i]) + " and " + to_text(params[j]) + " are swapped"});
     }
   // Correct only in a special case: a parameter at zero, or two parameters equal.
   for (const auto& p : params) {
-    if (!ref.closed_form.has(p)) continue;
-    ex special;
-    try {
-      special = ref.closed_form.subs(p == 0);
-    } catch (const std::exception&) {
-      continue;
-    }
-    if (!special.is_zero() && matches(answer, special))
-      r.findings.push_back({"special_case", "this is correct only " + describe(p)});
+    if (!ref.closed_form.has(p) || expanded.has(p)) continue;
+    const auto zero = [&](Point& pt) {
+      if (numeric* x = value_of(pt, p)) *x = 0;
+    };
+    if (matches_at(keep, zero)) r.findings.push_back({"special_case", "this is correct only " + describe(p)});
   }
   for (std::size_t i = 0; i < params.size() && i < 16; ++i)
     for (std::size_t j = i + 1; j < params.size() && j < 16; ++j) {
       const auto& a = parameters_[i];
       const auto& b = parameters_[j];
       if (!(a.dimension == b.dimension) || !ref.closed_form.has(params[i]) || !ref.closed_form.has(params[j])) continue;
-      const exmap same_value{{params[j], params[i]}};
-      if (matches(answer.subs(same_value), ref.closed_form.subs(same_value)))
+      const auto equal_values = [&](Point& pt) {
+        numeric* x = value_of(pt, params[i]);
+        numeric* y = value_of(pt, params[j]);
+        if (x && y) *y = *x;
+      };
+      if (matches_at(equal_values, equal_values))
         r.findings.push_back({"special_case", "this is correct only when " + a.name + " = " + b.name});
     }
   r.findings.insert(r.findings.end(), factor_findings.begin(), factor_findings.end());

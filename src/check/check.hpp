@@ -74,6 +74,7 @@ class Checker {
     std::optional<Dimension> dimension;
     std::optional<GiNaC::numeric> value;     // SI, when every parameter has a value
     std::vector<GiNaC::numeric> at_points;   // the closed form at each random point
+    std::size_t text_size = 0;               // length of its printed closed form
   };
   struct Parameter {
     std::string name;
@@ -87,7 +88,9 @@ class Checker {
                                std::chrono::steady_clock::time_point start) const;
   void diagnose(const Reference& ref, const GiNaC::ex& answer, const std::vector<GiNaC::numeric>& values,
                 CheckResult& r) const;
+  using Point = std::vector<std::pair<GiNaC::ex, GiNaC::numeric>>;  // symbol -> value
   std::optional<GiNaC::numeric> value_at(const GiNaC::ex& e, std::size_t point) const;
+  static std::optional<GiNaC::numeric> evaluate_at(const GiNaC::ex& e, const Point& point);
   bool same(const GiNaC::numeric& a, const GiNaC::numeric& b) const;
   std::string describe(const GiNaC::ex& parameter) const;
 
@@ -96,7 +99,7 @@ class Checker {
   std::vector<Parameter> parameters_;       // names an answer may use
   std::vector<std::string> problem_unknowns_;
   GiNaC::exmap definitions_;                // defined parameters, expanded before comparing
-  std::vector<GiNaC::exmap> points_;
+  std::vector<Point> points_;
   std::map<std::string, Reference, std::less<>> references_;
 };
 

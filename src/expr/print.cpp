@@ -1,6 +1,8 @@
 #include "expr/print.hpp"
 
 #include <algorithm>
+#include <tuple>
+#include <unordered_map>
 #include <sstream>
 #include <vector>
 
@@ -48,10 +50,41 @@ struct Fraction {
 };
 Fraction split(const ex& e);
 std::string fraction_text(const Fraction& f, const print_context& like, unsigned level);
+void print_fraction(const Fraction& f, const print_context& c, unsigned level);
+
+// Sort keys are rendered once per node within one top-level print (the cache holds the
+// expressions too, so that no node's address is reused while its key is cached).
+struct KeyCache {
+  int depth = 0;
+  std::unordered_map<const basic*, std::pair<ex, std::string>> keys;
+};
+thread_local KeyCache key_cache;
+
+struct TopLevelPrint {
+  TopLevelPrint() { ++key_cache.depth; }
+  ~TopLevelPrint() {
+    if (--key_cache.depth == 0) key_cache.keys.clear();
+  }
+};
+
+std::string key_of_uncached(const ex& e);
 
 // Sort key: the text form of an expression without its sign and numeric coefficient.
 std::string key_of(const ex& e) {
   if (is_a<numeric>(e)) return "~";  // numbers after names in sums
+  // Fast paths for the common keys: a name, a name to an integer power.
+  if (is_a<symbol>(e)) return ex_to<symbol>(e).get_name();
+  if (is_a<power>(e) && is_a<symbol>(e.op(0)) && is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_pos_integer())
+    return ex_to<symbol>(e.op(0)).get_name() + "^" + std::to_string(ex_to<numeric>(e.op(1)).to_int());
+  if (key_cache.depth == 0) return key_of_uncached(e);
+  const basic* node = &ex_to<basic>(e);
+  if (auto it = key_cache.keys.find(node); it != key_cache.keys.end()) return it->second.second;
+  std::string k = key_of_uncached(e);
+  key_cache.keys.emplace(node, std::make_pair(e, k));
+  return k;
+}
+
+std::string key_of_uncached(const ex& e) {
   if (is_a<mul>(e) || is_a<power>(e)) {
     Fraction f = split(e);
     f.negative = false;
@@ -93,9 +126,17 @@ int balance_of(const ex& sum) {
 bool flip_sum(const ex& sum) {
   const int b = balance_of(sum);
   if (b != 0) return b < 0;
-  std::vector<ex> terms(sum.begin(), sum.end());
-  const auto first = std::min_element(terms.begin(), terms.end(), [](const ex& a, const ex& c) { return key_of(a) < key_of(c); });
-  return is_negative_term(*first);
+  // On a tie: the sign of the first term by name.
+  std::string best;
+  bool negative = false;
+  for (std::size_t i = 0; i < sum.nops(); ++i) {
+    std::string k = key_of(sum.op(i));
+    if (i == 0 || k < best) {
+      best = std::move(k);
+      negative = is_negative_term(sum.op(i));
+    }
+  }
+  return negative;
 }
 
 void print_number(const numeric& n, const print_context& c, unsigned level) {
@@ -129,17 +170,20 @@ void print_add(const add& s, const print_context& c, unsigned level) {
   const bool latex = latex_ctx(c);
   struct Term {
     Fraction f;
-    std::string key, text;
+    std::string key;
   };
   std::vector<Term> pos, neg;
   for (std::size_t i = 0; i < s.nops(); ++i) {
-    Term t{split(s.op(i)), key_of(s.op(i)), {}};
+    Term t{split(s.op(i)), key_of(s.op(i))};
     const bool negative = t.f.negative;
     t.f.negative = false;
-    t.text = fraction_text(t.f, c, add_prec);
     (negative ? neg : pos).push_back(std::move(t));
   }
-  auto by_key = [](const Term& a, const Term& b) { return a.key != b.key ? a.key < b.key : a.text < b.text; };
+  // By key; two terms with the same key (2*x and x*y^0...) by their full text.
+  auto by_key = [&](const Term& a, const Term& b) {
+    if (a.key != b.key) return a.key < b.key;
+    return fraction_text(a.f, c, add_prec) < fraction_text(b.f, c, add_prec);
+  };
   std::sort(pos.begin(), pos.end(), by_key);
   std::sort(neg.begin(), neg.end(), by_key);
   std::ostream& os = c.s;
@@ -148,11 +192,12 @@ void print_add(const add& s, const print_context& c, unsigned level) {
   bool first = true;
   for (const auto& t : pos) {
     if (!first) os << " + ";
-    os << t.text;
+    print_fraction(t.f, c, add_prec);
     first = false;
   }
   for (const auto& t : neg) {
-    os << (first ? "-" : " - ") << t.text;
+    os << (first ? "-" : " - ");
+    print_fraction(t.f, c, add_prec);
     first = false;
   }
   if (paren) os << (latex ? "\\right)" : ")");
@@ -214,36 +259,37 @@ Fraction split(const ex& e) {
     if (is_a<symbol>(base)) return ex_to<symbol>(base).get_name().find('(') == std::string::npos ? 0 : 1;
     return 2;
   };
-  auto by_key = [&](const ex& a, const ex& b) {
-    const int ra = rank(a), rb = rank(b);
-    if (ra != rb) return ra < rb;
-    return key_of(a) < key_of(b);
+  // Each factor's key is rendered once, then the factors are sorted by (rank, key).
+  auto sorted = [&](std::vector<ex>& xs) {
+    if (xs.size() < 2) return;
+    std::vector<std::tuple<int, std::string, ex>> keyed;
+    keyed.reserve(xs.size());
+    for (const auto& x : xs) keyed.emplace_back(rank(x), key_of(x), x);
+    std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
+      return std::tie(std::get<0>(a), std::get<1>(a)) < std::tie(std::get<0>(b), std::get<1>(b));
+    });
+    for (std::size_t i = 0; i < xs.size(); ++i) xs[i] = std::get<2>(keyed[i]);
   };
-  std::sort(f.num.begin(), f.num.end(), by_key);
-  std::sort(f.den.begin(), f.den.end(), by_key);
+  sorted(f.num);
+  sorted(f.den);
   return f;
 }
 
-std::string product_text(const numeric& coeff, const std::vector<ex>& factors, const print_context& c,
-                         bool standalone_parens) {
+// Writes a product of a coefficient and factors straight into the context's stream.
+void print_product(const numeric& coeff, const std::vector<ex>& factors, const print_context& c, bool standalone_parens) {
   const bool latex = latex_ctx(c);
-  std::string out;
+  std::ostream& os = c.s;
   bool first = true;
   if (coeff != 1 || factors.empty()) {
-    std::ostringstream os;
     os << coeff;
-    out += os.str();
     first = false;
   }
   for (const auto& f : factors) {
-    if (!first) {
-      // In LaTeX a number directly before a number needs a visible product sign.
-      out += latex ? ((is_a<numeric>(f)) ? " \\cdot " : " ") : "*";
-    }
-    out += render(f, c, (standalone_parens || !first || factors.size() > 1 || coeff != 1) ? mul_prec : 0);
+    // In LaTeX a number directly before a number needs a visible product sign.
+    if (!first) os << (latex ? ((is_a<numeric>(f)) ? " \\cdot " : " ") : "*");
+    f.print(c, (standalone_parens || !first || factors.size() > 1 || coeff != 1) ? mul_prec : 0);
     first = false;
   }
-  return out;
 }
 
 void print_fraction(const Fraction& f, const print_context& c, unsigned level) {
@@ -255,15 +301,19 @@ void print_fraction(const Fraction& f, const print_context& c, unsigned level) {
   if (paren) os << (latex ? "\\left(" : "(");
   if (f.negative) os << "-";
   if (!has_den) {
-    os << product_text(f.num_c, f.num, c, false);
+    print_product(f.num_c, f.num, c, false);
   } else if (latex) {
-    os << "\\frac{" << product_text(f.num_c, f.num, c, false) << "}{"
-       << product_text(f.den_c, f.den, c, false) << "}";
+    os << "\\frac{";
+    print_product(f.num_c, f.num, c, false);
+    os << "}{";
+    print_product(f.den_c, f.den, c, false);
+    os << "}";
   } else {
-    os << product_text(f.num_c, f.num, c, true) << "/";
+    print_product(f.num_c, f.num, c, true);
+    os << "/";
     const std::size_t n_den = f.den.size() + (f.den_c != 1 ? 1 : 0);
     if (n_den > 1) os << "(";
-    os << product_text(f.den_c, f.den, c, n_den == 1);
+    print_product(f.den_c, f.den, c, n_den == 1);
     if (n_den > 1) os << ")";
   }
   if (paren) os << (latex ? "\\right)" : ")");
@@ -325,6 +375,7 @@ void ensure_registered() { static Registration once; }
 
 std::string to_text(const ex& e) {
   ensure_registered();
+  TopLevelPrint scope;
   std::ostringstream os;
   tackle_text c(os);
   e.print(c);
@@ -333,6 +384,7 @@ std::string to_text(const ex& e) {
 
 std::string to_latex(const ex& e) {
   ensure_registered();
+  TopLevelPrint scope;
   std::ostringstream os;
   tackle_latex c(os);
   e.print(c);

@@ -127,11 +127,7 @@ struct Builder {
           (definition && definition->info(info_flags::positive)));
       table->add(p.name.text, p.tex ? std::optional<std::string>(p.tex->text) : std::nullopt, SymbolRole::parameter,
                  dim, positive, p.name.at);
-      if (definition) {
-        table->set_definition(p.name.text, *definition);
-        const ex v = evalf(definition->subs(table->values()));
-        if (is_a<numeric>(v)) table->set_value(p.name.text, ex_to<numeric>(v), si_unit_name(dim.value_or(Dimension{})));
-      }
+      if (definition) table->set_definition(p.name.text, *definition);
       if (p.value) {
         auto v = parse(*p.value, none, "value of parameter '" + p.name.text + "'");
         if (v && !is_a<numeric>(*v))

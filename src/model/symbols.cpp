@@ -109,9 +109,20 @@ void SymbolTable::set_definition(const std::string& name, GiNaC::ex definition) 
 }
 
 GiNaC::exmap SymbolTable::values() const {
+  // Defined parameters get their exact expression in the values before them (sqrt(61)/2,
+  // not a float whose last digits would depend on the order of operations).
   GiNaC::exmap m;
-  for (const auto& s : items_)
-    if (s->value) m[s->sym] = *s->value;
+  for (const auto& s : items_) {
+    if (s->value) {
+      m[s->sym] = *s->value;
+    } else if (s->definition) {
+      const GiNaC::ex v = s->definition->subs(m);
+      bool complete = true;
+      for (GiNaC::const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
+        complete = complete && !GiNaC::is_a<GiNaC::symbol>(*it);
+      if (complete) m[s->sym] = v;
+    }
+  }
   return m;
 }
 

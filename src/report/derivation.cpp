@@ -16,18 +16,20 @@ std::string joined(const std::vector<ex>& xs) {
   return join(s);
 }
 
-// A closed form with each defined parameter folded back in where that is shorter
-// (T = a*l*m/(2*d) rather than a*m*sqrt(b^2 + d^2 + e^2)/(2*d)).
-ex with_definitions(const ex& e, const SymbolTable& table) {
+}  // namespace
+
+ex fold_definitions(const ex& e, const SymbolTable& table) {
   ex best = e;
   for (const auto& [name_sym, definition] : table.definitions()) {
-    const ex folded = simplest(best.subs(definition == name_sym, subs_options::algebraic));
-    if (to_text(folded).size() < to_text(best).size()) best = folded;
+    // l = sqrt(A): put l^2 for A, so that sqrt(A) and 1/sqrt(A) become l and 1/l (l > 0).
+    const bool root = is_a<power>(definition) && definition.op(1).is_equal(numeric(1, 2));
+    const ex folded = root ? best.subs(definition.op(0) == pow(name_sym, 2)) : best.subs(definition == name_sym);
+    if (folded.is_equal(best)) continue;
+    const ex tidy = simplest(folded);
+    if (to_text(tidy).size() < to_text(best).size()) best = tidy;
   }
   return best;
 }
-
-}  // namespace
 
 Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol) {
   Derivation d;
@@ -50,8 +52,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
   auto bullet = [&](std::string t) { step(Step::Kind::bullet, std::move(t)); };
   auto equation = [&](std::string label, ex lhs, ex rhs) {
     Step* st = step(Step::Kind::equation, std::move(label));
-    st->lhs = lhs;
-    st->rhs = rhs;
+    st->lhs = fold_definitions(lhs, table);
+    st->rhs = fold_definitions(rhs, table);
     return st;
   };
 
@@ -61,6 +63,14 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
   std::vector<std::string> symbolic;
   for (const auto& sym : table.all()) {
     if (sym->role != SymbolRole::parameter) continue;
+    if (sym->definition) {
+      // A defined parameter: its definition, and its value when the others have one.
+      Step* st = step(Step::Kind::equation, "definition");  // not folded: it is the definition
+      st->lhs = sym->sym;
+      st->rhs = *sym->definition;
+      if (auto v = evaluate(sym->sym, table, sym->dimension)) st->note = v->decimal + (v->unit.empty() ? "" : " " + v->unit);
+      continue;
+    }
     if (auto v = sym->value ? evaluate(sym->sym, table, sym->dimension) : std::nullopt) {
       Step* st = step(Step::Kind::given, sym->name);
       st->lhs = sym->sym;
@@ -80,7 +90,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
   for (const auto& eq : s.equations) {
     if (eq.kind == Equation::Kind::constraint_acceleration) continue;
     std::vector<std::string> parts;
-    for (std::size_t i = 0; i < eq.terms.size(); ++i) parts.push_back(eq.sources[i] + ": " + to_text(eq.terms[i]));
+    for (std::size_t i = 0; i < eq.terms.size(); ++i)
+      parts.push_back(eq.sources[i] + ": " + to_text(fold_definitions(eq.terms[i], table)));
     const std::string what = eq.kind == Equation::Kind::lmb ? "Forces" : "Moments";
     text(eq.label + ". " + what + ": " + (parts.empty() ? "none" : join(parts, "; ")) + ".");
     if (!eq.why.empty()) text("About this point and axis there is " + eq.why + ".");
@@ -153,7 +164,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
           a.general = shown;
         }
       } else {
-        a.closed_form = with_definitions(simplest(general), table);
+        a.closed_form = fold_definitions(simplest(general), table);
         a.value = evaluate(*a.closed_form, table, w.dimension);
       }
     }

@@ -71,6 +71,10 @@ struct Derivation {
 
 [[nodiscard]] Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol);
 
+/// An expression with each defined parameter folded back in where that is shorter
+/// (a*l*m/(2*d) rather than a*m*sqrt(b^2 + d^2 + e^2)/(2*d)).
+[[nodiscard]] GiNaC::ex fold_definitions(const GiNaC::ex& e, const SymbolTable& table);
+
 enum class Format { text, latex, json, markdown };
 /// `full`: the whole derivation; otherwise the answers only (`tackle solve`).
 [[nodiscard]] std::string write(const Derivation& d, Format f, bool full);

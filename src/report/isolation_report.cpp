@@ -8,6 +8,7 @@ namespace tackle {
 
 std::string write_isolations(const Model& m, const std::vector<Isolation>& found, Format f) {
   const SymbolTable& table = *m.symbols;
+  auto shown = [&](const GiNaC::ex& e) { return to_text(fold_definitions(e, table)); };
   if (f == Format::json) {
     nlohmann::ordered_json j;
     j["version"] = 1;
@@ -21,11 +22,12 @@ std::string write_isolations(const Model& m, const std::vector<Isolation>& found
       x["tried"] = r.tried;
       if (r.equation) {
         x["equation"] = {{"label", r.equation->label},
-                         {"lhs", to_text(r.equation->lhs)},
-                         {"rhs", to_text(r.equation->rhs)},
-                         {"latex", to_latex(r.equation->lhs) + " = " + to_latex(r.equation->rhs)}};
-        x["closed_form"] = to_text(*r.value);
-        x["latex"] = to_latex(*r.value);
+                         {"lhs", shown(r.equation->lhs)},
+                         {"rhs", shown(r.equation->rhs)},
+                         {"latex", to_latex(fold_definitions(r.equation->lhs, table)) + " = " +
+                                       to_latex(fold_definitions(r.equation->rhs, table))}};
+        x["closed_form"] = shown(*r.value);
+        x["latex"] = to_latex(fold_definitions(*r.value, table));
         if (auto v = evaluate(*r.value, table, table.find(r.unknown)->dimension)) {
           x["value"] = v->approx;
           x["unit"] = v->unit;
@@ -47,8 +49,8 @@ std::string write_isolations(const Model& m, const std::vector<Isolation>& found
       continue;
     }
     out += name + ": " + r.equation->label + " contains it alone.\n";
-    out += "    " + to_text(r.equation->lhs) + " = " + to_text(r.equation->rhs) + "\n";
-    out += "    " + name + " = " + to_text(*r.value);
+    out += "    " + shown(r.equation->lhs) + " = " + shown(r.equation->rhs) + "\n";
+    out += "    " + name + " = " + shown(*r.value);
     if (auto v = evaluate(*r.value, table, table.find(r.unknown)->dimension))
       out += "  = " + v->decimal + (v->unit.empty() ? "" : " " + v->unit);
     out += "\n";

@@ -188,7 +188,7 @@ TEST_CASE("CLI: sample 12.8's JSON gives T = 6.78 N and its closed form", "[cli]
   const Run r = run_tackle("solve " + examples + "sample-12.8-sign-board.yaml --format json");
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
-  CHECK(j["unknowns"][0]["closed_form"] == "a*m*sqrt(b^2 + d^2 + e^2)/(2*d)");
+  CHECK(j["unknowns"][0]["closed_form"] == "a*l*m/(2*d)");  // the book: T = m a l/(2 d)
   CHECK(j["unknowns"][0]["value"] == Approx(6.78233).epsilon(1e-5));
 }
 
@@ -208,8 +208,8 @@ TEST_CASE("CLI: isolate finds axis OG for the sign-board's rod; usage and input 
   CHECK(r.code == 0);
   CHECK(r.out ==
         "T_HI: AMB board about G (axis OG, along y) contains it alone.\n"
-        "    T_HI*d*(c - e)/sqrt(b^2 + d^2 + e^2) = a*m*(c - e)/2\n"
-        "    T_HI = a*m*sqrt(b^2 + d^2 + e^2)/(2*d)  = 6.78233 N\n");
+        "    T_HI*d*(c - e)/l = a*m*(c - e)/2\n"
+        "    T_HI = a*l*m/(2*d)  = 6.78233 N\n");
   CHECK(run_tackle("isolate " + examples + "sample-12.8-sign-board.yaml").code == 2);
   CHECK(run_tackle("isolate " + examples + "sample-12.8-sign-board.yaml T_HI --all").code == 2);
   const Run bad = run_tackle("isolate " + examples + "sample-12.8-sign-board.yaml T");
