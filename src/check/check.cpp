@@ -5,11 +5,12 @@
 #include <cmath>
 #include <functional>
 #include <random>
-#include <regex>
 #include <set>
+#include <tuple>
 
 #include <fmt/format.h>
 
+#include "expr/kind.hpp"
 #include "expr/parse.hpp"
 #include "expr/print.hpp"
 #include "numeric/evaluate.hpp"
@@ -127,6 +128,41 @@ std::set<ex, ex_is_less> symbols_of(const ex& e) {
   return out;
 }
 
+// "6.8 N" -> ("6.8", "N"); "6.8" -> ("6.8", ""); nullopt when the text is not a number,
+// optionally followed by something that starts like a unit (a letter).
+std::optional<std::pair<std::string, std::string>> number_and_unit(const std::string& t) {
+  std::size_t i = 0;
+  if (i < t.size() && (t[i] == '-' || t[i] == '+')) ++i;
+  const std::size_t digits_start = i;
+  bool digits = false;
+  while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i, digits = true;
+  if (i < t.size() && t[i] == '.') {
+    ++i;
+    while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i, digits = true;
+  }
+  if (!digits || digits_start == t.size()) return std::nullopt;
+  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+    std::size_t j = i + 1;
+    if (j < t.size() && (t[j] == '-' || t[j] == '+')) ++j;
+    if (j < t.size() && std::isdigit(static_cast<unsigned char>(t[j]))) {
+      while (j < t.size() && std::isdigit(static_cast<unsigned char>(t[j]))) ++j;
+      i = j;
+    }
+  }
+  std::string number = t.substr(0, i);
+  std::size_t k = i;
+  while (k < t.size() && t[k] == ' ') ++k;
+  if (k == t.size()) return std::make_pair(number, std::string());
+  if (!std::isalpha(static_cast<unsigned char>(t[k]))) return std::nullopt;  // "2*m", "3/4": an expression
+  // The rest must look like a unit: letters, digits, / ^ * . - and spaces.
+  for (std::size_t j = k; j < t.size(); ++j) {
+    const char c = t[j];
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '/' || c == '^' || c == '*' || c == '.' || c == '-' || c == ' '))
+      return std::nullopt;
+  }
+  return std::make_pair(number, trim(t.substr(k)));
+}
+
 std::string fmt_percent(double fraction) { return fmt::format("{:g} %", fraction * 100); }
 
 // "twice", "half", "3 times", "2/3 of"
@@ -150,6 +186,7 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
     parameters_.push_back({s->name, s->sym, s->dimension});
   }
   for (const auto& u : m.candidates) problem_unknowns_.push_back(symbols_->find(u)->name);
+  for (const auto& p : parameters_) answer_names_.emplace(p.name, p.symbol);
   definitions_ = symbols_->definitions();
   // Random points: exact positive rationals near each parameter's value (between half and
   // twice it), or in [1, 10] when it has none. A fixed seed keeps verdicts reproducible.
@@ -208,14 +245,14 @@ std::optional<numeric> Checker::value_at(const ex& e, std::size_t point) const {
 // rebuilt. nullopt: a symbol without a value, a division by zero, a complex value.
 std::optional<numeric> Checker::evaluate_at(const ex& e, const Point& point) {
   try {
-    if (is_a<numeric>(e)) return ex_to<numeric>(e);
-    if (is_a<symbol>(e)) {
+    if (is_exactly<numeric>(e)) return ex_to<numeric>(e);
+    if (is_exactly<symbol>(e)) {
       for (const auto& [s, v] : point)
         if (s.is_equal(e)) return v;
       return std::nullopt;
     }
-    if (is_a<add>(e) || is_a<mul>(e)) {
-      const bool sum = is_a<add>(e);
+    if (is_exactly<add>(e) || is_exactly<mul>(e)) {
+      const bool sum = is_exactly<add>(e);
       numeric acc = sum ? 0 : 1;
       for (std::size_t i = 0; i < e.nops(); ++i) {
         auto v = evaluate_at(e.op(i), point);
@@ -224,7 +261,7 @@ std::optional<numeric> Checker::evaluate_at(const ex& e, const Point& point) {
       }
       return acc;
     }
-    if (is_a<power>(e)) {
+    if (is_exactly<power>(e)) {
       auto base = evaluate_at(e.op(0), point), expo = evaluate_at(e.op(1), point);
       if (!base || !expo) return std::nullopt;
       if (base->is_zero() && !expo->is_pos_integer()) return std::nullopt;
@@ -233,11 +270,11 @@ std::optional<numeric> Checker::evaluate_at(const ex& e, const Point& point) {
       if (!v.is_real()) return std::nullopt;
       return v;
     }
-    if (is_a<function>(e) && e.nops() == 1) {
+    if (is_exactly<function>(e) && e.nops() == 1) {
       auto arg = evaluate_at(e.op(0), point);
       if (!arg) return std::nullopt;
       const ex v = evalf(function(ex_to<function>(e).get_serial(), ex(*arg)));
-      if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
+      if (!is_exactly<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
       return ex_to<numeric>(v);
     }
   } catch (const std::exception&) {
@@ -300,10 +337,7 @@ CheckResult Checker::check(const std::string& unknown, std::string_view answer) 
     break;
   }
   // A number with a unit: "6.8 N", "0.0068 kN", "1.53 lbf", "-2.25 m/s^2".
-  static const std::regex number_unit(R"(^([-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)\s*([A-Za-z][A-Za-z0-9/^*.\- ]*)?$)");
-  std::smatch match;
-  if (std::regex_match(text, match, number_unit))
-    return check_number(ref, match[1].str(), match[2].matched ? trim(match[2].str()) : "", r);
+  if (auto split = number_and_unit(text)) return check_number(ref, split->first, split->second, r);
   return check_expression(ref, text, r, start);
 }
 
@@ -409,9 +443,7 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
     r.score = v == Verdict::correct ? 1.0 : 0.0;
     return r;
   };
-  std::map<std::string, ex, std::less<>> names;
-  for (const auto& p : parameters_) names.emplace(p.name, p.symbol);
-  AnswerNames resolver(names);
+  AnswerNames resolver(answer_names_);
   const ParseResult parsed = parse_expression(text, resolver, options_.limits);
   if (!parsed.value) {
     const ParseProblem& p = parsed.problems.front();
@@ -448,8 +480,7 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
   }
   const ex answer = *parsed.value;
   if (is_vector(answer)) return finish(Verdict::invalid, "syntax", "the answer is a vector; a single value was expected");
-  r.echo_text = to_text(answer);
-  r.echo_latex = to_latex(answer);
+  std::tie(r.echo_text, r.echo_latex) = to_text_and_latex(answer);
   // Dimensions, from the parameters' own.
   std::string problem;
   const auto dim = dimension_of(answer, *symbols_, problem);

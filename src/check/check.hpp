@@ -97,6 +97,7 @@ class Checker {
   CheckOptions options_;
   std::shared_ptr<const SymbolTable> symbols_;
   std::vector<Parameter> parameters_;       // names an answer may use
+  std::map<std::string, GiNaC::ex, std::less<>> answer_names_;  // the same, by name
   std::vector<std::string> problem_unknowns_;
   GiNaC::exmap definitions_;                // defined parameters, expanded before comparing
   std::vector<Point> points_;

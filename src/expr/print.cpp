@@ -1,6 +1,9 @@
 #include "expr/print.hpp"
 
+#include "expr/kind.hpp"
+
 #include <algorithm>
+#include <memory>
 #include <tuple>
 #include <unordered_map>
 #include <sstream>
@@ -19,12 +22,23 @@ namespace {
 
 constexpr unsigned add_prec = 40, mul_prec = 50, pow_prec = 60;
 
-bool latex_ctx(const print_context& c) { return dynamic_cast<const print_latex*>(&c) != nullptr; }
+bool latex_ctx(const print_context& c) { return &c.get_class_info() == &tackle_latex::get_class_info_static(); }
 
 // Prints with a fresh context of the same kind (text or LaTeX) as `like`, into a string.
+// Renders nest (a key needs its factors' keys), so streams are reused from a per-depth pool
+// rather than constructed each time.
+thread_local std::vector<std::unique_ptr<std::ostringstream>> stream_pool;
+thread_local std::size_t stream_depth = 0;
+
 template <class Body>
 std::string in_context(const print_context& like, Body body) {
-  std::ostringstream os;
+  if (stream_pool.size() <= stream_depth) stream_pool.push_back(std::make_unique<std::ostringstream>());
+  std::ostringstream& os = *stream_pool[stream_depth++];
+  os.str(std::string());
+  os.clear();
+  struct Release {
+    ~Release() { --stream_depth; }
+  } release;
   if (latex_ctx(like)) {
     tackle_latex c(os);
     body(c);
@@ -54,16 +68,21 @@ void print_fraction(const Fraction& f, const print_context& c, unsigned level);
 
 // Sort keys are rendered once per node within one top-level print (the cache holds the
 // expressions too, so that no node's address is reused while its key is cached).
+struct Fraction;
 struct KeyCache {
   int depth = 0;
   std::unordered_map<const basic*, std::pair<ex, std::string>> keys;
+  std::unordered_map<const basic*, std::pair<ex, std::shared_ptr<const Fraction>>> splits;
 };
 thread_local KeyCache key_cache;
 
 struct TopLevelPrint {
   TopLevelPrint() { ++key_cache.depth; }
   ~TopLevelPrint() {
-    if (--key_cache.depth == 0) key_cache.keys.clear();
+    if (--key_cache.depth == 0) {
+      key_cache.keys.clear();
+      key_cache.splits.clear();
+    }
   }
 };
 
@@ -71,10 +90,10 @@ std::string key_of_uncached(const ex& e);
 
 // Sort key: the text form of an expression without its sign and numeric coefficient.
 std::string key_of(const ex& e) {
-  if (is_a<numeric>(e)) return "~";  // numbers after names in sums
+  if (is_exactly<numeric>(e)) return "~";  // numbers after names in sums
   // Fast paths for the common keys: a name, a name to an integer power.
-  if (is_a<symbol>(e)) return ex_to<symbol>(e).get_name();
-  if (is_a<power>(e) && is_a<symbol>(e.op(0)) && is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_pos_integer())
+  if (is_exactly<symbol>(e)) return ex_to<symbol>(e).get_name();
+  if (is_exactly<power>(e) && is_exactly<symbol>(e.op(0)) && is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_pos_integer())
     return ex_to<symbol>(e.op(0)).get_name() + "^" + std::to_string(ex_to<numeric>(e.op(1)).to_int());
   if (key_cache.depth == 0) return key_of_uncached(e);
   const basic* node = &ex_to<basic>(e);
@@ -85,25 +104,23 @@ std::string key_of(const ex& e) {
 }
 
 std::string key_of_uncached(const ex& e) {
-  if (is_a<mul>(e) || is_a<power>(e)) {
+  static const tackle_text text_like(std::cout);
+  if (is_exactly<mul>(e) || is_exactly<power>(e)) {
     Fraction f = split(e);
     f.negative = false;
     f.num_c = 1;
     f.den_c = 1;
-    return fraction_text(f, tackle_text(std::cout), 0);
+    return fraction_text(f, text_like, 0);
   }
-  std::ostringstream os;
-  tackle_text t(os);
-  e.print(t);
-  return os.str();
+  return in_context(text_like, [&](const print_context& c) { e.print(c); });
 }
 
 numeric coefficient(const ex& e) {
-  if (is_a<numeric>(e)) return ex_to<numeric>(e);
-  if (is_a<mul>(e)) {
+  if (is_exactly<numeric>(e)) return ex_to<numeric>(e);
+  if (is_exactly<mul>(e)) {
     numeric c = 1;
     for (const auto& f : e)
-      if (is_a<numeric>(f)) c *= ex_to<numeric>(f);
+      if (is_exactly<numeric>(f)) c *= ex_to<numeric>(f);
     return c;
   }
   return 1;
@@ -203,11 +220,23 @@ void print_add(const add& s, const print_context& c, unsigned level) {
   if (paren) os << (latex ? "\\right)" : ")");
 }
 
-// Splits a product into sign, |coefficient|, numerator factors and denominator factors.
+Fraction split_uncached(const ex& e);
+
+// Splits a product into sign, |coefficient|, numerator factors and denominator factors (once
+// per node within a top-level print).
 Fraction split(const ex& e) {
+  if (key_cache.depth == 0) return split_uncached(e);
+  const basic* node = &ex_to<basic>(e);
+  if (auto it = key_cache.splits.find(node); it != key_cache.splits.end()) return *it->second.second;
+  auto f = std::make_shared<const Fraction>(split_uncached(e));
+  key_cache.splits.emplace(node, std::make_pair(e, f));
+  return *f;
+}
+
+Fraction split_uncached(const ex& e) {
   Fraction f;
   auto factor = [&](const ex& x) {
-    if (is_a<numeric>(x)) {
+    if (is_exactly<numeric>(x)) {
       const numeric n = ex_to<numeric>(x);
       if (n.is_rational()) {
         if (n.is_negative()) f.negative = !f.negative;
@@ -216,13 +245,13 @@ Fraction split(const ex& e) {
       } else {
         f.num.push_back(x);
       }
-    } else if (is_a<power>(x) && is_a<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_negative()) {
+    } else if (is_exactly<power>(x) && is_exactly<numeric>(x.op(1)) && ex_to<numeric>(x.op(1)).is_negative()) {
       f.den.push_back(pow(x.op(0), -x.op(1)));
     } else {
       f.num.push_back(x);
     }
   };
-  if (is_a<mul>(e))
+  if (is_exactly<mul>(e))
     for (const auto& x : e) factor(x);
   else
     factor(e);
@@ -236,7 +265,7 @@ Fraction split(const ex& e) {
   };
   for (auto* side : {&f.num, &f.den})
     for (auto& x : *side)
-      if (is_a<add>(x) && flip_sum(x)) {
+      if (is_exactly<add>(x) && flip_sum(x)) {
         x = (-x).expand();
         f.negative = !f.negative;
       }
@@ -244,7 +273,7 @@ Fraction split(const ex& e) {
     bool moved = false;
     for (auto* side : {&f.num, &f.den}) {
       for (auto& x : *side)
-        if (is_a<add>(x) && balance(x) == 0) {
+        if (is_exactly<add>(x) && balance(x) == 0) {
           x = (-x).expand();
           f.negative = false;
           moved = true;
@@ -255,8 +284,8 @@ Fraction split(const ex& e) {
   }
   // Factors: plain names first (m_A), then rates and accelerations (ddot(x_A)), then the rest.
   auto rank = [](const ex& x) {
-    const ex base = is_a<power>(x) ? x.op(0) : x;
-    if (is_a<symbol>(base)) return ex_to<symbol>(base).get_name().find('(') == std::string::npos ? 0 : 1;
+    const ex base = is_exactly<power>(x) ? x.op(0) : x;
+    if (is_exactly<symbol>(base)) return ex_to<symbol>(base).get_name().find('(') == std::string::npos ? 0 : 1;
     return 2;
   };
   // Each factor's key is rendered once, then the factors are sorted by (rank, key).
@@ -286,7 +315,7 @@ void print_product(const numeric& coeff, const std::vector<ex>& factors, const p
   }
   for (const auto& f : factors) {
     // In LaTeX a number directly before a number needs a visible product sign.
-    if (!first) os << (latex ? ((is_a<numeric>(f)) ? " \\cdot " : " ") : "*");
+    if (!first) os << (latex ? ((is_exactly<numeric>(f)) ? " \\cdot " : " ") : "*");
     f.print(c, (standalone_parens || !first || factors.size() > 1 || coeff != 1) ? mul_prec : 0);
     first = false;
   }
@@ -329,7 +358,7 @@ void print_power(const power& p, const print_context& c, unsigned level) {
   const bool latex = latex_ctx(c);
   std::ostream& os = c.s;
   const ex base = p.op(0), expo = p.op(1);
-  if (is_a<numeric>(expo) && ex_to<numeric>(expo).is_negative()) {
+  if (is_exactly<numeric>(expo) && ex_to<numeric>(expo).is_negative()) {
     print_fraction(split(ex(p)), c, level);
     return;
   }
@@ -342,15 +371,15 @@ void print_power(const power& p, const print_context& c, unsigned level) {
   }
   const bool paren = level >= pow_prec;
   if (paren) os << (latex ? "\\left(" : "(");
-  const bool base_paren = !(is_a<symbol>(base) || (is_a<numeric>(base) && ex_to<numeric>(base).is_pos_integer()) ||
-                            is_a<function>(base));
+  const bool base_paren = !(is_exactly<symbol>(base) || (is_exactly<numeric>(base) && ex_to<numeric>(base).is_pos_integer()) ||
+                            is_exactly<function>(base));
   if (base_paren) os << (latex ? "\\left(" : "(");
   os << render(base, c, base_paren ? 0 : pow_prec);
   if (base_paren) os << (latex ? "\\right)" : ")");
   if (latex) {
     os << "^{" << render(expo, c, 0) << "}";
   } else {
-    const bool simple = is_a<symbol>(expo) || (is_a<numeric>(expo) && ex_to<numeric>(expo).is_pos_integer());
+    const bool simple = is_exactly<symbol>(expo) || (is_exactly<numeric>(expo) && ex_to<numeric>(expo).is_pos_integer());
     os << "^" << (simple ? "" : "(") << render(expo, c, 0) << (simple ? "" : ")");
   }
   if (paren) os << (latex ? "\\right)" : ")");
@@ -376,19 +405,25 @@ void ensure_registered() { static Registration once; }
 std::string to_text(const ex& e) {
   ensure_registered();
   TopLevelPrint scope;
-  std::ostringstream os;
-  tackle_text c(os);
-  e.print(c);
-  return os.str();
+  static const tackle_text text_like(std::cout);
+  return in_context(text_like, [&](const print_context& c) { e.print(c); });
 }
 
 std::string to_latex(const ex& e) {
   ensure_registered();
   TopLevelPrint scope;
-  std::ostringstream os;
-  tackle_latex c(os);
-  e.print(c);
-  return os.str();
+  static const tackle_latex latex_like(std::cout);
+  return in_context(latex_like, [&](const print_context& c) { e.print(c); });
+}
+
+}  // namespace tackle
+
+namespace tackle {
+
+std::pair<std::string, std::string> to_text_and_latex(const ex& e) {
+  ensure_registered();
+  TopLevelPrint scope;  // one key cache for both
+  return {to_text(e), to_latex(e)};
 }
 
 }  // namespace tackle

@@ -28,5 +28,7 @@ class tackle_latex : public GiNaC::print_latex {
 
 [[nodiscard]] std::string to_text(const GiNaC::ex& e);
 [[nodiscard]] std::string to_latex(const GiNaC::ex& e);
+/// Both at once (the sort keys are worked out once for the two).
+[[nodiscard]] std::pair<std::string, std::string> to_text_and_latex(const GiNaC::ex& e);
 
 }  // namespace tackle
