@@ -26,20 +26,23 @@ const Case cases[] = {
     {"sample-12.7-suitcase.yaml", "N_A", "m*g/2", "incorrect"},
 };
 
-const tackle::Checker& checker_for(const std::string& example) {
+const tackle::Checker& checker_for(const std::string& example, bool latex = true) {
   static std::map<std::string, std::pair<std::unique_ptr<const tackle::Analysis>, std::unique_ptr<tackle::Checker>>> made;
-  auto it = made.find(example);
+  const std::string key = example + (latex ? "" : " (no latex)");
+  auto it = made.find(key);
   if (it == made.end()) {
     static const tackle::RuleSet rules = tackle::load_rules(TACKLE_SOURCE_DIR "/rules");
     auto analysis = tackle::analyze_file(TACKLE_SOURCE_DIR "/examples/" + example, rules);
-    auto checker = std::make_unique<tackle::Checker>(*analysis);
-    it = made.emplace(example, std::make_pair(std::move(analysis), std::move(checker))).first;
+    tackle::CheckOptions options;
+    options.echo_latex = latex;
+    auto checker = std::make_unique<tackle::Checker>(*analysis, options);
+    it = made.emplace(key, std::make_pair(std::move(analysis), std::move(checker))).first;
   }
   return *it->second.second;
 }
 
-void check_one(benchmark::State& state, const Case& c) {
-  const tackle::Checker& checker = checker_for(c.example);
+void check_one(benchmark::State& state, const Case& c, bool latex) {
+  const tackle::Checker& checker = checker_for(c.example, latex);
   const auto first = checker.check(c.unknown, c.answer);
   if (tackle::verdict_name(first.verdict) != c.expect) {
     state.SkipWithError(("unexpected verdict " + tackle::verdict_name(first.verdict)).c_str());
@@ -57,9 +60,12 @@ void check_batch(benchmark::State& state) {
 }
 
 int register_cases() {
-  for (const auto& c : cases)
-    benchmark::RegisterBenchmark((std::string("check/") + c.unknown + "/" + c.answer).c_str(), check_one, c)
+  for (const auto& c : cases) {
+    benchmark::RegisterBenchmark((std::string("check/") + c.unknown + "/" + c.answer).c_str(), check_one, c, true)
         ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark((std::string("check-no-latex/") + c.unknown + "/" + c.answer).c_str(), check_one, c, false)
+        ->Unit(benchmark::kMicrosecond);
+  }
   benchmark::RegisterBenchmark("check/batch", check_batch)->Unit(benchmark::kMicrosecond);
   return 0;
 }

@@ -54,22 +54,23 @@ def sympy_times(repeats=7, loops=20):
 
 def tackle_times(build):
     out = subprocess.run(
-        [f"{build}/bench/tackle_bench", "--benchmark_filter=^check/", "--benchmark_repetitions=5",
+        [f"{build}/bench/tackle_bench", "--benchmark_filter=^check", "--benchmark_repetitions=5",
          "--benchmark_report_aggregates_only=true", "--benchmark_format=json", "--benchmark_min_time=0.2"],
         capture_output=True, text=True, check=True).stdout
     medians = {b["run_name"]: b["real_time"] for b in json.loads(out)["benchmarks"] if b.get("aggregate_name") == "median"}
-    return [medians[f"check/{u}/{a}"] for u, a, _ in CASES], medians.get("check/batch")
+    return ([medians[f"check/{u}/{a}"] for u, a, _ in CASES], [medians[f"check-no-latex/{u}/{a}"] for u, a, _ in CASES],
+            medians.get("check/batch"))
 
 
 def main():
     build = sys.argv[1] if len(sys.argv) > 1 else "build"
-    ours, batch = tackle_times(build)
+    ours, plain, batch = tackle_times(build)
     theirs = sympy_times()
-    print(f"{'answer':40} {'tackle us':>10} {'SymPy us':>10} {'ratio':>8}")
-    for (unknown, answer, _), t, s in zip(CASES, ours, theirs):
-        print(f"{unknown + ': ' + answer:40} {t:10.1f} {s:10.1f} {s / t:8.0f}")
-    mt, ms = statistics.median(ours), statistics.median(theirs)
-    print(f"{'median per check':40} {mt:10.1f} {ms:10.1f} {ms / mt:8.0f}")
+    print(f"{'answer':40} {'tackle us':>10} {'no LaTeX':>10} {'SymPy us':>10} {'ratio':>8}")
+    for (unknown, answer, _), t, p, s in zip(CASES, ours, plain, theirs):
+        print(f"{unknown + ': ' + answer:40} {t:10.1f} {p:10.1f} {s:10.1f} {s / t:8.0f}")
+    mt, mp, ms = statistics.median(ours), statistics.median(plain), statistics.median(theirs)
+    print(f"{'median per check':40} {mt:10.1f} {mp:10.1f} {ms:10.1f} {ms / mt:8.0f}")
     if batch:
         print(f"batch of {len(CASES)}: {batch / len(CASES):.1f} us per check")
 

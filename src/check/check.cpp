@@ -245,7 +245,10 @@ std::optional<numeric> Checker::value_at(const ex& e, std::size_t point) const {
 // rebuilt. nullopt: a symbol without a value, a division by zero, a complex value.
 std::optional<numeric> Checker::evaluate_at(const ex& e, const Point& point) {
   try {
-    if (is_exactly<numeric>(e)) return ex_to<numeric>(e);
+    if (is_exactly<numeric>(e)) {
+      if (!ex_to<numeric>(e).is_real()) return std::nullopt;
+      return ex_to<numeric>(e);
+    }
     if (is_exactly<symbol>(e)) {
       for (const auto& [s, v] : point)
         if (s.is_equal(e)) return v;
@@ -337,7 +340,22 @@ CheckResult Checker::check(const std::string& unknown, std::string_view answer) 
     break;
   }
   // A number with a unit: "6.8 N", "0.0068 kN", "1.53 lbf", "-2.25 m/s^2".
-  if (auto split = number_and_unit(text)) return check_number(ref, split->first, split->second, r);
+  auto split = number_and_unit(text);
+  if (split && !split->second.empty()) {
+    // Not a unit, but it starts with a parameter's name: read it as an expression ("2 a m"
+    // then says "missing '*'").
+    std::string err;
+    int col = 0;
+    const std::string first_word = split->second.substr(0, split->second.find_first_of(" */^.-"));
+    if (!parse_unit(split->second, err, col) && answer_names_.count(first_word)) split.reset();
+  }
+  if (split) {
+    CheckResult n = check_number(ref, split->first, split->second, r);
+    if (n.verdict != Verdict::correct && answer_names_.count(split->second))
+      n.findings.push_back({"syntax", "if you meant " + split->first + "*" + split->second + ", write the * (" + text +
+                                          " is read as a number with a unit)"});
+    return n;
+  }
   return check_expression(ref, text, r, start);
 }
 
@@ -363,7 +381,7 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
   std::string unit_shown = std::string(unit_text);
   if (unit_text.empty()) {
     if (!(expected == Dimension::none()))
-      return finish(Verdict::invalid, "no_unit", "give the unit: the answer is a " + expected.describe() + " (in SI, " +
+      return finish(Verdict::invalid, "no_unit", "give the unit: the answer is " + with_article(expected.describe()) + " (in SI, " +
                                                      si_unit_name(expected) + ")");
   } else {
     std::string err;
@@ -371,9 +389,9 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
     auto unit = parse_unit(unit_text, err, col);
     if (!unit) return finish(Verdict::invalid, "unit", err + " (expected a unit such as " + si_unit_name(expected) + ")");
     if (!(unit->dimension == expected))
-      return finish(Verdict::incorrect, "dimension", "the unit " + std::string(unit_text) + " is a " +
-                                                         unit->dimension.describe() + "; a " + expected.describe() +
-                                                         " was expected");
+      return finish(Verdict::incorrect, "dimension", "the unit " + std::string(unit_text) + " is " +
+                                                         with_article(unit->dimension.describe()) + "; " +
+                                                         with_article(expected.describe()) + " was expected");
     value *= unit->to_si;
   }
   r.echo_text = std::string(number) + (unit_text.empty() ? "" : " " + std::string(unit_text));
@@ -480,14 +498,17 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
   }
   const ex answer = *parsed.value;
   if (is_vector(answer)) return finish(Verdict::invalid, "syntax", "the answer is a vector; a single value was expected");
-  std::tie(r.echo_text, r.echo_latex) = to_text_and_latex(answer);
+  if (options_.echo_latex)
+    std::tie(r.echo_text, r.echo_latex) = to_text_and_latex(answer);
+  else
+    r.echo_text = to_text(answer);
   // Dimensions, from the parameters' own.
   std::string problem;
   const auto dim = dimension_of(answer, *symbols_, problem);
   if (!dim && !problem.empty()) return finish(Verdict::incorrect, "dimension", "the answer is dimensionally inconsistent: it " + problem);
   if (dim && ref.dimension && !(*dim == *ref.dimension))
     return finish(Verdict::incorrect, "dimension",
-                  "this is a " + dim->describe() + "; a " + ref.dimension->describe() + " was expected");
+                  "this is " + with_article(dim->describe()) + "; " + with_article(ref.dimension->describe()) + " was expected");
   // Numeric first (cheap, and it settles every wrong answer): the answer at the random points,
   // exactly in rationals where it can be, else in CLN floats to `digits`.
   const ex expanded = answer.subs(definitions_);

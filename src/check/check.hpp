@@ -32,6 +32,7 @@ struct CheckOptions {
   std::chrono::milliseconds time_budget{250};  // per answer
   int points = 4;                              // random points for the numeric comparison
   int digits = 40;                             // precision of the numeric comparison (CLN)
+  bool echo_latex = true;                      // echo the answer as read in LaTeX too
 };
 
 enum class Verdict { correct, incorrect, invalid, undecided };

@@ -86,6 +86,8 @@ int main(int argc, char** argv) {
   check->add_option("--sig-figs", sig_figs, "Instead of the tolerance: numbers must match to this many significant figures")
       ->check(CLI::Range(1, 15));
   check->add_flag("--require-simplified", require_simplified, "A correct answer that is not simplified is incorrect");
+  bool no_latex = false;
+  check->add_flag("--no-latex", no_latex, "Do not echo answers in LaTeX (faster batches)");
   check->add_option("--format", format, "Output format (single answers)")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
   check->add_option("-o,--output", out, "Write to this file instead of standard output");
   answer_opt->needs(unknown_opt);
@@ -135,6 +137,7 @@ int main(int argc, char** argv) {
       options.relative_tolerance = tolerance;
       if (sig_figs > 0) options.significant_figures = sig_figs;
       options.require_simplified = require_simplified;
+      options.echo_latex = !no_latex;
       const tackle::Checker checker(*analysis, options);
       if (batch_opt->count() > 0) {
         std::ifstream batch_file;

@@ -238,6 +238,11 @@ std::string unit_latex(std::string_view unit_text) {
   return out + "}";
 }
 
+std::string with_article(const std::string& noun) {
+  const bool vowel = !noun.empty() && std::string("aeiou").find(noun[0]) != std::string::npos;
+  return (vowel ? "an " : "a ") + noun;
+}
+
 std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup& lookup,
                                       std::string& problem) {
   using namespace GiNaC;
@@ -251,7 +256,10 @@ std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup&
       if (!first) {
         first = d;
       } else if (!(*first == *d)) {
-        problem = "adds a " + first->describe() + " to a " + d->describe();
+        // In name order, so that the message does not depend on the order of the terms.
+        std::string x = first->describe(), y = d->describe();
+        if (y < x) std::swap(x, y);
+        problem = "adds " + with_article(x) + " to " + with_article(y);
         return std::nullopt;
       }
     }
@@ -287,7 +295,7 @@ std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup&
         return r;
       }
     }
-    problem = "raises a " + base->describe() + " to a non-numeric power";
+    problem = "raises " + with_article(base->describe()) + " to a non-numeric power";
     return std::nullopt;
   }
   if (is_a<function>(e)) {
@@ -297,7 +305,7 @@ std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup&
     if (!arg) return std::nullopt;
     if (name == "abs") return arg;
     if (!(*arg == Dimension::none())) {
-      problem = "takes " + name + " of a " + arg->describe();
+      problem = "takes " + name + " of " + with_article(arg->describe());
       return std::nullopt;
     }
     return Dimension::none();

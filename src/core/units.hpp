@@ -61,6 +61,9 @@ std::optional<Unit> parse_unit(std::string_view text, std::string& error, int& e
 /// The same unit as LaTeX (`\mathrm{m/s^{2}}`).
 [[nodiscard]] std::string unit_latex(std::string_view unit_text);
 
+/// "a force", "an acceleration".
+[[nodiscard]] std::string with_article(const std::string& noun);
+
 /// Dimension of an expression whose symbols have the given dimensions. Returns nullopt and
 /// sets `problem` when terms of a sum disagree or a symbol's dimension is unknown
 /// (`unknown_symbol` is then set and `problem` is empty).

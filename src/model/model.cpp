@@ -86,7 +86,7 @@ struct Builder {
       return;
     }
     if (!(*dim == expected))
-      diags.error(at, what + " is a " + dim->describe() + " (expected a " + expected.describe() + ")");
+      diags.error(at, what + " is " + with_article(dim->describe()) + " (expected " + with_article(expected.describe()) + ")");
   }
 
   void parameters() {

@@ -222,3 +222,40 @@ TEST_CASE("CLI: isolate finds axis OG for the sign-board's rod; usage and input 
   CHECK(j["isolations"][1]["found"] == false);
   CHECK(j["isolations"][1]["impossible"] == true);
 }
+
+TEST_CASE("CLI: check one answer, as text and JSON; usage errors exit 2", "[cli][check]") {
+  const std::string board = examples + "sample-12.8-sign-board.yaml";
+  Run r = run_tackle("check " + board + " --unknown T_HI --answer 'm*a*sqrt(b^2+d^2+e^2)/d'");
+  CHECK(r.code == 0);
+  CHECK(r.out == "incorrect: off by a factor of 2 (the answer is twice the correct answer)\n"
+                 "  read as: a*m*sqrt(b^2 + d^2 + e^2)/d\n");
+  r = run_tackle("check " + board + " --unknown T_HI --answer '1.53 lbf' --format json");
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["version"] == 1);
+  CHECK(j["verdict"] == "correct");
+  CHECK(j["method"] == "number");
+  CHECK(run_tackle("check " + board).code == 2);
+  CHECK(run_tackle("check " + board + " --unknown T_HI").code == 2);
+  CHECK(run_tackle("check " + board + " --answer 3").code == 2);
+  CHECK(run_tackle("check " + board + " --unknown T_HI --answer x --tolerance 2").code == 2);
+}
+
+TEST_CASE("CLI: check a batch into JSON Lines and a grader results file", "[cli][check][batch]") {
+  const fs::path dir = fs::temp_directory_path() / "tackle-batch";
+  fs::create_directories(dir);
+  std::ofstream(dir / "subs.jsonl") << "{\"id\": \"a\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/(2*d)\"}\n"
+                                    << "{\"id\": \"b\", \"unknown\": \"T_HI\", \"answer\": \"9^(9^9)\"}\n";
+  const Run r = run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + (dir / "subs.jsonl").string() +
+                           " --results " + (dir / "results.json").string());
+  CHECK(r.code == 0);
+  std::istringstream lines(r.out);
+  std::string first, second;
+  std::getline(lines, first);
+  std::getline(lines, second);
+  CHECK(nlohmann::json::parse(first)["verdict"] == "correct");
+  CHECK(nlohmann::json::parse(second)["verdict"] == "invalid");
+  const auto grader = nlohmann::json::parse(slurp(dir / "results.json"));
+  CHECK(grader["score"] == Approx(0.5));
+  CHECK(run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch /no/such.jsonl").code == 1);
+  fs::remove_all(dir);
+}

@@ -1,0 +1,174 @@
+// Checking answers: verdicts and the feedback a student sees, word for word.
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "check/batch.hpp"
+#include "../../support/helpers.hpp"
+
+using namespace tackle;
+
+namespace {
+const Checker& checker(const std::string& example) {
+  static std::map<std::string, std::pair<std::unique_ptr<const Analysis>, std::unique_ptr<Checker>>> made;
+  auto it = made.find(example);
+  if (it == made.end()) {
+    auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/" + example, test::rules());
+    auto c = std::make_unique<Checker>(*a);
+    it = made.emplace(example, std::make_pair(std::move(a), std::move(c))).first;
+  }
+  return *it->second.second;
+}
+const Checker& board() { return checker("sample-12.8-sign-board.yaml"); }
+const Checker& suitcase() { return checker("sample-12.7-suitcase.yaml"); }
+}  // namespace
+
+TEST_CASE("Check: equivalent forms of the sign-board tension are correct", "[check]") {
+  for (const char* a : {"m*a*l/(2*d)", "a*m*sqrt(d^2+b^2+e^2)/d/2", "m*a*sqrt(b^2 + d^2 + e^2)/(2*d)",
+                        "T_HI = (m*a/2) * l/d", "0.5*m*a*l/d", "m*a*(b^2+d^2+e^2)/(2*d*sqrt(b^2+d^2+e^2))"}) {
+    INFO(a);
+    const auto r = board().check("T_HI", a);
+    CHECK(r.verdict == Verdict::correct);
+    CHECK(r.score == 1.0);
+  }
+}
+
+TEST_CASE("Check: off by a factor of 2, wrong sign, swapped l and d", "[check]") {
+  auto r = board().check("T_HI", "m*a*sqrt(b^2+d^2+e^2)/d");
+  CHECK(r.verdict == Verdict::incorrect);
+  CHECK(r.summary == "off by a factor of 2 (the answer is twice the correct answer)");
+  r = board().check("T_HI", "-m*a*l/(2*d)");
+  CHECK(r.summary == "the sign is wrong");
+  r = board().check("T_HI", "m*a*d/(2*l)");
+  CHECK(r.verdict == Verdict::incorrect);
+  CHECK(r.summary == "d and l are swapped");
+}
+
+TEST_CASE("Check: the suitcase's normal force without friction is correct only for mu = 0", "[check]") {
+  const auto r = suitcase().check("N_A", "m*g/2");
+  CHECK(r.verdict == Verdict::incorrect);
+  CHECK(r.summary == "this is correct only without friction (mu = 0)");
+  std::vector<std::string> codes;
+  for (const auto& f : r.findings) codes.push_back(f.code);
+  CHECK(codes == std::vector<std::string>{"special_case", "special_case", "missing_parameter"});
+  CHECK(r.findings[1].message == "this is correct only for h = 0");
+  CHECK(r.findings[2].message == "the correct answer depends on mu, l and h, and this one does not");
+}
+
+TEST_CASE("Check: the other contact's force is recognised", "[check]") {
+  CHECK(suitcase().check("N_A", "m*g*(1/2 + mu*h/l)").summary == "this is the value of N_B, not of N_A");
+}
+
+TEST_CASE("Check: dimensions, from the problem's own parameters", "[check]") {
+  auto r = board().check("T_HI", "m + a");
+  CHECK(r.verdict == Verdict::incorrect);
+  CHECK(r.summary == "the answer is dimensionally inconsistent: it adds an acceleration to a mass");
+  r = board().check("T_HI", "m*a/d");
+  CHECK(r.summary == "this is a stiffness (force per length); a force was expected");
+  CHECK(board().check("T_HI", "sqrt(m)*a").summary == "the answer is dimensionally inconsistent: it takes a fractional power of a mass");
+}
+
+TEST_CASE("Check: invalid answers name what to fix", "[check][invalid]") {
+  CHECK(board().check("T_HI", "ma*l/(2*d)").summary ==
+        "at column 1: unknown name 'ma': did you mean 'm*a'? (write products with *)");
+  CHECK(board().check("T_HI", "M*a").summary ==
+        "at column 1: unknown name 'M': did you mean 'm'? (names are case-sensitive; subscripts are written with _)");
+  CHECK(board().check("T_HI", "T_HI*2").summary ==
+        "at column 1: T_HI is an unknown of this problem; write the answer in the given quantities (m, a, g, b, c, d, e, l)");
+  const auto two_m = board().check("T_HI", "2 m");
+  CHECK(two_m.summary == "the unit m is a length; a force was expected");
+  CHECK(two_m.findings.back().message == "if you meant 2*m, write the * (2 m is read as a number with a unit)");
+  CHECK(board().check("T_HI", "2 a m").summary == "at column 3: missing '*' before 'a'");
+  CHECK(board().check("T_HI", "foo(m)").summary ==
+        "at column 1: unknown function 'foo' (known: sqrt, abs, sin, cos, tan, exp, log, dot, ddot, unit, norm, cross, "
+        "inner, perp1, perp2)");
+  CHECK(board().check("T_HI", "O_z = m*a").summary == "this is an answer for O_z, but T_HI was asked for");
+  CHECK(board().check("Q", "m").summary == "'Q' is not an unknown tackle can check for this problem (checkable: T_HI)");
+  CHECK(board().check("T_HI", "").verdict == Verdict::invalid);
+}
+
+TEST_CASE("Check: hostile inputs are invalid within the budget", "[check][invalid][limits]") {
+  const auto start = std::chrono::steady_clock::now();
+  const std::string deep = std::string(10000, '(') + "m" + std::string(10000, ')');
+  CHECK(board().check("T_HI", deep).summary == "the answer is too long (20001 characters; at most 1000)");
+  CHECK(board().check("T_HI", std::string(1 << 20, 'x')).summary == "the answer is too long (1048576 characters; at most 1000)");
+  const std::string nested = std::string(100, '(') + "m" + std::string(100, ')');
+  CHECK(board().check("T_HI", nested).summary == "at column 33: expression is nested too deeply (at most 32 levels)");
+  CHECK(board().check("T_HI", "9^(9^9)").summary == "at column 2: exponent is too large (at most 32)");
+  CHECK(board().check("T_HI", "(m+a+b+d+e)^32*l/d").verdict != Verdict::correct);  // bounded: no blow-up
+  CHECK(board().check("T_HI", "sqrt(-1)*m*a*l/(2*d)").verdict == Verdict::undecided);
+  for (const char* a : {"m/0", "1e99 N", "m^m^m^m^m^m^m", "[m, a]"}) {
+    INFO(a);
+    const auto r = board().check("T_HI", a);
+    CHECK(r.verdict != Verdict::correct);
+  }
+  CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
+}
+
+TEST_CASE("Check: numbers with units, converted, within the tolerance", "[check][units]") {
+  for (const char* a : {"6.8 N", "0.0068 kN", "1.53 lbf", "T_HI = 6.78 N", "6.78233 kg*m/s^2"}) {
+    INFO(a);
+    CHECK(board().check("T_HI", a).verdict == Verdict::correct);
+  }
+  CHECK(board().check("T_HI", "6.78").summary == "give the unit: the answer is a force (in SI, N)");
+  CHECK(board().check("T_HI", "6.78 m").summary == "the unit m is a length; a force was expected");
+  CHECK(board().check("T_HI", "6.78 kgg").summary == "unknown unit 'kgg' (expected a unit such as N)");
+  CHECK(board().check("T_HI", "678 N").summary == "off by a factor of 10^2: check the unit prefix or the conversion");
+  CHECK(board().check("T_HI", "-6.78 N").summary == "the sign is wrong");
+  CHECK(board().check("T_HI", "7.0 N").verdict == Verdict::incorrect);  // 3.2 % off
+  CheckOptions loose;
+  loose.relative_tolerance = 0.05;
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.8-sign-board.yaml", test::rules());
+  CHECK(Checker(*a, loose).check("T_HI", "7.0 N").verdict == Verdict::correct);
+  CheckOptions figures;
+  figures.significant_figures = 3;
+  const Checker sig(*a, figures);
+  CHECK(sig.check("T_HI", "6.78 N").verdict == Verdict::correct);
+  CHECK(sig.check("T_HI", "6.8 N").verdict == Verdict::incorrect);
+}
+
+TEST_CASE("Check: a correct answer that is not simplified is said so, and can be required", "[check]") {
+  const std::string long_form = "m*a*l*d*d/(2*d*d*d) + 0*m";
+  auto r = board().check("T_HI", long_form);
+  CHECK(r.verdict == Verdict::correct);
+  REQUIRE(!r.findings.empty());
+  CHECK(r.findings.back().message == "correct, but it simplifies to a*l*m/(2*d)");
+  CheckOptions strict;
+  strict.require_simplified = true;
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.8-sign-board.yaml", test::rules());
+  r = Checker(*a, strict).check("T_HI", long_form);
+  CHECK(r.verdict == Verdict::incorrect);
+}
+
+TEST_CASE("Check: a batch grades every line and writes the grader shape", "[check][batch]") {
+  std::istringstream in(
+      "{\"id\": \"s1\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/(2*d)\"}\n"
+      "{\"id\": \"s2\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/d\"}\n"
+      "not json\n"
+      "\n"
+      "{\"id\": 3, \"unknown\": \"T_HI\", \"answer\": 6.8}\n");
+  std::ostringstream out;
+  const BatchSummary s = check_batch(board(), in, out);
+  CHECK(s.lines == 4);
+  CHECK(s.correct == 1);
+  std::vector<nlohmann::json> lines;
+  std::istringstream results(out.str());
+  for (std::string l; std::getline(results, l);) lines.push_back(nlohmann::json::parse(l));
+  REQUIRE(lines.size() == 4);
+  CHECK(lines[0]["verdict"] == "correct");
+  CHECK(lines[1]["verdict"] == "incorrect");
+  CHECK(lines[1]["findings"][0]["code"] == "factor");
+  CHECK(lines[2]["verdict"] == "invalid");
+  CHECK(lines[2]["summary"] == "line 3: not a JSON object with id, unknown and answer");
+  CHECK(lines[3]["id"] == "3");
+  CHECK(lines[3]["verdict"] == "invalid");  // a bare number for a force: no unit
+  const auto grader = nlohmann::json::parse(s.grader_json);
+  CHECK(grader["gradable"] == true);
+  CHECK(grader["score"] == Approx(0.25));
+  CHECK(grader["tests"].size() == 4);
+  CHECK(grader["tests"][0]["max_score"] == 1);
+  CHECK(grader["tests"][1]["output"] == "incorrect: off by a factor of 2 (the answer is twice the correct answer)");
+}
