@@ -46,8 +46,12 @@ int main(int argc, char** argv) {
                                                      {"latex", tackle::Format::latex},
                                                      {"markdown", tackle::Format::markdown},
                                                      {"json", tackle::Format::json}};
+  int digits = 6;
   auto with_common_options = [&](CLI::App* sub) {
     sub->add_option("file", file, "Problem description (YAML)")->required();
+    sub->add_option("--digits", digits, "Significant digits of the numbers (any precision)")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
     sub->add_option("--format", format, "Output format")
         ->check(CLI::IsMember({"text", "latex", "markdown", "json"}))
         ->capture_default_str();
@@ -165,7 +169,7 @@ int main(int argc, char** argv) {
       const auto result = checker.check(unknown, answer);
       return emit(format == "json" ? tackle::result_json(result, answer) : tackle::result_text(result), out);
     }
-    const tackle::Derivation d = tackle::explain(*analysis);
+    const tackle::Derivation d = tackle::explain(*analysis, tackle::ReportOptions{digits});
     return emit(tackle::write(d, formats.at(format), derive->parsed()), out);
   } catch (const tackle::InputError& e) {
     return report_input_error(e);

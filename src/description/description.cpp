@@ -231,7 +231,7 @@ struct Reader {
       FindDesc f;
       if (item.IsScalar()) {
         f.name = Text{item.Scalar(), where(item, file)};
-      } else if (check_map(item, {"name", "expr", "tex"}, "an entry of 'find'", file, diags)) {
+      } else if (check_map(item, {"name", "expr", "tex", "unit"}, "an entry of 'find'", file, diags)) {
         if (auto nm = opt_scalar(item, "name", "an entry of 'find'"))
           f.name = *nm;
         else {
@@ -240,6 +240,7 @@ struct Reader {
         }
         f.expr = opt_scalar(item, "expr", "'" + f.name.text + "' in 'find'");
         f.tex = opt_scalar(item, "tex", "'" + f.name.text + "' in 'find'");
+        f.unit = opt_scalar(item, "unit", "'" + f.name.text + "' in 'find'");
       } else {
         continue;
       }

@@ -72,6 +72,7 @@ struct FindDesc {
   Text name;                 // unknown name, e.g. ddot(x_A), or a new name for `expr`
   std::optional<Text> expr;  // a quantity defined from the unknowns, e.g. F/ddot(x_B)
   std::optional<Text> tex;
+  std::optional<Text> unit;  // report the number in this unit (lbf, ft/s^2, km/h, ...)
 };
 
 struct DeriveDesc {

@@ -823,6 +823,24 @@ struct Builder {
     }
   }
 
+  // The unit a `find` entry asks for, checked against the quantity's dimension.
+  std::optional<Unit> output_unit(const FindDesc& f, std::optional<Dimension> dim) {
+    if (!f.unit) return std::nullopt;
+    std::string err;
+    int col = 0;
+    auto unit = parse_unit(f.unit->text, err, col);
+    if (!unit) {
+      diags.error(f.unit->at.shifted(col), "unit of '" + f.name.text + "' in 'find': " + err);
+      return std::nullopt;
+    }
+    if (dim && !(unit->dimension == *dim)) {
+      diags.error(f.unit->at, "'" + f.name.text + "' is " + with_article(dim->describe()) + ", but " + f.unit->text +
+                                  " is " + with_article(unit->dimension.describe()));
+      return std::nullopt;
+    }
+    return unit;
+  }
+
   void given_and_find() {
     for (const auto& g : d.given) {
       auto r = parse_expression(g.text, *table);
@@ -848,7 +866,7 @@ struct Builder {
         if (!dim && !problem.empty()) diags.error(f.expr->at, "'" + f.name.text + "' in 'find' " + problem);
         const SymbolInfo& s = table->add(f.name.text, f.tex ? std::optional<std::string>(f.tex->text) : std::nullopt,
                                          SymbolRole::defined, dim, false, f.name.at);
-        m.wanted.push_back({s.name, s.tex, *e, true, dim});
+        m.wanted.push_back({s.name, s.tex, *e, true, dim, output_unit(f, dim)});
       } else {
         auto r = parse_expression(f.name.text, *table);
         if (!r.value) {
@@ -860,7 +878,7 @@ struct Builder {
           diags.error(f.name.at, "'find' lists '" + f.name.text + "', which is not a single name (use {name: ..., expr: ...})");
           continue;
         }
-        m.wanted.push_back({s->name, s->tex, s->sym, false, s->dimension});
+        m.wanted.push_back({s->name, s->tex, s->sym, false, s->dimension, output_unit(f, s->dimension)});
       }
     }
   }

@@ -69,6 +69,7 @@ struct Wanted {
   GiNaC::ex expr;  // the symbol itself, or the defining expression
   bool defined = false;
   std::optional<Dimension> dimension;
+  std::optional<Unit> unit;  // the unit to report it in (SI when absent)
 };
 
 /// A balance or constraint the user asked for (`derive`).

@@ -1,52 +1,128 @@
 #include "numeric/evaluate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include <fmt/format.h>
+#include <cln/integer.h>
+#include <cln/real.h>
 
 namespace tackle {
 
 using namespace GiNaC;
 
-std::string decimal_string(const numeric& v, int digits) {
-  if (v.is_rational()) {
-    // A terminating decimal of at most 15 digits is printed exactly.
-    numeric scaled = abs(v);
-    int k = 0;
-    while (!scaled.is_integer() && k < 15) {
-      scaled *= 10;
-      ++k;
-    }
-    if (scaled.is_integer()) {
-      std::ostringstream os;
-      os << scaled;
-      std::string s = os.str();
-      if (s.size() <= 15) {
-        if (k > 0) {
-          while (static_cast<int>(s.size()) <= k) s = "0" + s;
-          s.insert(s.size() - k, ".");
-        }
-        return (v.is_negative() ? "-" : "") + s;
-      }
-    }
+namespace {
+
+// Exact decimal digits of a terminating rational with at most `max_digits` significant
+// digits, or "" when it does not terminate within them.
+std::string terminating(const numeric& v, int max_digits) {
+  numeric scaled = abs(v);
+  int k = 0;
+  while (!scaled.is_integer() && k < max_digits) {
+    scaled *= 10;
+    ++k;
   }
-  return fmt::format("{:.{}g}", v.to_double(), digits);
+  if (!scaled.is_integer()) return {};
+  std::ostringstream os;
+  os << scaled;
+  std::string s = os.str();
+  if (static_cast<int>(s.size()) > std::max(max_digits, k + 1)) return {};
+  if (k > 0) {
+    while (static_cast<int>(s.size()) <= k) s = "0" + s;
+    s.insert(s.size() - k, ".");
+  }
+  return (v.is_negative() ? "-" : "") + s;
+}
+
+// |v| rounded to `digits` significant digits as (digit string, decimal exponent of the first
+// digit), computed in exact or CLN float arithmetic at enough precision.
+std::pair<std::string, long> significant(const numeric& v, int digits) {
+  const long saved = GiNaC::Digits;
+  GiNaC::Digits = std::max<long>(saved, digits + 20);
+  const numeric a = abs(v);
+  // The exponent of the first digit: from the double when it is in range, then corrected.
+  long e = static_cast<long>(std::floor(std::log10(a.to_double())));
+  auto scaled_by = [&](long exponent) { return ex_to<numeric>(evalf(a * pow(numeric(10), numeric(exponent)))); };
+  numeric s = scaled_by(digits - 1 - e);
+  const numeric low = pow(numeric(10), numeric(digits - 1)), high = pow(numeric(10), numeric(digits));
+  if (s < low) {
+    --e;
+    s = scaled_by(digits - 1 - e);
+  } else if (s >= high) {
+    ++e;
+    s = scaled_by(digits - 1 - e);
+  }
+  // Round half up to an integer (CLN: an exact integer, printed in full).
+  const cln::cl_I rounded = cln::floor1(cln::the<cln::cl_R>(ex_to<numeric>(evalf(s + numeric(1, 2))).to_cl_N()));
+  std::ostringstream os;
+  os << numeric(rounded);
+  std::string str = os.str();
+  if (static_cast<int>(str.size()) > digits) {  // 9.99... rounded up to 10.0...
+    ++e;
+    str = str.substr(0, digits);
+  }
+  GiNaC::Digits = saved;
+  return {str, e};
+}
+
+}  // namespace
+
+std::string decimal_string(const numeric& v, int digits) {
+  if (v.is_zero()) return "0";
+  if (v.is_rational())
+    if (std::string t = terminating(v, std::max(15, digits)); !t.empty()) return t;
+  auto [mantissa, e] = significant(v, digits);
+  // Plain notation for moderate exponents, else scientific.
+  std::string out;
+  if (e >= -5 && e < std::max(digits, 15)) {
+    if (e >= 0) {
+      std::string s = mantissa;
+      while (static_cast<long>(s.size()) <= e) s += "0";
+      out = s.substr(0, e + 1);
+      std::string frac = s.substr(e + 1);
+      while (!frac.empty() && frac.back() == '0') frac.pop_back();
+      if (!frac.empty()) out += "." + frac;
+    } else {
+      std::string frac = std::string(-e - 1, '0') + mantissa;
+      while (!frac.empty() && frac.back() == '0') frac.pop_back();
+      out = "0." + frac;
+    }
+  } else {
+    std::string frac = mantissa.substr(1);
+    while (!frac.empty() && frac.back() == '0') frac.pop_back();
+    out = mantissa.substr(0, 1) + (frac.empty() ? "" : "." + frac) + "e" + std::to_string(e);
+  }
+  return (v.is_negative() ? "-" : "") + out;
+}
+
+std::optional<NumericValue> evaluate_with(const ex& e, const exmap& values, std::optional<Dimension> dimension,
+                                          int digits, const std::optional<Unit>& unit) {
+  const ex v = normal(e.subs(values));
+  for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
+    if (is_a<symbol>(*it)) return std::nullopt;
+  NumericValue out;
+  out.exact = v;
+  ex shown = v;
+  out.unit = dimension ? si_unit_name(*dimension) : "";
+  if (unit) {
+    shown = v / unit->to_si;
+    out.unit = unit->text;
+  }
+  const long saved = GiNaC::Digits;
+  GiNaC::Digits = std::max<long>(saved, digits + 20);
+  const ex f = evalf(shown);
+  GiNaC::Digits = saved;
+  if (!is_a<numeric>(f) || !ex_to<numeric>(f).is_real()) return std::nullopt;
+  out.approx = ex_to<numeric>(f).to_double();
+  const ex exact_shown = normal(shown);
+  out.decimal = is_a<numeric>(exact_shown) ? decimal_string(ex_to<numeric>(exact_shown), digits)
+                                           : decimal_string(ex_to<numeric>(f), digits);
+  return out;
 }
 
 std::optional<NumericValue> evaluate(const ex& e, const SymbolTable& symbols, std::optional<Dimension> dimension,
-                                     int digits) {
-  const ex v = normal(e.subs(symbols.values()));
-  for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
-    if (is_a<symbol>(*it)) return std::nullopt;
-  const ex f = evalf(v);
-  if (!is_a<numeric>(f) || !ex_to<numeric>(f).is_real()) return std::nullopt;
-  NumericValue out;
-  out.exact = v;
-  out.approx = ex_to<numeric>(f).to_double();
-  out.decimal = is_a<numeric>(v) ? decimal_string(ex_to<numeric>(v), digits) : decimal_string(ex_to<numeric>(f), digits);
-  out.unit = dimension ? si_unit_name(*dimension) : "";
-  return out;
+                                     int digits, const std::optional<Unit>& unit) {
+  return evaluate_with(e, symbols.values(), dimension, digits, unit);
 }
 
 }  // namespace tackle

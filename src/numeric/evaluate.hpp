@@ -1,5 +1,6 @@
-// Numbers from closed forms: substitute the parameters' SI values (exact rationals) and
-// report exactly when the result is rational, else to a stated number of digits.
+// Numbers from closed forms: substitute the parameters' SI values (exact rationals, or exact
+// expressions for defined parameters) and report exactly when the result is rational, else
+// to a stated number of significant digits (CLN arithmetic at any precision).
 #pragma once
 
 #include <optional>
@@ -13,19 +14,25 @@
 namespace tackle {
 
 struct NumericValue {
-  GiNaC::ex exact;      // a rational number, or an exact irrational form (sqrt(2)*3)
-  double approx = 0.0;
-  std::string decimal;  // "-2.25", "6.78233"
-  std::string unit;     // SI unit of the quantity's dimension ("" if dimensionless or unknown)
+  GiNaC::ex exact;      // a rational number, or an exact irrational form (2*sqrt(23/2)), in SI
+  double approx = 0.0;  // in `unit`
+  std::string decimal;  // in `unit`: "-2.25", "6.78233"
+  std::string unit;     // SI unit of the quantity's dimension, or the unit asked for
 };
 
 /// The value of `e` with every parameter's value substituted, or nullopt when some symbol
-/// has no value.
+/// has no value. With `unit`, the number is given in it (its dimension must match).
 [[nodiscard]] std::optional<NumericValue> evaluate(const GiNaC::ex& e, const SymbolTable& symbols,
-                                                   std::optional<Dimension> dimension, int digits = 6);
+                                                   std::optional<Dimension> dimension, int digits = 6,
+                                                   const std::optional<Unit>& unit = std::nullopt);
+/// The same with the values given explicitly (variants and sweeps).
+[[nodiscard]] std::optional<NumericValue> evaluate_with(const GiNaC::ex& e, const GiNaC::exmap& values,
+                                                        std::optional<Dimension> dimension, int digits = 6,
+                                                        const std::optional<Unit>& unit = std::nullopt);
 
-/// A decimal string for a real number: exact when it terminates within `digits` significant
-/// digits, else rounded to `digits` significant digits.
+/// A decimal string for a real number: exact when it terminates within 15 significant
+/// digits (or `digits`, if more), else rounded to `digits` significant digits (any number of
+/// them: CLN floats at that precision).
 [[nodiscard]] std::string decimal_string(const GiNaC::numeric& v, int digits = 6);
 
 }  // namespace tackle

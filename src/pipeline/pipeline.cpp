@@ -37,6 +37,8 @@ std::unique_ptr<const Analysis> analyze_file(const std::string& path, const Rule
   return analyze_text(read_text_file(path), path, rules);
 }
 
-Derivation explain(const Analysis& a) { return explain(a.model, a.system, a.solution); }
+Derivation explain(const Analysis& a, const ReportOptions& options) {
+  return explain(a.model, a.system, a.solution, options);
+}
 
 }  // namespace tackle

@@ -26,6 +26,6 @@ struct Analysis {
 [[nodiscard]] std::unique_ptr<const Analysis> analyze_text(const std::string& text, const std::string& file,
                                                            const RuleSet& rules);
 [[nodiscard]] std::unique_ptr<const Analysis> analyze_file(const std::string& path, const RuleSet& rules);
-[[nodiscard]] Derivation explain(const Analysis& a);
+[[nodiscard]] Derivation explain(const Analysis& a, const ReportOptions& options = {});
 
 }  // namespace tackle

@@ -31,7 +31,7 @@ ex fold_definitions(const ex& e, const SymbolTable& table) {
   return best;
 }
 
-Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol) {
+Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol, const ReportOptions& options) {
   Derivation d;
   d.title = m.title;
   d.file = m.file;
@@ -134,7 +134,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
   if (wanted.empty())
     for (const auto& u : s.unknowns) {
       const SymbolInfo* info = table.find(u);
-      wanted.push_back({info->name, info->tex, u, false, info->dimension});
+      wanted.push_back({info->name, info->tex, u, false, info->dimension, std::nullopt});
     }
   for (const auto& w : wanted) {
     Answer a;
@@ -165,7 +165,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
         }
       } else {
         a.closed_form = fold_definitions(simplest(general), table);
-        a.value = evaluate(*a.closed_form, table, w.dimension);
+        a.value = evaluate(*a.closed_form, table, w.dimension, options.digits, w.unit);
       }
     }
     d.answers.push_back(a);
@@ -173,7 +173,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol)
   for (const auto& c : sol.combinations) {
     std::string problem;
     auto dim = dimension_of(c.combination, table, problem);
-    d.combinations.push_back({c.combination, c.value, evaluate(c.value, table, dim)});
+    d.combinations.push_back({c.combination, c.value, evaluate(c.value, table, dim, options.digits)});
   }
 
   if (sol.status != Solution::Status::inconsistent) {

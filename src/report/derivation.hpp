@@ -69,7 +69,12 @@ struct Derivation {
   const EquationSystem* system = nullptr;  // for the JSON equations list
 };
 
-[[nodiscard]] Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol);
+struct ReportOptions {
+  int digits = 6;  // significant digits of the numbers
+};
+
+[[nodiscard]] Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
+                                 const ReportOptions& options = {});
 
 /// An expression with each defined parameter folded back in where that is shorter
 /// (a*l*m/(2*d) rather than a*m*sqrt(b^2 + d^2 + e^2)/(2*d)).
