@@ -11,6 +11,7 @@
 #include "isolate/isolate.hpp"
 #include "pipeline/pipeline.hpp"
 #include "report/isolation_report.hpp"
+#include "report/key.hpp"
 
 namespace {
 
@@ -73,6 +74,18 @@ int main(int argc, char** argv) {
   isolate->add_option("--format", format, "Output format")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
   isolate->add_option("-o,--output", out, "Write to this file instead of standard output");
 
+  std::vector<std::string> key_files;
+  int variants = 0;
+  unsigned long long seed = 1;
+  auto* key = app.add_subcommand("key", "An answer key for one or more problems, with numeric variants if asked");
+  key->add_option("files", key_files, "Problem descriptions (YAML)")->required();
+  key->add_option("--format", format, "Output format")->check(CLI::IsMember({"latex", "markdown", "json"}))->default_val("markdown");
+  key->add_option("--variants", variants, "Numeric variants per problem, drawn from the parameters' 'range'")
+      ->check(CLI::Range(0, 10000));
+  key->add_option("--seed", seed, "Seed for the variants (the same seed gives the same variants)")->capture_default_str();
+  key->add_option("--digits", digits, "Significant digits of the numbers")->check(CLI::Range(1, 1000));
+  key->add_option("-o,--output", out, "Write to this file instead of standard output");
+
   std::string unknown, answer, batch, results;
   double tolerance = 0.01;
   int sig_figs = 0;
@@ -115,6 +128,25 @@ int main(int argc, char** argv) {
   }
   try {
     const tackle::RuleSet rules = tackle::load_rules(rules_dir);
+    if (key->parsed()) {
+      // Every file is read before anything is written; problems in all of them are reported.
+      std::vector<std::unique_ptr<const tackle::Analysis>> analyses;
+      std::vector<tackle::Derivation> derivations;
+      std::vector<tackle::Diagnostic> problems;
+      for (const auto& f : key_files) {
+        try {
+          analyses.push_back(tackle::analyze_file(f, rules));
+        } catch (const tackle::InputError& e) {
+          problems.insert(problems.end(), e.diagnostics().begin(), e.diagnostics().end());
+        }
+      }
+      if (!problems.empty()) throw tackle::InputError(problems);
+      for (const auto& a : analyses) derivations.push_back(tackle::explain(*a, tackle::ReportOptions{digits}));
+      std::vector<tackle::KeyEntry> entries;
+      for (std::size_t i = 0; i < analyses.size(); ++i)
+        entries.push_back({&derivations[i], tackle::draw_variants(*analyses[i], derivations[i], variants, seed, digits)});
+      return emit(tackle::write_key(entries, formats.at(format)), out);
+    }
     if (isolate->parsed()) {
       const tackle::Model model = tackle::build_model(tackle::read_description(file), rules);
       const auto unknowns = tackle::model_unknowns(model);

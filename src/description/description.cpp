@@ -85,7 +85,18 @@ struct Reader {
         // symbolic only
       } else if (v.IsScalar()) {
         p.value = Text{v.Scalar(), where(v, file)};
-      } else if (check_map(v, {"value", "unit", "dimension", "tex", "positive", "description", "define"}, what, file, diags)) {
+      } else if (check_map(v, {"value", "unit", "dimension", "tex", "positive", "description", "define", "range", "round"},
+                           what, file, diags)) {
+        if (const YAML::Node r = v["range"]) {
+          if (auto items = scalar_list(r, "'range' of " + what, file, diags)) {
+            if (items->size() != 2 || !r.IsSequence())
+              diags.error(where(r, file), "'range' of " + what + " has " + std::to_string(items->size()) +
+                                              " entries (expected [low, high])");
+            else
+              p.range = *items;
+          }
+        }
+        p.round = opt_scalar(v, "round", what);
         p.value = opt_scalar(v, "value", what);
         p.define = opt_scalar(v, "define", what);
         if (p.define && (p.value || p.unit || p.dimension))

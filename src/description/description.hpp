@@ -25,6 +25,8 @@ struct ParameterDesc {
   std::optional<Text> tex;        // TeX name, e.g. "\mu_{k}"
   std::optional<bool> positive;   // default: true for masses, lengths and g
   std::optional<Text> define;     // a name for an expression in earlier parameters (l = sqrt(b^2 + d^2))
+  std::vector<Text> range;        // variants: [low, high], in the parameter's unit
+  std::optional<Text> round;      // variants: values are multiples of this step
 };
 
 /// A vector as written: one expression per axis (one item for a 1-D scalar).

@@ -128,6 +128,30 @@ struct Builder {
       table->add(p.name.text, p.tex ? std::optional<std::string>(p.tex->text) : std::nullopt, SymbolRole::parameter,
                  dim, positive, p.name.at);
       if (definition) table->set_definition(p.name.text, *definition);
+      if (!p.range.empty()) {
+        std::optional<numeric> bounds[2], step;
+        for (int i = 0; i < 2; ++i) {
+          auto v = parse(p.range[i], none, "'range' of parameter '" + p.name.text + "'");
+          if (v && is_a<numeric>(*v)) bounds[i] = ex_to<numeric>(*v);
+        }
+        if (p.round) {
+          auto v = parse(*p.round, none, "'round' of parameter '" + p.name.text + "'");
+          if (v && is_a<numeric>(*v) && ex_to<numeric>(*v).is_positive())
+            step = ex_to<numeric>(*v);
+          else if (v)
+            diags.error(p.round->at, "'round' of parameter '" + p.name.text + "' is not a positive number");
+        }
+        if (bounds[0] && bounds[1]) {
+          if (!(*bounds[0] < *bounds[1]))
+            diags.error(p.range[0].at, "'range' of parameter '" + p.name.text + "' is empty (expected low < high)");
+          else if (positive && !bounds[0]->is_positive())
+            diags.error(p.range[0].at, "'range' of parameter '" + p.name.text + "' reaches " + to_text(*bounds[0]) +
+                                           ", but the parameter is positive");
+          else
+            table->set_range(p.name.text, *bounds[0], *bounds[1], step, unit ? unit->to_si : numeric(1),
+                             p.unit ? p.unit->text : si_unit_name(dim.value_or(Dimension{})));
+        }
+      }
       if (p.value) {
         auto v = parse(*p.value, none, "value of parameter '" + p.name.text + "'");
         if (v && !is_a<numeric>(*v))

@@ -95,6 +95,17 @@ std::optional<Dimension> SymbolTable::dimension_of(const GiNaC::symbol& s) const
   return std::nullopt;
 }
 
+void SymbolTable::set_range(const std::string& name, GiNaC::numeric low, GiNaC::numeric high,
+                            std::optional<GiNaC::numeric> step, GiNaC::numeric unit_to_si, std::string unit) {
+  auto it = by_name_.find(name);
+  if (it == by_name_.end()) throw InternalError("no symbol '" + name + "'");
+  SymbolInfo& s = *items_[it->second];
+  s.range = std::make_pair(low, high);
+  s.step = step;
+  s.unit_to_si = unit_to_si;
+  if (s.unit.empty()) s.unit = std::move(unit);
+}
+
 GiNaC::exmap SymbolTable::definitions() const {
   GiNaC::exmap m;
   for (const auto& s : items_)

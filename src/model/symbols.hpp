@@ -29,6 +29,11 @@ struct SymbolInfo {
   std::string unit;                     // parameters: the unit the value was given in
   bool positive = false;
   std::optional<GiNaC::ex> definition;  // a defined parameter: its expression in the others
+  // Variants: the range values are drawn from and the step they are rounded to, in the
+  // parameter's own unit (`unit`), and that unit's factor to SI.
+  std::optional<std::pair<GiNaC::numeric, GiNaC::numeric>> range;
+  std::optional<GiNaC::numeric> step;
+  GiNaC::numeric unit_to_si = 1;
   Location where;
 
   [[nodiscard]] const GiNaC::symbol& symbol() const { return GiNaC::ex_to<GiNaC::symbol>(sym); }
@@ -59,6 +64,8 @@ class SymbolTable : public NameResolver, public DimensionLookup {
   /// Substitution map of every defined parameter to its expression.
   [[nodiscard]] GiNaC::exmap definitions() const;
   void set_definition(const std::string& name, GiNaC::ex definition);
+  void set_range(const std::string& name, GiNaC::numeric low, GiNaC::numeric high, std::optional<GiNaC::numeric> step,
+                 GiNaC::numeric unit_to_si, std::string unit);
 
  private:
   std::vector<std::unique_ptr<SymbolInfo>> items_;

@@ -17,5 +17,9 @@ for f in "$examples"/*.yaml; do
     || { echo "pdflatex failed for the answers of $f"; tail -30 "$work/$name-key.out"; exit 1; }
   count=$((count + 1))
 done
-echo "compiled $count examples"
+# The answer key of every example, with variants.
+"$tackle" key "$examples"/*.yaml --format latex --variants 3 --seed 1 -o "$work/key.tex"
+(cd "$work" && pdflatex -interaction=nonstopmode -halt-on-error key.tex >key.out 2>&1) \
+  || { echo "pdflatex failed for the answer key"; tail -30 "$work/key.out"; exit 1; }
+echo "compiled $count examples and their answer key"
 [ "$count" -gt 0 ]

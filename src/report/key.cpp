@@ -1,0 +1,198 @@
+#include "report/key.hpp"
+
+#include <random>
+
+#include <nlohmann/json.hpp>
+
+#include "expr/print.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+
+namespace {
+
+bool holds(const numeric& x, const std::string& op) {
+  return op == ">=" ? x >= 0 : op == ">" ? x > 0 : op == "<=" ? x <= 0 : op == "<" ? x < 0 : x.is_zero();
+}
+
+std::string tex_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '_' || c == '&' || c == '%' || c == '#' || c == '$' || c == '{' || c == '}') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Variant> draw_variants(const Analysis& a, const Derivation& d, int count, unsigned long long seed,
+                                   int digits) {
+  const SymbolTable& table = *a.model.symbols;
+  std::vector<const SymbolInfo*> ranged;
+  for (const auto& s : table.all())
+    if (s->role == SymbolRole::parameter && s->range) ranged.push_back(s.get());
+  std::vector<Variant> out;
+  if (ranged.empty() || count <= 0) return out;
+  std::mt19937_64 rng(seed);
+  const exmap base = table.values();
+  int attempts = 0;
+  while (static_cast<int>(out.size()) < count) {
+    if (++attempts > 1000 * count)
+      throw InputError({{{a.model.file, 0, 0},
+                         "could not draw " + std::to_string(count) +
+                             " variants that keep every validity condition (check the parameters' 'range')"}});
+    exmap values = base;
+    Variant v;
+    v.index = static_cast<int>(out.size()) + 1;
+    for (const SymbolInfo* s : ranged) {
+      const auto [low, high] = *s->range;
+      const numeric step = s->step ? *s->step : (high - low) / 100;
+      const numeric steps = ((high - low) / step).to_int() >= 0 ? numeric(((high - low) / step).to_int()) : numeric(0);
+      const numeric k = numeric(static_cast<long>(rng() % static_cast<unsigned long long>(steps.to_long() + 1)));
+      const numeric value = low + k * step;
+      values[s->sym] = value * s->unit_to_si;
+      v.parameters.push_back({s->name, decimal_string(value, digits), s->unit});
+    }
+    for (const auto& s : table.all())
+      if (s->definition) values[s->sym] = s->definition->subs(values);
+    // Every condition must hold and every answer must have a value.
+    bool valid = true;
+    for (const auto& c : d.conditions) {
+      const ex x = evalf(c.simplified.subs(values));
+      valid = valid && is_a<numeric>(x) && ex_to<numeric>(x).is_real() && holds(ex_to<numeric>(x), c.op);
+    }
+    for (const auto& ans : d.answers) {
+      if (!valid || !ans.closed_form) continue;
+      const std::optional<Unit> unit =
+          ans.value && ans.value->unit != si_unit_name(table.find(ans.symbol)->dimension.value_or(Dimension{}))
+              ? [&]() -> std::optional<Unit> {
+                  std::string err;
+                  int col = 0;
+                  return parse_unit(ans.value->unit, err, col);
+                }()
+              : std::nullopt;
+      auto value = evaluate_with(*ans.closed_form, values, table.find(ans.symbol)->dimension, digits, unit);
+      if (!value) {
+        valid = false;
+        continue;
+      }
+      v.answers.push_back({ans.name, value->decimal, value->unit});
+    }
+    if (valid) out.push_back(std::move(v));
+  }
+  return out;
+}
+
+std::string write_key(const std::vector<KeyEntry>& entries, Format f) {
+  if (f == Format::json) {
+    nlohmann::ordered_json j;
+    j["version"] = 1;
+    j["problems"] = nlohmann::ordered_json::array();
+    for (const auto& e : entries) {
+      const Derivation& d = *e.derivation;
+      nlohmann::ordered_json p;
+      p["title"] = d.title;
+      p["file"] = d.file;
+      p["status"] = d.status;
+      p["answers"] = nlohmann::ordered_json::array();
+      for (const auto& a : d.answers) {
+        nlohmann::ordered_json x{{"name", a.name}};
+        if (a.closed_form) {
+          x["closed_form"] = to_text(*a.closed_form);
+          x["latex"] = to_latex(*a.closed_form);
+        } else if (a.general) {
+          x["general"] = to_text(*a.general);
+        }
+        if (a.value) {
+          x["value"] = a.value->approx;
+          x["decimal"] = a.value->decimal;
+          x["unit"] = a.value->unit;
+        }
+        p["answers"].push_back(x);
+      }
+      p["variants"] = nlohmann::ordered_json::array();
+      for (const auto& v : e.variants) {
+        nlohmann::ordered_json x{{"index", v.index}};
+        for (const auto& q : v.parameters) x["parameters"][q.name] = {{"value", q.number}, {"unit", q.unit}};
+        for (const auto& q : v.answers) x["answers"][q.name] = {{"value", q.number}, {"unit", q.unit}};
+        p["variants"].push_back(x);
+      }
+      j["problems"].push_back(p);
+    }
+    return j.dump(2) + "\n";
+  }
+  const bool latex = f == Format::latex;
+  std::string out;
+  if (latex)
+    out += "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{amsmath}\n"
+           "\\usepackage[margin=2cm]{geometry}\n\\begin{document}\n\\section*{Answer key}\n";
+  else
+    out += "# Answer key\n";
+  for (const auto& e : entries) {
+    const Derivation& d = *e.derivation;
+    std::vector<std::string> asked;
+    for (const auto& a : d.answers) asked.push_back(latex ? "$" + to_latex(a.symbol) + "$" : "$" + to_latex(a.symbol) + "$");
+    if (latex) {
+      out += "\\subsection*{" + tex_escape(d.title) + "}\nFind " + join(asked) + ".\n";
+      for (const auto& a : d.answers) {
+        if (a.closed_form) {
+          out += "\\begin{equation*}\n  " + to_latex(a.symbol) + " = " + to_latex(*a.closed_form);
+          if (a.value) out += " = " + a.value->decimal + (a.value->unit.empty() ? "" : "\\," + unit_latex(a.value->unit));
+          out += "\n\\end{equation*}\n";
+        } else if (a.general) {
+          out += "\\begin{equation*}\n  " + to_latex(a.symbol) + " = " + to_latex(*a.general) +
+                 " \\quad\\text{(not determined alone)}\n\\end{equation*}\n";
+        }
+      }
+    } else {
+      out += "\n## " + d.title + "\n\nFind " + join(asked) + ".\n\n";
+      for (const auto& a : d.answers) {
+        if (a.closed_form) {
+          out += "- $" + to_latex(a.symbol) + " = " + to_latex(*a.closed_form) + "$";
+          if (a.value) out += " = " + a.value->decimal + (a.value->unit.empty() ? "" : " " + a.value->unit);
+          out += "\n";
+        } else if (a.general) {
+          out += "- $" + to_latex(a.symbol) + " = " + to_latex(*a.general) + "$ (not determined alone)\n";
+        }
+      }
+    }
+    if (e.variants.empty()) continue;
+    // A table: the drawn parameters, then the answers.
+    std::vector<std::string> head{"#"};
+    for (const auto& q : e.variants.front().parameters) head.push_back(q.name);
+    for (const auto& q : e.variants.front().answers) head.push_back(q.name);
+    auto tex_cell = [](const Quantity& q) {
+      return "$" + q.number + (q.unit.empty() ? "" : "\\," + unit_latex(q.unit)) + "$";
+    };
+    if (latex) {
+      out += "\\par\\medskip\\noindent Variants:\\par\\smallskip\\noindent\n\\begin{tabular}{" +
+             std::string(head.size(), 'l') + "}\n";
+      std::vector<std::string> cells;
+      for (const auto& h : head) cells.push_back(h == "#" ? "\\#" : "\\texttt{" + tex_escape(h) + "}");
+      out += join(cells, " & ") + " \\\\\n\\hline\n";
+      for (const auto& v : e.variants) {
+        cells = {std::to_string(v.index)};
+        for (const auto& q : v.parameters) cells.push_back(tex_cell(q));
+        for (const auto& q : v.answers) cells.push_back(tex_cell(q));
+        out += join(cells, " & ") + " \\\\\n";
+      }
+      out += "\\end{tabular}\n";
+    } else {
+      out += "\nVariants:\n\n| " + join(head, " | ") + " |\n|";
+      for (std::size_t i = 0; i < head.size(); ++i) out += "---|";
+      out += "\n";
+      for (const auto& v : e.variants) {
+        std::vector<std::string> cells{std::to_string(v.index)};
+        for (const auto& q : v.parameters) cells.push_back(q.text());
+        for (const auto& q : v.answers) cells.push_back(q.text());
+        out += "| " + join(cells, " | ") + " |\n";
+      }
+    }
+  }
+  if (latex) out += "\\end{document}\n";
+  return out;
+}
+
+}  // namespace tackle

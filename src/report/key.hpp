@@ -1,0 +1,42 @@
+// Answer keys: for each problem its title, what is asked, the closed forms and the numbers;
+// optionally numeric variants drawn from the parameter ranges the description declares.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pipeline/pipeline.hpp"
+#include "report/derivation.hpp"
+
+namespace tackle {
+
+struct Quantity {
+  std::string name;
+  std::string number;  // "18.4615"
+  std::string unit;    // "N", or empty
+  [[nodiscard]] std::string text() const { return number + (unit.empty() ? "" : " " + unit); }
+};
+
+struct Variant {
+  int index = 0;
+  std::vector<Quantity> parameters;  // the drawn values, in each parameter's unit
+  std::vector<Quantity> answers;
+};
+
+/// N variants: every parameter with a `range` drawn from it (a multiple of its `round` step,
+/// or of a hundredth of the range), the others kept. The same seed gives the same variants
+/// on every platform (std::mt19937_64, no library distribution). A draw that breaks a
+/// validity condition, or leaves an answer undefined, is drawn again; InputError when 1000
+/// draws cannot give a valid variant.
+[[nodiscard]] std::vector<Variant> draw_variants(const Analysis& a, const Derivation& d, int count,
+                                                 unsigned long long seed, int digits);
+
+struct KeyEntry {
+  const Derivation* derivation = nullptr;
+  std::vector<Variant> variants;
+};
+
+[[nodiscard]] std::string write_key(const std::vector<KeyEntry>& entries, Format f);
+
+}  // namespace tackle

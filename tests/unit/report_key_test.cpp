@@ -1,0 +1,63 @@
+#include <catch2/catch.hpp>
+
+#include "expr/print.hpp"
+#include "report/key.hpp"
+#include "support/helpers.hpp"
+
+using namespace tackle;
+
+namespace {
+std::vector<Variant> variants_of(const std::string& example, int n, unsigned long long seed) {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/" + example, test::rules());
+  const Derivation d = explain(*a);
+  return draw_variants(*a, d, n, seed, 6);
+}
+std::string rows(const std::vector<Variant>& vs) {
+  std::string s;
+  for (const auto& v : vs) {
+    for (const auto& q : v.parameters) s += q.name + "=" + q.text() + " ";
+    for (const auto& q : v.answers) s += q.name + "=" + q.text() + " ";
+    s += "\n";
+  }
+  return s;
+}
+}  // namespace
+
+TEST_CASE("Key: the same seed gives the same variants, another seed others", "[key]") {
+  const auto a = variants_of("sample-12.3-two-mass-pulley.yaml", 5, 1);
+  REQUIRE(a.size() == 5);
+  CHECK(rows(a) == rows(variants_of("sample-12.3-two-mass-pulley.yaml", 5, 1)));
+  CHECK(rows(a) != rows(variants_of("sample-12.3-two-mass-pulley.yaml", 5, 2)));
+}
+
+TEST_CASE("Key: drawn values are multiples of the step, inside the range, and answers follow them", "[key]") {
+  for (const auto& v : variants_of("sample-12.3-two-mass-pulley.yaml", 20, 7)) {
+    const double F = std::stod(v.parameters[0].number), mA = std::stod(v.parameters[1].number),
+                 mB = std::stod(v.parameters[2].number);
+    CHECK(F >= 100);
+    CHECK(F <= 200);
+    CHECK(std::fmod(F, 10.0) == 0.0);
+    CHECK(std::fmod(mA, 5.0) == 0.0);
+    // T = 2 F m_B/(9 m_A + 4 m_B), derived by hand (the example's notes).
+    CHECK(std::stod(v.answers[0].number) == Approx(2 * F * mB / (9 * mA + 4 * mB)).epsilon(1e-5));
+  }
+}
+
+TEST_CASE("Key: a variant that breaks a validity condition is never drawn", "[key][validity]") {
+  // The suitcase tips (N_A < 0) when l < 2 mu h; its ranges reach there.
+  const auto vs = variants_of("sample-12.7-suitcase.yaml", 50, 3);
+  REQUIRE(vs.size() == 50);
+  for (const auto& v : vs) {
+    const double l = std::stod(v.parameters[0].number), h = std::stod(v.parameters[1].number);
+    CHECK(l >= 2 * 0.3 * h);
+    CHECK(std::stod(v.answers[1].number) >= 0);
+  }
+}
+
+TEST_CASE("Key: the Markdown key has every problem's title and closed forms", "[key]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.8-sign-board.yaml", test::rules());
+  const Derivation d = explain(*a);
+  const std::string md = write_key({{&d, {}}}, Format::markdown);
+  CHECK(md == "# Answer key\n\n## Sample 12.8: an accelerating sign-board in 3-D\n\nFind $T_{HI}$.\n\n"
+              "- $T_{HI} = \\frac{a l m}{2 d}$ = 6.78233 N\n");
+}
