@@ -75,11 +75,14 @@ int main(int argc, char** argv) {
   isolate->add_option("-o,--output", out, "Write to this file instead of standard output");
 
   std::vector<std::string> key_files;
+  std::string key_format = "markdown";
   int variants = 0;
   unsigned long long seed = 1;
   auto* key = app.add_subcommand("key", "An answer key for one or more problems, with numeric variants if asked");
   key->add_option("files", key_files, "Problem descriptions (YAML)")->required();
-  key->add_option("--format", format, "Output format")->check(CLI::IsMember({"latex", "markdown", "json"}))->default_val("markdown");
+  key->add_option("--format", key_format, "Output format")
+      ->check(CLI::IsMember({"latex", "markdown", "json"}))
+      ->capture_default_str();
   key->add_option("--variants", variants, "Numeric variants per problem, drawn from the parameters' 'range'")
       ->check(CLI::Range(0, 10000));
   key->add_option("--seed", seed, "Seed for the variants (the same seed gives the same variants)")->capture_default_str();
@@ -145,7 +148,7 @@ int main(int argc, char** argv) {
       std::vector<tackle::KeyEntry> entries;
       for (std::size_t i = 0; i < analyses.size(); ++i)
         entries.push_back({&derivations[i], tackle::draw_variants(*analyses[i], derivations[i], variants, seed, digits)});
-      return emit(tackle::write_key(entries, formats.at(format)), out);
+      return emit(tackle::write_key(entries, formats.at(key_format)), out);
     }
     if (isolate->parsed()) {
       const tackle::Model model = tackle::build_model(tackle::read_description(file), rules);

@@ -30,7 +30,9 @@ TEST_CASE("Validity: the suitcase's trailing contact pushes exactly when l >= 2 
 
 TEST_CASE("Validity: a tall suitcase tips, and the report says so", "[validity]") {
   std::string text = test::read_example("sample-12.7-suitcase.yaml");
-  text.replace(text.find("h: {value: 0.4, unit: m}"), 24, "h: {value: 1.5, unit: m}");
+  const std::string h = "h: {value: 0.4,";
+  REQUIRE(text.find(h) != std::string::npos);
+  text.replace(text.find(h), h.size(), "h: {value: 1.5,");
   const auto a = test::run_text(text);
   const Derivation d = explain(*a);
   REQUIRE(d.conditions[0].holds);
@@ -42,7 +44,9 @@ TEST_CASE("Validity: a tall suitcase tips, and the report says so", "[validity]"
 
 TEST_CASE("Validity: braking on the front wheels lifts the rear when d < mu h", "[validity]") {
   std::string text = test::read_example("car-braking-front.yaml");
-  text.replace(text.find("h: {value: 0.5, unit: m}"), 24, "h: {value: 2.5, unit: m}");
+  const std::string h = "h: {value: 0.5, unit: m}";
+  REQUIRE(text.find(h) != std::string::npos);
+  text.replace(text.find(h), h.size(), "h: {value: 2.5, unit: m}");
   const auto a = test::run_text(text);
   const Derivation d = explain(*a);
   const auto rear = std::find_if(d.conditions.begin(), d.conditions.end(),
