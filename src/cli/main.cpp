@@ -12,6 +12,7 @@
 #include "pipeline/pipeline.hpp"
 #include "report/isolation_report.hpp"
 #include "report/key.hpp"
+#include "report/sweep.hpp"
 
 namespace {
 
@@ -88,6 +89,17 @@ int main(int argc, char** argv) {
   key->add_option("--seed", seed, "Seed for the variants (the same seed gives the same variants)")->capture_default_str();
   key->add_option("--digits", digits, "Significant digits of the numbers")->check(CLI::Range(1, 1000));
   key->add_option("-o,--output", out, "Write to this file instead of standard output");
+
+  std::string vary, plot, csv_out, svg_out, pgf_out;
+  std::vector<std::string> fixes;
+  auto* sweep = app.add_subcommand("sweep", "Evaluate the closed forms over a range of one parameter: CSV, SVG plot, pgfplots");
+  sweep->add_option("file", file, "Problem description (YAML)")->required();
+  sweep->add_option("--vary", vary, "name=start:end:count, in the parameter's unit (default: the description's sweep)");
+  sweep->add_option("--fix", fixes, "name=value, in the parameter's unit (repeatable)");
+  sweep->add_option("--plot", plot, "Comma-separated expressions in the answers and parameters, e.g. N_A,N_B,N_A-N_B");
+  sweep->add_option("--csv", csv_out, "Write the data as CSV here (default: standard output)");
+  sweep->add_option("--svg", svg_out, "Write an SVG plot here");
+  sweep->add_option("--pgfplots", pgf_out, "Write a pgfplots figure (LaTeX) here");
 
   std::string unknown, answer, batch, results;
   double tolerance = 0.01;
@@ -171,6 +183,29 @@ int main(int argc, char** argv) {
       return emit(tackle::write_isolations(model, found, formats.at(format)), out);
     }
     const auto analysis = tackle::analyze_file(file, rules);
+    if (sweep->parsed()) {
+      tackle::SweepSpec spec;
+      if (analysis->model.sweep) spec = tackle::sweep_spec(*analysis->model.sweep);
+      if (!vary.empty()) spec.vary = vary;
+      if (!fixes.empty()) spec.fix = fixes;
+      if (!plot.empty()) {
+        spec.plot.clear();
+        for (std::size_t start = 0, comma; start <= plot.size(); start = comma + 1) {
+          comma = plot.find(',', start);
+          if (comma == std::string::npos) comma = plot.size();
+          spec.plot.push_back(plot.substr(start, comma - start));
+        }
+      }
+      if (spec.vary.empty()) {
+        std::cerr << "tackle sweep: give --vary (the description has no 'sweep')\n";
+        return 2;
+      }
+      const tackle::Derivation d = tackle::explain(*analysis);
+      const auto result = tackle::run_sweep(*analysis, d, spec, tackle::Location{"--vary/--plot", 0, 0});
+      for (const auto& [path, text] : {std::pair{svg_out, tackle::sweep_svg(result)}, std::pair{pgf_out, tackle::sweep_pgfplots(result)}})
+        if (!path.empty() && emit(text, path) != 0) return 1;
+      return emit(tackle::sweep_csv(result), csv_out);
+    }
     if (check->parsed()) {
       tackle::CheckOptions options;
       options.relative_tolerance = tolerance;

@@ -317,7 +317,7 @@ DescriptionRead read_description_text(const std::string& text, const std::string
   check_map(root,
             {"title", "source", "axes", "parameters", "gravity", "bodies", "points", "connections", "loads",
              "strings", "layout", "given", "find", "derive", "expected", "expected_combinations", "expected_free",
-             "notes"},
+             "notes", "sweep"},
             "the description", file, diags);
   if (auto t = root["title"]) {
     if (auto s = scalar(t, "'title'", file, diags)) d.title = *s;
@@ -341,6 +341,22 @@ DescriptionRead read_description_text(const std::string& text, const std::string
   }
   if (auto f = root["find"]) r.read_find(f);
   if (auto dv = root["derive"]) r.read_derive(dv);
+  if (auto sw = root["sweep"]) {
+    if (check_map(sw, {"vary", "fix", "plot"}, "'sweep'", file, diags)) {
+      SweepDesc sd;
+      sd.at = where(sw, file);
+      if (auto v = sw["vary"]) {
+        if (auto t = scalar(v, "'vary' of 'sweep'", file, diags)) sd.vary = *t;
+      } else {
+        diags.error(sd.at, "'sweep' has no 'vary' (expected name=start:end:count, e.g. h=0:2:41)");
+      }
+      if (auto f = sw["fix"])
+        if (auto items = scalar_list(f, "'fix' of 'sweep'", file, diags)) sd.fix = *items;
+      if (auto p = sw["plot"])
+        if (auto items = scalar_list(p, "'plot' of 'sweep'", file, diags)) sd.plot = *items;
+      d.sweep = sd;
+    }
+  }
   out.problems = diags.items();
   return out;
 }

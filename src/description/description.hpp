@@ -85,6 +85,13 @@ struct DeriveDesc {
   std::optional<VectorDesc> axis;    // amb: a direction, or two point names
 };
 
+struct SweepDesc {
+  Text vary;               // "h=0:2:41"
+  std::vector<Text> fix;   // "l=1"
+  std::vector<Text> plot;  // "N_A - N_B"
+  Location at;
+};
+
 struct Description {
   std::string file;
   Text title;
@@ -98,6 +105,7 @@ struct Description {
   std::vector<Text> given;
   std::vector<FindDesc> find;
   std::vector<DeriveDesc> derive;  // empty: tackle chooses a complete set
+  std::optional<SweepDesc> sweep;  // a default for `tackle sweep`, and a figure in LaTeX reports
 };
 
 /// A description and the problems found while reading it; what could be read is kept so that

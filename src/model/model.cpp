@@ -102,6 +102,8 @@ struct Builder {
       }
       std::optional<Dimension> dim;
       if (unit) dim = unit->dimension;
+      // A value with neither unit nor dimension is a pure number (a friction coefficient).
+      if (!p.unit && !p.dimension && p.value && !p.define) dim = Dimension::none();
       if (p.dimension) {
         auto named = Dimension::from_name(p.dimension->text);
         if (!named)
@@ -1021,6 +1023,7 @@ struct Builder {
     gravity();
     given_and_find();
     derive();
+    m.sweep = d.sweep;
     diags.throw_if_any();
     m.symbols = table;
     return m;

@@ -103,6 +103,7 @@ struct Model {
   std::vector<GiNaC::ex> given;       // kinematic quantities given as known
   std::vector<Wanted> wanted;
   std::vector<Selection> derive;      // empty: a complete set
+  std::optional<SweepDesc> sweep;     // as described (checked when it is run)
 };
 
 /// Builds the model; every problem in the description is reported at once (InputError).

@@ -1,5 +1,7 @@
 #include "pipeline/pipeline.hpp"
 
+#include "report/sweep.hpp"
+
 #include <algorithm>
 
 namespace tackle {
@@ -38,7 +40,17 @@ std::unique_ptr<const Analysis> analyze_file(const std::string& path, const Rule
 }
 
 Derivation explain(const Analysis& a, const ReportOptions& options) {
-  return explain(a.model, a.system, a.solution, options);
+  Derivation d = explain(a.model, a.system, a.solution, options);
+  if (a.model.sweep) d.figure_pgfplots = sweep_pgfplots(run_sweep(a, d, sweep_spec(*a.model.sweep), a.model.sweep->at));
+  return d;
+}
+
+SweepSpec sweep_spec(const SweepDesc& s) {
+  SweepSpec spec;
+  spec.vary = s.vary.text;
+  for (const auto& f : s.fix) spec.fix.push_back(f.text);
+  for (const auto& p : s.plot) spec.plot.push_back(p.text);
+  return spec;
 }
 
 }  // namespace tackle

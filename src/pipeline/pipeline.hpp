@@ -26,6 +26,11 @@ struct Analysis {
 [[nodiscard]] std::unique_ptr<const Analysis> analyze_text(const std::string& text, const std::string& file,
                                                            const RuleSet& rules);
 [[nodiscard]] std::unique_ptr<const Analysis> analyze_file(const std::string& path, const RuleSet& rules);
+/// The derivation, with the described sweep's figure when there is one.
 [[nodiscard]] Derivation explain(const Analysis& a, const ReportOptions& options = {});
+
+struct SweepSpec;
+/// A described sweep as a spec to run.
+[[nodiscard]] SweepSpec sweep_spec(const SweepDesc& s);
 
 }  // namespace tackle

@@ -67,6 +67,7 @@ struct Derivation {
   std::size_t n_equations = 0;
   std::vector<GiNaC::ex> unknowns;
   const EquationSystem* system = nullptr;  // for the JSON equations list
+  std::string figure_pgfplots;             // a sweep figure for the LaTeX report, when described
 };
 
 struct ReportOptions {

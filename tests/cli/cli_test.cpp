@@ -259,3 +259,19 @@ TEST_CASE("CLI: check a batch into JSON Lines and a grader results file", "[cli]
   CHECK(run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch /no/such.jsonl").code == 1);
   fs::remove_all(dir);
 }
+
+TEST_CASE("CLI: sweep writes CSV, SVG and pgfplots; without a range it is a usage error", "[cli][sweep]") {
+  const fs::path dir = fs::temp_directory_path() / "tackle-sweep";
+  fs::create_directories(dir);
+  const Run r = run_tackle("sweep " + examples + "figure-12.28-suitcase-normal-forces.yaml --svg " + (dir / "f.svg").string() +
+                           " --pgfplots " + (dir / "f.tex").string());
+  CHECK(r.code == 0);
+  CHECK(r.out.rfind("h [m],N_A [N],N_B [N],N_A - N_B [N],valid\n", 0) == 0);
+  CHECK(slurp(dir / "f.svg").find("</svg>") != std::string::npos);
+  CHECK(slurp(dir / "f.tex").find("\\begin{axis}") != std::string::npos);
+  const Run custom = run_tackle("sweep " + examples + "sample-12.7-suitcase.yaml --vary l=0.5:1:2 --plot N_B");
+  // By hand: N_B = m g (1/2 + mu h/l) = 98.1 (0.5 + 0.12/l): 72.594 N at l = 0.5 m, 60.822 N at 1 m.
+  CHECK(custom.out == "l [m],N_B [N],valid\n0.5,72.594,true\n1,60.822,true\n");
+  CHECK(run_tackle("sweep " + examples + "sample-12.7-suitcase.yaml").code == 2);
+  fs::remove_all(dir);
+}

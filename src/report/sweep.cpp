@@ -1,0 +1,278 @@
+#include "report/sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "expr/parse.hpp"
+#include "expr/print.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+
+namespace {
+
+// Answers by their closed forms, parameters by their symbols.
+class SweepNames : public NameResolver {
+ public:
+  SweepNames(const SymbolTable& table, const Derivation& d) : table_(table) {
+    for (const auto& a : d.answers)
+      if (a.closed_form) answers_[a.name] = *a.closed_form;
+  }
+  std::optional<ex> resolve(std::string_view name) const override {
+    if (auto it = answers_.find(std::string(name)); it != answers_.end()) return it->second;
+    if (const SymbolInfo* s = table_.find(name); s && s->role == SymbolRole::parameter) return s->sym;
+    return std::nullopt;
+  }
+  std::vector<std::string> known_names() const override {
+    std::vector<std::string> out;
+    for (const auto& [k, v] : answers_) out.push_back(k);
+    for (const auto& s : table_.all())
+      if (s->role == SymbolRole::parameter) out.push_back(s->name);
+    return out;
+  }
+
+ private:
+  const SymbolTable& table_;
+  std::map<std::string, ex> answers_;
+};
+
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(' '), b = s.find_last_not_of(' ');
+  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+bool holds(double x, const std::string& op) {
+  return op == ">=" ? x >= -1e-12 : op == ">" ? x > 0 : op == "<=" ? x <= 1e-12 : op == "<" ? x < 0 : std::abs(x) < 1e-12;
+}
+
+std::string num(double v) { return fmt::format("{:.6g}", v); }
+
+}  // namespace
+
+SweepResult run_sweep(const Analysis& a, const Derivation& d, const SweepSpec& spec, const Location& where) {
+  const SymbolTable& table = *a.model.symbols;
+  Diagnostics diags;
+  struct NoNames : NameResolver {
+    std::optional<ex> resolve(std::string_view) const override { return std::nullopt; }
+    std::vector<std::string> known_names() const override { return {}; }
+  } none;
+  auto number = [&](const std::string& text, const std::string& what) -> std::optional<numeric> {
+    auto r = parse_expression(text, none);
+    if (!r.value || !is_a<numeric>(*r.value)) {
+      diags.error(where, what + " '" + text + "' is not a number");
+      return std::nullopt;
+    }
+    return ex_to<numeric>(*r.value);
+  };
+  auto parameter = [&](const std::string& name, const std::string& what) -> const SymbolInfo* {
+    const SymbolInfo* s = table.find(name);
+    if (!s || s->role != SymbolRole::parameter || s->definition) {
+      std::vector<std::string> known;
+      for (const auto& p : table.all())
+        if (p->role == SymbolRole::parameter && !p->definition) known.push_back(p->name);
+      diags.error(where, what + " names '" + name + "', which is not a parameter (parameters: " + join(known) + ")");
+      return nullptr;
+    }
+    return s;
+  };
+  // The factor from a parameter's own unit to SI.
+  auto to_si = [&](const SymbolInfo& s) -> numeric {
+    if (s.unit.empty()) return 1;
+    std::string err;
+    int col = 0;
+    auto u = parse_unit(s.unit, err, col);
+    return u ? u->to_si : numeric(1);
+  };
+  SweepResult r;
+  r.title = d.title;
+  // name=start:end:count
+  const auto eq = spec.vary.find('=');
+  std::vector<std::string> parts;
+  if (eq != std::string::npos) {
+    std::string rest = spec.vary.substr(eq + 1);
+    for (std::size_t p; (p = rest.find(':')) != std::string::npos; rest = rest.substr(p + 1)) parts.push_back(rest.substr(0, p));
+    parts.push_back(rest);
+  }
+  if (eq == std::string::npos || parts.size() != 3) {
+    diags.error(where, "'" + spec.vary + "' is not a range to vary (expected name=start:end:count, e.g. h=0:2:41)");
+    diags.throw_if_any();
+  }
+  const SymbolInfo* x = parameter(trim(spec.vary.substr(0, eq)), "the range to vary");
+  const auto start = number(parts[0], "the start"), end = number(parts[1], "the end"), count = number(parts[2], "the count");
+  if (count && (!count->is_integer() || *count < 2 || *count > 100000))
+    diags.error(where, "the count '" + parts[2] + "' is not a whole number from 2 to 100000");
+  exmap base = table.values();
+  for (const auto& f : spec.fix) {
+    const auto e2 = f.find('=');
+    if (e2 == std::string::npos) {
+      diags.error(where, "'" + f + "' is not a fixed value (expected name=value, e.g. l=1)");
+      continue;
+    }
+    const SymbolInfo* s = parameter(trim(f.substr(0, e2)), "'" + f + "'");
+    const auto v = number(trim(f.substr(e2 + 1)), "the value");
+    if (s && v) base[s->sym] = *v * to_si(*s);
+  }
+  SweepNames names(table, d);
+  std::vector<ex> curves;
+  for (const auto& p : spec.plot) {
+    auto parsed = parse_expression(p, names);
+    if (!parsed.value) {
+      diags.error(where, "plot '" + p + "': " + parsed.problems.front().message);
+      continue;
+    }
+    curves.push_back(*parsed.value);
+    r.names.push_back(trim(p));
+    // For the legend: the expression as written, answers as their own symbols (N_{A} - N_{B}).
+    auto shown = parse_expression(p, table);
+    r.latex.push_back(to_latex(shown.value ? *shown.value : fold_definitions(*parsed.value, table)));
+  }
+  if (spec.plot.empty()) diags.error(where, "nothing to plot (expected a list such as N_A,N_B,N_A-N_B)");
+  diags.throw_if_any();
+  // One unit for the y axis when every curve has the same dimension.
+  std::optional<Dimension> common;
+  bool same = true;
+  for (const auto& c : curves) {
+    std::string problem;
+    auto dim = dimension_of(c, table, problem);
+    if (!dim || (common && !(*common == *dim))) same = false;
+    else common = dim;
+  }
+  if (same && common) r.y_unit = si_unit_name(*common);
+  r.x_name = x->name;
+  r.x_unit = x->unit;
+  const numeric factor = to_si(*x);
+  const int n = count->to_int();
+  r.y.assign(curves.size(), {});
+  for (int i = 0; i < n; ++i) {
+    const numeric xv = *start + (*end - *start) * numeric(i, n - 1);
+    exmap values = base;
+    values[x->sym] = xv * factor;
+    for (const auto& s : table.all())
+      if (s->definition) values[s->sym] = s->definition->subs(values);
+    r.x.push_back(xv.to_double());
+    for (std::size_t c = 0; c < curves.size(); ++c) {
+      const ex v = evalf(curves[c].subs(values));
+      r.y[c].push_back(is_a<numeric>(v) && ex_to<numeric>(v).is_real() ? std::optional<double>(ex_to<numeric>(v).to_double())
+                                                                         : std::nullopt);
+    }
+    bool valid = true;
+    for (const auto& cond : d.conditions) {
+      const ex v = evalf(cond.simplified.subs(values));
+      valid = valid && is_a<numeric>(v) && holds(ex_to<numeric>(v).to_double(), cond.op);
+    }
+    r.valid.push_back(valid);
+  }
+  return r;
+}
+
+std::string sweep_csv(const SweepResult& r) {
+  std::string out = r.x_name + (r.x_unit.empty() ? "" : " [" + r.x_unit + "]");
+  for (const auto& n : r.names) out += "," + n + (r.y_unit.empty() ? "" : " [" + r.y_unit + "]");
+  out += ",valid\n";
+  for (std::size_t i = 0; i < r.x.size(); ++i) {
+    out += num(r.x[i]);
+    for (const auto& curve : r.y) out += "," + (curve[i] ? num(*curve[i]) : std::string());
+    out += std::string(",") + (r.valid[i] ? "true" : "false") + "\n";
+  }
+  return out;
+}
+
+std::string sweep_svg(const SweepResult& r) {
+  // A plain line chart: axes with ticks, one polyline per curve (dashed where a validity
+  // condition fails), a legend. Written by hand: it is a few dozen lines of SVG.
+  const double W = 640, H = 420, left = 70, right = 170, top = 40, bottom = 60;
+  const double pw = W - left - right, ph = H - top - bottom;
+  double xmin = r.x.front(), xmax = r.x.back(), ymin = 0, ymax = 0;
+  bool any = false;
+  for (const auto& c : r.y)
+    for (const auto& v : c)
+      if (v) {
+        ymin = any ? std::min(ymin, *v) : *v;
+        ymax = any ? std::max(ymax, *v) : *v;
+        any = true;
+      }
+  if (ymax - ymin < 1e-12) ymax = ymin + 1;
+  const double pad = 0.05 * (ymax - ymin);
+  ymin -= pad;
+  ymax += pad;
+  auto sx = [&](double x) { return left + (x - xmin) / (xmax - xmin) * pw; };
+  auto sy = [&](double y) { return top + (ymax - y) / (ymax - ymin) * ph; };
+  static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
+  std::string out = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" viewBox=\"0 0 {} {}\" "
+      "font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
+      W, H, W, H);
+  out += fmt::format("<text x=\"{}\" y=\"22\" font-size=\"14\">{}</text>\n", left, r.title);
+  out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"black\"/>\n", left, top, pw, ph);
+  // Ticks at multiples of 1, 2 or 5 times a power of ten, about five per axis.
+  auto ticks = [](double lo, double hi) {
+    const double raw = (hi - lo) / 5, p = std::pow(10.0, std::floor(std::log10(raw)));
+    const double step = raw / p < 1.5 ? p : raw / p < 3.5 ? 2 * p : raw / p < 7.5 ? 5 * p : 10 * p;
+    std::vector<double> t;
+    for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step) t.push_back(std::abs(v) < 1e-12 ? 0 : v);
+    return t;
+  };
+  for (const double xv : ticks(xmin, xmax))
+    out += fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{0}\" y2=\"{2}\" stroke=\"black\"/>"
+                       "<text x=\"{0}\" y=\"{3}\" text-anchor=\"middle\">{4}</text>\n",
+                       sx(xv), top + ph, top + ph + 5, top + ph + 20, num(xv));
+  for (const double yv : ticks(ymin, ymax))
+    out += fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{2}\" y2=\"{1}\" stroke=\"black\"/>"
+                       "<text x=\"{3}\" y=\"{4}\" text-anchor=\"end\">{5}</text>\n",
+                       left - 5, sy(yv), left, left - 8, sy(yv) + 4, num(yv));
+  if (ymin < 0 && ymax > 0)
+    out += fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{2}\" y2=\"{1}\" stroke=\"#999\" stroke-dasharray=\"2,3\"/>\n", left,
+                       sy(0), left + pw);
+  out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", left + pw / 2, H - 15,
+                     r.x_name + (r.x_unit.empty() ? "" : " [" + r.x_unit + "]"));
+  if (!r.y_unit.empty())
+    out += fmt::format("<text x=\"18\" y=\"{}\" transform=\"rotate(-90 18 {})\" text-anchor=\"middle\">[{}]</text>\n",
+                       top + ph / 2, top + ph / 2, r.y_unit);
+  for (std::size_t c = 0; c < r.y.size(); ++c) {
+    const char* colour = colours[c % 6];
+    // Runs of points with the same validity: solid where valid, dashed where not.
+    std::size_t i = 0;
+    while (i < r.x.size()) {
+      while (i < r.x.size() && !r.y[c][i]) ++i;
+      if (i >= r.x.size()) break;
+      const bool valid = r.valid[i];
+      std::string points;
+      std::size_t j = i;
+      for (; j < r.x.size() && r.y[c][j] && r.valid[j] == valid; ++j) points += fmt::format("{:.2f},{:.2f} ", sx(r.x[j]), sy(*r.y[c][j]));
+      if (j < r.x.size() && r.y[c][j]) points += fmt::format("{:.2f},{:.2f} ", sx(r.x[j]), sy(*r.y[c][j]));
+      out += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"2\"{} points=\"{}\"/>\n", colour,
+                         valid ? "" : " stroke-dasharray=\"6,4\"", points);
+      i = j;
+    }
+    const double ly = top + 10 + 20 * static_cast<double>(c);
+    out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"2\"/>"
+                       "<text x=\"{}\" y=\"{}\">{}</text>\n",
+                       left + pw + 15, ly, left + pw + 40, ly, colour, left + pw + 45, ly + 4, r.names[c]);
+  }
+  if (std::find(r.valid.begin(), r.valid.end(), false) != r.valid.end())
+    out += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"11\">dashed: a validity</text>"
+                       "<text x=\"{}\" y=\"{}\" font-size=\"11\">condition fails</text>\n",
+                       left + pw + 15, top + 30 + 20 * static_cast<double>(r.y.size()), left + pw + 15,
+                       top + 44 + 20 * static_cast<double>(r.y.size()));
+  return out + "</svg>\n";
+}
+
+std::string sweep_pgfplots(const SweepResult& r) {
+  std::string out = "\\begin{tikzpicture}\n\\begin{axis}[width=0.8\\textwidth, height=0.5\\textwidth, xlabel={$" +
+                    to_latex(symbol(r.x_name)) + "$" + (r.x_unit.empty() ? "" : " [$" + unit_latex(r.x_unit) + "$]") +
+                    "}, " + (r.y_unit.empty() ? "" : "ylabel={[$" + unit_latex(r.y_unit) + "$]}, ") +
+                    "legend pos=outer north east, grid=major]\n";
+  for (std::size_t c = 0; c < r.y.size(); ++c) {
+    out += "\\addplot+[mark=none, thick] coordinates {";
+    for (std::size_t i = 0; i < r.x.size(); ++i)
+      if (r.y[c][i]) out += "(" + num(r.x[i]) + "," + num(*r.y[c][i]) + ") ";
+    out += "};\n\\addlegendentry{$" + r.latex[c] + "$}\n";
+  }
+  return out + "\\end{axis}\n\\end{tikzpicture}\n";
+}
+
+}  // namespace tackle

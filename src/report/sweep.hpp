@@ -1,0 +1,40 @@
+// Sweeps: the closed forms evaluated over a range of one parameter, with others fixed, each
+// point marked valid or not (every validity condition holds there), written as CSV, as an SVG
+// plot and as a pgfplots figure for the LaTeX report.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pipeline/pipeline.hpp"
+#include "report/derivation.hpp"
+
+namespace tackle {
+
+struct SweepSpec {
+  std::string vary;                // "h=0:2:41": name=start:end:count, in the parameter's unit
+  std::vector<std::string> fix;    // "l=1", in the parameter's unit
+  std::vector<std::string> plot;   // expressions in the answers and parameters: "N_A - N_B"
+};
+
+struct SweepResult {
+  std::string title;
+  std::string x_name, x_unit;
+  std::vector<std::string> names;   // one per plotted expression, as written
+  std::vector<std::string> latex;   // the same in LaTeX
+  std::string y_unit;               // when every curve has the same dimension
+  std::vector<double> x;
+  std::vector<std::vector<std::optional<double>>> y;  // [curve][point]
+  std::vector<bool> valid;                            // every validity condition holds
+};
+
+/// Evaluates the sweep; problems with the spec are located InputErrors (`where` names the
+/// command-line option or the description key).
+[[nodiscard]] SweepResult run_sweep(const Analysis& a, const Derivation& d, const SweepSpec& spec, const Location& where);
+
+[[nodiscard]] std::string sweep_csv(const SweepResult& r);
+[[nodiscard]] std::string sweep_svg(const SweepResult& r);
+[[nodiscard]] std::string sweep_pgfplots(const SweepResult& r);
+
+}  // namespace tackle
