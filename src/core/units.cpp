@@ -239,6 +239,7 @@ std::string unit_latex(std::string_view unit_text) {
 }
 
 std::string with_article(const std::string& noun) {
+  if (noun == "dimensionless") return "a pure number";
   const bool vowel = !noun.empty() && std::string("aeiou").find(noun[0]) != std::string::npos;
   return (vowel ? "an " : "a ") + noun;
 }

@@ -42,6 +42,10 @@ struct EquationSystem {
 
 [[nodiscard]] EquationSystem build_equations(const Model& m);
 
+/// Every equation must be dimensionally consistent: one problem per equation that is not,
+/// naming the term that disagrees and where it comes from (empty when all are).
+[[nodiscard]] std::vector<Diagnostic> check_dimensions(const Model& m, const EquationSystem& s);
+
 /// Linear momentum balance of a body or a system, along a unit direction.
 [[nodiscard]] Equation lmb_along(const Model& m, const std::vector<int>& bodies, bool system, const Vec& direction,
                                  const std::string& direction_label);

@@ -31,6 +31,7 @@ std::unique_ptr<const Analysis> analyze_text(const std::string& text, const std:
     throw InputError(all);
   }
   a->system = build_equations(a->model);
+  if (auto problems = check_dimensions(a->model, a->system); !problems.empty()) throw InputError(problems);
   a->solution = solve(a->model, a->system);
   return a;
 }

@@ -63,3 +63,22 @@ given: [ddot(x_A)]
   CHECK(to_text(a->solution.values[0].unknown) == "ddot(x_B)");
   CHECK(to_text(a->solution.values[0].value) == "ddot(x_A)/3");
 }
+
+TEST_CASE("Dimensions: every written equation is checked, naming the term that disagrees", "[solve][units]") {
+  RuleSet rules = load_rules(TACKLE_SOURCE_DIR "/rules");
+  // A rule whose force argument declares no dimension: only the equation check can catch it.
+  rules.add(parse_rule("type: push\nneeds: {on: body, amount: expr}\nloads:\n  - {on: on, force: amount}\n", "push.yaml"));
+  const std::string text = R"(title: a push given in metres
+parameters: {m: {value: 2, unit: kg}, d: {value: 3, unit: m}}
+bodies: {A: {mass: m, position: x_A}}
+connections: [{type: push, on: A, amount: d}]
+)";
+  try {
+    (void)analyze_text(text, "t.yaml", rules);
+    FAIL("expected an InputError");
+  } catch (const InputError& e) {
+    REQUIRE(e.diagnostics().size() == 1);
+    CHECK(format(e.diagnostics()[0]) ==
+          "t.yaml: equation 'LMB A (x)' is not dimensionally consistent: the term from push on A is a length, the others a force");
+  }
+}
