@@ -164,28 +164,24 @@ EquationSystem build_equations(const Model& m) {
 namespace tackle {
 
 std::vector<Diagnostic> check_dimensions(const Model& m, const EquationSystem& s) {
+  // Each term of a linear momentum balance is a force. (The other sides and the moment arms
+  // may be written as plain numbers, which are read in SI and carry no dimension of their
+  // own, so they are not compared.)
   std::vector<Diagnostic> out;
   const SymbolTable& table = *m.symbols;
   for (const auto& eq : s.equations) {
-    // The right side sets the dimension (m a, or r x m a); each term of the left must match.
-    std::string problem;
-    std::optional<Dimension> expected;
-    if (!eq.rhs.is_zero()) expected = dimension_of(eq.rhs, table, problem);
+    if (eq.kind != Equation::Kind::lmb) continue;
     for (std::size_t i = 0; i < eq.terms.size(); ++i) {
-      problem.clear();
+      std::string problem;
       const auto dim = dimension_of(eq.terms[i], table, problem);
       if (!dim) {
         if (!problem.empty())
           out.push_back({{m.file, 0, 0}, "equation '" + eq.label + "': the term from " + eq.sources[i] + " " + problem});
         continue;
       }
-      if (!expected) {
-        expected = dim;
-      } else if (!(*dim == *expected)) {
+      if (!(*dim == Dimension::force()) && !(*dim == Dimension::none()))
         out.push_back({{m.file, 0, 0}, "equation '" + eq.label + "' is not dimensionally consistent: the term from " +
-                                           eq.sources[i] + " is " + with_article(dim->describe()) + ", the others " +
-                                           with_article(expected->describe())});
-      }
+                                           eq.sources[i] + " is " + with_article(dim->describe()) + " (expected a force)"});
     }
   }
   return out;

@@ -42,8 +42,8 @@ struct EquationSystem {
 
 [[nodiscard]] EquationSystem build_equations(const Model& m);
 
-/// Every equation must be dimensionally consistent: one problem per equation that is not,
-/// naming the term that disagrees and where it comes from (empty when all are).
+/// Every force in a linear momentum balance must be a force: one problem per term that is
+/// not, naming where it comes from (empty when all are).
 [[nodiscard]] std::vector<Diagnostic> check_dimensions(const Model& m, const EquationSystem& s);
 
 /// Linear momentum balance of a body or a system, along a unit direction.

@@ -79,6 +79,6 @@ connections: [{type: push, on: A, amount: d}]
   } catch (const InputError& e) {
     REQUIRE(e.diagnostics().size() == 1);
     CHECK(format(e.diagnostics()[0]) ==
-          "t.yaml: equation 'LMB A (x)' is not dimensionally consistent: the term from push on A is a length, the others a force");
+          "t.yaml: equation 'LMB A (x)' is not dimensionally consistent: the term from push on A is a length (expected a force)");
   }
 }
