@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <Eigen/Dense>
+
 #include "expr/print.hpp"
 
 namespace tackle {
@@ -176,6 +178,47 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     d.combinations.push_back({c.combination, c.value, evaluate(c.value, table, dim, options.digits)});
   }
 
+  // Indeterminate, with numbers: x = p + N f over the free unknowns f; the member of least
+  // norm is the least-squares solution of N f = -p (Eigen, complete orthogonal decomposition).
+  if (sol.status == Solution::Status::underdetermined) {
+    std::vector<ex> family;
+    for (const auto& u : s.unknowns) {
+      const ex g = u.subs(sol.general);
+      if (std::any_of(sol.free.begin(), sol.free.end(), [&](const ex& f) { return g.has(f); })) family.push_back(u);
+    }
+    const exmap values = table.values();
+    exmap zero_free;
+    for (const auto& f : sol.free) zero_free[f] = 0;
+    Eigen::MatrixXd N(family.size(), sol.free.size());
+    Eigen::VectorXd p(family.size());
+    bool numeric_family = true;
+    for (std::size_t i = 0; i < family.size() && numeric_family; ++i) {
+      const ex g = family[i].subs(sol.general).expand();
+      const ex base = evalf(g.subs(zero_free).subs(values));
+      numeric_family = numeric_family && is_a<numeric>(base);
+      if (numeric_family) p(static_cast<Eigen::Index>(i)) = ex_to<numeric>(base).to_double();
+      for (std::size_t j = 0; j < sol.free.size() && numeric_family; ++j) {
+        const ex c = evalf(g.coeff(sol.free[j], 1).subs(values));
+        numeric_family = is_a<numeric>(c);
+        if (numeric_family) N(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = ex_to<numeric>(c).to_double();
+      }
+    }
+    if (numeric_family && !family.empty()) {
+      const Eigen::VectorXd f = N.completeOrthogonalDecomposition().solve(-p);
+      const Eigen::VectorXd x = p + N * f;
+      for (std::size_t i = 0; i < family.size(); ++i) {
+        const SymbolInfo* info = table.find(family[i]);
+        // A double from Eigen, shown to the report's digits (not exact).
+        NumericValue v;
+        v.exact = numeric(x(static_cast<Eigen::Index>(i)));
+        v.approx = x(static_cast<Eigen::Index>(i));
+        v.decimal = decimal_string(numeric(std::abs(v.approx) < 1e-12 ? 0.0 : v.approx), std::min(options.digits, 12));
+        v.unit = info->dimension ? si_unit_name(*info->dimension) : "";
+        d.minimum_norm.emplace_back(info->name, v);
+      }
+    }
+  }
+
   if (sol.status != Solution::Status::inconsistent) {
     section("Results");
     for (const auto& a : d.answers) {
@@ -191,6 +234,12 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       } else {
         text(a.name + " is not determined by the equations (free).");
       }
+    }
+    if (!d.minimum_norm.empty()) {
+      std::vector<std::string> parts;
+      for (const auto& [name, v] : d.minimum_norm) parts.push_back(name + " = " + v->decimal + (v->unit.empty() ? "" : " " + v->unit));
+      text("The member of the family with the least norm (as a computer's least-squares solution would pick): " +
+           join(parts) + ".");
     }
     for (const auto& c : d.combinations) {
       Step* st = equation("determined in combination", c.combination, c.value);

@@ -68,6 +68,9 @@ struct Derivation {
   std::vector<GiNaC::ex> unknowns;
   const EquationSystem* system = nullptr;  // for the JSON equations list
   std::string figure_pgfplots;             // a sweep figure for the LaTeX report, when described
+  // Indeterminate with numbers: the member of the family with the least norm (Eigen), for
+  // the unknowns that are not determined alone.
+  std::vector<std::pair<std::string, std::optional<NumericValue>>> minimum_norm;
 };
 
 struct ReportOptions {

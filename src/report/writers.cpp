@@ -202,6 +202,10 @@ std::string json_document(const Derivation& d, bool full) {
     j["combinations"].push_back(x);
   }
   j["free"] = d.free;
+  if (!d.minimum_norm.empty()) {
+    j["minimum_norm"] = nlohmann::ordered_json::object();
+    for (const auto& [name, v] : d.minimum_norm) j["minimum_norm"][name] = {{"value", v->approx}, {"unit", v->unit}};
+  }
   j["conflicts"] = d.conflicts;
   j["conditions"] = nlohmann::ordered_json::array();
   for (const auto& c : d.conditions) {

@@ -111,3 +111,15 @@ layout: {x_A: 0, x_B: 1}
   CHECK_FALSE(*d.conditions[0].holds);
   CHECK(d.conditions[0].otherwise == "the string goes slack");
 }
+
+TEST_CASE("Examples: sample 12.9's least-norm member splits O_y + G_y = -3 N evenly", "[examples][eigen]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.9-indeterminate.yaml", test::rules());
+  const Derivation d = explain(*a);
+  // By hand: minimise O_y^2 + G_y^2 with O_y + G_y = -3: O_y = G_y = -1.5 N.
+  REQUIRE(d.minimum_norm.size() == 2);
+  CHECK(d.minimum_norm[0].first == "O_y");
+  CHECK(d.minimum_norm[0].second->approx == Approx(-1.5));
+  CHECK(d.minimum_norm[1].first == "G_y");
+  CHECK(d.minimum_norm[1].second->approx == Approx(-1.5));
+  CHECK(d.minimum_norm[1].second->decimal == "-1.5");
+}
