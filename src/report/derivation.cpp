@@ -12,11 +12,6 @@ using namespace GiNaC;
 
 namespace {
 
-std::string joined(const std::vector<ex>& xs) {
-  std::vector<std::string> s;
-  for (const auto& x : xs) s.push_back(to_text(x));
-  return join(s);
-}
 
 }  // namespace
 
@@ -51,6 +46,16 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   };
   auto section = [&](std::string t) { step(Step::Kind::section, std::move(t)); };
   auto text = [&](std::string t) { step(Step::Kind::text, std::move(t)); };
+  // Prose with expressions: each "{}" in `t` is typeset from the next of `math`.
+  auto text_with = [&](std::string t, std::vector<ex> math) {
+    Step* st = step(Step::Kind::text, std::move(t));
+    st->math = std::move(math);
+  };
+  auto list_of = [](std::size_t n) {
+    std::string s;
+    for (std::size_t i = 0; i < n; ++i) s += i ? ", {}" : "{}";
+    return s;
+  };
   auto bullet = [&](std::string t) { step(Step::Kind::bullet, std::move(t)); };
   auto equation = [&](std::string label, ex lhs, ex rhs) {
     Step* st = step(Step::Kind::equation, std::move(label));
@@ -83,7 +88,12 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       symbolic.push_back(sym->name);
     }
   }
-  if (!symbolic.empty()) bullet("Symbolic parameters (no value given): " + join(symbolic) + ".");
+  if (!symbolic.empty()) {
+    std::vector<ex> syms;
+    for (const auto& n : symbolic) syms.push_back(table.find(n)->sym);
+    Step* st = step(Step::Kind::bullet, "Symbolic parameters (no value given): " + list_of(syms.size()) + ".");
+    st->math = syms;
+  }
 
   const bool has_amb = std::any_of(s.equations.begin(), s.equations.end(),
                                    [](const Equation& e) { return e.kind == Equation::Kind::amb; });
@@ -92,10 +102,13 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   for (const auto& eq : s.equations) {
     if (eq.kind == Equation::Kind::constraint_acceleration) continue;
     std::vector<std::string> parts;
-    for (std::size_t i = 0; i < eq.terms.size(); ++i)
-      parts.push_back(eq.sources[i] + ": " + to_text(fold_definitions(eq.terms[i], table)));
+    std::vector<ex> terms;
+    for (std::size_t i = 0; i < eq.terms.size(); ++i) {
+      parts.push_back(eq.sources[i] + ": {}");
+      terms.push_back(fold_definitions(eq.terms[i], table));
+    }
     const std::string what = eq.kind == Equation::Kind::lmb ? "Forces" : "Moments";
-    text(eq.label + ". " + what + ": " + (parts.empty() ? "none" : join(parts, "; ")) + ".");
+    text_with(eq.label + ". " + what + ": " + (parts.empty() ? "none" : join(parts, "; ")) + ".", terms);
     if (!eq.why.empty()) text("About this point and axis there is " + eq.why + ".");
     equation(eq.label, eq.lhs, eq.rhs);
   }
@@ -113,15 +126,16 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
 
   section("Solving");
   auto count = [](std::size_t n, const std::string& word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); };
-  text(count(s.equations.size(), "equation") + " in " + count(s.unknowns.size(), "unknown") + " (" + joined(s.unknowns) +
-       "); rank " + std::to_string(sol.rank) + ".");
+  text_with(count(s.equations.size(), "equation") + " in " + count(s.unknowns.size(), "unknown") + " (" +
+                list_of(s.unknowns.size()) + "); rank " + std::to_string(sol.rank) + ".",
+            s.unknowns);
   for (const auto& group : sol.redundant)
     text("Redundant: " + join(group, ", ") + " are linearly dependent (one follows from the others).");
   switch (sol.status) {
     case Solution::Status::determined: d.status = "determined"; text("Every unknown is determined."); break;
     case Solution::Status::underdetermined:
       d.status = "underdetermined";
-      text("Not every unknown is determined; free: " + joined(sol.free) + ".");
+      text_with("Not every unknown is determined; free: " + list_of(sol.free.size()) + ".", sol.free);
       break;
     case Solution::Status::inconsistent:
       d.status = "inconsistent";
@@ -227,19 +241,24 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
         st->boxed = true;
         if (a.value) st->note = a.value->decimal + (a.value->unit.empty() ? "" : " " + a.value->unit);
       } else if (a.status == Answer::Status::not_in_equations) {
-        text(a.name + " does not appear in the chosen equations.");
+        text_with("{} does not appear in the chosen equations.", {a.symbol});
       } else if (a.general) {
-        text(a.name + " is determined only together with the free unknowns:");
+        text_with("{} is determined only together with the free unknowns:", {a.symbol});
         equation("", a.symbol, *a.general);
       } else {
-        text(a.name + " is not determined by the equations (free).");
+        text_with("{} is not determined by the equations (free).", {a.symbol});
       }
     }
     if (!d.minimum_norm.empty()) {
       std::vector<std::string> parts;
-      for (const auto& [name, v] : d.minimum_norm) parts.push_back(name + " = " + v->decimal + (v->unit.empty() ? "" : " " + v->unit));
-      text("The member of the family with the least norm (as a computer's least-squares solution would pick): " +
-           join(parts) + ".");
+      std::vector<ex> names;
+      for (const auto& [name, v] : d.minimum_norm) {
+        parts.push_back("{} = " + v->decimal + (v->unit.empty() ? "" : " " + v->unit));
+        names.push_back(table.find(name)->sym);
+      }
+      text_with("The member of the family with the least norm (as a computer's least-squares solution would pick): " +
+                    join(parts) + ".",
+                names);
     }
     for (const auto& c : d.combinations) {
       Step* st = equation("determined in combination", c.combination, c.value);

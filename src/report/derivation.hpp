@@ -25,6 +25,7 @@ struct Step {
   bool boxed = false;          // a final closed form
   std::string note;            // a number with its unit ("20 N"); for `given`, the unit only
   std::string number;          // given: the value as a decimal ("0.3")
+  std::vector<GiNaC::ex> math; // text and bullets: each "{}" in `text` is the next of these
 };
 
 struct Answer {

@@ -54,6 +54,19 @@ std::string value_text(const std::optional<NumericValue>& v) {
   return v->decimal + (v->unit.empty() ? "" : " " + v->unit);
 }
 
+// Prose with its "{}" placeholders filled from the step's expressions, as text, LaTeX
+// (escaped prose, $math$) or Markdown ($math$).
+std::string prose(const Step& st, Format f) {
+  std::string out;
+  std::size_t from = 0, k = 0;
+  auto plain = [&](const std::string& s) { return f == Format::latex ? tex_escape(s) : s; };
+  for (std::size_t at; (at = st.text.find("{}", from)) != std::string::npos && k < st.math.size(); from = at + 2, ++k) {
+    out += plain(st.text.substr(from, at - from));
+    out += f == Format::text ? to_text(st.math[k]) : "$" + to_latex(st.math[k]) + "$";
+  }
+  return out + plain(st.text.substr(from));
+}
+
 // ---- text ---------------------------------------------------------------------------------
 
 std::string answers_text(const Derivation& d) {
@@ -83,8 +96,8 @@ std::string derivation_text(const Derivation& d) {
   for (const auto& st : d.steps) {
     switch (st.kind) {
       case Step::Kind::section: out += "\n" + st.text + "\n" + std::string(st.text.size(), '-') + "\n"; break;
-      case Step::Kind::text: out += st.text + "\n"; break;
-      case Step::Kind::bullet: out += "  - " + st.text + "\n"; break;
+      case Step::Kind::text: out += prose(st, Format::text) + "\n"; break;
+      case Step::Kind::bullet: out += "  - " + prose(st, Format::text) + "\n"; break;
       case Step::Kind::given:
         out += "  - " + to_text(st.lhs) + " = " + st.number + (st.note.empty() ? "" : " " + st.note) + "\n";
         break;
@@ -133,11 +146,11 @@ std::string latex_document(const Derivation& d, bool full) {
       }
       switch (st.kind) {
         case Step::Kind::section: out += "\\subsection*{" + tex_escape(st.text) + "}\n"; break;
-        case Step::Kind::text: out += tex_escape(st.text) + "\n\n"; break;
+        case Step::Kind::text: out += prose(st, Format::latex) + "\n\n"; break;
         case Step::Kind::bullet:
           if (!in_list) out += "\\begin{itemize}\n";
           in_list = true;
-          out += "  \\item " + tex_escape(st.text) + "\n";
+          out += "  \\item " + prose(st, Format::latex) + "\n";
           break;
         case Step::Kind::given:
           if (!in_list) out += "\\begin{itemize}\n";
@@ -264,8 +277,8 @@ std::string markdown_document(const Derivation& d, bool full) {
       in_list = listed;
       switch (st.kind) {
         case Step::Kind::section: out += "## " + st.text + "\n\n"; break;
-        case Step::Kind::text: out += st.text + "\n\n"; break;
-        case Step::Kind::bullet: out += "- " + st.text + "\n"; break;
+        case Step::Kind::text: out += prose(st, Format::markdown) + "\n\n"; break;
+        case Step::Kind::bullet: out += "- " + prose(st, Format::markdown) + "\n"; break;
         case Step::Kind::given:
           out += "- $" + to_latex(st.lhs) + " = " + st.number + (st.note.empty() ? "" : "\\," + unit_latex(st.note)) + "$\n";
           break;
