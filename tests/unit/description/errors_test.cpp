@@ -186,3 +186,17 @@ TEST_CASE("Description: a 2-D body needs its center of mass; AMB needs 2-D or 3-
   CHECK(errors_of(plate + "derive: [{amb: plate, about: Z}]\n") ==
         Messages{"t.yaml:16:30: unknown point 'Z' (known: plate, B, D, E)"});
 }
+
+TEST_CASE("Description: an output unit must be a unit of the quantity's dimension", "[errors][units]") {
+  CHECK(errors_of(good + "find: [{name: T, unit: kg}, {name: ddot(x_A), unit: fts}]\n") ==
+        Messages{"t.yaml:15:24: 'T' is a force, but kg is a mass",
+                 "t.yaml:15:53: unit of 'ddot(x_A)' in 'find': unknown unit 'fts'"});
+  CHECK(errors_of(good + "find: [{name: T, unit: lbf}]\n").empty());
+}
+
+TEST_CASE("Description: a variant range must be a non-empty range of numbers", "[errors][key]") {
+  CHECK(errors_of(with(good, "F: {value: 130, unit: N}", "F: {value: 130, unit: N, range: [200, 100]}")) ==
+        Messages{"t.yaml:3:36: 'range' of parameter 'F' is empty (expected low < high)"});
+  CHECK(errors_of(with(good, "m: {value: 40, unit: kg}", "m: {value: 40, unit: kg, range: [-1, 5]}")) ==
+        Messages{"t.yaml:4:36: 'range' of parameter 'm' reaches -1, but the parameter is positive"});
+}
