@@ -203,7 +203,7 @@ TEST_CASE("CLI: JSON conditions carry the solved forms and whether they hold", "
   CHECK(c["meaning"] == "the contact pushes");
 }
 
-TEST_CASE("CLI: isolate finds axis OG for the sign-board's rod; usage and input errors", "[cli][isolate]") {
+TEST_CASE("CLI: isolate finds axis OG for the sign-board's rod, with usage and input errors", "[cli][isolate]") {
   const Run r = run_tackle("isolate " + examples + "sample-12.8-sign-board.yaml T_HI");
   CHECK(r.code == 0);
   CHECK(r.out ==
@@ -223,7 +223,7 @@ TEST_CASE("CLI: isolate finds axis OG for the sign-board's rod; usage and input 
   CHECK(j["isolations"][1]["impossible"] == true);
 }
 
-TEST_CASE("CLI: check one answer, as text and JSON; usage errors exit 2", "[cli][check]") {
+TEST_CASE("CLI: check one answer, as text and JSON, and usage errors exit 2", "[cli][check]") {
   const std::string board = examples + "sample-12.8-sign-board.yaml";
   Run r = run_tackle("check " + board + " --unknown T_HI --answer 'm*a*sqrt(b^2+d^2+e^2)/d'");
   CHECK(r.code == 0);
@@ -260,7 +260,7 @@ TEST_CASE("CLI: check a batch into JSON Lines and a grader results file", "[cli]
   fs::remove_all(dir);
 }
 
-TEST_CASE("CLI: sweep writes CSV, SVG and pgfplots; without a range it is a usage error", "[cli][sweep]") {
+TEST_CASE("CLI: sweep writes CSV, SVG and pgfplots, and without a range it is a usage error", "[cli][sweep]") {
   const fs::path dir = fs::temp_directory_path() / "tackle-sweep";
   fs::create_directories(dir);
   const Run r = run_tackle("sweep " + examples + "figure-12.28-suitcase-normal-forces.yaml --svg " + (dir / "f.svg").string() +

@@ -178,7 +178,7 @@ TEST_CASE("Description: a force in 2-D needs its point of application", "[errors
         Messages{"t.yaml:16:28: 'force' of a 'force' connection has 1 entry (expected 2, one per axis: x, y)"});
 }
 
-TEST_CASE("Description: a 2-D body needs its center of mass; AMB needs 2-D or 3-D", "[errors]") {
+TEST_CASE("Description: a 2-D body needs its center of mass, and AMB needs 2-D or 3-D", "[errors]") {
   CHECK(errors_of(with(plate, "center_of_mass: [1, 1], ", "")) ==
         Messages{"t.yaml:12:10: body 'plate' has no 'center_of_mass' (needed for its weight and its angular momentum balance)"});
   CHECK(errors_of(good + "derive: [{amb: A, about: C}]\n") ==

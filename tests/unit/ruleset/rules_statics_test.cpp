@@ -72,7 +72,7 @@ derive: [{lmb: block}]
   CHECK(d.conditions[2].otherwise == "the contact slips");
 }
 
-TEST_CASE("Rules: a rear-wheel-drive car's traction is m a; mu is checked only when given", "[rules][statics]") {
+TEST_CASE("Rules: a rear-wheel-drive car's traction is m a, and mu is checked only when given", "[rules][statics]") {
   const std::string car = R"(title: drive
 axes: [x, y]
 parameters: {m: {unit: kg}, g: {unit: m/s^2}, a: {unit: m/s^2}, c: {unit: m}, d: {unit: m}, h: {unit: m}}
