@@ -246,6 +246,18 @@ class Parser {
   ex call(const Token& name) {
     DepthGuard guard(*this, name.column);
     advance();  // '('
+    // dot(q) and ddot(q) take the coordinate's bare name: q itself need not be a name the
+    // expression may use (an answer may use ddot(y_B) without y_B).
+    if (name.text == "dot" || name.text == "ddot") {
+      const Token q = peek();
+      if (q.kind != Tok::name) fail(q.column, "'" + name.text + "' takes the name of a coordinate, as in " + name.text + "(x_A)");
+      advance();
+      if (peek().kind != Tok::rparen) fail(peek().column, "expected ')' to close '" + name.text + "('");
+      advance();
+      const std::string key = name.text + "(" + q.text + ")";
+      if (auto r = names_.resolve(key)) return *r;
+      fail(name.column, "'" + q.text + "' is not a coordinate, so '" + key + "' is not defined");
+    }
     std::vector<ex> args;
     std::vector<Token> first_tokens;
     if (peek().kind != Tok::rparen) {
@@ -266,13 +278,6 @@ class Parser {
       if (args.size() != 1) fail(name.column, "'" + f + "' takes one argument");
       return args[0];
     };
-    if (f == "dot" || f == "ddot") {
-      if (args.size() != 1 || first_tokens[0].kind != Tok::name || !is_a<symbol>(args[0]))
-        fail(name.column, "'" + f + "' takes the name of a coordinate, as in " + f + "(x_A)");
-      const std::string key = f + "(" + first_tokens[0].text + ")";
-      if (auto r = names_.resolve(key)) return *r;
-      fail(name.column, "'" + first_tokens[0].text + "' is not a coordinate, so '" + key + "' is not defined");
-    }
     auto vector_arg = [&](std::size_t i) {
       if (!is_vector(args[i])) fail(first_tokens[i].column, "'" + f + "' takes a vector");
       return args[i];

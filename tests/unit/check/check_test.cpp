@@ -172,3 +172,11 @@ TEST_CASE("Check: a batch grades every line and writes the grader shape", "[chec
   CHECK(grader["tests"][0]["max_score"] == 1);
   CHECK(grader["tests"][1]["output"] == "incorrect: off by a factor of 2 (the answer is twice the correct answer)");
 }
+
+TEST_CASE("Check: a kinematic answer may use a given acceleration without its coordinate", "[check]") {
+  const Checker& k = checker("sample-12.2-pulley-kinematics.yaml");
+  CHECK(k.check("ddot(y_A)", "-ddot(y_B)/2").verdict == Verdict::correct);
+  CHECK(k.check("ddot(y_A)", "-2*ddot(y_B)").summary == "off by a factor of 4 (the answer is 4 times the correct answer)");
+  CHECK(k.check("ddot(y_A)", "ddot(y_A)").summary ==
+        "at column 1: ddot(y_A) is an unknown of this problem; write the answer in the given quantities (d, ddot(y_B))");
+}
