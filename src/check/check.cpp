@@ -131,24 +131,9 @@ std::set<ex, ex_is_less> symbols_of(const ex& e) {
 // "6.8 N" -> ("6.8", "N"); "6.8" -> ("6.8", ""); nullopt when the text is not a number,
 // optionally followed by something that starts like a unit (a letter).
 std::optional<std::pair<std::string, std::string>> number_and_unit(const std::string& t) {
-  std::size_t i = 0;
-  if (i < t.size() && (t[i] == '-' || t[i] == '+')) ++i;
-  const std::size_t digits_start = i;
-  bool digits = false;
-  while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i, digits = true;
-  if (i < t.size() && t[i] == '.') {
-    ++i;
-    while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i, digits = true;
-  }
-  if (!digits || digits_start == t.size()) return std::nullopt;
-  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
-    std::size_t j = i + 1;
-    if (j < t.size() && (t[j] == '-' || t[j] == '+')) ++j;
-    if (j < t.size() && std::isdigit(static_cast<unsigned char>(t[j]))) {
-      while (j < t.size() && std::isdigit(static_cast<unsigned char>(t[j]))) ++j;
-      i = j;
-    }
-  }
+  const std::size_t sign = (!t.empty() && (t[0] == '-' || t[0] == '+')) ? 1 : 0;
+  const std::size_t i = scan_number(t, sign);
+  if (i == sign) return std::nullopt;
   std::string number = t.substr(0, i);
   std::size_t k = i;
   while (k < t.size() && t[k] == ' ') ++k;
@@ -369,11 +354,7 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
     r.score = v == Verdict::correct ? 1.0 : 0.0;
     return r;
   };
-  struct NoNames : NameResolver {
-    std::optional<ex> resolve(std::string_view) const override { return std::nullopt; }
-    std::vector<std::string> known_names() const override { return {}; }
-  } none;
-  const auto parsed = parse_expression(number, none, options_.limits);
+  const auto parsed = parse_expression(number, numbers_only(), options_.limits);
   if (!parsed.value || !is_a<numeric>(*parsed.value))
     return finish(Verdict::invalid, "syntax", "the number could not be read");
   numeric value = ex_to<numeric>(*parsed.value);

@@ -70,20 +70,7 @@ class Parser {
       }
       if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && i + 1 < text_.size() &&
                                                           std::isdigit(static_cast<unsigned char>(text_[i + 1])))) {
-        std::size_t j = i;
-        while (j < text_.size() && std::isdigit(static_cast<unsigned char>(text_[j]))) ++j;
-        if (j < text_.size() && text_[j] == '.') {
-          ++j;
-          while (j < text_.size() && std::isdigit(static_cast<unsigned char>(text_[j]))) ++j;
-        }
-        if (j < text_.size() && (text_[j] == 'e' || text_[j] == 'E')) {
-          std::size_t k = j + 1;
-          if (k < text_.size() && (text_[k] == '+' || text_[k] == '-')) ++k;
-          if (k < text_.size() && std::isdigit(static_cast<unsigned char>(text_[k]))) {
-            while (k < text_.size() && std::isdigit(static_cast<unsigned char>(text_[k]))) ++k;
-            j = k;
-          }
-        }
+        const std::size_t j = scan_number(text_, i);
         push(Tok::number, text_.substr(i, j - i), col);
         i = j;
         continue;
@@ -429,6 +416,36 @@ RelationResult parse_relation(std::string_view text, const NameResolver& names, 
   } catch (const std::exception& e) {
     return {std::nullopt, {{0, std::string("cannot evaluate: ") + e.what()}}};
   }
+}
+
+std::size_t scan_number(std::string_view t, std::size_t start) {
+  auto digit = [&](std::size_t k) { return k < t.size() && std::isdigit(static_cast<unsigned char>(t[k])); };
+  std::size_t j = start;
+  bool digits = false;
+  while (digit(j)) ++j, digits = true;
+  if (j < t.size() && t[j] == '.') {
+    ++j;
+    while (digit(j)) ++j, digits = true;
+  }
+  if (!digits) return start;
+  if (j < t.size() && (t[j] == 'e' || t[j] == 'E')) {
+    std::size_t k = j + 1;
+    if (k < t.size() && (t[k] == '+' || t[k] == '-')) ++k;
+    if (digit(k)) {
+      while (digit(k)) ++k;
+      j = k;
+    }
+  }
+  return j;
+}
+
+const NameResolver& numbers_only() {
+  struct NoNames : NameResolver {
+    std::optional<ex> resolve(std::string_view) const override { return std::nullopt; }
+    std::vector<std::string> known_names() const override { return {}; }
+  };
+  static const NoNames none;
+  return none;
 }
 
 bool is_vector(const ex& e) {

@@ -64,6 +64,13 @@ struct RelationResult {
 [[nodiscard]] RelationResult parse_relation(std::string_view text, const NameResolver& names,
                                             const ExprLimits& limits = {});
 
+/// A resolver that knows no names: for values that must be plain numbers.
+[[nodiscard]] const NameResolver& numbers_only();
+
+/// The end of a number literal starting at `start` (digits, an optional fraction, an optional
+/// exponent), or `start` when there is none there. Shared by the parser and the answer checker.
+[[nodiscard]] std::size_t scan_number(std::string_view text, std::size_t start);
+
 /// True when `e` is a vector (a 3x1 matrix) as the parser makes them.
 [[nodiscard]] bool is_vector(const GiNaC::ex& e);
 /// A vector from three components.

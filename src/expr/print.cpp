@@ -132,9 +132,9 @@ bool is_negative_term(const ex& e) {
 }
 
 // A sum and its negation print differently; which one GiNaC's normal() returns can vary from
-// run to run. Orient every sum factor of a term canonically: more positive than negative
-// terms, and on a tie the first term (sorted by name) positive. Returns the oriented term.
-int balance_of(const ex& sum) {
+// run to run, so split() orients every sum factor canonically: more positive than negative
+// terms, and on a tie the first term (sorted by name) positive.
+int balance_of(const ex& sum) {  // positive terms minus negative terms
   int b = 0;
   for (std::size_t i = 0; i < sum.nops(); ++i) b += is_negative_term(sum.op(i)) ? -1 : 1;
   return b;
@@ -258,11 +258,6 @@ Fraction split_uncached(const ex& e) {
   // Signs as a textbook writes them: a sum with more negative than positive terms is
   // negated (c + d - h mu, not h mu - c - d), and a leading minus moves into a sum when that
   // leaves the sum no worse: g (m_B - m_A), not -g (m_A - m_B).
-  auto balance = [](const ex& x) {
-    int b = 0;
-    for (std::size_t i = 0; i < x.nops(); ++i) b += is_negative_term(x.op(i)) ? -1 : 1;
-    return b;  // positive terms minus negative terms
-  };
   for (auto* side : {&f.num, &f.den})
     for (auto& x : *side)
       if (is_exactly<add>(x) && flip_sum(x)) {
@@ -273,7 +268,7 @@ Fraction split_uncached(const ex& e) {
     bool moved = false;
     for (auto* side : {&f.num, &f.den}) {
       for (auto& x : *side)
-        if (is_exactly<add>(x) && balance(x) == 0) {
+        if (is_exactly<add>(x) && balance_of(x) == 0) {
           x = (-x).expand();
           f.negative = false;
           moved = true;

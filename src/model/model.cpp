@@ -34,11 +34,7 @@ class Scope : public NameResolver {
 };
 
 // Numbers only: parameter values and layout values may not use names.
-struct NoNames : NameResolver {
-  std::optional<ex> resolve(std::string_view) const override { return std::nullopt; }
-  std::vector<std::string> known_names() const override { return {}; }
-};
-const NoNames none;
+const NameResolver& none = numbers_only();
 
 struct Builder {
   Builder(const Description& desc, const RuleSet& rs) : d(desc), rules(rs) {}
@@ -130,6 +126,8 @@ struct Builder {
       table->add(p.name.text, p.tex ? std::optional<std::string>(p.tex->text) : std::nullopt, SymbolRole::parameter,
                  dim, positive, p.name.at);
       if (definition) table->set_definition(p.name.text, *definition);
+      table->set_unit(p.name.text, p.unit && unit ? p.unit->text : si_unit_name(dim.value_or(Dimension{})),
+                      unit ? unit->to_si : numeric(1));
       if (!p.range.empty()) {
         std::optional<numeric> bounds[2], step;
         for (int i = 0; i < 2; ++i) {
@@ -150,8 +148,7 @@ struct Builder {
             diags.error(p.range[0].at, "'range' of parameter '" + p.name.text + "' reaches " + to_text(*bounds[0]) +
                                            ", but the parameter is positive");
           else
-            table->set_range(p.name.text, *bounds[0], *bounds[1], step, unit ? unit->to_si : numeric(1),
-                             p.unit ? p.unit->text : si_unit_name(dim.value_or(Dimension{})));
+            table->set_range(p.name.text, *bounds[0], *bounds[1], step);
         }
       }
       if (p.value) {
@@ -164,7 +161,7 @@ struct Builder {
           if (positive && !value.is_positive())
             diags.error(p.value->at, "parameter '" + p.name.text + "' is assumed positive but its value is " +
                                          to_text(*v) + " (set 'positive: false' to allow it)");
-          table->set_value(p.name.text, value, p.unit ? p.unit->text : si_unit_name(dim.value_or(Dimension{})));
+          table->set_value(p.name.text, value);
         }
       }
     }

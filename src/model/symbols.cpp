@@ -68,11 +68,17 @@ const SymbolInfo* SymbolTable::find(const GiNaC::ex& sym) const {
   return it == by_symbol_.end() ? nullptr : items_[it->second].get();
 }
 
-void SymbolTable::set_value(const std::string& name, GiNaC::numeric value, std::string unit) {
+void SymbolTable::set_unit(const std::string& name, std::string unit, GiNaC::numeric to_si) {
+  auto it = by_name_.find(name);
+  if (it == by_name_.end()) throw InternalError("no symbol '" + name + "'");
+  items_[it->second]->unit = std::move(unit);
+  items_[it->second]->unit_to_si = to_si;
+}
+
+void SymbolTable::set_value(const std::string& name, GiNaC::numeric value) {
   auto it = by_name_.find(name);
   if (it == by_name_.end()) throw InternalError("no symbol '" + name + "'");
   items_[it->second]->value = value;
-  items_[it->second]->unit = std::move(unit);
 }
 
 std::optional<GiNaC::ex> SymbolTable::resolve(std::string_view name) const {
@@ -96,14 +102,11 @@ std::optional<Dimension> SymbolTable::dimension_of(const GiNaC::symbol& s) const
 }
 
 void SymbolTable::set_range(const std::string& name, GiNaC::numeric low, GiNaC::numeric high,
-                            std::optional<GiNaC::numeric> step, GiNaC::numeric unit_to_si, std::string unit) {
+                            std::optional<GiNaC::numeric> step) {
   auto it = by_name_.find(name);
   if (it == by_name_.end()) throw InternalError("no symbol '" + name + "'");
-  SymbolInfo& s = *items_[it->second];
-  s.range = std::make_pair(low, high);
-  s.step = step;
-  s.unit_to_si = unit_to_si;
-  if (s.unit.empty()) s.unit = std::move(unit);
+  items_[it->second]->range = std::make_pair(low, high);
+  items_[it->second]->step = step;
 }
 
 GiNaC::exmap SymbolTable::definitions() const {

@@ -26,14 +26,13 @@ struct SymbolInfo {
   SymbolRole role = SymbolRole::parameter;
   std::optional<Dimension> dimension;
   std::optional<GiNaC::numeric> value;  // parameters: value in SI
-  std::string unit;                     // parameters: the unit the value was given in
+  std::string unit;                     // parameters: the unit they are stated in
   bool positive = false;
   std::optional<GiNaC::ex> definition;  // a defined parameter: its expression in the others
-  // Variants: the range values are drawn from and the step they are rounded to, in the
-  // parameter's own unit (`unit`), and that unit's factor to SI.
+  GiNaC::numeric unit_to_si = 1;        // parameters: `unit`'s factor to SI
+  // Variants: the range values are drawn from and the step they are rounded to, in `unit`.
   std::optional<std::pair<GiNaC::numeric, GiNaC::numeric>> range;
   std::optional<GiNaC::numeric> step;
-  GiNaC::numeric unit_to_si = 1;
   Location where;
 
   [[nodiscard]] const GiNaC::symbol& symbol() const { return GiNaC::ex_to<GiNaC::symbol>(sym); }
@@ -51,7 +50,9 @@ class SymbolTable : public NameResolver, public DimensionLookup {
   [[nodiscard]] const SymbolInfo* find(std::string_view name) const;
   [[nodiscard]] const SymbolInfo* find(const GiNaC::ex& sym) const;
   [[nodiscard]] const std::vector<std::unique_ptr<SymbolInfo>>& all() const { return items_; }
-  void set_value(const std::string& name, GiNaC::numeric value, std::string unit);
+  /// The unit a parameter is stated in (its text and factor to SI).
+  void set_unit(const std::string& name, std::string unit, GiNaC::numeric to_si);
+  void set_value(const std::string& name, GiNaC::numeric value);
 
   // NameResolver
   [[nodiscard]] std::optional<GiNaC::ex> resolve(std::string_view name) const override;
@@ -64,8 +65,7 @@ class SymbolTable : public NameResolver, public DimensionLookup {
   /// Substitution map of every defined parameter to its expression.
   [[nodiscard]] GiNaC::exmap definitions() const;
   void set_definition(const std::string& name, GiNaC::ex definition);
-  void set_range(const std::string& name, GiNaC::numeric low, GiNaC::numeric high, std::optional<GiNaC::numeric> step,
-                 GiNaC::numeric unit_to_si, std::string unit);
+  void set_range(const std::string& name, GiNaC::numeric low, GiNaC::numeric high, std::optional<GiNaC::numeric> step);
 
  private:
   std::vector<std::unique_ptr<SymbolInfo>> items_;

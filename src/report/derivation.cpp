@@ -157,6 +157,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     a.name = w.name;
     a.tex = w.tex;
     a.symbol = table.find(w.name)->sym;
+    a.unit = w.unit;
     const bool is_unknown = std::find(s.unknowns.begin(), s.unknowns.end(), w.expr) != s.unknowns.end();
     const bool is_candidate = std::find(m.candidates.begin(), m.candidates.end(), w.expr) != m.candidates.end();
     if (sol.status == Solution::Status::inconsistent) {
@@ -274,13 +275,9 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
                         std::nullopt, cc.condition->meaning, cc.condition->otherwise, cc.solved, cc.always};
       if (!cc.depends_on_free) {
         if (auto v = evaluate(cc.expr, table, std::nullopt)) {
-          const double x = v->approx;
-          const std::string& op = r.op;
-          r.holds = op == ">=" ? x >= 0 : op == ">" ? x > 0 : op == "<=" ? x <= 0 : op == "<" ? x < 0 : x == 0;
-          if (is_a<numeric>(v->exact)) {
-            const numeric n = ex_to<numeric>(v->exact);
-            r.holds = op == ">=" ? n >= 0 : op == ">" ? n > 0 : op == "<=" ? n <= 0 : op == "<" ? n < 0 : n.is_zero();
-          }
+          // Exactly when the value is rational, else on its high-precision float.
+          const numeric x = is_a<numeric>(v->exact) ? ex_to<numeric>(v->exact) : ex_to<numeric>(evalf(v->exact));
+          r.holds = relation_holds(x, r.op);
         }
       }
       text(cc.condition->source + ": the model holds while " + r.meaning + ":");

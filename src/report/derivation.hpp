@@ -36,6 +36,7 @@ struct Answer {
   std::optional<GiNaC::ex> closed_form;
   std::optional<NumericValue> value;
   std::optional<GiNaC::ex> general;  // free or in combination: in terms of the free unknowns
+  std::optional<Unit> unit;          // the unit the numbers are given in (SI when absent)
 };
 
 struct ConditionReport {

@@ -5,27 +5,11 @@
 #include <nlohmann/json.hpp>
 
 #include "expr/print.hpp"
+#include "report/tex.hpp"
 
 namespace tackle {
 
 using namespace GiNaC;
-
-namespace {
-
-bool holds(const numeric& x, const std::string& op) {
-  return op == ">=" ? x >= 0 : op == ">" ? x > 0 : op == "<=" ? x <= 0 : op == "<" ? x < 0 : x.is_zero();
-}
-
-std::string tex_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '_' || c == '&' || c == '%' || c == '#' || c == '$' || c == '{' || c == '}') out += '\\';
-    out += c;
-  }
-  return out;
-}
-
-}  // namespace
 
 std::vector<Variant> draw_variants(const Analysis& a, const Derivation& d, int count, unsigned long long seed,
                                    int digits) {
@@ -48,10 +32,10 @@ std::vector<Variant> draw_variants(const Analysis& a, const Derivation& d, int c
     v.index = static_cast<int>(out.size()) + 1;
     for (const SymbolInfo* s : ranged) {
       const auto [low, high] = *s->range;
+      // A multiple of the step from `low`: k in [0, steps], steps = floor((high - low)/step).
       const numeric step = s->step ? *s->step : (high - low) / 100;
-      const numeric steps = ((high - low) / step).to_int() >= 0 ? numeric(((high - low) / step).to_int()) : numeric(0);
-      const numeric k = numeric(static_cast<long>(rng() % static_cast<unsigned long long>(steps.to_long() + 1)));
-      const numeric value = low + k * step;
+      const auto steps = static_cast<unsigned long long>(((high - low) / step).to_double() + 1e-9);
+      const numeric value = low + numeric(static_cast<long>(rng() % (steps + 1))) * step;
       values[s->sym] = value * s->unit_to_si;
       v.parameters.push_back({s->name, decimal_string(value, digits), s->unit});
     }
@@ -61,19 +45,11 @@ std::vector<Variant> draw_variants(const Analysis& a, const Derivation& d, int c
     bool valid = true;
     for (const auto& c : d.conditions) {
       const ex x = evalf(c.simplified.subs(values));
-      valid = valid && is_a<numeric>(x) && ex_to<numeric>(x).is_real() && holds(ex_to<numeric>(x), c.op);
+      valid = valid && is_a<numeric>(x) && ex_to<numeric>(x).is_real() && relation_holds(ex_to<numeric>(x), c.op);
     }
     for (const auto& ans : d.answers) {
       if (!valid || !ans.closed_form) continue;
-      const std::optional<Unit> unit =
-          ans.value && ans.value->unit != si_unit_name(table.find(ans.symbol)->dimension.value_or(Dimension{}))
-              ? [&]() -> std::optional<Unit> {
-                  std::string err;
-                  int col = 0;
-                  return parse_unit(ans.value->unit, err, col);
-                }()
-              : std::nullopt;
-      auto value = evaluate_with(*ans.closed_form, values, table.find(ans.symbol)->dimension, digits, unit);
+      auto value = evaluate_with(*ans.closed_form, values, table.find(ans.symbol)->dimension, digits, ans.unit);
       if (!value) {
         valid = false;
         continue;

@@ -8,6 +8,7 @@
 
 #include "expr/parse.hpp"
 #include "expr/print.hpp"
+#include "solve/solve.hpp"
 
 namespace tackle {
 
@@ -45,10 +46,6 @@ std::string trim(const std::string& s) {
   return a == std::string::npos ? "" : s.substr(a, b - a + 1);
 }
 
-bool holds(double x, const std::string& op) {
-  return op == ">=" ? x >= -1e-12 : op == ">" ? x > 0 : op == "<=" ? x <= 1e-12 : op == "<" ? x < 0 : std::abs(x) < 1e-12;
-}
-
 std::string num(double v) { return fmt::format("{:.6g}", v); }
 
 }  // namespace
@@ -56,12 +53,8 @@ std::string num(double v) { return fmt::format("{:.6g}", v); }
 SweepResult run_sweep(const Analysis& a, const Derivation& d, const SweepSpec& spec, const Location& where) {
   const SymbolTable& table = *a.model.symbols;
   Diagnostics diags;
-  struct NoNames : NameResolver {
-    std::optional<ex> resolve(std::string_view) const override { return std::nullopt; }
-    std::vector<std::string> known_names() const override { return {}; }
-  } none;
   auto number = [&](const std::string& text, const std::string& what) -> std::optional<numeric> {
-    auto r = parse_expression(text, none);
+    auto r = parse_expression(text, numbers_only());
     if (!r.value || !is_a<numeric>(*r.value)) {
       diags.error(where, what + " '" + text + "' is not a number");
       return std::nullopt;
@@ -78,14 +71,6 @@ SweepResult run_sweep(const Analysis& a, const Derivation& d, const SweepSpec& s
       return nullptr;
     }
     return s;
-  };
-  // The factor from a parameter's own unit to SI.
-  auto to_si = [&](const SymbolInfo& s) -> numeric {
-    if (s.unit.empty()) return 1;
-    std::string err;
-    int col = 0;
-    auto u = parse_unit(s.unit, err, col);
-    return u ? u->to_si : numeric(1);
   };
   SweepResult r;
   r.title = d.title;
@@ -114,7 +99,7 @@ SweepResult run_sweep(const Analysis& a, const Derivation& d, const SweepSpec& s
     }
     const SymbolInfo* s = parameter(trim(f.substr(0, e2)), "'" + f + "'");
     const auto v = number(trim(f.substr(e2 + 1)), "the value");
-    if (s && v) base[s->sym] = *v * to_si(*s);
+    if (s && v) base[s->sym] = *v * s->unit_to_si;
   }
   SweepNames names(table, d);
   std::vector<ex> curves;
@@ -144,7 +129,7 @@ SweepResult run_sweep(const Analysis& a, const Derivation& d, const SweepSpec& s
   if (same && common) r.y_unit = si_unit_name(*common);
   r.x_name = x->name;
   r.x_unit = x->unit;
-  const numeric factor = to_si(*x);
+  const numeric factor = x->unit_to_si;
   const int n = count->to_int();
   r.y.assign(curves.size(), {});
   for (int i = 0; i < n; ++i) {
@@ -161,8 +146,10 @@ SweepResult run_sweep(const Analysis& a, const Derivation& d, const SweepSpec& s
     }
     bool valid = true;
     for (const auto& cond : d.conditions) {
-      const ex v = evalf(cond.simplified.subs(values));
-      valid = valid && is_a<numeric>(v) && holds(ex_to<numeric>(v).to_double(), cond.op);
+      // Exact at rational points (N_A is exactly 0 at h/l = 1), else a high-precision float.
+      ex v = normal(cond.simplified.subs(values));
+      if (!is_a<numeric>(v)) v = evalf(v);
+      valid = valid && is_a<numeric>(v) && ex_to<numeric>(v).is_real() && relation_holds(ex_to<numeric>(v), cond.op);
     }
     r.valid.push_back(valid);
   }

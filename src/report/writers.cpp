@@ -6,6 +6,7 @@
 
 #include "expr/print.hpp"
 #include "report/derivation.hpp"
+#include "report/tex.hpp"
 
 namespace tackle {
 
@@ -21,26 +22,6 @@ std::string status_name(Answer::Status s) {
     case Answer::Status::not_in_equations: return "not_in_equations";
   }
   return "";
-}
-
-std::string tex_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '_': out += "\\_"; break;
-      case '&': out += "\\&"; break;
-      case '%': out += "\\%"; break;
-      case '#': out += "\\#"; break;
-      case '$': out += "\\$"; break;
-      case '{': out += "\\{"; break;
-      case '}': out += "\\}"; break;
-      case '^': out += "\\textasciicircum{}"; break;
-      case '~': out += "\\textasciitilde{}"; break;
-      case '\\': out += "\\textbackslash{}"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 std::string tex_relation(const std::string& op) {
@@ -309,6 +290,30 @@ std::string write(const Derivation& d, Format f, bool full) {
     case Format::markdown: return markdown_document(d, full);
   }
   return {};
+}
+
+}  // namespace tackle
+
+namespace tackle {
+
+std::string tex_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '_': out += "\\_"; break;
+      case '&': out += "\\&"; break;
+      case '%': out += "\\%"; break;
+      case '#': out += "\\#"; break;
+      case '$': out += "\\$"; break;
+      case '{': out += "\\{"; break;
+      case '}': out += "\\}"; break;
+      case '^': out += "\\textasciicircum{}"; break;
+      case '~': out += "\\textasciitilde{}"; break;
+      case '\\': out += "\\textbackslash{}"; break;
+      default: out += c;
+    }
+  }
+  return out;
 }
 
 }  // namespace tackle

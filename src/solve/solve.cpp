@@ -104,11 +104,19 @@ ex strip_signed_factors(const ex& e, std::string& op) {
 
 }  // namespace
 
-std::vector<SolvedFor> solve_condition(const ex& expr, const std::string& op, const std::vector<ex>& parameters) {
+bool relation_holds(const numeric& x, const std::string& op) {
+  if (op == ">=") return x >= 0;
+  if (op == ">") return x > 0;
+  if (op == "<=") return x <= 0;
+  if (op == "<") return x < 0;
+  return x.is_zero();
+}
+
+namespace {
+
+// `rest reduced_op 0` (factors of known sign divided out) solved for each parameter.
+std::vector<SolvedFor> solve_reduced(const ex& rest, const std::string& reduced_op, const std::vector<ex>& parameters) {
   std::vector<SolvedFor> out;
-  if (op == "=") return out;
-  std::string reduced_op = op;
-  const ex rest = strip_signed_factors(expr, reduced_op);
   const ex nd = rest.numer_denom();
   if (!nd.op(1).is_equal(1)) return out;  // a denominator of unknown sign remains
   const ex poly = nd.op(0).expand();
@@ -120,6 +128,15 @@ std::vector<SolvedFor> solve_condition(const ex& expr, const std::string& op, co
     out.push_back({p, sign > 0 ? reduced_op : flipped(reduced_op), simplest(-b / a)});
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<SolvedFor> solve_condition(const ex& expr, const std::string& op, const std::vector<ex>& parameters) {
+  if (op == "=") return {};
+  std::string reduced_op = op;
+  const ex rest = strip_signed_factors(expr, reduced_op);
+  return solve_reduced(rest, reduced_op, parameters);
 }
 
 Solution solve(const Model& model, const EquationSystem& s) {
@@ -243,12 +260,13 @@ Solution solve(const Model& model, const EquationSystem& s) {
       std::vector<ex> parameters;
       for (const auto& sym : model.symbols->all())
         if (sym->role == SymbolRole::parameter) parameters.push_back(sym->sym);
-      cc.solved = solve_condition(cc.expr, c.op, parameters);
-      std::string op = c.op;
-      const ex rest = strip_signed_factors(cc.expr, op);
-      if (is_a<numeric>(rest) && c.op != "=") {
-        const numeric r = ex_to<numeric>(rest);
-        cc.always = op == ">=" ? r >= 0 : op == ">" ? r > 0 : op == "<=" ? r <= 0 : r < 0;
+      if (c.op != "=") {
+        // Factors of known sign divided out once: what is left is solved for a parameter, or
+        // is a number, and then the condition always or never holds.
+        std::string op = c.op;
+        const ex rest = strip_signed_factors(cc.expr, op);
+        cc.solved = solve_reduced(rest, op, parameters);
+        if (is_a<numeric>(rest)) cc.always = relation_holds(ex_to<numeric>(rest), op);
       }
     }
     sol.conditions.push_back(cc);

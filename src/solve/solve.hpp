@@ -45,6 +45,9 @@ struct CheckedCondition {
   std::vector<SolvedFor> solved;  // one per parameter it could be solved for, in parameter order
 };
 
+/// Whether `x op 0` holds, for op one of >=, >, <=, <, =.
+[[nodiscard]] bool relation_holds(const GiNaC::numeric& x, const std::string& op);
+
 /// Solves `expr op 0` for each parameter it is linear in (see SolvedFor).
 [[nodiscard]] std::vector<SolvedFor> solve_condition(const GiNaC::ex& expr, const std::string& op,
                                                      const std::vector<GiNaC::ex>& parameters);
