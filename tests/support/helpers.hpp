@@ -1,6 +1,7 @@
 // Test helpers: run the chain on inline YAML, collect diagnostics as strings.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,15 @@ inline std::unique_ptr<const Analysis> run_text(const std::string& yaml, const s
 
 /// An example's text, to vary it in a test.
 inline std::string read_example(const std::string& name) { return read_text_file(TACKLE_SOURCE_DIR "/examples/" + name); }
+
+/// An example with one piece of its text replaced (throws when the text is not there, so a
+/// test cannot silently run the unchanged example).
+inline std::string example_with(const std::string& name, const std::string& from, const std::string& to) {
+  std::string text = read_example(name);
+  const auto at = text.find(from);
+  if (at == std::string::npos) throw std::logic_error(name + " has no '" + from + "'");
+  return text.replace(at, from.size(), to);
+}
 
 /// Every diagnostic the text produces, formatted; empty when it is accepted.
 inline std::vector<std::string> errors_of(const std::string& yaml) {
