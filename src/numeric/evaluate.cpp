@@ -101,7 +101,7 @@ std::optional<NumericValue> evaluate_with(const ex& e, const exmap& values, std:
   for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
     if (is_a<symbol>(*it)) return std::nullopt;
   NumericValue out;
-  out.exact = v;
+  out.si = v;
   ex shown = v;
   out.unit = dimension ? si_unit_name(*dimension) : "";
   if (unit) {
@@ -115,6 +115,7 @@ std::optional<NumericValue> evaluate_with(const ex& e, const exmap& values, std:
   if (!is_a<numeric>(f) || !ex_to<numeric>(f).is_real()) return std::nullopt;
   out.approx = ex_to<numeric>(f).to_double();
   const ex exact_shown = normal(shown);
+  out.exact = exact_shown;
   out.decimal = is_a<numeric>(exact_shown) ? decimal_string(ex_to<numeric>(exact_shown), digits)
                                            : decimal_string(ex_to<numeric>(f), digits);
   return out;

@@ -14,7 +14,8 @@
 namespace tackle {
 
 struct NumericValue {
-  GiNaC::ex exact;      // a rational number, or an exact irrational form (2*sqrt(23/2)), in SI
+  GiNaC::ex exact;      // in `unit`: a rational number, or an exact irrational form (2*sqrt(23/2))
+  GiNaC::ex si;         // the same in SI
   double approx = 0.0;  // in `unit`
   std::string decimal;  // in `unit`: "-2.25", "6.78233"
   std::string unit;     // SI unit of the quantity's dimension, or the unit asked for

@@ -12,6 +12,20 @@ using namespace GiNaC;
 
 namespace {
 
+// Why an undetermined answer is not determined, with each missing quantity as "{}" when
+// `placeholders` (for typeset prose).
+std::string undetermined_reason(const Answer& a, const SymbolTable& table, bool placeholders) {
+  std::vector<std::string> names;
+  bool rate = false;
+  for (const auto& x : a.missing) {
+    const SymbolInfo* info = table.find(x);
+    names.push_back(placeholders ? "{}" : info->name);
+    rate = rate || info->role == SymbolRole::rate || info->role == SymbolRole::coordinate;
+  }
+  return "no solved equation gives " + join(names, ", ") +
+         (rate ? "; the equations solved are at the acceleration level (balances and constraints differentiated twice)"
+               : " in terms of the parameters and given quantities");
+}
 
 }  // namespace
 
@@ -181,8 +195,20 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
           a.general = shown;
         }
       } else {
-        a.closed_form = fold_definitions(simplest(general), table);
-        a.value = evaluate(*a.closed_form, table, w.dimension, options.digits, w.unit);
+        // A closed form may contain parameters and given quantities only: anything else (a
+        // velocity asked for while only accelerations are solved) is what is missing.
+        for (const auto& sym : table.all()) {
+          const bool known = sym->role == SymbolRole::parameter || sym->role == SymbolRole::defined ||
+                             std::find(m.given.begin(), m.given.end(), sym->sym) != m.given.end();
+          if (!known && general.has(sym->sym)) a.missing.push_back(sym->sym);
+        }
+        if (!a.missing.empty()) {
+          a.status = Answer::Status::undetermined;
+          a.reason = undetermined_reason(a, table, false);
+        } else {
+          a.closed_form = fold_definitions(simplest(general), table);
+          a.value = evaluate(*a.closed_form, table, w.dimension, options.digits, w.unit);
+        }
       }
     }
     d.answers.push_back(a);
@@ -225,7 +251,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
         const SymbolInfo* info = table.find(family[i]);
         // A double from Eigen, shown to the report's digits (not exact).
         NumericValue v;
-        v.exact = numeric(x(static_cast<Eigen::Index>(i)));
+        v.exact = v.si = numeric(x(static_cast<Eigen::Index>(i)));
         v.approx = x(static_cast<Eigen::Index>(i));
         v.decimal = decimal_string(numeric(std::abs(v.approx) < 1e-12 ? 0.0 : v.approx), std::min(options.digits, 12));
         v.unit = info->dimension ? si_unit_name(*info->dimension) : "";
@@ -243,6 +269,10 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
         if (a.value) st->note = a.value->decimal + (a.value->unit.empty() ? "" : " " + a.value->unit);
       } else if (a.status == Answer::Status::not_in_equations) {
         text_with("{} does not appear in the chosen equations.", {a.symbol});
+      } else if (a.status == Answer::Status::undetermined) {
+        std::vector<ex> math{a.symbol};
+        math.insert(math.end(), a.missing.begin(), a.missing.end());
+        text_with("{} is not determined: " + undetermined_reason(a, table, true) + ".", math);
       } else if (a.general) {
         text_with("{} is determined only together with the free unknowns:", {a.symbol});
         equation("", a.symbol, *a.general);

@@ -32,7 +32,11 @@ struct Answer {
   std::string name;
   std::string tex;
   GiNaC::ex symbol;  // the name as a symbol (from the symbol table)
-  enum class Status { determined, free, in_combination, not_in_equations } status = Status::determined;
+  // undetermined: what it comes to still contains quantities no solved equation gives
+  // (`missing`): never reported as a closed form, least of all as itself.
+  enum class Status { determined, free, in_combination, not_in_equations, undetermined } status = Status::determined;
+  std::vector<GiNaC::ex> missing;
+  std::string reason;  // undetermined: why, in words ("no solved equation gives dot(x_A) ...")
   std::optional<GiNaC::ex> closed_form;
   std::optional<NumericValue> value;
   std::optional<GiNaC::ex> general;  // free or in combination: in terms of the free unknowns

@@ -20,6 +20,16 @@ std::string status_name(Answer::Status s) {
     case Answer::Status::free: return "free";
     case Answer::Status::in_combination: return "in_combination";
     case Answer::Status::not_in_equations: return "not_in_equations";
+    case Answer::Status::undetermined: return "undetermined";
+  }
+  return "";
+}
+
+std::string kind_name(Equation::Kind k) {
+  switch (k) {
+    case Equation::Kind::lmb: return "lmb";
+    case Equation::Kind::amb: return "amb";
+    case Equation::Kind::constraint_acceleration: return "constraint";
   }
   return "";
 }
@@ -60,7 +70,7 @@ std::string answers_text(const Derivation& d) {
     } else if (a.general) {
       out += a.name + " = " + to_text(*a.general) + "  (" + status_name(a.status) + ")\n";
     } else {
-      out += a.name + ": " + status_name(a.status) + "\n";
+      out += a.name + ": " + status_name(a.status) + (a.reason.empty() ? "" : ": " + a.reason) + "\n";
     }
   }
   for (const auto& c : d.combinations)
@@ -177,6 +187,11 @@ std::string json_document(const Derivation& d, bool full) {
       u["latex"] = to_latex(*a.closed_form);
     }
     if (a.general) u["general"] = to_text(*a.general);
+    if (!a.reason.empty()) {
+      u["missing"] = nlohmann::ordered_json::array();
+      for (const auto& x : a.missing) u["missing"].push_back(to_text(x));
+      u["reason"] = a.reason;
+    }
     if (a.value) {
       u["value"] = a.value->approx;
       u["exact"] = to_text(a.value->exact);
@@ -221,7 +236,7 @@ std::string json_document(const Derivation& d, bool full) {
     j["equations"] = nlohmann::ordered_json::array();
     for (const auto& eq : d.system->equations) {
       nlohmann::ordered_json e{{"label", eq.label},
-                       {"kind", eq.kind == Equation::Kind::lmb ? "lmb" : "constraint"},
+                       {"kind", kind_name(eq.kind)},
                        {"lhs", to_text(eq.lhs)},
                        {"rhs", to_text(eq.rhs)},
                        {"latex", to_latex(eq.lhs) + " = " + to_latex(eq.rhs)},

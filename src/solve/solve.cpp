@@ -16,23 +16,125 @@ std::optional<ex> Solution::value_of(const ex& unknown) const {
   return std::nullopt;
 }
 
+// The sign of an expression when the domains of its symbols decide it: +1, -1, 0 (zero) or
+// nullopt (unknown). Decided structurally (not by GiNaC's info flags, which say nothing of a
+// sum of negative terms), so the answer never depends on the order GiNaC keeps terms in.
+std::optional<int> sign_of(const ex& e) {
+  if (is_a<numeric>(e)) {
+    const numeric& n = ex_to<numeric>(e);
+    if (!n.is_real()) return std::nullopt;
+    return n.is_zero() ? 0 : (n.is_positive() ? 1 : -1);
+  }
+  if (is_a<symbol>(e)) {
+    if (e.info(info_flags::positive)) return 1;
+    return std::nullopt;
+  }
+  if (is_a<add>(e)) {
+    int s = 0;  // the common sign of the nonzero terms so far
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      const auto t = sign_of(e.op(i));
+      if (!t) return std::nullopt;
+      if (*t == 0) continue;
+      if (s != 0 && *t != s) return std::nullopt;
+      s = *t;
+    }
+    return s == 0 ? std::nullopt : std::optional<int>(s);  // an all-zero sum is not left unevaluated
+  }
+  if (is_a<mul>(e)) {
+    int s = 1;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      const auto t = sign_of(e.op(i));
+      if (!t) return std::nullopt;
+      s *= *t;
+    }
+    return s;
+  }
+  if (is_a<power>(e)) {
+    const auto b = sign_of(e.op(0));
+    const ex& x = e.op(1);
+    if (!b || *b == 0 || !x.info(info_flags::real)) return std::nullopt;
+    if (*b > 0) return 1;
+    if (x.info(info_flags::even)) return 1;
+    if (x.info(info_flags::odd)) return -1;
+    return std::nullopt;
+  }
+  return std::nullopt;
+}
+
 namespace {
 
-// GiNaC's factor() can leave a sum partly factored (d*g - a*(e - c)), and which part it
-// factors can vary between runs; keep only the factorization into whole factors, each
-// expanded, so that the result is canonical.
-ex factored(const ex& polynomial) {
-  const ex f = factor(polynomial);
-  if (is_a<mul>(f)) {
-    ex out = 1;
-    for (std::size_t i = 0; i < f.nops(); ++i) {
-      const ex x = f.op(i);
-      out *= is_a<power>(x) ? pow(x.op(0).expand(), x.op(1)) : x.expand();
+// A sum's orientation: +1 if the sum is kept as it is, -1 if it is to be negated. A sum of
+// known sign is made positive; any other sum gets a positive coefficient on the term that
+// prints first in tackle's fixed order, so the choice never depends on GiNaC's hash order.
+int orientation(const ex& sum) {
+  if (const auto s = sign_of(sum); s && *s != 0) return *s;
+  std::string first;
+  int sign = 1;
+  for (std::size_t i = 0; i < sum.nops(); ++i) {
+    const ex t = sum.op(i);
+    ex coeff = 1, rest = t;
+    if (is_a<numeric>(t)) {
+      coeff = t;
+      rest = 1;
+    } else if (is_a<mul>(t)) {
+      coeff = t.op(t.nops() - 1);
+      rest = is_a<numeric>(coeff) ? t / coeff : t;
+      if (!is_a<numeric>(coeff)) coeff = 1;
     }
-    return out;
+    const std::string key = to_text(rest);
+    if (i == 0 || key < first) {
+      first = key;
+      sign = ex_to<numeric>(coeff).is_negative() ? -1 : 1;
+    }
   }
-  if (is_a<power>(f)) return pow(f.op(0).expand(), f.op(1));
-  return f.expand();
+  return sign;
+}
+
+}  // namespace
+
+std::vector<ex> canonical_factors(const ex& polynomial) {
+  const ex f = factor(polynomial);
+  std::vector<ex> raw;
+  if (is_a<mul>(f))
+    for (std::size_t i = 0; i < f.nops(); ++i) raw.push_back(f.op(i));
+  else
+    raw.push_back(f);
+  // GiNaC's factor() can leave a sum partly factored (d*g - a*(e - c)), and which part it
+  // factors can vary between runs: each factor is expanded, so that only the factorization
+  // into whole factors is kept. Each sum is oriented (see `orientation`) and the signs taken
+  // out are gathered in the numeric coefficient, which comes first.
+  numeric coefficient = 1;
+  std::vector<ex> out;
+  for (const ex& x : raw) {
+    ex base = x, exponent = 1;
+    if (is_a<power>(x)) {
+      base = x.op(0);
+      exponent = x.op(1);
+    }
+    base = base.expand();
+    if (const ex p = pow(base, exponent); is_a<numeric>(p)) {
+      coefficient *= ex_to<numeric>(p);
+      continue;
+    }
+    // Only integer powers of a sum are oriented: a fractional power of the negated sum is
+    // another expression.
+    if (is_a<add>(base) && exponent.info(info_flags::integer) && orientation(base) < 0) {
+      base = (-base).expand();
+      if (exponent.info(info_flags::odd)) coefficient = -coefficient;
+    }
+    out.push_back(exponent.is_equal(1) ? base : pow(base, exponent));
+  }
+  if (!coefficient.is_equal(1) || out.empty()) out.insert(out.begin(), coefficient);
+  return out;
+}
+
+namespace {
+
+// The product of the canonical factors (see canonical_factors).
+ex factored(const ex& polynomial) {
+  ex out = 1;
+  for (const ex& x : canonical_factors(polynomial)) out *= x;
+  return out;
 }
 
 }  // namespace
@@ -69,12 +171,7 @@ std::string flipped(const std::string& op) {
   return op;
 }
 
-int known_sign(const ex& e) {
-  if (e.info(info_flags::positive)) return 1;
-  if (e.info(info_flags::negative)) return -1;
-  if (is_a<numeric>(e)) return ex_to<numeric>(e).is_zero() ? 0 : (ex_to<numeric>(e).is_positive() ? 1 : -1);
-  return 0;
-}
+int known_sign(const ex& e) { return sign_of(e).value_or(0); }
 
 // `e op 0` with the factors of known sign divided out: returns the factors left (their
 // product), and flips `op` for each negative factor divided out.
@@ -83,12 +180,7 @@ ex strip_signed_factors(const ex& e, std::string& op) {
   ex rest = 1;
   for (int side = 0; side < 2; ++side) {
     const bool denominator = side == 1;
-    const ex f = factor(nd.op(side));
-    std::vector<ex> factors;
-    if (is_a<mul>(f))
-      for (std::size_t i = 0; i < f.nops(); ++i) factors.push_back(f.op(i));
-    else
-      factors.push_back(f);
+    const std::vector<ex> factors = canonical_factors(nd.op(side));
     for (const ex& x : factors) {
       const int sign = known_sign(x);
       if (sign > 0) continue;
@@ -123,7 +215,7 @@ std::vector<SolvedFor> solve_reduced(const ex& rest, const std::string& reduced_
   for (const ex& p : parameters) {
     if (!poly.has(p) || poly.degree(p) != 1) continue;
     const ex a = normal(poly.coeff(p, 1)), b = normal(poly.coeff(p, 0));
-    const int sign = known_sign(factor(a));
+    const int sign = known_sign(factored(a));
     if (sign == 0) continue;
     out.push_back({p, sign > 0 ? reduced_op : flipped(reduced_op), simplest(-b / a)});
   }

@@ -66,6 +66,17 @@ struct Solution {
   [[nodiscard]] std::optional<GiNaC::ex> value_of(const GiNaC::ex& unknown) const;
 };
 
+/// The sign of an expression when its symbols' domains decide it (+1, -1, 0), decided from
+/// its structure in both directions (a sum of negative terms is negative), never from the
+/// order GiNaC keeps terms in.
+[[nodiscard]] std::optional<int> sign_of(const GiNaC::ex& e);
+
+/// The factors of a polynomial in a canonical form: a numeric coefficient first (when it is
+/// not 1), then each factor expanded, every integer power of a sum oriented (positive when its
+/// sign is known, else a positive coefficient on the term that prints first), the signs taken
+/// out gathered in the coefficient. The same for every hash order.
+[[nodiscard]] std::vector<GiNaC::ex> canonical_factors(const GiNaC::ex& polynomial);
+
 /// Shortest of the normal form and its factored form.
 [[nodiscard]] GiNaC::ex simplest(const GiNaC::ex& e);
 

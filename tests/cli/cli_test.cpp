@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -274,4 +275,57 @@ TEST_CASE("CLI: sweep writes CSV, SVG and pgfplots, and without a range it is a 
   CHECK(custom.out == "l [m],N_B [N],valid\n0.5,72.594,true\n1,60.822,true\n");
   CHECK(run_tackle("sweep " + examples + "sample-12.7-suitcase.yaml").code == 2);
   fs::remove_all(dir);
+}
+
+TEST_CASE("CLI: a velocity the equations do not give is undetermined, never equal to itself", "[cli][trust]") {
+  // Regression: with given: [dot(y_B)] and find: [dot(y_A)], tackle printed
+  // `dot(y_A) = dot(y_A)` with status determined.
+  const fs::path dir = fs::temp_directory_path() / ("tackle-vel-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  {
+    std::ofstream(dir / "v.yaml") << tackle::test::example_with(
+        "sample-12.2-pulley-kinematics.yaml", "given: [ddot(y_B)]\nfind: [ddot(y_A)]\nexpected:\n  ddot(y_A): {closed_form: \"-ddot(y_B)/2\"}",
+        "given: [dot(y_B)]\nfind: [dot(y_A)]");
+  }
+  const Run text = run_tackle("solve " + (dir / "v.yaml").string());
+  CHECK(text.code == 0);
+  CHECK(text.out.find("dot(y_A) = dot(y_A)") == std::string::npos);
+  CHECK(text.out.find("dot(y_A): undetermined: no solved equation gives dot(y_A); the equations solved are at the "
+                      "acceleration level (balances and constraints differentiated twice)\n") != std::string::npos);
+  const Run json = run_tackle("solve " + (dir / "v.yaml").string() + " --format json");
+  const auto u = nlohmann::json::parse(json.out)["unknowns"][0];
+  CHECK(u["status"] == "undetermined");
+  CHECK(u["missing"] == nlohmann::json::array({"dot(y_A)"}));
+  CHECK_FALSE(u.contains("closed_form"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("CLI: JSON exact, value, decimal and unit agree in the unit asked for", "[cli][trust]") {
+  // Regression: with an output unit, `exact` was in SI while `value` was in the unit asked.
+  const Run r = run_tackle("solve " + examples + "car-braking-us-units.yaml --format json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  for (const auto& u : j["unknowns"]) {
+    INFO(u.dump());
+    REQUIRE(u.contains("exact"));
+    const auto exact = tackle::parse_expression(u["exact"].get<std::string>(), tackle::numbers_only());
+    REQUIRE(exact.value);
+    CHECK(GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(*exact.value)).to_double() == Approx(u["value"].get<double>()));
+    CHECK(std::stod(u["decimal"].get<std::string>()) == Approx(u["value"].get<double>()).epsilon(1e-5));
+  }
+}
+
+TEST_CASE("CLI: JSON names each equation's kind: lmb, amb or constraint", "[cli][trust]") {
+  // Regression: sample 12.8's AMB about axis OG was labelled "kind": "constraint".
+  const Run r = run_tackle("derive " + examples + "sample-12.8-sign-board.yaml --format json");
+  REQUIRE(r.code == 0);
+  const auto eqs = nlohmann::json::parse(r.out)["equations"];
+  REQUIRE(eqs.size() == 1);
+  CHECK(eqs[0]["label"].get<std::string>().rfind("AMB", 0) == 0);
+  CHECK(eqs[0]["kind"] == "amb");
+  const Run p = run_tackle("derive " + examples + "sample-12.3-two-mass-pulley.yaml --format json");
+  const auto pulley = nlohmann::json::parse(p.out);
+  std::set<std::string> kinds;
+  for (const auto& e : pulley["equations"]) kinds.insert(e["kind"].get<std::string>());
+  CHECK(kinds == std::set<std::string>{"lmb", "constraint"});
 }

@@ -65,6 +65,26 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
           CHECK(answer.value->approx == Approx(v).epsilon(1e-9).margin(1e-12));
         }
       }
+      // Expected validity conditions solved for a parameter ("a <= mu*g*l_r/(...)"): each is
+      // among the solved forms of some condition, with the same operator and an equal bound.
+      if (const YAML::Node conds = root["expected_conditions"]) {
+        for (const auto& c : conds) {
+          const std::string text = c.as<std::string>();
+          INFO("expected condition " << text);
+          const auto sp1 = text.find(' '), sp2 = text.find(' ', sp1 + 1);
+          REQUIRE(sp2 != std::string::npos);
+          const auto parameter = parse_expression(text.substr(0, sp1), table);
+          const std::string op = text.substr(sp1 + 1, sp2 - sp1 - 1);
+          const auto bound = parse_expression(text.substr(sp2 + 1), table);
+          REQUIRE(parameter.value);
+          REQUIRE(bound.value);
+          int found = 0;
+          for (const auto& cr : d.conditions)
+            for (const auto& sv : cr.solved)
+              if (sv.parameter.is_equal(*parameter.value) && sv.op == op && normal(sv.bound - *bound.value).is_zero()) ++found;
+          CHECK(found == 1);
+        }
+      }
       // An indeterminate example names its free unknowns and determined combinations.
       std::vector<std::string> free;
       if (root["expected_free"])
