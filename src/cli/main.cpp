@@ -1,7 +1,8 @@
 // The tackle command: a thin shell over the library. Exit codes: 0 ok, 1 input error,
 // 2 usage error, 3 internal error.
-#include <fstream>
 #include <iostream>
+#include <optional>
+#include <sstream>
 
 #include <CLI/CLI.hpp>
 
@@ -12,6 +13,7 @@
 #include "pipeline/pipeline.hpp"
 #include "report/isolation_report.hpp"
 #include "report/key.hpp"
+#include "core/files.hpp"
 #include "report/sweep.hpp"
 
 namespace {
@@ -21,18 +23,16 @@ int report_input_error(const tackle::InputError& e) {
   return 1;
 }
 
+// To standard output, or to the file atomically (a failed run leaves no partial output).
 int emit(const std::string& text, const std::string& out) {
   if (out.empty() || out == "-") {
     std::cout << text;
     return 0;
   }
-  std::ofstream f(out, std::ios::binary);
-  if (!f) {
-    std::cerr << out << ": cannot write the output file\n";
-    return 1;
-  }
-  f << text;
-  return f ? 0 : 1;
+  std::string error;
+  if (tackle::write_file_atomically(out, text, error)) return 0;
+  std::cerr << error << "\n";
+  return 1;
 }
 
 }  // namespace
@@ -214,26 +214,27 @@ int main(int argc, char** argv) {
       options.echo_latex = !no_latex;
       const tackle::Checker checker(*analysis, options);
       if (batch_opt->count() > 0) {
-        std::ifstream batch_file;
-        if (batch != "-") {
-          batch_file.open(batch, std::ios::binary);
-          if (!batch_file) {
-            std::cerr << batch << ": cannot read the file\n";
+        std::istringstream batch_text;
+        if (batch != "-") batch_text.str(tackle::read_text_file(batch));
+        // Both outputs go through temporary files and are renamed into place only when the
+        // whole batch was graded.
+        std::optional<tackle::AtomicOutput> out_file, results_file;
+        for (auto& [file, path] : {std::pair{&out_file, &out}, std::pair{&results_file, &results}}) {
+          if (path->empty() || *path == "-") continue;
+          file->emplace(*path);
+          if (!(*file)->ok()) {
+            std::cerr << (*file)->error() << "\n";
             return 1;
           }
         }
-        std::ofstream out_file;
-        if (!out.empty() && out != "-") out_file.open(out, std::ios::binary);
-        std::ostream& sink = out_file.is_open() ? static_cast<std::ostream&>(out_file) : std::cout;
-        const auto summary = tackle::check_batch(checker, batch == "-" ? std::cin : batch_file, sink);
-        if (!results.empty()) {
-          std::ofstream r(results, std::ios::binary);
-          if (!r) {
-            std::cerr << results << ": cannot write the results file\n";
+        std::ostream& sink = out_file ? out_file->stream() : std::cout;
+        const auto summary = tackle::check_batch(checker, batch == "-" ? std::cin : batch_text, sink);
+        if (results_file) results_file->stream() << summary.grader_json;
+        for (auto* file : {&out_file, &results_file})
+          if (*file && !(*file)->commit()) {
+            std::cerr << (*file)->error() << "\n";
             return 1;
           }
-          r << summary.grader_json;
-        }
         return 0;
       }
       const auto result = checker.check(unknown, answer);

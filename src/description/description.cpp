@@ -1,5 +1,7 @@
 #include "description/description.hpp"
 
+#include "core/files.hpp"
+
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -365,14 +367,6 @@ Description parse_description(const std::string& text, const std::string& file) 
   DescriptionRead r = read_description_text(text, file);
   if (!r.problems.empty()) throw InputError(r.problems);
   return std::move(r.description);
-}
-
-std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({{{path, 0, 0}, "cannot read the file"}});
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 Description read_description(const std::string& path) {

@@ -2,6 +2,8 @@
 // Expressions stay text here; the model stage parses them against the problem's names.
 #pragma once
 
+#include "core/files.hpp"  // read_text_file
+
 #include <map>
 #include <optional>
 #include <string>
@@ -119,8 +121,6 @@ struct DescriptionRead {
 
 /// Reads a description; every problem in the file is reported at once (InputError).
 [[nodiscard]] Description read_description(const std::string& path);
-/// The whole file as text (InputError when it cannot be read).
-[[nodiscard]] std::string read_text_file(const std::string& path);
 /// The same from text already in memory; `file` names it in messages.
 [[nodiscard]] Description parse_description(const std::string& text, const std::string& file);
 

@@ -130,6 +130,14 @@ Vec tidy(const Vec& v) {
   ex g = 0;
   for (const auto& x : w) g = x.is_zero() ? g : (g.is_zero() ? x : gcd(g, x));
   if (!g.is_zero()) w = {normal(w[0] / g), normal(w[1] / g), normal(w[2] / g)};
+  // gcd() chooses the sign by GiNaC's term order: orient the direction canonically (its
+  // first nonzero component's canonical factorization has a positive coefficient).
+  for (const auto& x : w) {
+    if (x.is_zero()) continue;
+    const ex lead = canonical_factors(x.numer())[0];
+    if (is_a<numeric>(lead) && ex_to<numeric>(lead).is_negative()) w = {-w[0], -w[1], -w[2]};
+    break;
+  }
   return w;
 }
 

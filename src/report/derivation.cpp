@@ -31,7 +31,10 @@ std::string undetermined_reason(const Answer& a, const SymbolTable& table, bool 
 
 ex fold_definitions(const ex& e, const SymbolTable& table) {
   ex best = e;
-  for (const auto& [name_sym, definition] : table.definitions()) {
+  for (const auto& sym : table.all()) {  // in the table's order (an exmap's is the hash order)
+    if (!sym->definition) continue;
+    const ex& name_sym = sym->sym;
+    const ex& definition = *sym->definition;
     // l = sqrt(A): put l^2 for A, so that sqrt(A) and 1/sqrt(A) become l and 1/l (l > 0).
     const bool root = is_a<power>(definition) && definition.op(1).is_equal(numeric(1, 2));
     const ex folded = root ? best.subs(definition.op(0) == pow(name_sym, 2)) : best.subs(definition == name_sym);

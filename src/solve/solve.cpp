@@ -1,6 +1,7 @@
 #include "solve/solve.hpp"
 
 #include <algorithm>
+#include <map>
 #include <random>
 
 #include "core/diagnostics.hpp"
@@ -151,11 +152,15 @@ namespace {
 bool zero(const ex& e) { return normal(e).is_zero(); }
 
 // Random exact positive rationals for every symbol in `e` that `keep` does not hold.
+// Values are drawn for the symbols in the order of their names, not in the order GiNaC
+// keeps them, so the points are the same in every run.
 exmap random_point(const ex& e, std::mt19937& rng) {
+  std::map<std::string, ex> by_name;
+  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+    if (is_a<symbol>(*it)) by_name.emplace(ex_to<symbol>(*it).get_name(), *it);
   exmap m;
   std::uniform_int_distribution<int> num(1, 97), den(1, 13);
-  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
-    if (is_a<symbol>(*it) && !m.count(*it)) m[*it] = numeric(num(rng), den(rng));
+  for (const auto& [name, sym] : by_name) m[sym] = numeric(num(rng), den(rng));
   return m;
 }
 

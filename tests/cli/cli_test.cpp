@@ -86,24 +86,8 @@ TEST_CASE("CLI: derive prints each example as in its approved text report", "[cl
   }
 }
 
-TEST_CASE("CLI: output is identical from run to run", "[cli]") {
-  // Separate processes: GiNaC's term order depends on addresses, which change per run.
-  for (const auto& e : fs::directory_iterator(examples)) {
-    if (e.path().extension() != ".yaml") continue;
-    SECTION(e.path().stem().string()) {
-      for (const std::string& args : {"derive " + e.path().string() + " --format latex",
-                                     "derive " + e.path().string() + " --format json"}) {
-        const std::string first = run_tackle(args).out;
-        for (int i = 0; i < 3; ++i) CHECK(run_tackle(args).out == first);
-      }
-      if (e.path().stem().string().rfind("sample-12.2", 0) != 0) {
-        const std::string args = "isolate " + e.path().string() + " --all";
-        const std::string first = run_tackle(args).out;
-        for (int i = 0; i < 3; ++i) CHECK(run_tackle(args).out == first);
-      }
-    }
-  }
-}
+// Output identical from run to run, across processes and memory layouts: see
+// tests/determinism/run.sh (the ctest entry determinism_across_processes).
 
 TEST_CASE("CLI: exit codes: 0 ok, 1 input error, 2 usage", "[cli]") {
   CHECK(run_tackle("--help").code == 0);
@@ -328,4 +312,43 @@ TEST_CASE("CLI: JSON names each equation's kind: lmb, amb or constraint", "[cli]
   std::set<std::string> kinds;
   for (const auto& e : pulley["equations"]) kinds.insert(e["kind"].get<std::string>());
   CHECK(kinds == std::set<std::string>{"lmb", "constraint"});
+}
+
+TEST_CASE("CLI: a directory given as FILE is named as a directory, exit 1", "[cli][errors]") {
+  const Run r = run_tackle("derive " + examples);
+  CHECK(r.code == 1);
+  CHECK(r.err == examples + ": is a directory (expected a file)\n");
+  const Run b = run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + examples);
+  CHECK(b.code == 1);
+  CHECK(b.err == examples + ": is a directory (expected a file)\n");
+}
+
+TEST_CASE("CLI: -o and --results are written whole or not at all", "[cli][errors]") {
+  const fs::path dir = fs::temp_directory_path() / ("tackle-atomic-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string kept = (dir / "kept.txt").string();
+  std::ofstream(kept) << "previous contents\n";
+  // A failed run leaves the old output as it was, and no temporary file behind.
+  const Run bad = run_tackle(std::string("derive ") + TACKLE_SOURCE_DIR + "/tests/data/bad/02-unknown-key.yaml -o " + kept);
+  CHECK(bad.code == 1);
+  CHECK(slurp(kept) == "previous contents\n");
+  // A successful one replaces it.
+  const Run good = run_tackle("solve " + examples + "sample-12.3-two-mass-pulley.yaml -o " + kept);
+  CHECK(good.code == 0);
+  CHECK(slurp(kept).rfind("T = 2*F*m_B/(9*m_A + 4*m_B)", 0) == 0);
+  // An output that is a directory, or in a directory that does not exist, is an error.
+  const Run to_dir = run_tackle("solve " + examples + "sample-12.3-two-mass-pulley.yaml -o " + dir.string());
+  CHECK(to_dir.code == 1);
+  CHECK(to_dir.err == dir.string() + ": is a directory (expected a file to write)\n");
+  // A batch whose results file cannot be made writes neither output.
+  const std::string batch = (dir / "b.jsonl").string();
+  std::ofstream(batch) << R"x({"id": "s1", "unknown": "T_HI", "answer": "m*a*l/(2*d)"})x" << "\n";
+  const Run no_results = run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + batch + " -o " +
+                                    (dir / "out.jsonl").string() + " --results " + (dir / "missing" / "r.json").string());
+  CHECK(no_results.code == 1);
+  CHECK_FALSE(fs::exists(dir / "out.jsonl"));
+  std::size_t files = 0;
+  for (const auto& e : fs::directory_iterator(dir)) files += e.path().filename().string().find(".tackle-") != std::string::npos;
+  CHECK(files == 0);
+  fs::remove_all(dir);
 }
