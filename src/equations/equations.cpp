@@ -99,6 +99,7 @@ EquationSystem build_equations(const Model& m) {
     const ex varying = (q - q.subs(still_coordinates)).expand();
     ConstraintSteps steps{c.label, c.meaning, varying, time_derivative(varying, m), 0};
     steps.acceleration = time_derivative(steps.rate, m);
+    steps.constant = c.constant;
     s.constraints.push_back(steps);
     Equation eq;
     eq.kind = Equation::Kind::constraint_acceleration;
@@ -108,6 +109,12 @@ EquationSystem build_equations(const Model& m) {
     eq.terms = {steps.acceleration};
     eq.sources = {"second time derivative of the " + c.meaning};
     s.equations.push_back(eq);
+    Equation rate{Equation::Kind::constraint_rate, c.label + ": rate", steps.rate, 0,
+                  {"first time derivative of the " + c.meaning}, {steps.rate}, ""};
+    s.rate_equations.push_back(rate);
+    if (!c.constant.is_zero())
+      s.position_equations.push_back({Equation::Kind::constraint_position, c.label + ": position", varying, c.constant,
+                                      {"the " + c.meaning + " is constant"}, {varying}, ""});
   };
   // One equation per axis; a 2-D moment has only a z component.
   auto add_lmb = [&](const std::vector<int>& bodies, bool system) {

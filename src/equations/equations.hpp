@@ -14,7 +14,7 @@
 namespace tackle {
 
 struct Equation {
-  enum class Kind { lmb, amb, constraint_acceleration } kind;
+  enum class Kind { lmb, amb, constraint_acceleration, constraint_rate, constraint_position } kind;
   std::string label;                // "LMB A (x)", "AMB board about G (axis OG)", "string s: acceleration"
   GiNaC::ex lhs, rhs;
   std::vector<std::string> sources; // where each term of the lhs comes from
@@ -29,12 +29,17 @@ struct ConstraintSteps {
   GiNaC::ex quantity;
   GiNaC::ex rate;          // d/dt of the quantity (= 0)
   GiNaC::ex acceleration;  // d2/dt2 of the quantity (= 0)
+  GiNaC::ex constant = 0;  // the named constant the quantity keeps (C_s), when one was made
 };
 
 struct EquationSystem {
   std::vector<Equation> equations;         // what is solved
   std::vector<ConstraintSteps> constraints;
   std::vector<GiNaC::ex> unknowns;         // candidates that appear in the equations, in order
+  // The same constraints once differentiated (rates) and undifferentiated (positions, equal
+  // to their constant), for velocity and position questions.
+  std::vector<Equation> rate_equations;
+  std::vector<Equation> position_equations;
 };
 
 /// d/dt of an expression in the model's coordinates and rates (chain rule).

@@ -872,8 +872,9 @@ struct Builder {
         continue;
       }
       const SymbolInfo* s = table->find(*r.value);
-      if (!s || (s->role != SymbolRole::acceleration && s->role != SymbolRole::rate && s->role != SymbolRole::unknown)) {
-        diags.error(g.at, "'" + g.text + "' cannot be given (expected an acceleration such as ddot(x_B) or an unknown)");
+      if (!s || (s->role != SymbolRole::acceleration && s->role != SymbolRole::rate && s->role != SymbolRole::unknown &&
+                 s->role != SymbolRole::coordinate)) {
+        diags.error(g.at, "'" + g.text + "' cannot be given (expected a coordinate, a velocity or an acceleration such as ddot(x_B), or an unknown)");
         continue;
       }
       m.given.push_back(s->sym);
@@ -903,6 +904,27 @@ struct Builder {
         }
         m.wanted.push_back({s->name, s->tex, s->sym, false, s->dimension, output_unit(f, s->dimension)});
       }
+    }
+  }
+
+  // Position questions: each constraint's constant (the varying part of its quantity keeps
+  // the value it has; the layout only tells directions, so the constant is a symbol,
+  // `C_s` for string s, as a person writes "x_S = 2 x + const").
+  void constraint_constants() {
+    bool asked = false;
+    for (const auto& w : m.wanted)
+      for (const auto& b : m.bodies)
+        if (!b.coord.is_zero() && w.expr.has(b.coord)) asked = true;
+    if (!asked) return;
+    for (auto& c : m.constraints) {
+      const std::string base = c.connection.empty() ? c.label : c.connection;
+      std::string name = "C_" + base;
+      for (char& ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_') ch = '_';
+      if (table->find(name)) continue;  // a parameter of that name: no constant for this one
+      std::string problem;
+      const auto dim = dimension_of(c.quantity, *table, problem);
+      c.constant = table->add(name, std::nullopt, SymbolRole::parameter, dim, false, Location{}).sym;
     }
   }
 
@@ -1019,6 +1041,7 @@ struct Builder {
     connections();
     gravity();
     given_and_find();
+    constraint_constants();
     derive();
     m.sweep = d.sweep;
     diags.throw_if_any();

@@ -53,6 +53,9 @@ struct Constraint {
   std::string connection;  // the connection's name, for `derive: [{constraint: ...}]`
   GiNaC::ex quantity;   // e.g. 3*x_B - 2*x_A
   std::string meaning;  // "length of string s", "position of C"
+  // For position questions: the constant the quantity's varying part keeps (`C_s`, made
+  // only when a coordinate is asked for); 0 when not made.
+  GiNaC::ex constant = 0;
 };
 
 /// A condition under which the model holds, from a rule's `validity`.

@@ -1,6 +1,7 @@
 #include "report/derivation.hpp"
 
 #include <algorithm>
+#include <tuple>
 
 #include <Eigen/Dense>
 
@@ -14,17 +15,19 @@ namespace {
 
 // Why an undetermined answer is not determined, with each missing quantity as "{}" when
 // `placeholders` (for typeset prose).
-std::string undetermined_reason(const Answer& a, const SymbolTable& table, bool placeholders) {
+std::string undetermined_reason(const Answer& a, const SymbolTable& table, const Solution& sol, bool placeholders) {
   std::vector<std::string> names;
-  bool rate = false;
+  bool kinematic = false;
   for (const auto& x : a.missing) {
     const SymbolInfo* info = table.find(x);
     names.push_back(placeholders ? "{}" : info->name);
-    rate = rate || info->role == SymbolRole::rate || info->role == SymbolRole::coordinate;
+    kinematic = kinematic || info->role == SymbolRole::rate || info->role == SymbolRole::coordinate;
   }
+  if (kinematic && (sol.rates || sol.positions))
+    return "it depends on " + join(names, ", ") + ", which the constraints leave free (give it in 'given')";
   return "no solved equation gives " + join(names, ", ") +
-         (rate ? "; the equations solved are at the acceleration level (balances and constraints differentiated twice)"
-               : " in terms of the parameters and given quantities");
+         (kinematic ? "; the equations solved are at the acceleration level (balances and constraints differentiated twice)"
+                    : " in terms of the parameters and given quantities");
 }
 
 }  // namespace
@@ -134,8 +137,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     section("Constraints: constant lengths, differentiated twice");
     for (const auto& c : s.constraints) {
       text("The " + c.meaning + " is constant in time.");
-      Step* st = equation(c.label + ": " + c.meaning, c.quantity, 0);
-      st->equals_constant = true;
+      Step* st = equation(c.label + ": " + c.meaning, c.quantity, c.constant);
+      st->equals_constant = c.constant.is_zero();
       equation(c.label + ": rate", 0, c.rate);
       equation(c.label + ": acceleration", 0, c.acceleration);
     }
@@ -158,6 +161,19 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       d.status = "inconsistent";
       text("The equations are inconsistent: " + join(sol.conflicts, ", ") + " contradict each other.");
       break;
+  }
+  // Velocity and position questions: the rate (length) equations solved on their own.
+  for (const auto& [level, equations, what] :
+       {std::tuple{sol.rates.get(), &s.rate_equations, "Velocities: the constraints differentiated once, "},
+        std::tuple{sol.positions.get(), &s.position_equations, "Positions: the constraints themselves, "}}) {
+    if (!level) continue;
+    std::vector<ex> solved;
+    for (const auto& [q, v] : level->general) solved.push_back(q);
+    std::sort(solved.begin(), solved.end(), [&](const ex& a, const ex& b) { return to_text(a) < to_text(b); });
+    text_with(std::string(what) + count(equations->size(), "equation") + " in " +
+                  count(solved.size(), "unknown") + " (" + list_of(solved.size()) + "); rank " +
+                  std::to_string(level->rank) + ".",
+              solved);
   }
   d.conflicts = sol.conflicts;
   for (const auto& f : sol.free) d.free.push_back(to_text(f));
@@ -182,7 +198,9 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     } else if (!w.defined && is_candidate && !is_unknown) {
       a.status = Answer::Status::not_in_equations;
     } else {
-      const ex general = w.expr.subs(sol.general);
+      ex general = w.expr.subs(sol.general);
+      for (const auto* level : {sol.rates.get(), sol.positions.get()})
+        if (level) general = general.subs(level->general);
       bool free = false;
       for (const auto& f : sol.free) free = free || general.has(f);
       if (free) {
@@ -207,7 +225,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
         }
         if (!a.missing.empty()) {
           a.status = Answer::Status::undetermined;
-          a.reason = undetermined_reason(a, table, false);
+          a.reason = undetermined_reason(a, table, sol, false);
         } else {
           a.closed_form = fold_definitions(simplest(general), table);
           a.value = evaluate(*a.closed_form, table, w.dimension, options.digits, w.unit);
@@ -275,7 +293,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       } else if (a.status == Answer::Status::undetermined) {
         std::vector<ex> math{a.symbol};
         math.insert(math.end(), a.missing.begin(), a.missing.end());
-        text_with("{} is not determined: " + undetermined_reason(a, table, true) + ".", math);
+        text_with("{} is not determined: " + undetermined_reason(a, table, sol, true) + ".", math);
       } else if (a.general) {
         text_with("{} is determined only together with the free unknowns:", {a.symbol});
         equation("", a.symbol, *a.general);

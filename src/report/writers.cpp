@@ -30,6 +30,8 @@ std::string kind_name(Equation::Kind k) {
     case Equation::Kind::lmb: return "lmb";
     case Equation::Kind::amb: return "amb";
     case Equation::Kind::constraint_acceleration: return "constraint";
+    case Equation::Kind::constraint_rate: return "constraint_rate";
+    case Equation::Kind::constraint_position: return "constraint_position";
   }
   return "";
 }

@@ -236,7 +236,12 @@ std::vector<SolvedFor> solve_condition(const ex& expr, const std::string& op, co
   return solve_reduced(rest, reduced_op, parameters);
 }
 
-Solution solve(const Model& model, const EquationSystem& s) {
+Solution solve_equations(const std::string& file, const std::vector<Equation>& equations,
+                         const std::vector<ex>& unknowns) {
+  struct View {
+    const std::vector<Equation>& equations;
+    const std::vector<ex>& unknowns;
+  } s{equations, unknowns};
   Solution sol;
   const std::size_t n_eq = s.equations.size(), n_unk = s.unknowns.size();
   const std::size_t width = n_unk + 1 + n_eq;  // [A | b | tracking]
@@ -261,7 +266,7 @@ Solution solve(const Model& model, const EquationSystem& s) {
   }
   if (!problems.empty()) {
     std::vector<Diagnostic> ds;
-    for (auto& p : problems) ds.push_back({{model.file, 0, 0}, p});
+    for (auto& p : problems) ds.push_back({{file, 0, 0}, p});
     throw InputError(ds);
   }
 
@@ -343,6 +348,38 @@ Solution solve(const Model& model, const EquationSystem& s) {
     }
   }
 
+  return sol;
+}
+
+namespace {
+
+// The rate or position level: the constraints' equations at that level, solved for the
+// rates (coordinates) of the bodies that are not given. Only when a question needs it.
+std::optional<Solution> solve_level(const Model& model, const std::vector<Equation>& equations, SymbolRole role) {
+  bool asked = false;
+  for (const auto& w : model.wanted)
+    for (const auto& sym : model.symbols->all())
+      if (sym->role == role && w.expr.has(sym->sym)) asked = true;
+  if (!asked || equations.empty()) return std::nullopt;
+  std::vector<ex> unknowns;
+  for (const auto& b : model.bodies) {
+    const ex& q = role == SymbolRole::rate ? b.rate : b.coord;
+    if (q.is_zero() || std::find(model.given.begin(), model.given.end(), q) != model.given.end()) continue;
+    if (std::any_of(equations.begin(), equations.end(), [&](const Equation& e) { return e.lhs.has(q) || e.rhs.has(q); }))
+      unknowns.push_back(q);
+  }
+  if (unknowns.empty()) return std::nullopt;
+  return solve_equations(model.file, equations, unknowns);
+}
+
+}  // namespace
+
+Solution solve(const Model& model, const EquationSystem& s) {
+  Solution sol = solve_equations(model.file, s.equations, s.unknowns);
+  if (sol.status == Solution::Status::inconsistent) return sol;
+  if (auto r = solve_level(model, s.rate_equations, SymbolRole::rate)) sol.rates = std::make_shared<const Solution>(std::move(*r));
+  if (auto r = solve_level(model, s.position_equations, SymbolRole::coordinate))
+    sol.positions = std::make_shared<const Solution>(std::move(*r));
   for (const auto& c : model.conditions) {
     CheckedCondition cc;
     cc.condition = &c;

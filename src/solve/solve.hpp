@@ -5,6 +5,7 @@
 // rational parameter values.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,6 +63,9 @@ struct Solution {
   std::vector<std::vector<std::string>> redundant;   // groups of equations that depend on each other
   std::vector<CheckedCondition> conditions;
   GiNaC::exmap general;  // every unknown in terms of the parameters and the free unknowns
+  // Velocity and position questions: the constraints' rate (position) equations solved for
+  // the rates (coordinates) of the bodies that are not given; only when one is asked for.
+  std::shared_ptr<const Solution> rates, positions;
 
   [[nodiscard]] std::optional<GiNaC::ex> value_of(const GiNaC::ex& unknown) const;
 };
@@ -81,5 +85,10 @@ struct Solution {
 [[nodiscard]] GiNaC::ex simplest(const GiNaC::ex& e);
 
 [[nodiscard]] Solution solve(const Model& m, const EquationSystem& s);
+
+/// The linear solve alone (no conditions): rank, values, free unknowns, combinations,
+/// conflicts, redundant groups, every solution verified. `file` names input errors.
+[[nodiscard]] Solution solve_equations(const std::string& file, const std::vector<Equation>& equations,
+                                       const std::vector<GiNaC::ex>& unknowns);
 
 }  // namespace tackle

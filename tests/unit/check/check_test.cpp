@@ -178,5 +178,5 @@ TEST_CASE("Check: a kinematic answer may use a given acceleration without its co
   CHECK(k.check("ddot(y_A)", "-ddot(y_B)/2").verdict == Verdict::correct);
   CHECK(k.check("ddot(y_A)", "-2*ddot(y_B)").summary == "off by a factor of 4 (the answer is 4 times the correct answer)");
   CHECK(k.check("ddot(y_A)", "ddot(y_A)").summary ==
-        "at column 1: ddot(y_A) is an unknown of this problem; write the answer in the given quantities (d, ddot(y_B))");
+        "at column 1: ddot(y_A) is an unknown of this problem; write the answer in the given quantities (d, dot(y_B), ddot(y_B))");
 }
