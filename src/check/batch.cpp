@@ -30,7 +30,7 @@ std::string result_json(const CheckResult& r, const std::string& answer, const s
   out["version"] = 1;
   for (auto it = j.begin(); it != j.end(); ++it)
     if (it.key() != "version") out[it.key()] = it.value();
-  return out.dump(2) + "\n";
+  return out.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 std::string result_text(const CheckResult& r) {
@@ -59,11 +59,11 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
       try {
         const auto j = nlohmann::json::parse(line);
         if (!j.is_object()) throw std::runtime_error("not an object");
-        if (j.contains("id")) id = j["id"].is_string() ? j["id"].get<std::string>() : j["id"].dump();
+        if (j.contains("id")) id = j["id"].is_string() ? j["id"].get<std::string>() : j["id"].dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
         if (!j.contains("unknown") || !j["unknown"].is_string()) problem = "no \"unknown\" (a string)";
         else unknown = j["unknown"].get<std::string>();
         if (!j.contains("answer")) problem = "no \"answer\"";
-        else answer = j["answer"].is_string() ? j["answer"].get<std::string>() : j["answer"].dump();
+        else answer = j["answer"].is_string() ? j["answer"].get<std::string>() : j["answer"].dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
       } catch (const std::exception&) {
         problem = "not a JSON object with id, unknown and answer";
       }
@@ -78,7 +78,7 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
     }
     if (r.verdict == Verdict::correct) ++s.correct;
     total += r.score;
-    out << to_json(r, answer, id).dump() << "\n";
+    out << to_json(r, answer, id).dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
     tests.push_back({{"name", id + (unknown.empty() ? "" : ": " + unknown)},
                      {"score", r.score},
                      {"max_score", 1},
@@ -93,7 +93,7 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
   grader["score"] = s.lines ? total / static_cast<double>(s.lines) : 0.0;
   grader["output"] = std::to_string(s.correct) + " of " + std::to_string(s.lines) + " answers correct";
   grader["tests"] = tests;
-  s.grader_json = grader.dump(2) + "\n";
+  s.grader_json = grader.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
   return s;
 }
 

@@ -1,5 +1,7 @@
 #include "check/check.hpp"
 
+#include "core/utf8.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -307,6 +309,8 @@ CheckResult Checker::check(const std::string& unknown, std::string_view answer) 
   if (answer.size() > options_.limits.max_length)
     return invalid("too_large", "the answer is too long (" + std::to_string(answer.size()) + " characters; at most " +
                                     std::to_string(options_.limits.max_length) + ")");
+  if (const auto bad = invalid_utf8_at(answer))
+    return invalid("syntax", "at column " + std::to_string(*bad + 1) + ": the answer is not valid UTF-8 text");
   std::string text = trim(answer);
   if (text.empty()) return invalid("not_an_answer", "the answer is empty");
   // "T = ...": the left side must name the unknown asked for.

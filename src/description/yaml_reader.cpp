@@ -1,6 +1,11 @@
 #include "description/yaml_reader.hpp"
 
+#include <algorithm>
 #include <set>
+
+#include <fmt/format.h>
+
+#include "core/utf8.hpp"
 
 namespace tackle::yaml {
 
@@ -14,6 +19,14 @@ Location where(const YAML::Node& n, const std::string& file) {
 }
 
 YAML::Node load(const std::string& text, const std::string& file, Diagnostics& diags) {
+  if (const auto bad = invalid_utf8_at(text)) {
+    const auto line_start = text.rfind('\n', *bad == 0 ? 0 : *bad - 1);
+    const std::size_t col = line_start == std::string::npos || *bad == 0 ? *bad + 1 : *bad - line_start;
+    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(*bad), '\n'));
+    diags.error({file, line, static_cast<int>(col)},
+                fmt::format("invalid UTF-8 byte 0x{:02X} (expected UTF-8 text)", static_cast<unsigned char>(text[*bad])));
+    return YAML::Node();
+  }
   try {
     return YAML::Load(text);
   } catch (const YAML::Exception& e) {
@@ -29,6 +42,12 @@ std::string kind_name(const YAML::Node& n) {
     case YAML::NodeType::Scalar: return "a scalar";
     default: return "nothing";
   }
+}
+
+bool is_list(const YAML::Node& n, const std::string& what, const std::string& file, Diagnostics& diags) {
+  if (n.IsSequence()) return true;
+  diags.error(where(n, file), what + " is " + kind_name(n) + " (expected a list)");
+  return false;
 }
 
 bool check_map(const YAML::Node& map, const std::vector<std::string>& allowed, const std::string& what,

@@ -21,6 +21,9 @@ YAML::Node load(const std::string& text, const std::string& file, Diagnostics& d
 
 /// Checks the keys of a map: unknown keys (with the nearest allowed key suggested) and
 /// duplicate keys are reported. Returns false when the node is not a map.
+/// True for a sequence; otherwise reports "WHAT is a mapping (expected a list)".
+bool is_list(const YAML::Node& n, const std::string& what, const std::string& file, Diagnostics& diags);
+
 bool check_map(const YAML::Node& map, const std::vector<std::string>& allowed, const std::string& what,
                const std::string& file, Diagnostics& diags);
 

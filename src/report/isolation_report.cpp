@@ -35,7 +35,7 @@ std::string write_isolations(const Model& m, const std::vector<Isolation>& found
       }
       j["isolations"].push_back(x);
     }
-    return j.dump(2) + "\n";
+    return j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
   }
   std::string out;
   for (const auto& r : found) {

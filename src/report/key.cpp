@@ -97,7 +97,7 @@ std::string write_key(const std::vector<KeyEntry>& entries, Format f) {
       }
       j["problems"].push_back(p);
     }
-    return j.dump(2) + "\n";
+    return j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
   }
   const bool latex = f == Format::latex;
   std::string out;

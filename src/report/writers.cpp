@@ -252,7 +252,7 @@ std::string json_document(const Derivation& d, bool full) {
                                   {"rate", to_text(c.rate)},
                                   {"acceleration", to_text(c.acceleration)}});
   }
-  return j.dump(2) + "\n";
+  return j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 // ---- Markdown -----------------------------------------------------------------------------

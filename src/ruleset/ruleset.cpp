@@ -37,6 +37,7 @@ std::string default_rules_dir() {
 namespace {
 
 using yaml::check_map;
+using yaml::is_list;
 using yaml::scalar;
 using yaml::where;
 
@@ -163,8 +164,9 @@ struct RuleReader {
     if (auto s = root["summary"]) r.summary = scalar(s, "'summary'", file, diags).value_or(Text{}).text;
     if (auto n = root["needs"]) read_args(n, true, r);
     if (auto n = root["optional"]) read_args(n, false, r);
-    if (auto n = root["one_of"]) {
+    if (auto n = root["one_of"]; n && is_list(n, "'one_of'", file, diags)) {
       for (const auto& group : n) {
+        if (!is_list(group, "a group of 'one_of'", file, diags)) continue;
         std::vector<std::string> g;
         for (const auto& k : group) {
           g.push_back(k.Scalar());
@@ -173,7 +175,7 @@ struct RuleReader {
         r.one_of.push_back(g);
       }
     }
-    if (auto n = root["dimensions"]) {
+    if (auto n = root["dimensions"]; n && is_list(n, "'dimensions'", file, diags)) {
       r.dimensions.clear();
       for (const auto& k : n) {
         const std::string v = k.Scalar();
@@ -189,7 +191,7 @@ struct RuleReader {
     for (const auto& a : r.args)
       if (a.kind == ArgKind::expr || a.kind == ArgKind::vector || a.kind == ArgKind::moment || a.kind == ArgKind::point)
         locals.push_back(a.key);
-    if (auto n = root["unknowns"]) {
+    if (auto n = root["unknowns"]; n && is_list(n, "'unknowns'", file, diags)) {
       for (const auto& u : n) {
         if (!check_map(u, {"local", "name", "rename", "dimension"}, "an unknown of the rule", file, diags)) continue;
         UnknownSpec s;
@@ -216,7 +218,7 @@ struct RuleReader {
       auto res = parse_expression(text, names);
       for (const auto& p : res.problems) diags.error(at, "in '" + text + "': " + p.message);
     };
-    if (auto n = root["loads"]) {
+    if (auto n = root["loads"]; n && is_list(n, "'loads'", file, diags)) {
       for (const auto& l : n) {
         if (!check_map(l, {"on", "along", "from_length", "force", "tension", "at", "couple"}, "a load of the rule", file, diags))
           continue;
@@ -247,7 +249,7 @@ struct RuleReader {
         r.loads.push_back(std::move(s));
       }
     }
-    if (auto n = root["constraints"]) {
+    if (auto n = root["constraints"]; n && is_list(n, "'constraints'", file, diags)) {
       for (const auto& c : n) {
         if (!check_map(c, {"length", "length_sum", "still"}, "a constraint of the rule", file, diags)) continue;
         auto kind = which(c, {"length", "length_sum", "still"}, "a constraint");
@@ -268,7 +270,7 @@ struct RuleReader {
         r.constraints.push_back(std::move(s));
       }
     }
-    if (auto n = root["validity"]) {
+    if (auto n = root["validity"]; n && is_list(n, "'validity'", file, diags)) {
       for (const auto& v : n) {
         if (!check_map(v, {"holds", "meaning", "otherwise", "when"}, "a validity condition", file, diags)) continue;
         ValiditySpec s;
@@ -285,7 +287,7 @@ struct RuleReader {
         r.validity.push_back(std::move(s));
       }
     }
-    if (auto n = root["checks"]) {
+    if (auto n = root["checks"]; n && is_list(n, "'checks'", file, diags)) {
       for (const auto& c : n) {
         if (!check_map(c, {"passes_over"}, "a check of the rule", file, diags)) continue;
         CheckSpec s{CheckSpec::Kind::passes_over, c["passes_over"] ? c["passes_over"].Scalar() : "", where(c, file)};
@@ -293,7 +295,7 @@ struct RuleReader {
         r.checks.push_back(std::move(s));
       }
     }
-    if (auto n = root["assumptions"]) {
+    if (auto n = root["assumptions"]; n && is_list(n, "'assumptions'", file, diags)) {
       for (const auto& a : n)
         if (auto t = scalar(a, "an assumption", file, diags)) r.assumptions.push_back(t->text);
     }

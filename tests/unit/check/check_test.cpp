@@ -98,6 +98,11 @@ TEST_CASE("Check: hostile inputs are invalid within the budget", "[check][invali
   const std::string nested = std::string(100, '(') + "m" + std::string(100, ')');
   CHECK(board().check("T_HI", nested).summary == "at column 33: expression is nested too deeply (at most 32 levels)");
   CHECK(board().check("T_HI", "9^(9^9)").summary == "at column 2: exponent is too large (at most 32)");
+  // Found by fuzzing: bytes that are not UTF-8 reached the JSON writer, which threw.
+  const auto latin1 = board().check("T_HI", "m\x91" "a");
+  CHECK(latin1.verdict == Verdict::invalid);
+  CHECK(latin1.summary == "at column 2: the answer is not valid UTF-8 text");
+  CHECK(tackle::result_json(latin1, "m\x91" "a").find("m\xEF\xBF\xBD" "a") != std::string::npos);  // U+FFFD in the echo
   CHECK(board().check("T_HI", "(m+a+b+d+e)^32*l/d").verdict != Verdict::correct);  // bounded: no blow-up
   CHECK(board().check("T_HI", "sqrt(-1)*m*a*l/(2*d)").verdict == Verdict::undecided);
   for (const char* a : {"m/0", "1e99 N", "m^m^m^m^m^m^m", "[m, a]"}) {

@@ -60,3 +60,25 @@ TEST_CASE("Rules: an argument used as the wrong kind", "[rules]") {
 TEST_CASE("Rules: a missing rules directory is an input error", "[rules]") {
   CHECK_THROWS_AS(load_rules("/nonexistent/rules"), InputError);
 }
+
+TEST_CASE("Rules: a mapping where a list belongs is an error, not a crash (found by fuzzing)", "[rules][fuzz]") {
+  const std::string text =
+      "type: skidding\n"
+      "unknowns:\n"
+      "  mptions:\n"
+      "  - a list under a key\n"
+      "one_of: [[a], b]\n"
+      "assumptions: {a: b}\n";
+  try {
+    (void)parse_rule(text, "rules/skidding.yaml");
+    FAIL("expected an InputError");
+  } catch (const InputError& e) {
+    std::vector<std::string> got;
+    for (const auto& d : e.diagnostics()) got.push_back(format(d));
+    CHECK(got == std::vector<std::string>{
+                     "rules/skidding.yaml:5:11: 'one_of' names argument 'a', which the rule does not declare",
+                     "rules/skidding.yaml:5:15: a group of 'one_of' is a scalar (expected a list)",
+                     "rules/skidding.yaml:3:3: 'unknowns' is a mapping (expected a list)",
+                     "rules/skidding.yaml:6:14: 'assumptions' is a mapping (expected a list)"});
+  }
+}

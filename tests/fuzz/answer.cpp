@@ -1,0 +1,44 @@
+// Fuzz target: a student's answer through the strict parser and the checker. The first
+// byte picks the problem, the second the unknown; the rest is the answer as typed. Seeds
+// and a dictionary of operators, names, numbers and units are in this folder.
+#include "common.hpp"
+
+#include <memory>
+#include <vector>
+
+#include "check/check.hpp"
+
+namespace {
+
+struct Problem {
+  std::unique_ptr<const tackle::Analysis> analysis;
+  std::unique_ptr<const tackle::Checker> checker;
+  std::vector<std::string> unknowns;
+};
+
+const std::vector<Problem>& problems() {
+  static const auto list = [] {
+    std::vector<Problem> out;
+    for (const char* name : {"sample-12.8-sign-board", "sample-12.7-suitcase", "sample-12.3-two-mass-pulley",
+                             "car-braking-us-units", "sample-12.2-pulley-kinematics"}) {
+      Problem p;
+      p.analysis = tackle::analyze_file(std::string(TACKLE_SOURCE_DIR "/examples/") + name + ".yaml", tackle::fuzz::rules());
+      p.checker = std::make_unique<const tackle::Checker>(*p.analysis);
+      p.unknowns = p.checker->unknowns();
+      p.unknowns.push_back("no_such_unknown");
+      out.push_back(std::move(p));
+    }
+    return out;
+  }();
+  return list;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size < 2) return 0;
+  const Problem& p = problems()[data[0] % problems().size()];
+  const std::string& unknown = p.unknowns[data[1] % p.unknowns.size()];
+  (void)p.checker->check(unknown, tackle::fuzz::text_of(data + 2, size - 2));
+  return 0;
+}
