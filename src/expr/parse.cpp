@@ -192,6 +192,8 @@ class Parser {
       if (!n.is_rational()) fail(col, "exponent must be a rational number");
       if (abs(n.numer()) > limits_.max_exponent || n.denom() > limits_.max_exponent)
         fail(col, "exponent is too large (at most " + std::to_string(limits_.max_exponent) + ")");
+      // GiNaC throws for these from inside a new object, and that object then leaks.
+      if (base.is_zero() && n.is_zero()) fail(col, "0^0 is undefined");
       if (base.is_zero() && n.is_negative()) fail(col, "division by zero");
       if (is_a<numeric>(base)) {
         // Bound the size of the number the power would make (in bits) before making it.
@@ -307,9 +309,20 @@ class Parser {
     if (f == "abs") return abs(one_arg());
     if (f == "sin") return sin(one_arg());
     if (f == "cos") return cos(one_arg());
-    if (f == "tan") return tan(one_arg());
+    // Poles are input errors, found before GiNaC throws from inside a new object (which
+    // then leaks): tan at an odd multiple of pi/2, log at 0.
+    if (f == "tan") {
+      const ex a = one_arg();
+      if (const ex k = normal(a / Pi - numeric(1, 2)); is_a<numeric>(k) && ex_to<numeric>(k).is_integer())
+        fail(name.column, "tan is undefined at an odd multiple of pi/2");
+      return tan(a);
+    }
     if (f == "exp") return exp(one_arg());
-    if (f == "log") return log(one_arg());
+    if (f == "log") {
+      const ex a = one_arg();
+      if (a.is_zero()) fail(name.column, "log is undefined at 0");
+      return log(a);
+    }
     fail(name.column, "unknown function '" + f + "' (known: sqrt, abs, sin, cos, tan, exp, log, dot, ddot, unit, norm, cross, inner, perp1, perp2)");
   }
 

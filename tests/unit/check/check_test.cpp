@@ -98,6 +98,13 @@ TEST_CASE("Check: hostile inputs are invalid within the budget", "[check][invali
   const std::string nested = std::string(100, '(') + "m" + std::string(100, ')');
   CHECK(board().check("T_HI", nested).summary == "at column 33: expression is nested too deeply (at most 32 levels)");
   CHECK(board().check("T_HI", "9^(9^9)").summary == "at column 2: exponent is too large (at most 32)");
+  // Found by fuzzing: a tower of powers raised to a parameter made CLN build an integer of
+  // 10^16 digits; numbers past 8192 bits are not used to decide.
+  const auto tower = tackle::Checker(*tackle::test::run_text(tackle::test::read_example("sample-12.7-suitcase.yaml")))
+                         .check("N_A", "m*g*(98355^ .3^2.3^5^355.32^ .355^ .2/mu- mu)^(h)");
+  CHECK(tower.verdict == Verdict::undecided);
+  CHECK(tower.summary == "the answer could not be evaluated at the test values (a division by zero, a negative square "
+                         "root, or a number too large to work with?)");
   // Found by fuzzing: bytes that are not UTF-8 reached the JSON writer, which threw.
   const auto latin1 = board().check("T_HI", "m\x91" "a");
   CHECK(latin1.verdict == Verdict::invalid);

@@ -70,6 +70,10 @@ TEST_CASE("Parser: problems are located and explained", "[parse]") {
   CHECK(problem("m_a") == "0: unknown name 'm_a' (did you mean 'm_A'?)");
   CHECK(problem("m*(a+g") == "6: expected ')' to close the '(' at column 3");
   CHECK(problem("m/0") == "1: division by zero");
+  // Found by fuzzing: GiNaC throws for these from inside a new object, which leaked.
+  CHECK(problem("+0^0") == "2: 0^0 is undefined");
+  CHECK(problem("m*0^(-2)") == "3: division by zero");
+  CHECK(problem("log(0)") == "0: log is undefined at 0");
   CHECK(problem("foo(m)") == "0: unknown function 'foo' (known: sqrt, abs, sin, cos, tan, exp, log, dot, ddot, unit, norm, cross, inner, perp1, perp2)");
   CHECK(problem("ddot(m)") == "0: 'm' is not a coordinate, so 'ddot(m)' is not defined");
   CHECK(problem("m*") == "2: expression ends too early");
