@@ -233,6 +233,16 @@ Fraction split(const ex& e) {
   return *f;
 }
 
+// -(a + b + ...) as -a - b - ...: each term negated, nothing else multiplied out (expand()
+// here multiplied out every product of sums inside the terms: exponential in their nesting,
+// found by fuzzing answers).
+ex negated_sum(const ex& s) {
+  exvector terms;
+  terms.reserve(s.nops());
+  for (const auto& t : s) terms.push_back(-t);
+  return add(terms);
+}
+
 Fraction split_uncached(const ex& e) {
   Fraction f;
   auto factor = [&](const ex& x) {
@@ -261,7 +271,7 @@ Fraction split_uncached(const ex& e) {
   for (auto* side : {&f.num, &f.den})
     for (auto& x : *side)
       if (is_exactly<add>(x) && flip_sum(x)) {
-        x = (-x).expand();
+        x = negated_sum(x);
         f.negative = !f.negative;
       }
   if (f.negative) {
@@ -269,7 +279,7 @@ Fraction split_uncached(const ex& e) {
     for (auto* side : {&f.num, &f.den}) {
       for (auto& x : *side)
         if (is_exactly<add>(x) && balance_of(x) == 0) {
-          x = (-x).expand();
+          x = negated_sum(x);
           f.negative = false;
           moved = true;
           break;
