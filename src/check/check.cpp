@@ -187,8 +187,12 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
     for (const auto& p : parameters_) {
       const SymbolInfo* s = symbols_->find(p.symbol);
       if (s->definition) continue;  // follows from the others
-      if (s->value && !s->value->is_zero() && s->value->is_rational())
-        point.emplace_back(p.symbol, *s->value * numeric(spread(rng), 1000));
+      if (s->value && is_a<numeric>(*s->value) && !s->value->is_zero() && ex_to<numeric>(*s->value).is_rational())
+        point.emplace_back(p.symbol, ex_to<numeric>(*s->value) * numeric(spread(rng), 1000));
+      else if (const ex f = s->value ? evalf(*s->value) : ex(0); is_a<numeric>(f) && !f.is_zero())
+        // An irrational value (pi/6 for 30 deg): a rational near it, spread the same way.
+        point.emplace_back(p.symbol, numeric(std::llround(ex_to<numeric>(f).to_double() * 1e6), 1000000) *
+                                         numeric(spread(rng), 1000));
       else
         point.emplace_back(p.symbol, numeric(whole(rng), 10) + numeric(1, 7 + k));
     }
@@ -403,7 +407,8 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
       return finish(Verdict::incorrect, "dimension", "the unit " + std::string(unit_text) + " is " +
                                                          with_article(unit->dimension.describe()) + "; " +
                                                          with_article(expected.describe()) + " was expected");
-    value *= unit->to_si;
+    const ex si = value * unit->to_si;  // exact for rational factors; degrees go through pi
+    value = ex_to<numeric>(is_a<numeric>(si) ? si : evalf(si));
   }
   r.echo_text = std::string(number) + (unit_text.empty() ? "" : " " + std::string(unit_text));
   r.echo_latex = std::string(number) + (unit_text.empty() ? "" : "\\," + unit_latex(unit_text));
@@ -622,7 +627,7 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
   if (constant_ratio && ratio) {
     // Exact when the values are; else the ratio rounded to a simple fraction.
     numeric c = *ratio;
-    if (!c.is_rational()) {
+    if (!c.is_rational() && std::abs(c.to_double()) < 1e12) {  // (a larger ratio does not fit a long: fuzzing)
       const double x = c.to_double();
       for (int den = 1; den <= 12; ++den)
         if (std::abs(x * den - std::round(x * den)) < 1e-9 * std::max(1.0, std::abs(x * den))) {

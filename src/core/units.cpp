@@ -11,7 +11,7 @@ using GiNaC::numeric;
 namespace {
 
 struct Atom {
-  numeric to_si;
+  GiNaC::ex to_si;
   Dimension dim;
 };
 
@@ -30,6 +30,7 @@ const std::map<std::string, Atom, std::less<>>& atoms() {
       {"Pa", {1, Dimension::force() / Dimension::length().pow(2)}},
       {"Hz", {1, Dimension::time().pow(-1)}},
       {"rad", {1, Dimension::none()}},
+      {"deg", {GiNaC::Pi / 180, Dimension::none()}},
       {"1", {1, Dimension::none()}},
       // US customary, exact by definition (international foot and avoirdupois pound; the
       // pound-force uses standard gravity 9.80665 m/s^2).
@@ -130,7 +131,7 @@ std::optional<Unit> parse_unit(std::string_view text, std::string& error, int& e
         power = psign * std::stoi(std::string(text.substr(dstart, i - dstart)));
       }
       const int p = sign * power;
-      u.to_si = u.to_si * atom->to_si.power(p);
+      u.to_si = u.to_si * GiNaC::pow(atom->to_si, p);
       u.dimension = u.dimension * atom->dim.pow(p);
       expect_atom = false;
     } else {
@@ -247,7 +248,7 @@ std::string with_article(const std::string& noun) {
 std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup& lookup,
                                       std::string& problem) {
   using namespace GiNaC;
-  if (is_a<numeric>(e)) return Dimension::none();
+  if (is_a<numeric>(e) || is_a<GiNaC::constant>(e)) return Dimension::none();
   if (is_a<symbol>(e)) return lookup.dimension_of(ex_to<symbol>(e));
   if (is_a<add>(e)) {
     std::optional<Dimension> first;

@@ -1,5 +1,5 @@
-// Physical dimensions and SI units. Values are stored in SI; a unit is an exact rational
-// factor to SI and a dimension. (US customary units are a later issue.)
+// Physical dimensions and SI units. Values are stored in SI; a unit is an exact factor to SI
+// (a rational, or pi/180 for degrees) and a dimension. (US customary units are a later issue.)
 #pragma once
 
 #include <array>
@@ -45,7 +45,7 @@ struct Dimension {
 };
 
 struct Unit {
-  GiNaC::numeric to_si;  // value in SI = value in this unit * to_si
+  GiNaC::ex to_si;       // value in SI = value in this unit * to_si (exact; pi/180 for deg)
   Dimension dimension;
   std::string text;      // as the user wrote it, or the canonical SI name
 };

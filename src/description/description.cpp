@@ -162,7 +162,7 @@ struct Reader {
       } else if (check_map(kv.second, {"at", "on", "offset"}, what, file, diags)) {
         p.at = opt_vector(kv.second, "at", what);
         p.on = opt_scalar(kv.second, "on", what);
-        p.offset = opt_scalar(kv.second, "offset", what);
+        p.offset = opt_vector(kv.second, "offset", what);
         if (p.at && p.on)
           diags.error(where(kv.second, file), what + " has both 'at' and 'on' (expected a fixed point or a point on a body)");
         else if (!p.at && !p.on)

@@ -40,7 +40,8 @@ struct VectorDesc {
 struct BodyDesc {
   Text name;
   std::optional<Text> mass;      // expression; 0 for an ideal pulley block
-  std::optional<Text> position;  // 1-D: the body's coordinate along the axis (a new name)
+  std::optional<Text> position;  // the body's coordinate (a new name): in 1-D along the axis,
+                                 // in 2-D and 3-D the variable its center_of_mass is written in
   std::optional<VectorDesc> center_of_mass;  // 2-D and 3-D
   // 2-D and 3-D straight-line motion: a given acceleration vector, or an unknown scalar
   // acceleration `accel_name` along `accel_along`; neither means at rest.
@@ -53,8 +54,9 @@ struct BodyDesc {
 struct PointDesc {
   Text name;
   std::optional<VectorDesc> at;  // fixed point: position (an expression in 1-D, a list else)
-  std::optional<Text> on;        // 1-D: point on a body
-  std::optional<Text> offset;    // with `on`: constant offset from the body's coordinate
+  std::optional<Text> on;              // a point on a body
+  std::optional<VectorDesc> offset;    // with `on`: constant offset from the body's coordinate
+                                       // (1-D) or center of mass (2-D, 3-D)
 };
 
 /// An argument of a connection: a scalar or a list of scalars.

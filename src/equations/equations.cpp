@@ -8,14 +8,7 @@ namespace tackle {
 
 using namespace GiNaC;
 
-ex time_derivative(const ex& e, const Model& m) {
-  ex d = 0;
-  for (const auto& b : m.bodies) {
-    if (b.coord.is_zero()) continue;
-    d += e.diff(ex_to<symbol>(b.coord)) * b.rate + e.diff(ex_to<symbol>(b.rate)) * b.accel;
-  }
-  return d.expand();
-}
+ex time_derivative(const ex& e, const Model& m) { return tackle::time_derivative(e, m.bodies); }
 
 namespace {
 

@@ -341,6 +341,7 @@ class Parser {
           return call(name);
         }
         if (auto r = names_.resolve(t.text)) return *r;
+        if (t.text == "pi") return Pi;  // unless the problem names something pi
         std::string msg = "unknown name '" + t.text + "'";
         const auto known = names_.known_names();
         if (auto near = nearest(t.text, known); !near.empty()) {

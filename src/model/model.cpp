@@ -5,6 +5,7 @@
 #include <set>
 
 #include "expr/print.hpp"
+#include "model/path.hpp"
 
 namespace tackle {
 
@@ -153,12 +154,13 @@ struct Builder {
       }
       if (p.value) {
         auto v = parse(*p.value, none, "value of parameter '" + p.name.text + "'");
-        if (v && !is_a<numeric>(*v))
+        // A number, or an exact real constant such as pi/6 or sqrt(2).
+        const ex approx = v ? evalf(*v) : ex(0);
+        if (v && !(is_a<numeric>(approx) && ex_to<numeric>(approx).is_real()))
           diags.error(p.value->at, "value of parameter '" + p.name.text + "' is not a number");
         else if (v) {
-          numeric value = ex_to<numeric>(*v);
-          if (unit) value *= unit->to_si;
-          if (positive && !value.is_positive())
+          const ex value = unit ? *v * unit->to_si : *v;
+          if (positive && !ex_to<numeric>(approx).is_positive())
             diags.error(p.value->at, "parameter '" + p.name.text + "' is assumed positive but its value is " +
                                          to_text(*v) + " (set 'positive: false' to allow it)");
           table->set_value(p.name.text, value);
@@ -224,15 +226,43 @@ struct Builder {
           accelerations.push_back(body.accel);
         }
       } else {
-        if (b.position)
-          diags.error(b.position->at, "body '" + body.name + "': 'position' is for 1-D problems (in 2-D and 3-D give 'center_of_mass' and 'acceleration')");
+        // A coordinate: the center of mass is written in it, and the acceleration follows
+        // (twice differentiated in time).
+        if (b.position) {
+          if (!b.center_of_mass)
+            diags.error(b.position->at, "body '" + body.name + "' has a 'position' but no 'center_of_mass' (expected its center of mass written in " + b.position->text + ")");
+          if (b.acceleration || b.accel_along)
+            diags.error(b.position->at, "body '" + body.name + "' has both 'position' and 'acceleration' (its acceleration follows from its position; give one)");
+          if (claim(*b.position, "coordinate")) {
+            const std::string q = b.position->text;
+            body.coord = table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::length(), false, b.position->at).sym;
+            body.rate = table->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, Dimension::velocity(), false, b.position->at).sym;
+            body.accel = table->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, Dimension::acceleration(), false, b.position->at).sym;
+          }
+        }
         if (b.center_of_mass) {
           if (auto cm = vector(*b.center_of_mass, *table, "'center_of_mass' of body '" + body.name + "'", Dimension::length())) {
             body.cm = *cm;
             body.has_cm = true;
           }
         }
-        if (b.acceleration) {
+        if (!body.coord.is_zero() && body.has_cm) {
+          bool depends = false;
+          for (const auto& c : body.cm) depends = depends || c.has(body.coord);
+          if (!depends) {
+            diags.error(b.center_of_mass->at, "'center_of_mass' of body '" + body.name + "' does not depend on its coordinate '" +
+                                                  b.position->text + "' (expected it written in " + b.position->text + ")");
+          } else {
+            // a = d2(cm)/dt2 = cm'' dot(q)^2 + cm' ddot(q) (no velocity term on a straight line).
+            const symbol& q = ex_to<symbol>(body.coord);
+            for (int i = 0; i < 3; ++i)
+              body.acceleration[i] = (body.cm[i].diff(q) * body.accel + body.cm[i].diff(q, 2) * pow(body.rate, 2)).expand();
+            accelerations.push_back(body.accel);
+          }
+        }
+        if (b.position) {
+          // reported above when an acceleration is given too
+        } else if (b.acceleration) {
           if (auto a = vector(*b.acceleration, *table, "'acceleration' of body '" + body.name + "'", Dimension::acceleration()))
             body.acceleration = *a;
         } else if (b.accel_along) {
@@ -253,7 +283,7 @@ struct Builder {
       Point self;
       self.name = body.name;
       self.position = body.cm;
-      self.body = one_d ? static_cast<int>(m.bodies.size()) : -1;
+      self.body = static_cast<int>(m.bodies.size());
       self.at = body.at;
       m.points.push_back(self);
       m.bodies.push_back(body);
@@ -285,22 +315,16 @@ struct Builder {
       if (p.at) {
         if (auto pos = vector(*p.at, *table, "position of point '" + pt.name + "'", Dimension::length())) pt.position = *pos;
       } else if (p.on) {
-        if (m.dims() > 1) {
-          diags.error(p.on->at, "point '" + pt.name + "': 'on' is for 1-D problems (in 2-D and 3-D a point is a position)");
-          continue;
-        }
         auto it = body_index.find(p.on->text);
         if (it == body_index.end()) {
           unknown_name(*p.on, "body", body_names());
           continue;
         }
         pt.body = it->second;
-        pt.position = {m.bodies[pt.body].coord, 0, 0};
+        pt.position = m.bodies[pt.body].cm;
         if (p.offset) {
-          if (auto off = parse(*p.offset, *table, "offset of point '" + pt.name + "'")) {
-            pt.position[0] += *off;
-            if (!off->is_zero()) check_dimension(*off, Dimension::length(), p.offset->at, "offset of point '" + pt.name + "'");
-          }
+          if (auto off = vector(*p.offset, *table, "offset of point '" + pt.name + "'", Dimension::length()))
+            for (int i = 0; i < 3; ++i) pt.position[i] += (*off)[i];
         }
       }
       point_index[pt.name] = static_cast<int>(m.points.size());
@@ -346,30 +370,6 @@ struct Builder {
     }
   }
 
-  // Direction (+1 or -1) of the strand from point a to point b in the layout, or 0 when the
-  // strand's length is constant (both ends on one body, or both fixed).
-  std::optional<int> strand_sign(const Point& a, const Point& b, const Location& at, const std::string& label) {
-    if (a.body == b.body) return 0;
-    // A body whose coordinate could not be made has been reported already.
-    for (const Point* p : {&a, &b})
-      if (p->body >= 0 && m.bodies[p->body].coord.is_zero()) return std::nullopt;
-    const ex diff = (b.position[0] - a.position[0]).subs(layout);
-    if (!is_a<numeric>(diff)) {
-      std::set<std::string> missing;
-      for (const_preorder_iterator it = diff.preorder_begin(); it != diff.preorder_end(); ++it)
-        if (is_a<symbol>(*it)) missing.insert(to_text(*it));
-      diags.error(at, "cannot tell the direction of strand " + label + " (give 'layout' values for " +
-                          join(std::vector<std::string>(missing.begin(), missing.end())) + ")");
-      return std::nullopt;
-    }
-    const numeric n = ex_to<numeric>(diff);
-    if (n.is_zero()) {
-      diags.error(at, "strand " + label + " has zero length in the layout (expected its ends apart)");
-      return std::nullopt;
-    }
-    return n.is_positive() ? 1 : -1;
-  }
-
   std::string substitute(std::string tmpl, const ConnectionDesc& c, bool& ok) {
     std::size_t pos;
     while ((pos = tmpl.find('{')) != std::string::npos) {
@@ -407,7 +407,21 @@ struct Builder {
     std::map<std::string, int> body_args;               // body arguments: the body
     std::map<std::string, std::vector<int>> path_args;  // points arguments
     std::map<std::string, std::pair<ex, Location>> expr_args;
+    std::map<std::string, std::optional<Path>> paths;  // points arguments as paths, made once
   };
+
+  // The path of a points argument, made on first use; nothing when it cannot be made (its
+  // problems are reported then).
+  const Path* path_of(Instance& in, const std::string& key) {
+    auto it = in.path_args.find(key);
+    if (it == in.path_args.end()) return nullptr;
+    // A body whose coordinate could not be made has been reported already.
+    for (int p : it->second)
+      if (m.dims() == 1 && m.points[p].body >= 0 && m.bodies[m.points[p].body].coord.is_zero()) return nullptr;
+    auto [cached, fresh] = in.paths.try_emplace(key);
+    if (fresh) cached->second = make_path(it->second, m.points, m.dims(), layout, diags, in.c.at, in.label);
+    return cached->second ? &*cached->second : nullptr;
+  }
 
   void connection(const ConnectionDesc& c, std::set<std::string>& connection_names) {
     const Rule* found = rules.find(c.type.text);
@@ -708,29 +722,14 @@ struct Builder {
         }
         m.loads.push_back(load);
       } else if (l.kind == LoadSpec::Kind::along) {
-        auto it = path_args.find(l.arg);
-        if (it == path_args.end()) continue;
+        const Path* path = path_of(in, l.arg);
+        if (!path) continue;
+        // A force element's tension may use its path's length and lengthening rate.
+        in.scope.bind("length", path->length);
+        in.scope.bind("lengthening", time_derivative(path->length, m.bodies));
         auto tension = rule_expr(in, l.expr, l.at);
         if (!tension) continue;
-        const auto& path = it->second;
-        for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-          const Point& a = m.points[path[i]];
-          const Point& b = m.points[path[i + 1]];
-          const std::string strand = a.name + "-" + b.name;
-          auto sign = strand_sign(a, b, c.at, strand + " of " + label);
-          if (!sign || *sign == 0) continue;
-          // The strand pulls each end towards the other.
-          for (const auto& [end, s] : {std::pair{&a, *sign}, std::pair{&b, -*sign}}) {
-            if (end->body < 0) continue;
-            Load load;
-            load.body = end->body;
-            load.force = {s * *tension, 0, 0};
-            load.at = end->position;
-            load.at_name = end->name;
-            load.source = label + ": strand " + strand + " at " + end->name;
-            m.loads.push_back(load);
-          }
-        }
+        for (auto& load : tension_loads(*path, m.points, *tension, label)) m.loads.push_back(std::move(load));
       } else {
         auto it = expr_args.find(l.arg);
         if (it == expr_args.end()) continue;
@@ -759,23 +758,7 @@ struct Builder {
     const std::string cname = c.name ? c.name->text : "";
     for (const auto& k : rule->constraints) {
       if (k.kind == ConstraintSpec::Kind::length) {
-        auto it = in.path_args.find(k.arg);
-        if (it == in.path_args.end()) continue;
-        ex length = 0;
-        bool complete = true;
-        const auto& path = it->second;
-        for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-          const Point& a = m.points[path[i]];
-          const Point& b = m.points[path[i + 1]];
-          if (a.body == b.body) continue;  // constant length
-          const ex diff = (b.position[0] - a.position[0]).subs(layout);
-          if (!is_a<numeric>(diff) || ex_to<numeric>(diff).is_zero()) {
-            complete = false;  // reported with the loads
-            continue;
-          }
-          length += (ex_to<numeric>(diff).is_positive() ? 1 : -1) * (b.position[0] - a.position[0]);
-        }
-        if (complete) m.constraints.push_back({label, cname, length, "length of " + label});
+        if (const Path* path = path_of(in, k.arg)) m.constraints.push_back({label, cname, path->varying_length, "length of " + label});
       } else if (k.kind == ConstraintSpec::Kind::length_sum) {
         auto it = in.expr_args.find(k.arg);
         if (it == in.expr_args.end()) continue;
@@ -1051,6 +1034,15 @@ struct Builder {
 };
 
 }  // namespace
+
+ex time_derivative(const ex& e, const std::vector<Body>& bodies) {
+  ex d = 0;
+  for (const auto& b : bodies) {
+    if (b.coord.is_zero()) continue;
+    d += e.diff(ex_to<symbol>(b.coord)) * b.rate + e.diff(ex_to<symbol>(b.rate)) * b.accel;
+  }
+  return d.expand();
+}
 
 Model build_model(const Description& d, const RuleSet& rules) {
   Builder b(d, rules);

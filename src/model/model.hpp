@@ -109,6 +109,9 @@ struct Model {
   std::optional<SweepDesc> sweep;     // as described (checked when it is run)
 };
 
+/// d/dt of an expression in the bodies' coordinates and rates (the chain rule).
+[[nodiscard]] GiNaC::ex time_derivative(const GiNaC::ex& e, const std::vector<Body>& bodies);
+
 /// Builds the model; every problem in the description is reported at once (InputError).
 [[nodiscard]] Model build_model(const Description& d, const RuleSet& rules);
 

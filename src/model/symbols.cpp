@@ -68,14 +68,14 @@ const SymbolInfo* SymbolTable::find(const GiNaC::ex& sym) const {
   return it == by_symbol_.end() ? nullptr : items_[it->second].get();
 }
 
-void SymbolTable::set_unit(const std::string& name, std::string unit, GiNaC::numeric to_si) {
+void SymbolTable::set_unit(const std::string& name, std::string unit, GiNaC::ex to_si) {
   auto it = by_name_.find(name);
   if (it == by_name_.end()) throw InternalError("no symbol '" + name + "'");
   items_[it->second]->unit = std::move(unit);
   items_[it->second]->unit_to_si = to_si;
 }
 
-void SymbolTable::set_value(const std::string& name, GiNaC::numeric value) {
+void SymbolTable::set_value(const std::string& name, GiNaC::ex value) {
   auto it = by_name_.find(name);
   if (it == by_name_.end()) throw InternalError("no symbol '" + name + "'");
   items_[it->second]->value = value;

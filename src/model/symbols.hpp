@@ -25,11 +25,11 @@ struct SymbolInfo {
   GiNaC::ex sym;  // an ex, so that possymbol / realsymbol keep their domain (no slicing)
   SymbolRole role = SymbolRole::parameter;
   std::optional<Dimension> dimension;
-  std::optional<GiNaC::numeric> value;  // parameters: value in SI
+  std::optional<GiNaC::ex> value;       // parameters: value in SI, exact (pi/6 for 30 deg)
   std::string unit;                     // parameters: the unit they are stated in
   bool positive = false;
   std::optional<GiNaC::ex> definition;  // a defined parameter: its expression in the others
-  GiNaC::numeric unit_to_si = 1;        // parameters: `unit`'s factor to SI
+  GiNaC::ex unit_to_si = 1;             // parameters: `unit`'s factor to SI (pi/180 for deg)
   // Variants: the range values are drawn from and the step they are rounded to, in `unit`.
   std::optional<std::pair<GiNaC::numeric, GiNaC::numeric>> range;
   std::optional<GiNaC::numeric> step;
@@ -51,8 +51,8 @@ class SymbolTable : public NameResolver, public DimensionLookup {
   [[nodiscard]] const SymbolInfo* find(const GiNaC::ex& sym) const;
   [[nodiscard]] const std::vector<std::unique_ptr<SymbolInfo>>& all() const { return items_; }
   /// The unit a parameter is stated in (its text and factor to SI).
-  void set_unit(const std::string& name, std::string unit, GiNaC::numeric to_si);
-  void set_value(const std::string& name, GiNaC::numeric value);
+  void set_unit(const std::string& name, std::string unit, GiNaC::ex to_si);
+  void set_value(const std::string& name, GiNaC::ex value);
 
   // NameResolver
   [[nodiscard]] std::optional<GiNaC::ex> resolve(std::string_view name) const override;

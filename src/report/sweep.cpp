@@ -129,7 +129,7 @@ SweepResult run_sweep(const Analysis& a, const Derivation& d, const SweepSpec& s
   if (same && common) r.y_unit = si_unit_name(*common);
   r.x_name = x->name;
   r.x_unit = x->unit;
-  const numeric factor = x->unit_to_si;
+  const ex factor = x->unit_to_si;
   const int n = count->to_int();
   r.y.assign(curves.size(), {});
   for (int i = 0; i < n; ++i) {

@@ -214,6 +214,10 @@ struct RuleReader {
     for (const auto& a : r.args)
       if (a.kind == ArgKind::vector || a.kind == ArgKind::moment || a.kind == ArgKind::point) vectors.insert(a.key);
     LocalNames names(locals, vectors);
+    // A tension along a path may also use the path's length and its rate of lengthening.
+    std::vector<std::string> path_locals = locals;
+    path_locals.insert(path_locals.end(), {"length", "lengthening"});
+    LocalNames along_names(path_locals, vectors);
     auto check_expr = [&](const std::string& text, const Location& at) {
       auto res = parse_expression(text, names);
       for (const auto& p : res.problems) diags.error(at, "in '" + text + "': " + p.message);
@@ -245,7 +249,14 @@ struct RuleReader {
           s.expr = need_scalar(l, "tension", "a load");
           check_arg_ref(r, s.arg, *kind == "along" ? ArgKind::points : ArgKind::expr, s.at, "a load");
         }
-        if (!s.expr.empty()) check_expr(s.expr, s.at);
+        if (!s.expr.empty()) {
+          if (s.kind == LoadSpec::Kind::along) {
+            for (const auto& p : parse_expression(s.expr, along_names).problems)
+              diags.error(s.at, "in '" + s.expr + "': " + p.message);
+          } else {
+            check_expr(s.expr, s.at);
+          }
+        }
         r.loads.push_back(std::move(s));
       }
     }

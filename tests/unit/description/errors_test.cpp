@@ -162,8 +162,8 @@ TEST_CASE("Description: a support at an unknown point, and a rule used in the wr
   CHECK(errors_of(with(plate, "to: E}", "to: Q}")) == Messages{"t.yaml:15:43: unknown point 'Q' (known: plate, B, D, E)"});
   CHECK(errors_of(with(plate, "type: pin", "type: ball_and_socket")) ==
         Messages{"t.yaml:14:12: a 'ball_and_socket' connection is for 3-D problems (this one has 2 axes)"});
-  CHECK(errors_of(with(plate, "bodie", "bodie") + "strings: [{name: s, path: [B, D]}]\n") ==
-        Messages{"t.yaml:16:11: a 'string' connection 's' is for 1-D problems (this one has 2 axes)"});
+  CHECK(errors_of(plate + "  - {type: fixed, body: plate}\n") ==
+        Messages{"t.yaml:16:12: a 'fixed' connection is for 1-D problems (this one has 2 axes)"});
 }
 
 TEST_CASE("Description: a vector with the wrong number of entries", "[errors]") {
