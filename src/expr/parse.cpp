@@ -3,6 +3,7 @@
 #include <cctype>
 
 #include "core/diagnostics.hpp"
+#include "expr/trig.hpp"
 
 namespace tackle {
 
@@ -277,7 +278,12 @@ class Parser {
     if (f == "unit" || f == "norm" || f == "perp1" || f == "perp2") {
       arity(1);
       const ex v = vector_arg(0);
-      const ex n = sqrt(v.op(0) * v.op(0) + v.op(1) * v.op(1) + v.op(2) * v.op(2));
+      // sin^2 + cos^2 = 1 first, so that unit([-sin(theta), cos(theta)]) has no root in it.
+      ex squared = (v.op(0) * v.op(0) + v.op(1) * v.op(1) + v.op(2) * v.op(2)).expand();
+      if (has_trig(squared))
+        for (const ex& form : {pythagoras(squared, true), pythagoras(squared, false)})
+          if (form.nops() < squared.nops() || is_a<numeric>(form)) squared = form;
+      const ex n = sqrt(squared);
       if (normal(n).is_zero()) fail(first_tokens[0].column, "'" + f + "' of a zero vector");
       if (f == "norm") return n;
       if (f == "unit") return scaled(v, 1 / n);

@@ -3,6 +3,7 @@
 #include <set>
 
 #include "expr/print.hpp"
+#include "expr/trig.hpp"
 #include "model/model.hpp"
 
 namespace tackle {
@@ -20,11 +21,6 @@ std::optional<numeric> in_layout(const ex& e, const exmap& layout, std::string& 
     if (is_a<symbol>(*it)) names.insert(to_text(*it));
   missing = join(std::vector<std::string>(names.begin(), names.end()));
   return std::nullopt;
-}
-
-// sin(x)^2 -> 1 - cos(x)^2, so that sums of squares of rotated components collapse.
-ex pythagoras(const ex& e) {
-  return e.subs(pow(sin(wild()), 2) == 1 - pow(cos(wild()), 2), subs_options::algebraic).expand();
 }
 
 // The root of a perfect square (a numeric times even powers), or nothing.
@@ -58,12 +54,24 @@ std::optional<ex> square_root_of(const ex& squared) {
   return root.subs(repl).expand();
 }
 
+// True when no root of an expression in the coordinates is left (the segment's direction
+// is then fixed while it changes length).
+bool is_polynomial_root(const ex& length) {
+  for (const_preorder_iterator it = length.preorder_begin(); it != length.preorder_end(); ++it)
+    if (is_a<power>(*it) && !(is_a<numeric>(it->op(1)) && ex_to<numeric>(it->op(1)).is_integer()) &&
+        !is_a<numeric>(it->op(0)))
+      return false;
+  return true;
+}
+
 }  // namespace
 
 std::optional<ex> simplified_norm(const Vec& v, const exmap& layout, std::string& missing) {
-  const ex squared = pythagoras(inner(v, v).expand());
-  auto root = square_root_of(squared);
-  if (!root) root = sqrt(squared);
+  const ex squared = inner(v, v).expand();
+  std::optional<ex> root;
+  for (const ex& form : {squared, pythagoras(squared, true), pythagoras(squared, false)})
+    if ((root = square_root_of(form))) break;
+  if (!root) root = sqrt(pythagoras(squared, true));
   const auto value = in_layout(*root, layout, missing);
   if (!value) return std::nullopt;
   return value->is_negative() ? ex(-*root) : *root;
@@ -111,8 +119,15 @@ std::optional<Path> make_path(const std::vector<int>& indices, const std::vector
       }
       continue;
     }
+    if (!s.constant && !is_polynomial_root(*length)) {
+      diags.error(at, "strand " + name + " has length " + to_text(*length) +
+                          ", which turns as the bodies move (expected a strand whose length is a polynomial in the "
+                          "coordinates: each end moving along the strand or across a fixed direction)");
+      ok = false;
+      continue;
+    }
     s.length = *length;
-    s.direction = (1 / *length) * v;
+    for (int k = 0; k < 3; ++k) s.direction[k] = normal(v[k] / *length);
     if (dims == 1) s.direction = {(v[0] / *length).normal(), 0, 0};
     p.length += s.length;
     if (!s.constant) p.varying_length += s.length;

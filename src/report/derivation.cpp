@@ -98,7 +98,10 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       if (auto v = evaluate(sym->sym, table, sym->dimension)) st->note = v->decimal + (v->unit.empty() ? "" : " " + v->unit);
       continue;
     }
-    if (auto v = sym->value ? evaluate(sym->sym, table, sym->dimension) : std::nullopt) {
+    // A parameter is shown in the unit it was stated in (30 deg, 3000 lbm).
+    std::optional<Unit> stated;
+    if (!sym->unit.empty() && sym->dimension) stated = Unit{sym->unit_to_si, *sym->dimension, sym->unit};
+    if (auto v = sym->value ? evaluate(sym->sym, table, sym->dimension, options.digits, stated) : std::nullopt) {
       Step* st = step(Step::Kind::given, sym->name);
       st->lhs = sym->sym;
       st->rhs = v->exact;

@@ -1,5 +1,7 @@
 #include "solve/solve.hpp"
 
+#include "expr/trig.hpp"
+
 #include <algorithm>
 #include <map>
 #include <random>
@@ -94,7 +96,10 @@ int orientation(const ex& sum) {
 }  // namespace
 
 std::vector<ex> canonical_factors(const ex& polynomial) {
-  const ex f = factor(polynomial);
+  // sin(theta) and the like stand in as symbols while factoring (factor() leaves a sum with
+  // them unfactored), and are put back in each factor.
+  exmap repl;
+  const ex f = factor(polynomial.to_polynomial(repl)).subs(repl);
   std::vector<ex> raw;
   if (is_a<mul>(f))
     for (std::size_t i = 0; i < f.nops(); ++i) raw.push_back(f.op(i));
@@ -141,7 +146,13 @@ ex factored(const ex& polynomial) {
 }  // namespace
 
 ex simplest(const ex& e) {
-  const ex n = normal(e);
+  ex n = normal(e);
+  // sin^2 + cos^2 = 1: the shorter of the two rewritings, when one is shorter.
+  if (has_trig(n))
+    for (const bool to_cos : {true, false}) {
+      const ex t = normal(pythagoras(n, to_cos));
+      if (to_text(t).size() < to_text(n).size()) n = t;
+    }
   const ex nd = n.numer_denom();
   const ex f = factored(nd.op(0)) / factored(nd.op(1));
   return to_text(f).size() < to_text(n).size() ? f : n;
@@ -149,7 +160,11 @@ ex simplest(const ex& e) {
 
 namespace {
 
-bool zero(const ex& e) { return normal(e).is_zero(); }
+// Zero, also by sin^2 + cos^2 = 1 (closed forms are simplified with it).
+bool zero(const ex& e) {
+  const ex n = normal(e);
+  return n.is_zero() || (has_trig(n) && normal(pythagoras(n, true)).is_zero());
+}
 
 // Random exact positive rationals for every symbol in `e` that `keep` does not hold.
 // Values are drawn for the symbols in the order of their names, not in the order GiNaC

@@ -1,0 +1,27 @@
+// sin^2 + cos^2 = 1: the one trigonometric identity closed forms of inclined problems need.
+// GiNaC treats sin(x) and cos(x) as unrelated, so (L - s)^2 (cos^2 + sin^2) is not a square
+// and m (cos^2 + sin^2) is not m until one of the squares is rewritten.
+#pragma once
+
+#include <string>
+
+#include <ginac/ginac.h>
+
+namespace tackle {
+
+/// `e` with every sin(x)^2 written as 1 - cos(x)^2 (`to_cos`), or every cos(x)^2 as
+/// 1 - sin(x)^2, expanded.
+[[nodiscard]] inline GiNaC::ex pythagoras(const GiNaC::ex& e, bool to_cos) {
+  using namespace GiNaC;
+  const ex from = to_cos ? pow(sin(wild()), 2) : pow(cos(wild()), 2);
+  const ex to = to_cos ? 1 - pow(cos(wild()), 2) : 1 - pow(sin(wild()), 2);
+  return e.subs(from == to, subs_options::algebraic).expand();
+}
+
+/// True when `e` has a sin or cos in it.
+[[nodiscard]] inline bool has_trig(const GiNaC::ex& e) {
+  using namespace GiNaC;
+  return e.has(sin(wild())) || e.has(cos(wild()));
+}
+
+}  // namespace tackle
