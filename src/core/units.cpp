@@ -177,6 +177,7 @@ const std::vector<Named>& named_dimensions() {
       {Dimension::velocity(), "velocity", "velocity", "m/s"},
       {Dimension::acceleration(), "acceleration", "acceleration", "m/s^2"},
       {Dimension::force() / Dimension::length(), "stiffness (force per length)", "stiffness", "N/m"},
+      {Dimension::force() / Dimension::velocity(), "damping coefficient (force per velocity)", "damping", "N*s/m"},
       {Dimension::force() * Dimension::length(), "moment (or energy)", "moment", "N*m"},
       {Dimension::force() * Dimension::length(), "energy", "energy", "J"},
       {Dimension::force() * Dimension::length() / Dimension::time(), "power", "power", "W"},

@@ -123,13 +123,18 @@ std::string vec_text(const Vec& v, int dims) {
 }
 
 // Clears denominators and common factors of a direction (its length does not matter).
-Vec tidy(const Vec& v) {
+Vec tidy(const Vec& given) {
+  // cos(theta) and the like stand in as symbols (lcm and gcd take polynomials only).
+  exmap repl;
+  Vec v;
+  for (int i = 0; i < 3; ++i) v[i] = normal(given[i]).to_rational(repl);
   ex l = 1;
   for (const auto& x : v) l = lcm(l, normal(x).denom());
   Vec w = {normal(v[0] * l), normal(v[1] * l), normal(v[2] * l)};
   ex g = 0;
   for (const auto& x : w) g = x.is_zero() ? g : (g.is_zero() ? x : gcd(g, x));
   if (!g.is_zero()) w = {normal(w[0] / g), normal(w[1] / g), normal(w[2] / g)};
+  for (auto& x : w) x = normal(x.subs(repl));
   // gcd() chooses the sign by GiNaC's term order: orient the direction canonically (its
   // first nonzero component's canonical factorization has a positive coefficient).
   for (const auto& x : w) {

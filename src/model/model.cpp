@@ -4,6 +4,8 @@
 #include <map>
 #include <set>
 
+#include <fmt/format.h>
+
 #include "expr/print.hpp"
 #include "model/path.hpp"
 
@@ -122,7 +124,9 @@ struct Builder {
         if (!problem.empty()) diags.error(p.define->at, "'define' of parameter '" + p.name.text + "' " + problem);
       }
       const bool positive = p.positive.value_or(
-          p.name.text == "g" || (dim && (*dim == Dimension::mass() || *dim == Dimension::length())) ||
+          p.name.text == "g" ||
+          (dim && (*dim == Dimension::mass() || *dim == Dimension::length() || *dim == Dimension::force() / Dimension::length() ||
+                   *dim == Dimension::force() / Dimension::velocity())) ||
           (definition && definition->info(info_flags::positive)));
       table->add(p.name.text, p.tex ? std::optional<std::string>(p.tex->text) : std::nullopt, SymbolRole::parameter,
                  dim, positive, p.name.at);
@@ -787,8 +791,20 @@ struct Builder {
     for (const auto& a : rule->assumptions)
       if (std::find(m.assumptions.begin(), m.assumptions.end(), a) == m.assumptions.end()) m.assumptions.push_back(a);
     m.connections.push_back(label + ": " + rule->summary);
-    for (const auto& chk : rule->checks)
+    for (const auto& chk : rule->checks) {
+      if (chk.kind == CheckSpec::Kind::positive) {
+        // A stiffness or damping coefficient: positive where its value is known.
+        auto it = in.expr_args.find(chk.arg);
+        if (it == in.expr_args.end()) continue;
+        const ex v = evalf(it->second.first.subs(table->values()));
+        if (is_a<numeric>(v) && ex_to<numeric>(v).is_real() && !ex_to<numeric>(v).is_positive())
+          diags.error(it->second.second, "'" + chk.arg + "' of a " + in.what + " is " + to_text(it->second.first) +
+                                             (is_a<numeric>(it->second.first) ? "" : fmt::format(" = {:g} in SI", ex_to<numeric>(v).to_double())) +
+                                             " (expected a positive value)");
+        continue;
+      }
       pending_checks.push_back({&chk, in.point_args.count(chk.arg) ? in.point_args[chk.arg] : -1, c.at, in.what});
+    }
   }
 
   struct PendingCheck {

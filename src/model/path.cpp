@@ -149,7 +149,7 @@ std::vector<Load> tension_loads(const Path& p, const std::vector<Point>& points,
       if (end->body < 0) continue;
       Load load;
       load.body = end->body;
-      for (int k = 0; k < 3; ++k) load.force[k] = (sign * tension * s.direction[k]).expand();
+      for (int k = 0; k < 3; ++k) load.force[k] = sign * tension * s.direction[k];
       load.at = end->position;
       load.at_name = end->name;
       load.source = source + ": strand " + strand + " at " + end->name;

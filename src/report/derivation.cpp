@@ -32,6 +32,12 @@ std::string undetermined_reason(const Answer& a, const SymbolTable& table, const
 
 }  // namespace
 
+bool has_definition(const ex& e, const SymbolTable& table) {
+  for (const auto& sym : table.all())
+    if (sym->definition && e.has(sym->sym)) return true;
+  return false;
+}
+
 ex fold_definitions(const ex& e, const SymbolTable& table) {
   ex best = e;
   for (const auto& sym : table.all()) {  // in the table's order (an exmap's is the hash order)
@@ -230,7 +236,13 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
           a.status = Answer::Status::undetermined;
           a.reason = undetermined_reason(a, table, sol, false);
         } else {
-          a.closed_form = fold_definitions(simplest(general), table);
+          // With the definitions put in, terms may cancel (y_s = (m + M) g/k in sample 12.4):
+          // the shorter of the two, definitions folded back.
+          const ex plain = simplest(general);
+          ex expanded = general;
+          for (int depth = 0; depth < 8 && has_definition(expanded, table); ++depth) expanded = expanded.subs(table.definitions());
+          expanded = fold_definitions(simplest(expanded), table);
+          a.closed_form = to_text(expanded).size() < to_text(plain).size() ? expanded : fold_definitions(plain, table);
           a.value = evaluate(*a.closed_form, table, w.dimension, options.digits, w.unit);
         }
       }

@@ -300,9 +300,12 @@ struct RuleReader {
     }
     if (auto n = root["checks"]; n && is_list(n, "'checks'", file, diags)) {
       for (const auto& c : n) {
-        if (!check_map(c, {"passes_over"}, "a check of the rule", file, diags)) continue;
-        CheckSpec s{CheckSpec::Kind::passes_over, c["passes_over"] ? c["passes_over"].Scalar() : "", where(c, file)};
-        check_arg_ref(r, s.arg, ArgKind::point, s.at, "a check");
+        if (!check_map(c, {"passes_over", "positive"}, "a check of the rule", file, diags)) continue;
+        auto kind = which(c, {"passes_over", "positive"}, "a check");
+        if (!kind) continue;
+        const bool over = *kind == "passes_over";
+        CheckSpec s{over ? CheckSpec::Kind::passes_over : CheckSpec::Kind::positive, c[*kind].Scalar(), where(c, file)};
+        check_arg_ref(r, s.arg, over ? ArgKind::point : ArgKind::expr, s.at, "a check");
         r.checks.push_back(std::move(s));
       }
     }

@@ -61,9 +61,10 @@ struct ValiditySpec {
   Location at;
 };
 
-/// Checks on the description: `passes_over` requires a string path to run over the point.
+/// Checks on the description: `passes_over` requires a string path to run over the point;
+/// `positive` requires an expression argument to be positive where its value is known.
 struct CheckSpec {
-  enum class Kind { passes_over } kind;
+  enum class Kind { passes_over, positive } kind;
   std::string arg;
   Location at;
 };

@@ -409,6 +409,9 @@ Solution solve(const Model& model, const EquationSystem& s) {
       std::vector<ex> parameters;
       for (const auto& sym : model.symbols->all())
         if (sym->role == SymbolRole::parameter) parameters.push_back(sym->sym);
+      // A given coordinate or velocity is a parameter of the instant: solve for it too (the
+      // blocks of sample 12.4 stay together while y >= -y_s).
+      for (const auto& g : model.given) parameters.push_back(g);
       if (c.op != "=") {
         // Factors of known sign divided out once: what is left is solved for a parameter, or
         // is a number, and then the condition always or never holds.
