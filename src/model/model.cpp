@@ -109,8 +109,10 @@ struct Builder {
           diags.error(p.dimension->at, "unknown dimension '" + p.dimension->text +
                                            "' (expected force, mass, length, time, velocity, acceleration, ...)");
         else if (dim && !(*dim == *named))
-          diags.error(p.dimension->at, "parameter '" + p.name.text + "' has dimension " + named->describe() +
-                                           " but its unit is a " + dim->describe());
+          diags.error(p.dimension->at, "parameter '" + p.name.text + "' has dimension " + named->describe() + " but its unit " +
+                                           p.unit->text + " is " +
+                                           (*dim == Dimension::none() ? std::string("dimensionless (an angle or a pure number)")
+                                                                      : with_article(dim->describe())));
         else
           dim = named;
       }
@@ -439,7 +441,7 @@ struct Builder {
       return;
     }
     Instance in{c, *found, "'" + found->type + "' connection" + (c.name ? " '" + c.name->text + "'" : ""), {}, Scope(*table),
-                {}, {}, {}, {}};
+                {}, {}, {}, {}, {}};
     if (c.name && !connection_names.insert(c.name->text).second)
       diags.error(c.name->at, "duplicate connection name '" + c.name->text + "'");
     if (!arguments_fit(in) || !bind_arguments(in)) return;
@@ -679,7 +681,6 @@ struct Builder {
     const std::string& label = in.label;
     auto& point_args = in.point_args;
     auto& body_args = in.body_args;
-    auto& path_args = in.path_args;
     auto& expr_args = in.expr_args;
     for (const auto& l : rule->loads) {
       if (l.kind == LoadSpec::Kind::on) {
@@ -798,9 +799,14 @@ struct Builder {
         if (it == in.expr_args.end()) continue;
         const ex v = evalf(it->second.first.subs(table->values()));
         if (is_a<numeric>(v) && ex_to<numeric>(v).is_real() && !ex_to<numeric>(v).is_positive())
-          diags.error(it->second.second, "'" + chk.arg + "' of a " + in.what + " is " + to_text(it->second.first) +
-                                             (is_a<numeric>(it->second.first) ? "" : fmt::format(" = {:g} in SI", ex_to<numeric>(v).to_double())) +
+        {
+          const ArgSpec* spec = in.rule.arg(chk.arg);
+          const std::string unit = spec && spec->dimension ? si_unit_name(*spec->dimension) : "";
+          diags.error(it->second.second, "'" + chk.arg + "' of a " + in.what + " is " +
+                                             (is_a<numeric>(it->second.first) ? "" : to_text(it->second.first) + " = ") +
+                                             fmt::format("{:g}", ex_to<numeric>(v).to_double()) + (unit.empty() ? "" : " " + unit) +
                                              " (expected a positive value)");
+        }
         continue;
       }
       pending_checks.push_back({&chk, in.point_args.count(chk.arg) ? in.point_args[chk.arg] : -1, c.at, in.what});

@@ -200,3 +200,51 @@ TEST_CASE("Description: a variant range must be a non-empty range of numbers", "
   CHECK(errors_of(with(good, "m: {value: 40, unit: kg}", "m: {value: 40, unit: kg, range: [-1, 5]}")) ==
         Messages{"t.yaml:4:36: 'range' of parameter 'm' reaches -1, but the parameter is positive"});
 }
+
+namespace {
+const std::string spring_block = R"(title: a block on a spring
+parameters:
+  m: {value: 1, unit: kg}
+  k: {value: 100, unit: N/m}
+  c: {value: 3, unit: N*s/m}
+  L: {value: 2, unit: m}
+  l_0: {value: 1, unit: m}
+bodies:
+  A: {mass: m, position: x}
+points:
+  W: 0
+connections:
+  - {type: spring, path: [W, A], k: k, rest_length: l_0}
+  - {type: damper, path: [W, A], c: c}
+layout: {x: 1}
+)";
+}  // namespace
+
+TEST_CASE("Description: springs, dampers and angles are checked where they are written", "[errors][spring]") {
+  CHECK(errors_of(spring_block).empty());
+  CHECK(errors_of(with(spring_block, "k: {value: 100, unit: N/m}", "k: {value: -100, unit: N/m, positive: false}")) ==
+        Messages{"t.yaml:13:37: 'k' of a 'spring' connection is k = -100 N/m (expected a positive value)"});
+  CHECK(errors_of(with(spring_block, "k: k, rest", "k: -k, rest")) ==
+        Messages{"t.yaml:13:37: 'k' of a 'spring' connection is -k = -100 N/m (expected a positive value)"});
+  CHECK(errors_of(with(spring_block, "{type: damper, path: [W, A], c: c}", "{type: damper, c: c}")) ==
+        Messages{"t.yaml:14:5: a 'damper' connection needs 'path'"});
+  CHECK(errors_of(with(spring_block, "path: [W, A], c", "path: [W, Q], c")) ==
+        Messages{"t.yaml:14:30: unknown point 'Q' (known: A, W)"});
+  CHECK(errors_of(with(spring_block, "L: {value: 2, unit: m}", "L: {value: 2, unit: deg, dimension: length}")) ==
+        Messages{"t.yaml:6:39: parameter 'L' has dimension length but its unit deg is dimensionless (an angle or a pure number)"});
+  CHECK(errors_of(with(spring_block, "rest_length: l_0", "rest_length: m")) ==
+        Messages{"t.yaml:13:53: 'rest_length' of a 'spring' connection is a mass (expected a length)"});
+}
+
+TEST_CASE("Spring: the force comes from the path, k times the stretch, and the damper's from its rate", "[spring]") {
+  const auto a = tackle::test::run_text(spring_block + "given: [x, dot(x)]\nfind: [ddot(x)]\n");
+  const tackle::Derivation d = tackle::explain(*a);
+  REQUIRE(d.answers.size() == 1);
+  REQUIRE(d.answers[0].closed_form);
+  // By hand: the spring (length x, rest length l_0) pulls A back with k (x - l_0), the
+  // damper with c dot(x): m ddot(x) = -k (x - l_0) - c dot(x).
+  const auto& t = a->model.symbols;
+  const GiNaC::ex k = t->find("k")->sym, c = t->find("c")->sym, m = t->find("m")->sym, x = t->find("x")->sym,
+                  v = t->find("dot(x)")->sym, l_0 = t->find("l_0")->sym;
+  CHECK(GiNaC::normal(*d.answers[0].closed_form - (-k * (x - l_0) - c * v) / m).is_zero());
+}
