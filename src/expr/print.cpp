@@ -273,6 +273,11 @@ Fraction split_uncached(const ex& e) {
       if (is_exactly<add>(x) && flip_sum(x)) {
         x = negated_sum(x);
         f.negative = !f.negative;
+      } else if (is_exactly<power>(x) && is_exactly<add>(x.op(0)) && x.op(1).info(info_flags::integer) &&
+                 flip_sum(x.op(0))) {
+        // (z - h)^2 as (h - z)^2, whichever way GiNaC keeps the sum; an odd power moves a sign.
+        x = pow(negated_sum(x.op(0)), x.op(1));
+        if (x.op(1).info(info_flags::odd)) f.negative = !f.negative;
       }
   if (f.negative) {
     bool moved = false;
