@@ -764,6 +764,25 @@ struct Builder {
     for (const auto& k : rule->constraints) {
       if (k.kind == ConstraintSpec::Kind::length) {
         if (const Path* path = path_of(in, k.arg)) m.constraints.push_back({label, cname, path->varying_length, "length of " + label});
+      } else if (k.kind == ConstraintSpec::Kind::together) {
+        // One body's position relative to the other, along each axis, is constant.
+        auto a = in.body_args.find(k.arg), b = in.body_args.find(k.with);
+        if (a == in.body_args.end() || b == in.body_args.end()) continue;
+        const Body& first = m.bodies[a->second];
+        const Body& second = m.bodies[b->second];
+        if (a->second == b->second) {
+          diags.error(c.at, "a " + in.what + " joins body '" + first.name + "' to itself (expected two different bodies)");
+          continue;
+        }
+        for (int i = 0; i < m.dims(); ++i) {
+          const ex q = (second.cm[i] - first.cm[i]).expand();
+          bool moves = false;
+          for (const auto& body : m.bodies) moves = moves || (!body.coord.is_zero() && q.has(body.coord));
+          if (!moves) continue;
+          m.constraints.push_back({label + (m.dims() > 1 ? " (" + m.axes[i] + ")" : ""), cname, q,
+                                   "position of " + second.name + " relative to " + first.name +
+                                       (m.dims() > 1 ? " along " + m.axes[i] : "")});
+        }
       } else if (k.kind == ConstraintSpec::Kind::length_sum) {
         auto it = in.expr_args.find(k.arg);
         if (it == in.expr_args.end()) continue;

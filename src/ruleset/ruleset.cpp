@@ -262,8 +262,9 @@ struct RuleReader {
     }
     if (auto n = root["constraints"]; n && is_list(n, "'constraints'", file, diags)) {
       for (const auto& c : n) {
-        if (!check_map(c, {"length", "length_sum", "still"}, "a constraint of the rule", file, diags)) continue;
-        auto kind = which(c, {"length", "length_sum", "still"}, "a constraint");
+        if (!check_map(c, {"length", "length_sum", "still", "together", "with"}, "a constraint of the rule", file, diags))
+          continue;
+        auto kind = which(c, {"length", "length_sum", "still", "together"}, "a constraint");
         if (!kind) continue;
         ConstraintSpec s;
         s.at = where(c, file);
@@ -274,6 +275,12 @@ struct RuleReader {
         } else if (*kind == "length_sum") {
           s.kind = ConstraintSpec::Kind::length_sum;
           check_arg_ref(r, s.arg, ArgKind::expr, s.at, "a constraint");
+        } else if (*kind == "together") {
+          s.kind = ConstraintSpec::Kind::together;
+          s.with = c["with"] ? c["with"].Scalar() : "";
+          if (s.with.empty()) diags.error(s.at, "a 'together' constraint needs 'with' (the second body)");
+          check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
+          if (!s.with.empty()) check_arg_ref(r, s.with, ArgKind::body, s.at, "a constraint");
         } else {
           s.kind = ConstraintSpec::Kind::still;
           check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");

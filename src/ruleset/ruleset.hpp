@@ -46,10 +46,12 @@ struct LoadSpec {
 };
 
 /// Constraints: `length` holds a path's length constant, `length_sum` a hand-written length
-/// sum, `still` a body's acceleration at zero.
+/// sum, `still` a body's acceleration at zero, `together` (with `with`) the position of one
+/// body relative to another (they share a translation).
 struct ConstraintSpec {
-  enum class Kind { length, length_sum, still } kind;
+  enum class Kind { length, length_sum, still, together } kind;
   std::string arg;
+  std::string with;  // together: the second body argument
   Location at;
 };
 

@@ -248,3 +248,12 @@ TEST_CASE("Spring: the force comes from the path, k times the stretch, and the d
                   v = t->find("dot(x)")->sym, l_0 = t->find("l_0")->sym;
   CHECK(GiNaC::normal(*d.answers[0].closed_form - (-k * (x - l_0) - c * v) / m).is_zero());
 }
+
+TEST_CASE("Description: a joint between a body and itself is an error", "[errors][joint]") {
+  const std::string two = tackle::test::read_example("two-blocks-joined-by-a-pin.yaml");
+  CHECK(errors_of(with(two, "other: B, at: H", "other: A, at: H")) ==
+        Messages{"t.yaml:30:5: a 'pin_joint' connection joins body 'A' to itself (expected two different bodies)"});
+  CHECK(errors_of(with(two, "  - {type: force, on: A, at: A, force: [F, 0]}\n",
+                       "  - {type: force, on: A, at: A, force: [F, 0]}\n  - {type: same_motion, body: B, other: Z}\n")) ==
+        Messages{"t.yaml:32:41: unknown body 'Z' (known: A, B)"});
+}
