@@ -275,9 +275,15 @@ Fraction split_uncached(const ex& e) {
         f.negative = !f.negative;
       } else if (is_exactly<power>(x) && is_exactly<add>(x.op(0)) && x.op(1).info(info_flags::integer) &&
                  flip_sum(x.op(0))) {
-        // (z - h)^2 as (h - z)^2, whichever way GiNaC keeps the sum; an odd power moves a sign.
-        x = pow(negated_sum(x.op(0)), x.op(1));
-        if (x.op(1).info(info_flags::odd)) f.negative = !f.negative;
+        // (z - h)^2 as (h - z)^2, whichever way GiNaC keeps the sum; an odd power moves a
+        // sign. Only when GiNaC keeps the flipped power as a power: it may take the sign out
+        // again as a product, and printing that product would flip it back, without end
+        // (found by fuzzing).
+        const ex flipped = pow(negated_sum(x.op(0)), x.op(1));
+        if (is_exactly<power>(flipped) && is_exactly<add>(flipped.op(0)) && !flip_sum(flipped.op(0))) {
+          if (x.op(1).info(info_flags::odd)) f.negative = !f.negative;
+          x = flipped;
+        }
       }
   if (f.negative) {
     bool moved = false;
