@@ -220,6 +220,7 @@ std::string si_unit_name(const Dimension& d) {
 }
 
 std::string unit_latex(std::string_view unit_text) {
+  if (unit_text == "deg") return "{}^{\\circ}";  // 30^{\circ}, as a book sets an angle
   std::string out = "\\mathrm{";
   for (std::size_t i = 0; i < unit_text.size(); ++i) {
     const char c = unit_text[i];
