@@ -71,8 +71,11 @@ void print_fraction(const Fraction& f, const print_context& c, unsigned level);
 struct Fraction;
 struct KeyCache {
   int depth = 0;
-  std::unordered_map<const basic*, std::pair<ex, std::string>> keys;
-  std::unordered_map<const basic*, std::pair<ex, std::shared_ptr<const Fraction>>> splits;
+  // By structure, not by node: the printer makes new nodes (a sum negated term by term) whose
+  // parts it has seen, and a cache by address missed them all, so nested fractions cost
+  // time exponential in their depth (found by fuzzing).
+  std::unordered_map<ex, std::string, std::hash<ex>, ex_is_equal> keys;
+  std::unordered_map<ex, std::shared_ptr<const Fraction>, std::hash<ex>, ex_is_equal> splits;
 };
 thread_local KeyCache key_cache;
 
@@ -96,10 +99,9 @@ std::string key_of(const ex& e) {
   if (is_exactly<power>(e) && is_exactly<symbol>(e.op(0)) && is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_pos_integer())
     return ex_to<symbol>(e.op(0)).get_name() + "^" + std::to_string(ex_to<numeric>(e.op(1)).to_int());
   if (key_cache.depth == 0) return key_of_uncached(e);
-  const basic* node = &ex_to<basic>(e);
-  if (auto it = key_cache.keys.find(node); it != key_cache.keys.end()) return it->second.second;
+  if (auto it = key_cache.keys.find(e); it != key_cache.keys.end()) return it->second;
   std::string k = key_of_uncached(e);
-  key_cache.keys.emplace(node, std::make_pair(e, k));
+  key_cache.keys.emplace(e, k);
   return k;
 }
 
@@ -226,10 +228,9 @@ Fraction split_uncached(const ex& e);
 // per node within a top-level print).
 Fraction split(const ex& e) {
   if (key_cache.depth == 0) return split_uncached(e);
-  const basic* node = &ex_to<basic>(e);
-  if (auto it = key_cache.splits.find(node); it != key_cache.splits.end()) return *it->second.second;
+  if (auto it = key_cache.splits.find(e); it != key_cache.splits.end()) return *it->second;
   auto f = std::make_shared<const Fraction>(split_uncached(e));
-  key_cache.splits.emplace(node, std::make_pair(e, f));
+  key_cache.splits.emplace(e, f);
   return *f;
 }
 
