@@ -330,7 +330,18 @@ DescriptionRead read_description_text(const std::string& text, const std::string
     if (auto items = scalar_list(a, "'axes'", file, diags)) d.axes = *items;
   }
   if (auto p = root["parameters"]) r.read_parameters(p);
-  if (auto g = root["gravity"]) d.gravity = r.vector(g, "'gravity'");
+  if (auto g = root["gravity"]) {
+    if (g.IsMap()) {
+      if (check_map(g, {"magnitude", "tilt"}, "'gravity'", file, diags)) {
+        d.gravity_magnitude = r.opt_scalar(g, "magnitude", "'gravity'");
+        d.gravity_tilt = r.opt_scalar(g, "tilt", "'gravity'");
+        if (!d.gravity_magnitude || !d.gravity_tilt)
+          diags.error(where(g, file), "'gravity' as a mapping needs 'magnitude' and 'tilt' (the angle the first axis rises above the horizontal)");
+      }
+    } else {
+      d.gravity = r.vector(g, "'gravity'");
+    }
+  }
   if (auto b = root["bodies"]) r.read_bodies(b);
   else diags.error({file, 1, 1}, "the description has no 'bodies' (expected at least one body)");
   if (auto p = root["points"]) r.read_points(p);

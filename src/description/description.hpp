@@ -102,6 +102,9 @@ struct Description {
   std::vector<Text> axes;
   std::vector<ParameterDesc> parameters;
   std::optional<VectorDesc> gravity;
+  // Or, for axes tilted with a slope: the magnitude of gravity and the angle the first axis
+  // rises above the horizontal (the second axis is across the slope, upwards).
+  std::optional<Text> gravity_magnitude, gravity_tilt;
   std::vector<BodyDesc> bodies;
   std::vector<PointDesc> points;
   std::vector<ConnectionDesc> connections;  // `loads` and `strings` entries land here too

@@ -851,8 +851,19 @@ struct Builder {
   }
 
   void gravity() {
-    if (!d.gravity) return;
-    auto g = vector(*d.gravity, *table, "'gravity'", Dimension::acceleration());
+    std::optional<Vec> g;
+    if (d.gravity) {
+      g = vector(*d.gravity, *table, "'gravity'", Dimension::acceleration());
+    } else if (d.gravity_magnitude && d.gravity_tilt) {
+      // Axes tilted by `tilt`: gravity is -g sin(tilt) along the first axis (up the slope) and
+      // -g cos(tilt) along the second (across it, upwards).
+      auto magnitude = parse(*d.gravity_magnitude, *table, "'magnitude' of 'gravity'");
+      auto tilt = parse(*d.gravity_tilt, *table, "'tilt' of 'gravity'");
+      if (magnitude && !is_a<numeric>(*magnitude))
+        check_dimension(*magnitude, Dimension::acceleration(), d.gravity_magnitude->at, "'magnitude' of 'gravity'");
+      if (tilt && !is_a<numeric>(*tilt)) check_dimension(*tilt, Dimension::none(), d.gravity_tilt->at, "'tilt' of 'gravity'");
+      if (magnitude && tilt) g = Vec{-*magnitude * sin(*tilt), m.dims() > 1 ? ex(-*magnitude * cos(*tilt)) : ex(0), 0};
+    }
     if (!g) return;
     m.gravity = *g;
     for (std::size_t i = 0; i < m.bodies.size(); ++i) {

@@ -257,3 +257,11 @@ TEST_CASE("Description: a joint between a body and itself is an error", "[errors
                        "  - {type: force, on: A, at: A, force: [F, 0]}\n  - {type: same_motion, body: B, other: Z}\n")) ==
         Messages{"t.yaml:32:41: unknown body 'Z' (known: A, B)"});
 }
+
+TEST_CASE("Description: gravity by magnitude and tilt needs both, with their dimensions", "[errors][gravity]") {
+  CHECK(errors_of(good + "gravity: {magnitude: g}\n") ==
+        Messages{"t.yaml:15:10: 'gravity' as a mapping needs 'magnitude' and 'tilt' (the angle the first axis rises above the horizontal)"});
+  CHECK(errors_of(good + "gravity: {magnitude: F, tilt: m}\n") ==
+        Messages{"t.yaml:15:22: 'magnitude' of 'gravity' is a force (expected an acceleration)",
+                 "t.yaml:15:31: 'tilt' of 'gravity' is a mass (expected a pure number)"});
+}
