@@ -279,11 +279,7 @@ class Parser {
       arity(1);
       const ex v = vector_arg(0);
       // sin^2 + cos^2 = 1 first, so that unit([-sin(theta), cos(theta)]) has no root in it.
-      ex squared = (v.op(0) * v.op(0) + v.op(1) * v.op(1) + v.op(2) * v.op(2)).expand();
-      if (has_trig(squared))
-        for (const ex& form : {pythagoras(squared, true), pythagoras(squared, false)})
-          if (form.nops() < squared.nops() || is_a<numeric>(form)) squared = form;
-      const ex n = sqrt(squared);
+      const ex n = sqrt(fewer_trig_terms((v.op(0) * v.op(0) + v.op(1) * v.op(1) + v.op(2) * v.op(2)).expand()));
       if (normal(n).is_zero()) fail(first_tokens[0].column, "'" + f + "' of a zero vector");
       if (f == "norm") return n;
       if (f == "unit") return scaled(v, 1 / n);

@@ -24,4 +24,13 @@ namespace tackle {
   return e.has(sin(wild())) || e.has(cos(wild()));
 }
 
+/// The sum of squares `e` (expanded) with sin^2 + cos^2 = 1 used where that leaves fewer terms
+/// (a number when it can): what goes under the root of a length or a norm.
+[[nodiscard]] inline GiNaC::ex fewer_trig_terms(GiNaC::ex e) {
+  if (!has_trig(e)) return e;
+  for (const bool to_cos : {true, false})
+    if (const GiNaC::ex t = pythagoras(e, to_cos); t.nops() < e.nops() || GiNaC::is_a<GiNaC::numeric>(t)) e = t;
+  return e;
+}
+
 }  // namespace tackle

@@ -21,13 +21,7 @@ inline Vec cross(const Vec& a, const Vec& b) {
 }
 inline GiNaC::ex inner(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 /// |a|, with sin^2 + cos^2 = 1 used when that shortens what is under the root.
-inline GiNaC::ex norm(const Vec& a) {
-  GiNaC::ex squared = inner(a, a).expand();
-  if (has_trig(squared))
-    for (const bool to_cos : {true, false})
-      if (const GiNaC::ex t = pythagoras(squared, to_cos); t.nops() < squared.nops() || GiNaC::is_a<GiNaC::numeric>(t)) squared = t;
-  return GiNaC::sqrt(squared);
-}
+inline GiNaC::ex norm(const Vec& a) { return GiNaC::sqrt(fewer_trig_terms(inner(a, a).expand())); }
 inline Vec unit(const Vec& a) { return (1 / norm(a)) * a; }
 inline bool is_zero_vec(const Vec& a) {
   return GiNaC::normal(a[0]).is_zero() && GiNaC::normal(a[1]).is_zero() && GiNaC::normal(a[2]).is_zero();
