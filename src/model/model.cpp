@@ -425,7 +425,15 @@ struct Builder {
     for (int p : it->second)
       if (m.dims() == 1 && m.points[p].body >= 0 && m.bodies[m.points[p].body].coord.is_zero()) return nullptr;
     auto [cached, fresh] = in.paths.try_emplace(key);
-    if (fresh) cached->second = make_path(it->second, m.points, m.dims(), layout, diags, in.c.at, in.label);
+    if (fresh) {
+      cached->second = make_path(it->second, m.points, m.dims(), layout, diags, in.c.at, in.label);
+      if (cached->second && cached->second->varying_length.is_zero()) {
+        diags.error(in.c.at, "the path of a " + in.what +
+                                 " never changes length (its ends are on one body, or fixed; expected a path between "
+                                 "points that move apart)");
+        cached->second.reset();
+      }
+    }
     return cached->second ? &*cached->second : nullptr;
   }
 

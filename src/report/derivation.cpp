@@ -25,6 +25,12 @@ std::string undetermined_reason(const Answer& a, const SymbolTable& table, const
   }
   if (kinematic && (sol.rates || sol.positions))
     return "it depends on " + join(names, ", ") + ", which the constraints leave free (give it in 'given')";
+  // A position or velocity other than the one asked for, in a force (a spring at x): the
+  // answer holds at any instant once it is given.
+  const bool other = std::none_of(a.missing.begin(), a.missing.end(), [&](const ex& x) { return x.is_equal(a.symbol); });
+  if (kinematic && other)
+    return "it depends on " + join(names, ", ") + " (give " + (names.size() == 1 ? "it" : "them") +
+           " in 'given' for the answer at any instant)";
   return "no solved equation gives " + join(names, ", ") +
          (kinematic ? "; the equations solved are at the acceleration level (balances and constraints differentiated twice)"
                     : " in terms of the parameters and given quantities");

@@ -265,3 +265,17 @@ TEST_CASE("Description: gravity by magnitude and tilt needs both, with their dim
         Messages{"t.yaml:15:22: 'magnitude' of 'gravity' is a force (expected an acceleration)",
                  "t.yaml:15:31: 'tilt' of 'gravity' is a mass (expected a pure number)"});
 }
+
+TEST_CASE("Description: a force element whose path never changes length is an error", "[errors][spring]") {
+  CHECK(errors_of(with(spring_block, "layout:", "  - {type: contact, name: c, between: [A, A]}\nlayout:")) ==
+        Messages{"t.yaml:15:5: the path of a 'contact' connection 'c' never changes length (its ends are on one body, or "
+                 "fixed; expected a path between points that move apart)"});
+}
+
+TEST_CASE("Spring: an answer that needs the position says to give it", "[spring]") {
+  const auto a = tackle::test::run_text(spring_block + "find: [ddot(x)]\n");
+  const tackle::Derivation d = tackle::explain(*a);
+  REQUIRE(d.answers.size() == 1);
+  CHECK(d.answers[0].status == tackle::Answer::Status::undetermined);
+  CHECK(d.answers[0].reason == "it depends on x, dot(x) (give them in 'given' for the answer at any instant)");
+}
