@@ -527,6 +527,10 @@ struct Builder {
         ok = false;
         continue;
       }
+      if (a->items.empty()) {  // it was not a name or a list of names: reported when it was read
+        ok = false;
+        continue;
+      }
       switch (spec.kind) {
         case ArgKind::body: {
           auto it = body_index.find(a->items[0].text);

@@ -279,3 +279,8 @@ TEST_CASE("Spring: an answer that needs the position says to give it", "[spring]
   CHECK(d.answers[0].status == tackle::Answer::Status::undetermined);
   CHECK(d.answers[0].reason == "it depends on x, dot(x) (give them in 'given' for the answer at any instant)");
 }
+
+TEST_CASE("Description: an argument that is not a name is reported once, not used (found by fuzzing)", "[errors][fuzz]") {
+  CHECK(errors_of(with(plate, "at: B}", "at: {B: 1}}")) ==
+        Messages{"t.yaml:14:34: 'at' is a mapping (expected a list of names)"});
+}
