@@ -97,7 +97,17 @@ std::string decimal_string(const numeric& v, int digits) {
 
 std::optional<NumericValue> evaluate_with(const ex& e, const exmap& values, std::optional<Dimension> dimension,
                                           int digits, const std::optional<Unit>& unit) {
-  const ex v = normal(e.subs(values));
+  // A closed form may be undefined at the given numbers (a denominator c - e with c = e):
+  // no number then. The denominator is checked first, so that GiNaC does not throw from
+  // inside a new object (found by fuzzing: exit 3 for a description with c = e).
+  ex v;
+  try {
+    const ex nd = normal(e).numer_denom();
+    if (normal(nd.op(1).subs(values)).is_zero()) return std::nullopt;
+    v = normal(e.subs(values));
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
   for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
     if (is_a<symbol>(*it)) return std::nullopt;
   NumericValue out;
