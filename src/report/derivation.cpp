@@ -275,16 +275,22 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     Eigen::MatrixXd N(family.size(), sol.free.size());
     Eigen::VectorXd p(family.size());
     bool numeric_family = true;
-    for (std::size_t i = 0; i < family.size() && numeric_family; ++i) {
-      const ex g = family[i].subs(sol.general).expand();
-      const ex base = evalf(g.subs(zero_free).subs(values));
-      numeric_family = numeric_family && is_a<numeric>(base);
-      if (numeric_family) p(static_cast<Eigen::Index>(i)) = ex_to<numeric>(base).to_double();
-      for (std::size_t j = 0; j < sol.free.size() && numeric_family; ++j) {
-        const ex c = evalf(g.coeff(sol.free[j], 1).subs(values));
-        numeric_family = is_a<numeric>(c);
-        if (numeric_family) N(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = ex_to<numeric>(c).to_double();
+    // (A family undefined at the given numbers, a denominator that vanishes there, has no
+    // least-norm member: found by fuzzing, where it was an internal error.)
+    try {
+      for (std::size_t i = 0; i < family.size() && numeric_family; ++i) {
+        const ex g = family[i].subs(sol.general).expand();
+        const ex base = evalf(g.subs(zero_free).subs(values));
+        numeric_family = numeric_family && is_a<numeric>(base);
+        if (numeric_family) p(static_cast<Eigen::Index>(i)) = ex_to<numeric>(base).to_double();
+        for (std::size_t j = 0; j < sol.free.size() && numeric_family; ++j) {
+          const ex c = evalf(g.coeff(sol.free[j], 1).subs(values));
+          numeric_family = is_a<numeric>(c);
+          if (numeric_family) N(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = ex_to<numeric>(c).to_double();
+        }
       }
+    } catch (const std::exception&) {
+      numeric_family = false;
     }
     if (numeric_family && !family.empty()) {
       const Eigen::VectorXd f = N.completeOrthogonalDecomposition().solve(-p);
