@@ -266,12 +266,11 @@ struct Builder {
             accelerations.push_back(body.accel);
           }
         }
-        if (b.position) {
-          // reported above when an acceleration is given too
-        } else if (b.acceleration) {
+        // (a position with an acceleration too is reported above; the position wins)
+        if (b.acceleration && !b.position) {
           if (auto a = vector(*b.acceleration, *table, "'acceleration' of body '" + body.name + "'", Dimension::acceleration()))
             body.acceleration = *a;
-        } else if (b.accel_along) {
+        } else if (b.accel_along && !b.position) {
           auto dir = vector(*b.accel_along, *table, "'along' of the acceleration of body '" + body.name + "'", std::nullopt);
           const Text name = b.accel_name ? *b.accel_name : Text{"a_" + body.name, b.accel_along->at};
           if (dir && is_zero_vec(*dir)) {

@@ -64,8 +64,8 @@ bool is_polynomial_root(const ex& length) {
   return true;
 }
 
-}  // namespace
-
+// |v| simplified: a perfect square's root (sign chosen so it is positive in `layout`), else
+// sqrt(v.v). Nothing when the layout cannot tell the sign; `missing` then names what to give.
 std::optional<ex> simplified_norm(const Vec& v, const exmap& layout, std::string& missing) {
   const ex squared = inner(v, v).expand();
   std::optional<ex> root;
@@ -76,6 +76,8 @@ std::optional<ex> simplified_norm(const Vec& v, const exmap& layout, std::string
   if (!value) return std::nullopt;
   return value->is_negative() ? ex(-*root) : *root;
 }
+
+}  // namespace
 
 std::optional<Path> make_path(const std::vector<int>& indices, const std::vector<Point>& points, int dims,
                               const exmap& layout, Diagnostics& diags, const Location& at, const std::string& label) {

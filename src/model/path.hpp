@@ -47,8 +47,4 @@ struct Path {
 [[nodiscard]] std::vector<Load> tension_loads(const Path& p, const std::vector<Point>& points,
                                               const GiNaC::ex& tension, const std::string& source);
 
-/// |v| simplified: a perfect square's root (sign chosen so it is positive in `layout`), else
-/// sqrt(v.v). Nothing when the layout cannot tell the sign; `missing` then names what to give.
-[[nodiscard]] std::optional<GiNaC::ex> simplified_norm(const Vec& v, const GiNaC::exmap& layout, std::string& missing);
-
 }  // namespace tackle
