@@ -178,6 +178,7 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   for (const auto& u : m.candidates) problem_unknowns_.push_back(symbols_->find(u)->name);
   for (const auto& p : parameters_) answer_names_.emplace(p.name, p.symbol);
   definitions_ = symbols_->definitions();
+  lengths_ = symbols_->definitions(true);
   // Random points: exact positive rationals near each parameter's value (between half and
   // twice it), or in [1, 10] when it has none. A fixed seed keeps verdicts reproducible.
   std::mt19937 rng(12);
@@ -231,7 +232,7 @@ std::vector<std::string> Checker::unknowns() const {
 }
 
 std::optional<numeric> Checker::value_at(const ex& e, std::size_t point) const {
-  return evaluate_at(e.subs(definitions_), points_[point]);
+  return evaluate_at(e.subs(lengths_).subs(lengths_), points_[point]);
 }
 
 // Walks the expression with numbers: exact rationals as long as the operations allow, CLN

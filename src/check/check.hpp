@@ -101,6 +101,7 @@ class Checker {
   std::map<std::string, GiNaC::ex, std::less<>> answer_names_;  // the same, by name
   std::vector<std::string> problem_unknowns_;
   GiNaC::exmap definitions_;                // defined parameters, expanded before comparing
+  GiNaC::exmap lengths_;                    // the turning strands' lengths too: for numbers only
   std::vector<Point> points_;
   std::map<std::string, Reference, std::less<>> references_;
 };

@@ -119,6 +119,33 @@ struct Reader {
     }
   }
 
+  // `given`: a list of names, or a mapping from names to their values at the instant
+  // (null, a number, or {value, unit}).
+  void read_given(const YAML::Node& n) {
+    if (!n.IsMap()) {
+      if (auto items = scalar_list(n, "'given'", file, diags))
+        for (const auto& t : *items) d.given.push_back({t, std::nullopt, std::nullopt});
+      return;
+    }
+    std::set<std::string> seen;
+    for (const auto& kv : n) {
+      if (!seen.insert(kv.first.Scalar()).second) continue;  // reported as a duplicate key
+      GivenDesc g{key_text(kv.first), std::nullopt, std::nullopt};
+      const std::string what = "'given' value of '" + g.name.text + "'";
+      const YAML::Node v = kv.second;
+      if (v.IsNull()) {
+        // known, without a value
+      } else if (v.IsScalar()) {
+        g.value = Text{v.Scalar(), where(v, file)};
+      } else if (check_map(v, {"value", "unit"}, what, file, diags)) {
+        g.value = opt_scalar(v, "value", what);
+        g.unit = opt_scalar(v, "unit", what);
+        if (g.unit && !g.value) diags.error(g.unit->at, what + " has a 'unit' but no 'value'");
+      }
+      d.given.push_back(std::move(g));
+    }
+  }
+
   void read_bodies(const YAML::Node& n) {
     if (!name_map(n, "bodies")) return;
     std::set<std::string> seen;
@@ -349,9 +376,7 @@ DescriptionRead read_description_text(const std::string& text, const std::string
   if (auto l = root["loads"]) r.read_list(l, "loads", std::string("force"));
   if (auto s = root["strings"]) r.read_list(s, "strings", std::string("string"));
   if (auto l = root["layout"]) r.read_layout(l);
-  if (auto g = root["given"]) {
-    if (auto items = scalar_list(g, "'given'", file, diags)) d.given = *items;
-  }
+  if (auto g = root["given"]) r.read_given(g);
   if (auto f = root["find"]) r.read_find(f);
   if (auto dv = root["derive"]) r.read_derive(dv);
   if (auto sw = root["sweep"]) {

@@ -74,6 +74,14 @@ struct ConnectionDesc {
   [[nodiscard]] const ArgDesc* arg(const std::string& key) const;
 };
 
+/// A quantity taken as known: a coordinate, a velocity, an acceleration or an unknown, with
+/// an optional value at the instant considered (`given: {z: {value: 3, unit: m}, dot(z): 0}`).
+struct GivenDesc {
+  Text name;
+  std::optional<Text> value;
+  std::optional<Text> unit;
+};
+
 struct FindDesc {
   Text name;                 // unknown name, e.g. ddot(x_A), or a new name for `expr`
   std::optional<Text> expr;  // a quantity defined from the unknowns, e.g. F/ddot(x_B)
@@ -109,7 +117,7 @@ struct Description {
   std::vector<PointDesc> points;
   std::vector<ConnectionDesc> connections;  // `loads` and `strings` entries land here too
   std::vector<std::pair<Text, Text>> layout;
-  std::vector<Text> given;
+  std::vector<GivenDesc> given;
   std::vector<FindDesc> find;
   std::vector<DeriveDesc> derive;  // empty: tackle chooses a complete set
   std::optional<SweepDesc> sweep;  // a default for `tackle sweep`, and a figure in LaTeX reports

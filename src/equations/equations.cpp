@@ -8,7 +8,7 @@ namespace tackle {
 
 using namespace GiNaC;
 
-ex time_derivative(const ex& e, const Model& m) { return tackle::time_derivative(e, m.bodies); }
+ex time_derivative(const ex& e, const Model& m) { return tackle::time_derivative(e, m.bodies, m.lengths); }
 
 namespace {
 
@@ -88,8 +88,21 @@ EquationSystem build_equations(const Model& m) {
   auto add_constraint = [&](const Constraint& c) {
     // Constant parts (fixed points, offsets, wrap around pulleys) drop out of the derivatives;
     // the book leaves them out of the length sum too.
+    // A term varies when it has a coordinate, or a turning strand's length (whose square does).
     const ex q = c.quantity.expand();
-    const ex varying = (q - q.subs(still_coordinates)).expand();
+    auto varies = [&](const ex& t) {
+      if (!(t - t.subs(still_coordinates)).expand().is_zero()) return true;
+      return std::any_of(m.lengths.begin(), m.lengths.end(), [&](const TurningLength& l) {
+        return t.has(l.symbol) && !(l.squared - l.squared.subs(still_coordinates)).expand().is_zero();
+      });
+    };
+    ex varying = 0;
+    if (is_a<add>(q)) {
+      for (const auto& t : q)
+        if (varies(t)) varying += t;
+    } else if (varies(q)) {
+      varying = q;
+    }
     ConstraintSteps steps{c.label, c.meaning, varying, time_derivative(varying, m), 0};
     steps.acceleration = time_derivative(steps.rate, m);
     steps.constant = c.constant;

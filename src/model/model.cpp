@@ -373,6 +373,14 @@ struct Builder {
       auto v = parse(value, none, "layout value of '" + name.text + "'");
       if (v && is_a<numeric>(*v)) layout[s->sym] = *v;
     }
+    // A coordinate given with a value is at that value in the layout, unless the layout says
+    // otherwise (its problems are reported with the other given quantities).
+    for (const auto& g : d.given) {
+      const SymbolInfo* s = g.value ? table->find(g.name.text) : nullptr;
+      if (!s || s->role != SymbolRole::coordinate || layout.count(s->sym)) continue;
+      Diagnostics later;
+      if (auto v = given_value(g, *s, later)) layout[s->sym] = *v;
+    }
   }
 
   std::string substitute(std::string tmpl, const ConnectionDesc& c, bool& ok) {
@@ -415,6 +423,25 @@ struct Builder {
     std::map<std::string, std::optional<Path>> paths;  // points arguments as paths, made once
   };
 
+  // The symbol for the length of a strand that turns (one per pair of points, whichever way
+  // round): l_CP, or l_C_P1 when a name is longer than one letter, with l^2 = `squared`.
+  std::map<std::pair<std::string, std::string>, ex> turning_lengths;
+  ex turning_length(const Point& a, const Point& b, const ex& squared) {
+    const auto key = std::minmax(a.name, b.name);
+    if (auto it = turning_lengths.find(key); it != turning_lengths.end()) return it->second;
+    const bool short_names = a.name.size() == 1 && b.name.size() == 1;
+    const std::string base = "l_" + a.name + (short_names ? "" : "_") + b.name;
+    std::string name = base;
+    for (int k = 2; table->find(name); ++k) name = base + "_" + std::to_string(k);
+    const std::string tex = "\\ell" + default_tex(name).substr(1);
+    const SymbolInfo& s = table->add(name, tex, SymbolRole::parameter, Dimension::length(), true, Location{});
+    table->set_definition(name, sqrt(squared), true);
+    table->set_unit(name, "m", 1);
+    m.lengths.push_back({s.sym, squared});
+    turning_lengths.emplace(key, s.sym);
+    return s.sym;
+  }
+
   // The path of a points argument, made on first use; nothing when it cannot be made (its
   // problems are reported then).
   const Path* path_of(Instance& in, const std::string& key) {
@@ -425,7 +452,8 @@ struct Builder {
       if (m.dims() == 1 && m.points[p].body >= 0 && m.bodies[m.points[p].body].coord.is_zero()) return nullptr;
     auto [cached, fresh] = in.paths.try_emplace(key);
     if (fresh) {
-      cached->second = make_path(it->second, m.points, m.dims(), layout, diags, in.c.at, in.label);
+      cached->second = make_path(it->second, m.points, m.dims(), layout, diags, in.c.at, in.label,
+                                 [this](const Point& a, const Point& b, const ex& squared) { return turning_length(a, b, squared); });
       if (cached->second && cached->second->varying_length.is_zero()) {
         diags.error(in.c.at, "the path of a " + in.what +
                                  " never changes length (its ends are on one body, or fixed; expected a path between "
@@ -742,7 +770,7 @@ struct Builder {
         if (!path) continue;
         // A force element's tension may use its path's length and lengthening rate.
         in.scope.bind("length", path->length);
-        in.scope.bind("lengthening", time_derivative(path->length, m.bodies));
+        in.scope.bind("lengthening", time_derivative(path->length, m.bodies, m.lengths));
         auto tension = rule_expr(in, l.expr, l.at);
         if (!tension) continue;
         for (auto& load : tension_loads(*path, m.points, *tension, label)) m.loads.push_back(std::move(load));
@@ -910,8 +938,44 @@ struct Builder {
     return unit;
   }
 
+  // The value of a `given` entry in SI, checked against the quantity's dimension; nothing
+  // (with the problem reported to `to`) when it is not a number in a fitting unit.
+  std::optional<ex> given_value(const GivenDesc& g, const SymbolInfo& s, Diagnostics& to, std::string* unit_text = nullptr,
+                                ex* to_si = nullptr) {
+    const std::string what = "'given' value of '" + g.name.text + "'";
+    std::optional<Unit> unit;
+    if (g.unit) {
+      std::string err;
+      int col = 0;
+      unit = parse_unit(g.unit->text, err, col);
+      if (!unit) {
+        to.error(g.unit->at.shifted(col), "unit of " + what + ": " + err);
+        return std::nullopt;
+      }
+      if (s.dimension && !(unit->dimension == *s.dimension)) {
+        to.error(g.unit->at, "'" + g.name.text + "' is " + with_article(s.dimension->describe()) + ", but " + g.unit->text +
+                                 " is " + with_article(unit->dimension.describe()));
+        return std::nullopt;
+      }
+    }
+    auto r = parse_expression(g.value->text, none);
+    if (!r.value) {
+      for (const auto& p : r.problems) to.error(g.value->at.shifted(p.column), what + ": " + p.message);
+      return std::nullopt;
+    }
+    const ex approx = evalf(*r.value);
+    if (!is_a<numeric>(approx) || !ex_to<numeric>(approx).is_real()) {
+      to.error(g.value->at, what + " is not a number");
+      return std::nullopt;
+    }
+    if (unit_text) *unit_text = unit ? g.unit->text : si_unit_name(s.dimension.value_or(Dimension{}));
+    if (to_si) *to_si = unit ? ex(unit->to_si) : ex(1);
+    return unit ? *r.value * unit->to_si : *r.value;
+  }
+
   void given_and_find() {
-    for (const auto& g : d.given) {
+    for (const auto& gd : d.given) {
+      const Text& g = gd.name;
       auto r = parse_expression(g.text, *table);
       if (!r.value) {
         for (const auto& p : r.problems) diags.error(g.at.shifted(p.column), "'given': " + p.message);
@@ -922,6 +986,14 @@ struct Builder {
                  s->role != SymbolRole::coordinate)) {
         diags.error(g.at, "'" + g.text + "' cannot be given (expected a coordinate, a velocity or an acceleration such as ddot(x_B), or an unknown)");
         continue;
+      }
+      if (gd.value) {
+        std::string unit_text;
+        ex to_si = 1;
+        if (auto v = given_value(gd, *s, diags, &unit_text, &to_si)) {
+          table->set_value(s->name, *v);
+          table->set_unit(s->name, unit_text, to_si);
+        }
       }
       m.given.push_back(s->sym);
       m.candidates.erase(std::remove(m.candidates.begin(), m.candidates.end(), s->sym), m.candidates.end());
@@ -1098,12 +1170,16 @@ struct Builder {
 
 }  // namespace
 
-ex time_derivative(const ex& e, const std::vector<Body>& bodies) {
+ex time_derivative(const ex& e, const std::vector<Body>& bodies, const std::vector<TurningLength>& lengths) {
   ex d = 0;
   for (const auto& b : bodies) {
     if (b.coord.is_zero()) continue;
     d += e.diff(ex_to<symbol>(b.coord)) * b.rate + e.diff(ex_to<symbol>(b.rate)) * b.accel;
   }
+  // d l/dt = d(l^2)/dt / (2 l), with l^2 a polynomial in the coordinates.
+  for (const auto& l : lengths)
+    if (e.has(l.symbol))
+      d += e.diff(ex_to<symbol>(l.symbol)) * time_derivative(l.squared, bodies, {}) / (2 * l.symbol);
   return d.expand();
 }
 

@@ -87,6 +87,14 @@ struct Selection {
   std::string axis_label;   // "OG", "[0, 1, 0]"
 };
 
+/// A strand's length that turns as the bodies move: a positive symbol whose square is a
+/// polynomial in the coordinates and parameters (`l_CP^2 = a^2 + (h - z)^2`). Its time
+/// derivative is d(squared)/dt / (2 l): no root ever appears in a closed form.
+struct TurningLength {
+  GiNaC::ex symbol;
+  GiNaC::ex squared;
+};
+
 struct Model {
   std::string file;
   std::string title;
@@ -99,6 +107,7 @@ struct Model {
   std::vector<Load> loads;
   std::vector<Constraint> constraints;
   std::vector<Condition> conditions;
+  std::vector<TurningLength> lengths;
   std::vector<std::string> assumptions;
   std::vector<std::string> connections;  // one line per connection: "string s: <summary>"
   std::optional<Vec> gravity;
@@ -109,8 +118,10 @@ struct Model {
   std::optional<SweepDesc> sweep;     // as described (checked when it is run)
 };
 
-/// d/dt of an expression in the bodies' coordinates and rates (the chain rule).
-[[nodiscard]] GiNaC::ex time_derivative(const GiNaC::ex& e, const std::vector<Body>& bodies);
+/// d/dt of an expression in the bodies' coordinates and rates and the turning lengths (the
+/// chain rule).
+[[nodiscard]] GiNaC::ex time_derivative(const GiNaC::ex& e, const std::vector<Body>& bodies,
+                                        const std::vector<TurningLength>& lengths);
 
 /// Builds the model; every problem in the description is reported at once (InputError).
 [[nodiscard]] Model build_model(const Description& d, const RuleSet& rules);

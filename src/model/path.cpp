@@ -80,7 +80,8 @@ std::optional<ex> simplified_norm(const Vec& v, const exmap& layout, std::string
 }  // namespace
 
 std::optional<Path> make_path(const std::vector<int>& indices, const std::vector<Point>& points, int dims,
-                              const exmap& layout, Diagnostics& diags, const Location& at, const std::string& label) {
+                              const exmap& layout, Diagnostics& diags, const Location& at, const std::string& label,
+                              const NameTurningLength& turning) {
   Path p;
   p.points = indices;
   bool ok = true;
@@ -121,13 +122,10 @@ std::optional<Path> make_path(const std::vector<int>& indices, const std::vector
       }
       continue;
     }
-    if (!s.constant && !is_polynomial_root(*length)) {
-      diags.error(at, "strand " + name + " has length " + to_text(*length) +
-                          ", which turns as the bodies move (expected a strand whose length is a polynomial in the "
-                          "coordinates: each end moving along the strand or across a fixed direction)");
-      ok = false;
-      continue;
-    }
+    // A root left in the coordinates: the strand turns as the bodies move. Its length is a
+    // symbol from here on (l^2 = the squared length), so that GiNaC's normal() never has to
+    // cancel roots (it does so in some runs and not in others).
+    if (!s.constant && !is_polynomial_root(*length)) length = turning(a, b, pow(*length, 2).expand());
     s.length = *length;
     for (int k = 0; k < 3; ++k) s.direction[k] = normal(v[k] / *length);
     if (dims == 1) s.direction = {(v[0] / *length).normal(), 0, 0};

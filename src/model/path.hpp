@@ -5,6 +5,7 @@
 // towards the segment's other end; a path's length grows when its ends move apart.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,13 +35,19 @@ struct Path {
   GiNaC::ex varying_length = 0;  // the segments that change (the constant ones drop out)
 };
 
+/// Names the length of a strand that turns as the bodies move: given the strand's ends and
+/// its squared length (a polynomial), returns the positive symbol that stands for the root.
+using NameTurningLength = std::function<GiNaC::ex(const Point& from, const Point& to, const GiNaC::ex& squared)>;
+
 /// The path through `indices` in a problem with `dims` axes. A segment's length is
 /// |to - from| simplified (perfect squares come out of the root, sin^2 + cos^2 = 1), its sign
 /// and non-zero length decided by `layout` (parameter values and the layout's coordinates).
-/// Problems go to `diags` at `at`, naming the segment as "A-B of <label>".
+/// A length that stays a root of the coordinates is named by `turning` (a symbol, never the
+/// root itself). Problems go to `diags` at `at`, naming the segment as "A-B of <label>".
 [[nodiscard]] std::optional<Path> make_path(const std::vector<int>& indices, const std::vector<Point>& points,
                                             int dims, const GiNaC::exmap& layout, Diagnostics& diags,
-                                            const Location& at, const std::string& label);
+                                            const Location& at, const std::string& label,
+                                            const NameTurningLength& turning);
 
 /// The loads of a tension along the path: at each end (on a body) of each changing segment,
 /// `tension` times the unit vector towards the other end. `source` prefixes each load's source.

@@ -109,17 +109,24 @@ void SymbolTable::set_range(const std::string& name, GiNaC::numeric low, GiNaC::
   items_[it->second]->step = step;
 }
 
-GiNaC::exmap SymbolTable::definitions() const {
+GiNaC::exmap SymbolTable::definitions(bool geometric) const {
   GiNaC::exmap m;
   for (const auto& s : items_)
-    if (s->definition) m[s->sym] = *s->definition;
+    if (s->definition && (geometric || !s->geometric)) m[s->sym] = *s->definition;
   return m;
 }
 
-void SymbolTable::set_definition(const std::string& name, GiNaC::ex definition) {
+void SymbolTable::set_definition(const std::string& name, GiNaC::ex definition, bool geometric) {
   auto it = by_name_.find(name);
   if (it == by_name_.end()) throw InternalError("no symbol '" + name + "'");
   items_[it->second]->definition = std::move(definition);
+  items_[it->second]->geometric = geometric;
+}
+
+bool SymbolTable::hidden_in_lengths(const GiNaC::ex& e, const GiNaC::ex& s) const {
+  for (const auto& item : items_)
+    if (item->geometric && e.has(item->sym) && (item->sym.is_equal(s) || item->definition->has(s))) return true;
+  return false;
 }
 
 GiNaC::exmap SymbolTable::values() const {

@@ -29,6 +29,10 @@ struct SymbolInfo {
   std::string unit;                     // parameters: the unit they are stated in
   bool positive = false;
   std::optional<GiNaC::ex> definition;  // a defined parameter: its expression in the others
+  // A strand's length that turns as the bodies move, `l_CP = sqrt(a^2 + (h - z)^2)`: kept as
+  // a positive symbol in every closed form (so no root of the coordinates ever meets
+  // normal()), its definition substituted for numbers only.
+  bool geometric = false;
   GiNaC::ex unit_to_si = 1;             // parameters: `unit`'s factor to SI (pi/180 for deg)
   // Variants: the range values are drawn from and the step they are rounded to, in `unit`.
   std::optional<std::pair<GiNaC::numeric, GiNaC::numeric>> range;
@@ -62,9 +66,13 @@ class SymbolTable : public NameResolver, public DimensionLookup {
 
   /// Substitution map of every parameter that has a value (SI).
   [[nodiscard]] GiNaC::exmap values() const;
-  /// Substitution map of every defined parameter to its expression.
-  [[nodiscard]] GiNaC::exmap definitions() const;
-  void set_definition(const std::string& name, GiNaC::ex definition);
+  /// Substitution map of every defined parameter to its expression; the geometric lengths
+  /// too when asked (for numbers only: their roots are not for normal()).
+  [[nodiscard]] GiNaC::exmap definitions(bool geometric = false) const;
+  void set_definition(const std::string& name, GiNaC::ex definition, bool geometric = false);
+  /// True when a geometric length in `e` depends on `s` (e is then not linear in s where it
+  /// looks so).
+  [[nodiscard]] bool hidden_in_lengths(const GiNaC::ex& e, const GiNaC::ex& s) const;
   void set_range(const std::string& name, GiNaC::numeric low, GiNaC::numeric high, std::optional<GiNaC::numeric> step);
 
  private:

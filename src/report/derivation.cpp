@@ -40,7 +40,7 @@ std::string undetermined_reason(const Answer& a, const SymbolTable& table, const
 
 bool has_definition(const ex& e, const SymbolTable& table) {
   for (const auto& sym : table.all())
-    if (sym->definition && e.has(sym->sym)) return true;
+    if (sym->definition && !sym->geometric && e.has(sym->sym)) return true;
   return false;
 }
 
@@ -101,7 +101,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   for (const auto& c : m.connections) bullet(c + ".");
   std::vector<std::string> symbolic;
   for (const auto& sym : table.all()) {
-    if (sym->role != SymbolRole::parameter) continue;
+    // Parameters, and quantities given with their value at the instant (z = 3 m).
+    if (sym->role != SymbolRole::parameter && !sym->value) continue;
     if (sym->definition) {
       // A defined parameter: its definition, and its value when the others have one.
       Step* st = step(Step::Kind::equation, "definition");  // not folded: it is the definition
@@ -213,9 +214,31 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     } else if (!w.defined && is_candidate && !is_unknown) {
       a.status = Answer::Status::not_in_equations;
     } else {
-      ex general = w.expr.subs(sol.general);
-      for (const auto* level : {sol.rates.get(), sol.positions.get()})
-        if (level) general = general.subs(level->general);
+      ex general;
+      try {
+        general = w.expr.subs(sol.general);
+        for (const auto* level : {sol.rates.get(), sol.positions.get()})
+          if (level) general = general.subs(level->general);
+      } catch (const std::domain_error&) {
+        // A defined quantity that divides by an unknown the equations make zero
+        // (F/ddot(x_B) where ddot(x_B) = 0): GiNaC refuses the pole; say which.
+        std::vector<std::string> names;
+        for (const auto& u : s.unknowns) {
+          if (!w.expr.has(u)) continue;
+          try {
+            if (normal(u.subs(sol.general)).is_zero()) {
+              a.zero_divisors.push_back(u);
+              names.push_back(to_text(u) + " = 0");
+            }
+          } catch (const std::domain_error&) {
+          }
+        }
+        a.status = Answer::Status::undetermined;
+        a.reason = "its definition " + to_text(w.expr) + " divides by zero" +
+                   (names.empty() ? std::string() : " (" + join(names, ", ") + " here)");
+        d.answers.push_back(a);
+        continue;
+      }
       bool free = false;
       for (const auto& f : sol.free) free = free || general.has(f);
       if (free) {
@@ -317,6 +340,16 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
         if (a.value) st->note = a.value->decimal + (a.value->unit.empty() ? "" : " " + a.value->unit);
       } else if (a.status == Answer::Status::not_in_equations) {
         text_with("{} does not appear in the chosen equations.", {a.symbol});
+      } else if (a.status == Answer::Status::undetermined && a.missing.empty()) {
+        // A defined quantity that divides by zero (the reason's names as math).
+        std::vector<ex> math{a.symbol};
+        std::string zeros;
+        for (const auto& z : a.zero_divisors) {
+          zeros += (zeros.empty() ? "" : ", ") + std::string("{} = 0");
+          math.push_back(z);
+        }
+        text_with("{} is not determined: its definition divides by zero" + (zeros.empty() ? "" : " (" + zeros + " here)") + ".",
+                  math);
       } else if (a.status == Answer::Status::undetermined) {
         std::vector<ex> math{a.symbol};
         math.insert(math.end(), a.missing.begin(), a.missing.end());

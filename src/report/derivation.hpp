@@ -37,6 +37,9 @@ struct Answer {
   enum class Status { determined, free, in_combination, not_in_equations, undetermined } status = Status::determined;
   std::vector<GiNaC::ex> missing;
   std::string reason;  // undetermined: why, in words ("no solved equation gives dot(x_A) ...")
+  // undetermined because a defined quantity divides by zero: the unknowns that are 0 there
+  // (F/ddot(x_B) with ddot(x_B) = 0)
+  std::vector<GiNaC::ex> zero_divisors;
   std::optional<GiNaC::ex> closed_form;
   std::optional<NumericValue> value;
   std::optional<GiNaC::ex> general;  // free or in combination: in terms of the free unknowns

@@ -380,6 +380,11 @@ std::optional<Solution> solve_level(const Model& model, const std::vector<Equati
   for (const auto& b : model.bodies) {
     const ex& q = role == SymbolRole::rate ? b.rate : b.coord;
     if (q.is_zero() || std::find(model.given.begin(), model.given.end(), q) != model.given.end()) continue;
+    // A coordinate inside a turning strand's length (x in l_CP = sqrt(h^2 + x^2)): the length
+    // sum only looks linear in it, so it is not solved for (it stays what it depends on).
+    if (std::any_of(equations.begin(), equations.end(),
+                    [&](const Equation& e) { return model.symbols->hidden_in_lengths(e.lhs - e.rhs, q); }))
+      continue;
     if (std::any_of(equations.begin(), equations.end(), [&](const Equation& e) { return e.lhs.has(q) || e.rhs.has(q); }))
       unknowns.push_back(q);
   }
@@ -412,6 +417,11 @@ Solution solve(const Model& model, const EquationSystem& s) {
       // A given coordinate or velocity is a parameter of the instant: solve for it too (the
       // blocks of sample 12.4 stay together while y >= -y_s).
       for (const auto& g : model.given) parameters.push_back(g);
+      // Not for a name a turning strand's length depends on (or for that length itself):
+      // the condition only looks linear in it.
+      parameters.erase(std::remove_if(parameters.begin(), parameters.end(),
+                                      [&](const ex& p) { return model.symbols->hidden_in_lengths(cc.expr, p); }),
+                       parameters.end());
       if (c.op != "=") {
         // Factors of known sign divided out once: what is left is solved for a parameter, or
         // is a number, and then the condition always or never holds.

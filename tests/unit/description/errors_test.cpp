@@ -284,3 +284,18 @@ TEST_CASE("Description: an argument that is not a name is reported once, not use
   CHECK(errors_of(with(plate, "at: B}", "at: {B: 1}}")) ==
         Messages{"t.yaml:14:34: 'at' is a mapping (expected a list of names)"});
 }
+
+TEST_CASE("Answers: a defined quantity that divides by an unknown equal to zero says so (found by fuzzing)", "[errors][fuzz]") {
+  // The string no longer reaches A, so nothing moves B: ddot(x_B) = 0 and m_eff = F/ddot(x_B)
+  // has no value. GiNaC threw from the substitution (exit 3).
+  const auto a = tackle::test::run_text(tackle::test::example_with("figure-12.5d-motion-doubled.yaml", "path: [A, B, W]", "path: [B, B, W]"));
+  const tackle::Derivation d = tackle::explain(*a);
+  REQUIRE(d.answers.size() == 4);
+  CHECK(d.answers[3].name == "m_eff");
+  CHECK(d.answers[3].status == tackle::Answer::Status::undetermined);
+  CHECK(d.answers[3].reason == "its definition F/ddot(x_B) divides by zero (ddot(x_B) = 0 here)");
+  CHECK(tackle::write(d, tackle::Format::text, false).find("m_eff: undetermined: its definition F/ddot(x_B) divides by zero (ddot(x_B) = 0 here)\n") !=
+        std::string::npos);
+  CHECK(tackle::write(d, tackle::Format::text, true).find("m_eff is not determined: its definition divides by zero (ddot(x_B) = 0 here).") !=
+        std::string::npos);
+}
