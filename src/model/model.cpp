@@ -426,6 +426,7 @@ struct Builder {
   // The symbol for the length of a strand that turns (one per pair of points, whichever way
   // round): l_CP, or l_C_P1 when a name is longer than one letter, with l^2 = `squared`.
   std::map<std::pair<std::string, std::string>, ex> turning_lengths;
+  std::map<int, std::string> turning_at;  // a point at an end of a turning strand: the strand
   ex turning_length(const Point& a, const Point& b, const ex& squared) {
     const auto key = std::minmax(a.name, b.name);
     if (auto it = turning_lengths.find(key); it != turning_lengths.end()) return it->second;
@@ -439,6 +440,7 @@ struct Builder {
     table->set_unit(name, "m", 1);
     m.lengths.push_back({s.sym, squared});
     turning_lengths.emplace(key, s.sym);
+    for (const Point* p : {&a, &b}) turning_at.emplace(point_index.at(p->name), a.name + "-" + b.name);
     return s.sym;
   }
 
@@ -847,10 +849,13 @@ struct Builder {
       for (const auto& p : r.problems) diags.error(v.at, "rule '" + rule->type + "': " + p.message);
       if (r.value) m.conditions.push_back({r.value->lhs, r.value->rhs, r.value->op, v.meaning, v.otherwise, label});
     }
-    for (const auto& a : rule->assumptions)
-      if (std::find(m.assumptions.begin(), m.assumptions.end(), a) == m.assumptions.end()) m.assumptions.push_back(a);
+    for (const auto& a : rule->assumptions) {
+      if (!a.when.empty() && !c.arg(a.when)) continue;
+      if (std::find(m.assumptions.begin(), m.assumptions.end(), a.text) == m.assumptions.end()) m.assumptions.push_back(a.text);
+    }
     m.connections.push_back(label + ": " + rule->summary);
     for (const auto& chk : rule->checks) {
+      if (!chk.when.empty() && !c.arg(chk.when)) continue;
       if (chk.kind == CheckSpec::Kind::positive) {
         // A stiffness or damping coefficient: positive where its value is known.
         auto it = in.expr_args.find(chk.arg);
@@ -883,10 +888,17 @@ struct Builder {
   void connections() {
     std::set<std::string> names;
     for (const auto& c : d.connections) connection(c, names);
-    for (const auto& pc : pending_checks)
+    for (const auto& pc : pending_checks) {
       if (pc.check->kind == CheckSpec::Kind::passes_over && pc.point >= 0 && !interior_points.count(pc.point))
         diags.error(pc.at, "no string runs over point '" + m.points[pc.point].name + "' of a " + pc.what +
                                " (expected it inside some string's path)");
+      if (pc.check->kind == CheckSpec::Kind::steady_at && pc.point >= 0) {
+        if (auto it = turning_at.find(pc.point); it != turning_at.end())
+          diags.error(pc.at, "strand " + it->second + " at point '" + m.points[pc.point].name + "' of a " + pc.what +
+                                 " turns as the bodies move, so the length wrapped on it would change (expected strands "
+                                 "that keep their directions there, or the pulley as a point: no '" + pc.check->when + "')");
+      }
+    }
   }
 
   void gravity() {

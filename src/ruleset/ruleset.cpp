@@ -307,18 +307,37 @@ struct RuleReader {
     }
     if (auto n = root["checks"]; n && is_list(n, "'checks'", file, diags)) {
       for (const auto& c : n) {
-        if (!check_map(c, {"passes_over", "positive"}, "a check of the rule", file, diags)) continue;
-        auto kind = which(c, {"passes_over", "positive"}, "a check");
+        if (!check_map(c, {"passes_over", "positive", "steady_at", "when"}, "a check of the rule", file, diags)) continue;
+        auto kind = which(c, {"passes_over", "positive", "steady_at"}, "a check");
         if (!kind) continue;
-        const bool over = *kind == "passes_over";
-        CheckSpec s{over ? CheckSpec::Kind::passes_over : CheckSpec::Kind::positive, c[*kind].Scalar(), where(c, file)};
-        check_arg_ref(r, s.arg, over ? ArgKind::point : ArgKind::expr, s.at, "a check");
+        const CheckSpec::Kind k = *kind == "passes_over" ? CheckSpec::Kind::passes_over
+                                  : *kind == "positive"  ? CheckSpec::Kind::positive
+                                                         : CheckSpec::Kind::steady_at;
+        CheckSpec s{k, c[*kind].Scalar(), where(c, file), {}};
+        check_arg_ref(r, s.arg, k == CheckSpec::Kind::positive ? ArgKind::expr : ArgKind::point, s.at, "a check");
+        if (c["when"]) {
+          s.when = c["when"].Scalar();
+          if (!r.arg(s.when)) diags.error(s.at, "'when' names argument '" + s.when + "', which the rule does not declare");
+        }
         r.checks.push_back(std::move(s));
       }
     }
     if (auto n = root["assumptions"]; n && is_list(n, "'assumptions'", file, diags)) {
-      for (const auto& a : n)
-        if (auto t = scalar(a, "an assumption", file, diags)) r.assumptions.push_back(t->text);
+      for (const auto& a : n) {
+        // A sentence, or {text, when: ARG} for one that holds only when ARG is given.
+        if (a.IsMap()) {
+          if (!check_map(a, {"text", "when"}, "an assumption", file, diags)) continue;
+          Assumption as{need_scalar(a, "text", "an assumption"), ""};
+          if (a["when"]) {
+            as.when = a["when"].Scalar();
+            if (!r.arg(as.when))
+              diags.error(where(a, file), "'when' names argument '" + as.when + "', which the rule does not declare");
+          }
+          r.assumptions.push_back(std::move(as));
+        } else if (auto t = scalar(a, "an assumption", file, diags)) {
+          r.assumptions.push_back({t->text, ""});
+        }
+      }
     }
     return r;
   }

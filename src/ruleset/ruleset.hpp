@@ -64,11 +64,22 @@ struct ValiditySpec {
 };
 
 /// Checks on the description: `passes_over` requires a string path to run over the point;
-/// `positive` requires an expression argument to be positive where its value is known.
+/// `positive` requires an expression argument to be positive where its value is known;
+/// `steady_at` requires every strand at the point to keep its direction (a pulley with a
+/// radius: the wrapped arc keeps its length only then). `when`: only when that optional
+/// argument is given.
 struct CheckSpec {
-  enum class Kind { passes_over, positive } kind;
+  enum class Kind { passes_over, positive, steady_at } kind;
   std::string arg;
   Location at;
+  std::string when;
+};
+
+/// An assumption the rule stands for, printed in the derivation; `when`: only when that
+/// optional argument is given.
+struct Assumption {
+  std::string text;
+  std::string when;
 };
 
 struct Rule {
@@ -81,7 +92,7 @@ struct Rule {
   std::vector<ConstraintSpec> constraints;
   std::vector<ValiditySpec> validity;
   std::vector<CheckSpec> checks;
-  std::vector<std::string> assumptions;
+  std::vector<Assumption> assumptions;
   std::vector<int> dimensions{1, 2, 3};  // numbers of axes the rule is for
   Location at;
 

@@ -139,3 +139,39 @@ TEST_CASE("Given: a value must be a number in a unit of the quantity", "[given][
   CHECK(with("dot(x): 0", "dot(x): {value: 2, unit: m}") ==
         Messages{"t.yaml:22:28: 'dot(x)' is a velocity, but m is a length"});
 }
+
+TEST_CASE("Pulley: a radius drops out while the strands keep their directions, and says so", "[path][pulley]") {
+  const std::string plain = test::read_example("incline-and-hanging-block.yaml");
+  const std::string with_radius = test::example_with("incline-and-hanging-block.yaml", "{type: pulley, at: P}",
+                                                     "{type: pulley, at: P, radius: r}") ;
+  const auto a = test::run_text(plain), b = test::run_text(std::string(with_radius).replace(
+                                                with_radius.find("  L: {value: 2, unit: m}\n"), 24,
+                                                "  L: {value: 2, unit: m}\n  r: {value: 0.05, unit: m}\n"));
+  const Derivation da = explain(*a), db = explain(*b);
+  REQUIRE(da.answers.size() == db.answers.size());
+  for (std::size_t i = 0; i < da.answers.size(); ++i) {
+    REQUIRE(db.answers[i].closed_form);
+    CHECK(to_text(*da.answers[i].closed_form) == to_text(*db.answers[i].closed_form));
+  }
+  const auto& said = b->model.assumptions;
+  CHECK(std::find(said.begin(), said.end(),
+                  "a pulley's radius changes only the length wrapped on it, which is constant while its strands keep "
+                  "their directions: the length sum and its derivatives do not depend on it") != said.end());
+  CHECK(a->model.assumptions.size() + 1 == said.size());
+}
+
+TEST_CASE("Pulley: a radius where a strand turns, or a radius that is not positive, is an error", "[path][pulley][errors]") {
+  std::string text = raised_pulley + "find: [T]\n";
+  text.replace(text.find("{type: pulley, at: P}"), 21, "{type: pulley, at: P, radius: r}");
+  text.replace(text.find("  g: {value"), 0, "  r: {value: 0.1, unit: m}\n");
+  CHECK(test::errors_of(text) ==
+        Messages{"t.yaml:17:5: strand C-P at point 'P' of a 'pulley' connection turns as the bodies move, so the length "
+                 "wrapped on it would change (expected strands that keep their directions there, or the pulley as a "
+                 "point: no 'radius')"});
+  text.replace(text.find("r: {value: 0.1, unit: m}"), 24, "r: {value: -0.1, unit: m, positive: false}");
+  CHECK(test::errors_of(text) ==
+        Messages{"t.yaml:17:5: strand C-P at point 'P' of a 'pulley' connection turns as the bodies move, so the length "
+                 "wrapped on it would change (expected strands that keep their directions there, or the pulley as a "
+                 "point: no 'radius')",
+                 "t.yaml:17:35: 'radius' of a 'pulley' connection is r = -0.1 m (expected a positive value)"});
+}

@@ -83,3 +83,25 @@ TEST_CASE("Rules: a mapping where a list belongs is an error, not a crash (found
                      "rules/skidding.yaml:6:14: 'assumptions' is a mapping (expected a list)"});
   }
 }
+
+TEST_CASE("Rules: a check or an assumption 'when' an argument names one the rule declares", "[rules]") {
+  const std::string text =
+      "type: wheel\n"
+      "needs: {at: point}\n"
+      "optional: {radius: {kind: expr, dimension: length}}\n"
+      "checks:\n"
+      "  - {steady_at: at, when: radiuss}\n"
+      "assumptions:\n"
+      "  - {text: \"a radius\", when: radios}\n"
+      "  - {text: \"fine\", when: radius}\n";
+  try {
+    (void)parse_rule(text, "rules/wheel.yaml");
+    FAIL("expected an InputError");
+  } catch (const InputError& e) {
+    std::vector<std::string> got;
+    for (const auto& d : e.diagnostics()) got.push_back(format(d));
+    CHECK(got == std::vector<std::string>{
+                     "rules/wheel.yaml:5:5: 'when' names argument 'radiuss', which the rule does not declare",
+                     "rules/wheel.yaml:7:5: 'when' names argument 'radios', which the rule does not declare"});
+  }
+}
