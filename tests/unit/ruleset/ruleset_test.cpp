@@ -5,6 +5,22 @@
 
 using namespace tackle;
 
+namespace {
+
+// Every problem a rule text has, formatted; empty when it reads.
+std::vector<std::string> rule_errors(const std::string& text, const std::string& file) {
+  try {
+    (void)parse_rule(text, file);
+  } catch (const InputError& e) {
+    std::vector<std::string> got;
+    for (const auto& d : e.diagnostics()) got.push_back(format(d));
+    return got;
+  }
+  return {};
+}
+
+}  // namespace
+
 TEST_CASE("Rules: the bundled rules load and declare what they need", "[rules]") {
   const RuleSet rules = load_rules(TACKLE_SOURCE_DIR "/rules");
   CHECK(rules.names() == std::vector<std::string>{"ball_and_socket", "ball_joint", "cable", "collar", "contact", "couple", "damper",
@@ -28,18 +44,11 @@ TEST_CASE("Rules: a rule file with errors is reported like a description, all at
       "needs: {on: bdy}\n"
       "loads:\n"
       "  - {on: on, force: \"-k*\"}\n";
-  try {
-    (void)parse_rule(text, "rules/spring.yaml");
-    FAIL("expected an InputError");
-  } catch (const InputError& e) {
-    std::vector<std::string> got;
-    for (const auto& d : e.diagnostics()) got.push_back(format(d));
-    CHECK(got == std::vector<std::string>{
-                     "rules/spring.yaml:2:1: unknown key 'summry' in the rule (did you mean 'summary'?)",
-                     "rules/spring.yaml:3:13: unknown argument kind 'bdy' (expected one of: body, point, points, expr, name, vector, moment)",
-                     "rules/spring.yaml:5:5: in '-k*': unknown name 'k' (known: on)",
-                 });
-  }
+  CHECK(rule_errors(text, "rules/spring.yaml") == std::vector<std::string>{
+                   "rules/spring.yaml:2:1: unknown key 'summry' in the rule (did you mean 'summary'?)",
+                   "rules/spring.yaml:3:13: unknown argument kind 'bdy' (expected one of: body, point, points, expr, name, vector, moment)",
+                   "rules/spring.yaml:5:5: in '-k*': unknown name 'k' (known: on)",
+               });
 }
 
 TEST_CASE("Rules: an argument used as the wrong kind", "[rules]") {
@@ -70,18 +79,11 @@ TEST_CASE("Rules: a mapping where a list belongs is an error, not a crash (found
       "  - a list under a key\n"
       "one_of: [[a], b]\n"
       "assumptions: {a: b}\n";
-  try {
-    (void)parse_rule(text, "rules/skidding.yaml");
-    FAIL("expected an InputError");
-  } catch (const InputError& e) {
-    std::vector<std::string> got;
-    for (const auto& d : e.diagnostics()) got.push_back(format(d));
-    CHECK(got == std::vector<std::string>{
-                     "rules/skidding.yaml:5:11: 'one_of' names argument 'a', which the rule does not declare",
-                     "rules/skidding.yaml:5:15: a group of 'one_of' is a scalar (expected a list)",
-                     "rules/skidding.yaml:3:3: 'unknowns' is a mapping (expected a list)",
-                     "rules/skidding.yaml:6:14: 'assumptions' is a mapping (expected a list)"});
-  }
+  CHECK(rule_errors(text, "rules/skidding.yaml") == std::vector<std::string>{
+                   "rules/skidding.yaml:5:11: 'one_of' names argument 'a', which the rule does not declare",
+                   "rules/skidding.yaml:5:15: a group of 'one_of' is a scalar (expected a list)",
+                   "rules/skidding.yaml:3:3: 'unknowns' is a mapping (expected a list)",
+                   "rules/skidding.yaml:6:14: 'assumptions' is a mapping (expected a list)"});
 }
 
 TEST_CASE("Rules: a check or an assumption 'when' an argument names one the rule declares", "[rules]") {
@@ -94,14 +96,7 @@ TEST_CASE("Rules: a check or an assumption 'when' an argument names one the rule
       "assumptions:\n"
       "  - {text: \"a radius\", when: radios}\n"
       "  - {text: \"fine\", when: radius}\n";
-  try {
-    (void)parse_rule(text, "rules/wheel.yaml");
-    FAIL("expected an InputError");
-  } catch (const InputError& e) {
-    std::vector<std::string> got;
-    for (const auto& d : e.diagnostics()) got.push_back(format(d));
-    CHECK(got == std::vector<std::string>{
-                     "rules/wheel.yaml:5:5: 'when' names argument 'radiuss', which the rule does not declare",
-                     "rules/wheel.yaml:7:5: 'when' names argument 'radios', which the rule does not declare"});
-  }
+  CHECK(rule_errors(text, "rules/wheel.yaml") == std::vector<std::string>{
+                   "rules/wheel.yaml:5:5: 'when' names argument 'radiuss', which the rule does not declare",
+                   "rules/wheel.yaml:7:5: 'when' names argument 'radios', which the rule does not declare"});
 }
