@@ -3,6 +3,7 @@
 #include "expr/trig.hpp"
 
 #include <algorithm>
+#include <set>
 #include <map>
 #include <random>
 
@@ -95,11 +96,32 @@ int orientation(const ex& sum) {
 
 }  // namespace
 
+namespace {
+
+// The monomial and integer content of a large expanded polynomial times what is left: GiNaC's
+// factor() takes seconds on sums of some dozens of terms in ten symbols (a collar hoisted by
+// two cables: 2 s for one problem), and factoring such a sum rarely shortens it.
+ex content_only(const ex& expanded) {
+  std::set<ex, ex_is_less> symbols;
+  for (const_preorder_iterator it = expanded.preorder_begin(); it != expanded.preorder_end(); ++it)
+    if (is_a<symbol>(*it)) symbols.insert(*it);
+  ex monomial = expanded.integer_content();
+  for (const ex& s : symbols)
+    if (const int low = expanded.ldegree(s); low > 0) monomial *= pow(s, low);
+  return monomial * (expanded / monomial).expand();
+}
+
+constexpr std::size_t factor_term_limit = 16;
+
+}  // namespace
+
 std::vector<ex> canonical_factors(const ex& polynomial) {
   // sin(theta) and the like stand in as symbols while factoring (factor() leaves a sum with
   // them unfactored), and are put back in each factor.
   exmap repl;
-  const ex f = factor(polynomial.to_polynomial(repl)).subs(repl);
+  const ex p = polynomial.to_polynomial(repl);
+  const ex expanded = p.expand();
+  const ex f = (is_a<add>(expanded) && expanded.nops() > factor_term_limit ? content_only(expanded) : factor(p)).subs(repl);
   std::vector<ex> raw;
   if (is_a<mul>(f))
     for (std::size_t i = 0; i < f.nops(); ++i) raw.push_back(f.op(i));
