@@ -268,10 +268,15 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
           // With the definitions put in, terms may cancel (y_s = (m + M) g/k in sample 12.4):
           // the shorter of the two, definitions folded back.
           const ex plain = simplest(general);
-          ex expanded = general;
-          for (int depth = 0; depth < 8 && has_definition(expanded, table); ++depth) expanded = expanded.subs(table.definitions());
-          expanded = fold_definitions(simplest(expanded), table);
-          a.closed_form = to_text(expanded).size() < to_text(plain).size() ? expanded : fold_definitions(plain, table);
+          if (has_definition(general, table)) {
+            ex expanded = general;
+            for (int depth = 0; depth < 8 && has_definition(expanded, table); ++depth) expanded = expanded.subs(table.definitions());
+            expanded = fold_definitions(simplest(expanded), table);
+            a.closed_form = to_text(expanded).size() < to_text(plain).size() ? expanded : fold_definitions(plain, table);
+          } else {
+            // Nothing to put in: the same form twice would cost a second simplification.
+            a.closed_form = fold_definitions(plain, table);
+          }
           a.value = evaluate(*a.closed_form, table, w.dimension, options.digits, w.unit);
         }
       }

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string>
 
+#include "core/files.hpp"
 #include "pipeline/pipeline.hpp"
 #include "ruleset/ruleset.hpp"
 
@@ -16,6 +17,21 @@ namespace tackle::fuzz {
 inline const RuleSet& rules() {
   static const RuleSet r = load_rules(TACKLE_SOURCE_DIR "/rules");
   return r;
+}
+
+/// Examples too slow for libFuzzer's -timeout=2 under the sanitizers (listed, with the
+/// reason, in tests/fuzz/slow-seeds.txt): the rule target leaves them out.
+inline bool slow_example(const std::string& path) {
+  static const std::string listed = [] {
+    try {
+      return read_text_file(TACKLE_SOURCE_DIR "/tests/fuzz/slow-seeds.txt");
+    } catch (const std::exception&) {
+      return std::string();
+    }
+  }();
+  const auto slash = path.rfind('/');
+  const std::string name = "examples/" + (slash == std::string::npos ? path : path.substr(slash + 1));
+  return listed.find(name + "\n") != std::string::npos;
 }
 
 inline std::string text_of(const std::uint8_t* data, std::size_t size) {
