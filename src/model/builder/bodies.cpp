@@ -1,0 +1,168 @@
+// The bodies (each one a point too) with their coordinates, accelerations and masses; the
+// named points; the layout that tells strand directions.
+#include "model/builder/stages.hpp"
+
+namespace tackle::build {
+
+using namespace GiNaC;
+
+void bodies(BuildContext& ctx) {
+  const bool one_d = ctx.m.dims() == 1;
+  std::vector<ex> accelerations;  // unknown accelerations come first among the unknowns
+  for (const auto& b : ctx.d.bodies) {
+    if (!ctx.claim_place(b.name, "body")) continue;
+    Body body;
+    body.name = b.name.text;
+    body.at = b.name.at;
+    if (one_d) {
+      if (!b.position)
+        ctx.diags.error(b.at, "body '" + body.name + "' has no 'position' (expected the name of its coordinate, e.g. x_" +
+                                  body.name + ")");
+      for (const auto* v : {&b.center_of_mass, &b.acceleration})
+        if (*v) ctx.diags.error((*v)->at, "body '" + body.name + "': 'center_of_mass' and 'acceleration' are for 2-D and 3-D problems (in 1-D, 'position' names the coordinate)");
+      if (b.accel_along) ctx.diags.error(b.accel_along->at, "body '" + body.name + "': 'acceleration' is for 2-D and 3-D problems");
+      if (b.position && ctx.claim(*b.position, "coordinate")) {
+        const std::string q = b.position->text;
+        body.coord = ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::length(), false, b.position->at).sym;
+        body.rate = ctx.table->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, Dimension::velocity(), false,
+                                   b.position->at).sym;
+        body.accel = ctx.table->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration,
+                                    Dimension::acceleration(), false, b.position->at).sym;
+        body.cm = {body.coord, 0, 0};
+        body.has_cm = true;
+        body.acceleration = {body.accel, 0, 0};
+        accelerations.push_back(body.accel);
+      }
+    } else {
+      // A coordinate: the center of mass is written in it, and the acceleration follows
+      // (twice differentiated in time).
+      if (b.position) {
+        if (!b.center_of_mass)
+          ctx.diags.error(b.position->at, "body '" + body.name + "' has a 'position' but no 'center_of_mass' (expected its center of mass written in " + b.position->text + ")");
+        if (b.acceleration || b.accel_along)
+          ctx.diags.error(b.position->at, "body '" + body.name + "' has both 'position' and 'acceleration' (its acceleration follows from its position; give one)");
+        if (ctx.claim(*b.position, "coordinate")) {
+          const std::string q = b.position->text;
+          body.coord = ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::length(), false, b.position->at).sym;
+          body.rate = ctx.table->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, Dimension::velocity(), false, b.position->at).sym;
+          body.accel = ctx.table->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, Dimension::acceleration(), false, b.position->at).sym;
+        }
+      }
+      if (b.center_of_mass) {
+        if (auto cm = ctx.vector(*b.center_of_mass, *ctx.table, "'center_of_mass' of body '" + body.name + "'", Dimension::length())) {
+          body.cm = *cm;
+          body.has_cm = true;
+        }
+      }
+      if (!body.coord.is_zero() && body.has_cm) {
+        bool depends = false;
+        for (const auto& c : body.cm) depends = depends || c.has(body.coord);
+        if (!depends) {
+          ctx.diags.error(b.center_of_mass->at, "'center_of_mass' of body '" + body.name + "' does not depend on its coordinate '" +
+                                                    b.position->text + "' (expected it written in " + b.position->text + ")");
+        } else {
+          // a = d2(cm)/dt2 = cm'' dot(q)^2 + cm' ddot(q) (no velocity term on a straight line).
+          const symbol& q = ex_to<symbol>(body.coord);
+          for (int i = 0; i < 3; ++i)
+            body.acceleration[i] = (body.cm[i].diff(q) * body.accel + body.cm[i].diff(q, 2) * pow(body.rate, 2)).expand();
+          accelerations.push_back(body.accel);
+        }
+      }
+      // (a position with an acceleration too is reported above; the position wins)
+      if (b.acceleration && !b.position) {
+        if (auto a = ctx.vector(*b.acceleration, *ctx.table, "'acceleration' of body '" + body.name + "'", Dimension::acceleration()))
+          body.acceleration = *a;
+      } else if (b.accel_along && !b.position) {
+        auto dir = ctx.vector(*b.accel_along, *ctx.table, "'along' of the acceleration of body '" + body.name + "'", std::nullopt);
+        const Text name = b.accel_name ? *b.accel_name : Text{"a_" + body.name, b.accel_along->at};
+        if (dir && is_zero_vec(*dir)) {
+          ctx.diags.error(b.accel_along->at, "the direction of motion of body '" + body.name + "' is a zero vector");
+        } else if (dir && ctx.claim(name, "acceleration")) {
+          const SymbolInfo& a = ctx.table->add(name.text, std::nullopt, SymbolRole::unknown, Dimension::acceleration(), false, name.at);
+          body.accel = a.sym;
+          body.acceleration = a.sym * unit(*dir);
+          accelerations.push_back(a.sym);
+        }
+      }
+    }
+    ctx.body_index[body.name] = static_cast<int>(ctx.m.bodies.size());
+    ctx.point_index[body.name] = static_cast<int>(ctx.m.points.size());
+    Point self;
+    self.name = body.name;
+    self.position = body.cm;
+    self.body = static_cast<int>(ctx.m.bodies.size());
+    self.at = body.at;
+    ctx.m.points.push_back(self);
+    ctx.m.bodies.push_back(body);
+  }
+  ctx.m.candidates.insert(ctx.m.candidates.begin(), accelerations.begin(), accelerations.end());
+  // Masses after every coordinate exists (a mass may not depend on them, but the message
+  // for a misused name is clearer this way).
+  for (std::size_t i = 0; i < ctx.d.bodies.size(); ++i) {
+    const auto& b = ctx.d.bodies[i];
+    auto it = ctx.body_index.find(b.name.text);
+    if (it == ctx.body_index.end() || !b.mass) continue;
+    Body& body = ctx.m.bodies[it->second];
+    if (auto mass = ctx.parse(*b.mass, *ctx.table, "mass of body '" + body.name + "'")) {
+      body.mass = *mass;
+      body.has_mass = true;
+      if (!mass->is_zero()) ctx.check_dimension(*mass, Dimension::mass(), b.mass->at, "mass of body '" + body.name + "'");
+      if (!one_d && !mass->is_zero() && !body.has_cm)
+        ctx.diags.error(b.at, "body '" + body.name + "' has no 'center_of_mass' (needed for its weight and its angular momentum balance)");
+    }
+  }
+}
+
+void points(BuildContext& ctx) {
+  for (const auto& p : ctx.d.points) {
+    if (!ctx.claim_place(p.name, "point")) continue;
+    Point pt;
+    pt.name = p.name.text;
+    pt.at = p.name.at;
+    if (p.at) {
+      if (auto pos = ctx.vector(*p.at, *ctx.table, "position of point '" + pt.name + "'", Dimension::length())) pt.position = *pos;
+    } else if (p.on) {
+      auto it = ctx.body_index.find(p.on->text);
+      if (it == ctx.body_index.end()) {
+        ctx.unknown_name(*p.on, "body", ctx.body_names());
+        continue;
+      }
+      pt.body = it->second;
+      pt.position = ctx.m.bodies[pt.body].cm;
+      if (p.offset) {
+        if (auto off = ctx.vector(*p.offset, *ctx.table, "offset of point '" + pt.name + "'", Dimension::length()))
+          for (int i = 0; i < 3; ++i) pt.position[i] += (*off)[i];
+      }
+    }
+    ctx.point_index[pt.name] = static_cast<int>(ctx.m.points.size());
+    ctx.m.points.push_back(pt);
+  }
+}
+
+void read_layout(BuildContext& ctx) {
+  ctx.layout = ctx.table->values();
+  for (const auto& [name, value] : ctx.d.layout) {
+    const SymbolInfo* s = ctx.table->find(name.text);
+    if (!s || (s->role != SymbolRole::coordinate && s->role != SymbolRole::parameter)) {
+      std::vector<std::string> known;
+      for (const auto& sym : ctx.table->all())
+        if (sym->role == SymbolRole::coordinate || sym->role == SymbolRole::parameter) known.push_back(sym->name);
+      std::string msg = "'layout' names '" + name.text + "', which is not a coordinate or a parameter";
+      if (auto near = nearest(name.text, known); !near.empty()) msg += " (did you mean '" + near + "'?)";
+      ctx.diags.error(name.at, msg);
+      continue;
+    }
+    auto v = ctx.parse(value, none, "layout value of '" + name.text + "'");
+    if (v && is_a<numeric>(*v)) ctx.layout[s->sym] = *v;
+  }
+  // A coordinate given with a value is at that value in the layout, unless the layout says
+  // otherwise (its problems are reported with the other given quantities).
+  for (const auto& g : ctx.d.given) {
+    const SymbolInfo* s = g.value ? ctx.table->find(g.name.text) : nullptr;
+    if (!s || s->role != SymbolRole::coordinate || ctx.layout.count(s->sym)) continue;
+    Diagnostics later;
+    if (auto v = given_value(g, *s, later)) ctx.layout[s->sym] = *v;
+  }
+}
+
+}  // namespace tackle::build

@@ -1,0 +1,472 @@
+// Rule instantiation: each connection's arguments checked and bound, its unknowns made, its
+// loads, constraints and conditions added to the Model; then the checks that need every
+// connection.
+#include "model/builder/stages.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "expr/print.hpp"
+
+namespace tackle::build {
+
+using namespace GiNaC;
+
+namespace {
+
+std::string substitute(BuildContext& ctx, std::string tmpl, const ConnectionDesc& c, bool& ok) {
+  std::size_t pos;
+  while ((pos = tmpl.find('{')) != std::string::npos) {
+    const auto end = tmpl.find('}', pos);
+    if (end == std::string::npos) break;
+    const std::string key = tmpl.substr(pos + 1, end - pos - 1);
+    std::string value;
+    if (key == "name") {
+      if (!c.name) {
+        ctx.diags.error(c.at, "a '" + c.type.text + "' connection needs a 'name' (its unknowns are named after it)");
+        ok = false;
+        return {};
+      }
+      value = c.name->text;
+    } else if (const ArgDesc* a = c.arg(key); a && a->items.size() == 1) {
+      value = a->items[0].text;
+    } else {
+      ok = false;
+      return {};
+    }
+    tmpl.replace(pos, end - pos + 1, value);
+  }
+  return tmpl;
+}
+
+// The connection gives what its rule needs, and the rule is for this many axes.
+bool arguments_fit(BuildContext& ctx, const Instance& in) {
+  const ConnectionDesc& c = in.c;
+  const Rule* rule = &in.rule;
+  const std::string& what = in.what;
+  bool ok = true;
+  // Arguments: known keys, required ones present, exactly one of each group.
+  std::vector<std::string> arg_keys;
+  for (const auto& a : rule->args) arg_keys.push_back(a.key);
+  for (const auto& a : c.args) {
+    if (!rule->arg(a.key.text)) {
+      std::string msg = "unknown key '" + a.key.text + "' for a " + what;
+      if (auto near = nearest(a.key.text, arg_keys); !near.empty()) msg += " (did you mean '" + near + "'?)";
+      else msg += " (expected one of: " + join(arg_keys) + ")";
+      ctx.diags.error(a.key.at, msg);
+      ok = false;
+    }
+  }
+  for (const auto& spec : rule->args)
+    if (spec.required && !c.arg(spec.key)) {
+      ctx.diags.error(c.at, "a " + what + " needs '" + spec.key + "'");
+      ok = false;
+    }
+  for (const auto& group : rule->one_of) {
+    std::vector<std::string> present;
+    for (const auto& k : group)
+      if (c.arg(k)) present.push_back(k);
+    if (present.size() != 1) {
+      ctx.diags.error(c.at, "a " + what + (present.empty() ? " needs one of: " + join(group)
+                                                            : " has " + join(present, " and ") + " (expected one of them)"));
+      ok = false;
+    }
+  }
+  if (!ok) return false;
+
+  if (std::find(rule->dimensions.begin(), rule->dimensions.end(), ctx.m.dims()) == rule->dimensions.end()) {
+    std::vector<std::string> dims;
+    for (int n : rule->dimensions) dims.push_back(std::to_string(n) + "-D");
+    ctx.diags.error(c.type.at, "a " + what + " is for " + join(dims, " and ") + " problems (this one has " +
+                                   std::to_string(ctx.m.dims()) + (ctx.m.dims() == 1 ? " axis)" : " axes)"));
+    return false;
+  }
+  return true;
+}
+
+// Resolves every argument: bodies and points by name (bound as position vectors in the
+// rule's scope), paths, expressions, vectors and moments.
+bool bind_arguments(BuildContext& ctx, Instance& in) {
+  const ConnectionDesc& c = in.c;
+  const Rule* rule = &in.rule;
+  const std::string& what = in.what;
+  Scope& scope = in.scope;
+  auto& point_args = in.point_args;
+  auto& body_args = in.body_args;
+  auto& path_args = in.path_args;
+  auto& expr_args = in.expr_args;
+  bool ok = true;
+  for (const auto& spec : rule->args) {
+    const ArgDesc* a = c.arg(spec.key);
+    if (!a) continue;
+    const bool list = spec.kind == ArgKind::points;
+    if (spec.kind != ArgKind::vector && spec.kind != ArgKind::moment && list != a->is_list) {
+      ctx.diags.error(a->key.at, "'" + spec.key + "' of a " + what + (list ? " is a single name (expected a list of points)"
+                                                                           : " is a list (expected a single value)"));
+      ok = false;
+      continue;
+    }
+    if (a->items.empty()) {  // it was not a name or a list of names: reported when it was read
+      ok = false;
+      continue;
+    }
+    switch (spec.kind) {
+      case ArgKind::body: {
+        auto it = ctx.body_index.find(a->items[0].text);
+        if (it == ctx.body_index.end()) {
+          ctx.unknown_name(a->items[0], "body", ctx.body_names());
+          ok = false;
+        } else {
+          point_args[spec.key] = ctx.point_index.at(a->items[0].text);
+          body_args[spec.key] = it->second;
+          const Vec& cm = ctx.m.bodies[it->second].cm;
+          scope.bind(spec.key, make_vector(cm[0], cm[1], cm[2]));
+        }
+        break;
+      }
+      case ArgKind::point: {
+        auto it = ctx.point_index.find(a->items[0].text);
+        if (it == ctx.point_index.end()) {
+          ctx.unknown_name(a->items[0], "point", ctx.point_names());
+          ok = false;
+        } else {
+          point_args[spec.key] = it->second;
+          const Vec& p = ctx.m.points[it->second].position;
+          scope.bind(spec.key, make_vector(p[0], p[1], p[2]));
+        }
+        break;
+      }
+      case ArgKind::points: {
+        std::vector<int> path;
+        for (const auto& item : a->items) {
+          auto it = ctx.point_index.find(item.text);
+          if (it == ctx.point_index.end()) { ctx.unknown_name(item, "point", ctx.point_names()); ok = false; }
+          else path.push_back(it->second);
+        }
+        if (a->items.size() < 2) {
+          ctx.diags.error(a->key.at, "'" + spec.key + "' of a " + what + " has " + std::to_string(a->items.size()) +
+                                         " point (expected at least two)");
+          ok = false;
+        }
+        path_args[spec.key] = path;
+        break;
+      }
+      case ArgKind::expr: {
+        if (auto e = ctx.parse(a->items[0], *ctx.table, "'" + spec.key + "' of a " + what)) {
+          if (spec.dimension && !e->is_zero())
+            ctx.check_dimension(*e, *spec.dimension, a->items[0].at, "'" + spec.key + "' of a " + what);
+          scope.bind(spec.key, *e);
+          expr_args[spec.key] = {*e, a->items[0].at};
+        } else {
+          ok = false;
+        }
+        break;
+      }
+      case ArgKind::vector: {
+        const VectorDesc vd{a->items, a->items.empty() ? a->key.at : a->items[0].at};
+        if (auto v = ctx.vector(vd, *ctx.table, "'" + spec.key + "' of a " + what, spec.dimension))
+          scope.bind(spec.key, make_vector((*v)[0], (*v)[1], (*v)[2]));
+        else
+          ok = false;
+        break;
+      }
+      case ArgKind::moment: {
+        // 2-D: one number, about z; 3-D: a vector.
+        const Location at = a->items.empty() ? a->key.at : a->items[0].at;
+        if (ctx.m.dims() == 2) {
+          if (a->items.size() != 1) {
+            ctx.diags.error(at, "'" + spec.key + "' of a " + what + " has " + std::to_string(a->items.size()) +
+                                    " entries (expected one number, the moment about z)");
+            ok = false;
+          } else if (auto e = ctx.parse(a->items[0], *ctx.table, "'" + spec.key + "' of a " + what)) {
+            if (spec.dimension && !is_a<numeric>(*e)) ctx.check_dimension(*e, *spec.dimension, at, "'" + spec.key + "' of a " + what);
+            scope.bind(spec.key, make_vector(0, 0, *e));
+          } else {
+            ok = false;
+          }
+        } else if (auto v = ctx.vector(VectorDesc{a->items, at}, *ctx.table, "'" + spec.key + "' of a " + what, spec.dimension)) {
+          scope.bind(spec.key, make_vector((*v)[0], (*v)[1], (*v)[2]));
+        } else {
+          ok = false;
+        }
+        break;
+      }
+      case ArgKind::name:
+        if (!is_identifier(a->items[0].text)) {
+          ctx.diags.error(a->items[0].at, "'" + a->items[0].text + "' is not a valid name");
+          ok = false;
+        }
+        break;
+    }
+  }
+
+  for (const auto& [key, path] : path_args)
+    for (std::size_t i = 1; i + 1 < path.size(); ++i) ctx.interior_points.insert(path[i]);
+  return ok;
+}
+
+std::string label_of(const Instance& in) {
+  const ConnectionDesc& c = in.c;
+  const Rule* rule = &in.rule;
+  // "string s", or after the first point argument ("pulley at C", "rod from H"), else the
+  // first body argument ("force on A").
+  std::string label = rule->type;
+  if (c.name) {
+    label += " " + c.name->text;
+  } else {
+    for (const ArgKind kind : {ArgKind::point, ArgKind::body}) {
+      const auto spec = std::find_if(rule->args.begin(), rule->args.end(),
+                                     [&](const ArgSpec& a) { return a.kind == kind && c.arg(a.key); });
+      if (spec != rule->args.end()) {
+        label += " " + spec->key + " " + c.arg(spec->key)->items[0].text;
+        break;
+      }
+    }
+  }
+  return label;
+}
+
+bool make_unknowns(BuildContext& ctx, Instance& in) {
+  const ConnectionDesc& c = in.c;
+  for (const auto& u : in.rule.unknowns) {
+    std::string name;
+    Location at = c.at;
+    if (u.rename_arg && c.arg(*u.rename_arg)) {
+      name = c.arg(*u.rename_arg)->items[0].text;
+      at = c.arg(*u.rename_arg)->items[0].at;
+    } else {
+      bool named = true;
+      name = substitute(ctx, u.name_template, c, named);
+      if (!named) return false;
+    }
+    if (!ctx.claim(Text{name, at}, "unknown")) return false;
+    const SymbolInfo& s = ctx.table->add(name, std::nullopt, SymbolRole::unknown, u.dimension, false, at);
+    in.scope.bind(u.local, s.sym);
+    ctx.m.candidates.push_back(s.sym);
+  }
+  return true;
+}
+
+// A rule expression in the instance's scope; problems are the rule's.
+std::optional<ex> rule_expr(BuildContext& ctx, Instance& in, const std::string& text, const Location& at) {
+  auto r = parse_expression(text, in.scope);
+  for (const auto& p : r.problems) ctx.diags.error(at, "rule '" + in.rule.type + "': in '" + text + "': " + p.message);
+  return r.value;
+}
+
+// A rule expression as a vector: a number is along the axis in 1-D (a force) or about z
+// in 2-D (a couple).
+std::optional<Vec> as_vec(BuildContext& ctx, const Instance& in, const ex& e, bool couple, const Location& at) {
+  if (is_vector(e)) return Vec{e.op(0), e.op(1), e.op(2)};
+  if (!couple && ctx.m.dims() == 1) return Vec{e, 0, 0};
+  if (couple && ctx.m.dims() == 2) return Vec{0, 0, e};
+  ctx.diags.error(at, "rule '" + in.rule.type + "': a " + std::string(couple ? "couple" : "force") + " in a " +
+                          std::to_string(ctx.m.dims()) + "-D problem must be a vector");
+  return std::nullopt;
+}
+
+void add_loads(BuildContext& ctx, Instance& in) {
+  const ConnectionDesc& c = in.c;
+  const Rule* rule = &in.rule;
+  const std::string& what = in.what;
+  const std::string& label = in.label;
+  auto& point_args = in.point_args;
+  auto& body_args = in.body_args;
+  auto& expr_args = in.expr_args;
+  for (const auto& l : rule->loads) {
+    if (l.kind == LoadSpec::Kind::on) {
+      auto it = point_args.find(l.arg);
+      if (it == point_args.end()) continue;  // optional argument not given
+      int body = -1;
+      if (auto bt = body_args.find(l.arg); bt != body_args.end()) body = bt->second;
+      else body = ctx.m.points[it->second].body;
+      if (body < 0) {
+        ctx.diags.error(c.at, "a " + what + " acts on fixed point '" + ctx.m.points[it->second].name +
+                                  "' (expected a body or a point on one)");
+        continue;
+      }
+      Load load;
+      load.body = body;
+      load.source = label;
+      if (!l.at_arg.empty()) {
+        if (auto at = point_args.find(l.at_arg); at != point_args.end()) {
+          load.at = ctx.m.points[at->second].position;
+          load.at_name = ctx.m.points[at->second].name;
+        }
+      } else if (!body_args.count(l.arg)) {
+        load.at = ctx.m.points[it->second].position;
+        load.at_name = ctx.m.points[it->second].name;
+      }
+      bool good = true;
+      if (!l.expr.empty()) {
+        auto f = rule_expr(ctx, in, l.expr, l.at);
+        auto v = f ? as_vec(ctx, in, *f, false, l.at) : std::nullopt;
+        if (v) load.force = *v;
+        else good = false;
+      }
+      if (!l.couple.empty()) {
+        auto f = rule_expr(ctx, in, l.couple, l.at);
+        auto v = f ? as_vec(ctx, in, *f, true, l.at) : std::nullopt;
+        if (v) load.couple = *v;
+        else good = false;
+      }
+      if (!good) continue;
+      if (ctx.m.dims() > 1 && !load.at && !is_zero_vec(load.force)) {
+        ctx.diags.error(c.at, "a " + what + " needs a point of application in a " + std::to_string(ctx.m.dims()) +
+                                  "-D problem (give '" + (l.at_arg.empty() ? std::string("at") : l.at_arg) + "')");
+        continue;
+      }
+      ctx.m.loads.push_back(load);
+    } else if (l.kind == LoadSpec::Kind::along) {
+      const Path* path = path_of(ctx, in, l.arg);
+      if (!path) continue;
+      // A force element's tension may use its path's length and lengthening rate.
+      in.scope.bind("length", path->length);
+      in.scope.bind("lengthening", time_derivative(path->length, ctx.m.bodies, ctx.m.lengths));
+      auto tension = rule_expr(ctx, in, l.expr, l.at);
+      if (!tension) continue;
+      for (auto& load : tension_loads(*path, ctx.m.points, *tension, label)) ctx.m.loads.push_back(std::move(load));
+    } else {
+      auto it = expr_args.find(l.arg);
+      if (it == expr_args.end()) continue;
+      auto tension = rule_expr(ctx, in, l.expr, l.at);
+      if (!tension) continue;
+      // Generalized force of a length sum L on coordinate q: -T dL/dq (virtual work).
+      for (std::size_t bi = 0; bi < ctx.m.bodies.size(); ++bi) {
+        const Body& b = ctx.m.bodies[bi];
+        if (b.coord.is_zero()) continue;
+        const ex dl = it->second.first.diff(ex_to<symbol>(b.coord));
+        if (dl.is_zero()) continue;
+        Load load;
+        load.body = static_cast<int>(bi);
+        load.force = {-*tension * dl, 0, 0};
+        load.source = label + " (from its length sum) on " + b.name;
+        ctx.m.loads.push_back(load);
+      }
+    }
+  }
+}
+
+void add_constraints(BuildContext& ctx, Instance& in) {
+  const ConnectionDesc& c = in.c;
+  const Rule* rule = &in.rule;
+  const std::string& label = in.label;
+  const std::string cname = c.name ? c.name->text : "";
+  for (const auto& k : rule->constraints) {
+    if (k.kind == ConstraintSpec::Kind::length) {
+      if (const Path* path = path_of(ctx, in, k.arg)) ctx.m.constraints.push_back({label, cname, path->varying_length, "length of " + label});
+    } else if (k.kind == ConstraintSpec::Kind::together) {
+      // One body's position relative to the other, along each axis, is constant.
+      auto a = in.body_args.find(k.arg), b = in.body_args.find(k.with);
+      if (a == in.body_args.end() || b == in.body_args.end()) continue;
+      const Body& first = ctx.m.bodies[a->second];
+      const Body& second = ctx.m.bodies[b->second];
+      if (a->second == b->second) {
+        ctx.diags.error(c.at, "a " + in.what + " joins body '" + first.name + "' to itself (expected two different bodies)");
+        continue;
+      }
+      for (int i = 0; i < ctx.m.dims(); ++i) {
+        const ex q = (second.cm[i] - first.cm[i]).expand();
+        bool moves = false;
+        for (const auto& body : ctx.m.bodies) moves = moves || (!body.coord.is_zero() && q.has(body.coord));
+        if (!moves) continue;
+        ctx.m.constraints.push_back({label + (ctx.m.dims() > 1 ? " (" + ctx.m.axes[i] + ")" : ""), cname, q,
+                                     "position of " + second.name + " relative to " + first.name +
+                                         (ctx.m.dims() > 1 ? " along " + ctx.m.axes[i] : "")});
+      }
+    } else if (k.kind == ConstraintSpec::Kind::length_sum) {
+      auto it = in.expr_args.find(k.arg);
+      if (it == in.expr_args.end()) continue;
+      ctx.m.constraints.push_back({label, cname, it->second.first, "length of " + label});
+    } else {
+      auto it = in.point_args.find(k.arg);
+      if (it == in.point_args.end()) continue;
+      const Point& p = ctx.m.points[it->second];
+      ctx.m.constraints.push_back({label, cname, p.position[0], "position of " + p.name});
+    }
+  }
+}
+
+// Validity conditions, assumptions, the model's list of connections, and checks that need
+// every connection (run after all of them).
+void add_conditions(BuildContext& ctx, Instance& in) {
+  const ConnectionDesc& c = in.c;
+  const Rule* rule = &in.rule;
+  const std::string& label = in.label;
+  for (const auto& v : rule->validity) {
+    if (!v.when.empty() && !c.arg(v.when)) continue;
+    auto r = parse_relation(v.holds, in.scope);
+    for (const auto& p : r.problems) ctx.diags.error(v.at, "rule '" + rule->type + "': " + p.message);
+    if (r.value) ctx.m.conditions.push_back({r.value->lhs, r.value->rhs, r.value->op, v.meaning, v.otherwise, label});
+  }
+  for (const auto& a : rule->assumptions) {
+    if (!a.when.empty() && !c.arg(a.when)) continue;
+    if (std::find(ctx.m.assumptions.begin(), ctx.m.assumptions.end(), a.text) == ctx.m.assumptions.end()) ctx.m.assumptions.push_back(a.text);
+  }
+  ctx.m.connections.push_back(label + ": " + rule->summary);
+  for (const auto& chk : rule->checks) {
+    if (!chk.when.empty() && !c.arg(chk.when)) continue;
+    if (chk.kind == CheckSpec::Kind::positive) {
+      // A stiffness or damping coefficient: positive where its value is known.
+      auto it = in.expr_args.find(chk.arg);
+      if (it == in.expr_args.end()) continue;
+      const ex v = evalf(it->second.first.subs(ctx.table->values()));
+      if (is_a<numeric>(v) && ex_to<numeric>(v).is_real() && !ex_to<numeric>(v).is_positive())
+      {
+        const ArgSpec* spec = in.rule.arg(chk.arg);
+        const std::string unit = spec && spec->dimension ? si_unit_name(*spec->dimension) : "";
+        ctx.diags.error(it->second.second, "'" + chk.arg + "' of a " + in.what + " is " +
+                                               (is_a<numeric>(it->second.first) ? "" : to_text(it->second.first) + " = ") +
+                                               fmt::format("{:g}", ex_to<numeric>(v).to_double()) + (unit.empty() ? "" : " " + unit) +
+                                               " (expected a positive value)");
+      }
+      continue;
+    }
+    ctx.pending_checks.push_back({&chk, in.point_args.count(chk.arg) ? in.point_args[chk.arg] : -1, c.at, in.what});
+  }
+}
+
+void connection(BuildContext& ctx, const ConnectionDesc& c, std::set<std::string>& connection_names) {
+  const Rule* found = ctx.rules.find(c.type.text);
+  if (!found) {
+    std::string msg = "unknown connection type '" + c.type.text + "'";
+    if (auto near = nearest(c.type.text, ctx.rules.names()); !near.empty())
+      msg += " (did you mean '" + near + "'?)";
+    else
+      msg += " (known: " + join(ctx.rules.names()) + ")";
+    ctx.diags.error(c.type.at, msg);
+    return;
+  }
+  Instance in{c, *found, "'" + found->type + "' connection" + (c.name ? " '" + c.name->text + "'" : ""), {}, Scope(*ctx.table),
+              {}, {}, {}, {}, {}};
+  if (c.name && !connection_names.insert(c.name->text).second)
+    ctx.diags.error(c.name->at, "duplicate connection name '" + c.name->text + "'");
+  if (!arguments_fit(ctx, in) || !bind_arguments(ctx, in)) return;
+  in.label = label_of(in);
+  if (!make_unknowns(ctx, in)) return;
+  add_loads(ctx, in);
+  add_constraints(ctx, in);
+  add_conditions(ctx, in);
+}
+
+}  // namespace
+
+void connections(BuildContext& ctx) {
+  std::set<std::string> names;
+  for (const auto& c : ctx.d.connections) connection(ctx, c, names);
+  for (const auto& pc : ctx.pending_checks) {
+    if (pc.check->kind == CheckSpec::Kind::passes_over && pc.point >= 0 && !ctx.interior_points.count(pc.point))
+      ctx.diags.error(pc.at, "no string runs over point '" + ctx.m.points[pc.point].name + "' of a " + pc.what +
+                                 " (expected it inside some string's path)");
+    if (pc.check->kind == CheckSpec::Kind::steady_at && pc.point >= 0) {
+      if (auto it = ctx.turning_at.find(pc.point); it != ctx.turning_at.end())
+        ctx.diags.error(pc.at, "strand " + it->second + " at point '" + ctx.m.points[pc.point].name + "' of a " + pc.what +
+                                   " turns as the bodies move, so the length wrapped on it would change (expected strands "
+                                   "that keep their directions there, or the pulley as a point: no '" + pc.check->when + "')");
+    }
+  }
+}
+
+}  // namespace tackle::build

@@ -1,0 +1,45 @@
+// The stages that build a Model, in the order build_model runs them. Each fills its part of
+// ctx.m (and of the symbol table) from the description and reports its problems to
+// ctx.diags; every problem is thrown at once after the last stage.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <ginac/ginac.h>
+
+#include "model/builder/context.hpp"
+
+namespace tackle::build {
+
+// m.axes and m.axis from 'axes' (one axis, x, when absent); needs nothing.
+void axes(BuildContext& ctx);
+// The parameters in the symbol table (dimension, unit, sign, value, range); needs nothing.
+void parameters(BuildContext& ctx);
+// m.bodies (each a point too), their coordinates, accelerations and masses; needs the axes and parameters.
+void bodies(BuildContext& ctx);
+// The named points of m.points (fixed, or on a body); needs the bodies.
+void points(BuildContext& ctx);
+// ctx.layout, the values that tell strand directions; needs the parameters and the coordinates.
+void read_layout(BuildContext& ctx);
+// Rule instances: unknowns, loads, constraints, conditions, turning lengths; needs the points and layout.
+void connections(BuildContext& ctx);
+// m.gravity and each massive body's weight in m.loads; needs the bodies' masses and centers of mass.
+void gravity(BuildContext& ctx);
+// m.given (taken out of m.candidates) and m.wanted; needs every symbol, the rules' unknowns included.
+void given_and_find(BuildContext& ctx);
+// Each constraint's constant, when a coordinate is asked for; needs m.constraints and m.wanted.
+void constraint_constants(BuildContext& ctx);
+// m.derive, the balances and constraints asked for; needs the bodies, points and constraints.
+void derive(BuildContext& ctx);
+
+// Helpers one stage lends another.
+
+// The value of a `given` entry in SI (questions.cpp); read_layout uses it too.
+std::optional<GiNaC::ex> given_value(const GivenDesc& g, const SymbolInfo& s, Diagnostics& to,
+                                     std::string* unit_text = nullptr, GiNaC::ex* to_si = nullptr);
+
+// The path of a points argument, made once (paths.cpp); the connections stage uses it.
+const Path* path_of(BuildContext& ctx, Instance& in, const std::string& key);
+
+}  // namespace tackle::build
