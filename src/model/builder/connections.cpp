@@ -203,7 +203,7 @@ bool bind_arguments(BuildContext& ctx, Instance& in) {
   }
 
   for (const auto& [key, path] : path_args)
-    for (std::size_t i = 1; i + 1 < path.size(); ++i) ctx.interior_points.insert(path[i]);
+    for (std::size_t i = 1; i + 1 < path.size(); ++i) ctx.interior_points.emplace(path[i], std::make_pair(in.what, c.at));
   return ok;
 }
 
@@ -443,7 +443,10 @@ void connection(BuildContext& ctx, const ConnectionDesc& c, std::set<std::string
               {}, {}, {}, {}, {}};
   if (c.name && !connection_names.insert(c.name->text).second)
     ctx.diags.error(c.name->at, "duplicate connection name '" + c.name->text + "'");
-  if (!arguments_fit(ctx, in) || !bind_arguments(ctx, in)) return;
+  if (!arguments_fit(ctx, in) || !bind_arguments(ctx, in)) {
+    ctx.connection_failed = true;  // its paths are unknown: points it would run over too
+    return;
+  }
   in.label = label_of(in);
   if (!make_unknowns(ctx, in)) return;
   add_loads(ctx, in);
@@ -456,8 +459,20 @@ void connection(BuildContext& ctx, const ConnectionDesc& c, std::set<std::string
 void connections(BuildContext& ctx) {
   std::set<std::string> names;
   for (const auto& c : ctx.d.connections) connection(ctx, c, names);
+  // A path bends at a fixed point only where something holds it (a pulley: a rule whose
+  // check says a path passes over its point); a point on a body is held by the body.
+  std::set<int> held;
+  for (const auto& pc : ctx.pending_checks)
+    if (pc.check->kind == CheckSpec::Kind::passes_over && pc.point >= 0) held.insert(pc.point);
+  for (const auto& [point, by] : ctx.interior_points)
+    if (ctx.m.points[point].body < 0 && !held.count(point))
+      ctx.diags.error(by.second, "the path of a " + by.first + " runs over point '" + ctx.m.points[point].name +
+                                     "', which nothing holds (expected a pulley there: {type: pulley, at: " +
+                                     ctx.m.points[point].name + "})");
   for (const auto& pc : ctx.pending_checks) {
-    if (pc.check->kind == CheckSpec::Kind::passes_over && pc.point >= 0 && !ctx.interior_points.count(pc.point))
+    // (Not when a connection could not be read: its path may be the one that runs there.)
+    if (pc.check->kind == CheckSpec::Kind::passes_over && pc.point >= 0 && !ctx.interior_points.count(pc.point) &&
+        !ctx.connection_failed)
       ctx.diags.error(pc.at, "no string runs over point '" + ctx.m.points[pc.point].name + "' of a " + pc.what +
                                  " (expected it inside some string's path)");
     if (pc.check->kind == CheckSpec::Kind::steady_at && pc.point >= 0) {

@@ -91,7 +91,9 @@ struct BuildContext {
 
   // The connections stage's checks that need every connection.
   std::vector<PendingCheck> pending_checks;
-  std::set<int> interior_points;  // points some string runs over
+  // Points some path runs over (neither end): the first connection to do so, for messages.
+  std::map<int, std::pair<std::string, Location>> interior_points;
+  bool connection_failed = false;  // some connection's arguments could not be read
 
   bool claim(const Text& name, const std::string& what) { return claim_in(names_in_use, name, what); }
   bool claim_place(const Text& name, const std::string& what) { return claim_in(places_in_use, name, what); }

@@ -23,6 +23,8 @@ loads:
 strings:
   - {name: s, path: [B, C, A], tension: T}
 layout: {x_A: -1, x_B: 1}
+connections:
+  - {type: pulley, at: C}
 )";
 
 std::string with(std::string text, const std::string& from, const std::string& to) {
@@ -37,7 +39,7 @@ TEST_CASE("Description: the unbroken problem is accepted", "[errors]") { CHECK(e
 
 TEST_CASE("Description: bad YAML is located", "[errors]") {
   CHECK(errors_of(with(good, "layout: {x_A: -1, x_B: 1}", "layout: {x_A: -1, x_B: 1")) ==
-        Messages{"t.yaml:15:1: invalid YAML: end of map flow not found"});
+        Messages{"t.yaml:15:12: invalid YAML: end of map flow not found"});
 }
 
 TEST_CASE("Description: an unknown key suggests the nearest valid key", "[errors]") {
@@ -58,7 +60,7 @@ TEST_CASE("Description: a duplicate name says where the first one is", "[errors]
   // A point may not share a body's name; a coordinate may not share a parameter's.
   CHECK(errors_of(with(good, "  C: 0", "  A: 0")) ==
         Messages{"t.yaml:9:3: duplicate name 'A' (first defined at line 6)",
-                 "t.yaml:13:25: unknown point 'C' (known: A, B)"});
+                 "t.yaml:13:25: unknown point 'C' (known: A, B)", "t.yaml:16:24: unknown point 'C' (known: A, B)"});
   CHECK(errors_of(with(good, "position: x_B", "position: m")) ==
         Messages{"t.yaml:7:26: duplicate name 'm' (first defined at line 4)",
                  "t.yaml:14:19: 'layout' names 'x_B', which is not a coordinate or a parameter (did you mean 'x_A'?)"});
@@ -88,20 +90,20 @@ TEST_CASE("Description: a force that is not a force", "[errors]") {
 }
 
 TEST_CASE("Description: an unknown connection type suggests the nearest rule", "[errors]") {
-  CHECK(errors_of(good + "connections:\n  - {type: pully, at: C}\n") ==
-        Messages{"t.yaml:16:12: unknown connection type 'pully' (did you mean 'pulley'?)"});
+  CHECK(errors_of(good + "  - {type: pully, at: C}\n") ==
+        Messages{"t.yaml:17:12: unknown connection type 'pully' (did you mean 'pulley'?)"});
 }
 
 TEST_CASE("Description: a connection without what its rule needs", "[errors]") {
-  CHECK(errors_of(good + "connections:\n  - {type: fixed}\n") ==
-        Messages{"t.yaml:16:5: a 'fixed' connection needs 'body'"});
+  CHECK(errors_of(good + "  - {type: fixed}\n") ==
+        Messages{"t.yaml:17:5: a 'fixed' connection needs 'body'"});
   CHECK(errors_of(with(good, "path: [B, C, A]", "length: x_B - x_A, path: [B, C, A]")) ==
         Messages{"t.yaml:13:5: a 'string' connection 's' has path and length (expected one of them)"});
 }
 
 TEST_CASE("Description: a pulley that no string runs over", "[errors]") {
-  CHECK(errors_of(good + "connections:\n  - {type: pulley, at: A}\n") ==
-        Messages{"t.yaml:16:5: no string runs over point 'A' of a 'pulley' connection (expected it inside some string's path)"});
+  CHECK(errors_of(good + "  - {type: pulley, at: A}\n") ==
+        Messages{"t.yaml:17:5: no string runs over point 'A' of a 'pulley' connection (expected it inside some string's path)"});
 }
 
 TEST_CASE("Description: a strand whose direction cannot be told", "[errors]") {
@@ -117,7 +119,7 @@ TEST_CASE("Description: duplicate keys and wrong shapes", "[errors]") {
                  "t.yaml:9:1: unknown key 'x' in the description (expected one of: title, source, axes, parameters, "
                  "gravity, bodies, points, connections, loads, strings, layout, given, find, derive, expected, "
                  "expected_combinations, expected_conditions, expected_free, notes, sweep)",
-                 "t.yaml:14:25: unknown point 'C' (known: A, B)"});
+                 "t.yaml:14:25: unknown point 'C' (known: A, B)", "t.yaml:17:24: unknown point 'C' (known: A, B)"});
 }
 
 TEST_CASE("Description: every problem in the file is reported at once", "[errors]") {
@@ -182,15 +184,15 @@ TEST_CASE("Description: a 2-D body needs its center of mass, and AMB needs 2-D o
   CHECK(errors_of(with(plate, "center_of_mass: [1, 1], ", "")) ==
         Messages{"t.yaml:12:10: body 'plate' has no 'center_of_mass' (needed for its weight and its angular momentum balance)"});
   CHECK(errors_of(good + "derive: [{amb: A, about: C}]\n") ==
-        Messages{"t.yaml:15:11: angular momentum balance needs a 2-D or 3-D problem (this one has one axis)"});
+        Messages{"t.yaml:17:11: angular momentum balance needs a 2-D or 3-D problem (this one has one axis)"});
   CHECK(errors_of(plate + "derive: [{amb: plate, about: Z}]\n") ==
         Messages{"t.yaml:16:30: unknown point 'Z' (known: plate, B, D, E)"});
 }
 
 TEST_CASE("Description: an output unit must be a unit of the quantity's dimension", "[errors][units]") {
   CHECK(errors_of(good + "find: [{name: T, unit: kg}, {name: ddot(x_A), unit: fts}]\n") ==
-        Messages{"t.yaml:15:24: 'T' is a force, but kg is a mass",
-                 "t.yaml:15:53: unit of 'ddot(x_A)' in 'find': unknown unit 'fts'"});
+        Messages{"t.yaml:17:24: 'T' is a force, but kg is a mass",
+                 "t.yaml:17:53: unit of 'ddot(x_A)' in 'find': unknown unit 'fts'"});
   CHECK(errors_of(good + "find: [{name: T, unit: lbf}]\n").empty());
 }
 
@@ -260,10 +262,10 @@ TEST_CASE("Description: a joint between a body and itself is an error", "[errors
 
 TEST_CASE("Description: gravity by magnitude and tilt needs both, with their dimensions", "[errors][gravity]") {
   CHECK(errors_of(good + "gravity: {magnitude: g}\n") ==
-        Messages{"t.yaml:15:10: 'gravity' as a mapping needs 'magnitude' and 'tilt' (the angle the first axis rises above the horizontal)"});
+        Messages{"t.yaml:17:10: 'gravity' as a mapping needs 'magnitude' and 'tilt' (the angle the first axis rises above the horizontal)"});
   CHECK(errors_of(good + "gravity: {magnitude: F, tilt: m}\n") ==
-        Messages{"t.yaml:15:22: 'magnitude' of 'gravity' is a force (expected an acceleration)",
-                 "t.yaml:15:31: 'tilt' of 'gravity' is a mass (expected a pure number)"});
+        Messages{"t.yaml:17:22: 'magnitude' of 'gravity' is a force (expected an acceleration)",
+                 "t.yaml:17:31: 'tilt' of 'gravity' is a mass (expected a pure number)"});
 }
 
 TEST_CASE("Description: a force element whose path never changes length is an error", "[errors][spring]") {

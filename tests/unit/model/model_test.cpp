@@ -175,3 +175,14 @@ TEST_CASE("Pulley: a radius where a strand turns, or a radius that is not positi
                  "point: no 'radius')",
                  "t.yaml:17:35: 'radius' of a 'pulley' connection is r = -0.1 m (expected a positive value)"});
 }
+
+TEST_CASE("Path: a string over a fixed point that nothing holds is an error", "[path][errors]") {
+  std::string text = raised_pulley + "find: [T]\n";
+  text.replace(text.find("  - {type: pulley, at: P}\n"), 26, "");
+  CHECK(test::errors_of(text) ==
+        Messages{"t.yaml:17:5: the path of a 'string' connection 's' runs over point 'P', which nothing holds (expected a "
+                 "pulley there: {type: pulley, at: P})"});
+  // A point on a body holds the string itself (a ring on the block).
+  const std::string ring = test::example_with("figure-12.5d-motion-doubled.yaml", "connections:\n  - {type: pulley, at: B}\n", "");
+  CHECK(test::errors_of(ring).empty());
+}

@@ -55,6 +55,7 @@ title: three strands at B, one at A
 bodies: {A: {position: x_A}, B: {position: x_B}}
 points: {C: 0, pB: {on: B}}
 strings: [{name: s, path: [A, C, pB, C, pB]}]
+connections: [{type: pulley, at: C}]
 layout: {x_A: -1, x_B: 1}
 derive: [{constraint: s}]
 given: [ddot(x_A)]
