@@ -216,7 +216,7 @@ struct RuleReader {
     LocalNames names(locals, vectors);
     // A tension along a path may also use the path's length and its rate of lengthening.
     std::vector<std::string> path_locals = locals;
-    path_locals.insert(path_locals.end(), {"length", "lengthening"});
+    path_locals.insert(path_locals.end(), {"length", "lengthening", "origin_length"});
     LocalNames along_names(path_locals, vectors);
     auto check_expr = [&](const std::string& text, const Location& at) {
       auto res = parse_expression(text, names);
@@ -224,13 +224,18 @@ struct RuleReader {
     };
     if (auto n = root["loads"]; n && is_list(n, "'loads'", file, diags)) {
       for (const auto& l : n) {
-        if (!check_map(l, {"on", "along", "from_length", "force", "tension", "at", "couple"}, "a load of the rule", file, diags))
+        if (!check_map(l, {"on", "along", "from_length", "force", "tension", "at", "couple", "when"}, "a load of the rule", file,
+                       diags))
           continue;
         auto kind = which(l, {"on", "along", "from_length"}, "a load");
         if (!kind) continue;
         LoadSpec s;
         s.at = where(l, file);
         s.arg = l[*kind].Scalar();
+        if (l["when"]) {
+          s.when = l["when"].Scalar();
+          if (!r.arg(s.when)) diags.error(s.at, "'when' names argument '" + s.when + "', which the rule does not declare");
+        }
         if (*kind == "on") {
           s.kind = LoadSpec::Kind::on;
           if (l["force"]) s.expr = need_scalar(l, "force", "a load");

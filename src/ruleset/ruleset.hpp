@@ -42,6 +42,7 @@ struct LoadSpec {
   std::string expr;    // force (on) or tension (along, from_length); may be empty for a pure couple
   std::string at_arg;  // on: the point of application
   std::string couple;  // on: a couple, as an expression
+  std::string when;    // an optional argument; the load applies only when it is given
   Location at;
 };
 

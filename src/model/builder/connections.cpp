@@ -276,6 +276,7 @@ void add_loads(BuildContext& ctx, Instance& in) {
   auto& body_args = in.body_args;
   auto& expr_args = in.expr_args;
   for (const auto& l : rule->loads) {
+    if (!l.when.empty() && !c.arg(l.when)) continue;  // for an optional argument not given
     if (l.kind == LoadSpec::Kind::on) {
       auto it = point_args.find(l.arg);
       if (it == point_args.end()) continue;  // optional argument not given
@@ -325,6 +326,13 @@ void add_loads(BuildContext& ctx, Instance& in) {
       // A force element's tension may use its path's length and lengthening rate.
       in.scope.bind("length", path->length);
       in.scope.bind("lengthening", time_derivative(path->length, ctx.m.bodies, ctx.m.lengths));
+      // ... and its length where every coordinate is 0 (a spring's stretch is stated there).
+      exmap origin;
+      for (const auto& b : ctx.m.bodies)
+        if (!b.coord.is_zero()) origin[b.coord] = 0;
+      for (const auto& t : ctx.m.lengths)
+        if (path->length.has(t.symbol)) origin[t.symbol] = sqrt(t.squared.subs(origin));
+      in.scope.bind("origin_length", path->length.subs(origin));
       auto tension = rule_expr(ctx, in, l.expr, l.at);
       if (!tension) continue;
       for (auto& load : tension_loads(*path, ctx.m.points, *tension, label)) ctx.m.loads.push_back(std::move(load));

@@ -186,3 +186,20 @@ TEST_CASE("Path: a string over a fixed point that nothing holds is an error", "[
   const std::string ring = test::example_with("figure-12.5d-motion-doubled.yaml", "connections:\n  - {type: pulley, at: B}\n", "");
   CHECK(test::errors_of(ring).empty());
 }
+
+TEST_CASE("Spring: a stretch stated where every coordinate is 0 gives the force the rest length gives", "[spring]") {
+  // Sample 12.4: y is measured from the equilibrium, where the spring is compressed by y_s.
+  const auto by_rest = test::run_text(test::read_example("sample-12.4-stacked-blocks-on-spring.yaml"));
+  const auto by_stretch = test::run_text(
+      test::example_with("sample-12.4-stacked-blocks-on-spring.yaml", "rest_length: l_0}", "stretch: -y_s}"));
+  const Derivation a = explain(*by_rest), b = explain(*by_stretch);
+  REQUIRE(a.answers.size() == 2);
+  REQUIRE(b.answers.size() == 2);
+  for (int i = 0; i < 2; ++i) {
+    REQUIRE(b.answers[i].closed_form);
+    CHECK(to_text(*a.answers[i].closed_form) == to_text(*b.answers[i].closed_form));
+  }
+  CHECK(test::errors_of(test::example_with("sample-12.4-stacked-blocks-on-spring.yaml", "rest_length: l_0}",
+                                           "rest_length: l_0, stretch: y_s}")) ==
+        Messages{"t.yaml:30:5: a 'spring' connection 'k_s' has rest_length and stretch (expected one of them)"});
+}
