@@ -203,3 +203,69 @@ TEST_CASE("Spring: a stretch stated where every coordinate is 0 gives the force 
                                            "rest_length: l_0, stretch: y_s}")) ==
         Messages{"t.yaml:30:5: a 'spring' connection 'k_s' has rest_length and stretch (expected one of them)"});
 }
+
+namespace {
+
+// Cart A (on two rollers R and S) pulled by F, and block B, whose center is h above the line
+// of A's; `joint` joins them.
+std::string cart_and_block(const std::string& joint, const std::string& rest) {
+  return R"(title: a cart and a block joined
+axes: [x, y]
+parameters:
+  m_A: {value: 3, unit: kg}
+  m_B: {value: 1, unit: kg}
+  F: {value: 8, unit: N}
+  g: {value: 9.81, unit: m/s^2}
+  b: {value: 1, unit: m}
+  h: {value: 0.5, unit: m}
+  c: {value: 0.4, unit: m}
+gravity: [0, -g]
+bodies:
+  A: {mass: m_A, position: x_A, center_of_mass: [x_A, 0]}
+  B: {mass: m_B, position: x_B, center_of_mass: [x_B, h]}
+points:
+  R: {on: A, offset: [c, 0]}
+  S: {on: A, offset: ["-c", 0]}
+  W: {on: A, offset: ["-b", 0]}
+connections:
+  - {type: roller, body: A, at: R, normal: [0, 1]}
+  - {type: roller, body: A, at: S, normal: [0, 1]}
+  - {type: force, on: A, at: A, force: [F, 0]}
+)" + joint + rest;
+}
+
+}  // namespace
+
+TEST_CASE("Joints: a weld between two moving bodies carries a force and a couple, reversed on the other", "[joint]") {
+  // The weld W is a distance b behind A's center of mass, straight below B's center. By
+  // hand: a = F/(m_A + m_B); LMB B: -W_x = m_B a, -W_y - m_B g = 0; AMB B about its center:
+  // -h W_x - (x_A - b - x_B) W_y - M_W = 0.
+  const auto a = test::run_text(cart_and_block("  - {type: weld_joint, body: A, other: B, at: W}\n",
+                                               "layout: {x_A: 2, x_B: 1}\ngiven: {x_A: 2, x_B: 1}\n"
+                                               "find: [ddot(x_A), W_x, W_y, M_W]\n"));
+  const Derivation d = explain(*a);
+  REQUIRE(d.answers.size() == 4);
+  std::vector<std::string> got;
+  for (const auto& ans : d.answers) got.push_back(to_text(*ans.closed_form) + " = " + ans.value->decimal);
+  CHECK(std::vector<std::string>(got.begin(), got.begin() + 3) ==
+        std::vector<std::string>{"F/(m_A + m_B) = 2", "-F*m_B/(m_A + m_B) = -2", "-g*m_B = -9.81"});
+  // M_W = -h W_x - (x_A - b - x_B) W_y in general (W is below B's center in the layout).
+  const auto& t = *a->model.symbols;
+  auto s = [&](const char* n) { return t.find(n)->sym; };
+  const ex expected = s("h") * s("m_B") * s("F") / (s("m_A") + s("m_B")) + s("m_B") * s("g") * (s("x_A") - s("b") - s("x_B"));
+  CHECK(normal(*d.answers[3].closed_form - expected).is_zero());
+  CHECK(d.answers[3].value->decimal == "1");
+}
+
+TEST_CASE("Joints: a slider between two moving bodies pushes across the slide only", "[joint]") {
+  // Block B rides on cart A through a smooth slider at B's center: no force along x reaches
+  // B, so ddot(x_B) = 0 and ddot(x_A) = F/m_A; the slider holds B up (the push on A is
+  // N_B = -m_B g along [0, 1]) with no couple.
+  const auto a = test::run_text(cart_and_block("  - {type: slider_joint, body: A, other: B, at: B, normal: [0, 1]}\n",
+                                               "layout: {x_A: 0, x_B: 1}\nfind: [ddot(x_A), ddot(x_B), N_B, M_B]\n"));
+  const Derivation d = explain(*a);
+  REQUIRE(d.answers.size() == 4);
+  std::vector<std::string> got;
+  for (const auto& ans : d.answers) got.push_back(to_text(*ans.closed_form) + " = " + ans.value->decimal);
+  CHECK(got == std::vector<std::string>{"F/m_A = 2.66667", "0 = 0", "-g*m_B = -9.81", "0 = 0"});
+}

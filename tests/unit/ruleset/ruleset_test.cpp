@@ -26,8 +26,8 @@ TEST_CASE("Rules: the bundled rules load and declare what they need", "[rules]")
   CHECK(rules.names() == std::vector<std::string>{"ball_and_socket", "ball_joint", "cable", "collar", "contact", "couple", "damper",
                                                  "driven_wheel", "fixed", "fixed_support", "force", "free_wheel", "hinge",
                                                  "hinge_with_moments", "link", "pin", "pin_joint", "pulley", "rod", "roller",
-                                                 "same_motion", "skidding_wheel", "sliding", "spring", "sticking", "string",
-                                                 "weld"});
+                                                 "same_motion", "skidding_wheel", "slider_joint", "sliding", "spring", "sticking",
+                                                 "string", "weld", "weld_joint"});
   const Rule* s = rules.find("string");
   REQUIRE(s);
   REQUIRE(s->unknowns.size() == 1);
