@@ -269,3 +269,43 @@ TEST_CASE("Joints: a slider between two moving bodies pushes across the slide on
   for (const auto& ans : d.answers) got.push_back(to_text(*ans.closed_form) + " = " + ans.value->decimal);
   CHECK(got == std::vector<std::string>{"F/m_A = 2.66667", "0 = 0", "-g*m_B = -9.81", "0 = 0"});
 }
+
+TEST_CASE("Spring: a string that pulls a spring moves its end twice as far: x_S = 2 x + const", "[spring][path]") {
+  // The string runs from the wall W around a pulley on block A and back to S, where a spring
+  // to the wall Q (at -L) takes it: its length is x + (x - x_S), so x_S = 2 x - C_s. The
+  // spring's length is x_S + L, its tension k (x_S + L - l_0), and the string's T equals it
+  // (S is massless); A: -F - 2 T = m ddot(x).
+  const auto a = test::run_text(R"(title: a string that pulls a spring
+parameters:
+  m: {value: 2, unit: kg}
+  k: {value: 100, unit: N/m}
+  l_0: {value: 0.5, unit: m}
+  F: {value: 10, unit: N}
+  L: {value: 5, unit: m}
+bodies:
+  A: {mass: m, position: x}
+  S: {mass: 0, position: x_S}
+points:
+  W: 0
+  pA: {on: A}
+  Q: -L
+loads:
+  - {on: A, force: -F}
+strings:
+  - {name: s, path: [W, pA, S], tension: T}
+connections:
+  - {type: pulley, at: pA}
+  - {type: spring, path: [S, Q], k: k, rest_length: l_0}
+layout: {x: 3, x_S: 1}
+given: [x]
+find: [x_S, T, ddot(x)]
+)");
+  const Derivation d = explain(*a);
+  REQUIRE(d.answers.size() == 3);
+  CHECK(to_text(*d.answers[0].closed_form) == "2*x - C_s");
+  const auto& t = *a->model.symbols;
+  auto s = [&](const char* n) { return t.find(n)->sym; };
+  const ex x_S = 2 * s("x") - s("C_s"), T = s("k") * (x_S + s("L") - s("l_0"));
+  CHECK(normal(*d.answers[1].closed_form - T).is_zero());
+  CHECK(normal(*d.answers[2].closed_form - (-s("F") - 2 * T) / s("m")).is_zero());
+}
