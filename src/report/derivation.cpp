@@ -214,31 +214,28 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     } else if (!w.defined && is_candidate && !is_unknown) {
       a.status = Answer::Status::not_in_equations;
     } else {
-      ex general;
-      try {
-        general = w.expr.subs(sol.general);
+      auto substituted = [&](const ex& e) {
+        ex g = e.subs(sol.general);
         for (const auto* level : {sol.rates.get(), sol.positions.get()})
-          if (level) general = general.subs(level->general);
-      } catch (const std::domain_error&) {
-        // A defined quantity that divides by an unknown the equations make zero
-        // (F/ddot(x_B) where ddot(x_B) = 0): GiNaC refuses the pole; say which.
-        std::vector<std::string> names;
-        for (const auto& u : s.unknowns) {
-          if (!w.expr.has(u)) continue;
-          try {
-            if (normal(u.subs(sol.general)).is_zero()) {
-              a.zero_divisors.push_back(u);
-              names.push_back(to_text(u) + " = 0");
-            }
-          } catch (const std::domain_error&) {
-          }
-        }
+          if (level) g = g.subs(level->general);
+        return g;
+      };
+      // A defined quantity that divides by something the equations make zero (F/ddot(x_B)
+      // where ddot(x_B) = 0) is undefined. Denominators are tried first, innermost first:
+      // GiNaC would throw from inside a node it is making, and that node would leak.
+      for (const_postorder_iterator it = w.expr.postorder_begin(); it != w.expr.postorder_end(); ++it) {
+        if (!is_a<power>(*it) || !is_a<numeric>(it->op(1)) || !ex_to<numeric>(it->op(1)).is_negative()) continue;
+        if (!normal(substituted(it->op(0))).is_zero()) continue;
+        a.zero_divisors.push_back(it->op(0));
+        break;
+      }
+      if (!a.zero_divisors.empty()) {
         a.status = Answer::Status::undetermined;
-        a.reason = "its definition " + to_text(w.expr) + " divides by zero" +
-                   (names.empty() ? std::string() : " (" + join(names, ", ") + " here)");
+        a.reason = "its definition " + to_text(w.expr) + " divides by zero (" + to_text(a.zero_divisors[0]) + " = 0 here)";
         d.answers.push_back(a);
         continue;
       }
+      const ex general = substituted(w.expr);
       bool free = false;
       for (const auto& f : sol.free) free = free || general.has(f);
       if (free) {
@@ -303,22 +300,28 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     Eigen::MatrixXd N(family.size(), sol.free.size());
     Eigen::VectorXd p(family.size());
     bool numeric_family = true;
-    // (A family undefined at the given numbers, a denominator that vanishes there, has no
-    // least-norm member: found by fuzzing, where it was an internal error.)
-    try {
-      for (std::size_t i = 0; i < family.size() && numeric_family; ++i) {
-        const ex g = family[i].subs(sol.general).expand();
-        const ex base = evalf(g.subs(zero_free).subs(values));
-        numeric_family = numeric_family && is_a<numeric>(base);
-        if (numeric_family) p(static_cast<Eigen::Index>(i)) = ex_to<numeric>(base).to_double();
-        for (std::size_t j = 0; j < sol.free.size() && numeric_family; ++j) {
-          const ex c = evalf(g.coeff(sol.free[j], 1).subs(values));
-          numeric_family = is_a<numeric>(c);
-          if (numeric_family) N(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = ex_to<numeric>(c).to_double();
-        }
+    // A family undefined at the given numbers (a denominator that vanishes there) has no
+    // least-norm member (found by fuzzing, where it was an internal error). Each number is
+    // taken from the normal form's numerator and denominator, the denominator checked first:
+    // GiNaC would throw from inside a node it is making, and that node would leak.
+    auto number = [&](const ex& x) -> std::optional<double> {
+      const ex nd = normal(x).numer_denom();
+      const ex den = normal(nd.op(1).subs(values));
+      if (den.is_zero()) return std::nullopt;
+      const ex v = evalf(nd.op(0).subs(values) / den);
+      if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
+      return ex_to<numeric>(v).to_double();
+    };
+    for (std::size_t i = 0; i < family.size() && numeric_family; ++i) {
+      const ex g = family[i].subs(sol.general).expand();
+      const auto base = number(g.subs(zero_free));
+      numeric_family = base.has_value();
+      if (numeric_family) p(static_cast<Eigen::Index>(i)) = *base;
+      for (std::size_t j = 0; j < sol.free.size() && numeric_family; ++j) {
+        const auto c = number(g.coeff(sol.free[j], 1));
+        numeric_family = c.has_value();
+        if (numeric_family) N(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = *c;
       }
-    } catch (const std::exception&) {
-      numeric_family = false;
     }
     if (numeric_family && !family.empty()) {
       const Eigen::VectorXd f = N.completeOrthogonalDecomposition().solve(-p);
