@@ -345,7 +345,7 @@ DescriptionRead read_description_text(const std::string& text, const std::string
   Reader r{file, diags, d};
   check_map(root,
             {"title", "source", "axes", "parameters", "gravity", "bodies", "points", "connections", "loads",
-             "strings", "layout", "given", "find", "derive", "expected", "expected_combinations", "expected_conditions", "expected_free",
+             "strings", "layout", "given", "find", "derive", "expected", "expected_combinations", "expected_conditions", "expected_free", "expected_power",
              "notes", "sweep"},
             "the description", file, diags);
   if (auto t = root["title"]) {

@@ -423,6 +423,35 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       d.conditions.push_back(r);
     }
   }
+  // The power balance: an independent check, from the model's velocities and loads.
+  d.power = check_power(m, s, sol);
+  if (d.power.status == PowerCheck::Status::not_applicable) {
+    section("Check: power balance");
+    text(d.power.reason == "every body is at rest"
+             ? "Every body is at rest, so no force does work: the power balance has nothing to check."
+             : "The power balance is not checked: " + d.power.reason + ".");
+  } else {
+    section("Check: power balance");
+    text("The rate of change of the kinetic energy equals the power of the forces; the constraint forces do no "
+         "work.");
+    const symbol kinetic("dot(E_k)", "\\dot{E}_{k}"), power("P", "P");
+    equation("kinetic energy: rate of change", kinetic, d.power.kinetic_rate);
+    equation("power of the forces", power, d.power.power);
+    if (!d.power.speeds.empty()) {
+      std::string names;
+      for (std::size_t k = 0; k < d.power.speeds.size(); ++k) names += (k ? ", " : "") + std::string("{}");
+      text_with("(" + names + (d.power.speeds.size() == 1 ? " is a speed" : " are speeds") +
+                    " along the line of motion.)",
+                d.power.speeds);
+    }
+    if (d.power.status == PowerCheck::Status::holds)
+      text("With the solved accelerations and forces, and the velocities the constraints allow, the two are equal: "
+           "the power balance holds.");
+    else
+      text_with("With the solved accelerations and forces the two DIFFER by {}: the power balance FAILS (an error in "
+                "tackle; please report it).",
+                {d.power.residual});
+  }
   return d;
 }
 

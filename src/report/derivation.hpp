@@ -8,6 +8,7 @@
 
 #include <ginac/ginac.h>
 
+#include "energy/power.hpp"
 #include "equations/equations.hpp"
 #include "model/model.hpp"
 #include "numeric/evaluate.hpp"
@@ -80,6 +81,7 @@ struct Derivation {
   // Indeterminate with numbers: the member of the family with the least norm (Eigen), for
   // the unknowns that are not determined alone.
   std::vector<std::pair<std::string, std::optional<NumericValue>>> minimum_norm;
+  PowerCheck power;  // the power balance, checked against the solution
 };
 
 struct ReportOptions {

@@ -234,6 +234,19 @@ std::string json_document(const Derivation& d, bool full) {
                              {"latex", to_latex(sv.parameter) + " " + tex_relation(sv.op) + " " + to_latex(sv.bound)}});
     j["conditions"].push_back(x);
   }
+  {
+    // The power balance: d/dt(E_k) = P, checked with the solution put in.
+    static const char* const names[] = {"holds", "fails", "not_applicable"};
+    nlohmann::ordered_json p{{"status", names[static_cast<int>(d.power.status)]}};
+    if (d.power.status == PowerCheck::Status::not_applicable) {
+      p["reason"] = d.power.reason;
+    } else {
+      p["kinetic_energy_rate"] = to_text(d.power.kinetic_rate);
+      p["power"] = to_text(d.power.power);
+      if (d.power.status == PowerCheck::Status::fails) p["residual"] = to_text(d.power.residual);
+    }
+    j["power_check"] = p;
+  }
   if (full && d.system) {
     j["equations"] = nlohmann::ordered_json::array();
     for (const auto& eq : d.system->equations) {

@@ -101,6 +101,15 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
           CHECK(found == 1);
         }
       }
+      // The power balance, an independent check: it holds for every example, or the example
+      // says why it cannot be made (`expected_power: "not checked: <reason>"`).
+      if (const YAML::Node p = root["expected_power"]) {
+        CHECK(d.power.status == PowerCheck::Status::not_applicable);
+        CHECK("not checked: " + d.power.reason == p.as<std::string>());
+      } else {
+        INFO("power residual: " << to_text(d.power.residual) << " reason: " << d.power.reason);
+        CHECK(d.power.status == PowerCheck::Status::holds);
+      }
       // An indeterminate example names its free unknowns and determined combinations.
       std::vector<std::string> free;
       if (root["expected_free"])

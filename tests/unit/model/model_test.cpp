@@ -309,3 +309,31 @@ find: [x_S, T, ddot(x)]
   CHECK(normal(*d.answers[1].closed_form - T).is_zero());
   CHECK(normal(*d.answers[2].closed_form - (-s("F") - 2 * T) / s("m")).is_zero());
 }
+
+TEST_CASE("Power: the balance holds for a solution and fails for a wrong one", "[power]") {
+  const auto a = test::run_text(test::read_example("atwood-machine.yaml"));
+  const PowerCheck ok = check_power(a->model, a->system, a->solution);
+  CHECK(ok.status == PowerCheck::Status::holds);
+  CHECK(to_text(ok.kinetic_rate) == "m_A*ddot(y_A)*dot(y_A) + m_B*ddot(y_B)*dot(y_B)");
+  // The tension does no work (the string's length is constant): a wrong T passes, a wrong
+  // acceleration does not.
+  Solution wrong = a->solution;
+  const ex T = a->model.symbols->find("T")->sym, a_A = a->model.symbols->find("ddot(y_A)")->sym,
+           a_B = a->model.symbols->find("ddot(y_B)")->sym;
+  wrong.general[T] = 2 * wrong.general[T];
+  CHECK(check_power(a->model, a->system, wrong).status == PowerCheck::Status::holds);
+  wrong.general[a_A] = 2 * wrong.general[a_A];
+  wrong.general[a_B] = 2 * wrong.general[a_B];
+  const PowerCheck bad = check_power(a->model, a->system, wrong);
+  CHECK(bad.status == PowerCheck::Status::fails);
+  CHECK_FALSE(bad.residual.is_zero());
+  // Bodies at rest: nothing to check.
+  const auto rest = test::run_text(R"(title: a block at rest on a support
+bodies: {A: {mass: m, position: x}}
+parameters: {m: {value: 1, unit: kg}, g: {value: 9.81, unit: m/s^2}}
+gravity: -g
+connections: [{type: fixed, body: A}]
+)");
+  const PowerCheck none = check_power(rest->model, rest->system, rest->solution);
+  CHECK(none.status == PowerCheck::Status::holds);
+}

@@ -1,0 +1,95 @@
+#include "energy/power.hpp"
+
+#include <algorithm>
+
+#include "expr/print.hpp"
+#include "expr/trig.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+
+namespace {
+
+// The numerator of `e` reduced modulo l^2 - squared for every turning strand's length: zero
+// exactly when e vanishes wherever each length is what it stands for.
+ex on_lengths(const ex& e, const Model& m) {
+  ex n = normal(e).numer_denom().op(0).expand();
+  for (const auto& l : m.lengths) n = rem(n, pow(l.symbol, 2) - l.squared, ex_to<symbol>(l.symbol)).expand();
+  return n;
+}
+
+}  // namespace
+
+PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& sol) {
+  PowerCheck c;
+  if (sol.status == Solution::Status::inconsistent) {
+    c.reason = "the equations are inconsistent";
+    return c;
+  }
+  // Each body's velocity: from its coordinate (the center of mass differentiated), or, for a
+  // body that moves without one, a speed along its (straight) line of motion.
+  std::vector<Vec> velocity(m.bodies.size(), zero_vec());
+  bool moving = false;
+  for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+    const Body& b = m.bodies[i];
+    if (!b.coord.is_zero()) {
+      for (int k = 0; k < 3; ++k) velocity[i][k] = time_derivative(b.cm[k], m.bodies, m.lengths);
+      if (m.dims() == 1) velocity[i] = {b.rate, 0, 0};
+      moving = true;
+    } else if (!is_zero_vec(b.acceleration)) {
+      // Straight-line motion: the velocity is along the acceleration, a signed speed v_B
+      // along the one axis it has, or along the vector itself.
+      int nonzero = 0, axis = 0;
+      for (int k = 0; k < 3; ++k)
+        if (!b.acceleration[k].is_zero()) ++nonzero, axis = k;
+      const symbol v("v_" + b.name, "v_{" + b.name + "}");
+      c.speeds.push_back(v);
+      if (nonzero == 1) velocity[i][axis] = v;
+      else velocity[i] = v * b.acceleration;
+      moving = true;
+    }
+  }
+  if (!moving) {
+    c.reason = "every body is at rest";
+    return c;
+  }
+  for (std::size_t i = 0; i < m.bodies.size(); ++i)
+    if (m.bodies[i].has_mass) c.kinetic_rate += m.bodies[i].mass * inner(velocity[i], m.bodies[i].acceleration);
+  for (const auto& l : m.loads)
+    if (l.body >= 0) c.power += inner(l.force, velocity[l.body]);
+  // sin^2 + cos^2 = 1 where that leaves fewer terms (a block on an incline: m v a, not
+  // m v a cos^2 + m v a sin^2).
+  c.kinetic_rate = fewer_trig_terms(c.kinetic_rate.expand());
+  c.power = fewer_trig_terms(c.power.expand());
+
+  // The velocities obey the constraints: the rate equations solved for as many rates as they
+  // fix, in terms of the rest.
+  std::vector<ex> rates;
+  for (const auto& b : m.bodies)
+    if (!b.rate.is_zero() && std::find(m.given.begin(), m.given.end(), b.rate) == m.given.end()) rates.push_back(b.rate);
+  exmap rate_values;
+  if (!s.rate_equations.empty() && !rates.empty()) {
+    const Solution r = solve_equations(m.file, s.rate_equations, rates);
+    if (r.status == Solution::Status::inconsistent) {
+      c.reason = "the constraints' rates are inconsistent";
+      return c;
+    }
+    rate_values = r.general;
+  }
+  const ex residual = (c.kinetic_rate - c.power).subs(sol.general).subs(rate_values);
+  // Every force must be known: a chosen set of balances may leave some out.
+  for (const auto& u : m.candidates)
+    if (residual.has(u) && std::find(sol.free.begin(), sol.free.end(), u) == sol.free.end()) {
+      c.reason = "the balances chosen do not give " + to_text(u);
+      return c;
+    }
+  c.residual = on_lengths(residual, m);
+  if (has_trig(c.residual))
+    for (const bool to_cos : {true, false})
+      if (const ex t = normal(pythagoras(c.residual, to_cos)); t.is_zero()) c.residual = t;
+  c.status = c.residual.is_zero() ? PowerCheck::Status::holds : PowerCheck::Status::fails;
+  return c;
+}
+
+}  // namespace tackle
