@@ -402,8 +402,15 @@ void print_power(const power& p, const print_context& c, unsigned level) {
   if (paren) os << (latex ? "\\right)" : ")");
 }
 
+// pi as the parser reads it (GiNaC's own text form is "Pi").
+void print_constant_text(const constant& k, const print_context& c, unsigned) {
+  if (ex(k).is_equal(Pi)) c.s << "pi";
+  else k.print(print_dflt(c.s));
+}
+
 struct Registration {
   Registration() {
+    set_print_func<constant, tackle_text>(print_constant_text);
     set_print_func<add, tackle_text>(print_add);
     set_print_func<add, tackle_latex>(print_add);
     set_print_func<mul, tackle_text>(print_mul);

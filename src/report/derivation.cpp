@@ -103,6 +103,17 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   for (const auto& sym : table.all()) {
     // Parameters, and quantities given with their value at the instant (z = 3 m).
     if (sym->role != SymbolRole::parameter && !sym->value) continue;
+    {
+      ParameterReport pr;
+      pr.name = sym->name;
+      pr.tex = sym->tex;
+      pr.kind = sym->role != SymbolRole::parameter ? "given" : sym->geometric ? "length" : sym->definition ? "defined" : "parameter";
+      pr.si = evaluate(sym->sym, table, sym->dimension, options.digits);
+      if (!sym->unit.empty() && sym->dimension && !sym->unit_to_si.is_equal(1))
+        pr.stated = evaluate(sym->sym, table, sym->dimension, options.digits, Unit{sym->unit_to_si, *sym->dimension, sym->unit});
+      pr.definition = sym->definition;
+      d.parameters.push_back(std::move(pr));
+    }
     if (sym->definition) {
       // A defined parameter: its definition, and its value when the others have one.
       Step* st = step(Step::Kind::equation, "definition");  // not folded: it is the definition
@@ -275,6 +286,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
             a.closed_form = fold_definitions(plain, table);
           }
           a.value = evaluate(*a.closed_form, table, w.dimension, options.digits, w.unit);
+
         }
       }
     }

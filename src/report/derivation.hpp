@@ -47,6 +47,16 @@ struct Answer {
   std::optional<Unit> unit;          // the unit the numbers are given in (SI when absent)
 };
 
+/// A parameter (or a quantity given with its value) as the JSON reports it: enough for a
+/// program to evaluate every closed form.
+struct ParameterReport {
+  std::string name, tex;
+  std::string kind;  // parameter | defined | length (a turning strand's) | given
+  std::optional<NumericValue> si;      // the value in SI
+  std::optional<NumericValue> stated;  // the value in the unit the description states
+  std::optional<GiNaC::ex> definition; // defined and length: the expression
+};
+
 struct ConditionReport {
   std::string source;
   GiNaC::ex lhs, rhs;  // as the rule states it (T_s >= 0)
@@ -82,6 +92,7 @@ struct Derivation {
   // the unknowns that are not determined alone.
   std::vector<std::pair<std::string, std::optional<NumericValue>>> minimum_norm;
   PowerCheck power;  // the power balance, checked against the solution
+  std::vector<ParameterReport> parameters;
 };
 
 struct ReportOptions {

@@ -176,11 +176,29 @@ std::string latex_document(const Derivation& d, bool full) {
 
 std::string json_document(const Derivation& d, bool full) {
   nlohmann::ordered_json j;
-  j["version"] = 1;
+  j["version"] = 2;
   j["title"] = d.title;
   j["file"] = d.file;
   j["status"] = d.status;
   j["rank"] = d.rank;
+  // Self-contained: every name a closed form may use, with its value, unit and definition.
+  j["parameters"] = nlohmann::ordered_json::array();
+  for (const auto& p : d.parameters) {
+    nlohmann::ordered_json x{{"name", p.name}, {"tex", p.tex}, {"kind", p.kind}};
+    if (p.si) {
+      x["value"] = p.si->approx;
+      x["exact"] = to_text(p.si->exact);
+      x["unit"] = p.si->unit;
+    } else {
+      x["value"] = nullptr;
+    }
+    if (p.stated) x["stated"] = {{"value", p.stated->approx}, {"exact", to_text(p.stated->exact)}, {"unit", p.stated->unit}};
+    if (p.definition) {
+      x["definition"] = to_text(*p.definition);
+      x["definition_latex"] = to_latex(*p.definition);
+    }
+    j["parameters"].push_back(x);
+  }
   j["unknowns"] = nlohmann::ordered_json::array();
   for (const auto& a : d.answers) {
     nlohmann::ordered_json u{{"name", a.name}, {"status", status_name(a.status)}};

@@ -51,7 +51,7 @@ TEST_CASE("CLI: solve --format json gives sample 12.3's numbers and parseable cl
   REQUIRE(r.code == 0);
   CHECK(r.err.empty());
   const auto j = nlohmann::json::parse(r.out);
-  CHECK(j["version"] == 1);
+  CHECK(j["version"] == 2);
   CHECK(j["status"] == "determined");
   std::map<std::string, nlohmann::json> by_name;
   for (const auto& u : j["unknowns"]) by_name[u["name"]] = u;
