@@ -159,7 +159,16 @@ int main(int argc, char** argv) {
       for (const auto& a : analyses) derivations.push_back(tackle::explain(*a, tackle::ReportOptions{digits}));
       std::vector<tackle::KeyEntry> entries;
       for (std::size_t i = 0; i < analyses.size(); ++i)
-        entries.push_back({&derivations[i], tackle::draw_variants(*analyses[i], derivations[i], variants, seed, digits)});
+        entries.push_back({&derivations[i], tackle::draw_variants(*analyses[i], derivations[i], variants, seed, digits),
+                           variants > 0});
+      // Variants asked for and none possible anywhere: an input error, not a key without them.
+      if (variants > 0 && std::all_of(entries.begin(), entries.end(), [](const auto& e) { return e.variants.empty(); })) {
+        std::vector<tackle::Diagnostic> none;
+        for (const auto& f : key_files)
+          none.push_back({{f, 1, 1}, "variants were asked for, but no parameter has a 'range' to draw them from "
+                                     "(expected, for instance, F: {value: 130, unit: N, range: [100, 160]})"});
+        throw tackle::InputError(none);
+      }
       return emit(tackle::write_key(entries, formats.at(key_format)), out);
     }
     if (isolate->parsed()) {

@@ -37,7 +37,7 @@ std::vector<Variant> draw_variants(const Analysis& a, const Derivation& d, int c
       const auto steps = static_cast<unsigned long long>(((high - low) / step).to_double() + 1e-9);
       const numeric value = low + numeric(static_cast<long>(rng() % (steps + 1))) * step;
       values[s->sym] = value * s->unit_to_si;
-      v.parameters.push_back({s->name, decimal_string(value, digits), s->unit});
+      v.parameters.push_back({s->name, decimal_string(value, digits), s->unit, value.to_double()});
     }
     for (const auto& s : table.all())
       if (s->definition) values[s->sym] = s->definition->subs(values);
@@ -54,7 +54,7 @@ std::vector<Variant> draw_variants(const Analysis& a, const Derivation& d, int c
         valid = false;
         continue;
       }
-      v.answers.push_back({ans.name, value->decimal, value->unit});
+      v.answers.push_back({ans.name, value->decimal, value->unit, value->approx});
     }
     if (valid) out.push_back(std::move(v));
   }
@@ -89,10 +89,13 @@ std::string write_key(const std::vector<KeyEntry>& entries, Format f) {
         p["answers"].push_back(x);
       }
       p["variants"] = nlohmann::ordered_json::array();
+      if (e.variants_asked && e.variants.empty()) p["no_variants"] = "no parameter of this problem has a 'range'";
       for (const auto& v : e.variants) {
         nlohmann::ordered_json x{{"index", v.index}};
-        for (const auto& q : v.parameters) x["parameters"][q.name] = {{"value", q.number}, {"unit", q.unit}};
-        for (const auto& q : v.answers) x["answers"][q.name] = {{"value", q.number}, {"unit", q.unit}};
+        // Numbers as JSON numbers, like the answers above; `decimal` as printed in the key.
+        for (const auto& q : v.parameters)
+          x["parameters"][q.name] = {{"value", q.value}, {"decimal", q.number}, {"unit", q.unit}};
+        for (const auto& q : v.answers) x["answers"][q.name] = {{"value", q.value}, {"decimal", q.number}, {"unit", q.unit}};
         p["variants"].push_back(x);
       }
       j["problems"].push_back(p);
@@ -134,7 +137,13 @@ std::string write_key(const std::vector<KeyEntry>& entries, Format f) {
         }
       }
     }
-    if (e.variants.empty()) continue;
+    if (e.variants.empty()) {
+      // Asked for, but nothing to draw from: said, not silently left out.
+      if (e.variants_asked)
+        out += latex ? "\\par\\medskip\\noindent No variants: no parameter of this problem has a \\texttt{range}.\n"
+                     : "\nNo variants: no parameter of this problem has a `range`.\n";
+      continue;
+    }
     // A table: the drawn parameters, then the answers.
     std::vector<std::string> head{"#"};
     for (const auto& q : e.variants.front().parameters) head.push_back(q.name);

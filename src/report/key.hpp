@@ -15,6 +15,7 @@ struct Quantity {
   std::string name;
   std::string number;  // "18.4615"
   std::string unit;    // "N", or empty
+  double value = 0.0;  // the same number, for JSON
   [[nodiscard]] std::string text() const { return number + (unit.empty() ? "" : " " + unit); }
 };
 
@@ -28,13 +29,14 @@ struct Variant {
 /// or of a hundredth of the range), the others kept. The same seed gives the same variants
 /// on every platform (std::mt19937_64, no library distribution). A draw that breaks a
 /// validity condition, or leaves an answer undefined, is drawn again; InputError when 1000
-/// draws cannot give a valid variant.
+/// draws cannot give a valid variant. None when no parameter has a range.
 [[nodiscard]] std::vector<Variant> draw_variants(const Analysis& a, const Derivation& d, int count,
                                                  unsigned long long seed, int digits);
 
 struct KeyEntry {
   const Derivation* derivation = nullptr;
   std::vector<Variant> variants;
+  bool variants_asked = false;  // the key says so when none could be drawn
 };
 
 [[nodiscard]] std::string write_key(const std::vector<KeyEntry>& entries, Format f);

@@ -373,3 +373,23 @@ TEST_CASE("CLI: -o and --results are written whole or not at all", "[cli][errors
   CHECK(files == 0);
   fs::remove_all(dir);
 }
+
+TEST_CASE("CLI: key variants are JSON numbers, and a problem without ranges says it has none", "[cli][key]") {
+  const std::string ex = std::string(TACKLE_SOURCE_DIR) + "/examples/";
+  const Run r = run_tackle("key " + ex + "atwood-machine.yaml " + ex + "sample-12.3-two-mass-pulley.yaml --variants 1 --format json");
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["problems"][0]["variants"].empty());
+  CHECK(j["problems"][0]["no_variants"] == "no parameter of this problem has a 'range'");
+  const auto& v = j["problems"][1]["variants"][0];
+  CHECK(v["parameters"]["F"]["value"].is_number());
+  CHECK(v["parameters"]["F"]["decimal"].is_string());
+  CHECK(v["answers"]["T"]["value"].is_number());
+  const Run md = run_tackle("key " + ex + "atwood-machine.yaml " + ex + "sample-12.3-two-mass-pulley.yaml --variants 1");
+  CHECK(md.out.find("\nNo variants: no parameter of this problem has a `range`.\n") != std::string::npos);
+  // None of the problems has a range: the request cannot be met at all.
+  const Run none = run_tackle("key " + ex + "atwood-machine.yaml --variants 2");
+  CHECK(none.code == 1);
+  CHECK(none.err == ex + "atwood-machine.yaml:1:1: variants were asked for, but no parameter has a 'range' to draw them "
+                         "from (expected, for instance, F: {value: 130, unit: N, range: [100, 160]})\n");
+}
