@@ -14,7 +14,12 @@ namespace {
 
 // The value of `e` in the layout, or nothing (with the symbols still missing named).
 std::optional<numeric> in_layout(const ex& e, const exmap& layout, std::string& missing) {
-  const ex v = evalf(e.subs(layout));
+  // The normal form's denominator first: a pole at the layout has no value (and GiNaC would
+  // throw from inside a node it is making, which leaks).
+  const ex nd = normal(e).numer_denom();
+  const ex den = evalf(nd.op(1).subs(layout));
+  if (is_a<numeric>(den) && den.is_zero()) return std::nullopt;
+  const ex v = evalf(nd.op(0).subs(layout) / den);
   if (is_a<numeric>(v) && ex_to<numeric>(v).is_real()) return ex_to<numeric>(v);
   std::set<std::string> names;
   for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)

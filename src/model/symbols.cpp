@@ -137,7 +137,11 @@ GiNaC::exmap SymbolTable::values() const {
     if (s->value) {
       m[s->sym] = *s->value;
     } else if (s->definition) {
-      const GiNaC::ex v = s->definition->subs(m);
+      // Undefined at these values (a denominator that vanishes): no value.
+      const GiNaC::ex nd = GiNaC::normal(*s->definition).numer_denom();
+      const GiNaC::ex den = GiNaC::normal(nd.op(1).subs(m));
+      if (den.is_zero()) continue;
+      const GiNaC::ex v = nd.op(0).subs(m) / den;
       bool complete = true;
       for (GiNaC::const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
         complete = complete && !GiNaC::is_a<GiNaC::symbol>(*it);

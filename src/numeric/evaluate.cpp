@@ -95,6 +95,16 @@ std::string decimal_string(const numeric& v, int digits) {
   return (v.is_negative() ? "-" : "") + out;
 }
 
+std::optional<ex> value_at(const ex& e, const exmap& values) {
+  const ex nd = normal(e).numer_denom();
+  const ex den = normal(nd.op(1).subs(values));
+  if (den.is_zero()) return std::nullopt;
+  const ex v = normal(nd.op(0).subs(values) / den);
+  for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
+    if (is_a<symbol>(*it)) return std::nullopt;
+  return v;
+}
+
 std::optional<NumericValue> evaluate_with(const ex& e, const exmap& values, std::optional<Dimension> dimension,
                                           int digits, const std::optional<Unit>& unit) {
   // A closed form may be undefined at the given numbers (a denominator c - e with c = e):

@@ -34,6 +34,11 @@ struct NumericValue {
 /// A decimal string for a real number: exact when it terminates within 15 significant
 /// digits (or `digits`, if more), else rounded to `digits` significant digits (any number of
 /// them: CLN floats at that precision).
+/// `e` at `values`, exactly (the normal form's numerator over its denominator, the
+/// denominator checked first), or nothing where it is undefined (a denominator that vanishes
+/// there) or still has a symbol. Never lets GiNaC throw from inside a new node (which leaks).
+[[nodiscard]] std::optional<GiNaC::ex> value_at(const GiNaC::ex& e, const GiNaC::exmap& values);
+
 [[nodiscard]] std::string decimal_string(const GiNaC::numeric& v, int digits = 6);
 
 }  // namespace tackle

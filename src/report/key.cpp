@@ -40,12 +40,15 @@ std::vector<Variant> draw_variants(const Analysis& a, const Derivation& d, int c
       v.parameters.push_back({s->name, decimal_string(value, digits), s->unit, value.to_double()});
     }
     for (const auto& s : table.all())
-      if (s->definition) values[s->sym] = s->definition->subs(values);
-    // Every condition must hold and every answer must have a value.
+      if (s->definition)
+        if (auto v = value_at(*s->definition, values)) values[s->sym] = *v;
+    // Every condition must hold and every answer must have a value (a draw where one is
+    // undefined is drawn again).
     bool valid = true;
     for (const auto& c : d.conditions) {
-      const ex x = evalf(c.simplified.subs(values));
-      valid = valid && is_a<numeric>(x) && ex_to<numeric>(x).is_real() && relation_holds(ex_to<numeric>(x), c.op);
+      const auto exact = value_at(c.simplified, values);
+      const ex x = exact ? evalf(*exact) : ex(0);
+      valid = valid && exact && is_a<numeric>(x) && ex_to<numeric>(x).is_real() && relation_holds(ex_to<numeric>(x), c.op);
     }
     for (const auto& ans : d.answers) {
       if (!valid || !ans.closed_form) continue;

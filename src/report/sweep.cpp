@@ -136,20 +136,26 @@ SweepResult run_sweep(const Analysis& a, const Derivation& d, const SweepSpec& s
     const numeric xv = *start + (*end - *start) * numeric(i, n - 1);
     exmap values = base;
     values[x->sym] = xv * factor;
+    // Undefined points (a denominator that vanishes there) have no value: a gap in the curve.
     for (const auto& s : table.all())
-      if (s->definition) values[s->sym] = s->definition->subs(values);
+      if (s->definition)
+        if (auto v = value_at(*s->definition, values)) values[s->sym] = *v;
     r.x.push_back(xv.to_double());
     for (std::size_t c = 0; c < curves.size(); ++c) {
-      const ex v = evalf(curves[c].subs(values));
-      r.y[c].push_back(is_a<numeric>(v) && ex_to<numeric>(v).is_real() ? std::optional<double>(ex_to<numeric>(v).to_double())
-                                                                         : std::nullopt);
+      const auto exact = value_at(curves[c], values);
+      const ex v = exact ? evalf(*exact) : ex(0);
+      r.y[c].push_back(exact && is_a<numeric>(v) && ex_to<numeric>(v).is_real()
+                           ? std::optional<double>(ex_to<numeric>(v).to_double())
+                           : std::nullopt);
     }
     bool valid = true;
     for (const auto& cond : d.conditions) {
-      // Exact at rational points (N_A is exactly 0 at h/l = 1), else a high-precision float.
-      ex v = normal(cond.simplified.subs(values));
+      // Exact at rational points (N_A is exactly 0 at h/l = 1), else a high-precision float;
+      // undefined there: not valid.
+      const auto exact = value_at(cond.simplified, values);
+      ex v = exact ? *exact : ex(0);
       if (!is_a<numeric>(v)) v = evalf(v);
-      valid = valid && is_a<numeric>(v) && ex_to<numeric>(v).is_real() && relation_holds(ex_to<numeric>(v), cond.op);
+      valid = valid && exact && is_a<numeric>(v) && ex_to<numeric>(v).is_real() && relation_holds(ex_to<numeric>(v), cond.op);
     }
     r.valid.push_back(valid);
   }

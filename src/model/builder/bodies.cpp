@@ -2,6 +2,8 @@
 // named points; the layout that tells strand directions.
 #include "model/builder/stages.hpp"
 
+#include "expr/print.hpp"
+
 namespace tackle::build {
 
 using namespace GiNaC;
@@ -120,7 +122,19 @@ void points(BuildContext& ctx) {
     pt.name = p.name.text;
     pt.at = p.name.at;
     if (p.at) {
-      if (auto pos = ctx.vector(*p.at, *ctx.table, "position of point '" + pt.name + "'", Dimension::length())) pt.position = *pos;
+      if (auto pos = ctx.vector(*p.at, *ctx.table, "position of point '" + pt.name + "'", Dimension::length())) {
+        // Undefined at the given values: reported, and the point is left at the origin so
+        // that nothing later evaluates the pole.
+        const exmap values = ctx.table->values();
+        bool defined = true;
+        for (int k = 0; k < 3; ++k)
+          if (undefined_at_values((*pos)[k], values)) {
+            ctx.diags.error(p.at->at, "position of point '" + pt.name + "' is undefined at the given values (" +
+                                          to_text((*pos)[k]) + " divides by zero there)");
+            defined = false;
+          }
+        if (defined) pt.position = *pos;
+      }
     } else if (p.on) {
       auto it = ctx.body_index.find(p.on->text);
       if (it == ctx.body_index.end()) {

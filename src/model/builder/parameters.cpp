@@ -70,7 +70,12 @@ void parameters(BuildContext& ctx) {
         (definition && definition->info(info_flags::positive)));
     ctx.table->add(p.name.text, p.tex ? std::optional<std::string>(p.tex->text) : std::nullopt, SymbolRole::parameter,
                    dim, positive, p.name.at);
-    if (definition) ctx.table->set_definition(p.name.text, *definition);
+    if (definition) {
+      ctx.table->set_definition(p.name.text, *definition);
+      if (undefined_at_values(*definition, ctx.table->values()))
+        ctx.diags.error(p.define->at, "'define' of parameter '" + p.name.text + "' is undefined at the given values (" +
+                                          to_text(*definition) + " divides by zero there)");
+    }
     ctx.table->set_unit(p.name.text, p.unit && unit ? p.unit->text : si_unit_name(dim.value_or(Dimension{})),
                         unit ? unit->to_si : numeric(1));
     if (!p.range.empty()) {

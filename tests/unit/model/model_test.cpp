@@ -337,3 +337,18 @@ connections: [{type: fixed, body: A}]
   const PowerCheck none = check_power(rest->model, rest->system, rest->solution);
   CHECK(none.status == PowerCheck::Status::holds);
 }
+
+TEST_CASE("Values: a definition or a point undefined at the given values is a located error", "[errors]") {
+  // Both made GiNaC throw (exit 3) while the model was built.
+  std::string text = raised_pulley + "find: [T]\n";
+  text.replace(text.find("  g: {value"), 0, "  c: {value: 3, unit: m}\n");
+  text.replace(text.find("  P: [0, h]"), 11, "  P: [\"h - h^2/(h - c)\", h]");
+  CHECK(test::errors_of(text) ==
+        Messages{"t.yaml:14:6: position of point 'P' is undefined at the given values (h + h^2/(c - h) divides by zero "
+                 "there)"});
+  std::string def = raised_pulley + "find: [T]\n";
+  def.replace(def.find("  g: {value"), 0, "  c: {value: 3, unit: m}\n  d: {define: \"h^2/(h - c)\"}\n");
+  CHECK(test::errors_of(def) ==
+        Messages{"t.yaml:8:16: 'define' of parameter 'd' is undefined at the given values (h^2/(h - c) divides by zero "
+                 "there)"});
+}
