@@ -110,14 +110,9 @@ std::optional<NumericValue> evaluate_with(const ex& e, const exmap& values, std:
   // A closed form may be undefined at the given numbers (a denominator c - e with c = e):
   // no number then. The denominator is checked first, so that GiNaC does not throw from
   // inside a new object (found by fuzzing: exit 3 for a description with c = e).
-  ex v;
-  try {
-    const ex nd = normal(e).numer_denom();
-    if (normal(nd.op(1).subs(values)).is_zero()) return std::nullopt;
-    v = normal(e.subs(values));
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
+  const auto at = value_at(e, values);
+  if (!at) return std::nullopt;
+  const ex v = *at;
   for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
     if (is_a<symbol>(*it)) return std::nullopt;
   NumericValue out;
