@@ -39,6 +39,16 @@ struct NumericValue {
 /// there) or still has a symbol. Never lets GiNaC throw from inside a new node (which leaks).
 [[nodiscard]] std::optional<GiNaC::ex> value_at(const GiNaC::ex& e, const GiNaC::exmap& values);
 
+/// An expression's normal form as numerator and denominator, made once for evaluating it at
+/// many points (a sweep, key variants): normal() is the costly part.
+struct NormalForm {
+  GiNaC::ex num, den;
+  explicit NormalForm(const GiNaC::ex& e);
+  [[nodiscard]] std::optional<GiNaC::ex> at(const GiNaC::exmap& values) const;
+  /// The same as a double (the denominator still checked exactly; the rest in floating point).
+  [[nodiscard]] std::optional<double> approx_at(const GiNaC::exmap& values) const;
+};
+
 [[nodiscard]] std::string decimal_string(const GiNaC::numeric& v, int digits = 6);
 
 }  // namespace tackle

@@ -20,6 +20,9 @@ std::vector<Variant> draw_variants(const Analysis& a, const Derivation& d, int c
   std::vector<Variant> out;
   if (ranged.empty() || count <= 0) return out;
   std::mt19937_64 rng(seed);
+  // Each condition's normal form once; each draw only substitutes into it.
+  std::vector<NormalForm> condition_forms;
+  for (const auto& c : d.conditions) condition_forms.emplace_back(c.simplified);
   const exmap base = table.values();
   int attempts = 0;
   while (static_cast<int>(out.size()) < count) {
@@ -45,8 +48,9 @@ std::vector<Variant> draw_variants(const Analysis& a, const Derivation& d, int c
     // Every condition must hold and every answer must have a value (a draw where one is
     // undefined is drawn again).
     bool valid = true;
-    for (const auto& c : d.conditions) {
-      const auto exact = value_at(c.simplified, values);
+    for (std::size_t k = 0; k < d.conditions.size(); ++k) {
+      const auto& c = d.conditions[k];
+      const auto exact = condition_forms[k].at(values);
       const ex x = exact ? evalf(*exact) : ex(0);
       valid = valid && exact && is_a<numeric>(x) && ex_to<numeric>(x).is_real() && relation_holds(ex_to<numeric>(x), c.op);
     }

@@ -132,6 +132,10 @@ SweepResult run_sweep(const Analysis& a, const Derivation& d, const SweepSpec& s
   const ex factor = x->unit_to_si;
   const int n = count->to_int();
   r.y.assign(curves.size(), {});
+  // Each curve's and condition's normal form once; each point only substitutes into it.
+  std::vector<NormalForm> curve_forms, condition_forms;
+  for (const auto& c : curves) curve_forms.emplace_back(c);
+  for (const auto& cond : d.conditions) condition_forms.emplace_back(cond.simplified);
   for (int i = 0; i < n; ++i) {
     const numeric xv = *start + (*end - *start) * numeric(i, n - 1);
     exmap values = base;
@@ -142,17 +146,14 @@ SweepResult run_sweep(const Analysis& a, const Derivation& d, const SweepSpec& s
         if (auto v = value_at(*s->definition, values)) values[s->sym] = *v;
     r.x.push_back(xv.to_double());
     for (std::size_t c = 0; c < curves.size(); ++c) {
-      const auto exact = value_at(curves[c], values);
-      const ex v = exact ? evalf(*exact) : ex(0);
-      r.y[c].push_back(exact && is_a<numeric>(v) && ex_to<numeric>(v).is_real()
-                           ? std::optional<double>(ex_to<numeric>(v).to_double())
-                           : std::nullopt);
+      r.y[c].push_back(curve_forms[c].approx_at(values));
     }
     bool valid = true;
-    for (const auto& cond : d.conditions) {
+    for (std::size_t k = 0; k < d.conditions.size(); ++k) {
+      const auto& cond = d.conditions[k];
       // Exact at rational points (N_A is exactly 0 at h/l = 1), else a high-precision float;
       // undefined there: not valid.
-      const auto exact = value_at(cond.simplified, values);
+      const auto exact = condition_forms[k].at(values);
       ex v = exact ? *exact : ex(0);
       if (!is_a<numeric>(v)) v = evalf(v);
       valid = valid && exact && is_a<numeric>(v) && ex_to<numeric>(v).is_real() && relation_holds(ex_to<numeric>(v), cond.op);
