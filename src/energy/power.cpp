@@ -9,18 +9,6 @@ namespace tackle {
 
 using namespace GiNaC;
 
-namespace {
-
-// The numerator of `e` reduced modulo l^2 - squared for every turning strand's length: zero
-// exactly when e vanishes wherever each length is what it stands for.
-ex on_lengths(const ex& e, const Model& m) {
-  ex n = normal(e).numer_denom().op(0).expand();
-  for (const auto& l : m.lengths) n = rem(n, pow(l.symbol, 2) - l.squared, ex_to<symbol>(l.symbol)).expand();
-  return n;
-}
-
-}  // namespace
-
 PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& sol) {
   PowerCheck c;
   if (sol.status == Solution::Status::inconsistent) {
@@ -84,7 +72,7 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
       c.reason = "the balances chosen do not give " + to_text(u);
       return c;
     }
-  c.residual = on_lengths(residual, m);
+  c.residual = normal(reduced_on_lengths(residual, m));
   if (has_trig(c.residual))
     for (const bool to_cos : {true, false})
       if (const ex t = normal(pythagoras(c.residual, to_cos)); t.is_zero()) c.residual = t;

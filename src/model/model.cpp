@@ -22,6 +22,13 @@ ex time_derivative(const ex& e, const std::vector<Body>& bodies, const std::vect
   return d.expand();
 }
 
+ex reduced_on_lengths(const ex& e, const Model& m) {
+  if (m.lengths.empty()) return e;
+  ex n = normal(e).numer_denom().op(0).expand();
+  for (const auto& l : m.lengths) n = rem(n, pow(l.symbol, 2) - l.squared, ex_to<symbol>(l.symbol)).expand();
+  return n;
+}
+
 Model build_model(const Description& d, const RuleSet& rules) {
   build::BuildContext ctx(d, rules);
   Model& m = ctx.m;

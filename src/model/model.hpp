@@ -123,6 +123,11 @@ struct Model {
 [[nodiscard]] GiNaC::ex time_derivative(const GiNaC::ex& e, const std::vector<Body>& bodies,
                                         const std::vector<TurningLength>& lengths);
 
+/// The numerator of `e` reduced modulo l^2 - squared for each turning length (monic in l, so
+/// the remainder is unique): zero exactly when `e` vanishes wherever every length is what it
+/// stands for. Zero tests of closed forms through turning strands go through this.
+[[nodiscard]] GiNaC::ex reduced_on_lengths(const GiNaC::ex& e, const Model& m);
+
 /// Builds the model; every problem in the description is reported at once (InputError).
 [[nodiscard]] Model build_model(const Description& d, const RuleSet& rules);
 

@@ -2,6 +2,7 @@
 
 #include <set>
 
+#include "expr/normal_form.hpp"
 #include "expr/print.hpp"
 #include "expr/trig.hpp"
 #include "model/model.hpp"
@@ -16,10 +17,9 @@ namespace {
 std::optional<numeric> in_layout(const ex& e, const exmap& layout, std::string& missing) {
   // The normal form's denominator first: a pole at the layout has no value (and GiNaC would
   // throw from inside a node it is making, which leaks).
-  const ex nd = normal(e).numer_denom();
-  const ex den = evalf(nd.op(1).subs(layout));
-  if (is_a<numeric>(den) && den.is_zero()) return std::nullopt;
-  const ex v = evalf(nd.op(0).subs(layout) / den);
+  const NormalForm form(e);
+  if (form.undefined_at(layout)) return std::nullopt;
+  const ex v = evalf(form.num.subs(layout) / form.den.subs(layout));
   if (is_a<numeric>(v) && ex_to<numeric>(v).is_real()) return ex_to<numeric>(v);
   std::set<std::string> names;
   for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)

@@ -1,5 +1,7 @@
 #include "model/symbols.hpp"
 
+#include "expr/normal_form.hpp"
+
 #include <set>
 
 namespace tackle {
@@ -138,10 +140,9 @@ GiNaC::exmap SymbolTable::values() const {
       m[s->sym] = *s->value;
     } else if (s->definition) {
       // Undefined at these values (a denominator that vanishes): no value.
-      const GiNaC::ex nd = GiNaC::normal(*s->definition).numer_denom();
-      const GiNaC::ex den = GiNaC::normal(nd.op(1).subs(m));
-      if (den.is_zero()) continue;
-      const GiNaC::ex v = nd.op(0).subs(m) / den;
+      const NormalForm form(*s->definition);
+      if (form.undefined_at(m)) continue;
+      const GiNaC::ex v = form.num.subs(m) / form.den.subs(m);
       bool complete = true;
       for (GiNaC::const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
         complete = complete && !GiNaC::is_a<GiNaC::symbol>(*it);

@@ -8,6 +8,8 @@
 
 #include <ginac/ginac.h>
 
+#include "expr/normal_form.hpp"
+
 #include "core/units.hpp"
 #include "model/symbols.hpp"
 
@@ -38,16 +40,6 @@ struct NumericValue {
 /// denominator checked first), or nothing where it is undefined (a denominator that vanishes
 /// there) or still has a symbol. Never lets GiNaC throw from inside a new node (which leaks).
 [[nodiscard]] std::optional<GiNaC::ex> value_at(const GiNaC::ex& e, const GiNaC::exmap& values);
-
-/// An expression's normal form as numerator and denominator, made once for evaluating it at
-/// many points (a sweep, key variants): normal() is the costly part.
-struct NormalForm {
-  GiNaC::ex num, den;
-  explicit NormalForm(const GiNaC::ex& e);
-  [[nodiscard]] std::optional<GiNaC::ex> at(const GiNaC::exmap& values) const;
-  /// The same as a double (the denominator still checked exactly; the rest in floating point).
-  [[nodiscard]] std::optional<double> approx_at(const GiNaC::exmap& values) const;
-};
 
 [[nodiscard]] std::string decimal_string(const GiNaC::numeric& v, int digits = 6);
 

@@ -11,6 +11,7 @@ std::unique_ptr<const Analysis> analyze(const Description& d, const RuleSet& rul
   a->model = build_model(d, rules);
   a->system = build_equations(a->model);
   a->solution = solve(a->model, a->system);
+  a->power = check_power(a->model, a->system, a->solution);
   return a;
 }
 
@@ -33,6 +34,7 @@ std::unique_ptr<const Analysis> analyze_text(const std::string& text, const std:
   a->system = build_equations(a->model);
   if (auto problems = check_dimensions(a->model, a->system); !problems.empty()) throw InputError(problems);
   a->solution = solve(a->model, a->system);
+  a->power = check_power(a->model, a->system, a->solution);
   return a;
 }
 
@@ -41,7 +43,7 @@ std::unique_ptr<const Analysis> analyze_file(const std::string& path, const Rule
 }
 
 Derivation explain(const Analysis& a, const ReportOptions& options) {
-  Derivation d = explain(a.model, a.system, a.solution, options);
+  Derivation d = explain(a.model, a.system, a.solution, a.power, options);
   if (a.model.sweep) d.figure_pgfplots = sweep_pgfplots(run_sweep(a, d, sweep_spec(*a.model.sweep), a.model.sweep->at));
   return d;
 }

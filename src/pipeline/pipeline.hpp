@@ -8,6 +8,7 @@
 #include "description/description.hpp"
 #include "equations/equations.hpp"
 #include "model/model.hpp"
+#include "energy/power.hpp"
 #include "report/derivation.hpp"
 #include "ruleset/ruleset.hpp"
 #include "solve/solve.hpp"
@@ -18,6 +19,7 @@ struct Analysis {
   Model model;
   EquationSystem system;
   Solution solution;
+  PowerCheck power;  // the power balance checked against the solution (src/energy/)
 };
 
 [[nodiscard]] std::unique_ptr<const Analysis> analyze(const Description& d, const RuleSet& rules);

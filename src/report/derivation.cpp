@@ -60,7 +60,8 @@ ex fold_definitions(const ex& e, const SymbolTable& table) {
   return best;
 }
 
-Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol, const ReportOptions& options) {
+Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol, const PowerCheck& power_check,
+                   const ReportOptions& options) {
   Derivation d;
   d.title = m.title;
   d.file = m.file;
@@ -316,14 +317,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     // least-norm member (found by fuzzing, where it was an internal error). Each number is
     // taken from the normal form's numerator and denominator, the denominator checked first:
     // GiNaC would throw from inside a node it is making, and that node would leak.
-    auto number = [&](const ex& x) -> std::optional<double> {
-      const ex nd = normal(x).numer_denom();
-      const ex den = normal(nd.op(1).subs(values));
-      if (den.is_zero()) return std::nullopt;
-      const ex v = evalf(nd.op(0).subs(values) / den);
-      if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
-      return ex_to<numeric>(v).to_double();
-    };
+    auto number = [&](const ex& x) { return NormalForm(x).approx_at(values); };
     for (std::size_t i = 0; i < family.size() && numeric_family; ++i) {
       const ex g = family[i].subs(sol.general).expand();
       const auto base = number(g.subs(zero_free));
@@ -435,8 +429,9 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       d.conditions.push_back(r);
     }
   }
-  // The power balance: an independent check, from the model's velocities and loads.
-  d.power = check_power(m, s, sol);
+  // The power balance: an independent check, made in the analysis from the model's velocities
+  // and loads; narrated here.
+  d.power = power_check;
   if (d.power.status == PowerCheck::Status::not_applicable) {
     section("Check: power balance");
     text(d.power.reason == "every body is at rest"

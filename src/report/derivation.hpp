@@ -99,7 +99,9 @@ struct ReportOptions {
   int digits = 6;  // significant digits of the numbers
 };
 
-[[nodiscard]] Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
+/// The derivation of a solved problem, in the book's order; `power_check` is the power-balance
+/// check made in the analysis (narrated here, not computed).
+[[nodiscard]] Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol, const PowerCheck& power_check,
                                  const ReportOptions& options = {});
 
 /// An expression with each defined parameter folded back in where that is shorter

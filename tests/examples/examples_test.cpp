@@ -49,15 +49,8 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
         return e;
       };
       // A turning strand's length l is a symbol with l^2 a polynomial (l_CP^2 = a^2 +
-      // (h - z)^2): the difference's numerator is reduced modulo each l^2 - squared (monic in
-      // l, so the remainder is unique) and must then vanish as a polynomial.
-      auto on_lengths = [&](const ex& e) {
-        if (analysis->model.lengths.empty()) return e;
-        ex n = normal(e).numer_denom().op(0).expand();
-        for (const auto& l : analysis->model.lengths)
-          n = rem(n, pow(l.symbol, 2) - l.squared, ex_to<symbol>(l.symbol)).expand();
-        return n;
-      };
+      // (h - z)^2): the difference is reduced modulo each l^2 - squared and must then vanish.
+      auto on_lengths = [&](const ex& e) { return reduced_on_lengths(e, analysis->model); };
       std::mt19937 rng(7);
       std::uniform_int_distribution<int> num(1, 60), den(1, 7);
       for (const auto& answer : d.answers) {

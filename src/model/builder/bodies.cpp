@@ -2,6 +2,7 @@
 // named points; the layout that tells strand directions.
 #include "model/builder/stages.hpp"
 
+#include "expr/normal_form.hpp"
 #include "expr/print.hpp"
 
 namespace tackle::build {
@@ -128,7 +129,7 @@ void points(BuildContext& ctx) {
         const exmap values = ctx.table->values();
         bool defined = true;
         for (int k = 0; k < 3; ++k)
-          if (undefined_at_values((*pos)[k], values)) {
+          if (NormalForm((*pos)[k]).undefined_at(values)) {
             ctx.diags.error(p.at->at, "position of point '" + pt.name + "' is undefined at the given values (" +
                                           to_text((*pos)[k]) + " divides by zero there)");
             defined = false;

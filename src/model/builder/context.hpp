@@ -71,11 +71,6 @@ struct PendingCheck {
   std::string what;
 };
 
-/// True when `e`'s denominator vanishes at `values` (its value there is undefined).
-[[nodiscard]] inline bool undefined_at_values(const GiNaC::ex& e, const GiNaC::exmap& values) {
-  return GiNaC::normal(GiNaC::normal(e).numer_denom().op(1).subs(values)).is_zero();
-}
-
 struct BuildContext {
   BuildContext(const Description& desc, const RuleSet& rs) : d(desc), rules(rs) {}
   const Description& d;

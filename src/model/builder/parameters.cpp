@@ -4,6 +4,7 @@
 
 #include <set>
 
+#include "expr/normal_form.hpp"
 #include "expr/print.hpp"
 
 namespace tackle::build {
@@ -72,7 +73,7 @@ void parameters(BuildContext& ctx) {
                    dim, positive, p.name.at);
     if (definition) {
       ctx.table->set_definition(p.name.text, *definition);
-      if (undefined_at_values(*definition, ctx.table->values()))
+      if (NormalForm(*definition).undefined_at(ctx.table->values()))
         ctx.diags.error(p.define->at, "'define' of parameter '" + p.name.text + "' is undefined at the given values (" +
                                           to_text(*definition) + " divides by zero there)");
     }

@@ -37,14 +37,6 @@ given:
   dot(x): 0
 )";
 
-// The numerator of `e` reduced modulo l^2 - squared for each turning length (zero exactly
-// when e vanishes wherever the lengths are what they stand for).
-ex on_lengths(const ex& e, const Model& m) {
-  ex n = normal(e).numer_denom().op(0).expand();
-  for (const auto& l : m.lengths) n = rem(n, pow(l.symbol, 2) - l.squared, ex_to<symbol>(l.symbol)).expand();
-  return n;
-}
-
 }  // namespace
 
 TEST_CASE("Path: a strand that turns keeps its length as a symbol, l_CP^2 = h^2 + x^2", "[path]") {
@@ -75,7 +67,7 @@ TEST_CASE("Path: a strand that turns keeps its length as a symbol, l_CP^2 = h^2 
   for (int i = 0; i < 4; ++i) {
     INFO(d.answers[i].name << " = " << to_text(*d.answers[i].closed_form));
     REQUIRE(d.answers[i].closed_form);
-    CHECK(on_lengths(*d.answers[i].closed_form - expected[i], m).is_zero());
+    CHECK(normal(reduced_on_lengths(*d.answers[i].closed_form - expected[i], m)).is_zero());
   }
   // At x = -4 m from rest: l_CP = 5 m, m ddot(x) = 4 T/5, T = M (g - 4 ddot(x)/5).
   REQUIRE(d.answers[0].value);

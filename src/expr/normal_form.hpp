@@ -1,0 +1,25 @@
+// An expression's normal form as numerator and denominator, for evaluating it where a
+// denominator may vanish. The denominator is always checked first: substituting into a pole
+// makes GiNaC throw from inside a node it is making, and that node leaks (found by fuzzing
+// and the sanitizers). Made once, a form is evaluated at many points (a sweep, key variants):
+// normal() is the costly part.
+#pragma once
+
+#include <optional>
+
+#include <ginac/ginac.h>
+
+namespace tackle {
+
+struct NormalForm {
+  GiNaC::ex num, den;
+  explicit NormalForm(const GiNaC::ex& e);
+  /// True when the denominator vanishes at `values` (the expression is undefined there).
+  [[nodiscard]] bool undefined_at(const GiNaC::exmap& values) const;
+  /// The exact value at `values`; nothing where undefined or where a symbol is left.
+  [[nodiscard]] std::optional<GiNaC::ex> at(const GiNaC::exmap& values) const;
+  /// The same as a double (the denominator still checked exactly; the rest in floating point).
+  [[nodiscard]] std::optional<double> approx_at(const GiNaC::exmap& values) const;
+};
+
+}  // namespace tackle
