@@ -10,11 +10,52 @@ NormalForm::NormalForm(const ex& e) {
   den = nd.op(1);
 }
 
-bool NormalForm::undefined_at(const exmap& values) const { return normal(den.subs(values)).is_zero(); }
+namespace {
+
+// True when an exact number has a pole inside it that exact arithmetic does not see: a
+// denominator such as sqrt(20) - 2*sqrt(5) (zero, though GiNaC keeps it unevaluated), or log
+// or tan at such a point. evalf() would throw there from inside a new node, which leaks
+// (found by fuzzing). Inner parts are checked first, so that evaluating a part never meets a
+// pole of its own.
+bool has_hidden_pole(const ex& e) {
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (has_hidden_pole(e.op(i))) return true;
+  // Zero, or a sum whose terms cancel to within rounding (relative to their sizes).
+  auto near_zero = [](const ex& x) {
+    const ex v = evalf(x);
+    if (!is_a<numeric>(v)) return false;
+    const numeric size = abs(ex_to<numeric>(v));
+    if (size.is_zero()) return true;
+    if (!is_a<add>(x)) return false;
+    numeric terms = 0;
+    for (std::size_t i = 0; i < x.nops(); ++i) {
+      const ex t = evalf(x.op(i));
+      if (!is_a<numeric>(t)) return false;
+      terms += abs(ex_to<numeric>(t));
+    }
+    return size < terms * numeric(1, 1000000000000LL);
+  };
+  if (is_a<power>(e) && is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_negative()) return near_zero(e.op(0));
+  if (is_ex_the_function(e, log)) return near_zero(e.op(0));
+  if (is_ex_the_function(e, tan)) return near_zero(cos(e.op(0)));
+  return false;
+}
+
+}  // namespace
+
+bool has_pole_at(const ex& e, const exmap& values) {
+  const ex v = e.subs(values);
+  return has_hidden_pole(v);
+}
+
+bool NormalForm::undefined_at(const exmap& values) const {
+  const ex d = normal(den.subs(values));
+  return d.is_zero() || has_hidden_pole(d) || has_hidden_pole(num.subs(values) / d);
+}
 
 std::optional<ex> NormalForm::at(const exmap& values) const {
+  if (undefined_at(values)) return std::nullopt;
   const ex d = normal(den.subs(values));
-  if (d.is_zero()) return std::nullopt;
   const ex v = normal(num.subs(values) / d);
   for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
     if (is_a<symbol>(*it)) return std::nullopt;
@@ -22,8 +63,8 @@ std::optional<ex> NormalForm::at(const exmap& values) const {
 }
 
 std::optional<double> NormalForm::approx_at(const exmap& values) const {
+  if (undefined_at(values)) return std::nullopt;
   const ex d = normal(den.subs(values));
-  if (d.is_zero()) return std::nullopt;
   const ex v = evalf(num.subs(values) / d);
   if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
   return ex_to<numeric>(v).to_double();

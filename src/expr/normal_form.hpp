@@ -11,10 +11,15 @@
 
 namespace tackle {
 
+/// True when `e` at `values` has a pole that exact arithmetic does not see (a denominator
+/// such as sqrt(20) - 2*sqrt(5), which is zero); evaluating it numerically would throw.
+[[nodiscard]] bool has_pole_at(const GiNaC::ex& e, const GiNaC::exmap& values);
+
 struct NormalForm {
   GiNaC::ex num, den;
   explicit NormalForm(const GiNaC::ex& e);
-  /// True when the denominator vanishes at `values` (the expression is undefined there).
+  /// True when the denominator vanishes at `values` (the expression is undefined there),
+  /// exactly or hidden in radicals.
   [[nodiscard]] bool undefined_at(const GiNaC::exmap& values) const;
   /// The exact value at `values`; nothing where undefined or where a symbol is left.
   [[nodiscard]] std::optional<GiNaC::ex> at(const GiNaC::exmap& values) const;

@@ -107,6 +107,7 @@ std::optional<NumericValue> evaluate_with(const ex& e, const exmap& values, std:
   const ex v = *at;
   for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
     if (is_a<symbol>(*it)) return std::nullopt;
+  if (has_pole_at(v, {})) return std::nullopt;
   NumericValue out;
   out.si = v;
   ex shown = v;

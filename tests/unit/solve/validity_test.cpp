@@ -1,9 +1,12 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
+#include "expr/normal_form.hpp"
 #include "expr/print.hpp"
+#include "numeric/evaluate.hpp"
 #include "../../support/helpers.hpp"
 
 using namespace tackle;
@@ -121,4 +124,22 @@ TEST_CASE("Validity: the front-wheel-drive car's largest acceleration is found u
     CHECK(std::count(all.begin(), all.end(), "a <= g*l_r*mu/(h*mu + l_f + l_r)") == 1);
     CHECK(std::count(all.begin(), all.end(), "a <= g*l_r/h") == 1);
   }
+}
+
+TEST_CASE("Values: a pole hidden in radicals gives no number instead of an internal error", "[numeric][fuzz]") {
+  // Found by fuzzing: a suitcase with the tilted normal [2, 1] and mu = 1/2 has closed forms
+  // over (mu*sqrt(80) - 2*sqrt(5)), which is zero there although GiNaC keeps it unevaluated;
+  // evalf() threw from inside a new node (exit 3).
+  const GiNaC::possymbol mu("mu");
+  const GiNaC::ex e = 1 / (mu * GiNaC::sqrt(GiNaC::ex(80)) - 2 * GiNaC::sqrt(GiNaC::ex(5)));
+  const GiNaC::exmap at{{mu, GiNaC::numeric(1, 2)}};
+  CHECK(NormalForm(e).undefined_at(at));
+  CHECK_FALSE(NormalForm(e).at(at));
+  CHECK_FALSE(NormalForm(e).approx_at(at));
+  CHECK_FALSE(evaluate_with(e, at, std::nullopt));
+  CHECK(has_pole_at(e, at));
+  // Elsewhere it has its number.
+  const GiNaC::exmap other{{mu, GiNaC::numeric(1)}};
+  REQUIRE(evaluate_with(e, other, std::nullopt));
+  CHECK(evaluate_with(e, other, std::nullopt)->approx == Approx(1 / (std::sqrt(80.0) - 2 * std::sqrt(5.0))));
 }
