@@ -288,6 +288,44 @@ struct Reader {
     }
   }
 
+  void read_motion(const YAML::Node& n) {
+    if (!check_map(n, {"coordinates", "initial", "until", "plot"}, "'motion'", file, diags)) return;
+    MotionDesc mo;
+    mo.at = where(n, file);
+    if (auto c = n["coordinates"])
+      if (auto items = scalar_list(c, "'coordinates' of 'motion'", file, diags)) mo.coordinates = *items;
+    if (auto init = n["initial"]) {
+      if (!init.IsMap()) {
+        diags.error(where(init, file), "'initial' of 'motion' is " + yaml::kind_name(init) +
+                                           " (expected a mapping of coordinates and rates to values, e.g. {y: y_0, dot(y): 0})");
+      } else {
+        yaml::check_unique_keys(init, "'initial' of 'motion'", file, diags);
+        std::set<std::string> seen;
+        for (const auto& kv : init) {
+          if (!seen.insert(kv.first.Scalar()).second) continue;
+          if (auto v = scalar(kv.second, "initial value of '" + kv.first.Scalar() + "'", file, diags))
+            mo.initial.emplace_back(key_text(kv.first), *v);
+        }
+      }
+    } else {
+      diags.error(mo.at, "'motion' has no 'initial' (expected the coordinates' values and rates at t = 0, e.g. {y: y_0, dot(y): 0})");
+    }
+    if (auto u = n["until"]) {
+      if (u.IsMap()) {
+        if (check_map(u, {"value", "unit"}, "'until' of 'motion'", file, diags)) {
+          mo.until = opt_scalar(u, "value", "'until' of 'motion'");
+          mo.until_unit = opt_scalar(u, "unit", "'until' of 'motion'");
+          if (!mo.until) diags.error(where(u, file), "'until' of 'motion' has no 'value' (expected, e.g., {value: 2, unit: s})");
+        }
+      } else {
+        mo.until = scalar(u, "'until' of 'motion'", file, diags);
+      }
+    }
+    if (auto p = n["plot"])
+      if (auto items = scalar_list(p, "'plot' of 'motion'", file, diags)) mo.plot = *items;
+    d.motion = std::move(mo);
+  }
+
   void read_derive(const YAML::Node& n) {
     if (!n.IsSequence()) {
       diags.error(where(n, file), "'derive' is " + yaml::kind_name(n) + " (expected a list of balances)");
@@ -346,7 +384,7 @@ DescriptionRead read_description_text(const std::string& text, const std::string
   check_map(root,
             {"title", "source", "axes", "parameters", "gravity", "bodies", "points", "connections", "loads",
              "strings", "layout", "given", "find", "derive", "expected", "expected_combinations", "expected_conditions", "expected_free", "expected_power",
-             "notes", "sweep"},
+             "notes", "sweep", "motion", "expected_motion"},
             "the description", file, diags);
   if (auto t = root["title"]) {
     if (auto s = scalar(t, "'title'", file, diags)) d.title = *s;
@@ -395,6 +433,7 @@ DescriptionRead read_description_text(const std::string& text, const std::string
       d.sweep = sd;
     }
   }
+  if (auto mo = root["motion"]) r.read_motion(mo);
   out.problems = diags.items();
   return out;
 }

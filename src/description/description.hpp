@@ -104,6 +104,17 @@ struct SweepDesc {
   Location at;
 };
 
+/// Motion in time (`motion:`): the coordinates the motion is described by, their values and
+/// rates at t = 0, and the defaults of `tackle simulate`.
+struct MotionDesc {
+  std::vector<Text> coordinates;                 // empty: the given coordinates
+  std::vector<std::pair<Text, Text>> initial;    // coordinate or rate -> expression in the parameters (SI)
+  std::optional<Text> until;                     // simulate: the end time (a number in s, or value + unit)
+  std::optional<Text> until_unit;
+  std::vector<Text> plot;                        // simulate: quantities to tabulate and plot
+  Location at;
+};
+
 struct Description {
   std::string file;
   Text title;
@@ -121,6 +132,7 @@ struct Description {
   std::vector<FindDesc> find;
   std::vector<DeriveDesc> derive;  // empty: tackle chooses a complete set
   std::optional<SweepDesc> sweep;  // a default for `tackle sweep`, and a figure in LaTeX reports
+  std::optional<MotionDesc> motion;  // motion in time (equations of motion, response, simulate)
 };
 
 /// A description and the problems found while reading it; what could be read is kept so that

@@ -22,7 +22,7 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
   for (std::size_t i = 0; i < m.bodies.size(); ++i) {
     const Body& b = m.bodies[i];
     if (!b.coord.is_zero()) {
-      for (int k = 0; k < 3; ++k) velocity[i][k] = time_derivative(b.cm[k], m.bodies, m.lengths);
+      for (int k = 0; k < 3; ++k) velocity[i][k] = time_derivative(b.cm[k], m.bodies, m.lengths, m.time);
       if (m.dims() == 1) velocity[i] = {b.rate, 0, 0};
       moving = true;
     } else if (!is_zero_vec(b.acceleration)) {

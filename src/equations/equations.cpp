@@ -8,7 +8,7 @@ namespace tackle {
 
 using namespace GiNaC;
 
-ex time_derivative(const ex& e, const Model& m) { return tackle::time_derivative(e, m.bodies, m.lengths); }
+ex time_derivative(const ex& e, const Model& m) { return tackle::time_derivative(e, m.bodies, m.lengths, m.time); }
 
 namespace {
 

@@ -320,12 +320,17 @@ class Parser {
       return tan(a);
     }
     if (f == "exp") return exp(one_arg());
+    if (f == "asin") return asin(one_arg());
+    if (f == "acos") return acos(one_arg());
+    if (f == "atan") return atan(one_arg());
+    if (f == "sinh") return sinh(one_arg());
+    if (f == "cosh") return cosh(one_arg());
     if (f == "log") {
       const ex a = one_arg();
       if (a.is_zero()) fail(name.column, "log is undefined at 0");
       return log(a);
     }
-    fail(name.column, "unknown function '" + f + "' (known: sqrt, abs, sin, cos, tan, exp, log, dot, ddot, unit, norm, cross, inner, perp1, perp2)");
+    fail(name.column, "unknown function '" + f + "' (known: sqrt, abs, sin, cos, tan, asin, acos, atan, sinh, cosh, exp, log, dot, ddot, unit, norm, cross, inner, perp1, perp2)");
   }
 
   ex primary() {

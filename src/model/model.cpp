@@ -9,8 +9,8 @@ namespace tackle {
 
 using namespace GiNaC;
 
-ex time_derivative(const ex& e, const std::vector<Body>& bodies, const std::vector<TurningLength>& lengths) {
-  ex d = 0;
+ex time_derivative(const ex& e, const std::vector<Body>& bodies, const std::vector<TurningLength>& lengths, const ex& time) {
+  ex d = is_a<symbol>(time) ? e.diff(ex_to<symbol>(time)) : ex(0);
   for (const auto& b : bodies) {
     if (b.coord.is_zero()) continue;
     d += e.diff(ex_to<symbol>(b.coord)) * b.rate + e.diff(ex_to<symbol>(b.rate)) * b.accel;
@@ -18,7 +18,7 @@ ex time_derivative(const ex& e, const std::vector<Body>& bodies, const std::vect
   // d l/dt = d(l^2)/dt / (2 l), with l^2 a polynomial in the coordinates.
   for (const auto& l : lengths)
     if (e.has(l.symbol))
-      d += e.diff(ex_to<symbol>(l.symbol)) * time_derivative(l.squared, bodies, {}) / (2 * l.symbol);
+      d += e.diff(ex_to<symbol>(l.symbol)) * time_derivative(l.squared, bodies, {}, time) / (2 * l.symbol);
   return d.expand();
 }
 
@@ -44,6 +44,7 @@ Model build_model(const Description& d, const RuleSet& rules) {
   build::given_and_find(ctx);
   build::constraint_constants(ctx);
   build::derive(ctx);
+  build::motion(ctx);
   m.sweep = d.sweep;
   ctx.diags.throw_if_any();
   m.symbols = ctx.table;

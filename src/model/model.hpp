@@ -95,6 +95,24 @@ struct TurningLength {
   GiNaC::ex squared;
 };
 
+/// Motion in time, as asked for by `motion:`: the independent coordinates (as many as the
+/// degrees of freedom), their values and rates at t = 0, and simulate's defaults.
+struct MotionSpec {
+  std::vector<GiNaC::ex> coordinates;  // q: independent, listed or chosen (given ones first)
+  std::vector<GiNaC::ex> rates;        // dot(q)
+  std::vector<GiNaC::ex> accelerations;  // ddot(q)
+  std::vector<int> bodies;             // the body each coordinate belongs to
+  std::size_t moving = 0;              // coordinates of moving bodies in all
+  // Values at t = 0 (SI expressions in the parameters), of the independent coordinates and
+  // rates, and of any dependent coordinate the description gives.
+  GiNaC::exmap initial;
+  std::vector<std::pair<GiNaC::ex, Location>> initial_at;  // where each was written
+  std::optional<GiNaC::ex> until;      // seconds
+  std::vector<Text> plot;
+  Location at;
+  GiNaC::ex lambda, zeta, omega_d;     // symbols: natural frequency, damping ratio, damped frequency
+};
+
 struct Model {
   std::string file;
   std::string title;
@@ -116,12 +134,14 @@ struct Model {
   std::vector<Wanted> wanted;
   std::vector<Selection> derive;      // empty: a complete set
   std::optional<SweepDesc> sweep;     // as described (checked when it is run)
+  GiNaC::ex time = 0;                 // t (0 when the description uses the name t itself)
+  std::optional<MotionSpec> motion;
 };
 
-/// d/dt of an expression in the bodies' coordinates and rates and the turning lengths (the
-/// chain rule).
+/// d/dt of an expression in the bodies' coordinates and rates, the turning lengths and time
+/// itself (the chain rule; `time` is t, or 0 when nothing depends on time explicitly).
 [[nodiscard]] GiNaC::ex time_derivative(const GiNaC::ex& e, const std::vector<Body>& bodies,
-                                        const std::vector<TurningLength>& lengths);
+                                        const std::vector<TurningLength>& lengths, const GiNaC::ex& time = 0);
 
 /// The numerator of `e` reduced modulo l^2 - squared for each turning length (monic in l, so
 /// the remainder is unique): zero exactly when `e` vanishes wherever every length is what it

@@ -17,7 +17,9 @@
 
 namespace tackle {
 
-enum class SymbolRole { parameter, coordinate, rate, acceleration, unknown, defined };
+// time: t. motion: a quantity of the motion in time that the motion stage defines (the
+// natural frequency lambda, the damping ratio zeta, the damped frequency omega_d).
+enum class SymbolRole { parameter, coordinate, rate, acceleration, unknown, defined, time, motion };
 
 struct SymbolInfo {
   std::string name;

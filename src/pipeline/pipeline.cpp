@@ -6,12 +6,24 @@
 
 namespace tackle {
 
+namespace {
+
+// Motion in time, after the instant; a motion that cannot be followed is an input error at
+// the description's 'motion'.
+void follow_motion(Analysis& a) {
+  a.motion = analyze_motion(a.model, a.system, a.solution);
+  if (a.motion && !a.motion->problem.empty()) throw InputError({{a.model.motion->at, a.motion->problem}});
+}
+
+}  // namespace
+
 std::unique_ptr<const Analysis> analyze(const Description& d, const RuleSet& rules) {
   auto a = std::make_unique<Analysis>();
   a->model = build_model(d, rules);
   a->system = build_equations(a->model);
   a->solution = solve(a->model, a->system);
   a->power = check_power(a->model, a->system, a->solution);
+  follow_motion(*a);
   return a;
 }
 
@@ -35,6 +47,7 @@ std::unique_ptr<const Analysis> analyze_text(const std::string& text, const std:
   if (auto problems = check_dimensions(a->model, a->system); !problems.empty()) throw InputError(problems);
   a->solution = solve(a->model, a->system);
   a->power = check_power(a->model, a->system, a->solution);
+  follow_motion(*a);
   return a;
 }
 
@@ -44,6 +57,10 @@ std::unique_ptr<const Analysis> analyze_file(const std::string& path, const Rule
 
 Derivation explain(const Analysis& a, const ReportOptions& options) {
   Derivation d = explain(a.model, a.system, a.solution, a.power, options);
+  if (a.motion) {
+    narrate_motion(d, a.model, *a.motion, options);
+    d.motion = &*a.motion;
+  }
   if (a.model.sweep) d.figure_pgfplots = sweep_pgfplots(run_sweep(a, d, sweep_spec(*a.model.sweep), a.model.sweep->at));
   return d;
 }

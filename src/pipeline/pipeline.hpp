@@ -9,6 +9,7 @@
 #include "equations/equations.hpp"
 #include "model/model.hpp"
 #include "energy/power.hpp"
+#include "motion/motion.hpp"
 #include "report/derivation.hpp"
 #include "ruleset/ruleset.hpp"
 #include "solve/solve.hpp"
@@ -20,6 +21,7 @@ struct Analysis {
   EquationSystem system;
   Solution solution;
   PowerCheck power;  // the power balance checked against the solution (src/energy/)
+  std::optional<Motion> motion;  // motion in time, when the description asks for it (src/motion/)
 };
 
 [[nodiscard]] std::unique_ptr<const Analysis> analyze(const Description& d, const RuleSet& rules);

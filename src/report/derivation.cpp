@@ -1,4 +1,5 @@
 #include "report/derivation.hpp"
+#include "report/narrator.hpp"
 
 #include <algorithm>
 #include <tuple>
@@ -70,32 +71,18 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   d.unknowns = s.unknowns;
   d.system = &s;
   const SymbolTable& table = *m.symbols;
-  auto step = [&](Step::Kind kind, std::string t) {
-    Step st;
-    st.kind = kind;
-    st.text = std::move(t);
-    d.steps.push_back(std::move(st));
-    return &d.steps.back();
-  };
-  auto section = [&](std::string t) { step(Step::Kind::section, std::move(t)); };
-  auto text = [&](std::string t) { step(Step::Kind::text, std::move(t)); };
-  // Prose with expressions: each "{}" in `t` is typeset from the next of `math`.
-  auto text_with = [&](std::string t, std::vector<ex> math) {
-    Step* st = step(Step::Kind::text, std::move(t));
-    st->math = std::move(math);
-  };
-  auto list_of = [](std::size_t n) {
+  Narrator n{d, table};
+  auto step = [&](Step::Kind kind, std::string t) { return n.step(kind, std::move(t)); };
+  auto section = [&](std::string t) { n.section(std::move(t)); };
+  auto text = [&](std::string t) { n.text(std::move(t)); };
+  auto text_with = [&](std::string t, std::vector<ex> math) { n.text_with(std::move(t), std::move(math)); };
+  auto list_of = [](std::size_t k) {
     std::string s;
-    for (std::size_t i = 0; i < n; ++i) s += i ? ", {}" : "{}";
+    for (std::size_t i = 0; i < k; ++i) s += i ? ", {}" : "{}";
     return s;
   };
-  auto bullet = [&](std::string t) { step(Step::Kind::bullet, std::move(t)); };
-  auto equation = [&](std::string label, ex lhs, ex rhs) {
-    Step* st = step(Step::Kind::equation, std::move(label));
-    st->lhs = fold_definitions(lhs, table);
-    st->rhs = fold_definitions(rhs, table);
-    return st;
-  };
+  auto bullet = [&](std::string t) { n.bullet(std::move(t)); };
+  auto equation = [&](std::string label, ex lhs, ex rhs) { return n.equation(std::move(label), lhs, rhs); };
 
   section("Model");
   for (const auto& a : m.assumptions) bullet("Assumed: " + a + ".");
@@ -266,7 +253,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
         // A closed form may contain parameters and given quantities only: anything else (a
         // velocity asked for while only accelerations are solved) is what is missing.
         for (const auto& sym : table.all()) {
-          const bool known = sym->role == SymbolRole::parameter || sym->role == SymbolRole::defined ||
+          const bool known = sym->role == SymbolRole::parameter || sym->role == SymbolRole::defined || sym->role == SymbolRole::time ||
                              std::find(m.given.begin(), m.given.end(), sym->sym) != m.given.end();
           if (!known && general.has(sym->sym)) a.missing.push_back(sym->sym);
         }

@@ -11,6 +11,7 @@
 #include "energy/power.hpp"
 #include "equations/equations.hpp"
 #include "model/model.hpp"
+#include "motion/motion.hpp"
 #include "numeric/evaluate.hpp"
 #include "solve/solve.hpp"
 
@@ -93,6 +94,7 @@ struct Derivation {
   std::vector<std::pair<std::string, std::optional<NumericValue>>> minimum_norm;
   PowerCheck power;  // the power balance, checked against the solution
   std::vector<ParameterReport> parameters;
+  const Motion* motion = nullptr;  // motion in time, for the JSON (narrated in the steps)
 };
 
 struct ReportOptions {
@@ -103,6 +105,9 @@ struct ReportOptions {
 /// check made in the analysis (narrated here, not computed).
 [[nodiscard]] Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol, const PowerCheck& power_check,
                                  const ReportOptions& options = {});
+
+/// The motion in time appended to a derivation (report/motion_narration.cpp).
+void narrate_motion(Derivation& d, const Model& m, const Motion& motion, const ReportOptions& options = {});
 
 /// An expression with each defined parameter folded back in where that is shorter
 /// (a*l*m/(2*d) rather than a*m*sqrt(b^2 + d^2 + e^2)/(2*d)).

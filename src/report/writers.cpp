@@ -174,6 +174,69 @@ std::string latex_document(const Derivation& d, bool full) {
 
 // ---- JSON ---------------------------------------------------------------------------------
 
+// Motion in time for the JSON: the equations of motion, the response, the quantities and the
+// conditions along it (text and LaTeX for each expression).
+nlohmann::ordered_json motion_json(const Motion& mo) {
+  using J = nlohmann::ordered_json;
+  const EquationsOfMotion& e = mo.eom;
+  auto expr = [](const GiNaC::ex& x) { return J{{"text", to_text(x)}, {"latex", to_latex(x)}}; };
+  auto mat = [](const GiNaC::matrix& m) {
+    J rows = J::array();
+    for (unsigned i = 0; i < m.rows(); ++i) {
+      J row = J::array();
+      for (unsigned k = 0; k < m.cols(); ++k) row.push_back(to_text(m(i, k)));
+      rows.push_back(row);
+    }
+    return rows;
+  };
+  J j{{"degrees_of_freedom", e.dof}, {"coordinates", J::array()}, {"linear", e.linear}};
+  for (const auto& q : e.q) j["coordinates"].push_back(to_text(q));
+  if (!e.linear) j["nonlinear"] = e.nonlinear;
+  j["accelerations"] = J::array();
+  for (std::size_t i = 0; i < e.dof; ++i)
+    j["accelerations"].push_back({{"coordinate", to_text(e.q[i])}, {"acceleration", expr(e.acceleration[i])}});
+  if (e.linear) {
+    j["mass"] = mat(e.M);
+    j["damping"] = mat(e.C);
+    j["stiffness"] = mat(e.K);
+    j["forcing"] = J::array();
+    for (const auto& f : e.forcing) j["forcing"].push_back(to_text(f));
+    j["equilibrium"] = J(nullptr);
+    if (e.equilibrium) {
+      j["equilibrium"] = J::array();
+      for (const auto& q : *e.equilibrium) j["equilibrium"].push_back(to_text(q));
+    }
+  }
+  if (mo.response) {
+    static const char* const regimes[] = {"undamped", "underdamped", "critically_damped", "overdamped", "free_particle",
+                                          "damped_particle"};
+    const Response& r = *mo.response;
+    J resp{{"regime", regimes[static_cast<int>(r.regime)]}, {"coordinate", expr(r.q)}, {"rate", expr(r.rate)},
+           {"definitions", J::array()}, {"assumptions", r.assumptions}, {"verified", r.verified}};
+    for (const auto& [sym, def] : r.definitions) resp["definitions"].push_back({{"name", to_text(sym)}, {"definition", expr(def)}});
+    j["response"] = resp;
+  } else {
+    j["response"] = J(nullptr);
+    j["no_response"] = mo.no_response;
+  }
+  j["quantities"] = J::array();
+  for (const auto& q : mo.quantities) j["quantities"].push_back({{"name", q.name}, {"in_time", expr(q.of_t)}});
+  j["conditions"] = J::array();
+  for (const auto& c : mo.conditions) {
+    const std::string& op = c.condition->condition->op;
+    J x{{"source", c.condition->condition->source}, {"in_time", to_text(c.of_t) + " " + op + " 0"}};
+    x["extreme"] = c.extreme ? J(to_text(*c.extreme) + " " + op + " 0") : J(nullptr);
+    x["extreme_at"] = c.extreme_at ? J(to_text(*c.extreme_at)) : J(nullptr);
+    x["for_all_t"] = J::array();
+    for (const auto& sv : c.solved) x["for_all_t"].push_back(to_text(sv.parameter) + " " + sv.op + " " + to_text(sv.bound));
+    x["holds_for_all_t"] = c.holds_for_all_t ? J(*c.holds_for_all_t) : J(nullptr);
+    x["first_failure"] = c.first_failure ? J(to_text(*c.first_failure)) : J(nullptr);
+    x["first_failure_s"] = c.first_failure_s ? J(*c.first_failure_s) : J(nullptr);
+    j["conditions"].push_back(x);
+  }
+  return j;
+}
+
 std::string json_document(const Derivation& d, bool full) {
   nlohmann::ordered_json j;
   j["version"] = 2;
@@ -265,6 +328,7 @@ std::string json_document(const Derivation& d, bool full) {
     }
     j["power_check"] = p;
   }
+  if (d.motion) j["motion"] = motion_json(*d.motion);
   if (full && d.system) {
     j["equations"] = nlohmann::ordered_json::array();
     for (const auto& eq : d.system->equations) {

@@ -110,7 +110,7 @@ TEST_CASE("CLI: a bad description reports every located problem on stderr and ex
   CHECK(r.out.empty());
   CHECK(r.err == bad.string() + ":3:7: unknown key 'mas' in body 'A' (did you mean 'mass'?)\n" + bad.string() +
                      ":5:10: unknown body 'Q' (known: A)\n" + bad.string() +
-                     ":5:20: 'force' of a 'force' connection: unknown name 'F' (known: x_A)\n");
+                     ":5:20: 'force' of a 'force' connection: unknown name 'F' (known: t, x_A)\n");
   fs::remove(bad);
 }
 

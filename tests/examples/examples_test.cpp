@@ -103,6 +103,73 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
         INFO("power residual: " << to_text(d.power.residual) << " reason: " << d.power.reason);
         CHECK(d.power.status == PowerCheck::Status::holds);
       }
+      // Motion in time: the equation of motion, the response, the quantities and conditions
+      // along it, each compared with the motion's quantities (lambda, zeta) put in,
+      // algebraically and at random points (t included).
+      REQUIRE(static_cast<bool>(root["expected_motion"]) == static_cast<bool>(analysis->motion));
+      if (const YAML::Node em = root["expected_motion"]) {
+        const Motion& mo = *analysis->motion;
+        auto motion_out = [&](ex e) {
+          for (int depth = 0; depth < 4; ++depth) e = e.subs(mo.definitions);
+          return defined_out(e);
+        };
+        auto same = [&](const ex& got, const std::string& want) {
+          const auto parsed = parse_expression(want, table);
+          REQUIRE(parsed.value);
+          const ex difference = motion_out(got - *parsed.value);
+          INFO("tackle: " << to_text(got) << "  expected: " << want);
+          CHECK(normal(difference).is_zero());
+          for (int trial = 0; trial < 3; ++trial) {
+            exmap point;
+            for (const auto& sy : table.all()) point[sy->sym] = numeric(num(rng), den(rng));
+            const ex v = evalf(difference.subs(point));
+            REQUIRE(is_a<numeric>(v));
+            CHECK(std::abs(ex_to<numeric>(v).to_double()) < 1e-9);
+          }
+        };
+        CHECK(mo.eom.dof == em["degrees_of_freedom"].as<std::size_t>());
+        if (em["mass"]) {
+          REQUIRE(mo.eom.linear);
+          same(mo.eom.M(0, 0), em["mass"].as<std::string>());
+          same(mo.eom.C(0, 0), em["damping"].as<std::string>());
+          same(mo.eom.K(0, 0), em["stiffness"].as<std::string>());
+          same(mo.eom.forcing[0], em["forcing"].as<std::string>());
+        }
+        if (em["response"]) {
+          REQUIRE(mo.response);
+          CHECK(mo.response->verified);
+          same(mo.response->q, em["response"].as<std::string>());
+        } else {
+          CHECK_FALSE(mo.response);
+        }
+        if (const YAML::Node it = em["in_time"])
+          for (const auto& kv : it) {
+            const auto q = std::find_if(mo.quantities.begin(), mo.quantities.end(),
+                                        [&](const QuantityInTime& x) { return x.name == kv.first.as<std::string>(); });
+            REQUIRE(q != mo.quantities.end());
+            same(q->of_t, kv.second.as<std::string>());
+          }
+        auto condition = [&](const std::string& source) {
+          const auto c = std::find_if(mo.conditions.begin(), mo.conditions.end(),
+                                      [&](const ConditionInTime& x) { return x.condition->condition->source == source; });
+          REQUIRE(c != mo.conditions.end());
+          return *c;
+        };
+        if (const YAML::Node fa = em["for_all_t"])
+          for (const auto& kv : fa) {
+            const ConditionInTime c = condition(kv.first.as<std::string>());
+            REQUIRE(c.extreme);
+            same(*c.extreme, kv.second.as<std::string>());
+          }
+        if (const YAML::Node ff = em["first_failure"])
+          for (const auto& kv : ff) {
+            const ConditionInTime c = condition(kv.first.as<std::string>());
+            REQUIRE(c.first_failure);
+            same(*c.first_failure, kv.second["closed_form"].as<std::string>());
+            REQUIRE(c.first_failure_s);
+            CHECK(*c.first_failure_s == Approx(kv.second["value"].as<double>()).epsilon(1e-5));
+          }
+      }
       // An indeterminate example names its free unknowns and determined combinations.
       std::vector<std::string> free;
       if (root["expected_free"])

@@ -325,7 +325,7 @@ void add_loads(BuildContext& ctx, Instance& in) {
       if (!path) continue;
       // A force element's tension may use its path's length and lengthening rate.
       in.scope.bind("length", path->length);
-      in.scope.bind("lengthening", time_derivative(path->length, ctx.m.bodies, ctx.m.lengths));
+      in.scope.bind("lengthening", time_derivative(path->length, ctx.m.bodies, ctx.m.lengths, ctx.m.time));
       // ... and its length where every coordinate is 0 (a spring's stretch is stated there).
       exmap origin;
       for (const auto& b : ctx.m.bodies)

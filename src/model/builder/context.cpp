@@ -14,7 +14,10 @@ bool BuildContext::claim_in(std::map<std::string, Location>& names_in_use, const
                              "' is not a valid name (expected a letter, then letters, digits or _)");
     return false;
   }
-  if (auto it = names_in_use.find(name.text); it != names_in_use.end()) {
+  if (auto it = names_in_use.find(name.text); it != names_in_use.end() && it->second.line == 0 && name.text == "t") {
+    diags.error(name.at, "'t' is time (expected another name for this " + what + ")");
+    return false;
+  } else if (it != names_in_use.end()) {
     diags.error(name.at, "duplicate name '" + name.text + "' (first defined at line " +
                              std::to_string(it->second.line) + ")");
     return false;

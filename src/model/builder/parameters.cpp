@@ -117,6 +117,12 @@ void parameters(BuildContext& ctx) {
       }
     }
   }
+  // Time, t, for loads and points that move with it and for motion in time; unless the
+  // description names a parameter t, in which case nothing may depend on time.
+  if (!ctx.table->find("t")) {
+    ctx.m.time = ctx.table->add("t", std::string("t"), SymbolRole::time, Dimension::time(), false, Location{}).sym;
+    ctx.names_in_use["t"] = Location{};
+  }
 }
 
 }  // namespace tackle::build

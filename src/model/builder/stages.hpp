@@ -33,6 +33,11 @@ void constraint_constants(BuildContext& ctx);
 // m.derive, the balances and constraints asked for; needs the bodies, points and constraints.
 void derive(BuildContext& ctx);
 
+// m.motion from 'motion': the independent coordinates (checked against the constraints'
+// rates, as many as the degrees of freedom), their initial values, simulate's defaults; the
+// coordinates and rates become given. Needs the constraints and m.given.
+void motion(BuildContext& ctx);
+
 // Helpers one stage lends another.
 
 // The value of a `given` entry in SI (questions.cpp); read_layout uses it too.

@@ -83,7 +83,7 @@ TEST_CASE("Check: invalid answers name what to fix", "[check][invalid]") {
   CHECK(two_m.findings.back().message == "if you meant 2*m, write the * (2 m is read as a number with a unit)");
   CHECK(board().check("T_HI", "2 a m").summary == "at column 3: missing '*' before 'a'");
   CHECK(board().check("T_HI", "foo(m)").summary ==
-        "at column 1: unknown function 'foo' (known: sqrt, abs, sin, cos, tan, exp, log, dot, ddot, unit, norm, cross, "
+        "at column 1: unknown function 'foo' (known: sqrt, abs, sin, cos, tan, asin, acos, atan, sinh, cosh, exp, log, dot, ddot, unit, norm, cross, "
         "inner, perp1, perp2)");
   CHECK(board().check("T_HI", "O_z = m*a").summary == "this is an answer for O_z, but T_HI was asked for");
   CHECK(board().check("Q", "m").summary == "'Q' is not an unknown tackle can check for this problem (checkable: T_HI)");

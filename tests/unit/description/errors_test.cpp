@@ -53,7 +53,7 @@ TEST_CASE("Description: an unknown key suggests the nearest valid key", "[errors
 
 TEST_CASE("Description: an undefined name in an expression is located inside it", "[errors]") {
   CHECK(errors_of(with(good, "force: -F", "force: -G")) ==
-        Messages{"t.yaml:11:21: 'force' of a 'force' connection: unknown name 'G' (known: F, m, x_A, x_B)"});
+        Messages{"t.yaml:11:21: 'force' of a 'force' connection: unknown name 'G' (known: F, m, t, x_A, x_B)"});
 }
 
 TEST_CASE("Description: a duplicate name says where the first one is", "[errors]") {
@@ -118,7 +118,7 @@ TEST_CASE("Description: duplicate keys and wrong shapes", "[errors]") {
         Messages{"t.yaml:8:9: 'points' is a scalar (expected a mapping of names)",
                  "t.yaml:9:1: unknown key 'x' in the description (expected one of: title, source, axes, parameters, "
                  "gravity, bodies, points, connections, loads, strings, layout, given, find, derive, expected, "
-                 "expected_combinations, expected_conditions, expected_free, expected_power, notes, sweep)",
+                 "expected_combinations, expected_conditions, expected_free, expected_power, notes, sweep, motion, expected_motion)",
                  "t.yaml:14:25: unknown point 'C' (known: A, B)", "t.yaml:17:24: unknown point 'C' (known: A, B)"});
 }
 
@@ -127,7 +127,7 @@ TEST_CASE("Description: every problem in the file is reported at once", "[errors
   bad = with(bad, "force: -F", "force: -G");
   bad = with(bad, "path: [B, C, A]", "path: [B, Q, A]");
   CHECK(errors_of(bad) == Messages{"t.yaml:6:7: unknown key 'mas' in body 'A' (did you mean 'mass'?)",
-                                   "t.yaml:11:21: 'force' of a 'force' connection: unknown name 'G' (known: F, m, x_A, x_B)",
+                                   "t.yaml:11:21: 'force' of a 'force' connection: unknown name 'G' (known: F, m, t, x_A, x_B)",
                                    "t.yaml:13:25: unknown point 'Q' (known: A, B, C)"});
 }
 

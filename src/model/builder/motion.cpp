@@ -1,0 +1,239 @@
+// Motion in time (`motion:`): which coordinates describe the motion (as many as the degrees
+// of freedom, independent under the constraints), their values and rates at t = 0, and the
+// defaults of `tackle simulate`.
+#include "model/builder/stages.hpp"
+
+#include <algorithm>
+
+#include "expr/print.hpp"
+
+namespace tackle::build {
+
+using namespace GiNaC;
+
+namespace {
+
+// The rank of the constraints' rate rows over the moving coordinates' rates, with a unit
+// row for each coordinate in `fixed` (taken as known).
+unsigned rank_with(const std::vector<std::vector<ex>>& rows, const std::vector<std::size_t>& fixed, std::size_t n) {
+  const std::size_t r = rows.size() + fixed.size();
+  if (r == 0 || n == 0) return 0;
+  matrix a(static_cast<unsigned>(r), static_cast<unsigned>(n));
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (std::size_t j = 0; j < n; ++j) a(i, j) = rows[i][j];
+  for (std::size_t k = 0; k < fixed.size(); ++k) a(rows.size() + k, fixed[k]) = 1;
+  return a.rank();
+}
+
+// A name that is free in the table: `base`, else `base_n`, else `base_n2`, ...
+std::string free_name(const SymbolTable& t, const std::string& base) {
+  if (!t.find(base)) return base;
+  for (int i = 1;; ++i) {
+    std::string n = base + "_n" + (i == 1 ? "" : std::to_string(i));
+    if (!t.find(n)) return n;
+  }
+}
+
+}  // namespace
+
+void motion(BuildContext& ctx) {
+  if (!ctx.d.motion) return;
+  const MotionDesc& md = *ctx.d.motion;
+  Model& m = ctx.m;
+  if (!is_a<symbol>(m.time)) {
+    const SymbolInfo* t = ctx.table->find("t");
+    ctx.diags.error(md.at, "'motion' needs t as time, but 't' is a parameter (line " +
+                               std::to_string(t ? t->where.line : 0) + "; expected another name for it)");
+    return;
+  }
+  MotionSpec spec;
+  spec.at = md.at;
+  // The moving coordinates, in body order.
+  std::vector<int> moving;
+  for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+    const Body& b = m.bodies[i];
+    if (!b.coord.is_zero()) moving.push_back(static_cast<int>(i));
+    else if (b.has_mass && !is_zero_vec(b.acceleration)) {
+      // Straight-line motion without a coordinate: nothing to integrate.
+      bool unknown = false;
+      for (const auto& c : m.candidates)
+        for (int k = 0; k < 3; ++k) unknown = unknown || b.acceleration[k].has(c);
+      if (unknown)
+        ctx.diags.error(b.at, "body '" + b.name + "' moves without a coordinate (expected 'position' and a center_of_mass "
+                                                  "written in it, for motion in time)");
+    }
+  }
+  spec.moving = moving.size();
+  // The constraints' rates, one row per constraint, one column per moving coordinate.
+  std::vector<std::vector<ex>> rows;
+  for (const auto& c : m.constraints) {
+    const ex rate = time_derivative(c.quantity, m.bodies, m.lengths, m.time);
+    std::vector<ex> row;
+    for (int i : moving) row.push_back(rate.diff(ex_to<symbol>(m.bodies[i].rate)));
+    rows.push_back(std::move(row));
+  }
+  const std::size_t n = moving.size();
+  const std::size_t dof = n - rank_with(rows, {}, n);
+  auto column_of = [&](const ex& q) -> int {
+    for (std::size_t j = 0; j < n; ++j)
+      if (m.bodies[moving[j]].coord.is_equal(q)) return static_cast<int>(j);
+    return -1;
+  };
+  std::vector<std::string> moving_names;
+  for (int i : moving) moving_names.push_back(to_text(m.bodies[i].coord));
+  std::vector<std::size_t> chosen;
+  if (!md.coordinates.empty()) {
+    bool ok = true;
+    for (const auto& c : md.coordinates) {
+      const auto r = parse_expression(c.text, *ctx.table);
+      const int j = r.value ? column_of(*r.value) : -1;
+      if (j < 0) {
+        ctx.unknown_name(c, "coordinate of a moving body", moving_names);
+        ok = false;
+        continue;
+      }
+      if (std::find(chosen.begin(), chosen.end(), static_cast<std::size_t>(j)) != chosen.end()) {
+        ctx.diags.error(c.at, "'" + c.text + "' is listed twice in 'coordinates' of 'motion'");
+        ok = false;
+        continue;
+      }
+      std::vector<std::size_t> with = chosen;
+      with.push_back(static_cast<std::size_t>(j));
+      if (rank_with(rows, with, n) == rank_with(rows, chosen, n)) {
+        std::vector<std::string> before;
+        for (auto k : chosen) before.push_back(moving_names[k]);
+        ctx.diags.error(c.at, "'" + c.text + "' is fixed by the constraints" +
+                                  (before.empty() ? std::string() : " once " + join(before) + (before.size() == 1 ? " is" : " are") + " known") +
+                                  " (expected independent coordinates)");
+        ok = false;
+        continue;
+      }
+      chosen.push_back(static_cast<std::size_t>(j));
+    }
+    if (ok && chosen.size() != dof) {
+      std::vector<std::string> more;
+      for (std::size_t j = 0; j < n; ++j) {
+        std::vector<std::size_t> with = chosen;
+        with.push_back(j);
+        if (rank_with(rows, with, n) > rank_with(rows, chosen, n)) more.push_back(moving_names[j]);
+      }
+      ctx.diags.error(md.at, "the motion has " + std::to_string(dof) + (dof == 1 ? " degree" : " degrees") +
+                                 " of freedom, but 'coordinates' lists " + std::to_string(chosen.size()) +
+                                 " (expected also one of: " + join(more) + ")");
+      return;
+    }
+    if (!ok) return;
+  } else {
+    // Given coordinates first, then the others in body order, each when it is independent of
+    // those chosen before it.
+    std::vector<std::size_t> order;
+    for (std::size_t j = 0; j < n; ++j)
+      if (std::find(m.given.begin(), m.given.end(), m.bodies[moving[j]].coord) != m.given.end()) order.push_back(j);
+    for (std::size_t j = 0; j < n; ++j)
+      if (std::find(order.begin(), order.end(), j) == order.end()) order.push_back(j);
+    for (auto j : order) {
+      if (chosen.size() == dof) break;
+      std::vector<std::size_t> with = chosen;
+      with.push_back(j);
+      if (rank_with(rows, with, n) > rank_with(rows, chosen, n)) chosen.push_back(j);
+    }
+  }
+  if (dof == 0) {
+    ctx.diags.error(md.at, "the motion has no degree of freedom: the constraints fix every coordinate" +
+                               std::string(n == 0 ? " (no body has a 'position')" : ""));
+    return;
+  }
+  for (auto j : chosen) {
+    const Body& b = m.bodies[moving[j]];
+    spec.coordinates.push_back(b.coord);
+    spec.rates.push_back(b.rate);
+    spec.accelerations.push_back(b.accel);
+    spec.bodies.push_back(moving[j]);
+  }
+  // The motion's coordinates and rates are known at every instant.
+  for (const auto& q : {spec.coordinates, spec.rates})
+    for (const auto& s : q)
+      if (std::find(m.given.begin(), m.given.end(), s) == m.given.end()) {
+        m.given.push_back(s);
+        m.candidates.erase(std::remove(m.candidates.begin(), m.candidates.end(), s), m.candidates.end());
+      }
+  // Initial values: coordinates and rates of moving bodies, in the parameters.
+  for (const auto& [key, value] : md.initial) {
+    const auto r = parse_expression(key.text, *ctx.table);
+    const SymbolInfo* s = r.value ? ctx.table->find(*r.value) : nullptr;
+    int body = -1;
+    if (s)
+      for (int i : moving)
+        if (m.bodies[i].coord.is_equal(s->sym) || m.bodies[i].rate.is_equal(s->sym)) body = i;
+    if (body < 0) {
+      std::vector<std::string> known;
+      for (int i : moving) known.push_back(to_text(m.bodies[i].coord)), known.push_back(to_text(m.bodies[i].rate));
+      ctx.unknown_name(key, "coordinate or rate of a moving body", known);
+      continue;
+    }
+    const bool is_rate = s->role == SymbolRole::rate;
+    const bool independent = std::find(spec.coordinates.begin(), spec.coordinates.end(), m.bodies[body].coord) != spec.coordinates.end();
+    if (is_rate && !independent) {
+      std::vector<std::string> rates;
+      for (const auto& r : spec.rates) rates.push_back(to_text(r));
+      ctx.diags.error(key.at, "initial value of '" + key.text + "': the constraints give it from the motion's rates (expected " +
+                                  "initial rates of the motion's coordinates only: " + join(rates) + ")");
+      continue;
+    }
+    auto v = ctx.parse(value, *ctx.table, "initial value of '" + key.text + "'");
+    if (!v) continue;
+    bool in_parameters = true;
+    for (const auto& sym : ctx.table->all())
+      if (v->has(sym->sym) && sym->role != SymbolRole::parameter) in_parameters = false;
+    if (!in_parameters) {
+      ctx.diags.error(value.at, "initial value of '" + key.text + "' is not an expression in the parameters");
+      continue;
+    }
+    if (!is_a<numeric>(*v))
+      ctx.check_dimension(*v, is_rate ? Dimension::velocity() : Dimension::length(), value.at, "initial value of '" + key.text + "'");
+    spec.initial[s->sym] = *v;
+    spec.initial_at.emplace_back(s->sym, value.at);
+  }
+  std::vector<std::string> missing;
+  for (std::size_t i = 0; i < spec.coordinates.size(); ++i)
+    for (const auto& s : {spec.coordinates[i], spec.rates[i]})
+      if (!spec.initial.count(s)) missing.push_back(to_text(s));
+  if (!missing.empty() && !md.initial.empty())
+    ctx.diags.error(md.at, "'initial' of 'motion' has no value for " + join(missing) +
+                               " (expected the value at t = 0 of each of the motion's coordinates and their rates)");
+  if (md.until) {
+    std::optional<ex> to_si = ex(1);
+    if (md.until_unit) {
+      std::string err;
+      int col = 0;
+      auto unit = parse_unit(md.until_unit->text, err, col);
+      if (!unit) {
+        ctx.diags.error(md.until_unit->at.shifted(col), "unit of 'until' of 'motion': " + err);
+        to_si.reset();
+      } else if (!(unit->dimension == Dimension::time())) {
+        ctx.diags.error(md.until_unit->at, "'until' of 'motion' is a time, but " + md.until_unit->text + " is " +
+                                               with_article(unit->dimension.describe()));
+        to_si.reset();
+      } else {
+        to_si = ex(unit->to_si);
+      }
+    }
+    auto v = ctx.parse(*md.until, none, "'until' of 'motion'");
+    if (v && to_si) {
+      const ex seconds = evalf(*v * *to_si);
+      if (!is_a<numeric>(seconds) || !ex_to<numeric>(seconds).is_real() || !ex_to<numeric>(seconds).is_positive())
+        ctx.diags.error(md.until->at, "'until' of 'motion' is not a positive number");
+      else
+        spec.until = *v * *to_si;
+    }
+  }
+  spec.plot = md.plot;
+  const std::string lambda = free_name(*ctx.table, "lambda"), zeta = free_name(*ctx.table, "zeta"),
+                    omega_d = free_name(*ctx.table, "omega_d");
+  spec.lambda = ctx.table->add(lambda, std::nullopt, SymbolRole::motion, Dimension::none() / Dimension::time(), true, md.at).sym;
+  spec.zeta = ctx.table->add(zeta, std::nullopt, SymbolRole::motion, Dimension::none(), true, md.at).sym;
+  spec.omega_d = ctx.table->add(omega_d, std::nullopt, SymbolRole::motion, Dimension::none() / Dimension::time(), true, md.at).sym;
+  m.motion = std::move(spec);
+}
+
+}  // namespace tackle::build

@@ -1,0 +1,503 @@
+#include "motion/motion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include <Eigen/Dense>
+
+#include "expr/normal_form.hpp"
+#include "expr/print.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+
+namespace {
+
+bool zero(const ex& e) { return normal(e).is_zero(); }
+
+// The parameters of the problem, for solving conditions.
+std::vector<ex> parameters_of(const SymbolTable& t) {
+  std::vector<ex> out;
+  for (const auto& s : t.all())
+    if (s->role == SymbolRole::parameter && !s->geometric) out.push_back(s->sym);
+  return out;
+}
+
+// Everything that varies with the state: the coordinates, the rates and the turning lengths.
+bool depends_on_state(const ex& e, const std::vector<ex>& state, const Model& m) {
+  for (const auto& s : state)
+    if (e.has(s)) return true;
+  for (const auto& l : m.lengths)
+    if (e.has(l.symbol)) return true;
+  return false;
+}
+
+// The dependent coordinates and rates in terms of the independent ones: rates from the
+// constraints' rate equations, coordinates from the constraint quantities keeping their
+// values at t = 0 (which needs those coordinates' initial values).
+struct Dependents {
+  exmap rates, coords;
+  exmap definitions;  // the defined parameters (y_s = (m + M) g/k), put in so that terms cancel
+  std::string problem;
+};
+
+Dependents dependents(const Model& m, const EquationSystem& s, const MotionSpec& spec, const ex& needed) {
+  Dependents d;
+  d.definitions = m.symbols->definitions();
+  std::vector<ex> dep_rates, dep_coords;
+  for (const auto& b : m.bodies) {
+    if (b.coord.is_zero()) continue;
+    if (std::find(spec.coordinates.begin(), spec.coordinates.end(), b.coord) != spec.coordinates.end()) continue;
+    dep_rates.push_back(b.rate);
+    dep_coords.push_back(b.coord);
+  }
+  if (!dep_rates.empty() && !s.rate_equations.empty()) {
+    const Solution r = solve_equations(m.file, s.rate_equations, dep_rates);
+    for (const auto& v : r.values) d.rates[v.unknown] = v.value;
+  }
+  bool coords_needed = false;
+  for (const auto& c : dep_coords) coords_needed = coords_needed || needed.has(c);
+  if (!coords_needed) return d;
+  // quantity(q) = quantity(q at t = 0) for each constraint.
+  std::vector<Equation> eqs;
+  for (const auto& c : m.constraints) {
+    const ex at0 = c.quantity.subs(spec.initial);
+    for (const auto& b : m.bodies)
+      if (!b.coord.is_zero() && at0.has(b.coord)) {
+        d.problem = "the motion needs the initial value of " + to_text(b.coord) +
+                    " (the constraints fix it only up to a constant; expected it in 'initial')";
+        return d;
+      }
+    Equation e;
+    e.kind = Equation::Kind::constraint_position;
+    e.label = c.label;
+    e.lhs = c.quantity;
+    e.rhs = at0;
+    eqs.push_back(e);
+  }
+  const Solution r = solve_equations(m.file, eqs, dep_coords);
+  for (const auto& v : r.values) d.coords[v.unknown] = v.value;
+  return d;
+}
+
+ex put_in(const ex& e, const Dependents& d) {
+  ex out = e;
+  for (int depth = 0; depth < 8; ++depth) out = out.subs(d.definitions);
+  if (!d.coords.empty()) out = out.subs(d.coords);
+  if (!d.rates.empty()) out = out.subs(d.rates);
+  return out;
+}
+
+// A forcing F(t) = F0 + A cos(w t) + B sin(w t) (one frequency), when it has that form.
+struct Forcing {
+  ex constant = 0, a = 0, b = 0, w = 0;
+};
+
+std::optional<Forcing> harmonic(const ex& F, const ex& t) {
+  Forcing f;
+  const ex e = F.expand();
+  const std::size_t n = is_a<add>(e) ? e.nops() : 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    const ex term = is_a<add>(e) ? e.op(i) : e;
+    if (!term.has(t)) {
+      f.constant += term;
+      continue;
+    }
+    // term = coefficient * cos(w t) or * sin(w t)
+    ex fn, coeff = 1;
+    const std::size_t k = is_a<mul>(term) ? term.nops() : 1;
+    for (std::size_t j = 0; j < k; ++j) {
+      const ex factor = is_a<mul>(term) ? term.op(j) : term;
+      if (!factor.has(t)) {
+        coeff *= factor;
+      } else if (fn.is_zero() && (is_ex_the_function(factor, cos) || is_ex_the_function(factor, sin))) {
+        fn = factor;
+      } else {
+        return std::nullopt;
+      }
+    }
+    const ex arg = fn.op(0).expand();
+    const ex w = arg.diff(ex_to<symbol>(t));
+    if (w.has(t) || !zero(arg.subs(t == 0))) return std::nullopt;
+    if (!f.w.is_zero() && !zero(f.w - w)) return std::nullopt;  // two frequencies
+    f.w = w;
+    (is_ex_the_function(fn, cos) ? f.a : f.b) += coeff;
+  }
+  return f;
+}
+
+// No roots or functions: a rational function of the symbols (solve_condition's domain).
+bool rational_in_parameters(const ex& e) {
+  if (is_a<symbol>(e) || is_a<numeric>(e)) return !is_a<numeric>(e) || ex_to<numeric>(e).is_rational();
+  if (is_a<power>(e)) return e.op(1).info(info_flags::integer) && rational_in_parameters(e.op(0));
+  if (is_a<add>(e) || is_a<mul>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i)
+      if (!rational_in_parameters(e.op(i))) return false;
+    return true;
+  }
+  return false;
+}
+
+// Random positive rational values for the parameters, and the definitions put in.
+exmap random_point(const SymbolTable& table, std::mt19937& rng) {
+  std::uniform_int_distribution<int> num(1, 40), den(1, 9);
+  exmap p;
+  for (const auto& s : table.all())
+    if (s->role == SymbolRole::parameter && !s->definition && !s->geometric) p[s->sym] = numeric(num(rng), den(rng));
+  return p;
+}
+
+}  // namespace
+
+std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, const Solution& sol) {
+  if (!m.motion) return std::nullopt;
+  const MotionSpec& spec = *m.motion;
+  const SymbolTable& table = *m.symbols;
+  Motion out;
+  EquationsOfMotion& eom = out.eom;
+  eom.dof = spec.coordinates.size();
+  eom.moving = spec.moving;
+  eom.q = spec.coordinates;
+  eom.dq = spec.rates;
+  eom.ddq = spec.accelerations;
+  if (sol.status == Solution::Status::inconsistent) {
+    out.problem = "the equations are inconsistent, so there is no motion to follow";
+    return out;
+  }
+  std::vector<ex> state = eom.q;
+  state.insert(state.end(), eom.dq.begin(), eom.dq.end());
+  // The accelerations of the motion's coordinates, from the solve.
+  ex all = 0;
+  for (const auto& a : eom.ddq) {
+    auto v = sol.value_of(a);
+    if (!v) {
+      out.problem = "the equations do not determine " + to_text(a) + ", so the motion cannot be followed";
+      return out;
+    }
+    eom.acceleration.push_back(*v);
+    all += *v;
+  }
+  const Dependents dep = dependents(m, s, spec, all);
+  if (!dep.problem.empty()) {
+    out.problem = dep.problem;
+    return out;
+  }
+  for (auto& a : eom.acceleration) {
+    a = normal(put_in(a, dep));
+    for (const auto& c : m.candidates)
+      if (a.has(c)) {
+        out.problem = "the acceleration " + to_text(eom.ddq[&a - eom.acceleration.data()]) + " still contains " +
+                      to_text(c) + ", which no equation gives";
+        return out;
+      }
+    for (const auto& b : m.bodies)
+      if (!b.coord.is_zero() && (a.has(b.coord) || a.has(b.rate)) &&
+          std::find(state.begin(), state.end(), a.has(b.coord) ? b.coord : b.rate) == state.end()) {
+        out.problem = "the acceleration " + to_text(eom.ddq[&a - eom.acceleration.data()]) + " depends on " +
+                      to_text(a.has(b.coord) ? b.coord : b.rate) + ", which the constraints do not give from the motion's coordinates";
+        return out;
+      }
+  }
+
+  // Linear with constant coefficients? ddot(q) = A q + B dot(q) + f(t).
+  const ex& t = m.time;
+  const std::size_t n = eom.dof;
+  matrix A(n, n), B(n, n);
+  std::vector<ex> f(n);
+  eom.linear = true;
+  for (std::size_t i = 0; i < n && eom.linear; ++i) {
+    const ex& a = eom.acceleration[i];
+    for (const auto& l : m.lengths)
+      if (a.has(l.symbol)) {
+        eom.linear = false;
+        eom.nonlinear = "a strand's length " + to_text(l.symbol) + " turns with the coordinates";
+      }
+    if (!eom.linear) break;
+    exmap zero_state;
+    for (const auto& x : state) zero_state[x] = 0;
+    ex rest = a;
+    for (std::size_t j = 0; j < n && eom.linear; ++j)
+      for (const bool rate : {false, true}) {
+        const ex& x = rate ? eom.dq[j] : eom.q[j];
+        const ex d = normal(a.diff(ex_to<symbol>(x)));
+        if (depends_on_state(d, state, m) || d.has(t)) {
+          eom.linear = false;
+          eom.nonlinear = to_text(eom.ddq[i]) + " is not linear in " + to_text(x) + " with a constant coefficient";
+          break;
+        }
+        (rate ? B : A)(i, j) = d;
+        rest -= d * x;
+      }
+    if (!eom.linear) break;
+    f[i] = normal(rest);
+    if (depends_on_state(f[i], state, m)) {
+      eom.linear = false;
+      eom.nonlinear = to_text(eom.ddq[i]) + " is not linear in the coordinates and rates";
+    }
+  }
+  // The mass matrix from the kinetic energy, with the dependent rates put in.
+  if (eom.linear) {
+    ex kinetic = 0;
+    for (const auto& b : m.bodies) {
+      if (!b.has_mass || b.coord.is_zero()) continue;
+      ex v2 = 0;
+      if (m.dims() == 1) {
+        v2 = pow(b.rate, 2);
+      } else {
+        for (int k = 0; k < 3; ++k) v2 += pow(time_derivative(b.cm[k], m.bodies, m.lengths, m.time), 2);
+      }
+      kinetic += b.mass * put_in(v2, dep) / 2;
+    }
+    kinetic = kinetic.expand();
+    eom.M = matrix(n, n);
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) {
+        eom.M(i, j) = normal(kinetic.diff(ex_to<symbol>(eom.dq[i])).diff(ex_to<symbol>(eom.dq[j])));
+        if (depends_on_state(eom.M(i, j), state, m) || eom.M(i, j).has(t)) {
+          eom.linear = false;
+          eom.nonlinear = "the kinetic energy's coefficients change with the coordinates";
+        }
+      }
+    if (eom.linear && zero(eom.M.determinant())) {
+      eom.linear = false;
+      eom.nonlinear = "the motion's coordinates carry no mass";
+    }
+  }
+  if (eom.linear) {
+    eom.K = matrix(n, n);
+    eom.C = matrix(n, n);
+    for (std::size_t i = 0; i < n; ++i) {
+      ex Fi = 0;
+      for (std::size_t j = 0; j < n; ++j) {
+        ex kij = 0, cij = 0;
+        for (std::size_t l = 0; l < n; ++l) {
+          kij -= eom.M(i, l) * A(l, j);
+          cij -= eom.M(i, l) * B(l, j);
+        }
+        eom.K(i, j) = simplest(normal(kij));
+        eom.C(i, j) = simplest(normal(cij));
+        Fi += eom.M(i, j) * f[j];
+      }
+      eom.forcing.push_back(simplest(normal(Fi)));
+    }
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) eom.M(i, j) = simplest(eom.M(i, j));
+    bool constant = true;
+    for (const auto& F : eom.forcing) constant = constant && !F.has(t);
+    if (constant && !zero(eom.K.determinant())) {
+      matrix rhs(n, 1);
+      for (std::size_t i = 0; i < n; ++i) rhs(i, 0) = eom.forcing[i];
+      const matrix qe = eom.K.inverse().mul(rhs);
+      std::vector<ex> e;
+      for (std::size_t i = 0; i < n; ++i) e.push_back(simplest(normal(qe(i, 0))));
+      eom.equilibrium = e;
+    }
+  }
+
+  // One degree of freedom, linear: the response in closed form.
+  if (n == 1 && eom.linear) {
+    const ex M = eom.M(0, 0), C = eom.C(0, 0), K = eom.K(0, 0);
+    const auto forcing = harmonic(eom.forcing[0], t);
+    const exmap values = table.values();
+    auto numeric_sign = [&](const ex& e) -> std::optional<int> {
+      if (auto sg = sign_of(normal(e))) return sg;
+      if (auto v = NormalForm(e).approx_at(values)) return *v > 0 ? 1 : (*v < 0 ? -1 : 0);
+      return std::nullopt;
+    };
+    if (!forcing) {
+      out.no_response = "the forcing " + to_text(eom.forcing[0]) + " is not a constant plus one harmonic term (simulate it)";
+    } else if (!zero(K) && numeric_sign(K / M) != std::optional<int>(1)) {
+      out.no_response = "the stiffness " + to_text(K) + " is not known to be positive";
+    } else {
+      Response r;
+      const ex& lambda = spec.lambda;
+      const ex& zeta = spec.zeta;
+      const ex& wd = spec.omega_d;
+      ex h1, h2;
+      const bool undamped = zero(C), unsprung = zero(K);
+      if (undamped && unsprung) {
+        r.regime = Response::Regime::free_particle;
+        h1 = 1;
+        h2 = t;
+      } else if (undamped) {
+        r.regime = Response::Regime::undamped;
+        r.definitions.emplace_back(lambda, sqrt(simplest(normal(K / M))));
+        h1 = cos(lambda * t);
+        h2 = sin(lambda * t);
+      } else if (unsprung) {
+        r.regime = Response::Regime::damped_particle;
+        h1 = 1;
+        h2 = exp(-simplest(normal(C / M)) * t);
+      } else {
+        r.definitions.emplace_back(lambda, sqrt(simplest(normal(K / M))));
+        r.definitions.emplace_back(zeta, simplest(normal(C / (2 * sqrt(K * M)))));
+        const ex disc = normal(C * C - 4 * K * M);
+        const auto sg = zero(disc) ? std::optional<int>(0) : numeric_sign(disc);
+        if (sg == 0) {
+          r.regime = Response::Regime::critically_damped;
+          h1 = exp(-lambda * t);
+          h2 = t * exp(-lambda * t);
+        } else if (sg == 1) {
+          r.regime = Response::Regime::overdamped;
+          r.definitions.emplace_back(wd, lambda * sqrt(pow(zeta, 2) - 1));
+          h1 = exp(-zeta * lambda * t) * cosh(wd * t);
+          h2 = exp(-zeta * lambda * t) * sinh(wd * t);
+        } else {
+          r.regime = Response::Regime::underdamped;
+          if (!sg) r.assumptions.push_back("zeta < 1 (underdamped)");
+          r.definitions.emplace_back(wd, lambda * sqrt(1 - pow(zeta, 2)));
+          h1 = exp(-zeta * lambda * t) * cos(wd * t);
+          h2 = exp(-zeta * lambda * t) * sin(wd * t);
+        }
+      }
+      // The forced part.
+      ex qp = 0;
+      const ex F0 = forcing->constant;
+      if (!zero(F0)) qp += !unsprung ? F0 / K : (!undamped ? F0 * t / C : F0 * pow(t, 2) / (2 * M));
+      bool resonant = false;
+      if (!zero(forcing->a) || !zero(forcing->b)) {
+        const ex w = forcing->w;
+        const ex k = K - M * pow(w, 2), c = C * w;
+        const ex det = normal(k * k + c * c);
+        if (det.is_zero()) {
+          resonant = true;
+          out.no_response = "the forcing is at the natural frequency (resonance; simulate it)";
+        } else {
+          const ex X = simplest(normal((k * forcing->a - c * forcing->b) / det));
+          const ex Y = simplest(normal((c * forcing->a + k * forcing->b) / det));
+          qp += X * cos(w * t) + Y * sin(w * t);
+          if (undamped) r.assumptions.push_back(to_text(w) + " != " + to_text(lambda) + " (no resonance)");
+        }
+      }
+      if (!resonant) {
+        // The constants from q(0) = q0, dot(q)(0) = v0.
+        const symbol a("a"), b("b");
+        const ex trial = qp + a * h1 + b * h2;
+        const ex q0 = spec.initial.at(eom.q[0]), v0 = spec.initial.at(eom.dq[0]);
+        const ex eq1 = trial.subs(t == 0) - q0;
+        const ex eq2 = trial.diff(ex_to<symbol>(t)).subs(t == 0) - v0;
+        const ex sol2 = lsolve(lst{eq1 == 0, eq2 == 0}, lst{a, b});
+        ex av = 0, bv = 0;
+        for (const auto& rel : sol2) {
+          if (rel.lhs().is_equal(a)) av = simplest(normal(rel.rhs()));
+          if (rel.lhs().is_equal(b)) bv = simplest(normal(rel.rhs()));
+        }
+        r.particular = qp;
+        r.homogeneous = av * h1 + bv * h2;
+        r.q = qp + r.homogeneous;
+        r.rate = r.q.diff(ex_to<symbol>(t));
+        for (const auto& [sym, def] : r.definitions) out.definitions[sym] = def;
+        // Verified: M q'' + C q' + K q - F(t) at random parameter values and times.
+        std::mt19937 rng(11);
+        bool ok = true;
+        for (int trial_no = 0; trial_no < 4 && ok; ++trial_no) {
+          exmap p = random_point(table, rng);
+          for (int depth = 0; depth < 8; ++depth)
+            for (auto& [k, v] : p) v = v.subs(table.definitions());
+          exmap defs;
+          for (const auto& [sym, def] : r.definitions) defs[sym] = def;
+          for (int depth = 0; depth < 4; ++depth)
+            for (auto& [k, v] : defs) v = v.subs(defs);
+          const ex residual = (M * r.q.diff(ex_to<symbol>(t), 2) + C * r.rate + K * r.q - eom.forcing[0]).subs(defs);
+          for (const double tt : {0.0, 0.37, 1.9}) {
+            exmap at = p;
+            at[t] = numeric(tt);
+            const ex v = evalf(residual.subs(at));
+            const ex scale = evalf((abs(M * r.q.diff(ex_to<symbol>(t), 2)) + abs(K * r.q) + abs(eom.forcing[0]) + 1).subs(defs).subs(at));
+            if (!is_a<numeric>(v) || !is_a<numeric>(scale)) continue;  // a damping regime that does not hold at this point
+            const numeric nv = ex_to<numeric>(v);
+            if (!nv.is_real()) continue;
+            if (std::abs(nv.to_double()) > 1e-8 * ex_to<numeric>(scale).to_double()) ok = false;
+          }
+        }
+        r.verified = ok;
+        out.response = std::move(r);
+      }
+    }
+  } else if (!eom.linear) {
+    out.no_response = "the equation of motion is nonlinear (" + eom.nonlinear + "; simulate it)";
+  } else {
+    out.no_response = std::to_string(n) + " degrees of freedom (the modes are numeric; simulate the motion)";
+  }
+  if (!out.response) return out;
+
+  // The quantities asked for, along the response.
+  const Response& r = *out.response;
+  exmap along{{eom.q[0], r.q}, {eom.dq[0], r.rate}};
+  // The lambda form: the stiffness's one symbol replaced by lambda^2 times the mass (k ->
+  // lambda^2 (m + M)), where that is shorter.
+  auto in_lambda = [&](const ex& e) {
+    ex best = simplest(normal(e));
+    if (r.regime != Response::Regime::undamped) return best;
+    const ex K = eom.K(0, 0), M = eom.M(0, 0);
+    if (!is_a<symbol>(K)) return best;
+    const ex alt = simplest(normal(e.subs(K == pow(spec.lambda, 2) * M)));
+    return to_text(alt).size() < to_text(best).size() ? alt : best;
+  };
+  for (const auto& w : m.wanted) {
+    ex value = w.defined ? w.expr.subs(sol.general) : w.expr.subs(sol.general);
+    value = put_in(value, dep);
+    bool known = true;
+    for (const auto& c : m.candidates)
+      if (value.has(c)) known = false;
+    if (!known) continue;
+    if (!value.has(eom.q[0]) && !value.has(eom.dq[0]) && !value.has(t)) continue;  // constant in time
+    QuantityInTime qt;
+    qt.name = w.name;
+    qt.tex = w.tex;
+    if (const SymbolInfo* si = table.find(w.name)) qt.symbol = si->sym;
+    qt.of_t = in_lambda(value.subs(along));
+    qt.dimension = w.dimension;
+    out.quantities.push_back(std::move(qt));
+  }
+  // Each validity condition along the response.
+  const auto params = parameters_of(table);
+  const exmap values = table.values();
+  for (const auto& c : sol.conditions) {
+    if (c.depends_on_free || (!c.expr.has(eom.q[0]) && !c.expr.has(eom.dq[0]))) continue;
+    ConditionInTime ct;
+    ct.condition = &c;
+    const ex g = put_in(c.expr, dep).subs(along);
+    ct.of_t = in_lambda(g);
+    const std::string& op = c.condition->op;
+    if (r.regime == Response::Regime::undamped) {
+      // g = alpha + beta cos(lambda t) + gamma sin(lambda t)
+      const symbol cs("cs"), sn("sn");
+      const ex lt = spec.lambda * t;
+      const ex p = normal(g).subs(lst{cos(lt) == cs, sin(lt) == sn}).expand();
+      if (!p.has(t) && p.degree(cs) <= 1 && p.degree(sn) <= 1 && !p.coeff(cs, 1).has(sn)) {
+        const ex alpha = simplest(normal(p.subs(lst{cs == 0, sn == 0})));
+        const ex beta = simplest(normal(p.coeff(cs, 1))), gamma = simplest(normal(p.coeff(sn, 1)));
+        ex amplitude;
+        std::optional<int> beta_sign = sign_of(beta);
+        if (gamma.is_zero() && beta_sign) amplitude = *beta_sign >= 0 ? beta : -beta;
+        else amplitude = sqrt(simplest(normal(beta * beta + gamma * gamma)));
+        const bool lower = op == ">=" || op == ">";
+        const ex extreme = lower ? alpha - amplitude : alpha + amplitude;
+        ct.extreme = in_lambda(extreme);
+        if (gamma.is_zero() && beta_sign && *beta_sign != 0)
+          ct.extreme_at = (lower == (*beta_sign > 0)) ? Pi / spec.lambda : ex(0);
+        if (rational_in_parameters(extreme)) ct.solved = solve_condition(simplest(normal(extreme)), op, params);
+        exmap all_values = values;
+        for (const auto& [sym, def] : out.definitions) all_values[sym] = def.subs(values);
+        if (auto v = NormalForm(extreme).approx_at(all_values)) {
+          ct.holds_for_all_t = lower ? (op == ">=" ? *v >= 0 : *v > 0) : (op == "<=" ? *v <= 0 : *v < 0);
+        }
+        // The first failure: alpha + beta cos(lambda t) crosses 0 at acos(-alpha/beta)/lambda.
+        if (gamma.is_zero() && beta_sign && ((lower && *beta_sign > 0) || (!lower && *beta_sign < 0))) {
+          ct.first_failure = acos(in_lambda(-alpha / beta)) / spec.lambda;
+          if (ct.holds_for_all_t == false) {
+            const ex v = evalf(ct.first_failure->subs(all_values).subs(all_values));
+            if (is_a<numeric>(v) && ex_to<numeric>(v).is_real()) ct.first_failure_s = ex_to<numeric>(v).to_double();
+          }
+        }
+      }
+    }
+    out.conditions.push_back(std::move(ct));
+  }
+  return out;
+}
+
+}  // namespace tackle

@@ -1,0 +1,88 @@
+// Motion in time, the stage after the instant: from the solved accelerations, the equations
+// of motion of the independent coordinates (constraint forces eliminated), in the form
+//   M q'' + C q' + K q = F(t)
+// when they are linear with constant coefficients (M from the kinetic energy, so the form is
+// the one a person writes: (m + M) y'' + k y = 0); for one degree of freedom their solution
+// in closed form from the initial conditions (natural frequency, damping ratio, free and
+// forced response); then every quantity asked for and every validity condition as functions
+// of time, with their extremes and the conditions that keep the model valid for all t.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "equations/equations.hpp"
+#include "model/model.hpp"
+#include "numeric/evaluate.hpp"
+#include "solve/solve.hpp"
+
+namespace tackle {
+
+struct EquationsOfMotion {
+  std::size_t dof = 0;     // degrees of freedom
+  std::size_t moving = 0;  // coordinates of moving bodies, before the constraints
+  std::vector<GiNaC::ex> q, dq, ddq;
+  // ddot(q_i) = f_i(q, dot(q), t), the constraint forces eliminated and the dependent
+  // coordinates and rates put in.
+  std::vector<GiNaC::ex> acceleration;
+  // Linear with constant coefficients: M q'' + C q' + K q = F(t); else `nonlinear` says why.
+  bool linear = false;
+  std::string nonlinear;
+  GiNaC::matrix M, C, K;
+  std::vector<GiNaC::ex> forcing;
+  std::optional<std::vector<GiNaC::ex>> equilibrium;  // K q = F, when F is constant and K invertible
+};
+
+/// The closed-form response of one linear degree of freedom from its initial conditions.
+struct Response {
+  enum class Regime { undamped, underdamped, critically_damped, overdamped, free_particle, damped_particle } regime;
+  GiNaC::ex q;            // q(t), in lambda, zeta, omega_d where they appear
+  GiNaC::ex rate;         // dot(q)(t)
+  GiNaC::ex particular;   // the forced part (0 for free motion)
+  GiNaC::ex homogeneous;  // the free part, its constants fixed by the initial conditions
+  // Quantities the response is written in, with their definitions (lambda = sqrt(k/(m + M))).
+  std::vector<std::pair<GiNaC::ex, GiNaC::ex>> definitions;
+  // Conditions the form assumes (zeta < 1, omega != lambda), in words and as expressions.
+  std::vector<std::string> assumptions;
+  bool verified = false;  // put back into the equation of motion at random parameter values and times
+};
+
+/// A validity condition of the instant, followed in time along the response.
+struct ConditionInTime {
+  const CheckedCondition* condition = nullptr;
+  GiNaC::ex of_t;  // the condition's expression along the response: the condition is `of_t op 0`
+  // The least (for >=, >) or greatest (for <=, <) value over all t, in closed form, and the
+  // condition for all t (`extreme op 0`) solved for the parameters where it can be.
+  std::optional<GiNaC::ex> extreme;
+  std::optional<GiNaC::ex> extreme_at;  // the first t >= 0 at which it is reached
+  std::vector<SolvedFor> solved;
+  std::optional<bool> holds_for_all_t;   // with the given numbers
+  std::optional<GiNaC::ex> first_failure;  // the first t at which it fails, in closed form
+  std::optional<double> first_failure_s;   // the same in seconds (numeric)
+};
+
+struct QuantityInTime {
+  std::string name, tex;
+  GiNaC::ex symbol;
+  GiNaC::ex of_t;
+  std::optional<Dimension> dimension;
+};
+
+struct Motion {
+  EquationsOfMotion eom;
+  std::optional<Response> response;
+  std::string no_response;  // why there is no closed-form response
+  std::vector<QuantityInTime> quantities;
+  std::vector<ConditionInTime> conditions;
+  GiNaC::exmap definitions;  // lambda, zeta, omega_d -> their expressions (for numbers)
+  std::string problem;       // the motion could not be followed at all: why (an input error)
+};
+
+/// The equations of motion and, where possible, their closed-form solution and the validity
+/// over time. Nothing when the description asks for no motion.
+[[nodiscard]] std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, const Solution& sol);
+
+}  // namespace tackle

@@ -1,0 +1,153 @@
+// The motion in time as the derivation tells it: degrees of freedom, equations of motion,
+// equilibrium, the closed-form response, the quantities asked for and the validity
+// conditions along it. Narration only: everything is computed in src/motion/.
+#include "report/derivation.hpp"
+
+#include "expr/print.hpp"
+#include "report/narrator.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+
+namespace {
+
+std::string with_unit(const std::optional<NumericValue>& v) {
+  if (!v) return {};
+  return v->decimal + (v->unit.empty() ? "" : " " + v->unit);
+}
+
+// A display symbol for a coordinate as a function of time: y(t).
+ex of_time(const ex& q, const SymbolTable& table) {
+  const SymbolInfo* s = table.find(q);
+  const std::string name = s ? s->name : to_text(q), tex = s ? s->tex : name;
+  return symbol(name + "(t)", tex + "(t)");
+}
+
+std::string regime_text(Response::Regime r) {
+  switch (r) {
+    case Response::Regime::undamped: return "an undamped oscillation";
+    case Response::Regime::underdamped: return "an underdamped oscillation (it decays while it oscillates)";
+    case Response::Regime::critically_damped: return "critically damped (the fastest return without oscillating)";
+    case Response::Regime::overdamped: return "overdamped (a return without oscillating)";
+    case Response::Regime::free_particle: return "no stiffness and no damping: the forcing alone moves it";
+    case Response::Regime::damped_particle: return "damped, with no stiffness: the velocity relaxes";
+  }
+  return {};
+}
+
+}  // namespace
+
+void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const ReportOptions& options) {
+  const SymbolTable& table = *m.symbols;
+  const EquationsOfMotion& eom = mo.eom;
+  Narrator n{d, table};
+  auto step = [&](Step::Kind kind, std::string t) { return n.step(kind, std::move(t)); };
+  auto text = [&](std::string t) { n.text(std::move(t)); };
+  auto text_with = [&](std::string t, std::vector<ex> math) { n.text_with(std::move(t), std::move(math)); };
+  auto equation = [&](std::string label, ex lhs, ex rhs) { return n.equation(std::move(label), lhs, rhs); };
+  // A number for an expression in the parameters and the motion's quantities.
+  auto number = [&](const ex& e, std::optional<Dimension> dim) {
+    ex x = e;
+    for (int depth = 0; depth < 4; ++depth) x = x.subs(mo.definitions);
+    return evaluate(x, table, dim, options.digits);
+  };
+  const ex& t = m.time;
+  step(Step::Kind::section, "Motion in time");
+  std::string coords;
+  for (std::size_t i = 0; i < eom.q.size(); ++i) coords += (i ? ", " : "") + std::string("{}");
+  const std::size_t tied = eom.moving - eom.dof;
+  text_with("The motion has " + std::to_string(eom.dof) + (eom.dof == 1 ? " degree" : " degrees") + " of freedom (" +
+                std::to_string(eom.moving) + (eom.moving == 1 ? " coordinate" : " coordinates") +
+                (tied ? ", " + std::to_string(tied) + " tied by the constraints" : std::string()) + "), described by " +
+                coords + ".",
+            eom.q);
+  if (eom.linear) {
+    text("Equations of motion, the constraint forces eliminated (M from the kinetic energy, C from the dampers, K from "
+         "the springs):");
+    for (std::size_t i = 0; i < eom.dof; ++i) {
+      ex lhs = 0;
+      for (std::size_t j = 0; j < eom.dof; ++j) lhs += eom.M(i, j) * eom.ddq[j] + eom.C(i, j) * eom.dq[j] + eom.K(i, j) * eom.q[j];
+      Step* st = equation("equation of motion (" + to_text(eom.q[i]) + ")", lhs, eom.forcing[i]);
+      st->boxed = true;
+    }
+    if (eom.equilibrium)
+      for (std::size_t i = 0; i < eom.dof; ++i) {
+        Step* st = equation("equilibrium", eom.q[i], (*eom.equilibrium)[i]);
+        st->note = with_unit(number((*eom.equilibrium)[i], Dimension::length()));
+      }
+  } else {
+    text("Equations of motion, the constraint forces eliminated (nonlinear: " + eom.nonlinear + "):");
+    for (std::size_t i = 0; i < eom.dof; ++i) equation("equation of motion (" + to_text(eom.q[i]) + ")", eom.ddq[i], eom.acceleration[i]);
+  }
+  if (!mo.response) {
+    text("No closed-form response: " + mo.no_response + ". `tackle simulate` integrates the motion numerically.");
+    return;
+  }
+  const Response& r = *mo.response;
+  for (const auto& [sym, def] : r.definitions) {
+    const SymbolInfo* s = table.find(sym);
+    const std::string what = s && s->name.rfind("zeta", 0) == 0 ? "damping ratio"
+                             : s && s->name.rfind("omega_d", 0) == 0 ? "damped frequency"
+                                                                     : "natural frequency";
+    Step* st = equation(what, sym, def);
+    st->note = with_unit(number(sym, what == "damping ratio" ? Dimension::none() : Dimension::none() / Dimension::time()));
+    if (what != "damping ratio" && !st->note.empty()) st->note = st->note.substr(0, st->note.rfind(' ')) + " rad/s";
+  }
+  text("The motion is " + regime_text(r.regime) + ".");
+  std::string init = "From ";
+  std::vector<ex> init_math;
+  for (std::size_t i = 0; i < eom.q.size(); ++i) {
+    init += (i ? " and " : "") + std::string("{} = {}, {} = {}");
+    init_math.push_back(symbol(to_text(eom.q[i]) + "(0)", table.find(eom.q[i])->tex + "(0)"));
+    init_math.push_back(m.motion->initial.at(eom.q[i]));
+    init_math.push_back(symbol(to_text(eom.dq[i]) + "(0)", table.find(eom.dq[i])->tex + "(0)"));
+    init_math.push_back(m.motion->initial.at(eom.dq[i]));
+  }
+  text_with(init + ":", init_math);
+  Step* resp = equation("response", of_time(eom.q[0], table), r.q);
+  resp->boxed = true;
+  for (const auto& a : r.assumptions) text("This form assumes " + a + ".");
+  text(r.verified ? "Checked: put back into the equation of motion, at random parameter values and times, it holds."
+                  : "WARNING: put back into the equation of motion it does NOT hold (an error in tackle; please report it).");
+  for (const auto& q : mo.quantities) {
+    Step* st = equation(q.name + " in time", symbol(q.name + "(t)", q.tex + "(t)"), q.of_t);
+    st->boxed = true;
+  }
+  for (const auto& c : mo.conditions) {
+    const Condition& cond = *c.condition->condition;
+    text(cond.source + " along the motion (" + cond.meaning + "):");
+    Step* st = equation("in time", c.of_t, 0);
+    st->relation = cond.op;
+    if (!c.extreme) {
+      text("Its extremes over time are not found in closed form; `tackle simulate` follows it numerically.");
+      continue;
+    }
+    const bool lower = cond.op == ">=" || cond.op == ">";
+    Step* ex_st = equation(lower ? "least value over time" : "greatest value over time", c.extreme ? *c.extreme : ex(0), 0);
+    ex_st->relation = cond.op;
+    if (c.extreme_at) {
+      Step* at = equation(lower ? "least at" : "greatest at", t, *c.extreme_at);
+      if (auto v = number(*c.extreme_at, Dimension::time())) at->note = with_unit(v);
+    }
+    text(std::string("So the model holds for all t exactly when this holds") + (c.solved.empty() ? "." : ", that is:"));
+    for (const auto& sv : c.solved) {
+      Step* s = equation("for all t, solved for " + to_text(sv.parameter), sv.parameter, sv.bound);
+      s->relation = sv.op;
+    }
+    if (c.holds_for_all_t) {
+      if (*c.holds_for_all_t) {
+        text("With the given numbers it holds for all t.");
+      } else {
+        text("With the given numbers it does NOT hold for all t: " + cond.otherwise + ".");
+        if (c.first_failure) {
+          Step* f = equation("first fails at", t, *c.first_failure);
+          if (c.first_failure_s) f->note = decimal_string(numeric(*c.first_failure_s), options.digits) + " s";
+          text("After that the model no longer holds; the equations above describe the motion only until then.");
+        }
+      }
+    }
+  }
+}
+
+}  // namespace tackle
