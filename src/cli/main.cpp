@@ -15,6 +15,7 @@
 #include "report/key.hpp"
 #include "core/files.hpp"
 #include "report/sweep.hpp"
+#include "motion/simulate.hpp"
 
 namespace {
 
@@ -100,6 +101,20 @@ int main(int argc, char** argv) {
   sweep->add_option("--csv", csv_out, "Write the data as CSV here (default: standard output)");
   sweep->add_option("--svg", svg_out, "Write an SVG plot here");
   sweep->add_option("--pgfplots", pgf_out, "Write a pgfplots figure (LaTeX) here");
+
+  double until = 0;
+  int samples = 201;
+  std::string sim_plot;
+  auto* simulate = app.add_subcommand("simulate", "Integrate the motion in time numerically, with events (a string going slack, "
+                                                  "a contact lost, a body turning): a table, CSV, SVG, pgfplots");
+  simulate->add_option("file", file, "Problem description (YAML) with a 'motion' section")->required();
+  simulate->add_option("--until", until, "End time in seconds (default: the description's 'until')")->check(CLI::PositiveNumber);
+  simulate->add_option("--plot", sim_plot, "Comma-separated expressions in the answers, coordinates, rates, parameters and t, e.g. y,N");
+  simulate->add_option("--samples", samples, "Rows of the table, evenly spaced in time")->check(CLI::Range(2, 100000))->capture_default_str();
+  simulate->add_option("--csv", csv_out, "Write the table as CSV here");
+  simulate->add_option("--svg", svg_out, "Write an SVG plot here");
+  simulate->add_option("--pgfplots", pgf_out, "Write a pgfplots figure (LaTeX) here");
+  simulate->add_option("-o,--output", out, "Write the report (events and table) here instead of standard output");
 
   std::string unknown, answer, batch, results;
   double tolerance = 0.01;
@@ -214,6 +229,21 @@ int main(int argc, char** argv) {
       for (const auto& [path, text] : {std::pair{svg_out, tackle::sweep_svg(result)}, std::pair{pgf_out, tackle::sweep_pgfplots(result)}})
         if (!path.empty() && emit(text, path) != 0) return 1;
       return emit(tackle::sweep_csv(result), csv_out);
+    }
+    if (simulate->parsed()) {
+      tackle::SimulationSpec spec;
+      if (until > 0) spec.until = until;
+      spec.samples = samples;
+      for (std::size_t start = 0, comma; !sim_plot.empty() && start <= sim_plot.size(); start = comma + 1) {
+        comma = sim_plot.find(',', start);
+        if (comma == std::string::npos) comma = sim_plot.size();
+        spec.plot.push_back(sim_plot.substr(start, comma - start));
+      }
+      const auto result = tackle::simulate(*analysis, spec, tackle::Location{"--until/--plot", 0, 0});
+      for (const auto& [path, text] : {std::pair{csv_out, tackle::sweep_csv(result.table)}, std::pair{svg_out, tackle::sweep_svg(result.table)},
+                                       std::pair{pgf_out, tackle::sweep_pgfplots(result.table)}})
+        if (!path.empty() && emit(text, path) != 0) return 1;
+      return emit(tackle::simulation_text(result), out);
     }
     if (check->parsed()) {
       tackle::CheckOptions options;

@@ -127,6 +127,7 @@ struct Model {
   std::vector<Condition> conditions;
   std::vector<TurningLength> lengths;
   std::vector<std::string> assumptions;
+  std::vector<std::string> direction_assumed_by;  // connections whose rule assumes the direction of motion
   std::vector<std::string> connections;  // one line per connection: "string s: <summary>"
   std::optional<Vec> gravity;
   std::vector<GiNaC::ex> candidates;  // possible unknowns: accelerations, then rule unknowns

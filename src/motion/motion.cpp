@@ -335,21 +335,24 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
         r.definitions.emplace_back(zeta, simplest(normal(C / (2 * sqrt(K * M)))));
         const ex disc = normal(C * C - 4 * K * M);
         const auto sg = zero(disc) ? std::optional<int>(0) : numeric_sign(disc);
+        // The decay rate zeta*lambda = C/(2 M) and the damped frequency are written in the
+        // parameters directly (GiNaC does not see sqrt(k/m)*c/(2*sqrt(k*m)) = c/(2*m)).
+        const ex decay = simplest(normal(C / (2 * M)));
         if (sg == 0) {
           r.regime = Response::Regime::critically_damped;
-          h1 = exp(-lambda * t);
-          h2 = t * exp(-lambda * t);
+          h1 = exp(-decay * t);
+          h2 = t * exp(-decay * t);
         } else if (sg == 1) {
           r.regime = Response::Regime::overdamped;
-          r.definitions.emplace_back(wd, lambda * sqrt(pow(zeta, 2) - 1));
-          h1 = exp(-zeta * lambda * t) * cosh(wd * t);
-          h2 = exp(-zeta * lambda * t) * sinh(wd * t);
+          r.definitions.emplace_back(wd, sqrt(simplest(normal(pow(C / (2 * M), 2) - K / M))));
+          h1 = exp(-decay * t) * cosh(wd * t);
+          h2 = exp(-decay * t) * sinh(wd * t);
         } else {
           r.regime = Response::Regime::underdamped;
           if (!sg) r.assumptions.push_back("zeta < 1 (underdamped)");
-          r.definitions.emplace_back(wd, lambda * sqrt(1 - pow(zeta, 2)));
-          h1 = exp(-zeta * lambda * t) * cos(wd * t);
-          h2 = exp(-zeta * lambda * t) * sin(wd * t);
+          r.definitions.emplace_back(wd, sqrt(simplest(normal(K / M - pow(C / (2 * M), 2)))));
+          h1 = exp(-decay * t) * cos(wd * t);
+          h2 = exp(-decay * t) * sin(wd * t);
         }
       }
       // The forced part.
@@ -421,6 +424,20 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   } else {
     out.no_response = std::to_string(n) + " degrees of freedom (the modes are numeric; simulate the motion)";
   }
+  // Everything a simulation reports, in the state.
+  for (const auto& [sym, value] : dep.coords) out.in_state.emplace_back(sym, value);
+  for (const auto& [sym, value] : dep.rates) out.in_state.emplace_back(sym, put_in(value, dep));
+  for (const auto& w : m.wanted) {
+    const SymbolInfo* si = table.find(w.name);
+    if (!si) continue;
+    const ex value = put_in(w.expr.subs(sol.general), dep);
+    bool known = true;
+    for (const auto& c : m.candidates)
+      if (value.has(c)) known = false;
+    if (known) out.in_state.emplace_back(si->sym, value);
+  }
+  for (const auto& c : sol.conditions)
+    if (!c.depends_on_free) out.conditions_in_state.emplace_back(&c, put_in(c.expr, dep));
   if (!out.response) return out;
 
   // The quantities asked for, along the response.

@@ -78,6 +78,10 @@ struct Motion {
   std::vector<QuantityInTime> quantities;
   std::vector<ConditionInTime> conditions;
   GiNaC::exmap definitions;  // lambda, zeta, omega_d -> their expressions (for numbers)
+  // For a simulated motion: each quantity asked for, each dependent coordinate and rate, and
+  // each validity condition (`expr op 0`), as expressions in q, dot(q), t and the parameters.
+  std::vector<std::pair<GiNaC::ex, GiNaC::ex>> in_state;  // symbol -> expression
+  std::vector<std::pair<const CheckedCondition*, GiNaC::ex>> conditions_in_state;
   std::string problem;       // the motion could not be followed at all: why (an input error)
 };
 

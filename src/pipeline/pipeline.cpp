@@ -1,6 +1,7 @@
 #include "pipeline/pipeline.hpp"
 
 #include "report/sweep.hpp"
+#include "motion/simulate.hpp"
 
 #include <algorithm>
 
@@ -60,6 +61,15 @@ Derivation explain(const Analysis& a, const ReportOptions& options) {
   if (a.motion) {
     narrate_motion(d, a.model, *a.motion, options);
     d.motion = &*a.motion;
+    if (a.model.motion->until) {
+      const Simulation run = simulate(a, SimulationSpec{}, a.model.motion->at);
+      d.motion_pgfplots = sweep_pgfplots(run.table);
+      d.motion_events.push_back("Integrated to t = " + decimal_string(GiNaC::numeric(run.reached), 6) + " s (" +
+                                std::to_string(run.steps) + " steps, Dormand-Prince 5(4)).");
+      for (const auto& e : run.events)
+        d.motion_events.push_back("At t = " + decimal_string(GiNaC::numeric(e.t), 6) + " s: " + e.what + (e.ends ? "; the run ends." : "."));
+      if (!run.stopped.empty() && run.events.empty()) d.motion_events.push_back("Stopped: " + run.stopped + ".");
+    }
   }
   if (a.model.sweep) d.figure_pgfplots = sweep_pgfplots(run_sweep(a, d, sweep_spec(*a.model.sweep), a.model.sweep->at));
   return d;

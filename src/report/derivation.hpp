@@ -89,6 +89,8 @@ struct Derivation {
   std::vector<GiNaC::ex> unknowns;
   const EquationSystem* system = nullptr;  // for the JSON equations list
   std::string figure_pgfplots;             // a sweep figure for the LaTeX report, when described
+  std::string motion_pgfplots;             // the simulated motion for the LaTeX report, when 'motion' has 'until'
+  std::vector<std::string> motion_events;  // what happened in that run, in words
   // Indeterminate with numbers: the member of the family with the least norm (Eigen), for
   // the unknowns that are not determined alone.
   std::vector<std::pair<std::string, std::optional<NumericValue>>> minimum_norm;

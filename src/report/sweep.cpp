@@ -259,7 +259,7 @@ std::string sweep_pgfplots(const SweepResult& r) {
   std::string out = "\\begin{tikzpicture}\n\\begin{axis}[width=0.8\\textwidth, height=0.5\\textwidth, xlabel={$" +
                     to_latex(symbol(r.x_name)) + "$" + (r.x_unit.empty() ? "" : " [$" + unit_latex(r.x_unit) + "$]") +
                     "}, " + (r.y_unit.empty() ? "" : "ylabel={[$" + unit_latex(r.y_unit) + "$]}, ") +
-                    "legend pos=outer north east, grid=major]\n";
+                    "legend pos=outer north east, grid=major, scaled x ticks=false, xticklabel style={/pgf/number format/fixed}]\n";
   for (std::size_t c = 0; c < r.y.size(); ++c) {
     out += "\\addplot+[mark=none, thick] coordinates {";
     for (std::size_t i = 0; i < r.x.size(); ++i)

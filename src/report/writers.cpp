@@ -126,7 +126,7 @@ std::string latex_document(const Derivation& d, bool full) {
   std::string out =
       "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{amsmath}\n"
       "\\usepackage[margin=2.5cm]{geometry}\n" +
-      std::string(d.figure_pgfplots.empty() ? "" : "\\usepackage{pgfplots}\n\\pgfplotsset{compat=1.16}\n") +
+      std::string(d.figure_pgfplots.empty() && d.motion_pgfplots.empty() ? "" : "\\usepackage{pgfplots}\n\\pgfplotsset{compat=1.16}\n") +
       "\\begin{document}\n";
   out += "\\section*{" + tex_escape(d.title) + "}\n";
   if (full) {
@@ -157,6 +157,11 @@ std::string latex_document(const Derivation& d, bool full) {
     if (in_list) out += "\\end{itemize}\n";
     if (!d.figure_pgfplots.empty())
       out += "\\subsection*{Sweep}\n\\begin{center}\n" + d.figure_pgfplots + "\\end{center}\n";
+    if (!d.motion_pgfplots.empty()) {
+      out += "\\subsection*{Motion, integrated numerically}\n";
+      for (const auto& e : d.motion_events) out += tex_escape(e) + "\n\n";
+      out += "\\begin{center}\n" + d.motion_pgfplots + "\\end{center}\n";
+    }
   } else {
     for (const auto& a : d.answers) {
       if (!a.closed_form) continue;

@@ -157,11 +157,16 @@ struct RuleReader {
     Rule r;
     r.at = where(root, file);
     if (!check_map(root, {"type", "summary", "needs", "optional", "one_of", "unknowns", "loads", "constraints",
-                          "validity", "checks", "assumptions", "dimensions"},
+                          "validity", "checks", "assumptions", "dimensions", "assumes_direction"},
                    "the rule", file, diags))
       return r;
     r.type = need_scalar(root, "type", "the rule");
     if (auto s = root["summary"]) r.summary = scalar(s, "'summary'", file, diags).value_or(Text{}).text;
+    if (auto s = root["assumes_direction"]) {
+      const auto t = scalar(s, "'assumes_direction'", file, diags);
+      if (t && (t->text == "true" || t->text == "false")) r.assumes_direction = t->text == "true";
+      else if (t) diags.error(t->at, "'assumes_direction' is '" + t->text + "' (expected true or false)");
+    }
     if (auto n = root["needs"]) read_args(n, true, r);
     if (auto n = root["optional"]) read_args(n, false, r);
     if (auto n = root["one_of"]; n && is_list(n, "'one_of'", file, diags)) {

@@ -86,6 +86,9 @@ struct Assumption {
 struct Rule {
   std::string type;
   std::string summary;
+  // The rule's loads assume the direction the body moves in (sliding friction opposite it):
+  // past a turn the model no longer holds (a simulation ends there).
+  bool assumes_direction = false;
   std::vector<ArgSpec> args;
   std::vector<std::vector<std::string>> one_of;  // exactly one argument of each group
   std::vector<UnknownSpec> unknowns;

@@ -11,6 +11,7 @@
 
 #include "expr/parse.hpp"
 #include "expr/print.hpp"
+#include "motion/simulate.hpp"
 #include "../support/helpers.hpp"
 
 using namespace tackle;
@@ -25,6 +26,24 @@ std::vector<std::string> example_files() {
   std::sort(files.begin(), files.end());
   return files;
 }
+
+// Inside functions and roots, the arguments in normal form: exp(-c*t/(2*m)) and
+// exp(-t*c/(2*m)) are one expression only when their arguments are normalized alike.
+struct Canonical : map_function {
+  struct NormalArgs : map_function {
+    explicit NormalArgs(map_function& in) : inner(in) {}
+    map_function& inner;
+    ex operator()(const ex& a) override { return normal(inner(a)); }
+  };
+  ex operator()(const ex& e) override {
+    if (is_a<function>(e)) {
+      NormalArgs n(*this);
+      return e.map(n);
+    }
+    if (is_a<power>(e) && !e.op(1).info(info_flags::integer)) return pow(normal((*this)(e.op(0))), e.op(1));
+    return e.map(*this);
+  }
+};
 
 }  // namespace
 
@@ -109,12 +128,16 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
       REQUIRE(static_cast<bool>(root["expected_motion"]) == static_cast<bool>(analysis->motion));
       if (const YAML::Node em = root["expected_motion"]) {
         const Motion& mo = *analysis->motion;
+        // Inside functions and roots, the arguments in normal form: exp(-c*t/(2*m)) and
+        // exp(-t*c/(2*m)) are one expression only when their arguments are normalized alike.
+        Canonical canonical;
         auto motion_out = [&](ex e) {
           for (int depth = 0; depth < 4; ++depth) e = e.subs(mo.definitions);
-          return defined_out(e);
+          return canonical(defined_out(e));
         };
         auto same = [&](const ex& got, const std::string& want) {
           const auto parsed = parse_expression(want, table);
+          INFO("expected: " << want << (parsed.problems.empty() ? "" : " -- " + parsed.problems[0].message));
           REQUIRE(parsed.value);
           const ex difference = motion_out(got - *parsed.value);
           INFO("tackle: " << to_text(got) << "  expected: " << want);
@@ -148,6 +171,29 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
                                         [&](const QuantityInTime& x) { return x.name == kv.first.as<std::string>(); });
             REQUIRE(q != mo.quantities.end());
             same(q->of_t, kv.second.as<std::string>());
+          }
+        // Numbers at given times: the closed-form response, and the numeric integration
+        // (Boost.Odeint), each against the hand-derived value.
+        if (const YAML::Node at = em["at_time"])
+          for (const auto& row : at) {
+            const double tt = row["t"].as<double>();
+            const std::string q = to_text(mo.eom.q[0]);
+            const double want = row[q].as<double>();
+            INFO("at t = " << tt);
+            if (mo.response) {
+              exmap vals = table.values();
+              vals[analysis->model.time] = numeric(row["t"].as<std::string>().c_str());
+              const ex v = evalf(motion_out(mo.response->q).subs(vals).subs(vals));
+              REQUIRE(is_a<numeric>(v));
+              CHECK(ex_to<numeric>(v).to_double() == Approx(want).epsilon(1e-5));
+            }
+            SimulationSpec spec;
+            spec.until = tt;
+            spec.plot = {q};
+            const Simulation run = simulate(*analysis, spec, Location{});
+            REQUIRE(run.complete);
+            REQUIRE(run.table.y[0].back());
+            CHECK(*run.table.y[0].back() == Approx(want).epsilon(1e-5));
           }
         auto condition = [&](const std::string& source) {
           const auto c = std::find_if(mo.conditions.begin(), mo.conditions.end(),

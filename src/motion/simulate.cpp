@@ -1,0 +1,263 @@
+#include "motion/simulate.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+
+#include <boost/numeric/odeint.hpp>
+
+#include "expr/parse.hpp"
+#include "expr/print.hpp"
+#include "numeric/compiled.hpp"
+#include "numeric/evaluate.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+
+namespace {
+
+using State = std::vector<double>;
+
+// An expression in the state, the parameters put in (definitions, geometric lengths and
+// values), ready to compile.
+ex in_numbers(const ex& e, const SymbolTable& table, const exmap& values) {
+  ex out = e;
+  const exmap defs = table.definitions(true);
+  for (int depth = 0; depth < 8; ++depth) out = out.subs(defs);
+  return out.subs(values);
+}
+
+bool holds(double v, const std::string& op) {
+  if (op == ">=") return v >= 0;
+  if (op == ">") return v > 0;
+  if (op == "<=") return v <= 0;
+  if (op == "<") return v < 0;
+  return std::abs(v) <= 1e-12;
+}
+
+}  // namespace
+
+Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Location& where) {
+  const Model& m = a.model;
+  const SymbolTable& table = *m.symbols;
+  if (!a.motion) throw InputError({{where, "the description has no 'motion' (expected, e.g., motion: {initial: {x: 0, dot(x): 0}})"}});
+  const Motion& mo = *a.motion;
+  const MotionSpec& ms = *m.motion;
+  const EquationsOfMotion& eom = mo.eom;
+  double until = 0;
+  if (spec.until) until = *spec.until;
+  else if (ms.until) until = ex_to<numeric>(evalf(*ms.until)).to_double();
+  else throw InputError({{where, "no end time (expected --until SECONDS, or 'until' in the description's 'motion')"}});
+  if (!(until > 0) || !std::isfinite(until)) throw InputError({{where, "the end time must be a positive number of seconds"}});
+
+  // The inputs of every compiled expression: t, then the coordinates, then the rates.
+  std::vector<ex> inputs{m.time};
+  inputs.insert(inputs.end(), eom.q.begin(), eom.q.end());
+  inputs.insert(inputs.end(), eom.dq.begin(), eom.dq.end());
+  exmap values = table.values();
+  for (const auto& x : inputs) values.erase(x);  // a coordinate given a value at the instant varies now
+  exmap state_of;  // quantities asked for, dependent coordinates and rates -> their expressions in the state
+  for (const auto& [sym, e] : mo.in_state) state_of[sym] = e;
+
+  std::vector<Diagnostic> problems;
+  auto compile = [&](const ex& e, const std::string& what) -> std::optional<Compiled> {
+    std::string problem;
+    auto c = Compiled::compile(in_numbers(e, table, values), inputs, problem);
+    if (!c) problems.push_back({where, what + ": " + problem});
+    return c;
+  };
+  const std::size_t n = eom.dof;
+  std::vector<Compiled> accel;
+  for (std::size_t i = 0; i < n; ++i)
+    if (auto c = compile(eom.acceleration[i], "the acceleration " + to_text(eom.ddq[i]))) accel.push_back(*c);
+  struct Watched {
+    Compiled g;
+    std::string op, what;
+  };
+  std::vector<Watched> conditions;
+  for (const auto& [c, e] : mo.conditions_in_state)
+    if (auto g = compile(e, c->condition->source))
+      conditions.push_back({*g, c->condition->op, c->condition->source + ": " + c->condition->otherwise});
+  // What to tabulate: as asked, else the description's plot, else the coordinates.
+  std::vector<std::string> plot = spec.plot;
+  if (plot.empty())
+    for (const auto& p : ms.plot) plot.push_back(p.text);
+  if (plot.empty())
+    for (const auto& q : eom.q) plot.push_back(to_text(q));
+  SweepResult table_out;
+  table_out.title = m.title;
+  table_out.x_name = "t";
+  table_out.x_unit = "s";
+  std::vector<Compiled> columns;
+  std::optional<Dimension> common;
+  bool same_dimension = true;
+  for (const auto& p : plot) {
+    auto r = parse_expression(p, table);
+    if (!r.value) {
+      for (const auto& pr : r.problems) problems.push_back({where, "plot '" + p + "': " + pr.message});
+      continue;
+    }
+    const ex e = r.value->subs(state_of);
+    if (auto c = compile(e, "plot '" + p + "'")) {
+      columns.push_back(*c);
+      table_out.names.push_back(p);
+      table_out.latex.push_back(to_latex(*r.value));
+      std::string dim_problem;
+      const auto dim = dimension_of(e, table, dim_problem);
+      if (!dim || (common && !(*common == *dim))) same_dimension = false;
+      else common = dim;
+    }
+  }
+  if (!problems.empty()) throw InputError(problems);
+  if (same_dimension && common) table_out.y_unit = si_unit_name(*common);
+
+  // The initial state.
+  State x(2 * n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (const bool rate : {false, true}) {
+      const ex& s = rate ? eom.dq[i] : eom.q[i];
+      const ex v = evalf(in_numbers(ms.initial.at(s), table, values));
+      if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real())
+        throw InputError({{ms.at, "the initial value of " + to_text(s) + " has no number (a parameter without a value?)"}});
+      x[rate ? n + i : i] = ex_to<numeric>(v).to_double();
+    }
+  std::vector<double> in(1 + 2 * n);
+  auto load = [&](double t, const State& s) {
+    in[0] = t;
+    for (std::size_t i = 0; i < 2 * n; ++i) in[1 + i] = s[i];
+  };
+  auto rhs = [&](const State& s, State& dsdt, double t) {
+    load(t, s);
+    for (std::size_t i = 0; i < n; ++i) {
+      dsdt[i] = s[n + i];
+      dsdt[n + i] = accel[i](in.data());
+    }
+  };
+
+  Simulation out;
+  auto record = [&](double t, const State& s) {
+    load(t, s);
+    table_out.x.push_back(t);
+    if (table_out.y.empty()) table_out.y.resize(columns.size());
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+      const double v = columns[k](in.data());
+      table_out.y[k].push_back(std::isfinite(v) ? std::optional<double>(v) : std::nullopt);
+    }
+    table_out.valid.push_back(true);
+  };
+  // Watched signs: each condition's truth, each rate's sign.
+  auto truth = [&](std::size_t k, double t, const State& s) {
+    load(t, s);
+    return holds(conditions[k].g(in.data()), conditions[k].op);
+  };
+  for (std::size_t k = 0; k < conditions.size(); ++k)
+    if (!truth(k, 0, x)) {
+      out.events.push_back({0, conditions[k].what, true});
+      out.stopped = "the model does not hold at t = 0 (" + conditions[k].what + ")";
+      record(0, x);
+      out.table = std::move(table_out);
+      return out;
+    }
+  const bool direction_assumed = !m.direction_assumed_by.empty();
+
+  namespace odeint = boost::numeric::odeint;
+  auto stepper = odeint::make_dense_output(spec.tolerance, spec.tolerance, odeint::runge_kutta_dopri5<State>());
+  stepper.initialize(x, 0.0, until / 1000);
+  const double dt = until / std::max(1, spec.samples - 1);
+  int next_sample = 0;
+  std::vector<int> rate_sign(n);
+  for (std::size_t i = 0; i < n; ++i) rate_sign[i] = x[n + i] > 0 ? 1 : (x[n + i] < 0 ? -1 : 0);
+  const auto started = std::chrono::steady_clock::now();
+  State xm(2 * n), x1(2 * n);
+  double end = until;
+  while (true) {
+    const auto [t0, t1] = stepper.do_step(rhs);
+    ++out.steps;
+    x1 = stepper.current_state();
+    bool finite = true;
+    for (double v : x1) finite = finite && std::isfinite(v);
+    if (!finite) {
+      end = t0;
+      out.stopped = "the state stopped being finite after t = " + decimal_string(numeric(t0), 6) + " s";
+      break;
+    }
+    // The first event in (t0, t1], located by bisection on the dense output.
+    double event_t = t1 + 1;
+    std::string event_what;
+    bool event_ends = false;
+    auto locate = [&](const std::function<bool(double, const State&)>& changed) {
+      double lo = t0, hi = t1;
+      for (int it = 0; it < 60 && hi - lo > 1e-13 * std::max(1.0, hi); ++it) {
+        const double mid = (lo + hi) / 2;
+        stepper.calc_state(mid, xm);
+        (changed(mid, xm) ? hi : lo) = mid;
+      }
+      return hi;
+    };
+    for (std::size_t k = 0; k < conditions.size(); ++k)
+      if (!truth(k, t1, x1)) {
+        const double te = locate([&](double t, const State& s) { return !truth(k, t, s); });
+        if (te < event_t) event_t = te, event_what = conditions[k].what, event_ends = true;
+      }
+    for (std::size_t i = 0; i < n; ++i) {
+      const int now = x1[n + i] > 0 ? 1 : (x1[n + i] < 0 ? -1 : 0);
+      if (rate_sign[i] != 0 && now != rate_sign[i]) {
+        const int before = rate_sign[i];
+        const double te = locate([&](double, const State& s) { return (s[n + i] > 0 ? 1 : -1) != before; });
+        if (te < event_t || (te == event_t && !event_ends)) {
+          event_t = te;
+          event_what = to_text(eom.dq[i]) + " = 0: " + to_text(eom.q[i]) + " turns" +
+                       (direction_assumed ? " (the friction of " + m.direction_assumed_by.front() + " would change direction)" : "");
+          event_ends = direction_assumed;
+        }
+      }
+      if (now != 0) rate_sign[i] = now;
+    }
+    const double stop_at = std::min({event_t, until, t1});
+    while (next_sample * dt <= stop_at + 1e-12 * until && next_sample < spec.samples) {
+      const double ts = std::min(next_sample * dt, until);
+      stepper.calc_state(ts, xm);
+      record(ts, xm);
+      ++next_sample;
+    }
+    if (event_t <= t1 && event_t <= until) {
+      out.events.push_back({event_t, event_what, event_ends});
+      if (event_ends) {
+        end = event_t;
+        stepper.calc_state(event_t, xm);
+        if (table_out.x.empty() || table_out.x.back() < event_t) record(event_t, xm);
+        out.stopped = "the model no longer holds after t = " + decimal_string(numeric(event_t), 6) + " s (" + event_what + ")";
+        break;
+      }
+    }
+    if (t1 >= until) {
+      out.complete = true;
+      break;
+    }
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    if (elapsed > spec.time_limit || out.steps > 10000000) {
+      end = t1;
+      out.stopped = "the integration reached only t = " + decimal_string(numeric(t1), 6) + " s in its time limit (" +
+                    std::to_string(out.steps) + " steps): undecided beyond";
+      break;
+    }
+  }
+  out.reached = out.complete ? until : end;
+  out.table = std::move(table_out);
+  return out;
+}
+
+std::string simulation_text(const Simulation& s) {
+  std::string out = s.table.title + "\n";
+  out += "Simulated to t = " + decimal_string(numeric(s.reached), 6) + " s (" + std::to_string(s.steps) +
+         " steps, Dormand-Prince 5(4))";
+  out += s.complete ? "; the model holds throughout.\n" : ".\n";
+  if (!s.stopped.empty()) out += "Stopped: " + s.stopped + ".\n";
+  for (const auto& e : s.events)
+    out += "Event at t = " + decimal_string(numeric(e.t), 6) + " s: " + e.what + (e.ends ? " (the run ends)" : "") + "\n";
+  out += "\n" + sweep_csv(s.table);
+  return out;
+}
+
+}  // namespace tackle
