@@ -43,29 +43,48 @@ bool has_hidden_pole(const ex& e) {
 
 }  // namespace
 
+bool is_rational_number(const ex& e) {
+  if (is_a<numeric>(e)) return ex_to<numeric>(e).is_rational();
+  if (is_a<power>(e)) return e.op(1).info(info_flags::integer) && is_rational_number(e.op(0));
+  if (is_a<add>(e) || is_a<mul>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i)
+      if (!is_rational_number(e.op(i))) return false;
+    return true;
+  }
+  return false;
+}
+
 bool has_pole_at(const ex& e, const exmap& values) {
   const ex v = e.subs(values);
   return has_hidden_pole(v);
 }
 
-bool NormalForm::undefined_at(const exmap& values) const {
-  const ex d = normal(den.subs(values));
-  return d.is_zero() || has_hidden_pole(d) || has_hidden_pole(num.subs(values) / d);
+bool NormalForm::undefined_at(const exmap& values) const { return !denominator_at(values); }
+
+std::optional<ex> NormalForm::denominator_at(const exmap& values) const {
+  const ex ds = den.subs(values);
+  // Exact arithmetic decides a rational number; with radicals in it, normal() is costly and
+  // not a zero test anyway: the numeric look for a cancelling sum decides.
+  const bool rational = is_rational_number(ds);
+  const ex d = rational ? normal(ds) : ds;
+  if (d.is_zero() || has_hidden_pole(d) || (!rational && has_hidden_pole(1 / d)) || has_hidden_pole(num.subs(values)))
+    return std::nullopt;
+  return d;
 }
 
 std::optional<ex> NormalForm::at(const exmap& values) const {
-  if (undefined_at(values)) return std::nullopt;
-  const ex d = normal(den.subs(values));
-  const ex v = normal(num.subs(values) / d);
+  const auto d = denominator_at(values);
+  if (!d) return std::nullopt;
+  const ex v = normal(num.subs(values) / *d);
   for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
     if (is_a<symbol>(*it)) return std::nullopt;
   return v;
 }
 
 std::optional<double> NormalForm::approx_at(const exmap& values) const {
-  if (undefined_at(values)) return std::nullopt;
-  const ex d = normal(den.subs(values));
-  const ex v = evalf(num.subs(values) / d);
+  const auto d = denominator_at(values);
+  if (!d) return std::nullopt;
+  const ex v = evalf(num.subs(values)) / evalf(*d);
   if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
   return ex_to<numeric>(v).to_double();
 }

@@ -153,6 +153,13 @@ SweepResult run_sweep(const Analysis& a, const Derivation& d, const SweepSpec& s
       const auto& cond = d.conditions[k];
       // Exact at rational points (N_A is exactly 0 at h/l = 1), else a high-precision float;
       // undefined there: not valid.
+      // With roots in it (a tilted normal), a double: normal() of radicals is slow and no
+      // exact zero test anyway.
+      if (!is_rational_number(condition_forms[k].num.subs(values)) || !is_rational_number(condition_forms[k].den.subs(values))) {
+        const auto a = condition_forms[k].approx_at(values);
+        valid = valid && a && relation_holds(numeric(*a), cond.op);
+        continue;
+      }
       const auto exact = condition_forms[k].at(values);
       ex v = exact ? *exact : ex(0);
       if (!is_a<numeric>(v)) v = evalf(v);
