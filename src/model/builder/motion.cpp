@@ -44,8 +44,10 @@ void motion(BuildContext& ctx) {
     const SymbolInfo* t = ctx.table->find("t");
     ctx.diags.error(md.at, "'motion' needs t as time, but 't' is a parameter (line " +
                                std::to_string(t ? t->where.line : 0) + "; expected another name for it)");
-    return;
   }
+  // Problems are reported and the checks go on, so that every problem is reported at once;
+  // the motion is kept only when there were none.
+  bool usable = is_a<symbol>(m.time);
   MotionSpec spec;
   spec.at = md.at;
   // The moving coordinates, in body order.
@@ -120,9 +122,9 @@ void motion(BuildContext& ctx) {
       ctx.diags.error(md.at, "the motion has " + std::to_string(dof) + (dof == 1 ? " degree" : " degrees") +
                                  " of freedom, but 'coordinates' lists " + std::to_string(chosen.size()) +
                                  " (expected also one of: " + join(more) + ")");
-      return;
+      usable = false;
     }
-    if (!ok) return;
+    if (!ok) usable = false;
   } else {
     // Given coordinates first, then the others in body order, each when it is independent of
     // those chosen before it.
@@ -141,7 +143,7 @@ void motion(BuildContext& ctx) {
   if (dof == 0) {
     ctx.diags.error(md.at, "the motion has no degree of freedom: the constraints fix every coordinate" +
                                std::string(n == 0 ? " (no body has a 'position')" : ""));
-    return;
+    usable = false;
   }
   for (auto j : chosen) {
     const Body& b = m.bodies[moving[j]];
@@ -233,7 +235,7 @@ void motion(BuildContext& ctx) {
   spec.lambda = ctx.table->add(lambda, std::nullopt, SymbolRole::motion, Dimension::none() / Dimension::time(), true, md.at).sym;
   spec.zeta = ctx.table->add(zeta, std::nullopt, SymbolRole::motion, Dimension::none(), true, md.at).sym;
   spec.omega_d = ctx.table->add(omega_d, std::nullopt, SymbolRole::motion, Dimension::none() / Dimension::time(), true, md.at).sym;
-  m.motion = std::move(spec);
+  if (usable) m.motion = std::move(spec);
 }
 
 }  // namespace tackle::build
