@@ -296,6 +296,30 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     }
   }
 
+  // More than one degree of freedom: the modes are numeric (Eigen), with the given values.
+  if (eom.linear && n > 1) {
+    const exmap values = table.values();
+    Eigen::MatrixXd Mn(n, n), Kn(n, n);
+    bool numbers = true;
+    for (std::size_t i = 0; i < n && numbers; ++i)
+      for (std::size_t j = 0; j < n && numbers; ++j) {
+        const auto mv = NormalForm(eom.M(i, j)).approx_at(values), kv = NormalForm(eom.K(i, j)).approx_at(values);
+        if (!mv || !kv) numbers = false;
+        else Mn(i, j) = *mv, Kn(i, j) = *kv;
+      }
+    if (numbers && std::abs(Mn.determinant()) > 0) {
+      const Eigen::EigenSolver<Eigen::MatrixXd> es(Mn.inverse() * Kn);
+      bool real = es.info() == Eigen::Success;
+      for (Eigen::Index i = 0; i < es.eigenvalues().size() && real; ++i) {
+        const auto ev = es.eigenvalues()(i);
+        if (std::abs(ev.imag()) > 1e-9 * (1 + std::abs(ev.real())) || ev.real() < 0) real = false;
+        else eom.natural_frequencies.push_back(std::sqrt(std::max(0.0, ev.real())));
+      }
+      if (!real) eom.natural_frequencies.clear();
+      std::sort(eom.natural_frequencies.begin(), eom.natural_frequencies.end());
+    }
+  }
+
   // One degree of freedom, linear: the response in closed form.
   if (n == 1 && eom.linear) {
     const ex M = eom.M(0, 0), C = eom.C(0, 0), K = eom.K(0, 0);
@@ -446,12 +470,13 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   // The lambda form: the stiffness's one symbol replaced by lambda^2 times the mass (k ->
   // lambda^2 (m + M)), where that is shorter.
   auto in_lambda = [&](const ex& e) {
-    ex best = simplest(normal(e));
-    if (r.regime != Response::Regime::undamped) return best;
+    const ex plain = normal(e);
     const ex K = eom.K(0, 0), M = eom.M(0, 0);
-    if (!is_a<symbol>(K)) return best;
-    const ex alt = simplest(normal(e.subs(K == pow(spec.lambda, 2) * M)));
-    return to_text(alt).size() < to_text(best).size() ? alt : best;
+    if (r.regime == Response::Regime::undamped && is_a<symbol>(K)) {
+      const ex alt = normal(e.subs(K == pow(spec.lambda, 2) * M));
+      if (to_text(alt).size() < to_text(plain).size()) return simplest(alt);
+    }
+    return simplest(plain);
   };
   for (const auto& w : m.wanted) {
     ex value = w.defined ? w.expr.subs(sol.general) : w.expr.subs(sol.general);

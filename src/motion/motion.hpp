@@ -34,6 +34,9 @@ struct EquationsOfMotion {
   GiNaC::matrix M, C, K;
   std::vector<GiNaC::ex> forcing;
   std::optional<std::vector<GiNaC::ex>> equilibrium;  // K q = F, when F is constant and K invertible
+  // More than one degree of freedom, linear, with numbers: the undamped natural frequencies
+  // (rad/s, ascending), numeric: square roots of the eigenvalues of M^-1 K (Eigen).
+  std::vector<double> natural_frequencies;
 };
 
 /// The closed-form response of one linear degree of freedom from its initial conditions.

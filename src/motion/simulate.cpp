@@ -202,14 +202,16 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
       }
     for (std::size_t i = 0; i < n; ++i) {
       const int now = x1[n + i] > 0 ? 1 : (x1[n + i] < 0 ? -1 : 0);
-      if (rate_sign[i] != 0 && now != rate_sign[i]) {
+      // A turn matters where a rule assumed the direction of motion (sliding friction); an
+      // oscillation's turns are not events.
+      if (direction_assumed && rate_sign[i] != 0 && now != rate_sign[i]) {
         const int before = rate_sign[i];
         const double te = locate([&](double, const State& s) { return (s[n + i] > 0 ? 1 : -1) != before; });
         if (te < event_t || (te == event_t && !event_ends)) {
           event_t = te;
-          event_what = to_text(eom.dq[i]) + " = 0: " + to_text(eom.q[i]) + " turns" +
-                       (direction_assumed ? " (the friction of " + m.direction_assumed_by.front() + " would change direction)" : "");
-          event_ends = direction_assumed;
+          event_what = to_text(eom.dq[i]) + " = 0: " + to_text(eom.q[i]) + " turns (the friction of " +
+                       m.direction_assumed_by.front() + " would change direction)";
+          event_ends = true;
         }
       }
       if (now != 0) rate_sign[i] = now;

@@ -2,8 +2,8 @@
 // dense output), for any motion the description asks for, linear or not: the state is the
 // motion's coordinates and rates, the right-hand side their solved accelerations compiled to
 // doubles. Events: a validity condition that stops holding (a string going slack, a contact
-// lost) ends the run there, since the model no longer holds; a rate changing sign is noted,
-// and ends the run where a rule assumed the direction of motion (sliding friction).
+// lost) ends the run there, since the model no longer holds; so does a rate changing sign
+// where a rule assumed the direction of motion (sliding friction).
 #pragma once
 
 #include <optional>

@@ -80,6 +80,12 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
     text("Equations of motion, the constraint forces eliminated (nonlinear: " + eom.nonlinear + "):");
     for (std::size_t i = 0; i < eom.dof; ++i) equation("equation of motion (" + to_text(eom.q[i]) + ")", eom.ddq[i], eom.acceleration[i]);
   }
+  if (!eom.natural_frequencies.empty()) {
+    std::string f;
+    for (std::size_t i = 0; i < eom.natural_frequencies.size(); ++i)
+      f += (i ? ", " : "") + decimal_string(GiNaC::numeric(eom.natural_frequencies[i]), options.digits);
+    text("Natural frequencies (numeric, from the eigenvalues of M^-1 K with the given values; undamped): " + f + " rad/s.");
+  }
   if (!mo.response) {
     text("No closed-form response: " + mo.no_response + ". `tackle simulate` integrates the motion numerically.");
     return;

@@ -206,6 +206,7 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
     j["stiffness"] = mat(e.K);
     j["forcing"] = J::array();
     for (const auto& f : e.forcing) j["forcing"].push_back(to_text(f));
+    j["natural_frequencies"] = e.natural_frequencies;
     j["equilibrium"] = J(nullptr);
     if (e.equilibrium) {
       j["equilibrium"] = J::array();

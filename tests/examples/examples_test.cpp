@@ -177,24 +177,37 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
         if (const YAML::Node at = em["at_time"])
           for (const auto& row : at) {
             const double tt = row["t"].as<double>();
-            const std::string q = to_text(mo.eom.q[0]);
-            const double want = row[q].as<double>();
             INFO("at t = " << tt);
-            if (mo.response) {
-              exmap vals = table.values();
-              vals[analysis->model.time] = numeric(row["t"].as<std::string>().c_str());
-              const ex v = evalf(motion_out(mo.response->q).subs(vals).subs(vals));
-              REQUIRE(is_a<numeric>(v));
-              CHECK(ex_to<numeric>(v).to_double() == Approx(want).epsilon(1e-5));
-            }
             SimulationSpec spec;
             spec.until = tt;
-            spec.plot = {q};
+            for (const auto& q : mo.eom.q) spec.plot.push_back(to_text(q));
             const Simulation run = simulate(*analysis, spec, Location{});
             REQUIRE(run.complete);
-            REQUIRE(run.table.y[0].back());
-            CHECK(*run.table.y[0].back() == Approx(want).epsilon(1e-5));
+            for (std::size_t i = 0; i < mo.eom.q.size(); ++i) {
+              const std::string q = to_text(mo.eom.q[i]);
+              if (!row[q]) continue;
+              const double want = row[q].as<double>();
+              INFO("coordinate " << q);
+              if (mo.response) {
+                exmap vals = table.values();
+                vals[analysis->model.time] = numeric(row["t"].as<std::string>().c_str());
+                const ex v = evalf(motion_out(mo.response->q).subs(vals).subs(vals));
+                REQUIRE(is_a<numeric>(v));
+                CHECK(ex_to<numeric>(v).to_double() == Approx(want).epsilon(1e-5));
+              }
+              REQUIRE(run.table.y[i].back());
+              CHECK(*run.table.y[i].back() == Approx(want).epsilon(1e-6));
+            }
           }
+        if (const YAML::Node nf = em["natural_frequencies"]) {
+          REQUIRE(mo.eom.natural_frequencies.size() == nf.size());
+          for (std::size_t i = 0; i < nf.size(); ++i) CHECK(mo.eom.natural_frequencies[i] == Approx(nf[i].as<double>()).epsilon(1e-8));
+        }
+        if (const YAML::Node eq = em["equilibrium"]) {
+          REQUIRE(mo.eom.equilibrium);
+          REQUIRE(mo.eom.equilibrium->size() == eq.size());
+          for (std::size_t i = 0; i < eq.size(); ++i) same((*mo.eom.equilibrium)[i], eq[i].as<std::string>());
+        }
         auto condition = [&](const std::string& source) {
           const auto c = std::find_if(mo.conditions.begin(), mo.conditions.end(),
                                       [&](const ConditionInTime& x) { return x.condition->condition->source == source; });
