@@ -172,7 +172,9 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
   State xm(2 * n), x1(2 * n);
   double end = until;
   while (true) {
-    const auto [t0, t1] = stepper.do_step(rhs);
+    // (Not a structured binding: the lambdas below capture the two times.)
+    const std::pair<double, double> span = stepper.do_step(rhs);
+    const double t0 = span.first, t1 = span.second;
     ++out.steps;
     x1 = stepper.current_state();
     bool finite = true;
