@@ -326,6 +326,36 @@ struct Reader {
     d.motion = std::move(mo);
   }
 
+  // A mapping of names to expressions (`{dot(x): v_1}`), into `out`.
+  void read_values(const YAML::Node& n, const std::string& what, std::vector<std::pair<Text, Text>>& out) {
+    if (!n.IsMap()) {
+      diags.error(where(n, file), what + " is " + yaml::kind_name(n) + " (expected a mapping of rates to values, e.g. {dot(x): v_1})");
+      return;
+    }
+    yaml::check_unique_keys(n, what, file, diags);
+    std::set<std::string> seen;
+    for (const auto& kv : n) {
+      if (!seen.insert(kv.first.Scalar()).second) continue;
+      if (auto v = scalar(kv.second, "value of '" + kv.first.Scalar() + "' in " + what, file, diags))
+        out.emplace_back(key_text(kv.first), *v);
+    }
+  }
+
+  void read_interval(const YAML::Node& n) {
+    if (!check_map(n, {"duration", "distance", "from", "to"}, "'interval'", file, diags)) return;
+    IntervalDesc iv;
+    iv.at = where(n, file);
+    iv.duration = opt_scalar(n, "duration", "'interval'");
+    iv.distance = opt_scalar(n, "distance", "'interval'");
+    if (iv.duration.has_value() == iv.distance.has_value())
+      diags.error(iv.at, "'interval' needs exactly one of 'duration' and 'distance' (expected, e.g., duration: Delta_t)");
+    if (auto f = n["from"]) read_values(f, "'from' of 'interval'", iv.from);
+    else diags.error(iv.at, "'interval' has no 'from' (expected the rates at its start, e.g. {dot(x): v_1})");
+    if (auto t = n["to"]) read_values(t, "'to' of 'interval'", iv.to);
+    else diags.error(iv.at, "'interval' has no 'to' (expected the rates at its end, e.g. {dot(x): v_2})");
+    d.interval = std::move(iv);
+  }
+
   void read_derive(const YAML::Node& n) {
     if (!n.IsSequence()) {
       diags.error(where(n, file), "'derive' is " + yaml::kind_name(n) + " (expected a list of balances)");
@@ -384,7 +414,7 @@ DescriptionRead read_description_text(const std::string& text, const std::string
   check_map(root,
             {"title", "source", "axes", "parameters", "gravity", "bodies", "points", "connections", "loads",
              "strings", "layout", "given", "find", "derive", "expected", "expected_combinations", "expected_conditions", "expected_free", "expected_power",
-             "notes", "sweep", "motion", "expected_motion"},
+             "notes", "sweep", "motion", "expected_motion", "interval"},
             "the description", file, diags);
   if (auto t = root["title"]) {
     if (auto s = scalar(t, "'title'", file, diags)) d.title = *s;
@@ -434,6 +464,7 @@ DescriptionRead read_description_text(const std::string& text, const std::string
     }
   }
   if (auto mo = root["motion"]) r.read_motion(mo);
+  if (auto iv = root["interval"]) r.read_interval(iv);
   out.problems = diags.items();
   return out;
 }

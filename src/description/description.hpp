@@ -115,6 +115,15 @@ struct MotionDesc {
   Location at;
 };
 
+/// An interval of constant acceleration (`interval:`): the forces are taken constant over it
+/// (their averages), so each rate changes linearly: impulse and momentum over a duration, or
+/// v^2 = v0^2 + 2 a s over a distance.
+struct IntervalDesc {
+  std::optional<Text> duration, distance;
+  std::vector<std::pair<Text, Text>> from, to;  // rate -> expression in the parameters
+  Location at;
+};
+
 struct Description {
   std::string file;
   Text title;
@@ -133,6 +142,7 @@ struct Description {
   std::vector<DeriveDesc> derive;  // empty: tackle chooses a complete set
   std::optional<SweepDesc> sweep;  // a default for `tackle sweep`, and a figure in LaTeX reports
   std::optional<MotionDesc> motion;  // motion in time (equations of motion, response, simulate)
+  std::optional<IntervalDesc> interval;  // constant acceleration over an interval
 };
 
 /// A description and the problems found while reading it; what could be read is kept so that

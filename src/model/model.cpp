@@ -45,6 +45,7 @@ Model build_model(const Description& d, const RuleSet& rules) {
   build::constraint_constants(ctx);
   build::derive(ctx);
   build::motion(ctx);
+  build::interval(ctx);
   m.sweep = d.sweep;
   ctx.diags.throw_if_any();
   m.symbols = ctx.table;

@@ -113,6 +113,19 @@ struct MotionSpec {
   GiNaC::ex lambda, zeta, omega_d;     // symbols: natural frequency, damping ratio, damped frequency
 };
 
+/// Constant acceleration over an interval (`interval:`): for each body whose rate is given at
+/// its start and end, one equation ties its acceleration to the change (impulse and momentum
+/// over a duration, v^2 = v0^2 + 2 a s over a distance along its coordinate).
+struct IntervalSpec {
+  std::optional<GiNaC::ex> duration, distance;
+  struct Change {
+    int body = -1;
+    GiNaC::ex from, to;
+  };
+  std::vector<Change> changes;
+  Location at;
+};
+
 struct Model {
   std::string file;
   std::string title;
@@ -137,6 +150,7 @@ struct Model {
   std::optional<SweepDesc> sweep;     // as described (checked when it is run)
   GiNaC::ex time = 0;                 // t (0 when the description uses the name t itself)
   std::optional<MotionSpec> motion;
+  std::optional<IntervalSpec> interval;
 };
 
 /// d/dt of an expression in the bodies' coordinates and rates, the turning lengths and time

@@ -135,7 +135,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   section(has_amb ? "Free body diagrams: linear and angular momentum balance"
                   : "Free body diagrams: linear momentum balance");
   for (const auto& eq : s.equations) {
-    if (eq.kind == Equation::Kind::constraint_acceleration) continue;
+    if (eq.kind == Equation::Kind::constraint_acceleration || eq.kind == Equation::Kind::interval) continue;
     std::vector<std::string> parts;
     std::vector<ex> terms;
     for (std::size_t i = 0; i < eq.terms.size(); ++i) {
@@ -157,6 +157,17 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       equation(c.label + ": rate", 0, c.rate);
       equation(c.label + ": acceleration", 0, c.acceleration);
     }
+  }
+
+  if (m.interval) {
+    section(m.interval->duration ? "Over the interval: impulse and momentum" : "Over the interval: constant acceleration");
+    text("The forces are taken constant over the interval (their averages), so each acceleration is constant and each "
+         "rate changes linearly:");
+    for (const auto& eq : s.equations)
+      if (eq.kind == Equation::Kind::interval) {
+        text(eq.sources.front() + ".");
+        equation(eq.label, eq.lhs, eq.rhs);
+      }
   }
 
   section("Solving");

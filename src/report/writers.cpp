@@ -32,6 +32,7 @@ std::string kind_name(Equation::Kind k) {
     case Equation::Kind::constraint_acceleration: return "constraint";
     case Equation::Kind::constraint_rate: return "constraint_rate";
     case Equation::Kind::constraint_position: return "constraint_position";
+    case Equation::Kind::interval: return "interval";
   }
   return "";
 }

@@ -239,3 +239,61 @@ void motion(BuildContext& ctx) {
 }
 
 }  // namespace tackle::build
+
+namespace tackle::build {
+
+void interval(BuildContext& ctx) {
+  if (!ctx.d.interval) return;
+  const IntervalDesc& d = *ctx.d.interval;
+  Model& m = ctx.m;
+  IntervalSpec spec;
+  spec.at = d.at;
+  auto quantity = [&](const std::optional<Text>& t, const std::string& what, const Dimension& dim) -> std::optional<ex> {
+    if (!t) return std::nullopt;
+    auto v = ctx.parse(*t, *ctx.table, what);
+    if (!v) return std::nullopt;
+    for (const auto& s : ctx.table->all())
+      if (v->has(s->sym) && s->role != SymbolRole::parameter) {
+        ctx.diags.error(t->at, what + " is not an expression in the parameters");
+        return std::nullopt;
+      }
+    if (!is_a<numeric>(*v)) ctx.check_dimension(*v, dim, t->at, what);
+    return v;
+  };
+  spec.duration = quantity(d.duration, "'duration' of 'interval'", Dimension::time());
+  spec.distance = quantity(d.distance, "'distance' of 'interval'", Dimension::length());
+  // The rates: each a moving body's, given at both ends.
+  std::map<int, std::pair<std::optional<ex>, std::optional<ex>>> ends;
+  std::vector<int> order;
+  for (const bool at_end : {false, true})
+    for (const auto& [key, value] : at_end ? d.to : d.from) {
+      const std::string what = std::string(at_end ? "'to'" : "'from'") + " of 'interval'";
+      const auto r = parse_expression(key.text, *ctx.table);
+      int body = -1;
+      for (std::size_t i = 0; i < m.bodies.size(); ++i)
+        if (r.value && !m.bodies[i].rate.is_zero() && m.bodies[i].rate.is_equal(*r.value)) body = static_cast<int>(i);
+      if (body < 0) {
+        std::vector<std::string> known;
+        for (const auto& b : m.bodies)
+          if (!b.rate.is_zero()) known.push_back(to_text(b.rate));
+        ctx.unknown_name(key, "rate", known);
+        continue;
+      }
+      auto v = quantity(Text{value.text, value.at}, "value of '" + key.text + "' in " + what, Dimension::velocity());
+      if (!v) continue;
+      if (!ends.count(body)) order.push_back(body);
+      (at_end ? ends[body].second : ends[body].first) = *v;
+    }
+  for (int b : order) {
+    const auto& [from, to] = ends[b];
+    if (!from || !to) {
+      ctx.diags.error(d.at, "'interval' gives " + to_text(m.bodies[b].rate) + (from ? " at its start only" : " at its end only") +
+                                " (expected it in both 'from' and 'to')");
+      continue;
+    }
+    spec.changes.push_back({b, *from, *to});
+  }
+  m.interval = std::move(spec);
+}
+
+}  // namespace tackle::build

@@ -38,6 +38,10 @@ void derive(BuildContext& ctx);
 // coordinates and rates become given. Needs the constraints and m.given.
 void motion(BuildContext& ctx);
 
+// m.interval from 'interval': the rates at its start and end, its duration or distance.
+// Needs the bodies and parameters.
+void interval(BuildContext& ctx);
+
 // Helpers one stage lends another.
 
 // The value of a `given` entry in SI (questions.cpp); read_layout uses it too.

@@ -27,7 +27,7 @@ TEST_CASE("Rules: the bundled rules load and declare what they need", "[rules]")
                                                  "driven_wheel", "fixed", "fixed_support", "force", "free_wheel", "hinge",
                                                  "hinge_with_moments", "link", "pin", "pin_joint", "pulley", "rod", "roller",
                                                  "same_motion", "skidding_wheel", "slider_joint", "sliding", "spring", "sticking",
-                                                 "string", "weld", "weld_joint"});
+                                                 "string", "unknown_force", "weld", "weld_joint"});
   const Rule* s = rules.find("string");
   REQUIRE(s);
   REQUIRE(s->unknowns.size() == 1);
