@@ -289,7 +289,7 @@ struct Reader {
   }
 
   void read_motion(const YAML::Node& n) {
-    if (!check_map(n, {"coordinates", "initial", "until", "plot"}, "'motion'", file, diags)) return;
+    if (!check_map(n, {"coordinates", "initial", "until", "plot", "speed_at"}, "'motion'", file, diags)) return;
     MotionDesc mo;
     mo.at = where(n, file);
     if (auto c = n["coordinates"])
@@ -323,6 +323,13 @@ struct Reader {
     }
     if (auto p = n["plot"])
       if (auto items = scalar_list(p, "'plot' of 'motion'", file, diags)) mo.plot = *items;
+    if (auto sa = n["speed_at"]) {
+      std::vector<std::pair<Text, Text>> values;
+      read_values(sa, "'speed_at' of 'motion'", values);
+      if (values.size() == 1) mo.speed_at = values.front();
+      else if (sa.IsMap()) diags.error(where(sa, file), "'speed_at' of 'motion' names " + std::to_string(values.size()) +
+                                                            " coordinates (expected one, e.g. {x: 0})");
+    }
     d.motion = std::move(mo);
   }
 

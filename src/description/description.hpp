@@ -112,6 +112,7 @@ struct MotionDesc {
   std::optional<Text> until;                     // simulate: the end time (a number in s, or value + unit)
   std::optional<Text> until_unit;
   std::vector<Text> plot;                        // simulate: quantities to tabulate and plot
+  std::optional<std::pair<Text, Text>> speed_at;  // work-energy: the speed where a coordinate has this value
   Location at;
 };
 

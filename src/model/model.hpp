@@ -109,6 +109,7 @@ struct MotionSpec {
   std::vector<std::pair<GiNaC::ex, Location>> initial_at;  // where each was written
   std::optional<GiNaC::ex> until;      // seconds
   std::vector<Text> plot;
+  std::optional<std::pair<GiNaC::ex, GiNaC::ex>> speed_at;  // coordinate -> its value there
   Location at;
   GiNaC::ex lambda, zeta, omega_d;     // symbols: natural frequency, damping ratio, damped frequency
 };

@@ -8,6 +8,7 @@
 
 #include "expr/normal_form.hpp"
 #include "expr/print.hpp"
+#include "numeric/compiled.hpp"
 
 namespace tackle {
 
@@ -149,6 +150,75 @@ exmap random_point(const SymbolTable& table, std::mt19937& rng) {
   return p;
 }
 
+// 1/2 M v^2 = 1/2 M v0^2 + the work of Q(q) = M f(q) from q0 to q1: in closed form when GiNaC
+// integrates Q (a polynomial in q), else by Gauss-Legendre quadrature with the given values.
+EnergyAnswer work_energy(const Model& m, const EquationsOfMotion& eom, const MotionSpec& spec, bool mass_constant) {
+  EnergyAnswer e;
+  e.position = spec.speed_at->second;
+  const ex& q = eom.q[0];
+  const ex f = eom.acceleration[0];
+  if (!mass_constant) {
+    e.not_possible = "the kinetic energy's coefficient changes with the coordinate";
+    return e;
+  }
+  if (f.has(eom.dq[0]) || f.has(m.time)) {
+    e.not_possible = std::string("the forces depend on the ") + (f.has(m.time) ? "time" : "velocity (a damper)") +
+                     ", so their work depends on the motion, not only on the positions (simulate it)";
+    return e;
+  }
+  const SymbolTable& table = *m.symbols;
+  const ex M = eom.M(0, 0);
+  const ex q0 = spec.initial.at(q), v0 = spec.initial.at(eom.dq[0]), q1 = e.position;
+  ex Q = normal(M * f);
+  const bool geometric = std::any_of(m.lengths.begin(), m.lengths.end(), [&](const TurningLength& l) { return Q.has(l.symbol); });
+  if (!geometric && Q.is_polynomial(q)) {
+    const symbol s("s");
+    const ex W = integral(s, q0, q1, Q.subs(q == s)).eval_integ();
+    if (!is_a<integral>(W)) {
+      e.work = simplest(normal(W));
+      e.rate_squared = simplest(normal(pow(v0, 2) + 2 * e.work / M));
+      if (auto v = NormalForm(*e.rate_squared).approx_at(table.values())) e.rate_squared_number = *v;
+      return e;
+    }
+  }
+  // Numerically: the turning lengths' definitions and the values put in, 64-point Gauss-Legendre.
+  e.numeric_only = true;
+  ex Qn = Q;
+  const exmap defs = table.definitions(true);
+  for (int depth = 0; depth < 8; ++depth) Qn = Qn.subs(defs);
+  const exmap values = table.values();
+  exmap without_q = values;
+  without_q.erase(q);
+  Qn = Qn.subs(without_q);
+  const auto a = NormalForm(q0).approx_at(values), b = NormalForm(q1).approx_at(values), mv = NormalForm(M).approx_at(values),
+             v0n = NormalForm(v0).approx_at(values);
+  if (!a || !b || !mv || !v0n) {
+    e.not_possible = "the work has no closed form and some value is missing for a number";
+    return e;
+  }
+  std::string problem;
+  const auto Qc = Compiled::compile(Qn, {q}, problem);
+  if (!Qc) {
+    e.not_possible = "the work has no closed form and " + problem;
+    return e;
+  }
+  // Composite Gauss-Legendre (5 points on each of 64 panels).
+  static const double x5[] = {0, -0.5384693101056831, 0.5384693101056831, -0.9061798459386640, 0.9061798459386640};
+  static const double w5[] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665, 0.2369268850561891, 0.2369268850561891};
+  double W = 0;
+  const int panels = 64;
+  const double h = (*b - *a) / panels;
+  for (int p = 0; p < panels; ++p) {
+    const double mid = *a + (p + 0.5) * h;
+    for (int k = 0; k < 5; ++k) {
+      const double x = mid + x5[k] * h / 2;
+      W += w5[k] * (*Qc)(&x) * h / 2;
+    }
+  }
+  e.rate_squared_number = *v0n * *v0n + 2 * W / *mv;
+  return e;
+}
+
 }  // namespace
 
 std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, const Solution& sol) {
@@ -238,7 +308,8 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     }
   }
   // The mass matrix from the kinetic energy, with the dependent rates put in.
-  if (eom.linear) {
+  bool mass_constant = true;
+  {
     ex kinetic = 0;
     for (const auto& b : m.bodies) {
       if (!b.has_mass || b.coord.is_zero()) continue;
@@ -256,13 +327,15 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
       for (std::size_t j = 0; j < n; ++j) {
         eom.M(i, j) = normal(kinetic.diff(ex_to<symbol>(eom.dq[i])).diff(ex_to<symbol>(eom.dq[j])));
         if (depends_on_state(eom.M(i, j), state, m) || eom.M(i, j).has(t)) {
+          mass_constant = false;
+          if (eom.linear) eom.nonlinear = "the kinetic energy's coefficients change with the coordinates";
           eom.linear = false;
-          eom.nonlinear = "the kinetic energy's coefficients change with the coordinates";
         }
       }
-    if (eom.linear && zero(eom.M.determinant())) {
+    if (mass_constant && zero(eom.M.determinant())) {
+      mass_constant = false;
+      if (eom.linear) eom.nonlinear = "the motion's coordinates carry no mass";
       eom.linear = false;
-      eom.nonlinear = "the motion's coordinates carry no mass";
     }
   }
   if (eom.linear) {
@@ -448,6 +521,9 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   } else {
     out.no_response = std::to_string(n) + " degrees of freedom (the modes are numeric; simulate the motion)";
   }
+  // The speed at a position, from the work-energy balance.
+  if (spec.speed_at) out.energy = work_energy(m, eom, spec, mass_constant);
+
   // Everything a simulation reports, in the state.
   for (const auto& [sym, value] : dep.coords) out.in_state.emplace_back(sym, value);
   for (const auto& [sym, value] : dep.rates) out.in_state.emplace_back(sym, put_in(value, dep));

@@ -31,7 +31,7 @@ struct EquationsOfMotion {
   // Linear with constant coefficients: M q'' + C q' + K q = F(t); else `nonlinear` says why.
   bool linear = false;
   std::string nonlinear;
-  GiNaC::matrix M, C, K;
+  GiNaC::matrix M, C, K;  // M is made whenever it is constant (also for nonlinear motion)
   std::vector<GiNaC::ex> forcing;
   std::optional<std::vector<GiNaC::ex>> equilibrium;  // K q = F, when F is constant and K invertible
   // More than one degree of freedom, linear, with numbers: the undamped natural frequencies
@@ -74,9 +74,22 @@ struct QuantityInTime {
   std::optional<Dimension> dimension;
 };
 
+/// The speed where a coordinate reaches a value, from the work-energy balance
+/// (1/2 M v^2 - 1/2 M v0^2 = the work of the forces from q0 to q), one degree of freedom,
+/// forces that depend on the position only.
+struct EnergyAnswer {
+  GiNaC::ex position;                     // q's value there
+  GiNaC::ex work;                         // the work of the forces from q0 to there (closed form, when found)
+  std::optional<GiNaC::ex> rate_squared;  // dot(q)^2 there, in closed form
+  std::optional<double> rate_squared_number;  // the same with the given values (numeric quadrature when no closed form)
+  bool numeric_only = false;              // the work was integrated numerically
+  std::string not_possible;               // why there is no work-energy answer
+};
+
 struct Motion {
   EquationsOfMotion eom;
   std::optional<Response> response;
+  std::optional<EnergyAnswer> energy;
   std::string no_response;  // why there is no closed-form response
   std::vector<QuantityInTime> quantities;
   std::vector<ConditionInTime> conditions;

@@ -3,6 +3,8 @@
 // conditions along it. Narration only: everything is computed in src/motion/.
 #include "report/derivation.hpp"
 
+#include <cmath>
+
 #include "expr/print.hpp"
 #include "report/narrator.hpp"
 
@@ -85,6 +87,41 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
     for (std::size_t i = 0; i < eom.natural_frequencies.size(); ++i)
       f += (i ? ", " : "") + decimal_string(GiNaC::numeric(eom.natural_frequencies[i]), options.digits);
     text("Natural frequencies (numeric, from the eigenvalues of M^-1 K with the given values; undamped): " + f + " rad/s.");
+  }
+  if (mo.energy) {
+    const EnergyAnswer& e = *mo.energy;
+    const ex q = eom.q[0], v = eom.dq[0];
+    const std::string qn = to_text(q), vn = to_text(v);
+    const SymbolInfo* qi = table.find(q);
+    const SymbolInfo* vi = table.find(v);
+    const ex v_there = symbol(vn + "|" + qn + "=" + to_text(e.position), vi->tex + "\\big|_{" + qi->tex + " = " + to_latex(e.position) + "}");
+    text_with("Work and energy: from {} = {} to {} = {}, the change of the kinetic energy is the work of the forces (the "
+              "constraint forces do none).",
+              {q, m.motion->initial.at(q), q, e.position});
+    if (!e.not_possible.empty()) {
+      text("No work-energy answer: " + e.not_possible + ".");
+    } else {
+      if (!e.numeric_only) {
+        equation("work of the forces", symbol("W", "W"), e.work);
+        Step* st = equation("work-energy", pow(v_there, 2), *e.rate_squared);
+        st->boxed = true;
+      } else {
+        text("The work has no closed form here; it is integrated numerically (Gauss-Legendre, 64 panels) with the given "
+             "values.");
+      }
+      if (e.rate_squared_number) {
+        const double v2 = *e.rate_squared_number;
+        if (v2 < 0) {
+          text("The kinetic energy there would be negative: the body does not reach " + qn + " = " + to_text(e.position) + ".");
+        } else {
+          Step* sp = equation(e.numeric_only ? "speed there (numeric)" : "speed there", abs(v_there),
+                              e.numeric_only ? ex(numeric(decimal_string(numeric(std::sqrt(v2)), options.digits).c_str()))
+                                                 : sqrt(*e.rate_squared));
+          sp->note = decimal_string(numeric(std::sqrt(v2)), options.digits) + " m/s";
+          sp->boxed = true;
+        }
+      }
+    }
   }
   if (!mo.response) {
     text("No closed-form response: " + mo.no_response + ". `tackle simulate` integrates the motion numerically.");

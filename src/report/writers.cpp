@@ -226,6 +226,16 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
     j["response"] = J(nullptr);
     j["no_response"] = mo.no_response;
   }
+  if (mo.energy) {
+    const EnergyAnswer& en = *mo.energy;
+    J e{{"position", to_text(en.position)}, {"numeric_only", en.numeric_only}};
+    if (!en.not_possible.empty()) e["not_possible"] = en.not_possible;
+    if (!en.numeric_only && en.not_possible.empty()) e["work"] = expr(en.work);
+    e["rate_squared"] = en.rate_squared ? expr(*en.rate_squared) : J(nullptr);
+    e["rate_squared_value"] = en.rate_squared_number ? J(*en.rate_squared_number) : J(nullptr);
+    e["speed_value"] = en.rate_squared_number && *en.rate_squared_number >= 0 ? J(std::sqrt(*en.rate_squared_number)) : J(nullptr);
+    j["energy"] = e;
+  }
   j["quantities"] = J::array();
   for (const auto& q : mo.quantities) j["quantities"].push_back({{"name", q.name}, {"in_time", expr(q.of_t)}});
   j["conditions"] = J::array();

@@ -199,6 +199,18 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
               CHECK(*run.table.y[i].back() == Approx(want).epsilon(1e-6));
             }
           }
+        if (const YAML::Node sa = em["speed_at"]) {
+          REQUIRE(mo.energy);
+          INFO(mo.energy->not_possible);
+          REQUIRE(mo.energy->rate_squared_number);
+          CHECK(std::sqrt(*mo.energy->rate_squared_number) == Approx(sa["value"].as<double>()).epsilon(1e-7));
+          if (sa["rate_squared"]) {
+            REQUIRE(mo.energy->rate_squared);
+            same(*mo.energy->rate_squared, sa["rate_squared"].as<std::string>());
+          } else {
+            CHECK(mo.energy->numeric_only);
+          }
+        }
         if (const YAML::Node nf = em["natural_frequencies"]) {
           REQUIRE(mo.eom.natural_frequencies.size() == nf.size());
           for (std::size_t i = 0; i < nf.size(); ++i) CHECK(mo.eom.natural_frequencies[i] == Approx(nf[i].as<double>()).epsilon(1e-8));

@@ -230,6 +230,26 @@ void motion(BuildContext& ctx) {
     }
   }
   spec.plot = md.plot;
+  if (md.speed_at) {
+    const auto& [key, value] = *md.speed_at;
+    const auto r = parse_expression(key.text, *ctx.table);
+    if (!r.value || std::find(spec.coordinates.begin(), spec.coordinates.end(), *r.value) == spec.coordinates.end()) {
+      std::vector<std::string> known;
+      for (const auto& q : spec.coordinates) known.push_back(to_text(q));
+      ctx.unknown_name(key, "coordinate of the motion", known);
+    } else if (spec.coordinates.size() != 1) {
+      ctx.diags.error(key.at, "'speed_at' needs one degree of freedom (the motion has " + std::to_string(spec.coordinates.size()) + ")");
+    } else if (auto v = ctx.parse(value, *ctx.table, "'speed_at' value of '" + key.text + "'")) {
+      bool in_parameters = true;
+      for (const auto& sym : ctx.table->all())
+        if (v->has(sym->sym) && sym->role != SymbolRole::parameter) in_parameters = false;
+      if (!in_parameters) ctx.diags.error(value.at, "'speed_at' value of '" + key.text + "' is not an expression in the parameters");
+      else {
+        if (!is_a<numeric>(*v)) ctx.check_dimension(*v, Dimension::length(), value.at, "'speed_at' value of '" + key.text + "'");
+        spec.speed_at = std::pair{*r.value, *v};
+      }
+    }
+  }
   const std::string lambda = free_name(*ctx.table, "lambda"), zeta = free_name(*ctx.table, "zeta"),
                     omega_d = free_name(*ctx.table, "omega_d");
   spec.lambda = ctx.table->add(lambda, std::nullopt, SymbolRole::motion, Dimension::none() / Dimension::time(), true, md.at).sym;

@@ -193,7 +193,7 @@ TEST_CASE("Spring: a stretch stated where every coordinate is 0 gives the force 
   }
   CHECK(test::errors_of(test::example_with("sample-12.4-stacked-blocks-on-spring.yaml", "rest_length: l_0}",
                                            "rest_length: l_0, stretch: y_s}")) ==
-        Messages{"t.yaml:38:5: a 'spring' connection 'k_s' has rest_length and stretch (expected one of them)"});
+        Messages{"t.yaml:40:5: a 'spring' connection 'k_s' has rest_length and stretch (expected one of them)"});
 }
 
 namespace {
