@@ -219,6 +219,74 @@ EnergyAnswer work_energy(const Model& m, const EquationsOfMotion& eom, const Mot
   return e;
 }
 
+// The condition in the steady state: along the forced part alone (see ConditionInTime).
+void steady_state(ConditionInTime& ct, const CheckedCondition& c, const Response& r, const EquationsOfMotion& eom,
+                  const Model& m, const exmap& values) {
+  const ex& t = m.time;
+  const ex w = r.forcing_frequency;
+  const ex qp = r.particular;
+  const ex g = c.expr.subs(m.symbols->definitions()).subs(exmap{{eom.q[0], qp}, {eom.dq[0], qp.diff(ex_to<symbol>(t))}});
+  const symbol cs("cs"), sn("sn");
+  const ex p = normal(g).subs(lst{cos(w * t) == cs, sin(w * t) == sn}).expand();
+  if (p.has(t) || !p.is_polynomial(lst{cs, sn}) || p.degree(cs) > 1 || p.degree(sn) > 1 || p.coeff(cs, 1).has(sn)) return;
+  const ex alpha = simplest(normal(p.subs(lst{cs == 0, sn == 0})));
+  const ex beta = simplest(normal(p.coeff(cs, 1))), gamma = simplest(normal(p.coeff(sn, 1)));
+  const std::string& op = c.condition->op;
+  const bool lower = op == ">=" || op == ">";
+  ct.steady_of_t = simplest(normal(g));
+  ct.steady_offset = alpha;
+  // alpha^2 - beta^2 - gamma^2 over a denominator that is a square (positive): its numerator.
+  const ex diff = normal(alpha * alpha - beta * beta - gamma * gamma);
+  const ex num = diff.numer_denom().op(0), den = diff.numer_denom().op(1);
+  // Positive: each factor an even power or of positive sign ((k - m w^2)^2, expanded by normal()).
+  const ex fden = factor(den);
+  bool positive = true;
+  for (std::size_t i = 0, nfd = is_a<mul>(fden) ? fden.nops() : 1; i < nfd; ++i) {
+    const ex fi = is_a<mul>(fden) ? fden.op(i) : fden;
+    const bool even = is_a<power>(fi) && fi.op(1).info(info_flags::even);
+    if (!even && sign_of(fi) != std::optional<int>(1)) positive = false;
+  }
+  if (!positive) return;
+  ct.steady_amplitude_condition = simplest(num);
+  if (const auto v = NormalForm(lower ? alpha - sqrt(beta * beta + gamma * gamma) : alpha + sqrt(beta * beta + gamma * gamma)).approx_at(values))
+    ct.steady_holds = lower ? (op == ">=" ? *v >= 0 : *v > 0) : (op == "<=" ? *v <= 0 : *v < 0);
+  // In w^2: a quadratic with two roots gives the band.
+  if (!is_a<symbol>(w)) return;
+  const symbol W("W");
+  const ex inW = num.expand().subs(pow(w, 2) == W, subs_options::algebraic).expand();
+  if (inW.has(w) || !inW.is_polynomial(W) || inW.degree(W) != 2) return;
+  const ex A = inW.coeff(W, 2), B = inW.coeff(W, 1), C0 = inW.coeff(W, 0);
+  // Roots from the factors when it factors into two linear ones, else none (a root of a
+  // discriminant is not what a person writes for this).
+  const ex f = factor(inW);
+  std::vector<ex> roots;
+  const std::size_t nf = is_a<mul>(f) ? f.nops() : 1;
+  for (std::size_t i = 0; i < nf; ++i) {
+    const ex fi = is_a<mul>(f) ? f.op(i) : f;
+    if (!fi.has(W)) continue;
+    if (is_a<power>(fi) && fi.op(1).is_equal(2) && fi.op(0).degree(W) == 1) {
+      roots.push_back(simplest(normal(-fi.op(0).coeff(W, 0) / fi.op(0).coeff(W, 1))));
+      roots.push_back(roots.back());
+    } else if (fi.degree(W) == 1) {
+      roots.push_back(simplest(normal(-fi.coeff(W, 0) / fi.coeff(W, 1))));
+    }
+  }
+  (void)B, (void)C0;
+  if (roots.size() != 2) return;
+  const auto r0 = NormalForm(roots[0]).approx_at(values), r1 = NormalForm(roots[1]).approx_at(values);
+  const auto a_sign = NormalForm(A).approx_at(values);
+  // Two positive roots make a band of w^2; a root at or below 0 leaves a half-line, which the
+  // amplitude condition already says.
+  if (!r0 || !r1 || !a_sign || *r0 <= 0 || *r1 <= 0) return;
+  ConditionInTime::Band band;
+  band.variable = pow(w, 2);
+  band.low = *r0 <= *r1 ? roots[0] : roots[1];
+  band.high = *r0 <= *r1 ? roots[1] : roots[0];
+  // The quadratic is negative between its roots when its leading coefficient is positive.
+  band.fails_between = *a_sign > 0;
+  ct.band = band;
+}
+
 }  // namespace
 
 std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, const Solution& sol) {
@@ -469,6 +537,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
           const ex Y = simplest(normal((c * forcing->a + k * forcing->b) / det));
           qp += X * cos(w * t) + Y * sin(w * t);
           if (undamped) r.assumptions.push_back(to_text(w) + " != " + to_text(lambda) + " (no resonance)");
+          r.forcing_frequency = w;
         }
       }
       if (!resonant) {
@@ -613,6 +682,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
         }
       }
     }
+    if (!r.forcing_frequency.is_zero()) steady_state(ct, c, r, eom, m, values);
     out.conditions.push_back(std::move(ct));
   }
   return out;

@@ -45,6 +45,7 @@ struct Response {
   GiNaC::ex q;            // q(t), in lambda, zeta, omega_d where they appear
   GiNaC::ex rate;         // dot(q)(t)
   GiNaC::ex particular;   // the forced part (0 for free motion)
+  GiNaC::ex forcing_frequency = 0;  // w of a harmonic forcing (0 when there is none)
   GiNaC::ex homogeneous;  // the free part, its constants fixed by the initial conditions
   // Quantities the response is written in, with their definitions (lambda = sqrt(k/(m + M))).
   std::vector<std::pair<GiNaC::ex, GiNaC::ex>> definitions;
@@ -65,6 +66,20 @@ struct ConditionInTime {
   std::optional<bool> holds_for_all_t;   // with the given numbers
   std::optional<GiNaC::ex> first_failure;  // the first t at which it fails, in closed form
   std::optional<double> first_failure_s;   // the same in seconds (numeric)
+  // Under a harmonic forcing: the condition in the steady state (the forced part alone),
+  // alpha + beta cos(w t) + gamma sin(w t) op 0. It holds for all t exactly when alpha >= 0
+  // and alpha^2 - beta^2 - gamma^2 >= 0 (for >=); the second, a quadratic in w^2 with two
+  // roots, fails in a band of driving frequencies (or outside it).
+  std::optional<GiNaC::ex> steady_of_t;
+  std::optional<GiNaC::ex> steady_offset;    // alpha: must keep its sign
+  std::optional<GiNaC::ex> steady_amplitude_condition;  // alpha^2 - beta^2 - gamma^2, its numerator (>= 0)
+  struct Band {
+    GiNaC::ex variable;   // w^2
+    GiNaC::ex low, high;  // the roots, low < high with the given numbers
+    bool fails_between = true;
+  };
+  std::optional<Band> band;
+  std::optional<bool> steady_holds;  // with the given numbers
 };
 
 struct QuantityInTime {

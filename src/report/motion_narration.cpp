@@ -162,8 +162,36 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
     text(cond.source + " along the motion (" + cond.meaning + "):");
     Step* st = equation("in time", c.of_t, 0);
     st->relation = cond.op;
+    if (c.steady_of_t) {
+      text("In the steady state (the forced part of the response alone):");
+      Step* ss = equation("steady state", *c.steady_of_t, 0);
+      ss->relation = cond.op;
+      const bool low = cond.op == ">=" || cond.op == ">";
+      text_with(std::string("It holds for all t exactly when the part that does not oscillate, {}, is ") +
+                    (low ? "non-negative" : "non-positive") + " and outweighs the amplitude:",
+                {*c.steady_offset});
+      if (c.steady_amplitude_condition) {
+        Step* amp = equation("amplitude condition", *c.steady_amplitude_condition, 0);
+        amp->relation = ">=";
+      }
+      if (c.band) {
+        const auto& b = *c.band;
+        text_with(std::string("A quadratic in {}: it ") + (b.fails_between ? "fails between its roots" : "holds only between its roots") +
+                      ", so " + (b.fails_between ? "the model fails in a band of driving frequencies:" : "the model holds only in a band:"),
+                  {b.variable});
+        Step* lo = equation(b.fails_between ? "fails above" : "holds above", b.variable, b.low);
+        lo->relation = ">";
+        if (auto v = number(b.low, std::nullopt)) lo->note = v->decimal + " rad^2/s^2";
+        Step* hi = equation(b.fails_between ? "and below" : "and below", b.variable, b.high);
+        hi->relation = "<";
+        if (auto v = number(b.high, std::nullopt)) hi->note = v->decimal + " rad^2/s^2";
+      }
+      if (c.steady_holds)
+        text(*c.steady_holds ? "With the given numbers it holds for all t in the steady state."
+                             : "With the given numbers it does NOT hold in the steady state: " + cond.otherwise + ".");
+    }
     if (!c.extreme) {
-      text("Its extremes over time are not found in closed form; `tackle simulate` follows it numerically.");
+      text("Its extremes over time (the whole response) are not found in closed form; `tackle simulate` follows it numerically.");
       continue;
     }
     const bool lower = cond.op == ">=" || cond.op == ">";

@@ -249,6 +249,16 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
     x["holds_for_all_t"] = c.holds_for_all_t ? J(*c.holds_for_all_t) : J(nullptr);
     x["first_failure"] = c.first_failure ? J(to_text(*c.first_failure)) : J(nullptr);
     x["first_failure_s"] = c.first_failure_s ? J(*c.first_failure_s) : J(nullptr);
+    if (c.steady_of_t) {
+      J st{{"in_time", to_text(*c.steady_of_t) + " " + op + " 0"}, {"offset", to_text(*c.steady_offset)}};
+      st["amplitude_condition"] = c.steady_amplitude_condition ? J(to_text(*c.steady_amplitude_condition) + " >= 0") : J(nullptr);
+      st["holds"] = c.steady_holds ? J(*c.steady_holds) : J(nullptr);
+      st["band"] = J(nullptr);
+      if (c.band)
+        st["band"] = {{"variable", to_text(c.band->variable)}, {"low", to_text(c.band->low)}, {"high", to_text(c.band->high)},
+                      {"fails_between", c.band->fails_between}};
+      x["steady_state"] = st;
+    }
     j["conditions"].push_back(x);
   }
   return j;

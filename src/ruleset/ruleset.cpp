@@ -310,7 +310,10 @@ struct RuleReader {
         s.holds = need_scalar(v, "holds", "a validity condition");
         s.meaning = need_scalar(v, "meaning", "a validity condition");
         s.otherwise = need_scalar(v, "otherwise", "a validity condition");
-        auto res = parse_relation(s.holds, names);
+        // A rule with a force along a path may state its validity in the path's length too
+        // (an elastic cord is taut while its length exceeds its rest length).
+        const bool along = std::any_of(r.loads.begin(), r.loads.end(), [](const LoadSpec& l) { return l.kind == LoadSpec::Kind::along; });
+        auto res = parse_relation(s.holds, along ? along_names : names);
         for (const auto& p : res.problems) diags.error(s.at, "in '" + s.holds + "': " + p.message);
         r.validity.push_back(std::move(s));
       }

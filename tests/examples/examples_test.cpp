@@ -232,6 +232,15 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
             REQUIRE(c.extreme);
             same(*c.extreme, kv.second.as<std::string>());
           }
+        if (const YAML::Node sb = em["steady_band"]) {
+          const ConditionInTime c = condition(sb["source"].as<std::string>());
+          REQUIRE(c.band);
+          CHECK(c.band->fails_between == sb["fails_between"].as<bool>());
+          same(c.band->low, sb["low"].as<std::string>());
+          same(c.band->high, sb["high"].as<std::string>());
+          REQUIRE(c.steady_holds);
+          CHECK(*c.steady_holds == sb["holds"].as<bool>());
+        }
         if (const YAML::Node ff = em["first_failure"])
           for (const auto& kv : ff) {
             const ConditionInTime c = condition(kv.first.as<std::string>());
@@ -298,4 +307,23 @@ TEST_CASE("Examples: sample 12.9's least-norm member splits O_y + G_y = -3 N eve
   CHECK(d.minimum_norm[1].first == "G_y");
   CHECK(d.minimum_norm[1].second->approx == Approx(-1.5));
   CHECK(d.minimum_norm[1].second->decimal == "-1.5");
+}
+
+TEST_CASE("Motion: driven inside the band, the cord goes slack in the steady state and the integration stops there", "[motion]") {
+  // By hand (the example's notes): the band is 83.0652 < w^2 < 125.608; w = 10.5 rad/s gives
+  // w^2 = 110.25, inside it. X = a k/(k - m w^2) = 2/(100 - 110.25) = -0.195122 m, and T = m g
+  // - m w^2 X cos(w t) = 9.81 + 21.5122 cos(10.5 t) reaches 0 first when cos(10.5 t) =
+  // -0.456020: t = acos(-0.456020)/10.5 = 2.04432/10.5 = 0.194697 s.
+  const auto a = test::run_text(test::example_with("cord-driven-support-band.yaml", "w: {value: 12,", "w: {value: 10.5,"));
+  REQUIRE(a->motion);
+  REQUIRE(a->motion->conditions.size() == 1);
+  const ConditionInTime& c = a->motion->conditions[0];
+  REQUIRE(c.steady_holds);
+  CHECK_FALSE(*c.steady_holds);
+  SimulationSpec spec;
+  const Simulation run = simulate(*a, spec, Location{});
+  CHECK_FALSE(run.complete);
+  REQUIRE(run.events.size() == 1);
+  CHECK(run.events[0].what == "elastic_cord c: the cord goes slack");
+  CHECK(run.events[0].t == Approx(0.194697).epsilon(1e-5));
 }

@@ -178,6 +178,8 @@ void read_layout(BuildContext& ctx) {
     Diagnostics later;
     if (auto v = given_value(g, *s, later)) ctx.layout[s->sym] = *v;
   }
+  // The instant is t = 0 for telling directions (a support that moves with time).
+  if (is_a<symbol>(ctx.m.time)) ctx.layout[ctx.m.time] = 0;
 }
 
 }  // namespace tackle::build

@@ -24,7 +24,7 @@ std::vector<std::string> rule_errors(const std::string& text, const std::string&
 TEST_CASE("Rules: the bundled rules load and declare what they need", "[rules]") {
   const RuleSet rules = load_rules(TACKLE_SOURCE_DIR "/rules");
   CHECK(rules.names() == std::vector<std::string>{"ball_and_socket", "ball_joint", "cable", "collar", "contact", "couple", "damper",
-                                                 "driven_wheel", "fixed", "fixed_support", "force", "free_wheel", "hinge",
+                                                 "driven_wheel", "elastic_cord", "fixed", "fixed_support", "force", "free_wheel", "hinge",
                                                  "hinge_with_moments", "link", "pin", "pin_joint", "pulley", "rod", "roller",
                                                  "same_motion", "skidding_wheel", "slider_joint", "sliding", "spring", "sticking",
                                                  "string", "unknown_force", "weld", "weld_joint"});
