@@ -62,7 +62,11 @@ Derivation explain(const Analysis& a, const ReportOptions& options) {
     narrate_motion(d, a.model, *a.motion, options);
     d.motion = &*a.motion;
     if (a.model.motion->until) {
-      const Simulation run = simulate(a, SimulationSpec{}, a.model.motion->at);
+      // A figure, not a command: a second of computing at most (a hostile 'until' must not
+      // hold a report up; `tackle simulate` allows 10 s).
+      SimulationSpec spec;
+      spec.time_limit = 1;
+      const Simulation run = simulate(a, spec, a.model.motion->at);
       d.motion_pgfplots = sweep_pgfplots(run.table);
       d.motion_events.push_back("Integrated to t = " + decimal_string(GiNaC::numeric(run.reached), 6) + " s (" +
                                 std::to_string(run.steps) + " steps, Dormand-Prince 5(4)).");
