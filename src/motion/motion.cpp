@@ -514,7 +514,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
           h2 = exp(-decay * t) * sinh(wd * t);
         } else {
           r.regime = Response::Regime::underdamped;
-          if (!sg) r.assumptions.push_back("zeta < 1 (underdamped)");
+          if (!sg) r.assumptions.push_back({zeta, 1, "<", "underdamped"});
           r.definitions.emplace_back(wd, sqrt(simplest(normal(K / M - pow(C / (2 * M), 2)))));
           h1 = exp(-decay * t) * cos(wd * t);
           h2 = exp(-decay * t) * sin(wd * t);
@@ -536,7 +536,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
           const ex X = simplest(normal((k * forcing->a - c * forcing->b) / det));
           const ex Y = simplest(normal((c * forcing->a + k * forcing->b) / det));
           qp += X * cos(w * t) + Y * sin(w * t);
-          if (undamped) r.assumptions.push_back(to_text(w) + " != " + to_text(lambda) + " (no resonance)");
+          if (undamped) r.assumptions.push_back({w, lambda, "!=", "no resonance"});
           r.forcing_frequency = w;
         }
       }

@@ -50,7 +50,12 @@ struct Response {
   // Quantities the response is written in, with their definitions (lambda = sqrt(k/(m + M))).
   std::vector<std::pair<GiNaC::ex, GiNaC::ex>> definitions;
   // Conditions the form assumes (zeta < 1, omega != lambda), in words and as expressions.
-  std::vector<std::string> assumptions;
+  struct Assumption {
+    GiNaC::ex lhs, rhs;
+    std::string op;   // <, !=, ...
+    std::string why;  // "underdamped", "no resonance"
+  };
+  std::vector<Assumption> assumptions;
   bool verified = false;  // put back into the equation of motion at random parameter values and times
 };
 

@@ -150,7 +150,11 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
   text_with(init + ":", init_math);
   Step* resp = equation("response", of_time(eom.q[0], table), r.q);
   resp->boxed = true;
-  for (const auto& a : r.assumptions) text("This form assumes " + a + ".");
+  for (const auto& a : r.assumptions) {
+    text("This form assumes (" + a.why + "):");
+    Step* st = equation("assumed", a.lhs, a.rhs);
+    st->relation = a.op;
+  }
   text(r.verified ? "Checked: put back into the equation of motion, at random parameter values and times, it holds."
                   : "WARNING: put back into the equation of motion it does NOT hold (an error in tackle; please report it).");
   for (const auto& q : mo.quantities) {

@@ -40,6 +40,7 @@ std::string kind_name(Equation::Kind k) {
 std::string tex_relation(const std::string& op) {
   if (op == ">=") return "\\geq";
   if (op == "<=") return "\\leq";
+  if (op == "!=") return "\\neq";
   return op;
 }
 
@@ -219,7 +220,9 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
                                           "damped_particle"};
     const Response& r = *mo.response;
     J resp{{"regime", regimes[static_cast<int>(r.regime)]}, {"coordinate", expr(r.q)}, {"rate", expr(r.rate)},
-           {"definitions", J::array()}, {"assumptions", r.assumptions}, {"verified", r.verified}};
+           {"definitions", J::array()}, {"assumptions", J::array()}, {"verified", r.verified}};
+    for (const auto& a : r.assumptions)
+      resp["assumptions"].push_back(to_text(a.lhs) + " " + a.op + " " + to_text(a.rhs) + " (" + a.why + ")");
     for (const auto& [sym, def] : r.definitions) resp["definitions"].push_back({{"name", to_text(sym)}, {"definition", expr(def)}});
     j["response"] = resp;
   } else {
