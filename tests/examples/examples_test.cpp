@@ -327,3 +327,35 @@ TEST_CASE("Motion: driven inside the band, the cord goes slack in the steady sta
   CHECK(run.events[0].what == "elastic_cord c: the cord goes slack");
   CHECK(run.events[0].t == Approx(0.194697).epsilon(1e-5));
 }
+
+TEST_CASE("Motion: an integration that blows up or runs out of time says how far it got", "[motion]") {
+  // By hand: from rest at x_0 under -K/x^2 (m = K = x_0 = 1) the body reaches x = 0 at
+  // t = (pi/(2 sqrt(2))) sqrt(m x_0^3/K) = 1.110721 s, where the force is infinite.
+  const auto a = test::run_text(R"(
+title: a block pulled by an inverse-square force towards x = 0
+parameters:
+  m: {value: 1, unit: kg}
+  K: {value: 1, unit: N*m^2}
+  x_0: {value: 1, unit: m}
+bodies:
+  A: {mass: m, position: x}
+loads:
+  - {on: A, force: -K/x^2}
+layout: {x: 1}
+given: [x]
+find: [ddot(x)]
+motion:
+  initial: {x: x_0, dot(x): 0}
+  until: {value: 5, unit: s}
+)");
+  SimulationSpec spec;
+  const Simulation blown = simulate(*a, spec, Location{});
+  CHECK_FALSE(blown.complete);
+  CHECK(blown.reached == Approx(1.110721).epsilon(1e-4));
+  CHECK(blown.stopped.rfind("the state stopped being finite after t = 1.1107", 0) == 0);
+  spec.time_limit = 0;  // every step is over the limit: it stops after the first
+  const Simulation limited = simulate(*a, spec, Location{});
+  CHECK_FALSE(limited.complete);
+  CHECK(limited.steps == 1);
+  CHECK(limited.stopped.find("in its time limit (1 steps): undecided beyond") != std::string::npos);
+}
