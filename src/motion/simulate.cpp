@@ -172,8 +172,18 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
   State xm(2 * n), x1(2 * n);
   double end = until;
   while (true) {
-    // (Not a structured binding: the lambdas below capture the two times.)
-    const std::pair<double, double> span = stepper.do_step(rhs);
+    // (Not a structured binding: the lambdas below capture the two times.) Odeint gives up
+    // on a step after 500 failed size adjustments (a stiff or singular right-hand side): the
+    // run is undecided from there. Its exception is odeint's own, never GiNaC's.
+    std::pair<double, double> span;
+    try {
+      span = stepper.do_step(rhs);
+    } catch (const odeint::step_adjustment_error&) {
+      end = stepper.current_time();
+      out.stopped = "the integration could not make a step after t = " + decimal_string(numeric(end), 6) +
+                    " s (the equations are too stiff or singular there): undecided beyond";
+      break;
+    }
     const double t0 = span.first, t1 = span.second;
     ++out.steps;
     x1 = stepper.current_state();
