@@ -36,6 +36,17 @@ int emit(const std::string& text, const std::string& out) {
   return 1;
 }
 
+// "y,N" -> {"y", "N"} (--plot of sweep and simulate).
+std::vector<std::string> split_commas(const std::string& list) {
+  std::vector<std::string> out;
+  for (std::size_t start = 0, comma; start <= list.size(); start = comma + 1) {
+    comma = list.find(',', start);
+    if (comma == std::string::npos) comma = list.size();
+    out.push_back(list.substr(start, comma - start));
+  }
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -212,14 +223,7 @@ int main(int argc, char** argv) {
       if (analysis->model.sweep) spec = tackle::sweep_spec(*analysis->model.sweep);
       if (!vary.empty()) spec.vary = vary;
       if (!fixes.empty()) spec.fix = fixes;
-      if (!plot.empty()) {
-        spec.plot.clear();
-        for (std::size_t start = 0, comma; start <= plot.size(); start = comma + 1) {
-          comma = plot.find(',', start);
-          if (comma == std::string::npos) comma = plot.size();
-          spec.plot.push_back(plot.substr(start, comma - start));
-        }
-      }
+      if (!plot.empty()) spec.plot = split_commas(plot);
       if (spec.vary.empty()) {
         std::cerr << "tackle sweep: give --vary (the description has no 'sweep')\n";
         return 2;
@@ -234,11 +238,7 @@ int main(int argc, char** argv) {
       tackle::SimulationSpec spec;
       if (until > 0) spec.until = until;
       spec.samples = samples;
-      for (std::size_t start = 0, comma; !sim_plot.empty() && start <= sim_plot.size(); start = comma + 1) {
-        comma = sim_plot.find(',', start);
-        if (comma == std::string::npos) comma = sim_plot.size();
-        spec.plot.push_back(sim_plot.substr(start, comma - start));
-      }
+      if (!sim_plot.empty()) spec.plot = split_commas(sim_plot);
       const auto result = tackle::simulate(*analysis, spec, tackle::Location{"--until/--plot", 0, 0});
       for (const auto& [path, text] : {std::pair{csv_out, tackle::sweep_csv(result.table)}, std::pair{svg_out, tackle::sweep_svg(result.table)},
                                        std::pair{pgf_out, tackle::sweep_pgfplots(result.table)}})

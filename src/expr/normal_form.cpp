@@ -43,16 +43,25 @@ bool has_hidden_pole(const ex& e) {
 
 }  // namespace
 
-bool is_rational_number(const ex& e) {
+namespace {
+
+// Rational numbers (and symbols, when allowed) under +, * and integer powers only.
+bool rational_over(const ex& e, bool symbols) {
   if (is_a<numeric>(e)) return ex_to<numeric>(e).is_rational();
-  if (is_a<power>(e)) return e.op(1).info(info_flags::integer) && is_rational_number(e.op(0));
+  if (is_a<symbol>(e)) return symbols;
+  if (is_a<power>(e)) return e.op(1).info(info_flags::integer) && rational_over(e.op(0), symbols);
   if (is_a<add>(e) || is_a<mul>(e)) {
     for (std::size_t i = 0; i < e.nops(); ++i)
-      if (!is_rational_number(e.op(i))) return false;
+      if (!rational_over(e.op(i), symbols)) return false;
     return true;
   }
   return false;
 }
+
+}  // namespace
+
+bool is_rational_number(const ex& e) { return rational_over(e, false); }
+bool is_rational_function(const ex& e) { return rational_over(e, true); }
 
 bool has_pole_at(const ex& e, const exmap& values) {
   const ex v = e.subs(values);

@@ -15,6 +15,9 @@ namespace tackle {
 /// no functions, no symbols): exact arithmetic decides everything about it.
 [[nodiscard]] bool is_rational_number(const GiNaC::ex& e);
 
+/// The same with symbols allowed: a rational function (no roots, no functions).
+[[nodiscard]] bool is_rational_function(const GiNaC::ex& e);
+
 /// True when `e` at `values` has a pole that exact arithmetic does not see (a denominator
 /// such as sqrt(20) - 2*sqrt(5), which is zero); evaluating it numerically would throw.
 [[nodiscard]] bool has_pole_at(const GiNaC::ex& e, const GiNaC::exmap& values);

@@ -129,18 +129,6 @@ std::optional<Forcing> harmonic(const ex& F, const ex& t) {
   return f;
 }
 
-// No roots or functions: a rational function of the symbols (solve_condition's domain).
-bool rational_in_parameters(const ex& e) {
-  if (is_a<symbol>(e) || is_a<numeric>(e)) return !is_a<numeric>(e) || ex_to<numeric>(e).is_rational();
-  if (is_a<power>(e)) return e.op(1).info(info_flags::integer) && rational_in_parameters(e.op(0));
-  if (is_a<add>(e) || is_a<mul>(e)) {
-    for (std::size_t i = 0; i < e.nops(); ++i)
-      if (!rational_in_parameters(e.op(i))) return false;
-    return true;
-  }
-  return false;
-}
-
 // Random positive rational values for the parameters, and the definitions put in.
 exmap random_point(const SymbolTable& table, std::mt19937& rng) {
   std::uniform_int_distribution<int> num(1, 40), den(1, 9);
@@ -255,7 +243,7 @@ void steady_state(ConditionInTime& ct, const CheckedCondition& c, const Response
   const symbol W("W");
   const ex inW = num.expand().subs(pow(w, 2) == W, subs_options::algebraic).expand();
   if (inW.has(w) || !inW.is_polynomial(W) || inW.degree(W) != 2) return;
-  const ex A = inW.coeff(W, 2), B = inW.coeff(W, 1), C0 = inW.coeff(W, 0);
+  const ex A = inW.coeff(W, 2);
   // Roots from the factors when it factors into two linear ones, else none (a root of a
   // discriminant is not what a person writes for this).
   const ex f = factor(inW);
@@ -271,7 +259,6 @@ void steady_state(ConditionInTime& ct, const CheckedCondition& c, const Response
       roots.push_back(simplest(normal(-fi.coeff(W, 0) / fi.coeff(W, 1))));
     }
   }
-  (void)B, (void)C0;
   if (roots.size() != 2) return;
   const auto r0 = NormalForm(roots[0]).approx_at(values), r1 = NormalForm(roots[1]).approx_at(values);
   const auto a_sign = NormalForm(A).approx_at(values);
@@ -666,7 +653,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
         ct.extreme = in_lambda(extreme);
         if (gamma.is_zero() && beta_sign && *beta_sign != 0)
           ct.extreme_at = (lower == (*beta_sign > 0)) ? Pi / spec.lambda : ex(0);
-        if (rational_in_parameters(extreme)) ct.solved = solve_condition(simplest(normal(extreme)), op, params);
+        if (is_rational_function(extreme)) ct.solved = solve_condition(simplest(normal(extreme)), op, params);
         exmap all_values = values;
         for (const auto& [sym, def] : out.definitions) all_values[sym] = def.subs(values);
         if (auto v = NormalForm(extreme).approx_at(all_values)) {
