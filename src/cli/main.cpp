@@ -61,8 +61,13 @@ int main(int argc, char** argv) {
                                                      {"markdown", tackle::Format::markdown},
                                                      {"json", tackle::Format::json}};
   int digits = 6;
+  std::string phase;
+  auto with_phase = [&](CLI::App* sub) {
+    sub->add_option("--phase", phase, "A phase of a description with 'phases', by name");
+  };
   auto with_common_options = [&](CLI::App* sub) {
     sub->add_option("file", file, "Problem description (YAML)")->required();
+    with_phase(sub);
     sub->add_option("--digits", digits, "Significant digits of the numbers (any precision)")
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
@@ -74,7 +79,7 @@ int main(int argc, char** argv) {
   };
   auto* derive = with_common_options(
       app.add_subcommand("derive", "Print the derivation: FBD equations, constraints, solve, results"));
-  with_common_options(app.add_subcommand("solve", "Print the answers only: closed forms and numbers"));
+  auto* solve = with_common_options(app.add_subcommand("solve", "Print the answers only: closed forms and numbers"));
 
   std::string target;
   bool all = false;
@@ -86,6 +91,7 @@ int main(int argc, char** argv) {
   target_opt->excludes(all_opt);
   isolate->add_option("--format", format, "Output format")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
   isolate->add_option("-o,--output", out, "Write to this file instead of standard output");
+  with_phase(isolate);
 
   std::vector<std::string> key_files;
   std::string key_format = "markdown";
@@ -112,6 +118,7 @@ int main(int argc, char** argv) {
   sweep->add_option("--csv", csv_out, "Write the data as CSV here (default: standard output)");
   sweep->add_option("--svg", svg_out, "Write an SVG plot here");
   sweep->add_option("--pgfplots", pgf_out, "Write a pgfplots figure (LaTeX) here");
+  with_phase(sweep);
 
   double until = 0;
   int samples = 201;
@@ -126,6 +133,7 @@ int main(int argc, char** argv) {
   simulate->add_option("--svg", svg_out, "Write an SVG plot here");
   simulate->add_option("--pgfplots", pgf_out, "Write a pgfplots figure (LaTeX) here");
   simulate->add_option("-o,--output", out, "Write the report (events and table) here instead of standard output");
+  with_phase(simulate);
 
   std::string unknown, answer, batch, results;
   double tolerance = 0.01;
@@ -148,6 +156,7 @@ int main(int argc, char** argv) {
   check->add_flag("--no-latex", no_latex, "Do not echo answers in LaTeX (faster batches)");
   check->add_option("--format", format, "Output format (single answers)")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
   check->add_option("-o,--output", out, "Write to this file instead of standard output");
+  with_phase(check);
   answer_opt->needs(unknown_opt);
   unknown_opt->needs(answer_opt);
   batch_opt->excludes(answer_opt);
@@ -172,7 +181,6 @@ int main(int argc, char** argv) {
     if (key->parsed()) {
       // Every file is read before anything is written; problems in all of them are reported.
       std::vector<std::unique_ptr<const tackle::Analysis>> analyses;
-      std::vector<tackle::Derivation> derivations;
       std::vector<tackle::Diagnostic> problems;
       for (const auto& f : key_files) {
         try {
@@ -182,11 +190,22 @@ int main(int argc, char** argv) {
         }
       }
       if (!problems.empty()) throw tackle::InputError(problems);
-      for (const auto& a : analyses) derivations.push_back(tackle::explain(*a, tackle::ReportOptions{digits}));
+      // A phased description gives one entry per phase, its variants drawn once for all of
+      // them (the phases share the parameters).
       std::vector<tackle::KeyEntry> entries;
-      for (std::size_t i = 0; i < analyses.size(); ++i)
-        entries.push_back({&derivations[i], tackle::draw_variants(*analyses[i], derivations[i], variants, seed, digits),
-                           variants > 0});
+      std::vector<std::vector<tackle::Derivation>> per_file;
+      for (const auto& a : analyses) per_file.push_back(tackle::explain_phases(*a, tackle::ReportOptions{digits}));
+      for (std::size_t i = 0; i < analyses.size(); ++i) {
+        std::vector<std::pair<const tackle::Analysis*, const tackle::Derivation*>> parts;
+        for (std::size_t k = 0; k < per_file[i].size(); ++k)
+          parts.emplace_back(analyses[i]->phases.empty() ? analyses[i].get() : analyses[i]->phases[k].analysis.get(), &per_file[i][k]);
+        const auto variants_of = tackle::draw_variants(parts, variants, seed, digits);
+        for (std::size_t k = 0; k < per_file[i].size(); ++k) {
+          tackle::Derivation& d = per_file[i][k];
+          if (!d.phase.empty()) d.title += ": phase " + std::to_string(d.phase_number) + ", " + d.phase;
+          entries.push_back({&d, variants_of[k], variants > 0});
+        }
+      }
       // Variants asked for and none possible anywhere: an input error, not a key without them.
       if (variants > 0 && std::all_of(entries.begin(), entries.end(), [](const auto& e) { return e.variants.empty(); })) {
         std::vector<tackle::Diagnostic> none;
@@ -198,7 +217,19 @@ int main(int argc, char** argv) {
       return emit(tackle::write_key(entries, formats.at(key_format)), out);
     }
     if (isolate->parsed()) {
-      const tackle::Model model = tackle::build_model(tackle::read_description(file), rules);
+      const tackle::Description description = tackle::read_description(file);
+      std::unique_ptr<const tackle::Analysis> phased;
+      if (!description.phases.empty() || !phase.empty()) phased = tackle::analyze(description, rules);
+      const tackle::Analysis* picked = nullptr;
+      if (phased) {
+        std::string problem;
+        picked = tackle::pick_phase(*phased, phase, problem);
+        if (!picked) {
+          std::cerr << "tackle isolate: " << file << ": " << problem << "\n";
+          return 2;
+        }
+      }
+      const tackle::Model model = picked ? picked->model : tackle::build_model(description, rules);
       const auto unknowns = tackle::model_unknowns(model);
       std::vector<GiNaC::ex> wanted = unknowns;
       if (!all) {
@@ -217,7 +248,16 @@ int main(int argc, char** argv) {
       for (const auto& u : wanted) found.push_back(tackle::isolate(model, candidates, u));
       return emit(tackle::write_isolations(model, found, formats.at(format)), out);
     }
-    const auto analysis = tackle::analyze_file(file, rules);
+    const auto whole = tackle::analyze_file(file, rules);
+    // derive and solve tell every phase of a phased description; the other commands take one.
+    if ((derive->parsed() || solve->parsed()) && phase.empty() && !whole->phases.empty())
+      return emit(tackle::write(tackle::explain_phases(*whole, tackle::ReportOptions{digits}), formats.at(format), derive->parsed()), out);
+    std::string phase_problem;
+    const tackle::Analysis* analysis = tackle::pick_phase(*whole, phase, phase_problem);
+    if (!analysis) {
+      std::cerr << "tackle: " << file << ": " << phase_problem << "\n";
+      return 2;
+    }
     if (sweep->parsed()) {
       tackle::SweepSpec spec;
       if (analysis->model.sweep) spec = tackle::sweep_spec(*analysis->model.sweep);

@@ -334,9 +334,10 @@ struct Reader {
   }
 
   // A mapping of names to expressions (`{dot(x): v_1}`), into `out`.
-  void read_values(const YAML::Node& n, const std::string& what, std::vector<std::pair<Text, Text>>& out) {
+  void read_values(const YAML::Node& n, const std::string& what, std::vector<std::pair<Text, Text>>& out,
+                   const std::string& expected = "a mapping of rates to values, e.g. {dot(x): v_1}") {
     if (!n.IsMap()) {
-      diags.error(where(n, file), what + " is " + yaml::kind_name(n) + " (expected a mapping of rates to values, e.g. {dot(x): v_1})");
+      diags.error(where(n, file), what + " is " + yaml::kind_name(n) + " (expected " + expected + ")");
       return;
     }
     yaml::check_unique_keys(n, what, file, diags);
@@ -359,8 +360,123 @@ struct Reader {
     if (auto f = n["from"]) read_values(f, "'from' of 'interval'", iv.from);
     else diags.error(iv.at, "'interval' has no 'from' (expected the rates at its start, e.g. {dot(x): v_1})");
     if (auto t = n["to"]) read_values(t, "'to' of 'interval'", iv.to);
-    else diags.error(iv.at, "'interval' has no 'to' (expected the rates at its end, e.g. {dot(x): v_2})");
     d.interval = std::move(iv);
+  }
+
+  void read_impact(const YAML::Node& n) {
+    if (!check_map(n, {"from", "plastic", "restitution"}, "'impact'", file, diags)) return;
+    ImpactDesc im;
+    im.at = where(n, file);
+    if (auto f = n["from"]) read_values(f, "'from' of 'impact'", im.from);
+    else diags.error(im.at, "'impact' has no 'from' (expected the rates just before it, e.g. {dot(x_A): v, dot(x_B): 0})");
+    im.plastic = opt_scalar(n, "plastic", "'impact'");
+    im.restitution = opt_scalar(n, "restitution", "'impact'");
+    if (im.plastic && im.plastic->text != "true")
+      diags.error(im.plastic->at, "'plastic' of 'impact' is '" + im.plastic->text + "' (expected true, or 'restitution: e' instead)");
+    if (im.plastic.has_value() == im.restitution.has_value())
+      diags.error(im.at, "'impact' needs exactly one of 'plastic: true' (the bodies stick together) and 'restitution' "
+                         "(a coefficient, two bodies)");
+    d.impact = std::move(im);
+  }
+
+  // The phases, each read as a description of its own from the same document (locations
+  // stay those of the file); the shared parameters come first in each.
+  void read_phases(const YAML::Node& n) {
+    if (!n.IsSequence() || n.size() == 0) {
+      diags.error(where(n, file), "'phases' is " + (n.IsSequence() ? std::string("an empty list") : yaml::kind_name(n)) +
+                                      " (expected a list of phases, each a mapping with a name, its bodies, ...)");
+      return;
+    }
+    std::set<std::string> names;
+    for (const auto& item : n) {
+      if (!item.IsMap()) {
+        diags.error(where(item, file), "a phase is " + yaml::kind_name(item) + " (expected a mapping with a name, its bodies, ...)");
+        continue;
+      }
+      PhaseDesc ph;
+      ph.at = where(item, file);
+      ph.d.file = file;
+      ph.d.parameters = d.parameters;
+      if (auto nm = item["name"]) {
+        if (auto t = scalar(nm, "'name' of a phase", file, diags)) {
+          ph.name = *t;
+          if (!names.insert(t->text).second) diags.error(t->at, "a second phase named '" + t->text + "' (expected phase names to differ)");
+        }
+      } else {
+        diags.error(ph.at, "a phase has no 'name' (expected, e.g., name: fall)");
+      }
+      ph.d.title = {d.title.text + ": " + (ph.name.text.empty() ? std::string("phase") : ph.name.text), ph.at};
+      Reader inner{file, diags, ph.d};
+      inner.read_root(item, true);
+      if (auto c = item["carry"]) read_values(c, "'carry' of phase '" + ph.name.text + "'", ph.carry,
+                                          "a mapping of new names to quantities at the phase's end, e.g. {v: dot(y)}");
+      d.phases.push_back(std::move(ph));
+    }
+  }
+
+  void read_root(const YAML::Node& root, bool phase) {
+    std::vector<std::string> keys{"axes", "parameters", "gravity", "bodies", "points", "connections", "loads",
+               "strings", "layout", "given", "find", "derive", "expected", "expected_combinations", "expected_conditions", "expected_free", "expected_power",
+               "notes", "sweep", "motion", "expected_motion", "interval", "impact"};
+    if (phase) {
+      keys.insert(keys.begin(), {"name", "carry"});
+    } else {
+      keys.insert(keys.begin(), {"title", "source"});
+    }
+    check_map(root, keys, phase ? "a phase" : "the description", file, diags);
+    if (!phase) {
+      if (auto t = root["title"]) {
+        if (auto s = scalar(t, "'title'", file, diags)) d.title = *s;
+      } else {
+        diags.error({file, 1, 1}, "the description has no 'title' (expected a one-line title)");
+      }
+    }
+    if (auto a = root["axes"]) {
+      if (auto items = scalar_list(a, "'axes'", file, diags)) d.axes = *items;
+    }
+    if (auto p = root["parameters"]) read_parameters(p);
+    if (auto g = root["gravity"]) {
+      if (g.IsMap()) {
+        if (check_map(g, {"magnitude", "tilt"}, "'gravity'", file, diags)) {
+          d.gravity_magnitude = opt_scalar(g, "magnitude", "'gravity'");
+          d.gravity_tilt = opt_scalar(g, "tilt", "'gravity'");
+          if (!d.gravity_magnitude || !d.gravity_tilt)
+            diags.error(where(g, file), "'gravity' as a mapping needs 'magnitude' and 'tilt' (the angle the first axis rises above the horizontal)");
+        }
+      } else {
+        d.gravity = vector(g, "'gravity'");
+      }
+    }
+    if (auto b = root["bodies"]) read_bodies(b);
+    else diags.error(phase ? where(root, file) : Location{file, 1, 1},
+                     std::string(phase ? "the phase" : "the description") + " has no 'bodies' (expected at least one body)");
+    if (auto p = root["points"]) read_points(p);
+    if (auto c = root["connections"]) read_list(c, "connections", std::nullopt);
+    if (auto l = root["loads"]) read_list(l, "loads", std::string("force"));
+    if (auto s = root["strings"]) read_list(s, "strings", std::string("string"));
+    if (auto l = root["layout"]) read_layout(l);
+    if (auto g = root["given"]) read_given(g);
+    if (auto f = root["find"]) read_find(f);
+    if (auto dv = root["derive"]) read_derive(dv);
+    if (auto sw = root["sweep"]) {
+      if (check_map(sw, {"vary", "fix", "plot"}, "'sweep'", file, diags)) {
+        SweepDesc sd;
+        sd.at = where(sw, file);
+        if (auto v = sw["vary"]) {
+          if (auto t = scalar(v, "'vary' of 'sweep'", file, diags)) sd.vary = *t;
+        } else {
+          diags.error(sd.at, "'sweep' has no 'vary' (expected name=start:end:count, e.g. h=0:2:41)");
+        }
+        if (auto f = sw["fix"])
+          if (auto items = scalar_list(f, "'fix' of 'sweep'", file, diags)) sd.fix = *items;
+        if (auto p = sw["plot"])
+          if (auto items = scalar_list(p, "'plot' of 'sweep'", file, diags)) sd.plot = *items;
+        d.sweep = sd;
+      }
+    }
+    if (auto mo = root["motion"]) read_motion(mo);
+    if (auto iv = root["interval"]) read_interval(iv);
+    if (auto im = root["impact"]) read_impact(im);
   }
 
   void read_derive(const YAML::Node& n) {
@@ -418,60 +534,18 @@ DescriptionRead read_description_text(const std::string& text, const std::string
     return out;
   }
   Reader r{file, diags, d};
-  check_map(root,
-            {"title", "source", "axes", "parameters", "gravity", "bodies", "points", "connections", "loads",
-             "strings", "layout", "given", "find", "derive", "expected", "expected_combinations", "expected_conditions", "expected_free", "expected_power",
-             "notes", "sweep", "motion", "expected_motion", "interval"},
-            "the description", file, diags);
-  if (auto t = root["title"]) {
-    if (auto s = scalar(t, "'title'", file, diags)) d.title = *s;
-  } else {
-    diags.error({file, 1, 1}, "the description has no 'title' (expected a one-line title)");
-  }
-  if (auto a = root["axes"]) {
-    if (auto items = scalar_list(a, "'axes'", file, diags)) d.axes = *items;
-  }
-  if (auto p = root["parameters"]) r.read_parameters(p);
-  if (auto g = root["gravity"]) {
-    if (g.IsMap()) {
-      if (check_map(g, {"magnitude", "tilt"}, "'gravity'", file, diags)) {
-        d.gravity_magnitude = r.opt_scalar(g, "magnitude", "'gravity'");
-        d.gravity_tilt = r.opt_scalar(g, "tilt", "'gravity'");
-        if (!d.gravity_magnitude || !d.gravity_tilt)
-          diags.error(where(g, file), "'gravity' as a mapping needs 'magnitude' and 'tilt' (the angle the first axis rises above the horizontal)");
-      }
+  if (root["phases"]) {
+    check_map(root, {"title", "source", "notes", "parameters", "phases"}, "a description with 'phases'", file, diags);
+    if (auto t = root["title"]) {
+      if (auto s = scalar(t, "'title'", file, diags)) d.title = *s;
     } else {
-      d.gravity = r.vector(g, "'gravity'");
+      diags.error({file, 1, 1}, "the description has no 'title' (expected a one-line title)");
     }
+    if (auto p = root["parameters"]) r.read_parameters(p);
+    r.read_phases(root["phases"]);
+  } else {
+    r.read_root(root, false);
   }
-  if (auto b = root["bodies"]) r.read_bodies(b);
-  else diags.error({file, 1, 1}, "the description has no 'bodies' (expected at least one body)");
-  if (auto p = root["points"]) r.read_points(p);
-  if (auto c = root["connections"]) r.read_list(c, "connections", std::nullopt);
-  if (auto l = root["loads"]) r.read_list(l, "loads", std::string("force"));
-  if (auto s = root["strings"]) r.read_list(s, "strings", std::string("string"));
-  if (auto l = root["layout"]) r.read_layout(l);
-  if (auto g = root["given"]) r.read_given(g);
-  if (auto f = root["find"]) r.read_find(f);
-  if (auto dv = root["derive"]) r.read_derive(dv);
-  if (auto sw = root["sweep"]) {
-    if (check_map(sw, {"vary", "fix", "plot"}, "'sweep'", file, diags)) {
-      SweepDesc sd;
-      sd.at = where(sw, file);
-      if (auto v = sw["vary"]) {
-        if (auto t = scalar(v, "'vary' of 'sweep'", file, diags)) sd.vary = *t;
-      } else {
-        diags.error(sd.at, "'sweep' has no 'vary' (expected name=start:end:count, e.g. h=0:2:41)");
-      }
-      if (auto f = sw["fix"])
-        if (auto items = scalar_list(f, "'fix' of 'sweep'", file, diags)) sd.fix = *items;
-      if (auto p = sw["plot"])
-        if (auto items = scalar_list(p, "'plot' of 'sweep'", file, diags)) sd.plot = *items;
-      d.sweep = sd;
-    }
-  }
-  if (auto mo = root["motion"]) r.read_motion(mo);
-  if (auto iv = root["interval"]) r.read_interval(iv);
   out.problems = diags.items();
   return out;
 }

@@ -121,9 +121,22 @@ struct MotionDesc {
 /// v^2 = v0^2 + 2 a s over a distance.
 struct IntervalDesc {
   std::optional<Text> duration, distance;
-  std::vector<std::pair<Text, Text>> from, to;  // rate -> expression in the parameters
+  std::vector<std::pair<Text, Text>> from, to;  // rate -> expression in the parameters; a rate
+                                                // in `from` only has its end value found
   Location at;
 };
+
+/// An impact (`impact:`): the bodies' rates just before (`from`); the finite forces give no
+/// impulse while it lasts, so momentum is conserved, and the bodies stick together
+/// (`plastic: true`) or, two of them, part with a coefficient of restitution.
+struct ImpactDesc {
+  std::vector<std::pair<Text, Text>> from;  // rate -> expression in the parameters
+  std::optional<Text> plastic;              // "true"
+  std::optional<Text> restitution;          // e, an expression in the parameters
+  Location at;
+};
+
+struct PhaseDesc;
 
 struct Description {
   std::string file;
@@ -144,6 +157,17 @@ struct Description {
   std::optional<SweepDesc> sweep;  // a default for `tackle sweep`, and a figure in LaTeX reports
   std::optional<MotionDesc> motion;  // motion in time (equations of motion, response, simulate)
   std::optional<IntervalDesc> interval;  // constant acceleration over an interval
+  std::optional<ImpactDesc> impact;      // an impact: momentum conserved, rates before -> after
+  // Phases (`phases:`): each a description of its own sharing the top-level parameters; the
+  // state at the end of one is carried into the next as defined parameters.
+  std::vector<PhaseDesc> phases;
+};
+
+struct PhaseDesc {
+  Text name;
+  Description d;  // the phase's own description (its parameters: the shared ones, then its own)
+  std::vector<std::pair<Text, Text>> carry;  // new parameter -> expression in the state at the phase's end
+  Location at;
 };
 
 /// A description and the problems found while reading it; what could be read is kept so that

@@ -165,17 +165,18 @@ EquationSystem build_equations(const Model& m) {
   // Constant acceleration over an interval: the change of each rate given at both ends.
   if (m.interval)
     for (const auto& c : m.interval->changes) {
+      if (!c.to) continue;  // its end is found after the solve (motion/interval)
       const Body& b = m.bodies[c.body];
       Equation eq;
       eq.kind = Equation::Kind::interval;
       eq.label = "interval: " + to_text(b.coord);
       if (m.interval->duration) {
         eq.lhs = b.accel * *m.interval->duration;
-        eq.rhs = c.to - c.from;
+        eq.rhs = *c.to - c.from;
         eq.sources = {"impulse and momentum: the constant acceleration times the duration is the change of " + to_text(b.rate)};
       } else {
         eq.lhs = 2 * b.accel * *m.interval->distance;
-        eq.rhs = pow(c.to, 2) - pow(c.from, 2);
+        eq.rhs = pow(*c.to, 2) - pow(c.from, 2);
         eq.sources = {"constant acceleration over the distance: " + to_text(b.rate) + "^2 changes by 2 " +
                       to_text(b.accel) + " times the distance"};
       }

@@ -14,7 +14,7 @@
 namespace tackle {
 
 struct Equation {
-  enum class Kind { lmb, amb, constraint_acceleration, constraint_rate, constraint_position, interval } kind;
+  enum class Kind { lmb, amb, constraint_acceleration, constraint_rate, constraint_position, interval, impact } kind;
   std::string label;                // "LMB A (x)", "AMB board about G (axis OG)", "string s: acceleration"
   GiNaC::ex lhs, rhs;
   std::vector<std::string> sources; // where each term of the lhs comes from

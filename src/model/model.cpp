@@ -46,6 +46,7 @@ Model build_model(const Description& d, const RuleSet& rules) {
   build::derive(ctx);
   build::motion(ctx);
   build::interval(ctx);
+  build::impact(ctx);
   m.sweep = d.sweep;
   ctx.diags.throw_if_any();
   m.symbols = ctx.table;

@@ -121,9 +121,25 @@ struct IntervalSpec {
   std::optional<GiNaC::ex> duration, distance;
   struct Change {
     int body = -1;
-    GiNaC::ex from, to;
+    GiNaC::ex from;
+    std::optional<GiNaC::ex> to;  // none: found from the solved (constant) acceleration
   };
   std::vector<Change> changes;
+  Location at;
+};
+
+/// An impact: the rates just before (the bodies' rate symbols stand for the rates just after),
+/// plastic (all stick together) or with a coefficient of restitution (two bodies), and the
+/// names of the impulses and of the kinetic energy lost.
+struct ImpactSpec {
+  struct Before {
+    int body = -1;
+    GiNaC::ex rate;
+    GiNaC::ex impulse;  // the symbol J_<body>
+  };
+  std::vector<Before> before;
+  std::optional<GiNaC::ex> restitution;  // none: plastic
+  GiNaC::ex energy_lost;                 // the symbol E_lost
   Location at;
 };
 
@@ -152,6 +168,7 @@ struct Model {
   GiNaC::ex time = 0;                 // t (0 when the description uses the name t itself)
   std::optional<MotionSpec> motion;
   std::optional<IntervalSpec> interval;
+  std::optional<ImpactSpec> impact;
 };
 
 /// d/dt of an expression in the bodies' coordinates and rates, the turning lengths and time

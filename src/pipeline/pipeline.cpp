@@ -2,10 +2,15 @@
 
 #include "report/sweep.hpp"
 #include "motion/simulate.hpp"
+#include "expr/parse.hpp"
+#include "expr/print.hpp"
+#include "report/narrator.hpp"
 
 #include <algorithm>
 
 namespace tackle {
+
+using namespace GiNaC;
 
 namespace {
 
@@ -18,46 +23,180 @@ void follow_motion(Analysis& a) {
 
 }  // namespace
 
-std::unique_ptr<const Analysis> analyze(const Description& d, const RuleSet& rules) {
-  auto a = std::make_unique<Analysis>();
-  a->model = build_model(d, rules);
-  a->system = build_equations(a->model);
-  a->solution = solve(a->model, a->system);
-  a->power = check_power(a->model, a->system, a->solution);
-  follow_motion(*a);
-  return a;
+namespace {
+
+void sort_by_place(std::vector<Diagnostic>& all) {
+  std::stable_sort(all.begin(), all.end(), [](const Diagnostic& x, const Diagnostic& y) {
+    return std::pair(x.where.line, x.where.column) < std::pair(y.where.line, y.where.column);
+  });
 }
 
-std::unique_ptr<const Analysis> analyze_text(const std::string& text, const std::string& file, const RuleSet& rules) {
-  DescriptionRead read = read_description_text(text, file);
-  if (!read.usable) throw InputError(read.problems);
-  std::vector<Diagnostic> all = read.problems;
+// One description (or one phase): model, balances, solve, power, the interval's end or the
+// impact, motion. `prior` are the reading problems, reported with the model's.
+std::unique_ptr<Analysis> analyze_one(const Description& d, const RuleSet& rules, std::vector<Diagnostic> prior) {
   auto a = std::make_unique<Analysis>();
   try {
-    a->model = build_model(read.description, rules);
+    a->model = build_model(d, rules);
   } catch (const InputError& e) {
-    all.insert(all.end(), e.diagnostics().begin(), e.diagnostics().end());
+    prior.insert(prior.end(), e.diagnostics().begin(), e.diagnostics().end());
   }
-  if (!all.empty()) {
-    std::stable_sort(all.begin(), all.end(), [](const Diagnostic& x, const Diagnostic& y) {
-      return std::pair(x.where.line, x.where.column) < std::pair(y.where.line, y.where.column);
-    });
-    throw InputError(all);
+  if (!prior.empty()) {
+    sort_by_place(prior);
+    throw InputError(prior);
+  }
+  if (a->model.impact) {
+    a->power.reason = "the rates jump at an impact (its check is the energy, above)";
+    a->impact = analyze_impact(a->model);
+    return a;
   }
   a->system = build_equations(a->model);
   if (auto problems = check_dimensions(a->model, a->system); !problems.empty()) throw InputError(problems);
   a->solution = solve(a->model, a->system);
   a->power = check_power(a->model, a->system, a->solution);
+  if (a->model.interval) {
+    a->interval_end = interval_end(a->model, a->solution);
+    if (!a->interval_end->problem.empty()) throw InputError({{a->model.interval->at, "'interval': " + a->interval_end->problem}});
+  }
   follow_motion(*a);
   return a;
+}
+
+// The phases in order, each carrying its end state into the next as defined parameters (the
+// closed forms printed and read back in the next phase's names, which share the parameters).
+std::unique_ptr<Analysis> analyze_phases(const Description& d, const RuleSet& rules, std::vector<Diagnostic> prior) {
+  auto top = std::make_unique<Analysis>();
+  top->model.title = d.title.text;
+  top->model.file = d.file;
+  std::vector<ParameterDesc> carried;
+  for (const auto& ph : d.phases) {
+    Description pd = ph.d;
+    pd.parameters.insert(pd.parameters.begin() + static_cast<std::ptrdiff_t>(d.parameters.size()), carried.begin(), carried.end());
+    std::unique_ptr<Analysis> a;
+    try {
+      a = analyze_one(pd, rules, {});
+    } catch (const InputError& e) {
+      // Later phases need what this one carries: the chain stops here.
+      prior.insert(prior.end(), e.diagnostics().begin(), e.diagnostics().end());
+      break;
+    }
+    Phase phase{ph.name.text, ph.at, nullptr, {}};
+    const SymbolTable& table = *a->model.symbols;
+    const exmap state = end_state(a->model, a->solution, a->interval_end, a->impact);
+    bool ok = true;
+    for (const auto& [name, value] : ph.carry) {
+      const auto parsed = parse_expression(value.text, table);
+      if (!parsed.value) {
+        for (const auto& p : parsed.problems) prior.push_back({value.at.shifted(p.column), "'carry' of phase '" + ph.name.text + "': " + p.message});
+        ok = false;
+        continue;
+      }
+      ex at_end = parsed.value->subs(state);
+      std::vector<std::string> missing;
+      for (const auto& sym : table.all())
+        if (sym->role != SymbolRole::parameter && at_end.has(sym->sym)) missing.push_back(sym->name);
+      if (!missing.empty()) {
+        std::vector<std::string> known;
+        for (const auto& [k, v] : state) known.push_back(to_text(k));
+        std::sort(known.begin(), known.end());
+        prior.push_back({value.at, "'carry' of phase '" + ph.name.text + "': " + join(missing) +
+                                       " is not known at the end of the phase (known there: " +
+                                       (known.empty() ? std::string("nothing but the parameters") : join(known)) + ")"});
+        ok = false;
+        continue;
+      }
+      at_end = simplest(normal(at_end));
+      ParameterDesc p;
+      p.name = name;
+      p.define = Text{to_text(at_end), value.at};
+      p.positive = false;
+      carried.push_back(p);
+      phase.carried.emplace_back(name.text, at_end);
+    }
+    phase.analysis = std::move(a);
+    top->phases.push_back(std::move(phase));
+    if (!ok) break;
+  }
+  if (!prior.empty()) {
+    sort_by_place(prior);
+    throw InputError(prior);
+  }
+  return top;
+}
+
+}  // namespace
+
+std::unique_ptr<const Analysis> analyze(const Description& d, const RuleSet& rules) {
+  if (!d.phases.empty()) return analyze_phases(d, rules, {});
+  return analyze_one(d, rules, {});
+}
+
+std::unique_ptr<const Analysis> analyze_text(const std::string& text, const std::string& file, const RuleSet& rules) {
+  DescriptionRead read = read_description_text(text, file);
+  if (!read.usable) throw InputError(read.problems);
+  if (!read.description.phases.empty()) {
+    // Reading problems first: a phase's model is not built on a phase that could not be read.
+    if (!read.problems.empty()) {
+      sort_by_place(read.problems);
+      throw InputError(read.problems);
+    }
+    return analyze_phases(read.description, rules, {});
+  }
+  return analyze_one(read.description, rules, read.problems);
+}
+
+const Analysis* pick_phase(const Analysis& a, const std::string& name, std::string& message) {
+  std::vector<std::string> names;
+  for (const auto& p : a.phases) names.push_back(p.name);
+  if (a.phases.empty()) {
+    if (!name.empty()) message = "--phase " + name + ": the description has no phases";
+    return message.empty() ? &a : nullptr;
+  }
+  for (const auto& p : a.phases)
+    if (p.name == name) return p.analysis.get();
+  message = (name.empty() ? std::string("the description has phases") : "there is no phase '" + name + "'") + " (expected --phase with one of: " +
+            join(names) + ")";
+  return nullptr;
 }
 
 std::unique_ptr<const Analysis> analyze_file(const std::string& path, const RuleSet& rules) {
   return analyze_text(read_text_file(path), path, rules);
 }
 
+std::vector<Derivation> explain_phases(const Analysis& a, const ReportOptions& options) {
+  std::vector<Derivation> out;
+  if (a.phases.empty()) {
+    out.push_back(explain(a, options));
+    return out;
+  }
+  for (std::size_t i = 0; i < a.phases.size(); ++i) {
+    const Phase& p = a.phases[i];
+    Derivation d = explain(*p.analysis, options);
+    d.title = a.model.title;
+    d.phase = p.name;
+    d.phase_number = static_cast<int>(i + 1);
+    if (!p.carried.empty()) {
+      Narrator n{d, *p.analysis->model.symbols};
+      n.section("Carried into the next phase");
+      n.text("The state at the end of this phase, named for the phases that follow (a defined parameter there):");
+      const SymbolTable& table = *p.analysis->model.symbols;
+      for (const auto& [name, value] : p.carried) {
+        Step* st = n.equation("carried", symbol(name), value);
+        std::string problem;
+        st->note = with_unit(evaluate(value, table, dimension_of(value, table, problem), options.digits));
+      }
+    }
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
 Derivation explain(const Analysis& a, const ReportOptions& options) {
-  Derivation d = explain(a.model, a.system, a.solution, a.power, options);
+  if (!a.phases.empty()) throw InternalError("explain: a phased analysis is explained phase by phase (explain_phases)");
+  Derivation d = explain(a.model, a.system, a.solution, a.power, options, a.interval_end ? &*a.interval_end : nullptr);
+  if (a.impact) {
+    narrate_impact(d, a.model, *a.impact, options);
+    d.impact = &*a.impact;
+  }
   if (a.motion) {
     narrate_motion(d, a.model, *a.motion, options);
     d.motion = &*a.motion;

@@ -62,7 +62,7 @@ ex fold_definitions(const ex& e, const SymbolTable& table) {
 }
 
 Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol, const PowerCheck& power_check,
-                   const ReportOptions& options) {
+                   const ReportOptions& options, const IntervalEnd* end) {
   Derivation d;
   d.title = m.title;
   d.file = m.file;
@@ -130,6 +130,12 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     st->math = syms;
   }
 
+  // An impact has no balances of forces: it is told by narrate_impact.
+  if (m.impact) {
+    d.power = power_check;
+    return d;
+  }
+
   const bool has_amb = std::any_of(s.equations.begin(), s.equations.end(),
                                    [](const Equation& e) { return e.kind == Equation::Kind::amb; });
   section(has_amb ? "Free body diagrams: linear and angular momentum balance"
@@ -161,8 +167,9 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
 
   if (m.interval) {
     section(m.interval->duration ? "Over the interval: impulse and momentum" : "Over the interval: constant acceleration");
+    const bool any = std::any_of(s.equations.begin(), s.equations.end(), [](const Equation& e) { return e.kind == Equation::Kind::interval; });
     text("The forces are taken constant over the interval (their averages), so each acceleration is constant and each "
-         "rate changes linearly:");
+         "rate changes linearly" + std::string(any ? ":" : "; the rates at its end follow from the solved accelerations (below)."));
     for (const auto& eq : s.equations)
       if (eq.kind == Equation::Kind::interval) {
         text(eq.sources.front() + ".");
@@ -390,6 +397,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       if (c.number) st->note = c.number->decimal + (c.number->unit.empty() ? "" : " " + c.number->unit);
     }
   }
+
+  if (end) narrate_interval_end(d, m, *end, options);
 
   if (!sol.conditions.empty()) {
     section("Validity");

@@ -12,6 +12,7 @@
 #include "equations/equations.hpp"
 #include "model/model.hpp"
 #include "motion/motion.hpp"
+#include "motion/phases.hpp"
 #include "numeric/evaluate.hpp"
 #include "solve/solve.hpp"
 
@@ -77,6 +78,8 @@ struct CombinationReport {
 struct Derivation {
   std::string title;
   std::string file;
+  std::string phase;      // a phase of a phased description: its name
+  int phase_number = 0;   // and its place (1, 2, ...); 0 for a description without phases
   std::vector<Step> steps;
   std::vector<Answer> answers;
   std::vector<CombinationReport> combinations;
@@ -97,6 +100,7 @@ struct Derivation {
   PowerCheck power;  // the power balance, checked against the solution
   std::vector<ParameterReport> parameters;
   const Motion* motion = nullptr;  // motion in time, for the JSON (narrated in the steps)
+  const ImpactResult* impact = nullptr;  // an impact, for the JSON's equations
 };
 
 struct ReportOptions {
@@ -105,11 +109,16 @@ struct ReportOptions {
 
 /// The derivation of a solved problem, in the book's order; `power_check` is the power-balance
 /// check made in the analysis (narrated here, not computed).
+/// `end`: the interval's end rates, told after the results.
 [[nodiscard]] Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol, const PowerCheck& power_check,
-                                 const ReportOptions& options = {});
+                                 const ReportOptions& options = {}, const IntervalEnd* end = nullptr);
 
 /// The motion in time appended to a derivation (report/motion_narration.cpp).
 void narrate_motion(Derivation& d, const Model& m, const Motion& motion, const ReportOptions& options = {});
+
+/// The end of an interval whose end rates were found, and an impact (report/phase_narration.cpp).
+void narrate_interval_end(Derivation& d, const Model& m, const IntervalEnd& end, const ReportOptions& options = {});
+void narrate_impact(Derivation& d, const Model& m, const ImpactResult& r, const ReportOptions& options = {});
 
 /// An expression with each defined parameter folded back in where that is shorter
 /// (a*l*m/(2*d) rather than a*m*sqrt(b^2 + d^2 + e^2)/(2*d)).
@@ -118,5 +127,8 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& motion, const R
 enum class Format { text, latex, json, markdown };
 /// `full`: the whole derivation; otherwise the answers only (`tackle solve`).
 [[nodiscard]] std::string write(const Derivation& d, Format f, bool full);
+/// The derivations of a phased description's phases, one after the other (one LaTeX document,
+/// one JSON object with a `phases` array); a single unphased derivation as above.
+[[nodiscard]] std::string write(const std::vector<Derivation>& phases, Format f, bool full);
 
 }  // namespace tackle

@@ -32,6 +32,10 @@ struct Variant {
 /// draws cannot give a valid variant. None when no parameter has a range.
 [[nodiscard]] std::vector<Variant> draw_variants(const Analysis& a, const Derivation& d, int count,
                                                  unsigned long long seed, int digits);
+/// The same for parts that share parameters (the phases of a phased description): one draw
+/// for all, valid only when it is valid in every part; one list of variants per part.
+[[nodiscard]] std::vector<std::vector<Variant>> draw_variants(
+    const std::vector<std::pair<const Analysis*, const Derivation*>>& parts, int count, unsigned long long seed, int digits);
 
 struct KeyEntry {
   const Derivation* derivation = nullptr;

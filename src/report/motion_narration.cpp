@@ -14,11 +14,6 @@ using namespace GiNaC;
 
 namespace {
 
-std::string with_unit(const std::optional<NumericValue>& v) {
-  if (!v) return {};
-  return v->decimal + (v->unit.empty() ? "" : " " + v->unit);
-}
-
 // A display symbol for a coordinate as a function of time: y(t).
 ex of_time(const ex& q, const SymbolTable& table) {
   const SymbolInfo* s = table.find(q);

@@ -11,6 +11,12 @@
 
 namespace tackle {
 
+/// A number with its unit ("20 N"), or "" when there is none.
+inline std::string with_unit(const std::optional<NumericValue>& v) {
+  if (!v) return {};
+  return v->decimal + (v->unit.empty() ? "" : " " + v->unit);
+}
+
 struct Narrator {
   Derivation& d;
   const SymbolTable& table;

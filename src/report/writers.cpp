@@ -33,6 +33,7 @@ std::string kind_name(Equation::Kind k) {
     case Equation::Kind::constraint_rate: return "constraint_rate";
     case Equation::Kind::constraint_position: return "constraint_position";
     case Equation::Kind::interval: return "interval";
+    case Equation::Kind::impact: return "impact";
   }
   return "";
 }
@@ -62,6 +63,11 @@ std::string prose(const Step& st, Format f) {
   return out + plain(st.text.substr(from));
 }
 
+// The title of a derivation, with its phase when it is one of a phased description's.
+std::string heading(const Derivation& d) {
+  return d.phase.empty() ? d.title : d.title + ": phase " + std::to_string(d.phase_number) + ", " + d.phase;
+}
+
 // ---- text ---------------------------------------------------------------------------------
 
 std::string answers_text(const Derivation& d) {
@@ -87,7 +93,8 @@ std::string answers_text(const Derivation& d) {
 }
 
 std::string derivation_text(const Derivation& d) {
-  std::string out = d.title + "\n" + std::string(d.title.size(), '=') + "\n";
+  const std::string title = heading(d);
+  std::string out = title + "\n" + std::string(title.size(), '=') + "\n";
   for (const auto& st : d.steps) {
     switch (st.kind) {
       case Step::Kind::section: out += "\n" + st.text + "\n" + std::string(st.text.size(), '-') + "\n"; break;
@@ -124,13 +131,15 @@ std::string latex_equation(const Step& st) {
   return "\\begin{equation*}\n  " + body + tag + "\n\\end{equation*}\n";
 }
 
-std::string latex_document(const Derivation& d, bool full) {
-  std::string out =
-      "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{amsmath}\n"
-      "\\usepackage[margin=2.5cm]{geometry}\n" +
-      std::string(d.figure_pgfplots.empty() && d.motion_pgfplots.empty() ? "" : "\\usepackage{pgfplots}\n\\pgfplotsset{compat=1.16}\n") +
-      "\\begin{document}\n";
-  out += "\\section*{" + tex_escape(d.title) + "}\n";
+std::string latex_preamble(bool plots) {
+  return "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{amsmath}\n"
+         "\\usepackage[margin=2.5cm]{geometry}\n" +
+         std::string(plots ? "\\usepackage{pgfplots}\n\\pgfplotsset{compat=1.16}\n" : "") + "\\begin{document}\n";
+}
+
+// The body of a derivation: its title as a section, its steps (or answers) below.
+std::string latex_body(const Derivation& d, bool full, const std::string& title) {
+  std::string out = "\\section*{" + tex_escape(title) + "}\n";
   if (full) {
     bool in_list = false;
     for (const auto& st : d.steps) {
@@ -176,7 +185,11 @@ std::string latex_document(const Derivation& d, bool full) {
       out += latex_equation(st);
     }
   }
-  return out + "\\end{document}\n";
+  return out;
+}
+
+std::string latex_document(const Derivation& d, bool full) {
+  return latex_preamble(!d.figure_pgfplots.empty() || !d.motion_pgfplots.empty()) + latex_body(d, full, d.title) + "\\end{document}\n";
 }
 
 // ---- JSON ---------------------------------------------------------------------------------
@@ -267,10 +280,11 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
   return j;
 }
 
-std::string json_document(const Derivation& d, bool full) {
+nlohmann::ordered_json json_object(const Derivation& d, bool full) {
   nlohmann::ordered_json j;
   j["version"] = 2;
   j["title"] = d.title;
+  if (!d.phase.empty()) j["phase"] = d.phase;
   j["file"] = d.file;
   j["status"] = d.status;
   j["rank"] = d.rank;
@@ -377,13 +391,22 @@ std::string json_document(const Derivation& d, bool full) {
                                   {"rate", to_text(c.rate)},
                                   {"acceleration", to_text(c.acceleration)}});
   }
-  return j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+  if (full && d.impact) {
+    for (const auto& eq : d.impact->equations)
+      j["equations"].push_back({{"label", eq.label}, {"kind", kind_name(eq.kind)}, {"lhs", to_text(eq.lhs)}, {"rhs", to_text(eq.rhs)},
+                                {"latex", to_latex(eq.lhs) + " = " + to_latex(eq.rhs)}, {"sources", eq.sources}});
+  }
+  return j;
+}
+
+std::string json_document(const Derivation& d, bool full) {
+  return json_object(d, full).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
 }
 
 // ---- Markdown -----------------------------------------------------------------------------
 
 std::string markdown_document(const Derivation& d, bool full) {
-  std::string out = "# " + d.title + "\n\n";
+  std::string out = "# " + heading(d) + "\n\n";
   auto eq = [](const Step& st) {
     std::string body = st.equals_constant ? to_latex(st.lhs) + " = \\text{const}"
                                           : to_latex(st.lhs) + " " + tex_relation(st.relation) + " " + to_latex(st.rhs);
@@ -423,6 +446,47 @@ std::string markdown_document(const Derivation& d, bool full) {
 }
 
 }  // namespace
+
+std::string write(const std::vector<Derivation>& ds, Format f, bool full) {
+  if (ds.size() == 1 && ds[0].phase.empty()) return write(ds[0], f, full);
+  std::string out;
+  switch (f) {
+    case Format::text:
+      for (std::size_t i = 0; i < ds.size(); ++i) {
+        if (full) out += (i ? "\n\n" : "") + derivation_text(ds[i]);
+        else out += (i ? "\n" : "") + heading(ds[i]) + "\n" + answers_text(ds[i]);
+      }
+      return out;
+    case Format::markdown:
+      for (const auto& d : ds) out += markdown_document(d, full);
+      return out;
+    case Format::latex: {
+      bool plots = false;
+      for (const auto& d : ds) plots = plots || !d.figure_pgfplots.empty() || !d.motion_pgfplots.empty();
+      out = latex_preamble(plots) + "\\section*{" + tex_escape(ds[0].title) + "}\n";
+      for (const auto& d : ds) {
+        std::string body = latex_body(d, full, "Phase " + std::to_string(d.phase_number) + ": " + d.phase);
+        // One level down: the phase is a subsection, its parts subsubsections.
+        for (const auto& [from, to] : {std::pair<std::string, std::string>{"\\subsection*{", "\\subsubsection*{"},
+                                       std::pair<std::string, std::string>{"\\section*{", "\\subsection*{"}})
+          for (std::size_t at = body.find(from); at != std::string::npos; at = body.find(from, at + to.size()))
+            body.replace(at, from.size(), to);
+        out += body;
+      }
+      return out + "\\end{document}\n";
+    }
+    case Format::json: {
+      nlohmann::ordered_json j;
+      j["version"] = 2;
+      j["title"] = ds[0].title;
+      j["file"] = ds[0].file;
+      j["phases"] = nlohmann::ordered_json::array();
+      for (const auto& d : ds) j["phases"].push_back(json_object(d, full));
+      return j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+    }
+  }
+  return out;
+}
 
 std::string write(const Derivation& d, Format f, bool full) {
   switch (f) {

@@ -52,221 +52,234 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
   REQUIRE(files.size() >= 9);
   for (const auto& file : files) {
     SECTION(std::filesystem::path(file).filename().string()) {
-      const YAML::Node root = YAML::LoadFile(file);
-      const YAML::Node expected = root["expected"];
+      const YAML::Node top = YAML::LoadFile(file);
       INFO(file);
-      REQUIRE(expected.IsMap());
-      const auto analysis = analyze_file(file, test::rules());
-      const Derivation d = explain(*analysis);
-      const SymbolTable& table = *analysis->model.symbols;
-      // Every answer the example asks for has an expectation, and the reverse.
-      REQUIRE(d.answers.size() == expected.size());
-      // Defined parameters (y_s = (m + M) g/k) are put in before comparing: an expectation
-      // may be written with or without them.
-      auto defined_out = [&](ex e) {
-        for (int depth = 0; depth < 8; ++depth) e = e.subs(table.definitions());
-        return e;
+      const auto whole = analyze_file(file, test::rules());
+      // Each phase of a phased example states its own expectations.
+      auto check = [&](const YAML::Node& root, const Analysis& an) {
+    const YAML::Node expected = root["expected"];
+    REQUIRE(expected.IsMap());
+    const Analysis* analysis = &an;
+    const Derivation d = explain(*analysis);
+    const SymbolTable& table = *analysis->model.symbols;
+    // Every answer the example asks for has an expectation, and the reverse.
+    REQUIRE(d.answers.size() == expected.size());
+    // Defined parameters (y_s = (m + M) g/k) are put in before comparing: an expectation
+    // may be written with or without them.
+    auto defined_out = [&](ex e) {
+      for (int depth = 0; depth < 8; ++depth) e = e.subs(table.definitions());
+      return e;
+    };
+    // A turning strand's length l is a symbol with l^2 a polynomial (l_CP^2 = a^2 +
+    // (h - z)^2): the difference is reduced modulo each l^2 - squared and must then vanish.
+    auto on_lengths = [&](const ex& e) { return reduced_on_lengths(e, analysis->model); };
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<int> num(1, 60), den(1, 7);
+    for (const auto& answer : d.answers) {
+      INFO("answer " << answer.name);
+      const YAML::Node want = expected[answer.name];
+      REQUIRE(want.IsMap());
+      REQUIRE(answer.closed_form);
+      const auto parsed = parse_expression(want["closed_form"].as<std::string>(), table);
+      REQUIRE(parsed.value);
+      const ex difference = on_lengths(defined_out(*answer.closed_form - *parsed.value));
+      INFO("tackle: " << to_text(*answer.closed_form) << "  expected: " << to_text(*parsed.value));
+      CHECK(normal(difference).is_zero());
+      for (int trial = 0; trial < 3; ++trial) {
+        exmap point;
+        for (const auto& s : table.all()) point[s->sym] = numeric(num(rng), den(rng));
+        CHECK(normal(difference.subs(point)).is_zero());
+      }
+      if (want["value"]) {
+        REQUIRE(answer.value);
+        const double v = want["value"].as<double>();
+        CHECK(answer.value->approx == Approx(v).epsilon(1e-9).margin(1e-12));
+      }
+    }
+    // Expected validity conditions solved for a parameter ("a <= mu*g*l_r/(...)"): each is
+    // among the solved forms of some condition, with the same operator and an equal bound.
+    if (const YAML::Node conds = root["expected_conditions"]) {
+      for (const auto& c : conds) {
+        const std::string text = c.as<std::string>();
+        INFO("expected condition " << text);
+        const auto sp1 = text.find(' '), sp2 = text.find(' ', sp1 + 1);
+        REQUIRE(sp2 != std::string::npos);
+        const auto parameter = parse_expression(text.substr(0, sp1), table);
+        const std::string op = text.substr(sp1 + 1, sp2 - sp1 - 1);
+        const auto bound = parse_expression(text.substr(sp2 + 1), table);
+        REQUIRE(parameter.value);
+        REQUIRE(bound.value);
+        int found = 0;
+        for (const auto& cr : d.conditions)
+          for (const auto& sv : cr.solved)
+            if (sv.parameter.is_equal(*parameter.value) && sv.op == op && normal(defined_out(sv.bound - *bound.value)).is_zero()) ++found;
+        CHECK(found == 1);
+      }
+    }
+    // The power balance, an independent check: it holds for every example, or the example
+    // says why it cannot be made (`expected_power: "not checked: <reason>"`).
+    if (const YAML::Node p = root["expected_power"]) {
+      CHECK(d.power.status == PowerCheck::Status::not_applicable);
+      CHECK("not checked: " + d.power.reason == p.as<std::string>());
+    } else {
+      INFO("power residual: " << to_text(d.power.residual) << " reason: " << d.power.reason);
+      CHECK(d.power.status == PowerCheck::Status::holds);
+    }
+    // Motion in time: the equation of motion, the response, the quantities and conditions
+    // along it, each compared with the motion's quantities (lambda, zeta) put in,
+    // algebraically and at random points (t included).
+    REQUIRE(static_cast<bool>(root["expected_motion"]) == static_cast<bool>(analysis->motion));
+    if (const YAML::Node em = root["expected_motion"]) {
+      const Motion& mo = *analysis->motion;
+      // Inside functions and roots, the arguments in normal form: exp(-c*t/(2*m)) and
+      // exp(-t*c/(2*m)) are one expression only when their arguments are normalized alike.
+      Canonical canonical;
+      auto motion_out = [&](ex e) {
+        for (int depth = 0; depth < 4; ++depth) e = e.subs(mo.definitions);
+        return canonical(defined_out(e));
       };
-      // A turning strand's length l is a symbol with l^2 a polynomial (l_CP^2 = a^2 +
-      // (h - z)^2): the difference is reduced modulo each l^2 - squared and must then vanish.
-      auto on_lengths = [&](const ex& e) { return reduced_on_lengths(e, analysis->model); };
-      std::mt19937 rng(7);
-      std::uniform_int_distribution<int> num(1, 60), den(1, 7);
-      for (const auto& answer : d.answers) {
-        INFO("answer " << answer.name);
-        const YAML::Node want = expected[answer.name];
-        REQUIRE(want.IsMap());
-        REQUIRE(answer.closed_form);
-        const auto parsed = parse_expression(want["closed_form"].as<std::string>(), table);
+      auto same = [&](const ex& got, const std::string& want) {
+        const auto parsed = parse_expression(want, table);
+        INFO("expected: " << want << (parsed.problems.empty() ? "" : " -- " + parsed.problems[0].message));
         REQUIRE(parsed.value);
-        const ex difference = on_lengths(defined_out(*answer.closed_form - *parsed.value));
-        INFO("tackle: " << to_text(*answer.closed_form) << "  expected: " << to_text(*parsed.value));
+        const ex difference = motion_out(got - *parsed.value);
+        INFO("tackle: " << to_text(got) << "  expected: " << want);
         CHECK(normal(difference).is_zero());
         for (int trial = 0; trial < 3; ++trial) {
           exmap point;
-          for (const auto& s : table.all()) point[s->sym] = numeric(num(rng), den(rng));
-          CHECK(normal(difference.subs(point)).is_zero());
+          for (const auto& sy : table.all()) point[sy->sym] = numeric(num(rng), den(rng));
+          const ex v = evalf(difference.subs(point));
+          REQUIRE(is_a<numeric>(v));
+          CHECK(std::abs(ex_to<numeric>(v).to_double()) < 1e-9);
         }
-        if (want["value"]) {
-          REQUIRE(answer.value);
-          const double v = want["value"].as<double>();
-          CHECK(answer.value->approx == Approx(v).epsilon(1e-9).margin(1e-12));
-        }
+      };
+      CHECK(mo.eom.dof == em["degrees_of_freedom"].as<std::size_t>());
+      if (em["mass"]) {
+        REQUIRE(mo.eom.linear);
+        same(mo.eom.M(0, 0), em["mass"].as<std::string>());
+        same(mo.eom.C(0, 0), em["damping"].as<std::string>());
+        same(mo.eom.K(0, 0), em["stiffness"].as<std::string>());
+        same(mo.eom.forcing[0], em["forcing"].as<std::string>());
       }
-      // Expected validity conditions solved for a parameter ("a <= mu*g*l_r/(...)"): each is
-      // among the solved forms of some condition, with the same operator and an equal bound.
-      if (const YAML::Node conds = root["expected_conditions"]) {
-        for (const auto& c : conds) {
-          const std::string text = c.as<std::string>();
-          INFO("expected condition " << text);
-          const auto sp1 = text.find(' '), sp2 = text.find(' ', sp1 + 1);
-          REQUIRE(sp2 != std::string::npos);
-          const auto parameter = parse_expression(text.substr(0, sp1), table);
-          const std::string op = text.substr(sp1 + 1, sp2 - sp1 - 1);
-          const auto bound = parse_expression(text.substr(sp2 + 1), table);
-          REQUIRE(parameter.value);
-          REQUIRE(bound.value);
-          int found = 0;
-          for (const auto& cr : d.conditions)
-            for (const auto& sv : cr.solved)
-              if (sv.parameter.is_equal(*parameter.value) && sv.op == op && normal(defined_out(sv.bound - *bound.value)).is_zero()) ++found;
-          CHECK(found == 1);
-        }
-      }
-      // The power balance, an independent check: it holds for every example, or the example
-      // says why it cannot be made (`expected_power: "not checked: <reason>"`).
-      if (const YAML::Node p = root["expected_power"]) {
-        CHECK(d.power.status == PowerCheck::Status::not_applicable);
-        CHECK("not checked: " + d.power.reason == p.as<std::string>());
+      if (em["response"]) {
+        REQUIRE(mo.response);
+        CHECK(mo.response->verified);
+        same(mo.response->q, em["response"].as<std::string>());
       } else {
-        INFO("power residual: " << to_text(d.power.residual) << " reason: " << d.power.reason);
-        CHECK(d.power.status == PowerCheck::Status::holds);
+        CHECK_FALSE(mo.response);
       }
-      // Motion in time: the equation of motion, the response, the quantities and conditions
-      // along it, each compared with the motion's quantities (lambda, zeta) put in,
-      // algebraically and at random points (t included).
-      REQUIRE(static_cast<bool>(root["expected_motion"]) == static_cast<bool>(analysis->motion));
-      if (const YAML::Node em = root["expected_motion"]) {
-        const Motion& mo = *analysis->motion;
-        // Inside functions and roots, the arguments in normal form: exp(-c*t/(2*m)) and
-        // exp(-t*c/(2*m)) are one expression only when their arguments are normalized alike.
-        Canonical canonical;
-        auto motion_out = [&](ex e) {
-          for (int depth = 0; depth < 4; ++depth) e = e.subs(mo.definitions);
-          return canonical(defined_out(e));
-        };
-        auto same = [&](const ex& got, const std::string& want) {
-          const auto parsed = parse_expression(want, table);
-          INFO("expected: " << want << (parsed.problems.empty() ? "" : " -- " + parsed.problems[0].message));
-          REQUIRE(parsed.value);
-          const ex difference = motion_out(got - *parsed.value);
-          INFO("tackle: " << to_text(got) << "  expected: " << want);
-          CHECK(normal(difference).is_zero());
-          for (int trial = 0; trial < 3; ++trial) {
-            exmap point;
-            for (const auto& sy : table.all()) point[sy->sym] = numeric(num(rng), den(rng));
-            const ex v = evalf(difference.subs(point));
-            REQUIRE(is_a<numeric>(v));
-            CHECK(std::abs(ex_to<numeric>(v).to_double()) < 1e-9);
-          }
-        };
-        CHECK(mo.eom.dof == em["degrees_of_freedom"].as<std::size_t>());
-        if (em["mass"]) {
-          REQUIRE(mo.eom.linear);
-          same(mo.eom.M(0, 0), em["mass"].as<std::string>());
-          same(mo.eom.C(0, 0), em["damping"].as<std::string>());
-          same(mo.eom.K(0, 0), em["stiffness"].as<std::string>());
-          same(mo.eom.forcing[0], em["forcing"].as<std::string>());
+      if (const YAML::Node it = em["in_time"])
+        for (const auto& kv : it) {
+          const auto q = std::find_if(mo.quantities.begin(), mo.quantities.end(),
+                                      [&](const QuantityInTime& x) { return x.name == kv.first.as<std::string>(); });
+          REQUIRE(q != mo.quantities.end());
+          same(q->of_t, kv.second.as<std::string>());
         }
-        if (em["response"]) {
-          REQUIRE(mo.response);
-          CHECK(mo.response->verified);
-          same(mo.response->q, em["response"].as<std::string>());
-        } else {
-          CHECK_FALSE(mo.response);
-        }
-        if (const YAML::Node it = em["in_time"])
-          for (const auto& kv : it) {
-            const auto q = std::find_if(mo.quantities.begin(), mo.quantities.end(),
-                                        [&](const QuantityInTime& x) { return x.name == kv.first.as<std::string>(); });
-            REQUIRE(q != mo.quantities.end());
-            same(q->of_t, kv.second.as<std::string>());
-          }
-        // Numbers at given times: the closed-form response, and the numeric integration
-        // (Boost.Odeint), each against the hand-derived value.
-        if (const YAML::Node at = em["at_time"])
-          for (const auto& row : at) {
-            const double tt = row["t"].as<double>();
-            INFO("at t = " << tt);
-            SimulationSpec spec;
-            spec.until = tt;
-            for (const auto& q : mo.eom.q) spec.plot.push_back(to_text(q));
-            const Simulation run = simulate(*analysis, spec, Location{});
-            REQUIRE(run.complete);
-            for (std::size_t i = 0; i < mo.eom.q.size(); ++i) {
-              const std::string q = to_text(mo.eom.q[i]);
-              if (!row[q]) continue;
-              const double want = row[q].as<double>();
-              INFO("coordinate " << q);
-              if (mo.response) {
-                exmap vals = table.values();
-                vals[analysis->model.time] = numeric(row["t"].as<std::string>().c_str());
-                const ex v = evalf(motion_out(mo.response->q).subs(vals).subs(vals));
-                REQUIRE(is_a<numeric>(v));
-                CHECK(ex_to<numeric>(v).to_double() == Approx(want).epsilon(1e-5));
-              }
-              REQUIRE(run.table.y[i].back());
-              CHECK(*run.table.y[i].back() == Approx(want).epsilon(1e-6));
+      // Numbers at given times: the closed-form response, and the numeric integration
+      // (Boost.Odeint), each against the hand-derived value.
+      if (const YAML::Node at = em["at_time"])
+        for (const auto& row : at) {
+          const double tt = row["t"].as<double>();
+          INFO("at t = " << tt);
+          SimulationSpec spec;
+          spec.until = tt;
+          for (const auto& q : mo.eom.q) spec.plot.push_back(to_text(q));
+          const Simulation run = simulate(*analysis, spec, Location{});
+          REQUIRE(run.complete);
+          for (std::size_t i = 0; i < mo.eom.q.size(); ++i) {
+            const std::string q = to_text(mo.eom.q[i]);
+            if (!row[q]) continue;
+            const double want = row[q].as<double>();
+            INFO("coordinate " << q);
+            if (mo.response) {
+              exmap vals = table.values();
+              vals[analysis->model.time] = numeric(row["t"].as<std::string>().c_str());
+              const ex v = evalf(motion_out(mo.response->q).subs(vals).subs(vals));
+              REQUIRE(is_a<numeric>(v));
+              CHECK(ex_to<numeric>(v).to_double() == Approx(want).epsilon(1e-5));
             }
-          }
-        if (const YAML::Node sa = em["speed_at"]) {
-          REQUIRE(mo.energy);
-          INFO(mo.energy->not_possible);
-          REQUIRE(mo.energy->rate_squared_number);
-          CHECK(std::sqrt(*mo.energy->rate_squared_number) == Approx(sa["value"].as<double>()).epsilon(1e-7));
-          if (sa["rate_squared"]) {
-            REQUIRE(mo.energy->rate_squared);
-            same(*mo.energy->rate_squared, sa["rate_squared"].as<std::string>());
-          } else {
-            CHECK(mo.energy->numeric_only);
+            REQUIRE(run.table.y[i].back());
+            CHECK(*run.table.y[i].back() == Approx(want).epsilon(1e-6));
           }
         }
-        if (const YAML::Node nf = em["natural_frequencies"]) {
-          REQUIRE(mo.eom.natural_frequencies.size() == nf.size());
-          for (std::size_t i = 0; i < nf.size(); ++i) CHECK(mo.eom.natural_frequencies[i] == Approx(nf[i].as<double>()).epsilon(1e-8));
+      if (const YAML::Node sa = em["speed_at"]) {
+        REQUIRE(mo.energy);
+        INFO(mo.energy->not_possible);
+        REQUIRE(mo.energy->rate_squared_number);
+        CHECK(std::sqrt(*mo.energy->rate_squared_number) == Approx(sa["value"].as<double>()).epsilon(1e-7));
+        if (sa["rate_squared"]) {
+          REQUIRE(mo.energy->rate_squared);
+          same(*mo.energy->rate_squared, sa["rate_squared"].as<std::string>());
+        } else {
+          CHECK(mo.energy->numeric_only);
         }
-        if (const YAML::Node eq = em["equilibrium"]) {
-          REQUIRE(mo.eom.equilibrium);
-          REQUIRE(mo.eom.equilibrium->size() == eq.size());
-          for (std::size_t i = 0; i < eq.size(); ++i) same((*mo.eom.equilibrium)[i], eq[i].as<std::string>());
-        }
-        auto condition = [&](const std::string& source) {
-          const auto c = std::find_if(mo.conditions.begin(), mo.conditions.end(),
-                                      [&](const ConditionInTime& x) { return x.condition->condition->source == source; });
-          REQUIRE(c != mo.conditions.end());
-          return *c;
-        };
-        if (const YAML::Node fa = em["for_all_t"])
-          for (const auto& kv : fa) {
-            const ConditionInTime c = condition(kv.first.as<std::string>());
-            REQUIRE(c.extreme);
-            same(*c.extreme, kv.second.as<std::string>());
-          }
-        if (const YAML::Node sb = em["steady_band"]) {
-          const ConditionInTime c = condition(sb["source"].as<std::string>());
-          REQUIRE(c.band);
-          CHECK(c.band->fails_between == sb["fails_between"].as<bool>());
-          same(c.band->low, sb["low"].as<std::string>());
-          same(c.band->high, sb["high"].as<std::string>());
-          REQUIRE(c.steady_holds);
-          CHECK(*c.steady_holds == sb["holds"].as<bool>());
-        }
-        if (const YAML::Node ff = em["first_failure"])
-          for (const auto& kv : ff) {
-            const ConditionInTime c = condition(kv.first.as<std::string>());
-            REQUIRE(c.first_failure);
-            same(*c.first_failure, kv.second["closed_form"].as<std::string>());
-            REQUIRE(c.first_failure_s);
-            CHECK(*c.first_failure_s == Approx(kv.second["value"].as<double>()).epsilon(1e-5));
-          }
       }
-      // An indeterminate example names its free unknowns and determined combinations.
-      std::vector<std::string> free;
-      if (root["expected_free"])
-        for (const auto& f : root["expected_free"]) free.push_back(f.as<std::string>());
-      CHECK(d.free == free);
-      CHECK(d.status == (free.empty() ? "determined" : "underdetermined"));
-      const YAML::Node combos = root["expected_combinations"];
-      REQUIRE(d.combinations.size() == (combos ? combos.size() : 0));
-      for (std::size_t i = 0; i < d.combinations.size(); ++i) {
-        const auto combination = parse_expression(combos[i]["combination"].as<std::string>(), table);
-        const auto value = parse_expression(combos[i]["closed_form"].as<std::string>(), table);
-        REQUIRE(combination.value);
-        REQUIRE(value.value);
-        CHECK(normal(d.combinations[i].combination - *combination.value).is_zero());
-        CHECK(normal(d.combinations[i].value - *value.value).is_zero());
-        REQUIRE(d.combinations[i].number);
-        CHECK(d.combinations[i].number->approx == Approx(combos[i]["value"].as<double>()));
+      if (const YAML::Node nf = em["natural_frequencies"]) {
+        REQUIRE(mo.eom.natural_frequencies.size() == nf.size());
+        for (std::size_t i = 0; i < nf.size(); ++i) CHECK(mo.eom.natural_frequencies[i] == Approx(nf[i].as<double>()).epsilon(1e-8));
+      }
+      if (const YAML::Node eq = em["equilibrium"]) {
+        REQUIRE(mo.eom.equilibrium);
+        REQUIRE(mo.eom.equilibrium->size() == eq.size());
+        for (std::size_t i = 0; i < eq.size(); ++i) same((*mo.eom.equilibrium)[i], eq[i].as<std::string>());
+      }
+      auto condition = [&](const std::string& source) {
+        const auto c = std::find_if(mo.conditions.begin(), mo.conditions.end(),
+                                    [&](const ConditionInTime& x) { return x.condition->condition->source == source; });
+        REQUIRE(c != mo.conditions.end());
+        return *c;
+      };
+      if (const YAML::Node fa = em["for_all_t"])
+        for (const auto& kv : fa) {
+          const ConditionInTime c = condition(kv.first.as<std::string>());
+          REQUIRE(c.extreme);
+          same(*c.extreme, kv.second.as<std::string>());
+        }
+      if (const YAML::Node sb = em["steady_band"]) {
+        const ConditionInTime c = condition(sb["source"].as<std::string>());
+        REQUIRE(c.band);
+        CHECK(c.band->fails_between == sb["fails_between"].as<bool>());
+        same(c.band->low, sb["low"].as<std::string>());
+        same(c.band->high, sb["high"].as<std::string>());
+        REQUIRE(c.steady_holds);
+        CHECK(*c.steady_holds == sb["holds"].as<bool>());
+      }
+      if (const YAML::Node ff = em["first_failure"])
+        for (const auto& kv : ff) {
+          const ConditionInTime c = condition(kv.first.as<std::string>());
+          REQUIRE(c.first_failure);
+          same(*c.first_failure, kv.second["closed_form"].as<std::string>());
+          REQUIRE(c.first_failure_s);
+          CHECK(*c.first_failure_s == Approx(kv.second["value"].as<double>()).epsilon(1e-5));
+        }
+    }
+    // An indeterminate example names its free unknowns and determined combinations.
+    std::vector<std::string> free;
+    if (root["expected_free"])
+      for (const auto& f : root["expected_free"]) free.push_back(f.as<std::string>());
+    CHECK(d.free == free);
+    CHECK(d.status == (free.empty() ? "determined" : "underdetermined"));
+    const YAML::Node combos = root["expected_combinations"];
+    REQUIRE(d.combinations.size() == (combos ? combos.size() : 0));
+    for (std::size_t i = 0; i < d.combinations.size(); ++i) {
+      const auto combination = parse_expression(combos[i]["combination"].as<std::string>(), table);
+      const auto value = parse_expression(combos[i]["closed_form"].as<std::string>(), table);
+      REQUIRE(combination.value);
+      REQUIRE(value.value);
+      CHECK(normal(d.combinations[i].combination - *combination.value).is_zero());
+      CHECK(normal(d.combinations[i].value - *value.value).is_zero());
+      REQUIRE(d.combinations[i].number);
+      CHECK(d.combinations[i].number->approx == Approx(combos[i]["value"].as<double>()));
+    }
+      };
+      if (const YAML::Node phases = top["phases"]) {
+        REQUIRE(whole->phases.size() == phases.size());
+        for (std::size_t i = 0; i < phases.size(); ++i) {
+          INFO("phase " << phases[i]["name"].as<std::string>());
+          check(phases[i], *whole->phases[i].analysis);
+        }
+      } else {
+        check(top, *whole);
       }
     }
   }

@@ -50,7 +50,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const auto& text : it->second) {
     try {
       const auto analysis = tackle::analyze_text(text, "example.yaml", set);
-      (void)tackle::explain(*analysis);
+      (void)tackle::explain_phases(*analysis);
     } catch (const tackle::InputError&) {
     }
   }

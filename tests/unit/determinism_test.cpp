@@ -16,13 +16,22 @@ namespace {
 
 std::string everything(const std::string& file) {
   const auto a = analyze_file(file, test::rules());
-  const Derivation d = explain(*a);
+  const auto ds = explain_phases(*a);
   std::string out;
-  for (Format f : {Format::text, Format::latex, Format::markdown, Format::json}) out += write(d, f, true);
-  const auto candidates = candidate_equations(a->model);
-  std::vector<Isolation> found;
-  for (const auto& u : model_unknowns(a->model)) found.push_back(isolate(a->model, candidates, u));
-  return out + write_isolations(a->model, found, Format::text);
+  for (Format f : {Format::text, Format::latex, Format::markdown, Format::json}) out += write(ds, f, true);
+  std::vector<const Analysis*> parts{a.get()};
+  if (!a->phases.empty()) {
+    parts.clear();
+    for (const auto& p : a->phases) parts.push_back(p.analysis.get());
+  }
+  for (const Analysis* part : parts) {
+    if (part->impact) continue;  // no balances to isolate
+    const auto candidates = candidate_equations(part->model);
+    std::vector<Isolation> found;
+    for (const auto& u : model_unknowns(part->model)) found.push_back(isolate(part->model, candidates, u));
+    out += write_isolations(part->model, found, Format::text);
+  }
+  return out;
 }
 
 }  // namespace

@@ -262,6 +262,36 @@ void motion(BuildContext& ctx) {
 
 namespace tackle::build {
 
+namespace {
+
+// An expression in the parameters only (an interval's ends, an impact's rates before), with
+// the dimension `dim`; reported at `t` otherwise.
+std::optional<ex> parameters_only(BuildContext& ctx, const Text& t, const std::string& what, const Dimension& dim) {
+  auto v = ctx.parse(t, *ctx.table, what);
+  if (!v) return std::nullopt;
+  for (const auto& s : ctx.table->all())
+    if (v->has(s->sym) && s->role != SymbolRole::parameter) {
+      ctx.diags.error(t.at, what + " is not an expression in the parameters");
+      return std::nullopt;
+    }
+  if (!is_a<numeric>(*v)) ctx.check_dimension(*v, dim, t.at, what);
+  return v;
+}
+
+// The body whose rate `key` names (dot(x_A)), or -1 with the problem reported.
+int body_of_rate(BuildContext& ctx, const Text& key) {
+  const auto r = parse_expression(key.text, *ctx.table);
+  for (std::size_t i = 0; i < ctx.m.bodies.size(); ++i)
+    if (r.value && !ctx.m.bodies[i].rate.is_zero() && ctx.m.bodies[i].rate.is_equal(*r.value)) return static_cast<int>(i);
+  std::vector<std::string> known;
+  for (const auto& b : ctx.m.bodies)
+    if (!b.rate.is_zero()) known.push_back(to_text(b.rate));
+  ctx.unknown_name(key, "rate", known);
+  return -1;
+}
+
+}  // namespace
+
 void interval(BuildContext& ctx) {
   if (!ctx.d.interval) return;
   const IntervalDesc& d = *ctx.d.interval;
@@ -269,16 +299,7 @@ void interval(BuildContext& ctx) {
   IntervalSpec spec;
   spec.at = d.at;
   auto quantity = [&](const std::optional<Text>& t, const std::string& what, const Dimension& dim) -> std::optional<ex> {
-    if (!t) return std::nullopt;
-    auto v = ctx.parse(*t, *ctx.table, what);
-    if (!v) return std::nullopt;
-    for (const auto& s : ctx.table->all())
-      if (v->has(s->sym) && s->role != SymbolRole::parameter) {
-        ctx.diags.error(t->at, what + " is not an expression in the parameters");
-        return std::nullopt;
-      }
-    if (!is_a<numeric>(*v)) ctx.check_dimension(*v, dim, t->at, what);
-    return v;
+    return t ? parameters_only(ctx, *t, what, dim) : std::nullopt;
   };
   spec.duration = quantity(d.duration, "'duration' of 'interval'", Dimension::time());
   spec.distance = quantity(d.distance, "'distance' of 'interval'", Dimension::length());
@@ -288,17 +309,8 @@ void interval(BuildContext& ctx) {
   for (const bool at_end : {false, true})
     for (const auto& [key, value] : at_end ? d.to : d.from) {
       const std::string what = std::string(at_end ? "'to'" : "'from'") + " of 'interval'";
-      const auto r = parse_expression(key.text, *ctx.table);
-      int body = -1;
-      for (std::size_t i = 0; i < m.bodies.size(); ++i)
-        if (r.value && !m.bodies[i].rate.is_zero() && m.bodies[i].rate.is_equal(*r.value)) body = static_cast<int>(i);
-      if (body < 0) {
-        std::vector<std::string> known;
-        for (const auto& b : m.bodies)
-          if (!b.rate.is_zero()) known.push_back(to_text(b.rate));
-        ctx.unknown_name(key, "rate", known);
-        continue;
-      }
+      const int body = body_of_rate(ctx, key);
+      if (body < 0) continue;
       auto v = quantity(Text{value.text, value.at}, "value of '" + key.text + "' in " + what, Dimension::velocity());
       if (!v) continue;
       if (!ends.count(body)) order.push_back(body);
@@ -306,14 +318,92 @@ void interval(BuildContext& ctx) {
     }
   for (int b : order) {
     const auto& [from, to] = ends[b];
-    if (!from || !to) {
-      ctx.diags.error(d.at, "'interval' gives " + to_text(m.bodies[b].rate) + (from ? " at its start only" : " at its end only") +
-                                " (expected it in both 'from' and 'to')");
+    if (!from) {
+      ctx.diags.error(d.at, "'interval' gives " + to_text(m.bodies[b].rate) + " at its end only (expected it in 'from' too)");
       continue;
     }
-    spec.changes.push_back({b, *from, *to});
+    spec.changes.push_back({b, *from, to});
   }
   m.interval = std::move(spec);
+}
+
+void impact(BuildContext& ctx) {
+  if (!ctx.d.impact) return;
+  const ImpactDesc& d = *ctx.d.impact;
+  Model& m = ctx.m;
+  ImpactSpec spec;
+  spec.at = d.at;
+  bool usable = true;
+  if (m.dims() != 1) {
+    ctx.diags.error(d.at, "'impact' is along one axis (expected a description with one axis)");
+    return;
+  }
+  // The finite forces give no impulse while an impact lasts: nothing else is modelled.
+  for (const auto& c : ctx.d.connections) {
+    ctx.diags.error(c.at, "a description with 'impact' has no connections or loads (the finite forces give no impulse while "
+                          "the impact lasts; expected the bodies and their rates before it only)");
+    usable = false;
+  }
+  if (!ctx.d.find.empty()) {
+    ctx.diags.error(ctx.d.find[0].name.at, "a description with 'impact' has no 'find' (it reports the rates after the impact, "
+                                           "the impulses and the kinetic energy lost)");
+    usable = false;
+  }
+  for (const char* other : {"interval", "motion"})
+    if ((std::string(other) == "interval" && ctx.d.interval) || (std::string(other) == "motion" && ctx.d.motion)) {
+      ctx.diags.error(d.at, std::string("a description with 'impact' has no '") + other + "' (expected one of them)");
+      usable = false;
+    }
+  std::map<int, ex> before;
+  for (const auto& [key, value] : d.from) {
+    const int body = body_of_rate(ctx, key);
+    if (body < 0) {
+      usable = false;
+      continue;
+    }
+    auto v = parameters_only(ctx, value, "value of '" + key.text + "' in 'from' of 'impact'", Dimension::velocity());
+    if (!v) {
+      usable = false;
+      continue;
+    }
+    before[body] = *v;
+  }
+  for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+    const Body& b = m.bodies[i];
+    if (!b.has_mass) {
+      ctx.diags.error(b.at, "body '" + b.name + "' has no mass (expected every body of an impact to have one)");
+      usable = false;
+    } else if (!before.count(static_cast<int>(i)) && !b.rate.is_zero()) {
+      ctx.diags.error(d.at, "'impact' gives no rate of body '" + b.name + "' before it (expected " + to_text(b.rate) + " in 'from')");
+      usable = false;
+    }
+  }
+  if (m.bodies.size() < 2) {
+    ctx.diags.error(d.at, "'impact' has " + std::to_string(m.bodies.size()) + " body (expected two or more that collide)");
+    usable = false;
+  }
+  if (d.restitution) {
+    spec.restitution = parameters_only(ctx, *d.restitution, "'restitution' of 'impact'", Dimension::none());
+    if (!spec.restitution) usable = false;
+    if (m.bodies.size() > 2) {
+      ctx.diags.error(d.restitution->at, "'restitution' of 'impact' is for two bodies, and there are " +
+                                             std::to_string(m.bodies.size()) + " (expected two, or 'plastic: true')");
+      usable = false;
+    }
+  }
+  if (!usable) return;
+  for (const auto& [body, v] : before) {
+    const Text name{"J_" + m.bodies[body].name, d.at};
+    if (!ctx.claim(name, "impulse")) return;
+    const ex sym = ctx.table->add(name.text, "J_{\\mathrm{" + m.bodies[body].name + "}}", SymbolRole::unknown,
+                                  Dimension::force() * Dimension::time(), false, d.at).sym;
+    spec.before.push_back({body, v, sym});
+  }
+  const Text lost{"E_lost", d.at};
+  if (!ctx.claim(lost, "energy")) return;
+  spec.energy_lost = ctx.table->add(lost.text, std::string("E_{\\mathrm{lost}}"), SymbolRole::unknown,
+                                    Dimension::force() * Dimension::length(), false, d.at).sym;
+  m.impact = std::move(spec);
 }
 
 }  // namespace tackle::build

@@ -42,6 +42,11 @@ void motion(BuildContext& ctx);
 // Needs the bodies and parameters.
 void interval(BuildContext& ctx);
 
+// m.impact from 'impact': the rates just before, plastic or a restitution, the symbols of the
+// impulses and of the energy lost; an impact admits no connections, loads or questions.
+// Needs the bodies, parameters and connections.
+void impact(BuildContext& ctx);
+
 // Helpers one stage lends another.
 
 // The value of a `given` entry in SI (questions.cpp); read_layout uses it too.
