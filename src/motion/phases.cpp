@@ -77,9 +77,9 @@ IntervalEnd interval_end(const Model& m, const Solution& sol) {
       else r.reaches.push_back({towards_start, ">"});
       if (reached && (moving || pushed)) r.reaches_holds = *reached && (moving.value_or(false) || pushed.value_or(false));
       if (r.reaches_holds && !*r.reaches_holds) {
-        out.problem = "the body never moves by " + to_text(s) + " with " + to_text(b.rate) + " = " + to_text(c.from) +
-                      " at the start and " + to_text(b.accel) + " = " + to_text(*a) +
-                      " (expected it to reach the end of the interval)";
+        out.problem = "body '" + b.name + "' never moves by " + to_text(s) + " (it starts with " + to_text(b.rate) + " = " +
+                      to_text(c.from) + " and has " + to_text(b.accel) + " = " + to_text(*a) +
+                      "; expected it to reach the end of the interval)";
         return out;
       }
     }

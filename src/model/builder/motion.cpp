@@ -370,7 +370,7 @@ void impact(BuildContext& ctx) {
   }
   for (std::size_t i = 0; i < m.bodies.size(); ++i) {
     const Body& b = m.bodies[i];
-    if (!b.has_mass) {
+    if (!b.has_mass || b.mass.is_zero()) {
       ctx.diags.error(b.at, "body '" + b.name + "' has no mass (expected every body of an impact to have one)");
       usable = false;
     } else if (!before.count(static_cast<int>(i)) && !b.rate.is_zero()) {
