@@ -73,14 +73,14 @@ void narrate_impact(Derivation& d, const Model& m, const ImpactResult& r, const 
   n.text("While the impact lasts, the force between the bodies is far larger than gravity or any other finite force, "
          "which give no impulse: the total momentum is the same just before and just after it. The rates below are "
          "those just after; the rates just before are given.");
-  std::string before;
+  std::string rates_before;
   std::vector<ex> math;
   for (const auto& b : m.impact->before) {
-    before += std::string(before.empty() ? "" : ", ") + "{} = {}";
+    rates_before += std::string(rates_before.empty() ? "" : ", ") + "{} = {}";
     math.push_back(m.bodies[b.body].rate);
     math.push_back(b.rate);
   }
-  n.text_with("Just before: " + before + ".", math);
+  n.text_with("Just before: " + rates_before + ".", math);
   for (const auto& eq : r.equations) n.equation(eq.label, eq.lhs, eq.rhs);
   d.n_equations = r.equations.size();
   d.rank = r.equations.size();
