@@ -1,6 +1,8 @@
 #include "ruleset/ruleset.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <string_view>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -18,15 +20,77 @@ const ArgSpec* Rule::arg(const std::string& key) const {
   return nullptr;
 }
 
+RuleSet::RuleSet(const RuleSet& other) {
+  const std::lock_guard<std::mutex> lock(other.mutex_);
+  rules_ = other.rules_;
+  pending_ = other.pending_;
+}
+
+RuleSet& RuleSet::operator=(const RuleSet& other) {
+  if (this == &other) return *this;
+  std::scoped_lock lock(mutex_, other.mutex_);
+  rules_ = other.rules_;
+  pending_ = other.pending_;
+  return *this;
+}
+
+void RuleSet::add(Rule r) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  pending_.erase(r.type);
+  rules_[r.type] = std::move(r);
+}
+
+void RuleSet::add_pending(const std::string& type, std::string text, std::string file) {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  rules_.erase(type);
+  pending_[type] = {std::move(text), std::move(file)};
+}
+
+namespace {
+
+// A pending rule, read; its type must be the one its `type:` line gave.
+Rule read_pending(const std::string& type, const std::string& text, const std::string& file) {
+  Rule r = parse_rule(text, file);
+  if (r.type != type)
+    throw InputError({{r.at, "rule type '" + r.type + "' differs from its 'type: " + type + "' line (expected one 'type' key)"}});
+  return r;
+}
+
+}  // namespace
+
 const Rule* RuleSet::find(const std::string& type) const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  if (auto p = pending_.find(type); p != pending_.end()) {
+    Rule r = read_pending(type, p->second.text, p->second.file);  // throws the file's problems
+    pending_.erase(p);
+    rules_[type] = std::move(r);
+  }
   auto it = rules_.find(type);
   return it == rules_.end() ? nullptr : &it->second;
 }
 
 std::vector<std::string> RuleSet::names() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
   std::vector<std::string> n;
   for (const auto& [k, v] : rules_) n.push_back(k);
+  for (const auto& [k, v] : pending_) n.push_back(k);
+  std::sort(n.begin(), n.end());
   return n;
+}
+
+void RuleSet::read_all() const {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<Diagnostic> all;
+  for (auto p = pending_.begin(); p != pending_.end();) {
+    try {
+      rules_[p->first] = read_pending(p->first, p->second.text, p->second.file);
+      p = pending_.erase(p);
+    } catch (const InputError& e) {
+      all.insert(all.end(), e.diagnostics().begin(), e.diagnostics().end());
+      ++p;
+    }
+  }
+  if (!all.empty()) throw InputError(all);
 }
 
 std::string default_rules_dir() {
@@ -367,7 +431,36 @@ Rule parse_rule(const std::string& text, const std::string& file) {
   return r;
 }
 
-RuleSet load_rules(const std::string& dir) {
+namespace {
+
+// The type a rule file states on a top-level line of its own (`type: spring`, maybe with a
+// comment), or "" when it is not that plain (flow style, quotes, no such line): such a file
+// is read at once.
+std::string plain_type(const std::string& text) {
+  std::size_t at = 0;
+  while (at < text.size()) {
+    std::size_t end = text.find('\n', at);
+    if (end == std::string::npos) end = text.size();
+    std::string_view line(text.data() + at, end - at);
+    if (line.substr(0, 5) == "type:") {
+      std::size_t i = 5;
+      while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+      const std::size_t start = i;
+      while (i < line.size() && (std::isalnum(static_cast<unsigned char>(line[i])) || line[i] == '_')) ++i;
+      const std::string name(line.substr(start, i - start));
+      while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+      const bool rest_ok = i == line.size() || line[i] == '#';
+      if (name.empty() || !rest_ok || std::isdigit(static_cast<unsigned char>(name[0]))) return "";
+      return name;
+    }
+    at = end + 1;
+  }
+  return "";
+}
+
+}  // namespace
+
+RuleSet load_rules(const std::string& dir, RuleLoading how) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
@@ -383,8 +476,19 @@ RuleSet load_rules(const std::string& dir) {
     std::ifstream in(f);
     std::ostringstream ss;
     ss << in.rdbuf();
+    std::string text = ss.str();
+    const std::string type = how == RuleLoading::when_used ? plain_type(text) : "";
     try {
-      Rule r = parse_rule(ss.str(), f.string());
+      if (!type.empty()) {
+        if (auto it = defined_in.find(type); it != defined_in.end()) {
+          all.push_back({{f.string(), 1, 1}, "rule type '" + type + "' is defined twice (also in " + it->second + ")"});
+          continue;
+        }
+        defined_in[type] = f.string();
+        set.add_pending(type, std::move(text), f.string());
+        continue;
+      }
+      Rule r = parse_rule(text, f.string());
       if (auto it = defined_in.find(r.type); it != defined_in.end()) {
         all.push_back({r.at, "rule type '" + r.type + "' is defined twice (also in " + it->second + ")"});
         continue;

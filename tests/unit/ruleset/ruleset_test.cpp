@@ -1,5 +1,10 @@
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
 #include "core/diagnostics.hpp"
 #include "ruleset/ruleset.hpp"
 
@@ -65,6 +70,45 @@ TEST_CASE("Rules: an argument used as the wrong kind", "[rules]") {
     CHECK(format(e.diagnostics()[0]) ==
           "rules/weight.yaml:4:5: a load uses argument 'on' as body but the rule declares it as expr");
   }
+}
+
+TEST_CASE("Rules: every bundled rule reads without a problem", "[rules]") {
+  const RuleSet rules = load_rules(TACKLE_SOURCE_DIR "/rules", RuleLoading::all);
+  CHECK(rules.names().size() == 31);
+  CHECK_NOTHROW(load_rules(TACKLE_SOURCE_DIR "/rules").read_all());
+}
+
+TEST_CASE("Rules: a rule is read when first used; its problems come then, or all at once from read_all", "[rules]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("tackle-rules-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "good.yaml") << "type: good\nsummary: a force\nneeds: {on: body, force: expr}\nloads:\n  - {on: on, force: force}\n";
+  std::ofstream(dir / "broken.yaml") << "type: broken  # a comment\nsummry: oops\n";
+  std::ofstream(dir / "flow.yaml") << "{type: flow, summry: read at once}\n";
+  // The flow-style file has no plain type line: it is read at once, and its problem reported.
+  try {
+    (void)load_rules(dir.string());
+    FAIL("expected an InputError");
+  } catch (const InputError& e) {
+    REQUIRE(e.diagnostics().size() == 1);
+    CHECK(e.diagnostics()[0].message == "unknown key 'summry' in the rule (did you mean 'summary'?)");
+  }
+  fs::remove(dir / "flow.yaml");
+  const RuleSet rules = load_rules(dir.string());
+  CHECK(rules.names() == std::vector<std::string>{"broken", "good"});
+  REQUIRE(rules.find("good"));
+  CHECK(rules.find("good")->loads.size() == 1);
+  CHECK(rules.find("nothing") == nullptr);
+  try {
+    (void)rules.find("broken");
+    FAIL("expected an InputError");
+  } catch (const InputError& e) {
+    REQUIRE(e.diagnostics().size() == 1);
+    CHECK(format(e.diagnostics()[0]) == (dir / "broken.yaml").string() + ":2:1: unknown key 'summry' in the rule (did you mean 'summary'?)");
+  }
+  CHECK_THROWS_AS(rules.read_all(), InputError);
+  CHECK_THROWS_AS(load_rules(dir.string(), RuleLoading::all), InputError);
+  fs::remove_all(dir);
 }
 
 TEST_CASE("Rules: a missing rules directory is an input error", "[rules]") {
