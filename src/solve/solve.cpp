@@ -3,6 +3,7 @@
 #include "expr/trig.hpp"
 
 #include <algorithm>
+#include <unordered_map>
 #include <set>
 #include <map>
 #include <random>
@@ -158,10 +159,20 @@ std::vector<ex> canonical_factors(const ex& polynomial) {
 
 namespace {
 
-// The product of the canonical factors (see canonical_factors).
+// The product of the canonical factors (see canonical_factors), remembered: one run factors
+// the same numerators and denominators many times (a motion's quantities share m + M). The
+// memory is per thread and forgets everything past 4096 polynomials; an equal polynomial
+// always gives an equal product, so what is remembered changes no output.
 ex factored(const ex& polynomial) {
+  struct Hash {
+    std::size_t operator()(const ex& e) const { return e.gethash(); }
+  };
+  thread_local std::unordered_map<ex, ex, Hash, ex_is_equal> memory;
+  if (auto it = memory.find(polynomial); it != memory.end()) return it->second;
   ex out = 1;
   for (const ex& x : canonical_factors(polynomial)) out *= x;
+  if (memory.size() >= 4096) memory.clear();
+  memory.emplace(polynomial, out);
   return out;
 }
 
