@@ -42,6 +42,7 @@ std::string default_tex(std::string_view name) {
 
 const SymbolInfo& SymbolTable::add(const std::string& name, std::optional<std::string> tex, SymbolRole role,
                                    std::optional<Dimension> dimension, bool positive, Location where) {
+  changed();
   if (by_name_.count(name)) throw InternalError("symbol '" + name + "' made twice");
   auto info = std::make_unique<SymbolInfo>();
   info->name = name;
@@ -71,6 +72,7 @@ const SymbolInfo* SymbolTable::find(const GiNaC::ex& sym) const {
 }
 
 void SymbolTable::set_unit(const std::string& name, std::string unit, GiNaC::ex to_si) {
+  changed();
   auto it = by_name_.find(name);
   if (it == by_name_.end()) throw InternalError("no symbol '" + name + "'");
   items_[it->second]->unit = std::move(unit);
@@ -78,6 +80,7 @@ void SymbolTable::set_unit(const std::string& name, std::string unit, GiNaC::ex 
 }
 
 void SymbolTable::set_value(const std::string& name, GiNaC::ex value) {
+  changed();
   auto it = by_name_.find(name);
   if (it == by_name_.end()) throw InternalError("no symbol '" + name + "'");
   items_[it->second]->value = value;
@@ -105,6 +108,7 @@ std::optional<Dimension> SymbolTable::dimension_of(const GiNaC::symbol& s) const
 
 void SymbolTable::set_range(const std::string& name, GiNaC::numeric low, GiNaC::numeric high,
                             std::optional<GiNaC::numeric> step) {
+  changed();
   auto it = by_name_.find(name);
   if (it == by_name_.end()) throw InternalError("no symbol '" + name + "'");
   items_[it->second]->range = std::make_pair(low, high);
@@ -119,6 +123,7 @@ GiNaC::exmap SymbolTable::definitions(bool geometric) const {
 }
 
 void SymbolTable::set_definition(const std::string& name, GiNaC::ex definition, bool geometric) {
+  changed();
   auto it = by_name_.find(name);
   if (it == by_name_.end()) throw InternalError("no symbol '" + name + "'");
   items_[it->second]->definition = std::move(definition);
@@ -132,6 +137,8 @@ bool SymbolTable::hidden_in_lengths(const GiNaC::ex& e, const GiNaC::ex& s) cons
 }
 
 GiNaC::exmap SymbolTable::values() const {
+  const std::lock_guard<std::mutex> lock(values_mutex_);
+  if (values_) return *values_;
   // Defined parameters get their exact expression in the values before them (sqrt(61)/2,
   // not a float whose last digits would depend on the order of operations).
   GiNaC::exmap m;
@@ -149,6 +156,7 @@ GiNaC::exmap SymbolTable::values() const {
       if (complete) m[s->sym] = v;
     }
   }
+  values_ = m;
   return m;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <mutex>
 #include <memory>
 #include <optional>
 #include <string>
@@ -81,6 +82,11 @@ class SymbolTable : public NameResolver, public DimensionLookup {
   std::vector<std::unique_ptr<SymbolInfo>> items_;
   std::map<std::string, std::size_t, std::less<>> by_name_;
   std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> by_symbol_;
+  // values(), made once after the last change (every change forgets it); a run asks for it
+  // some thirty times.
+  mutable std::optional<GiNaC::exmap> values_;
+  mutable std::mutex values_mutex_;
+  void changed() { values_.reset(); }
 };
 
 }  // namespace tackle
