@@ -41,10 +41,11 @@ std::string result_text(const CheckResult& r) {
   return out;
 }
 
-BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream& out) {
+BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream& out, const GradeOptions& options) {
+  using J = nlohmann::ordered_json;
   BatchSummary s;
-  nlohmann::ordered_json tests = nlohmann::ordered_json::array();
-  double total = 0;
+  J tests = J::array(), jsonl = J::array();
+  std::vector<std::string> format_errors;
   std::string line;
   while (std::getline(in, line)) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
@@ -59,11 +60,11 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
       try {
         const auto j = nlohmann::json::parse(line);
         if (!j.is_object()) throw std::runtime_error("not an object");
-        if (j.contains("id")) id = j["id"].is_string() ? j["id"].get<std::string>() : j["id"].dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+        if (j.contains("id")) id = j["id"].is_string() ? j["id"].get<std::string>() : j["id"].dump(-1, ' ', false, J::error_handler_t::replace);
         if (!j.contains("unknown") || !j["unknown"].is_string()) problem = "no \"unknown\" (a string)";
         else unknown = j["unknown"].get<std::string>();
         if (!j.contains("answer")) problem = "no \"answer\"";
-        else answer = j["answer"].is_string() ? j["answer"].get<std::string>() : j["answer"].dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+        else answer = j["answer"].is_string() ? j["answer"].get<std::string>() : j["answer"].dump(-1, ' ', false, J::error_handler_t::replace);
       } catch (const std::exception&) {
         problem = "not a JSON object with id, unknown and answer";
       }
@@ -77,23 +78,51 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
       r = checker.check(unknown, answer);
     }
     if (r.verdict == Verdict::correct) ++s.correct;
-    total += r.score;
-    out << to_json(r, answer, id).dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
-    tests.push_back({{"name", id + (unknown.empty() ? "" : ": " + unknown)},
-                     {"score", r.score},
-                     {"max_score", 1},
-                     {"points", r.score},
-                     {"max_points", 1},
-                     {"status", r.verdict == Verdict::correct ? "passed" : "failed"},
-                     {"output", verdict_name(r.verdict) + ": " + r.summary},
-                     {"message", verdict_name(r.verdict) + ": " + r.summary}});
+    const std::string name = id + (unknown.empty() ? "" : ": " + unknown);
+    const std::string feedback = verdict_name(r.verdict) + ": " + r.summary;
+    if (r.verdict == Verdict::invalid) {
+      ++s.invalid;
+      format_errors.push_back(name + ": " + r.summary);
+    }
+    const auto own = options.points_for.find(unknown);
+    const double max_points = own != options.points_for.end() ? own->second : options.points;
+    const double points = r.score * max_points;
+    s.points += points;
+    s.max_points += max_points;
+    const J result = to_json(r, answer, id);
+    out << result.dump(-1, ' ', false, J::error_handler_t::replace) << "\n";
+    if (options.format == ResultsFormat::jsonl) jsonl.push_back(result);
+    if (options.format == ResultsFormat::gradescope)
+      tests.push_back({{"name", name}, {"score", points}, {"max_score", max_points},
+                       {"status", r.verdict == Verdict::correct ? "passed" : "failed"}, {"output", feedback}, {"visibility", "visible"}});
+    if (options.format == ResultsFormat::prairielearn)
+      tests.push_back({{"name", name}, {"points", points}, {"max_points", max_points}, {"message", feedback}});
   }
-  nlohmann::ordered_json grader;
-  grader["gradable"] = true;
-  grader["score"] = s.lines ? total / static_cast<double>(s.lines) : 0.0;
-  grader["output"] = std::to_string(s.correct) + " of " + std::to_string(s.lines) + " answers correct";
-  grader["tests"] = tests;
-  s.grader_json = grader.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+  const std::string said = std::to_string(s.correct) + " of " + std::to_string(s.lines) + " answers correct";
+  J results;
+  switch (options.format) {
+    case ResultsFormat::gradescope: {
+      if (options.top_level_score) results["score"] = s.points;
+      results["output"] = said;
+      results["tests"] = tests;
+      break;
+    }
+    case ResultsFormat::prairielearn: {
+      // An answer that cannot be graded as typed: not gradable, so no attempt is charged.
+      results["gradable"] = s.invalid == 0;
+      if (s.invalid == 0) results["score"] = s.max_points > 0 ? s.points / s.max_points : 0.0;
+      else results["format_errors"] = format_errors;
+      results["message"] = s.invalid == 0 ? said : std::to_string(s.invalid) + " of " + std::to_string(s.lines) +
+                                                       " answers cannot be graded as typed: fix them and submit again";
+      results["tests"] = tests;
+      break;
+    }
+    case ResultsFormat::jsonl: {
+      for (const auto& x : jsonl) s.results += x.dump(-1, ' ', false, J::error_handler_t::replace) + "\n";
+      return s;
+    }
+  }
+  s.results = results.dump(2, ' ', false, J::error_handler_t::replace) + "\n";
   return s;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <istream>
+#include <map>
 #include <ostream>
 #include <string>
 
@@ -10,16 +11,36 @@
 
 namespace tackle {
 
+/// The results file for a grading platform, each as the platform documents it:
+/// - gradescope: Gradescope's results.json, one test per line (`name`, `score`, `max_score`,
+///   `status`, `output`, `visibility`) and the `output` summary; no top-level `score` (it
+///   would override the tests' sum) unless `top_level_score`.
+/// - prairielearn: PrairieLearn's external grader results.json: `gradable`, `score` (0-1),
+///   `message`, `tests` (`name`, `points`, `max_points`, `message`); a submission with an answer
+///   that cannot be graded as typed is `gradable: false` with `format_errors` (no attempt is
+///   charged) and no score.
+/// - jsonl: the per-line results again.
+enum class ResultsFormat { gradescope, prairielearn, jsonl };
+
+struct GradeOptions {
+  ResultsFormat format = ResultsFormat::gradescope;
+  double points = 1;                          // each line's points, unless its unknown has its own
+  std::map<std::string, double> points_for;   // by unknown
+  bool top_level_score = false;               // gradescope: also a top-level score (the sum)
+};
+
 struct BatchSummary {
   std::size_t lines = 0;
   std::size_t correct = 0;
-  std::string grader_json;  // {"gradable", "score" (0-1), "tests": [...]}
+  std::size_t invalid = 0;
+  double points = 0, max_points = 0;
+  std::string results;  // the results file in the asked format
 };
 
 /// Checks every line of `in`, writes one JSON result per line to `out`. A line that is not a
 /// JSON object with those fields gets an `invalid` result that says why; nothing stops the
 /// batch.
-BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream& out);
+BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream& out, const GradeOptions& options = {});
 
 /// One result as a JSON object (the single-answer `--format json` output).
 [[nodiscard]] std::string result_json(const CheckResult& r, const std::string& answer, const std::string& id = {});

@@ -437,7 +437,7 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
   if (ok) {
     r.verdict = Verdict::correct;
     r.score = 1.0;
-    r.summary = "correct " + how + " (the answer is " + decimal_string(expect, 6) + (unit.empty() ? "" : " " + unit) + ")";
+    r.summary = "correct " + how + (options_.reveal ? " (the answer is " + decimal_string(expect, 6) + (unit.empty() ? "" : " " + unit) + ")" : "");
     return r;
   }
   r.verdict = Verdict::incorrect;
@@ -462,8 +462,10 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
           break;
         }
   }
-  r.findings.push_back({"tolerance", "expected " + decimal_string(expect, 6) + (unit.empty() ? "" : " " + unit) + " " + how +
-                                         "; got " + decimal_string(value, 6) + (unit.empty() ? "" : " " + unit)});
+  const std::string got_text = decimal_string(value, 6) + (unit.empty() ? "" : " " + unit);
+  r.findings.push_back({"tolerance", options_.reveal ? "expected " + decimal_string(expect, 6) + (unit.empty() ? "" : " " + unit) + " " +
+                                                           how + "; got " + got_text
+                                                     : "not " + how + " of the correct value (got " + got_text + ")"});
   r.summary = r.findings.front().message;
   return r;
 }

@@ -33,6 +33,9 @@ struct CheckOptions {
   int points = 4;                              // random points for the numeric comparison
   int digits = 40;                             // precision of the numeric comparison (CLN)
   bool echo_latex = true;                      // echo the answer as read in LaTeX too
+  // Feedback names the correct value ("expected 35.316 N within 1 %") only when asked: a
+  // grader's results go to students, who would see the answer after one try.
+  bool reveal = false;
 };
 
 enum class Verdict { correct, incorrect, invalid, undecided };

@@ -144,8 +144,22 @@ int main(int argc, char** argv) {
   auto* unknown_opt = check->add_option("--unknown", unknown, "The unknown the answer is for, e.g. T_HI");
   auto* answer_opt = check->add_option("--answer", answer, "The answer: an expression, 'T = ...', or a number with a unit");
   auto* batch_opt = check->add_option("--batch", batch, "JSON Lines file of {\"id\", \"unknown\", \"answer\"} (- for standard input)");
-  check->add_option("--results", results, "With --batch: also write a grader results file (Gradescope / PrairieLearn shape)")
+  auto* results_opt = check->add_option("--results", results, "With --batch: also write a grading platform's results file")
       ->needs(batch_opt);
+  std::string results_format = "gradescope";
+  check->add_option("--results-format", results_format, "The results file's platform")
+      ->check(CLI::IsMember({"gradescope", "prairielearn", "jsonl"}))
+      ->capture_default_str()
+      ->needs(results_opt);
+  std::vector<std::string> points_text;
+  check->add_option("--points", points_text, "Points for each answer (N), or for one unknown's answers (NAME=N); repeatable")
+      ->needs(batch_opt);
+  bool top_level_score = false;
+  check->add_flag("--top-level-score", top_level_score, "Gradescope: also write the total as the top-level score "
+                                                         "(it overrides the tests' sum)")
+      ->needs(results_opt);
+  bool reveal = false;
+  check->add_flag("--reveal", reveal, "Name the correct value in the feedback (never, without it)");
   check->add_option("--tolerance", tolerance, "Relative tolerance for numbers with units")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
@@ -291,8 +305,26 @@ int main(int argc, char** argv) {
       if (sig_figs > 0) options.significant_figures = sig_figs;
       options.require_simplified = require_simplified;
       options.echo_latex = !no_latex;
+      options.reveal = reveal;
       const tackle::Checker checker(*analysis, options);
       if (batch_opt->count() > 0) {
+        tackle::GradeOptions grade;
+        grade.format = results_format == "prairielearn" ? tackle::ResultsFormat::prairielearn
+                       : results_format == "jsonl"      ? tackle::ResultsFormat::jsonl
+                                                        : tackle::ResultsFormat::gradescope;
+        grade.top_level_score = top_level_score;
+        for (const auto& p : points_text) {
+          const auto eq = p.find('=');
+          const std::string number = eq == std::string::npos ? p : p.substr(eq + 1);
+          char* end = nullptr;
+          const double v = std::strtod(number.c_str(), &end);
+          if (number.empty() || *end != '\0' || !(v >= 0) || v > 1e6) {
+            std::cerr << "tackle check: --points " << p << ": expected a number of points from 0 to 10^6, or NAME=N\n";
+            return 2;
+          }
+          if (eq == std::string::npos) grade.points = v;
+          else grade.points_for[p.substr(0, eq)] = v;
+        }
         std::istringstream batch_text;
         if (batch != "-") batch_text.str(tackle::read_text_file(batch));
         // Both outputs go through temporary files and are renamed into place only when the
@@ -307,8 +339,8 @@ int main(int argc, char** argv) {
           }
         }
         std::ostream& sink = out_file ? out_file->stream() : std::cout;
-        const auto summary = tackle::check_batch(checker, batch == "-" ? std::cin : batch_text, sink);
-        if (results_file) results_file->stream() << summary.grader_json;
+        const auto summary = tackle::check_batch(checker, batch == "-" ? std::cin : batch_text, sink, grade);
+        if (results_file) results_file->stream() << summary.results;
         for (auto* file : {&out_file, &results_file})
           if (*file && !(*file)->commit()) {
             std::cerr << (*file)->error() << "\n";

@@ -241,7 +241,18 @@ TEST_CASE("CLI: check a batch into JSON Lines and a grader results file", "[cli]
   CHECK(nlohmann::json::parse(first)["verdict"] == "correct");
   CHECK(nlohmann::json::parse(second)["verdict"] == "invalid");
   const auto grader = nlohmann::json::parse(slurp(dir / "results.json"));
-  CHECK(grader["score"] == Approx(0.5));
+  CHECK_FALSE(grader.contains("score"));  // Gradescope: the tests' scores add up
+  CHECK(grader["tests"][0]["score"] == 1);
+  CHECK(grader["tests"][1]["score"] == 0);
+  // PrairieLearn: the unreadable second answer makes the submission not gradable.
+  const Run pl = run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + (dir / "subs.jsonl").string() +
+                            " --results " + (dir / "pl.json").string() + " --results-format prairielearn --points T_HI=3");
+  CHECK(pl.code == 0);
+  const auto prairie = nlohmann::json::parse(slurp(dir / "pl.json"));
+  CHECK(prairie["gradable"] == false);
+  CHECK(prairie["tests"][0]["points"] == 3);
+  CHECK(run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + (dir / "subs.jsonl").string() +
+                   " --points lots").code == 2);
   CHECK(run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch /no/such.jsonl").code == 1);
   fs::remove_all(dir);
 }

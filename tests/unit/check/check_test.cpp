@@ -1,6 +1,8 @@
 // Checking answers: verdicts and the feedback a student sees, word for word.
 #include <catch2/catch.hpp>
 
+#include <fstream>
+
 #include <chrono>
 #include <sstream>
 
@@ -177,12 +179,106 @@ TEST_CASE("Check: a batch grades every line and writes the grader shape", "[chec
   CHECK(lines[2]["summary"] == "line 3: not a JSON object with id, unknown and answer");
   CHECK(lines[3]["id"] == "3");
   CHECK(lines[3]["verdict"] == "invalid");  // a bare number for a force: no unit
-  const auto grader = nlohmann::json::parse(s.grader_json);
-  CHECK(grader["gradable"] == true);
-  CHECK(grader["score"] == Approx(0.25));
+  // Gradescope by default: the tests' scores, and no top-level score (it would override them).
+  const auto grader = nlohmann::json::parse(s.results);
+  CHECK_FALSE(grader.contains("score"));
+  CHECK(grader["output"] == "1 of 4 answers correct");
   CHECK(grader["tests"].size() == 4);
+  CHECK(grader["tests"][0]["score"] == 1);
   CHECK(grader["tests"][0]["max_score"] == 1);
+  CHECK(grader["tests"][0]["status"] == "passed");
+  CHECK(grader["tests"][1]["score"] == 0);
   CHECK(grader["tests"][1]["output"] == "incorrect: off by a factor of 2 (the answer is twice the correct answer)");
+}
+
+namespace {
+
+// Every field of `ours` is a field of the platform's documented example `doc`, with the same
+// JSON type (numbers of either kind alike); the objects in arrays against the example's first.
+void same_shape(const nlohmann::json& ours, const nlohmann::json& doc, const std::string& path) {
+  auto kind = [](const nlohmann::json& j) { return j.is_number() ? std::string("number") : std::string(j.type_name()); };
+  INFO(path);
+  REQUIRE(kind(ours) == kind(doc));
+  if (ours.is_object())
+    for (auto it = ours.begin(); it != ours.end(); ++it) {
+      INFO("field " << path << "/" << it.key());
+      REQUIRE(doc.contains(it.key()));
+      same_shape(it.value(), doc[it.key()], path + "/" + it.key());
+    }
+  if (ours.is_array() && !doc.empty())
+    for (const auto& x : ours) same_shape(x, doc[0], path + "[]");
+}
+
+nlohmann::json fixture(const std::string& name) {
+  std::ifstream in(TACKLE_SOURCE_DIR "/tests/data/platforms/" + name);
+  return nlohmann::json::parse(in);
+}
+
+BatchSummary grade(const std::string& lines, const GradeOptions& options, const Checker& c = board()) {
+  std::istringstream in(lines);
+  std::ostringstream out;
+  return check_batch(c, in, out, options);
+}
+
+}  // namespace
+
+TEST_CASE("Grading: Gradescope's results.json, points per unknown, no top-level score unless asked", "[check][batch][platform]") {
+  GradeOptions options;
+  options.points = 2;
+  options.points_for["T_HI"] = 5;
+  const std::string lines =
+      "{\"id\": \"a\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/(2*d)\"}\n"
+      "{\"id\": \"b\", \"unknown\": \"T_HI\", \"answer\": \"30 N\"}\n"
+      "{\"id\": \"c\", \"unknown\": \"l\", \"answer\": \"m\"}\n";
+  const BatchSummary s = grade(lines, options);
+  CHECK(s.points == 5);
+  CHECK(s.max_points == 12);
+  const auto j = nlohmann::json::parse(s.results);
+  same_shape(j, fixture("gradescope-results.json"), "");
+  CHECK_FALSE(j.contains("score"));
+  CHECK(j["tests"][0]["score"] == 5);
+  CHECK(j["tests"][0]["max_score"] == 5);
+  CHECK(j["tests"][1]["score"] == 0);
+  CHECK(j["tests"][2]["max_score"] == 2);
+  options.top_level_score = true;
+  const auto with_total = nlohmann::json::parse(grade(lines, options).results);
+  CHECK(with_total["score"] == 5);
+}
+
+TEST_CASE("Grading: feedback never names the correct value unless asked", "[check][batch][platform]") {
+  // T_HI = 6.78233 N (sample 12.8).
+  const CheckResult wrong = board().check("T_HI", "30 N");
+  CHECK(wrong.summary == "not within 1 % of the correct value (got 30 N)");
+  CHECK(board().check("T_HI", "6.8 N").summary == "correct within 1 %");
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.8-sign-board.yaml", test::rules());
+  CheckOptions reveal;
+  reveal.reveal = true;
+  const Checker told(*a, reveal);
+  CHECK(told.check("T_HI", "30 N").summary == "expected 6.78233 N within 1 %; got 30 N");
+  CHECK(told.check("T_HI", "6.8 N").summary == "correct within 1 % (the answer is 6.78233 N)");
+  const BatchSummary s = grade("{\"id\": \"b\", \"unknown\": \"T_HI\", \"answer\": \"30 N\"}\n", {});
+  CHECK(s.results.find("6.78") == std::string::npos);
+}
+
+TEST_CASE("Grading: PrairieLearn's results.json; an answer that cannot be graded charges no attempt", "[check][batch][platform]") {
+  GradeOptions options;
+  options.format = ResultsFormat::prairielearn;
+  const std::string good =
+      "{\"id\": \"a\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/(2*d)\"}\n"
+      "{\"id\": \"b\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/d\"}\n";
+  const auto graded = nlohmann::json::parse(grade(good, options).results);
+  same_shape(graded, fixture("prairielearn-results.json"), "");
+  CHECK(graded["gradable"] == true);
+  CHECK(graded["score"] == Approx(0.5));
+  CHECK(graded["tests"][1]["points"] == 0);
+  CHECK(graded["tests"][1]["max_points"] == 1);
+  const auto bad = nlohmann::json::parse(grade(good + "{\"id\": \"c\", \"unknown\": \"T_HI\", \"answer\": \"m*a*\"}\n", options).results);
+  same_shape(bad, fixture("prairielearn-results.json"), "");
+  CHECK(bad["gradable"] == false);
+  CHECK_FALSE(bad.contains("score"));
+  REQUIRE(bad["format_errors"].size() == 1);
+  CHECK(bad["format_errors"][0].get<std::string>().rfind("c: T_HI: ", 0) == 0);
+  CHECK(bad["message"] == "1 of 3 answers cannot be graded as typed: fix them and submit again");
 }
 
 TEST_CASE("Check: a kinematic answer may use a given acceleration without its coordinate", "[check]") {
