@@ -51,6 +51,7 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     ++s.lines;
     std::string id = "line " + std::to_string(s.lines), unknown, answer;
+    std::vector<std::pair<std::string, std::string>> params = options.set;
     CheckResult r;
     std::string problem;
     // Bounded before parsing: a submission line is at most a few answers long.
@@ -65,9 +66,24 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
         else unknown = j["unknown"].get<std::string>();
         if (!j.contains("answer")) problem = "no \"answer\"";
         else answer = j["answer"].is_string() ? j["answer"].get<std::string>() : j["answer"].dump(-1, ' ', false, J::error_handler_t::replace);
+        if (j.contains("params")) {
+          if (!j["params"].is_object()) {
+            problem = "\"params\" is not an object of parameter values";
+          } else {
+            for (auto it = j["params"].begin(); it != j["params"].end(); ++it)
+              params.emplace_back(it.key(), it.value().is_string() ? it.value().get<std::string>()
+                                                                    : it.value().dump(-1, ' ', false, J::error_handler_t::replace));
+          }
+        }
       } catch (const std::exception&) {
         problem = "not a JSON object with id, unknown and answer";
       }
+    }
+    std::optional<GiNaC::exmap> values;
+    if (problem.empty() && !params.empty()) {
+      std::string why;
+      values = checker.values_for(params, why);
+      if (!values) problem = "params: " + why;
     }
     if (!problem.empty()) {
       r.unknown = unknown;
@@ -75,7 +91,7 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
       r.summary = "line " + std::to_string(s.lines) + ": " + problem;
       r.findings.push_back({"not_an_answer", r.summary});
     } else {
-      r = checker.check(unknown, answer);
+      r = checker.check(unknown, answer, values ? &*values : nullptr);
     }
     if (r.verdict == Verdict::correct) ++s.correct;
     const std::string name = id + (unknown.empty() ? "" : ": " + unknown);

@@ -27,6 +27,9 @@ struct GradeOptions {
   double points = 1;                          // each line's points, unless its unknown has its own
   std::map<std::string, double> points_for;   // by unknown
   bool top_level_score = false;               // gradescope: also a top-level score (the sum)
+  // Values for every line (`--set F=120`), in each parameter's stated unit; a line's own
+  // `params` object adds to them.
+  std::vector<std::pair<std::string, std::string>> set;
 };
 
 struct BatchSummary {
@@ -37,9 +40,10 @@ struct BatchSummary {
   std::string results;  // the results file in the asked format
 };
 
-/// Checks every line of `in`, writes one JSON result per line to `out`. A line that is not a
-/// JSON object with those fields gets an `invalid` result that says why; nothing stops the
-/// batch.
+/// Checks every line of `in`, writes one JSON result per line to `out`. A line is an object
+/// with `id`, `unknown`, `answer` and optionally `params` (`{"F": 120}`: the student's own
+/// numbers, in the parameters' stated units). A line that is not such an object gets an
+/// `invalid` result that says why; nothing stops the batch.
 BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream& out, const GradeOptions& options = {});
 
 /// One result as a JSON object (the single-answer `--format json` output).

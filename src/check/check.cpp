@@ -317,7 +317,34 @@ std::string Checker::describe(const ex& parameter) const {
   return "for " + name + " = 0";
 }
 
-CheckResult Checker::check(const std::string& unknown, std::string_view answer) const {
+std::optional<exmap> Checker::values_for(const std::vector<std::pair<std::string, std::string>>& set, std::string& problem) const {
+  exmap values = symbols_->values();
+  for (const auto& [name, text] : set) {
+    const SymbolInfo* s = symbols_->find(name);
+    if (!s || s->role != SymbolRole::parameter || s->definition || !s->value) {
+      std::vector<std::string> settable;
+      for (const auto& x : symbols_->all())
+        if (x->role == SymbolRole::parameter && !x->definition && x->value) settable.push_back(x->name);
+      problem = "'" + name + "' is not a parameter with a value (expected one of: " + join(settable) + ")";
+      return std::nullopt;
+    }
+    const auto parsed = parse_expression(text, numbers_only(), answer_limits());
+    const ex v = parsed.value ? evalf(*parsed.value) : ex(0);
+    if (!parsed.value || !is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) {
+      problem = "the value of '" + name + "' is '" + text + "' (expected a number in " + (s->unit.empty() ? "SI" : s->unit) + ")";
+      return std::nullopt;
+    }
+    values[s->sym] = (is_a<numeric>(*parsed.value) ? *parsed.value : v) * s->unit_to_si;
+  }
+  for (const auto& s : symbols_->all())
+    if (s->definition && !s->geometric) {
+      if (auto v = tackle::value_at(*s->definition, values)) values[s->sym] = *v;
+      else values.erase(s->sym);
+    }
+  return values;
+}
+
+CheckResult Checker::check(const std::string& unknown, std::string_view answer, const exmap* values) const {
   const auto start = std::chrono::steady_clock::now();
   CheckResult r;
   r.unknown = unknown;
@@ -370,7 +397,7 @@ CheckResult Checker::check(const std::string& unknown, std::string_view answer) 
     if (!parse_unit(split->second, err, col) && answer_names_.count(first_word)) split.reset();
   }
   if (split) {
-    CheckResult n = check_number(ref, split->first, split->second, r);
+    CheckResult n = check_number(ref, split->first, split->second, r, values);
     if (n.verdict != Verdict::correct && answer_names_.count(split->second))
       n.findings.push_back({"syntax", "if you meant " + split->first + "*" + split->second + ", write the * (" + text +
                                           " is read as a number with a unit)"});
@@ -380,7 +407,7 @@ CheckResult Checker::check(const std::string& unknown, std::string_view answer) 
 }
 
 CheckResult Checker::check_number(const Reference& ref, std::string_view number, std::string_view unit_text,
-                                  CheckResult r) const {
+                                  CheckResult r, const exmap* values) const {
   r.method = "number";
   auto finish = [&](Verdict v, std::string code, std::string message) {
     r.verdict = v;
@@ -413,10 +440,18 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
   }
   r.echo_text = std::string(number) + (unit_text.empty() ? "" : " " + std::string(unit_text));
   r.echo_latex = std::string(number) + (unit_text.empty() ? "" : "\\," + unit_latex(unit_text));
-  if (!ref.value)
+  // The student's own numbers, when given: the closed form evaluated there (exactly, then
+  // to the comparison's precision).
+  std::optional<numeric> at_values = ref.value;
+  if (values) {
+    at_values.reset();
+    if (auto v = tackle::value_at(ref.closed_form.subs(lengths_).subs(lengths_), *values))
+      if (const ex f = evalf(*v); is_a<numeric>(f) && ex_to<numeric>(f).is_real()) at_values = ex_to<numeric>(f);
+  }
+  if (!at_values)
     return finish(Verdict::invalid, "not_an_answer",
                   "this problem gives no numbers for every parameter: answer with a closed form in its symbols");
-  const numeric expect = *ref.value;
+  const numeric expect = *at_values;
   const double got = value.to_double(), want = expect.to_double();
   bool ok;
   std::string how;

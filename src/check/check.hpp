@@ -66,7 +66,15 @@ class Checker {
   Checker(const Analysis& analysis, CheckOptions options = {});
 
   /// Checks `answer` for the unknown `unknown` (a name such as `T_HI` or `ddot(x_A)`).
-  [[nodiscard]] CheckResult check(const std::string& unknown, std::string_view answer) const;
+  /// `values`: the student's own numbers (a variant), from values_for(); a number answered
+  /// is compared with the closed form there.
+  [[nodiscard]] CheckResult check(const std::string& unknown, std::string_view answer,
+                                  const GiNaC::exmap* values = nullptr) const;
+  /// The parameters' values (SI) with `set` (name -> number in the parameter's stated unit)
+  /// put in, the defined parameters following; nothing, and `problem` says why, for a name
+  /// that is not a parameter with a value or a text that is not a number.
+  [[nodiscard]] std::optional<GiNaC::exmap> values_for(const std::vector<std::pair<std::string, std::string>>& set,
+                                                       std::string& problem) const;
   /// The names that can be checked (determined unknowns and defined quantities).
   [[nodiscard]] std::vector<std::string> unknowns() const;
   [[nodiscard]] const CheckOptions& options() const { return options_; }
@@ -87,7 +95,7 @@ class Checker {
   };
 
   CheckResult check_number(const Reference& ref, std::string_view number, std::string_view unit_text,
-                           CheckResult r) const;
+                           CheckResult r, const GiNaC::exmap* values) const;
   CheckResult check_expression(const Reference& ref, std::string_view text, CheckResult r,
                                std::chrono::steady_clock::time_point start) const;
   void diagnose(const Reference& ref, const GiNaC::ex& answer, const std::vector<GiNaC::numeric>& values,

@@ -158,6 +158,9 @@ int main(int argc, char** argv) {
   check->add_flag("--top-level-score", top_level_score, "Gradescope: also write the total as the top-level score "
                                                          "(it overrides the tests' sum)")
       ->needs(results_opt);
+  std::vector<std::string> set_values;
+  check->add_option("--set", set_values, "A parameter's value for this check, in its stated unit (NAME=VALUE, repeatable): "
+                                         "a student's own variant");
   bool reveal = false;
   check->add_flag("--reveal", reveal, "Name the correct value in the feedback (never, without it)");
   check->add_option("--tolerance", tolerance, "Relative tolerance for numbers with units")
@@ -307,12 +310,31 @@ int main(int argc, char** argv) {
       options.echo_latex = !no_latex;
       options.reveal = reveal;
       const tackle::Checker checker(*analysis, options);
+      std::vector<std::pair<std::string, std::string>> set;
+      for (const auto& v : set_values) {
+        const auto eq = v.find('=');
+        if (eq == std::string::npos || eq == 0) {
+          std::cerr << "tackle check: --set " << v << ": expected NAME=VALUE\n";
+          return 2;
+        }
+        set.emplace_back(v.substr(0, eq), v.substr(eq + 1));
+      }
+      std::optional<GiNaC::exmap> values;
+      if (!set.empty()) {
+        std::string problem;
+        values = checker.values_for(set, problem);
+        if (!values) {
+          std::cerr << "tackle check: --set: " << problem << "\n";
+          return 2;
+        }
+      }
       if (batch_opt->count() > 0) {
         tackle::GradeOptions grade;
         grade.format = results_format == "prairielearn" ? tackle::ResultsFormat::prairielearn
                        : results_format == "jsonl"      ? tackle::ResultsFormat::jsonl
                                                         : tackle::ResultsFormat::gradescope;
         grade.top_level_score = top_level_score;
+        grade.set = set;
         for (const auto& p : points_text) {
           const auto eq = p.find('=');
           const std::string number = eq == std::string::npos ? p : p.substr(eq + 1);
@@ -348,7 +370,7 @@ int main(int argc, char** argv) {
           }
         return 0;
       }
-      const auto result = checker.check(unknown, answer);
+      const auto result = checker.check(unknown, answer, values ? &*values : nullptr);
       return emit(format == "json" ? tackle::result_json(result, answer) : tackle::result_text(result), out);
     }
     const tackle::Derivation d = tackle::explain(*analysis, tackle::ReportOptions{digits});

@@ -288,3 +288,36 @@ TEST_CASE("Check: a kinematic answer may use a given acceleration without its co
   CHECK(k.check("ddot(y_A)", "ddot(y_A)").summary ==
         "at column 1: ddot(y_A) is an unknown of this problem; write the answer in the given quantities (d, dot(y_B), ddot(y_B))");
 }
+
+TEST_CASE("Grading: each student's own numbers, from --set or a line's params", "[check][batch][variants]") {
+  // Sample 12.3: T = 2 F m_B/(9 m_A + 4 m_B); by hand with F = 120 N, m_A = m_B = 40 kg:
+  // 9600/520 = 18.4615 N; with m_A = 20 kg as well, 9600/340 = 28.2353 N.
+  const Checker& c = checker("sample-12.3-two-mass-pulley.yaml");
+  std::string problem;
+  const auto values = c.values_for({{"F", "120"}}, problem);
+  REQUIRE(values);
+  CHECK(c.check("T", "18.46 N", &*values).verdict == Verdict::correct);
+  CHECK(c.check("T", "20 N", &*values).verdict == Verdict::incorrect);
+  CHECK(c.check("T", "20 N").verdict == Verdict::correct);  // the description's own F = 130 N
+  const auto both = c.values_for({{"F", "120"}, {"m_A", "20"}}, problem);
+  REQUIRE(both);
+  CHECK(c.check("T", "28.24 N", &*both).verdict == Verdict::correct);
+  CHECK_FALSE(c.values_for({{"G", "1"}}, problem));
+  CHECK(problem == "'G' is not a parameter with a value (expected one of: F, m_A, m_B)");
+  CHECK_FALSE(c.values_for({{"F", "lots"}}, problem));
+  CHECK(problem == "the value of 'F' is 'lots' (expected a number in N)");
+  std::istringstream in(
+      "{\"id\": \"s1\", \"unknown\": \"T\", \"answer\": \"18.46 N\", \"params\": {\"F\": 120}}\n"
+      "{\"id\": \"s2\", \"unknown\": \"T\", \"answer\": \"28.24 N\", \"params\": {\"m_A\": \"20\"}}\n"
+      "{\"id\": \"s3\", \"unknown\": \"T\", \"answer\": \"20 N\", \"params\": [1]}\n");
+  std::ostringstream out;
+  GradeOptions options;
+  options.set = {{"F", "120"}};
+  const BatchSummary s = check_batch(c, in, out, options);
+  CHECK(s.correct == 2);
+  std::istringstream results(out.str());
+  std::vector<nlohmann::json> lines;
+  for (std::string l; std::getline(results, l);) lines.push_back(nlohmann::json::parse(l));
+  REQUIRE(lines.size() == 3);
+  CHECK(lines[2]["summary"] == "line 3: \"params\" is not an object of parameter values");
+}
