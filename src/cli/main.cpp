@@ -52,6 +52,7 @@ std::vector<std::string> split_commas(const std::string& list) {
 int main(int argc, char** argv) {
   CLI::App app{"tackle: free-body-diagram equations for constrained straight-line motion, solved in closed form"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("tackle ") + TACKLE_VERSION + " (rules: " + tackle::default_rules_dir() + ")");
   std::string rules_dir = tackle::default_rules_dir();
   app.add_option("--rules", rules_dir, "Directory of connection rules (rules/*.yaml)")->capture_default_str();
 

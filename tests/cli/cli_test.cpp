@@ -93,6 +93,9 @@ TEST_CASE("CLI: derive prints each example as in its approved text report", "[cl
 TEST_CASE("CLI: exit codes: 0 ok, 1 input error, 2 usage", "[cli]") {
   CHECK(run_tackle("--help").code == 0);
   CHECK(run_tackle("derive --help").code == 0);
+  const Run version = run_tackle("--version");
+  CHECK(version.code == 0);
+  CHECK(version.out.rfind("tackle 0.1.0 (rules: ", 0) == 0);
   CHECK(run_tackle("").code == 2);
   CHECK(run_tackle("derive").code == 2);
   CHECK(run_tackle("solve " + examples + "atwood-machine.yaml --format pdf").code == 2);
