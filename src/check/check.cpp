@@ -303,6 +303,123 @@ std::optional<numeric> Checker::evaluate_at(const ex& e, const Point& point) {
   return std::nullopt;
 }
 
+namespace {
+
+// An answer as people type it, in the parser's ASCII: Greek letters by name (θ -> theta),
+// ·, × and ⋅ -> *, − and – -> -, ÷ -> /, superscript digits -> powers (x² -> x^2, x⁻¹ ->
+// x^(-1)), √ -> sqrt, ° -> deg, other spaces -> ' '. `origin` gets, for each byte of the
+// result, the character (0-based) of the input it comes from, for columns in messages.
+std::string as_typed(std::string_view in, std::vector<int>& origin) {
+  static const std::vector<std::pair<std::string_view, std::string_view>> table{
+      {"\u00b7", "*"}, {"\u00d7", "*"}, {"\u22c5", "*"}, {"\u2217", "*"}, {"\u2212", "-"}, {"\u2013", "-"}, {"\u00f7", "/"},
+      {"\u2215", "/"}, {"\u00a0", " "}, {"\u2009", " "}, {"\u202f", " "}, {"\u00b0", " deg"},
+      {"\u03b1", "alpha"}, {"\u03b2", "beta"}, {"\u03b3", "gamma"}, {"\u03b4", "delta"}, {"\u03b5", "epsilon"},
+      {"\u03b6", "zeta"}, {"\u03b7", "eta"}, {"\u03b8", "theta"}, {"\u03d1", "theta"}, {"\u03b9", "iota"},
+      {"\u03ba", "kappa"}, {"\u03bb", "lambda"}, {"\u03bc", "mu"}, {"\u00b5", "mu"}, {"\u03bd", "nu"}, {"\u03be", "xi"},
+      {"\u03c0", "pi"}, {"\u03c1", "rho"}, {"\u03c3", "sigma"}, {"\u03c4", "tau"}, {"\u03c6", "phi"}, {"\u03d5", "phi"},
+      {"\u03c7", "chi"}, {"\u03c8", "psi"}, {"\u03c9", "omega"}, {"\u0393", "Gamma"}, {"\u0394", "Delta"},
+      {"\u0398", "Theta"}, {"\u039b", "Lambda"}, {"\u03a3", "Sigma"}, {"\u03a6", "Phi"}, {"\u03a8", "Psi"},
+      {"\u03a9", "Omega"}};
+  static const std::vector<std::string_view> superscripts{"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
+                                                          "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+  static const std::string_view super_minus = "\u207b", root = "\u221a";
+  std::string out;
+  origin.clear();
+  auto emit = [&](std::string_view t, int from) {
+    out += t;
+    origin.insert(origin.end(), t.size(), from);
+  };
+  auto superscript_at = [&](std::size_t i) -> int {  // the digit, 10 for minus, -1 for none
+    for (int d = 0; d < 10; ++d)
+      if (in.substr(i, superscripts[d].size()) == superscripts[d]) return d;
+    return in.substr(i, super_minus.size()) == super_minus ? 10 : -1;
+  };
+  auto char_length = [&](std::size_t i) {
+    const auto c = static_cast<unsigned char>(in[i]);
+    return c < 0x80 ? 1 : c < 0xe0 ? 2 : c < 0xf0 ? 3 : 4;
+  };
+  int column = 0;
+  for (std::size_t i = 0; i < in.size();) {
+    if (superscript_at(i) >= 0) {
+      // A run of superscripts is one exponent.
+      std::string exponent;
+      const int from = column;
+      while (i < in.size() && superscript_at(i) >= 0) {
+        const int d = superscript_at(i);
+        exponent += d == 10 ? '-' : static_cast<char>('0' + d);
+        i += static_cast<std::size_t>(char_length(i));
+        ++column;
+      }
+      emit(exponent.find('-') == std::string::npos ? "^" + exponent : "^(" + exponent + ")", from);
+      continue;
+    }
+    if (in.substr(i, root.size()) == root) {
+      // √3, √x, √(...): sqrt( of what follows (a number or a name; a parenthesis as it is).
+      i += root.size();
+      const int from = column++;
+      if (i < in.size() && in[i] == '(') {
+        emit("sqrt", from);
+        continue;
+      }
+      emit("sqrt(", from);
+      while (i < in.size() && (std::isalnum(static_cast<unsigned char>(in[i])) || in[i] == '_' || in[i] == '.')) {
+        emit(in.substr(i, 1), column++);
+        ++i;
+      }
+      emit(")", column);
+      continue;
+    }
+    bool replaced = false;
+    for (const auto& [from, to] : table)
+      if (in.substr(i, from.size()) == from) {
+        emit(to, column++);
+        i += from.size();
+        replaced = true;
+        break;
+      }
+    if (replaced) continue;
+    const int length = char_length(i);
+    emit(in.substr(i, static_cast<std::size_t>(length)), column++);
+    i += static_cast<std::size_t>(length);
+  }
+  origin.push_back(column);  // one past the end
+  return out;
+}
+
+// `30 deg` -> (30*pi/180): a number followed by deg (not part of a longer name).
+std::string degrees_as_radians(const std::string& in, std::vector<int>& origin) {
+  std::string out;
+  std::vector<int> where;
+  for (std::size_t i = 0; i < in.size();) {
+    const bool starts_number = (std::isdigit(static_cast<unsigned char>(in[i])) || in[i] == '.') &&
+                               (i == 0 || !(std::isalnum(static_cast<unsigned char>(in[i - 1])) || in[i - 1] == '_'));
+    if (starts_number) {
+      std::size_t j = i;
+      while (j < in.size() && (std::isdigit(static_cast<unsigned char>(in[j])) || in[j] == '.')) ++j;
+      std::size_t k = j;
+      while (k < in.size() && in[k] == ' ') ++k;
+      // (A whole answer `30 deg` stays a number with its unit.)
+      const bool whole = i == 0 && k + 3 == in.size();
+      if (!whole && in.compare(k, 3, "deg") == 0 &&
+          (k + 3 == in.size() || !(std::isalnum(static_cast<unsigned char>(in[k + 3])) || in[k + 3] == '_'))) {
+        const std::string t = "(" + in.substr(i, j - i) + "*pi/180)";
+        out += t;
+        where.insert(where.end(), t.size(), origin[i]);
+        i = k + 3;
+        continue;
+      }
+    }
+    out += in[i];
+    where.push_back(origin[i]);
+    ++i;
+  }
+  where.push_back(origin.back());
+  origin = where;
+  return out;
+}
+
+}  // namespace
+
 bool Checker::same(const numeric& a, const numeric& b) const {
   if (a.is_rational() && b.is_rational()) return a == b;
   const numeric scale = std::max(abs(a), abs(b));
@@ -369,8 +486,11 @@ CheckResult Checker::check(const std::string& unknown, std::string_view answer, 
                                     std::to_string(options_.limits.max_length) + ")");
   if (const auto bad = invalid_utf8_at(answer))
     return invalid("syntax", "at column " + std::to_string(*bad + 1) + ": the answer is not valid UTF-8 text");
-  std::string text = trim(answer);
-  if (text.empty()) return invalid("not_an_answer", "the answer is empty");
+  std::vector<int> origin;
+  std::string text = as_typed(trim(answer), origin);
+  if (!answer_names_.count("deg")) text = degrees_as_radians(text, origin);
+  std::size_t offset = 0;  // where the expression starts in `text` (after "T =")
+  if (trim(text).empty()) return invalid("not_an_answer", "the answer is empty");
   // "T = ...": the left side must name the unknown asked for.
   for (std::size_t i = 0; i < text.size(); ++i) {
     if (text[i] != '=' || (i > 0 && (text[i - 1] == '<' || text[i - 1] == '>' || text[i - 1] == '!')) ||
@@ -383,6 +503,8 @@ CheckResult Checker::check(const std::string& unknown, std::string_view answer, 
         return invalid("wrong_unknown", "this is an answer for " + lhs + ", but " + unknown + " was asked for");
       return invalid("not_an_answer", "write '" + unknown + " = ...' or just the expression (found '" + lhs + " = ')");
     }
+    offset = i + 1;
+    while (offset < text.size() && std::isspace(static_cast<unsigned char>(text[offset]))) ++offset;
     text = trim(std::string_view(text).substr(i + 1));
     break;
   }
@@ -403,7 +525,12 @@ CheckResult Checker::check(const std::string& unknown, std::string_view answer, 
                                           " is read as a number with a unit)"});
     return n;
   }
-  return check_expression(ref, text, r, start);
+  // A column of `text` as a character of the answer as typed, from where the expression starts.
+  const auto column = [&](int c) {
+    const std::size_t at = std::min(offset + static_cast<std::size_t>(std::max(c, 0)), origin.size() - 1);
+    return origin[at] - origin[std::min(offset, origin.size() - 1)] + 1;
+  };
+  return check_expression(ref, text, r, start, column);
 }
 
 CheckResult Checker::check_number(const Reference& ref, std::string_view number, std::string_view unit_text,
@@ -506,7 +633,8 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
 }
 
 CheckResult Checker::check_expression(const Reference& ref, std::string_view text, CheckResult r,
-                                      std::chrono::steady_clock::time_point start) const {
+                                      std::chrono::steady_clock::time_point start,
+                                      const std::function<int(int)>& column) const {
   auto over_budget = [&] { return std::chrono::steady_clock::now() - start > options_.time_budget; };
   auto finish = [&](Verdict v, std::string code, std::string message) {
     r.verdict = v;
@@ -519,7 +647,7 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
   const ParseResult parsed = parse_expression(text, resolver, options_.limits);
   if (!parsed.value) {
     const ParseProblem& p = parsed.problems.front();
-    const std::string where = "at column " + std::to_string(p.column + 1) + ": ";
+    const std::string where = "at column " + std::to_string(column(p.column)) + ": ";
     if (!resolver.missing().empty()) {
       // The most useful hint for a name the problem does not have.
       const std::string& bad = resolver.missing().back();
@@ -673,18 +801,50 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
           break;
         }
     }
+    // Still irrational: a square root of a simple fraction (sqrt(3), sqrt(3)/2), said exactly.
+    if (!c.is_rational() && std::abs(c.to_double()) < 1e6) {
+      const double x2 = c.to_double() * c.to_double();
+      for (int den = 1; den <= 12; ++den)
+        if (std::abs(x2 * den - std::round(x2 * den)) < 1e-9 * std::max(1.0, x2 * den)) {
+          const ex root = (c.is_positive() ? 1 : -1) * sqrt(ex(numeric(static_cast<long>(std::round(x2 * den)), den)));
+          r.findings.push_back({"factor", "off by a factor of " + to_text(root) + " (the answer is " + to_text(root) +
+                                              " times the correct answer)"});
+          return;
+        }
+    }
     if (c == -1)
       r.findings.push_back({"sign", "the sign is wrong"});
     else
       r.findings.push_back({"factor", "off by a factor of " + to_text(c) + " (the answer is " + factor_words(c) + ")"});
     return;
   }
+  // Does the answer equal `other` (an expression in the parameters) at every point?
+  auto equals_at_points = [&](const ex& other) {
+    if (n == 0) return false;
+    for (std::size_t k = 0; k < n; ++k) {
+      auto v = value_at(other, k);
+      if (!v || !same(values[k], *v)) return false;
+    }
+    return true;
+  };
   // The value of another unknown of the problem.
   for (const auto& [name, other] : references_) {
     if (name == ref.name || !(other.dimension == ref.dimension)) continue;
     bool all = other.at_points.size() == values.size() && !values.empty();
     for (std::size_t k = 0; all && k < values.size(); ++k) all = same(values[k], other.at_points[k]);
     if (all) r.findings.push_back({"other_unknown", "this is the value of " + name + ", not of " + ref.name});
+  }
+  // sin written for cos, or the reverse.
+  if (expanded.has(sin(wild(0))) || expanded.has(cos(wild(0)))) {
+    const ex swapped = expanded.subs(lst{sin(wild(0)) == cos(wild(0)), cos(wild(0)) == sin(wild(0))});
+    if (!swapped.is_equal(expanded)) {
+      bool all = n > 0;
+      for (std::size_t k = 0; all && k < n; ++k) {
+        auto v = value_at(swapped, k);
+        all = v && same(*v, ref.at_points[k]);
+      }
+      if (all) r.findings.push_back({"trig_swapped", "sin and cos are swapped"});
+    }
   }
   // Most specific first: swapped parameters, special cases, a factor in the parameters,
   // then the parameters the answer has or lacks.
@@ -744,6 +904,20 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
       if (matches_at(equal_values, equal_values))
         r.findings.push_back({"special_case", "this is correct only when " + a.name + " = " + b.name});
     }
+  // One term of the correct answer with the wrong sign, or missing (which term is not said:
+  // that would give the answer away).
+  if (const ex terms = ref.closed_form.expand(); is_a<add>(terms) && terms.nops() <= 12) {
+    for (std::size_t i = 0; i < terms.nops(); ++i) {
+      if (equals_at_points(terms - 2 * terms.op(i))) {
+        r.findings.push_back({"term_sign", "the sign of one term is wrong"});
+        break;
+      }
+      if (equals_at_points(terms - terms.op(i))) {
+        r.findings.push_back({"missing_term", "one term of the correct answer is missing"});
+        break;
+      }
+    }
+  }
   r.findings.insert(r.findings.end(), factor_findings.begin(), factor_findings.end());
   // Parameters the answer depends on, or misses (named in the problem's order).
   const auto used = symbols_of(answer.subs(definitions_)), needed = symbols_of(ref.closed_form);

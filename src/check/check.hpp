@@ -6,6 +6,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -44,7 +45,8 @@ enum class Verdict { correct, incorrect, invalid, undecided };
 /// One thing found about an answer: a code for machines, a sentence for students.
 /// Codes: unknown_name, syntax, too_large, not_an_answer, wrong_unknown, no_unit, unit,
 /// dimension, sign, factor, other_unknown, swapped, special_case, extra_parameter,
-/// missing_parameter, value, not_simplified, tolerance, budget, evaluation.
+/// missing_parameter, trig_swapped, term_sign, missing_term, value, not_simplified, tolerance,
+/// budget, evaluation.
 struct Finding {
   std::string code;
   std::string message;
@@ -97,7 +99,7 @@ class Checker {
   CheckResult check_number(const Reference& ref, std::string_view number, std::string_view unit_text,
                            CheckResult r, const GiNaC::exmap* values) const;
   CheckResult check_expression(const Reference& ref, std::string_view text, CheckResult r,
-                               std::chrono::steady_clock::time_point start) const;
+                               std::chrono::steady_clock::time_point start, const std::function<int(int)>& column) const;
   void diagnose(const Reference& ref, const GiNaC::ex& answer, const std::vector<GiNaC::numeric>& values,
                 CheckResult& r) const;
   using Point = std::vector<std::pair<GiNaC::ex, GiNaC::numeric>>;  // symbol -> value

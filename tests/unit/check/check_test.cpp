@@ -55,9 +55,11 @@ TEST_CASE("Check: the suitcase's normal force without friction is correct only f
   CHECK(r.summary == "this is correct only without friction (mu = 0)");
   std::vector<std::string> codes;
   for (const auto& f : r.findings) codes.push_back(f.code);
-  CHECK(codes == std::vector<std::string>{"special_case", "special_case", "missing_parameter"});
+  // N_A = m g (1/2 - mu h/l): m g/2 is also the first term alone.
+  CHECK(codes == std::vector<std::string>{"special_case", "special_case", "missing_term", "missing_parameter"});
   CHECK(r.findings[1].message == "this is correct only for h = 0");
-  CHECK(r.findings[2].message == "the correct answer depends on mu, l and h, and this one does not");
+  CHECK(r.findings[2].message == "one term of the correct answer is missing");
+  CHECK(r.findings[3].message == "the correct answer depends on mu, l and h, and this one does not");
 }
 
 TEST_CASE("Check: the other contact's force is recognised", "[check]") {
@@ -320,4 +322,36 @@ TEST_CASE("Grading: each student's own numbers, from --set or a line's params", 
   for (std::string l; std::getline(results, l);) lines.push_back(nlohmann::json::parse(l));
   REQUIRE(lines.size() == 3);
   CHECK(lines[2]["summary"] == "line 3: \"params\" is not an object of parameter values");
+}
+
+TEST_CASE("Check: answers as people type them: Unicode, degrees, roots, superscripts", "[check][typed]") {
+  // The incline (examples/incline-and-hanging-block.yaml): N_A = m_A g cos(theta), theta = 30 deg.
+  const Checker& c = checker("incline-and-hanging-block.yaml");
+  for (const char* a : {"m_A\u00b7g\u00b7cos(\u03b8)", "N_A = m_A\u00d7g\u00d7cos(\u03b8)", "m_A*g*cos(\u03b8)\u00b9",
+                        "\u2212(\u2212m_A*g*cos(theta))", "m_A*g*\u221a(cos(\u03b8)\u00b2)"}) {
+    INFO(a);
+    CHECK(c.check("N_A", a).verdict == Verdict::correct);
+  }
+  // 30 deg inside an expression is pi/6 (a number: the closed form is in theta).
+  const CheckResult deg = c.check("N_A", "m_A*g*cos(30 deg)");
+  CHECK(deg.echo_text == "g*m_A*sqrt(3)/2");
+  CHECK(c.check("N_A", "m_A*g*cos(30\u00b0)").echo_text == "g*m_A*sqrt(3)/2");
+  CHECK(c.check("N_A", "m_A*g\u00b2*g\u207b\u00b9*cos(theta)").verdict == Verdict::correct);  // g^2 g^(-1)
+  // Columns count the characters as typed.
+  CHECK(c.check("N_A", "m_A\u00b7g\u00b7cos(\u03b8").summary == "at column 12: expected ')' to close 'cos('");
+  CHECK(c.check("N_A", "m_A*g*cos(\u03b8)*x").summary ==
+        "at column 14: unknown name 'x' (the problem's names: m_A, m_B, g, theta, L)");
+}
+
+TEST_CASE("Check: diagnoses of sin for cos, one term's sign, a missing term, a root factor", "[check]") {
+  // By hand: ddot(s) = g (m_B - m_A sin(theta))/(m_A + m_B).
+  const Checker& c = checker("incline-and-hanging-block.yaml");
+  CHECK(c.check("N_A", "m_A*g*sin(theta)").summary == "sin and cos are swapped");
+  CHECK(c.check("ddot(s)", "g*(m_B + m_A*sin(theta))/(m_A + m_B)").summary == "the sign of one term is wrong");
+  const CheckResult missing = c.check("ddot(s)", "g*m_B/(m_A + m_B)");
+  CHECK(missing.summary == "this is correct only for theta = 0");
+  REQUIRE(missing.findings.size() >= 2);
+  CHECK(missing.findings[1].message == "one term of the correct answer is missing");
+  CHECK(c.check("N_A", "m_A*g*cos(theta)*sqrt(3)/2").summary ==
+        "off by a factor of sqrt(3)/2 (the answer is sqrt(3)/2 times the correct answer)");
 }
