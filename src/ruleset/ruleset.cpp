@@ -95,6 +95,13 @@ void RuleSet::read_all() const {
 
 std::string default_rules_dir() {
   if (const char* env = std::getenv("TACKLE_RULES"); env && *env) return env;
+  // An installed program: PREFIX/bin/tackle finds PREFIX/share/tackle/rules.
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const std::filesystem::path installed = exe.parent_path().parent_path() / TACKLE_INSTALLED_RULES;
+    if (std::filesystem::is_directory(installed, ec)) return installed.lexically_normal().string();
+  }
   return TACKLE_RULES_DIR;
 }
 
