@@ -19,4 +19,13 @@ cmake -S "$source/tests/install/consumer" -B "$work/consumer" -DCMAKE_PREFIX_PAT
   -DCMAKE_BUILD_TYPE=Release > "$work/configure.log" 2>&1 || { cat "$work/configure.log"; exit 1; }
 cmake --build "$work/consumer" > "$work/build.log" 2>&1 || { tail -30 "$work/build.log"; exit 1; }
 "$work/consumer/consumer" "$source/examples/atwood-machine.yaml" | grep -q "^T = 2\*g\*m_A\*m_B/(m_A + m_B)$"
+# The Python module, when it was built: importable from the prefix, the rules found beside it.
+if ls "$work/prefix"/lib/python3/dist-packages/tackle*.so > /dev/null 2>&1; then
+  PYTHONPATH="$work/prefix/lib/python3/dist-packages" python3 -c "import tackle; print(tackle.rules_dir())" |
+    grep -q "^$work/prefix/share/tackle/rules$"
+  PYTHONPATH="$work/prefix/lib/python3/dist-packages" python3 -c "
+import tackle
+p = tackle.Problem('$source/examples/atwood-machine.yaml')
+assert [a['closed_form'] for a in p.answers() if a['name'] == 'T'] == ['2*g*m_A*m_B/(m_A + m_B)']"
+fi
 echo "installed, moved, and built against: ok"

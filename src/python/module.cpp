@@ -1,0 +1,174 @@
+// The Python module: `import tackle`. A thin shell over the library, like the command line:
+// load a problem, derive it in any format, draw a variant, check one answer or a batch.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <dlfcn.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <regex>
+#include <sstream>
+
+#include "check/batch.hpp"
+#include "check/check.hpp"
+#include "expr/print.hpp"
+#include "pipeline/pipeline.hpp"
+#include "report/key.hpp"
+
+namespace py = pybind11;
+
+namespace {
+
+// The rules: $TACKLE_RULES, else share/tackle/rules of the prefix this module is installed in
+// (PREFIX/lib/python3/dist-packages/tackle*.so), else the library's default (a build tree's).
+std::string module_rules_dir() {
+  if (const char* env = std::getenv("TACKLE_RULES"); env && *env) return env;
+  Dl_info info;
+  if (dladdr(reinterpret_cast<void*>(&module_rules_dir), &info) && info.dli_fname) {
+    std::error_code ec;
+    const auto installed =
+        std::filesystem::path(info.dli_fname).parent_path().parent_path().parent_path().parent_path() / "share/tackle/rules";
+    if (std::filesystem::is_directory(installed, ec)) return installed.lexically_normal().string();
+  }
+  return tackle::default_rules_dir();
+}
+
+// A problem: one description (or one phase of a phased one), analyzed once.
+class Problem {
+ public:
+  Problem(const std::string& path, const std::string& phase, const std::string& rules_dir)
+      : rules_(tackle::load_rules(rules_dir.empty() ? module_rules_dir() : rules_dir)),
+        whole_(tackle::analyze_file(path, rules_)) {
+    std::string problem;
+    analysis_ = tackle::pick_phase(*whole_, phase, problem);
+    if (!analysis_) throw py::value_error(path + ": " + std::regex_replace(problem, std::regex("--phase"), "phase="));
+    derivation_ = tackle::explain(*analysis_);
+  }
+
+  [[nodiscard]] std::string title() const { return derivation_.title; }
+
+  [[nodiscard]] std::string derive(const std::string& format, bool full) const {
+    static const std::map<std::string, tackle::Format> formats{{"text", tackle::Format::text},
+                                                               {"latex", tackle::Format::latex},
+                                                               {"markdown", tackle::Format::markdown},
+                                                               {"json", tackle::Format::json}};
+    const auto f = formats.find(format);
+    if (f == formats.end()) throw py::value_error("format '" + format + "' (expected text, latex, markdown or json)");
+    return tackle::write(derivation_, f->second, full);
+  }
+
+  // Each answer: name, status, closed form (text and LaTeX), value and unit when numbers are given.
+  [[nodiscard]] py::list answers() const {
+    py::list out;
+    for (const auto& a : derivation_.answers) {
+      py::dict d;
+      d["name"] = a.name;
+      d["closed_form"] = a.closed_form ? py::object(py::str(tackle::to_text(*a.closed_form))) : py::object(py::none());
+      d["latex"] = a.closed_form ? py::object(py::str(tackle::to_latex(*a.closed_form))) : py::object(py::none());
+      d["value"] = a.value ? py::object(py::float_(a.value->approx)) : py::object(py::none());
+      d["unit"] = a.value ? py::object(py::str(a.value->unit)) : py::object(py::none());
+      out.append(d);
+    }
+    return out;
+  }
+
+  // A variant: the parameters with a `range` drawn (the same seed, the same variant), and the
+  // answers there; None when no parameter has a range.
+  [[nodiscard]] py::object variant(unsigned long long seed, int digits) const {
+    const auto drawn = tackle::draw_variants(*analysis_, derivation_, 1, seed, digits);
+    if (drawn.empty()) return py::none();
+    py::dict parameters, answers;
+    for (const auto& q : drawn[0].parameters) parameters[py::str(q.name)] = py::dict(py::arg("value") = q.value, py::arg("unit") = q.unit, py::arg("text") = q.text());
+    for (const auto& q : drawn[0].answers) answers[py::str(q.name)] = py::dict(py::arg("value") = q.value, py::arg("unit") = q.unit, py::arg("text") = q.text());
+    return py::dict(py::arg("parameters") = parameters, py::arg("answers") = answers);
+  }
+
+  // One answer; `params`: the student's own numbers ({"F": 120}, in the stated units).
+  [[nodiscard]] py::dict check(const std::string& unknown, const std::string& answer, const py::dict& params, double tolerance,
+                               bool reveal) const {
+    const tackle::Checker checker(*analysis_, options(tolerance, reveal));
+    std::optional<GiNaC::exmap> values;
+    if (!params.empty()) {
+      std::string problem;
+      values = checker.values_for(settings(params), problem);
+      if (!values) throw py::value_error("params: " + problem);
+    }
+    const tackle::CheckResult r = checker.check(unknown, answer, values ? &*values : nullptr);
+    py::list findings;
+    for (const auto& f : r.findings) findings.append(py::dict(py::arg("code") = f.code, py::arg("message") = f.message));
+    return py::dict(py::arg("unknown") = r.unknown, py::arg("verdict") = tackle::verdict_name(r.verdict), py::arg("score") = r.score,
+                    py::arg("summary") = r.summary, py::arg("findings") = findings, py::arg("method") = r.method,
+                    py::arg("read_as") = r.echo_text, py::arg("latex") = r.echo_latex);
+  }
+
+  // JSON Lines in; (the results a line, the platform's results file) out.
+  [[nodiscard]] py::tuple check_batch(const std::string& lines, const std::string& results_format, double points,
+                                      const py::dict& params, double tolerance, bool reveal) const {
+    const tackle::Checker checker(*analysis_, options(tolerance, reveal));
+    tackle::GradeOptions grade;
+    if (results_format == "gradescope") grade.format = tackle::ResultsFormat::gradescope;
+    else if (results_format == "prairielearn") grade.format = tackle::ResultsFormat::prairielearn;
+    else if (results_format == "jsonl") grade.format = tackle::ResultsFormat::jsonl;
+    else throw py::value_error("results_format '" + results_format + "' (expected gradescope, prairielearn or jsonl)");
+    grade.points = points;
+    grade.set = settings(params);
+    std::istringstream in(lines);
+    std::ostringstream out;
+    const tackle::BatchSummary s = tackle::check_batch(checker, in, out, grade);
+    return py::make_tuple(out.str(), s.results);
+  }
+
+ private:
+  static tackle::CheckOptions options(double tolerance, bool reveal) {
+    if (!(tolerance >= 0 && tolerance <= 1)) throw py::value_error("tolerance must be from 0 to 1");
+    tackle::CheckOptions o;
+    o.relative_tolerance = tolerance;
+    o.reveal = reveal;
+    return o;
+  }
+  static std::vector<std::pair<std::string, std::string>> settings(const py::dict& params) {
+    std::vector<std::pair<std::string, std::string>> out;
+    for (const auto& [k, v] : params) out.emplace_back(py::str(k), py::str(v));
+    return out;
+  }
+
+  tackle::RuleSet rules_;
+  std::unique_ptr<const tackle::Analysis> whole_;
+  const tackle::Analysis* analysis_ = nullptr;
+  tackle::Derivation derivation_;
+};
+
+}  // namespace
+
+PYBIND11_MODULE(tackle, m) {
+  m.doc() = "tackle: free-body-diagram equations for constrained straight-line motion, solved in closed form";
+  m.attr("__version__") = TACKLE_VERSION;
+  m.def("rules_dir", &module_rules_dir, "The rules directory a Problem reads by default");
+  // A problem in a description is a ValueError carrying every located message, one a line.
+  static py::exception<tackle::InputError> input_error(m, "InputError", PyExc_ValueError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const tackle::InputError& e) {
+      std::string text;
+      for (const auto& d : e.diagnostics()) text += (text.empty() ? "" : "\n") + tackle::format(d);
+      input_error(text.c_str());
+    }
+  });
+  py::class_<Problem>(m, "Problem", "A problem description (YAML), analyzed: derivation, answers, variants, checks")
+      .def(py::init<const std::string&, const std::string&, const std::string&>(), py::arg("path"), py::arg("phase") = "",
+           py::arg("rules") = "")
+      .def_property_readonly("title", &Problem::title)
+      .def("derive", &Problem::derive, py::arg("format") = "text", py::arg("full") = true,
+           "The derivation (full) or the answers only, as text, latex, markdown or json")
+      .def("answers", &Problem::answers, "Each answer: name, closed_form, latex, value, unit")
+      .def("variant", &Problem::variant, py::arg("seed"), py::arg("digits") = 6,
+           "Parameters drawn from their ranges and the answers there, or None without ranges")
+      .def("check", &Problem::check, py::arg("unknown"), py::arg("answer"), py::arg("params") = py::dict(),
+           py::arg("tolerance") = 0.01, py::arg("reveal") = false, "Check one answer: verdict, score, summary, findings")
+      .def("check_batch", &Problem::check_batch, py::arg("lines"), py::arg("results_format") = "gradescope",
+           py::arg("points") = 1.0, py::arg("params") = py::dict(), py::arg("tolerance") = 0.01, py::arg("reveal") = false,
+           "Check JSON Lines of answers: (results a line, the platform's results file)");
+}

@@ -1,0 +1,69 @@
+"""The Python module against hand-derived values (run by CTest with the build tree's module
+on PYTHONPATH). Sample 12.3: T = 2 F m_B/(9 m_A + 4 m_B) = 20 N at F = 130 N, m_A = m_B = 40 kg;
+at F = 120 N it is 9600/520 = 18.4615 N."""
+import json
+import os
+import sys
+import unittest
+
+import tackle
+
+SOURCE = sys.argv.pop(1) if len(sys.argv) > 1 else "."
+EXAMPLES = os.path.join(SOURCE, "examples")
+
+
+class ModuleTest(unittest.TestCase):
+    def setUp(self):
+        self.p = tackle.Problem(os.path.join(EXAMPLES, "sample-12.3-two-mass-pulley.yaml"))
+
+    def test_answers(self):
+        t = next(a for a in self.p.answers() if a["name"] == "T")
+        self.assertEqual(t["closed_form"], "2*F*m_B/(9*m_A + 4*m_B)")
+        self.assertAlmostEqual(t["value"], 20.0)
+        self.assertEqual(t["unit"], "N")
+
+    def test_derive_formats(self):
+        self.assertIn("T = 2*F*m_B/(9*m_A + 4*m_B)", self.p.derive("text"))
+        self.assertTrue(self.p.derive("latex").startswith("\\documentclass"))
+        self.assertEqual(json.loads(self.p.derive("json"))["status"], "determined")
+        with self.assertRaises(ValueError):
+            self.p.derive("pdf")
+
+    def test_variant_is_reproducible_and_consistent(self):
+        v = self.p.variant(seed=3)
+        self.assertEqual(v, self.p.variant(seed=3))
+        F = v["parameters"]["F"]["value"]
+        m_A = v["parameters"]["m_A"]["value"]
+        m_B = v["parameters"]["m_B"]["value"]
+        self.assertAlmostEqual(v["answers"]["T"]["value"], 2 * F * m_B / (9 * m_A + 4 * m_B))
+
+    def test_check_with_the_students_numbers(self):
+        self.assertEqual(self.p.check("T", "20 N")["verdict"], "correct")
+        self.assertEqual(self.p.check("T", "18.46 N", params={"F": 120})["verdict"], "correct")
+        wrong = self.p.check("T", "30 N")
+        self.assertEqual(wrong["summary"], "not within 1 % of the correct value (got 30 N)")
+        self.assertEqual(self.p.check("T", "30 N", reveal=True)["summary"], "expected 20 N within 1 %; got 30 N")
+        with self.assertRaises(ValueError):
+            self.p.check("T", "20 N", params={"G": 1})
+
+    def test_batch_for_prairielearn(self):
+        lines = ('{"id": "a", "unknown": "T", "answer": "2*F*m_B/(9*m_A + 4*m_B)"}\n'
+                 '{"id": "b", "unknown": "T", "answer": "3*"}\n')
+        out, results = self.p.check_batch(lines, results_format="prairielearn")
+        self.assertEqual(len(out.splitlines()), 2)
+        r = json.loads(results)
+        self.assertFalse(r["gradable"])
+        self.assertEqual(len(r["format_errors"]), 1)
+
+    def test_input_errors_and_phases(self):
+        with self.assertRaises(tackle.InputError) as e:
+            tackle.Problem(os.path.join(SOURCE, "tests/data/bad/17-interval.yaml"))
+        self.assertIn("17-interval.yaml:11:3: 'interval' needs exactly one of 'duration' and 'distance'", str(e.exception))
+        with self.assertRaises(ValueError):
+            tackle.Problem(os.path.join(EXAMPLES, "sample-12.5-pile-driver.yaml"))
+        stop = tackle.Problem(os.path.join(EXAMPLES, "sample-12.5-pile-driver.yaml"), phase="stop")
+        self.assertAlmostEqual(next(a for a in stop.answers() if a["name"] == "F_s")["value"], 16938.6, places=1)
+
+
+if __name__ == "__main__":
+    unittest.main()
