@@ -1,0 +1,83 @@
+"""The PrairieLearn question and the Gradescope autograder in examples/, driven with the data
+shapes the platforms document (no platform needed). Sample 12.3: T = 2 F m_B/(9 m_A + 4 m_B).
+Usage: test_platforms.py SOURCE_DIR TACKLE_PROGRAM"""
+import importlib.util
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+SOURCE = sys.argv.pop(1)
+TACKLE = sys.argv.pop(1)
+
+
+def load_server():
+    path = os.path.join(SOURCE, "examples/prairielearn/pulley-tension/server.py")
+    spec = importlib.util.spec_from_file_location("server", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def new_data():
+    return {"params": {}, "correct_answers": {}, "submitted_answers": {}, "format_errors": {},
+            "partial_scores": {}, "score": 0.0, "feedback": {}}
+
+
+class PrairieLearnTest(unittest.TestCase):
+    def test_generate_parse_grade(self):
+        server = load_server()
+        data = new_data()
+        server.generate(data)
+        self.assertEqual(sorted(data["params"]), ["F", "m_A", "m_B"])
+        F, m_A, m_B = data["params"]["F"], data["params"]["m_A"], data["params"]["m_B"]
+        T = 2 * F * m_B / (9 * m_A + 4 * m_B)
+        self.assertIn("N", data["correct_answers"]["T"])
+        # The closed form, and the number at this variant's values: both correct.
+        for answer in ("2*F*m_B/(9*m_A + 4*m_B)", "%.5g N" % T):
+            data["submitted_answers"] = {"T": answer}
+            data["format_errors"] = {}
+            server.parse(data)
+            self.assertEqual(data["format_errors"], {})
+            server.grade(data)
+            self.assertEqual(data["score"], 1.0, answer)
+        # A wrong number: no points, and the feedback does not give the answer away.
+        data["submitted_answers"] = {"T": "%.5g N" % (2 * T)}
+        server.grade(data)
+        self.assertEqual(data["score"], 0.0)
+        self.assertEqual(data["partial_scores"]["T"]["score"], 0.0)
+        self.assertNotIn("%.4g" % T, data["feedback"]["T"])
+        # An answer tackle cannot read: a format error, so no attempt is charged.
+        data["submitted_answers"] = {"T": "2*F*"}
+        data["format_errors"] = {}
+        server.parse(data)
+        self.assertIn("T", data["format_errors"])
+
+
+class GradescopeTest(unittest.TestCase):
+    def run_autograder(self, answers):
+        root = tempfile.mkdtemp()
+        if answers is not None:
+            os.makedirs(os.path.join(root, "submission"))
+            with open(os.path.join(root, "submission/answers.json"), "w") as f:
+                f.write(answers)
+        env = dict(os.environ, AUTOGRADER=root, TACKLE=TACKLE)
+        subprocess.run([os.path.join(SOURCE, "examples/gradescope/pulley-tension/run_autograder")], env=env, check=True)
+        with open(os.path.join(root, "results/results.json")) as f:
+            return json.load(f)
+
+    def test_results(self):
+        r = self.run_autograder('{"T": "2*F*m_B/(9*m_A + 4*m_B)"}')
+        self.assertNotIn("score", r)  # Gradescope sums the tests
+        self.assertEqual(r["tests"][0]["score"], 10)
+        self.assertEqual(r["tests"][0]["max_score"], 10)
+        wrong = self.run_autograder('{"T": "30 N"}')
+        self.assertEqual(wrong["tests"][0]["score"], 0)
+        self.assertNotIn("20 N", wrong["tests"][0]["output"])
+        self.assertEqual(self.run_autograder(None)["tests"], [])
+
+
+if __name__ == "__main__":
+    unittest.main()
