@@ -79,5 +79,25 @@ class GradescopeTest(unittest.TestCase):
         self.assertEqual(self.run_autograder(None)["tests"], [])
 
 
+class ScaleOutTest(unittest.TestCase):
+    def test_split_and_merge_equals_one_run(self):
+        # Grading is a pure function of (problem, variant, answer): JSON Lines split across
+        # workers and joined in order give the same results as one run (each line has an id).
+        answers = ["2*F*m_B/(9*m_A + 4*m_B)", "20 N", "30 N", "2*F*", "F*m_B/(9*m_A + 4*m_B)", "20"]
+        lines = "".join(json.dumps({"id": "s%d" % i, "unknown": "T", "answer": answers[i % len(answers)],
+                                    "params": {"F": 100 + i}}) + "\n" for i in range(40))
+        problem = os.path.join(SOURCE, "examples/sample-12.3-two-mass-pulley.yaml")
+
+        def run(text):
+            return subprocess.run([TACKLE, "check", problem, "--batch", "-"], input=text, capture_output=True,
+                                  text=True, check=True).stdout
+
+        whole = run(lines)
+        split = lines.splitlines(keepends=True)
+        merged = "".join(run("".join(split[k:k + 10])) for k in range(0, len(split), 10))
+        self.assertEqual(whole, merged)
+        self.assertEqual(len(whole.splitlines()), 40)
+
+
 if __name__ == "__main__":
     unittest.main()
