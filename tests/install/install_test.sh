@@ -11,6 +11,11 @@ trap 'rm -rf "$work"' EXIT
 cmake --install "$build" --prefix "$work/prefix" > "$work/install.log"
 "$work/prefix/bin/tackle" --version | grep -q "^tackle [0-9.]* (rules: $work/prefix/share/tackle/rules)$"
 "$work/prefix/bin/tackle" solve "$source/examples/atwood-machine.yaml" | grep -q "^T = 2\*g\*m_A\*m_B/(m_A + m_B)  = 36.7875 N$"
+# The man page, the bash completion (it completes the commands), the license.
+man -l "$work/prefix/share/man/man1/tackle.1" > /dev/null 2>&1 || groff -man -Tutf8 -ww "$work/prefix/share/man/man1/tackle.1" > /dev/null
+completed=$(bash -c "source '$work/prefix/share/bash-completion/completions/tackle'; COMP_WORDS=(tackle che); COMP_CWORD=1; _tackle; echo \${COMPREPLY[*]}")
+[ "$completed" = "check" ]
+grep -q "GNU GENERAL PUBLIC LICENSE" "$work/prefix/share/doc/tackle/LICENSE"
 # The install can move: the rules are found from the executable.
 mv "$work/prefix" "$work/moved"
 "$work/moved/bin/tackle" --version | grep -q "(rules: $work/moved/share/tackle/rules)$"
