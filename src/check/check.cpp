@@ -918,6 +918,14 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
       }
     }
   }
+  // One term too many: the answer is the correct one plus a single term (a product of the
+  // parameters), when nothing above explains it.
+  if (std::none_of(r.findings.begin(), r.findings.end(), [](const Finding& f) { return f.code == "term_sign" || f.code == "missing_term"; }) &&
+      is_a<add>(ref.closed_form.expand()) && tree_size(expanded) <= 200) {
+    const ex extra = (expanded - ref.closed_form).expand();
+    if (!extra.is_zero() && !is_a<add>(extra) && !is_a<numeric>(extra) && is_a<add>(expanded.expand()))
+      r.findings.push_back({"extra_term", "the answer has one term too many"});
+  }
   r.findings.insert(r.findings.end(), factor_findings.begin(), factor_findings.end());
   // Parameters the answer depends on, or misses (named in the problem's order).
   const auto used = symbols_of(answer.subs(definitions_)), needed = symbols_of(ref.closed_form);

@@ -45,7 +45,7 @@ enum class Verdict { correct, incorrect, invalid, undecided };
 /// One thing found about an answer: a code for machines, a sentence for students.
 /// Codes: unknown_name, syntax, too_large, not_an_answer, wrong_unknown, no_unit, unit,
 /// dimension, sign, factor, other_unknown, swapped, special_case, extra_parameter,
-/// missing_parameter, trig_swapped, term_sign, missing_term, value, not_simplified, tolerance,
+/// missing_parameter, trig_swapped, term_sign, missing_term, extra_term, value, not_simplified, tolerance,
 /// budget, evaluation.
 struct Finding {
   std::string code;

@@ -352,6 +352,7 @@ TEST_CASE("Check: diagnoses of sin for cos, one term's sign, a missing term, a r
   CHECK(missing.summary == "this is correct only for theta = 0");
   REQUIRE(missing.findings.size() >= 2);
   CHECK(missing.findings[1].message == "one term of the correct answer is missing");
+  CHECK(c.check("ddot(s)", "g*(m_B - m_A*sin(theta))/(m_A + m_B) + g").summary == "the answer has one term too many");
   CHECK(c.check("N_A", "m_A*g*cos(theta)*sqrt(3)/2").summary ==
         "off by a factor of sqrt(3)/2 (the answer is sqrt(3)/2 times the correct answer)");
 }
