@@ -262,7 +262,7 @@ TEST_CASE("Grading: feedback never names the correct value unless asked", "[chec
   CHECK(s.results.find("6.78") == std::string::npos);
 }
 
-TEST_CASE("Grading: PrairieLearn's results.json; an answer that cannot be graded charges no attempt", "[check][batch][platform]") {
+TEST_CASE("Grading: PrairieLearn's results.json, where an answer that cannot be graded charges no attempt", "[check][batch][platform]") {
   GradeOptions options;
   options.format = ResultsFormat::prairielearn;
   const std::string good =

@@ -111,7 +111,7 @@ interval: {distance: s, from: {dot(x): v_0}}
   CHECK(same(*a, *answer(d, "dot(x)").closed_form, "sqrt(v_0^2 + 2*F*s/m)"));
 }
 
-TEST_CASE("Phases: sample 12.5 carries v into the impact and V into the stop; --phase picks one", "[phases]") {
+TEST_CASE("Phases: sample 12.5 carries v into the impact and V into the stop, and --phase picks one", "[phases]") {
   const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.5-pile-driver.yaml", test::rules());
   REQUIRE(a->phases.size() == 3);
   REQUIRE(a->phases[0].carried.size() == 1);

@@ -78,7 +78,7 @@ TEST_CASE("Rules: every bundled rule reads without a problem", "[rules]") {
   CHECK_NOTHROW(load_rules(TACKLE_SOURCE_DIR "/rules").read_all());
 }
 
-TEST_CASE("Rules: a rule is read when first used; its problems come then, or all at once from read_all", "[rules]") {
+TEST_CASE("Rules: a rule is read when first used, its problems then, or all at once from read_all", "[rules]") {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("tackle-rules-" + std::to_string(::getpid()));
   fs::create_directories(dir);
