@@ -138,7 +138,7 @@ std::string write_key(const std::vector<KeyEntry>& entries, Format f) {
   const bool latex = f == Format::latex;
   std::string out;
   if (latex)
-    out += "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{amsmath}\n"
+    out += "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{lmodern}\n\\usepackage{amsmath}\n"
            "\\usepackage[margin=2cm]{geometry}\n\\begin{document}\n\\section*{Answer key}\n";
   else
     out += "# Answer key\n";

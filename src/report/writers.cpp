@@ -132,7 +132,7 @@ std::string latex_equation(const Step& st) {
 }
 
 std::string latex_preamble(bool plots) {
-  return "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{amsmath}\n"
+  return "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{lmodern}\n\\usepackage{amsmath}\n"
          "\\usepackage[margin=2.5cm]{geometry}\n" +
          std::string(plots ? "\\usepackage{pgfplots}\n\\pgfplotsset{compat=1.16}\n" : "") + "\\begin{document}\n";
 }

@@ -12,6 +12,10 @@ for f in "$examples"/*.yaml; do
   if ! (cd "$work" && pdflatex -interaction=nonstopmode -halt-on-error "$name.tex" >"$name.out" 2>&1); then
     echo "pdflatex failed for $f:"; tail -30 "$work/$name.out"; exit 1
   fi
+  # Vector fonts only (lmodern): a Type 3 font is a bitmap that prints and zooms badly.
+  if command -v pdffonts > /dev/null && pdffonts "$work/$name.pdf" | grep -q "Type 3"; then
+    echo "bitmap (Type 3) fonts in the derivation of $f:"; pdffonts "$work/$name.pdf"; exit 1
+  fi
   "$tackle" solve "$f" --format latex -o "$work/$name-key.tex"
   (cd "$work" && pdflatex -interaction=nonstopmode -halt-on-error "$name-key.tex" >"$name-key.out" 2>&1) \
     || { echo "pdflatex failed for the answers of $f"; tail -30 "$work/$name-key.out"; exit 1; }
