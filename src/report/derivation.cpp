@@ -292,6 +292,13 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
             a.closed_form = fold_definitions(plain, table);
           }
           a.value = evaluate(*a.closed_form, table, w.dimension, options.digits, w.unit);
+          // For programs: the same closed form in the parameters alone (l put in).
+          if (has_definition(*a.closed_form, table)) {
+            ex in_parameters = *a.closed_form;
+            for (int depth = 0; depth < 8 && has_definition(in_parameters, table); ++depth)
+              in_parameters = in_parameters.subs(table.definitions());
+            a.in_parameters = simplest(in_parameters);
+          }
 
         }
       }

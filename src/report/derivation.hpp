@@ -44,6 +44,7 @@ struct Answer {
   // (F/ddot(x_B) with ddot(x_B) = 0)
   std::vector<GiNaC::ex> zero_divisors;
   std::optional<GiNaC::ex> closed_form;
+  std::optional<GiNaC::ex> in_parameters;  // the closed form with the defined parameters put in, when it has any
   std::optional<NumericValue> value;
   std::optional<GiNaC::ex> general;  // free or in combination: in terms of the free unknowns
   std::optional<Unit> unit;          // the unit the numbers are given in (SI when absent)

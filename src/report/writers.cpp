@@ -312,6 +312,7 @@ nlohmann::ordered_json json_object(const Derivation& d, bool full) {
     if (a.closed_form) {
       u["closed_form"] = to_text(*a.closed_form);
       u["latex"] = to_latex(*a.closed_form);
+      if (a.in_parameters) u["in_parameters"] = to_text(*a.in_parameters);
     }
     if (a.general) u["general"] = to_text(*a.general);
     if (!a.reason.empty()) {

@@ -178,6 +178,8 @@ TEST_CASE("CLI: sample 12.8's JSON gives T = 6.78 N and its closed form", "[cli]
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["unknowns"][0]["closed_form"] == "a*l*m/(2*d)");  // the book: T = m a l/(2 d)
+  // The same in the parameters alone, for a program that does not know l = sqrt(b^2 + d^2 + e^2).
+  CHECK(j["unknowns"][0]["in_parameters"] == "a*m*sqrt(b^2 + d^2 + e^2)/(2*d)");
   CHECK(j["unknowns"][0]["value"] == Approx(6.78233).epsilon(1e-5));
 }
 
