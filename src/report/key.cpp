@@ -188,7 +188,12 @@ std::string write_key(const std::vector<KeyEntry>& entries, Format f) {
       out += "\\par\\medskip\\noindent Variants:\\par\\smallskip\\noindent\n\\begin{tabular}{" +
              std::string(head.size(), 'l') + "}\n";
       std::vector<std::string> cells;
-      for (const auto& h : head) cells.push_back(h == "#" ? "\\#" : "\\texttt{" + tex_escape(h) + "}");
+      // Each name typeset as in the derivation ($\\ddot{x}_{A}$, not ddot(x_A)).
+      std::map<std::string, std::string> tex;
+      for (const auto& p : d.parameters) tex[p.name] = p.tex;
+      for (const auto& a : d.answers) tex[a.name] = a.tex;
+      for (const auto& h : head)
+        cells.push_back(h == "#" ? "\\#" : tex.count(h) && !tex[h].empty() ? "$" + tex[h] + "$" : "\\texttt{" + tex_escape(h) + "}");
       out += join(cells, " & ") + " \\\\\n\\hline\n";
       for (const auto& v : e.variants) {
         cells = {std::to_string(v.index)};

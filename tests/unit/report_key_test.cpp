@@ -61,3 +61,12 @@ TEST_CASE("Key: the Markdown key has every problem's title and closed forms", "[
   CHECK(md == "# Answer key\n\n## Sample 12.8: an accelerating sign-board in 3-D\n\nFind $T_{HI}$.\n\n"
               "- $T_{HI} = \\frac{a l m}{2 d}$ = 6.78233 N\n");
 }
+
+TEST_CASE("Key: the LaTeX table's headers are typeset as in the derivation", "[key]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.3-two-mass-pulley.yaml", test::rules());
+  const Derivation d = explain(*a);
+  const std::vector<KeyEntry> entries{{&d, draw_variants(*a, d, 2, 1, 6), true}};
+  const std::string latex = write_key(entries, Format::latex);
+  CHECK(latex.find("\\# & $F$ & $m_{A}$ & $m_{B}$ & $T$ & $\\ddot{x}_{A}$ & $\\ddot{x}_{B}$ \\\\") != std::string::npos);
+  CHECK(latex.find("\\texttt{ddot") == std::string::npos);
+}
