@@ -13,6 +13,7 @@
 #include "pipeline/pipeline.hpp"
 #include "report/isolation_report.hpp"
 #include "report/key.hpp"
+#include "report/sheet.hpp"
 #include "core/files.hpp"
 #include "report/sweep.hpp"
 #include "motion/simulate.hpp"
@@ -99,43 +100,70 @@ int run_report(const Options& o, const tackle::RuleSet& rules, bool full) {
   return emit(tackle::write(tackle::explain(*analysis, tackle::ReportOptions{o.digits}), formats.at(o.format), full), o.out);
 }
 
-int run_key(const Options& o, const tackle::RuleSet& rules) {
-  // Every file is read before anything is written; problems in all of them are reported.
+// The files of key and sheet: each analyzed (every problem of every file reported at once),
+// each phase a part, the variants drawn once per file (the phases share the parameters); a
+// sheet and a key with one seed show the same numbers.
+struct Parts {
   std::vector<std::unique_ptr<const tackle::Analysis>> analyses;
+  std::vector<std::vector<tackle::Derivation>> derivations;  // per file, per phase
+  std::vector<std::vector<const tackle::Analysis*>> phases;  // the same shape
+  std::vector<std::vector<std::vector<tackle::Variant>>> variants;
+};
+
+Parts analyze_parts(const Options& o, const tackle::RuleSet& rules) {
+  Parts p;
   std::vector<tackle::Diagnostic> problems;
   for (const auto& f : o.key_files) {
     try {
-      analyses.push_back(tackle::analyze_file(f, rules));
+      p.analyses.push_back(tackle::analyze_file(f, rules));
     } catch (const tackle::InputError& e) {
       problems.insert(problems.end(), e.diagnostics().begin(), e.diagnostics().end());
     }
   }
   if (!problems.empty()) throw tackle::InputError(problems);
-  // A phased description gives one entry per phase, its o.variants drawn once for all of
-  // them (the phases share the parameters).
-  std::vector<tackle::KeyEntry> entries;
-  std::vector<std::vector<tackle::Derivation>> per_file;
-  for (const auto& a : analyses) per_file.push_back(tackle::explain_phases(*a, tackle::ReportOptions{o.digits}));
-  for (std::size_t i = 0; i < analyses.size(); ++i) {
+  bool any = false;
+  for (const auto& a : p.analyses) {
+    p.derivations.push_back(tackle::explain_phases(*a, tackle::ReportOptions{o.digits}));
+    auto& ds = p.derivations.back();
+    std::vector<const tackle::Analysis*> phases;
     std::vector<std::pair<const tackle::Analysis*, const tackle::Derivation*>> parts;
-    for (std::size_t k = 0; k < per_file[i].size(); ++k)
-      parts.emplace_back(analyses[i]->phases.empty() ? analyses[i].get() : analyses[i]->phases[k].analysis.get(), &per_file[i][k]);
-    const auto variants_of = tackle::draw_variants(parts, o.variants, o.seed, o.digits);
-    for (std::size_t k = 0; k < per_file[i].size(); ++k) {
-      tackle::Derivation& d = per_file[i][k];
-      if (!d.phase.empty()) d.title += ": phase " + std::to_string(d.phase_number) + ", " + d.phase;
-      entries.push_back({&d, variants_of[k], o.variants > 0});
+    for (std::size_t k = 0; k < ds.size(); ++k) {
+      phases.push_back(a->phases.empty() ? a.get() : a->phases[k].analysis.get());
+      parts.emplace_back(phases.back(), &ds[k]);
     }
+    p.variants.push_back(tackle::draw_variants(parts, o.variants, o.seed, o.digits));
+    for (const auto& v : p.variants.back()) any = any || !v.empty();
+    for (auto& d : ds)
+      if (!d.phase.empty()) d.title += ": phase " + std::to_string(d.phase_number) + ", " + d.phase;
+    p.phases.push_back(phases);
   }
   // Variants asked for and none possible anywhere: an input error, not a key without them.
-  if (o.variants > 0 && std::all_of(entries.begin(), entries.end(), [](const auto& e) { return e.variants.empty(); })) {
+  if (o.variants > 0 && !any) {
     std::vector<tackle::Diagnostic> none;
     for (const auto& f : o.key_files)
       none.push_back({{f, 1, 1}, "variants were asked for, but no parameter has a 'range' to draw them from "
                                  "(expected, for instance, F: {value: 130, unit: N, range: [100, 160]})"});
     throw tackle::InputError(none);
   }
+  return p;
+}
+
+int run_key(const Options& o, const tackle::RuleSet& rules) {
+  const Parts p = analyze_parts(o, rules);
+  std::vector<tackle::KeyEntry> entries;
+  for (std::size_t i = 0; i < p.derivations.size(); ++i)
+    for (std::size_t k = 0; k < p.derivations[i].size(); ++k)
+      entries.push_back({&p.derivations[i][k], p.variants[i][k], o.variants > 0});
   return emit(tackle::write_key(entries, formats.at(o.key_format)), o.out);
+}
+
+int run_sheet(const Options& o, const tackle::RuleSet& rules) {
+  const Parts p = analyze_parts(o, rules);
+  std::vector<tackle::SheetEntry> entries;
+  for (std::size_t i = 0; i < p.derivations.size(); ++i)
+    for (std::size_t k = 0; k < p.derivations[i].size(); ++k)
+      entries.push_back({&p.derivations[i][k], &p.phases[i][k]->model, p.variants[i][k]});
+  return emit(tackle::write_sheet(entries, formats.at(o.key_format)), o.out);
 }
 
 int run_isolate(const Options& o, const tackle::RuleSet& rules) {
@@ -327,6 +355,16 @@ int main(int argc, char** argv) {
   key->add_option("--digits", o.digits, "Significant digits of the numbers")->check(CLI::Range(1, 1000));
   key->add_option("-o,--output", o.out, "Write to this file instead of standard output");
 
+  auto* sheet = app.add_subcommand("sheet", "Problem sheets: each problem's statement with its numbers, per variant "
+                                            "(the same numbers as key with the same seed)");
+  sheet->add_option("files", o.key_files, "Problem descriptions (YAML)")->required();
+  sheet->add_option("--format", o.key_format, "Output format")->check(CLI::IsMember({"latex", "markdown"}))->capture_default_str();
+  sheet->add_option("--variants", o.variants, "Numeric variants per problem, drawn from the parameters' 'range'")
+      ->check(CLI::Range(0, 10000));
+  sheet->add_option("--seed", o.seed, "Seed for the variants (as for key)")->capture_default_str();
+  sheet->add_option("--digits", o.digits, "Significant digits of the numbers")->check(CLI::Range(1, 1000));
+  sheet->add_option("-o,--output", o.out, "Write to this file instead of standard output");
+
   auto* sweep = app.add_subcommand("sweep", "Evaluate the closed forms over a range of one parameter: CSV, SVG plot, pgfplots");
   sweep->add_option("file", o.file, "Problem description (YAML)")->required();
   sweep->add_option("--vary", o.vary, "name=start:end:count, in the parameter's unit (default: the description's sweep)");
@@ -399,6 +437,7 @@ int main(int argc, char** argv) {
   try {
     const tackle::RuleSet rules = tackle::load_rules(o.rules_dir);
     if (key->parsed()) return run_key(o, rules);
+    if (sheet->parsed()) return run_sheet(o, rules);
     if (isolate->parsed()) return run_isolate(o, rules);
     if (sweep->parsed()) return run_sweep(o, rules);
     if (simulate->parsed()) return run_simulate(o, rules);

@@ -406,6 +406,7 @@ struct Reader {
         diags.error(ph.at, "a phase has no 'name' (expected, e.g., name: fall)");
       }
       ph.d.title = {d.title.text + ": " + (ph.name.text.empty() ? std::string("phase") : ph.name.text), ph.at};
+      if (d.phases.empty()) ph.d.statement = d.statement;  // the problem's statement goes with its first phase
       Reader inner{file, diags, ph.d};
       inner.read_root(item, true);
       if (auto c = item["carry"]) read_values(c, "'carry' of phase '" + ph.name.text + "'", ph.carry,
@@ -421,10 +422,11 @@ struct Reader {
     if (phase) {
       keys.insert(keys.begin(), {"name", "carry"});
     } else {
-      keys.insert(keys.begin(), {"title", "source"});
+      keys.insert(keys.begin(), {"title", "source", "statement"});
     }
     check_map(root, keys, phase ? "a phase" : "the description", file, diags);
     if (!phase) {
+      if (auto st = root["statement"]) d.statement = scalar(st, "'statement'", file, diags);
       if (auto t = root["title"]) {
         if (auto s = scalar(t, "'title'", file, diags)) d.title = *s;
       } else {
@@ -535,7 +537,8 @@ DescriptionRead read_description_text(const std::string& text, const std::string
   }
   Reader r{file, diags, d};
   if (root["phases"]) {
-    check_map(root, {"title", "source", "notes", "parameters", "phases"}, "a description with 'phases'", file, diags);
+    check_map(root, {"title", "source", "notes", "statement", "parameters", "phases"}, "a description with 'phases'", file, diags);
+    if (auto st = root["statement"]) d.statement = scalar(st, "'statement'", file, diags);
     if (auto t = root["title"]) {
       if (auto s = scalar(t, "'title'", file, diags)) d.title = *s;
     } else {

@@ -141,6 +141,9 @@ struct PhaseDesc;
 struct Description {
   std::string file;
   Text title;
+  // The problem as a student reads it, for sheets: text (math between $...$) where {F} is
+  // the value of parameter F with its unit.
+  std::optional<Text> statement;
   std::vector<Text> axes;
   std::vector<ParameterDesc> parameters;
   std::optional<VectorDesc> gravity;

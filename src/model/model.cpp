@@ -47,6 +47,7 @@ Model build_model(const Description& d, const RuleSet& rules) {
   build::motion(ctx);
   build::interval(ctx);
   build::impact(ctx);
+  build::statement(ctx);
   m.sweep = d.sweep;
   ctx.diags.throw_if_any();
   m.symbols = ctx.table;

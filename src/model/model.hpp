@@ -146,6 +146,7 @@ struct ImpactSpec {
 struct Model {
   std::string file;
   std::string title;
+  std::optional<Text> statement;  // for sheets; its {placeholders} checked to be parameters
   std::string axis = "x";             // the first axis' name
   std::vector<std::string> axes{"x"};  // one name per axis (1 to 3)
   [[nodiscard]] int dims() const { return static_cast<int>(axes.size()); }

@@ -443,3 +443,23 @@ TEST_CASE("CLI: simulate runs the damped, driven block to the end, matching its 
   CHECK(r.out.find("; the model holds throughout.\n") != std::string::npos);
   CHECK(r.out.find("\n1,0.0106279") != std::string::npos);
 }
+
+TEST_CASE("CLI: a sheet and a key from one seed show the same numbers", "[cli][sheet]") {
+  const std::string file = examples + "sample-12.3-two-mass-pulley.yaml";
+  const Run key = run_tackle("key " + file + " --variants 3 --seed 9 --format json");
+  const Run sheet = run_tackle("sheet " + file + " --variants 3 --seed 9 --format markdown");
+  REQUIRE(key.code == 0);
+  REQUIRE(sheet.code == 0);
+  const auto variants = nlohmann::json::parse(key.out)["problems"][0]["variants"];
+  REQUIRE(variants.size() == 3);
+  std::size_t at = 0;
+  for (const auto& v : variants) {
+    // The statement says "a force $F$ = {F}": the key's F of that variant.
+    const std::string F = v["parameters"]["F"]["decimal"].get<std::string>() + " " + v["parameters"]["F"]["unit"].get<std::string>();
+    at = sheet.out.find("a force $F$ = " + F, at);
+    CHECK(at != std::string::npos);
+  }
+  CHECK(sheet.out.find("Find $T$, $\\ddot{x}_{A}$, $\\ddot{x}_{B}$.") != std::string::npos);
+  // Without variants: the description's own numbers.
+  CHECK(run_tackle("sheet " + file + " --format markdown").out.find("a force $F$ = 130 N") != std::string::npos);
+}

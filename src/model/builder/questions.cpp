@@ -2,6 +2,8 @@
 // constraints' constants for position questions, and the balances asked for (derive).
 #include "model/builder/stages.hpp"
 
+#include "core/placeholders.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <set>
@@ -228,6 +230,21 @@ void derive(BuildContext& ctx) {
       }
     }
   }
+}
+
+void statement(BuildContext& ctx) {
+  if (!ctx.d.statement) return;
+  const Text& st = *ctx.d.statement;
+  std::vector<std::string> names;
+  for (const auto& s : ctx.table->all())
+    if (s->role == SymbolRole::parameter) names.push_back(s->name);
+  for (const auto& p : placeholders(st.text)) {
+    const std::string name(p.name);
+    const SymbolInfo* s = ctx.table->find(name);
+    if (!s || s->role != SymbolRole::parameter)
+      ctx.diags.error(st.at, "'statement' names '{" + name + "}', which is not a parameter (expected one of: " + join(names) + ")");
+  }
+  ctx.m.statement = st;
 }
 
 }  // namespace tackle::build

@@ -47,6 +47,9 @@ void interval(BuildContext& ctx);
 // Needs the bodies, parameters and connections.
 void impact(BuildContext& ctx);
 
+// m.statement: each {name} in it a parameter (questions.cpp). Needs the parameters.
+void statement(BuildContext& ctx);
+
 // Helpers one stage lends another.
 
 // The value of a `given` entry in SI (questions.cpp); read_layout uses it too.

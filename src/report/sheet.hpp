@@ -1,0 +1,23 @@
+// Problem sheets: a description's `statement` with each {parameter} filled in, per variant, and
+// what is asked; the variants are those of `tackle key` with the same seed.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "report/derivation.hpp"
+#include "report/key.hpp"
+
+namespace tackle {
+
+struct SheetEntry {
+  const Derivation* derivation = nullptr;
+  const Model* model = nullptr;  // its statement
+  std::vector<Variant> variants;  // none: the description's own values
+};
+
+/// One sheet for every entry and variant (LaTeX document or Markdown); an entry without a
+/// statement shows its title and what is asked.
+[[nodiscard]] std::string write_sheet(const std::vector<SheetEntry>& entries, Format f);
+
+}  // namespace tackle
