@@ -267,12 +267,27 @@ std::string sweep_pgfplots(const SweepResult& r) {
                     to_latex(symbol(r.x_name)) + "$" + (r.x_unit.empty() ? "" : " [$" + unit_latex(r.x_unit) + "$]") +
                     "}, " + (r.y_unit.empty() ? "" : "ylabel={[$" + unit_latex(r.y_unit) + "$]}, ") +
                     "legend pos=outer north east, grid=major, scaled x ticks=false, xticklabel style={/pgf/number format/fixed}]\n";
+  // As the SVG: each curve in its colour, solid where every validity condition holds and
+  // dashed where one fails (runs of points with the same validity, joined at their ends).
+  static const char* const colours[] = {"blue", "red", "brown!70!black", "teal", "violet", "black"};
   for (std::size_t c = 0; c < r.y.size(); ++c) {
-    out += "\\addplot+[mark=none, thick] coordinates {";
-    for (std::size_t i = 0; i < r.x.size(); ++i)
-      if (r.y[c][i]) out += "(" + num(r.x[i]) + "," + num(*r.y[c][i]) + ") ";
-    out += "};\n\\addlegendentry{$" + r.latex[c] + "$}\n";
+    const std::string colour = colours[c % 6];
+    out += "\\addlegendimage{color=" + colour + ", thick}\n\\addlegendentry{$" + r.latex[c] + "$}\n";
+    std::size_t i = 0;
+    while (i < r.x.size()) {
+      while (i < r.x.size() && !r.y[c][i]) ++i;
+      if (i >= r.x.size()) break;
+      const bool valid = r.valid[i];
+      std::string points;
+      std::size_t j = i;
+      for (; j < r.x.size() && r.y[c][j] && r.valid[j] == valid; ++j) points += "(" + num(r.x[j]) + "," + num(*r.y[c][j]) + ") ";
+      if (j < r.x.size() && r.y[c][j]) points += "(" + num(r.x[j]) + "," + num(*r.y[c][j]) + ") ";
+      out += "\\addplot[color=" + colour + ", thick, forget plot" + (valid ? "" : ", dashed") + "] coordinates {" + points + "};\n";
+      i = j;
+    }
   }
+  if (std::find(r.valid.begin(), r.valid.end(), false) != r.valid.end())
+    out += "\\addlegendimage{empty legend}\n\\addlegendentry{dashed: invalid}\n";
   return out + "\\end{axis}\n\\end{tikzpicture}\n";
 }
 

@@ -31,7 +31,11 @@ TEST_CASE("Sweep: figure 12.28, N1, N2 and N1 - N2 against h/l for mg = 1, mu = 
   const std::string svg = sweep_svg(r);
   CHECK(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0) == 0);
   CHECK(svg.find("stroke-dasharray=\"6,4\"") != std::string::npos);  // the tipped part
-  CHECK(sweep_pgfplots(r).find("\\addlegendentry{$N_{A} - N_{B}$}") != std::string::npos);
+  const std::string pgf = sweep_pgfplots(r);
+  CHECK(pgf.find("\\addlegendentry{$N_{A} - N_{B}$}") != std::string::npos);
+  // As the SVG, the tipped part (h > l/(2 mu) = 1 m, N_A < 0) dashed, joined to the solid part.
+  CHECK(pgf.find("\\addplot[color=blue, thick, forget plot, dashed] coordinates {(1.05,-0.025) (1.1,-0.05)") != std::string::npos);
+  CHECK(pgf.find("\\addlegendentry{dashed: invalid}") != std::string::npos);
 }
 
 TEST_CASE("Sweep: fixed values are in the parameter's unit", "[sweep]") {
