@@ -117,18 +117,27 @@ std::string derivation_text(const Derivation& d) {
 
 // ---- LaTeX --------------------------------------------------------------------------------
 
-std::string latex_equation(const Step& st) {
-  std::string body = st.equals_constant ? to_latex(st.lhs) + " = \\text{const}"
-                                        : to_latex(st.lhs) + " " + tex_relation(st.relation) + " " + to_latex(st.rhs);
-  if (st.boxed) body = "\\boxed{" + body + "}";
+// One line of an align* block: aligned on its relation (a boxed result is one box, aligned
+// at its start), its number as a note, its label as a tag.
+std::string latex_line(const Step& st) {
+  const std::string lhs = to_latex(st.lhs);
+  const std::string rhs = st.equals_constant ? "\\text{const}" : to_latex(st.rhs);
+  const std::string rel = st.equals_constant ? "=" : tex_relation(st.relation);
+  std::string body = st.boxed ? "&\\boxed{" + lhs + " " + rel + " " + rhs + "}" : lhs + " &" + rel + " " + rhs;
   if (!st.note.empty()) body += " \\quad \\left(= " + [&] {
     // note is "decimal unit"
     const auto sp = st.note.find(' ');
     if (sp == std::string::npos) return st.note;
     return st.note.substr(0, sp) + "\\," + unit_latex(st.note.substr(sp + 1));
   }() + "\\right)";
-  const std::string tag = st.text.empty() ? "" : " \\tag*{" + tex_escape(st.text) + "}";
-  return "\\begin{equation*}\n  " + body + tag + "\n\\end{equation*}\n";
+  return body + (st.text.empty() ? "" : " \\tag*{" + tex_escape(st.text) + "}");
+}
+
+// Equations one after another, in one align* block.
+std::string latex_equations(const std::vector<const Step*>& steps) {
+  std::string out = "\\begin{align*}\n";
+  for (std::size_t i = 0; i < steps.size(); ++i) out += "  " + latex_line(*steps[i]) + (i + 1 < steps.size() ? " \\\\\n" : "\n");
+  return out + "\\end{align*}\n";
 }
 
 std::string latex_preamble(bool plots) {
@@ -142,8 +151,14 @@ std::string latex_body(const Derivation& d, bool full, const std::string& title)
   std::string out = "\\section*{" + tex_escape(title) + "}\n";
   if (full) {
     bool in_list = false;
+    std::vector<const Step*> run;  // equations waiting for their align* block
+    auto flush = [&] {
+      if (!run.empty()) out += latex_equations(run);
+      run.clear();
+    };
     for (const auto& st : d.steps) {
       const bool listed = st.kind == Step::Kind::bullet || st.kind == Step::Kind::given;
+      if (st.kind != Step::Kind::equation) flush();
       if (!listed && in_list) {
         out += "\\end{itemize}\n";
         in_list = false;
@@ -162,9 +177,10 @@ std::string latex_body(const Derivation& d, bool full, const std::string& title)
           out += "  \\item $" + to_latex(st.lhs) + " = " + st.number +
                  (st.note.empty() ? "" : "\\," + unit_latex(st.note)) + "$\n";
           break;
-        case Step::Kind::equation: out += latex_equation(st); break;
+        case Step::Kind::equation: run.push_back(&st); break;
       }
     }
+    flush();
     if (in_list) out += "\\end{itemize}\n";
     if (!d.figure_pgfplots.empty())
       out += "\\subsection*{Sweep}\n\\begin{center}\n" + d.figure_pgfplots + "\\end{center}\n";
@@ -174,6 +190,7 @@ std::string latex_body(const Derivation& d, bool full, const std::string& title)
       out += "\\begin{center}\n" + d.motion_pgfplots + "\\end{center}\n";
     }
   } else {
+    std::vector<Step> results;
     for (const auto& a : d.answers) {
       if (!a.closed_form) continue;
       Step st;
@@ -182,8 +199,11 @@ std::string latex_body(const Derivation& d, bool full, const std::string& title)
       st.rhs = *a.closed_form;
       st.boxed = true;
       st.note = value_text(a.value);
-      out += latex_equation(st);
+      results.push_back(st);
     }
+    std::vector<const Step*> run;
+    for (const auto& st : results) run.push_back(&st);
+    if (!run.empty()) out += latex_equations(run);
   }
   return out;
 }
