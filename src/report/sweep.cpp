@@ -182,6 +182,31 @@ std::string sweep_csv(const SweepResult& r) {
   return out;
 }
 
+namespace {
+
+// The runs of a curve's points with one validity each: [begin, end) of defined points, the
+// next run's first point included so that runs join (solid where valid, dashed where not).
+struct Run {
+  std::size_t begin, end;
+  bool valid;
+};
+std::vector<Run> validity_runs(const SweepResult& r, std::size_t c) {
+  std::vector<Run> out;
+  std::size_t i = 0;
+  while (i < r.x.size()) {
+    while (i < r.x.size() && !r.y[c][i]) ++i;
+    if (i >= r.x.size()) break;
+    const bool valid = r.valid[i];
+    std::size_t j = i;
+    while (j < r.x.size() && r.y[c][j] && r.valid[j] == valid) ++j;
+    out.push_back({i, j < r.x.size() && r.y[c][j] ? j + 1 : j, valid});
+    i = j;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string sweep_svg(const SweepResult& r) {
   // A plain line chart: axes with ticks, one polyline per curve (dashed where a validity
   // condition fails), a legend. Written by hand: it is a few dozen lines of SVG.
@@ -236,18 +261,11 @@ std::string sweep_svg(const SweepResult& r) {
   for (std::size_t c = 0; c < r.y.size(); ++c) {
     const char* colour = colours[c % 6];
     // Runs of points with the same validity: solid where valid, dashed where not.
-    std::size_t i = 0;
-    while (i < r.x.size()) {
-      while (i < r.x.size() && !r.y[c][i]) ++i;
-      if (i >= r.x.size()) break;
-      const bool valid = r.valid[i];
+    for (const Run& run : validity_runs(r, c)) {
       std::string points;
-      std::size_t j = i;
-      for (; j < r.x.size() && r.y[c][j] && r.valid[j] == valid; ++j) points += fmt::format("{:.2f},{:.2f} ", sx(r.x[j]), sy(*r.y[c][j]));
-      if (j < r.x.size() && r.y[c][j]) points += fmt::format("{:.2f},{:.2f} ", sx(r.x[j]), sy(*r.y[c][j]));
+      for (std::size_t j = run.begin; j < run.end; ++j) points += fmt::format("{:.2f},{:.2f} ", sx(r.x[j]), sy(*r.y[c][j]));
       out += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"2\"{} points=\"{}\"/>\n", colour,
-                         valid ? "" : " stroke-dasharray=\"6,4\"", points);
-      i = j;
+                         run.valid ? "" : " stroke-dasharray=\"6,4\"", points);
     }
     const double ly = top + 10 + 20 * static_cast<double>(c);
     out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"2\"/>"
@@ -273,17 +291,10 @@ std::string sweep_pgfplots(const SweepResult& r) {
   for (std::size_t c = 0; c < r.y.size(); ++c) {
     const std::string colour = colours[c % 6];
     out += "\\addlegendimage{color=" + colour + ", thick}\n\\addlegendentry{$" + r.latex[c] + "$}\n";
-    std::size_t i = 0;
-    while (i < r.x.size()) {
-      while (i < r.x.size() && !r.y[c][i]) ++i;
-      if (i >= r.x.size()) break;
-      const bool valid = r.valid[i];
+    for (const Run& run : validity_runs(r, c)) {
       std::string points;
-      std::size_t j = i;
-      for (; j < r.x.size() && r.y[c][j] && r.valid[j] == valid; ++j) points += "(" + num(r.x[j]) + "," + num(*r.y[c][j]) + ") ";
-      if (j < r.x.size() && r.y[c][j]) points += "(" + num(r.x[j]) + "," + num(*r.y[c][j]) + ") ";
-      out += "\\addplot[color=" + colour + ", thick, forget plot" + (valid ? "" : ", dashed") + "] coordinates {" + points + "};\n";
-      i = j;
+      for (std::size_t j = run.begin; j < run.end; ++j) points += "(" + num(r.x[j]) + "," + num(*r.y[c][j]) + ") ";
+      out += "\\addplot[color=" + colour + ", thick, forget plot" + (run.valid ? "" : ", dashed") + "] coordinates {" + points + "};\n";
     }
   }
   if (std::find(r.valid.begin(), r.valid.end(), false) != r.valid.end())
