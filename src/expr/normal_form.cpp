@@ -1,11 +1,12 @@
 #include "expr/normal_form.hpp"
+#include "expr/rational.hpp"
 
 namespace tackle {
 
 using namespace GiNaC;
 
 NormalForm::NormalForm(const ex& e) {
-  const ex nd = normal(e).numer_denom();
+  const ex nd = numer_denom_remembered(e);
   num = nd.op(0);
   den = nd.op(1);
 }

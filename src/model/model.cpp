@@ -2,6 +2,8 @@
 // src/model/builder/ (stages.hpp) in order on one BuildContext.
 #include "model/model.hpp"
 
+#include "expr/rational.hpp"
+
 #include "model/builder/context.hpp"
 #include "model/builder/stages.hpp"
 
@@ -24,7 +26,7 @@ ex time_derivative(const ex& e, const std::vector<Body>& bodies, const std::vect
 
 ex reduced_on_lengths(const ex& e, const Model& m) {
   if (m.lengths.empty()) return e;
-  ex n = normal(e).numer_denom().op(0).expand();
+  ex n = numer_denom_remembered(e).op(0).expand();
   for (const auto& l : m.lengths) n = rem(n, pow(l.symbol, 2) - l.squared, ex_to<symbol>(l.symbol)).expand();
   return n;
 }

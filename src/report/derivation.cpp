@@ -183,7 +183,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
                 list_of(s.unknowns.size()) + "); rank " + std::to_string(sol.rank) + ".",
             s.unknowns);
   for (const auto& group : sol.redundant)
-    text("Redundant: " + join(group, ", ") + " are linearly dependent (one follows from the others).");
+    text(group.size() == 1 ? "Redundant: " + group[0] + " holds identically (it reads 0 = 0)."
+                           : "Redundant: " + join(group, ", ") + " are linearly dependent (one follows from the others).");
   switch (sol.status) {
     case Solution::Status::determined: d.status = "determined"; text("Every unknown is determined."); break;
     case Solution::Status::underdetermined:

@@ -10,6 +10,7 @@
 
 #include "core/diagnostics.hpp"
 #include "expr/print.hpp"
+#include "solve/eliminate.hpp"
 
 namespace tackle {
 
@@ -214,14 +215,14 @@ ex factored(const ex& polynomial) {
 }  // namespace
 
 ex simplest(const ex& e) {
-  ex n = normal(e);
+  ex n = normal_remembered(e);
   // sin^2 + cos^2 = 1: the shorter of the two rewritings, when one is shorter.
   if (has_trig(n))
     for (const bool to_cos : {true, false}) {
       const ex t = normal(pythagoras(n, to_cos));
       if (to_text(t).size() < to_text(n).size()) n = t;
     }
-  const ex nd = n.numer_denom();
+  const ex nd = numer_denom_of_normal(n);
   const ex f = factored(nd.op(0)) / factored(nd.op(1));
   return to_text(f).size() < to_text(n).size() ? f : n;
 }
@@ -229,10 +230,9 @@ ex simplest(const ex& e) {
 namespace {
 
 // Zero, also by sin^2 + cos^2 = 1 (closed forms are simplified with it).
-bool zero(const ex& e) {
-  const ex n = normal(e);
-  return n.is_zero() || (has_trig(n) && normal(pythagoras(n, true)).is_zero());
-}
+bool zero(const ex& e) { return is_zero_exactly(e); }
+
+
 
 // True when a denominator of `e` (innermost first) vanishes at `point`.
 bool pole_at(const ex& e, const exmap& point) {
@@ -243,6 +243,12 @@ bool pole_at(const ex& e, const exmap& point) {
   return false;
 }
 
+std::size_t node_count(const ex& e) {
+  std::size_t n = 0;
+  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) ++n;
+  return n;
+}
+
 // Random exact positive rationals for every symbol in `e` that `keep` does not hold.
 // Values are drawn for the symbols in the order of their names, not in the order GiNaC
 // keeps them, so the points are the same in every run.
@@ -251,7 +257,7 @@ exmap random_point(const ex& e, std::mt19937& rng) {
   for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
     if (is_a<symbol>(*it)) by_name.emplace(ex_to<symbol>(*it).get_name(), *it);
   exmap m;
-  std::uniform_int_distribution<int> num(1, 97), den(1, 13);
+  std::uniform_int_distribution<long> num(1, 1L << 30), den(1, 1L << 20);
   for (const auto& [name, sym] : by_name) m[sym] = numeric(num(rng), den(rng));
   return m;
 }
@@ -273,7 +279,7 @@ int known_sign(const ex& e) { return sign_of(e).value_or(0); }
 // `e op 0` with the factors of known sign divided out: returns the factors left (their
 // product), and flips `op` for each negative factor divided out.
 ex strip_signed_factors(const ex& e, std::string& op) {
-  const ex nd = normal(e).numer_denom();
+  const ex nd = numer_denom_remembered(e);
   ex rest = 1;
   for (int side = 0; side < 2; ++side) {
     const bool denominator = side == 1;
@@ -306,7 +312,7 @@ namespace {
 // `rest reduced_op 0` (factors of known sign divided out) solved for each parameter.
 std::vector<SolvedFor> solve_reduced(const ex& rest, const std::string& reduced_op, const std::vector<ex>& parameters) {
   std::vector<SolvedFor> out;
-  const ex nd = rest.numer_denom();
+  const ex nd = numer_denom_remembered(rest);
   if (!nd.op(1).is_equal(1)) return out;  // a denominator of unknown sign remains
   const ex poly = nd.op(0).expand();
   for (const ex& p : parameters) {
@@ -330,31 +336,32 @@ std::vector<SolvedFor> solve_condition(const ex& expr, const std::string& op, co
 
 Solution solve_equations(const std::string& file, const std::vector<Equation>& equations,
                          const std::vector<ex>& unknowns) {
-  struct View {
-    const std::vector<Equation>& equations;
-    const std::vector<ex>& unknowns;
-  } s{equations, unknowns};
   Solution sol;
-  const std::size_t n_eq = s.equations.size(), n_unk = s.unknowns.size();
-  const std::size_t width = n_unk + 1 + n_eq;  // [A | b | tracking]
-  std::vector<std::vector<ex>> rows(n_eq, std::vector<ex>(width, 0));
+  const std::size_t n_eq = equations.size(), n_unk = unknowns.size();
+  std::unordered_map<ex, std::size_t, ExHash, ex_is_equal> column_of;
+  for (std::size_t j = 0; j < n_unk; ++j) column_of.emplace(unknowns[j], j);
+  SparseSystem system;
+  system.columns = n_unk;
+  system.a.resize(n_eq);
+  system.b.resize(n_eq);
   std::vector<std::string> problems;
   for (std::size_t i = 0; i < n_eq; ++i) {
-    const ex residual = (s.equations[i].lhs - s.equations[i].rhs).expand();
+    const ex residual = (equations[i].lhs - equations[i].rhs).expand();
+    // The unknowns this equation holds, in the unknowns' order.
+    std::set<std::size_t> present;
+    for (const_preorder_iterator it = residual.preorder_begin(); it != residual.preorder_end(); ++it)
+      if (is_a<symbol>(*it))
+        if (const auto c = column_of.find(*it); c != column_of.end()) present.insert(c->second);
     exmap zero_unknowns;
-    for (const auto& u : s.unknowns) zero_unknowns[u] = 0;
-    for (std::size_t j = 0; j < n_unk; ++j) {
-      const ex a = residual.diff(ex_to<symbol>(s.unknowns[j]));
-      for (const auto& u : s.unknowns)
-        if (a.has(u)) {
-          problems.push_back("equation '" + s.equations[i].label + "' is not linear in " + to_text(s.unknowns[j]) +
-                             " (tackle solves linear systems)");
-          break;
-        }
-      rows[i][j] = a;
+    for (const std::size_t j : present) zero_unknowns[unknowns[j]] = 0;
+    for (const std::size_t j : present) {
+      const ex a = residual.diff(ex_to<symbol>(unknowns[j]));
+      if (std::any_of(present.begin(), present.end(), [&](std::size_t k) { return a.has(unknowns[k]); }))
+        problems.push_back("equation '" + equations[i].label + "' is not linear in " + to_text(unknowns[j]) +
+                           " (tackle solves linear systems)");
+      if (!zero(a)) system.a[i][j] = normal(a);
     }
-    rows[i][n_unk] = -residual.subs(zero_unknowns);
-    rows[i][n_unk + 1 + i] = 1;
+    system.b[i] = normal(-residual.subs(zero_unknowns));
   }
   if (!problems.empty()) {
     std::vector<Diagnostic> ds;
@@ -362,64 +369,52 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
     throw InputError(ds);
   }
 
-  // Gauss-Jordan elimination.
-  std::vector<int> pivot_col_of_row;
-  std::size_t r = 0;
-  for (std::size_t j = 0; j < n_unk && r < n_eq; ++j) {
-    std::optional<std::size_t> best;
-    std::size_t best_size = 0;
-    for (std::size_t k = r; k < n_eq; ++k) {
-      if (zero(rows[k][j])) continue;
-      const std::size_t size = is_a<numeric>(rows[k][j]) ? 0 : to_text(rows[k][j]).size();
-      if (!best || size < best_size) {
-        best = k;
-        best_size = size;
-      }
-    }
-    if (!best) continue;
-    std::swap(rows[r], rows[*best]);
-    const ex p = rows[r][j];
-    for (auto& x : rows[r]) x = normal(x / p);
-    for (std::size_t k = 0; k < n_eq; ++k) {
-      if (k == r || zero(rows[k][j])) continue;
-      const ex f = rows[k][j];
-      for (std::size_t c = 0; c < width; ++c) rows[k][c] = normal(rows[k][c] - f * rows[r][c]);
-    }
-    pivot_col_of_row.push_back(static_cast<int>(j));
-    ++r;
+  // Sparse elimination, Markowitz pivots first. When some unknown has no pivot, again with
+  // the columns in order, so that the free unknowns are the ones a person reading the
+  // unknowns in order would leave free; when some equation is left over, again with the
+  // rows tracked, to say which equations it combines.
+  Elimination e = eliminate(system, unknowns, Pivoting::markowitz, false);
+  Pivoting pivoting = Pivoting::markowitz;
+  if (e.rank < n_unk) {
+    pivoting = Pivoting::in_column_order;
+    e = eliminate(system, unknowns, pivoting, !e.leftover.empty());
+  } else if (!e.leftover.empty()) {
+    e = eliminate(system, unknowns, pivoting, true);
   }
-  sol.rank = r;
+  sol.rank = e.rank;
 
-  auto involved = [&](const std::vector<ex>& row) {
+  auto involved = [&](const Elimination::Leftover& l) {
     std::vector<std::string> labels;
-    for (std::size_t i = 0; i < n_eq; ++i)
-      if (!zero(row[n_unk + 1 + i])) labels.push_back(s.equations[i].label);
+    for (const auto& [row, coefficient] : l.combination) labels.push_back(equations[row].label);
     return labels;
   };
   // Rows without a pivot: 0 = b. Nonzero b: the equations that combine to it conflict.
-  for (std::size_t k = r; k < n_eq; ++k) {
-    if (!zero(rows[k][n_unk])) {
+  for (const auto& l : e.leftover) {
+    if (!zero(l.rhs)) {
       sol.status = Solution::Status::inconsistent;
-      for (const auto& l : involved(rows[k]))
-        if (std::find(sol.conflicts.begin(), sol.conflicts.end(), l) == sol.conflicts.end()) sol.conflicts.push_back(l);
+      for (const auto& label : involved(l))
+        if (std::find(sol.conflicts.begin(), sol.conflicts.end(), label) == sol.conflicts.end())
+          sol.conflicts.push_back(label);
     } else {
-      sol.redundant.push_back(involved(rows[k]));
+      sol.redundant.push_back(involved(l));
     }
   }
   if (sol.status == Solution::Status::inconsistent) return sol;
 
-  std::vector<bool> is_pivot(n_unk, false);
-  for (int c : pivot_col_of_row) is_pivot[c] = true;
   for (std::size_t j = 0; j < n_unk; ++j)
-    if (!is_pivot[j]) sol.free.push_back(s.unknowns[j]);
+    if (!e.pivot[j]) sol.free.push_back(unknowns[j]);
   if (!sol.free.empty()) sol.status = Solution::Status::underdetermined;
 
-  for (std::size_t k = 0; k < r; ++k) {
-    const ex u = s.unknowns[pivot_col_of_row[k]];
-    ex rest = 0;  // the free unknowns in this row
-    for (std::size_t j = 0; j < n_unk; ++j)
-      if (!is_pivot[j] && !zero(rows[k][j])) rest += rows[k][j] * s.unknowns[j];
-    const ex value = simplest(rows[k][n_unk]);
+  exmap no_free;
+  for (const auto& f : sol.free) no_free[f] = 0;
+  for (std::size_t j = 0; j < n_unk; ++j) {
+    if (!e.pivot[j]) continue;
+    const ex& u = unknowns[j];
+    const ex& general = e.value[j];
+    ex rest = 0;  // the free unknowns in this unknown's row: u + rest = value
+    for (const auto& f : sol.free)
+      if (general.has(f)) rest -= normal(general.diff(ex_to<symbol>(f))) * f;
+    const ex value = simplest(sol.free.empty() ? general : general.subs(no_free));
     sol.general[u] = value - rest;
     if (rest.is_zero())
       sol.values.push_back({u, value});
@@ -427,23 +422,70 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
       sol.combinations.push_back({u + rest, value});
   }
 
-  // Verify: the general solution satisfies every equation, symbolically and at random exact
-  // rational values of the parameters and free unknowns.
-  std::mt19937 rng(20261121);
-  for (const auto& eq : s.equations) {
-    const ex residual = (eq.lhs - eq.rhs).subs(sol.general);
-    if (!zero(residual))
-      throw InternalError("solution fails equation '" + eq.label + "': residual " + to_text(normal(residual)));
-    // A point where some denominator vanishes is drawn again (GiNaC would throw there, from
-    // inside a node it is making; found by fuzzing).
-    for (int trial = 0, draws = 0; trial < 3 && draws < 30; ++draws) {
-      const exmap point = random_point(residual, rng);
-      if (pole_at(residual, point)) continue;
-      const ex at = residual.subs(point);
-      if (!zero(at)) throw InternalError("solution fails equation '" + eq.label + "' at a random point");
-      ++trial;
+  // Verify: the general solution satisfies every equation at random exact rational values
+  // of the parameters and free unknowns (drawn from about 10^15 values each, so a residual
+  // that is not zero vanishes at one by chance with a probability of its degree over 10^15),
+  // and symbolically when the solution is small (a textbook problem's always is; expanding
+  // large residuals is what would make this the slowest step). At a point, each unknown's
+  // value is evaluated once and put into every equation.
+  std::size_t solution_nodes = 0;
+  for (const auto& [u, g] : sol.general) solution_nodes += node_count(g);
+  const bool symbolically = solution_nodes <= 2000;
+  if (symbolically)
+    for (const auto& eq : equations) {
+      const ex residual = (eq.lhs - eq.rhs).subs(sol.general);
+      if (!zero(residual))
+        throw InternalError("solution fails equation '" + eq.label + "': residual " + to_text(normal(residual)));
     }
+  lst everything;
+  for (const auto& eq : equations) everything.append(eq.lhs - eq.rhs);
+  for (const auto& [u, g] : sol.general) everything.append(g);
+  std::mt19937 rng(20261121);
+  int trial = 0;
+  // A point where some denominator vanishes is drawn again (GiNaC would throw there, from
+  // inside a node it is making; found by fuzzing). Rational functions are evaluated as
+  // numbers; anything else (sin(theta), a turning strand's square root) by substitution.
+  for (int draws = 0; trial < 2 && draws < 30; ++draws) {
+    const exmap point = random_point(everything, rng);
+    RationalPoint numbers;
+    for (const auto& [sym, v] : point) numbers.emplace(sym, ex_to<numeric>(v));
+    exmap at = point;
+    bool pole = false, rational = true;
+    for (const auto& [u, g] : sol.general) {
+      const RationalAt r = rational_at(g, numbers);
+      if (r.kind == RationalAt::Kind::pole || (r.kind == RationalAt::Kind::other && pole_at(g, point))) {
+        pole = true;
+        break;
+      }
+      if (r.kind == RationalAt::Kind::value) {
+        numbers.insert_or_assign(u, r.value);
+        at[u] = r.value;
+      } else {
+        rational = false;
+        at[u] = g.subs(point);
+      }
+    }
+    if (pole) continue;
+    std::vector<ex> residuals;  // those that are not plain numbers, put in by substitution
+    for (std::size_t i = 0; !pole && i < equations.size(); ++i) {
+      const ex residual = equations[i].lhs - equations[i].rhs;
+      const RationalAt r = rational ? rational_at(residual, numbers) : RationalAt{};
+      if (r.kind == RationalAt::Kind::pole || (r.kind == RationalAt::Kind::other && pole_at(residual, at)))
+        pole = true;
+      else if (r.kind == RationalAt::Kind::value && !r.value.is_zero())
+        throw InternalError("solution fails equation '" + equations[i].label + "' at a random point");
+      else if (r.kind == RationalAt::Kind::other && !zero(residual.subs(at)))
+        throw InternalError("solution fails equation '" + equations[i].label + "' at a random point");
+    }
+    if (pole) continue;
+    ++trial;
   }
+  if (trial == 0 && !symbolically)
+    for (const auto& eq : equations) {
+      const ex residual = (eq.lhs - eq.rhs).subs(sol.general);
+      if (!zero(residual))
+        throw InternalError("solution fails equation '" + eq.label + "': residual " + to_text(normal(residual)));
+    }
 
   return sol;
 }

@@ -1,0 +1,201 @@
+#!/usr/bin/env python3
+"""Scale benchmark: tackle against its peers on the same equations, in the same run.
+
+  python3 bench/scale.py [--kinds chain,cascade,tackle] [--sizes chain=16,32,64,128,256 ...]
+                         [--peers ginac,sympy,maxima,giac] [--timeout 60] [--repeat 3]
+
+For each kind (bench/generate.py) and size n it writes the description, then times, whole
+process and best of --repeat runs:
+  tackle solve    `build/tackle solve FILE`  (peak memory from /usr/bin/time)
+  tackle derive   `build/tackle derive FILE`
+and, on the equations tackle writes (`derive --format json`), the peers:
+  ginac           build/bench/ginac_lsolve: GiNaC's lsolve(), each value put in normal form
+  sympy           python3 with SymPy: linsolve()
+  maxima          maxima --batch-string: linsolve()
+  giac            giac: linsolve()
+Each peer's time includes its start-up, printed once on its own (a 1-unknown system). A run
+past --timeout is shown as "> T". The growth exponent between the two largest sizes that
+finished is printed for each column. Timings are for reading; nothing here passes or fails.
+"""
+import argparse
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BUILD = os.environ.get("TACKLE_BUILD_DIR", os.path.join(ROOT, "build"))
+TACKLE = os.path.join(BUILD, "tackle")
+GINAC = os.path.join(BUILD, "bench", "ginac_lsolve")
+DEFAULT_SIZES = {"chain": [16, 32, 64, 128, 256], "cascade": [2, 4, 6, 8, 10], "tackle": [4, 16, 64]}
+
+
+def run(cmd, timeout, stdin=None):
+    """(seconds, peak KB or None, completed) of one whole-process run."""
+    timed = ["/usr/bin/time", "-f", "%M"] + cmd if os.path.exists("/usr/bin/time") else cmd
+    start = time.perf_counter()
+    try:
+        p = subprocess.run(timed, input=stdin, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return None, None, None
+    seconds = time.perf_counter() - start
+    peak = None
+    if timed is not cmd:
+        last = p.stderr.strip().splitlines()[-1:] or [""]
+        peak = int(last[0]) if last[0].isdigit() else None
+    if p.returncode != 0:
+        sys.stderr.write(f"failed ({p.returncode}): {' '.join(cmd)}\n{p.stderr[-2000:]}\n")
+        return None, None, p
+    return seconds, peak, p
+
+
+def best(cmd, timeout, repeat, stdin=None):
+    times, peak, out = [], None, None
+    for _ in range(repeat):
+        t, m, p = run(cmd, timeout, stdin)
+        if t is None:
+            return None, None, None
+        times.append(t)
+        peak = max(peak or 0, m or 0) or None
+        out = p
+        if t > 5:  # one run of a slow case is enough
+            break
+    return min(times), peak, out
+
+
+NAME = re.compile(r"\b(ddot|dot)\(([A-Za-z_][A-Za-z_0-9]*)\)")
+
+
+def plain(text):
+    """ddot(x_1) -> ddot_x_1: names every peer reads as one symbol."""
+    return NAME.sub(lambda m: f"{m.group(1)}_{m.group(2)}", text)
+
+
+def equations_of(path):
+    out = subprocess.run([TACKLE, "derive", "--format", "json", path], capture_output=True, text=True, check=True)
+    d = json.loads(out.stdout)
+    unknowns = [plain(u["name"]) for u in d["unknowns"]]
+    eqs = [(plain(e["lhs"]), plain(e["rhs"])) for e in d["equations"] if e.get("kind") != "definition"]
+    return unknowns, eqs
+
+
+def peer_command(peer, unknowns, eqs, workdir):
+    if peer == "ginac":
+        f = os.path.join(workdir, "system.txt")
+        with open(f, "w") as o:
+            o.write(" ".join(unknowns) + "\n")
+            for l, r in eqs:
+                o.write(f"{l} = {r}\n")
+        return [GINAC, f], None
+    if peer == "sympy":
+        f = os.path.join(workdir, "system.py")
+        with open(f, "w") as o:
+            o.write("from sympy import sympify, linsolve, Eq\n")
+            o.write(f"u = [sympify(n) for n in {unknowns!r}]\n")
+            o.write(f"e = [Eq(sympify(l), sympify(r)) for l, r in {eqs!r}]\n")
+            o.write("s = linsolve(e, u)\nprint(len(list(s)[0]))\n")
+        return [sys.executable, f], None
+    if peer == "maxima":
+        body = "display2d:false$ s: linsolve([" + ", ".join(f"{l} = {r}" for l, r in eqs) + "], [" + ", ".join(unknowns) + "])$ length(s);"
+        return ["maxima", "--very-quiet", "--batch-string=" + body], None
+    if peer == "giac":
+        f = os.path.join(workdir, "system.giac")
+        with open(f, "w") as o:
+            o.write("s:=linsolve([" + ", ".join(f"{l}={r}" for l, r in eqs) + "],[" + ", ".join(unknowns) + "]):;\nsize(s);\n")
+        return ["giac", f], None
+    raise ValueError(peer)
+
+
+def available(peer):
+    return {"ginac": os.path.exists(GINAC), "maxima": shutil.which("maxima") is not None,
+            "giac": shutil.which("giac") is not None}.get(peer, True) and (peer != "sympy" or _has_sympy())
+
+
+def _has_sympy():
+    try:
+        import sympy  # noqa: F401
+        return True
+    except ImportError:
+        return False
+
+
+def exponent(rows, column, sizes):
+    done = [(n, rows[n][column]) for n in sizes if rows[n].get(column)]
+    if len(done) < 2:
+        return "-"
+    (n1, t1), (n2, t2) = done[-2], done[-1]
+    return f"{math.log(t2 / t1) / math.log(n2 / n1):.2f}"
+
+
+def show(t, timeout):
+    if t is None:
+        return f"> {timeout:g} s"
+    return f"{t * 1000:.0f} ms" if t < 1 else f"{t:.2f} s"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--kinds", default="chain,cascade,tackle")
+    ap.add_argument("--sizes", action="append", default=[], help="KIND=N,N,...")
+    ap.add_argument("--peers", default="ginac,sympy,maxima,giac")
+    ap.add_argument("--timeout", type=float, default=60)
+    ap.add_argument("--repeat", type=int, default=3)
+    args = ap.parse_args()
+    sizes = dict(DEFAULT_SIZES)
+    for s in args.sizes:
+        k, v = s.split("=")
+        sizes[k] = [int(x) for x in v.split(",")]
+    peers = [p for p in args.peers.split(",") if p]
+    missing = [p for p in peers if not available(p)]
+    if missing:
+        sys.stderr.write(f"left out (not installed): {', '.join(missing)}\n")
+    peers = [p for p in peers if p not in missing]
+    work = tempfile.mkdtemp(prefix="tackle-scale-")
+    generate = os.path.join(ROOT, "bench", "generate.py")
+
+    # Start-up of each peer: a one-unknown system.
+    startup = {}
+    for p in peers:
+        cmd, stdin = peer_command(p, ["x"], [("2*x", "1")], work)
+        startup[p], _, _ = best(cmd, args.timeout, args.repeat, stdin)
+    t, _, _ = best([TACKLE, "--version"], args.timeout, args.repeat)
+    print(f"start-up: tackle {show(t, args.timeout)}, " + ", ".join(f"{p} {show(startup[p], args.timeout)}" for p in peers))
+
+    for kind in args.kinds.split(","):
+        rows = {}
+        for n in sizes[kind]:
+            path = os.path.join(work, f"{kind}-{n}.yaml")
+            with open(path, "w") as o:
+                o.write(subprocess.run([sys.executable, generate, kind, str(n)], capture_output=True, text=True, check=True).stdout)
+            row = {}
+            row["solve"], row["peak"], _ = best([TACKLE, "solve", path], args.timeout, args.repeat)
+            row["derive"], _, _ = best([TACKLE, "derive", path], args.timeout, args.repeat)
+            if peers:
+                unknowns, eqs = equations_of(path)
+                row["unknowns"] = len(unknowns)
+                for p in peers:
+                    cmd, stdin = peer_command(p, unknowns, eqs, work)
+                    row[p], _, _ = best(cmd, args.timeout, args.repeat, stdin)
+            rows[n] = row
+            print(f"  {kind} n={n} done", file=sys.stderr)
+        cols = ["solve", "derive"] + peers
+        print(f"\n{kind}")
+        print("| n | unknowns | tackle solve | peak | tackle derive | " + " | ".join(cols[2:]) + " |")
+        print("|---" * (5 + len(peers)) + "|")
+        for n in sizes[kind]:
+            r = rows[n]
+            peak = f"{r['peak'] / 1024:.0f} MB" if r.get("peak") else "-"
+            print(f"| {n} | {r.get('unknowns', '-')} | {show(r['solve'], args.timeout)} | {peak} | {show(r['derive'], args.timeout)} | "
+                  + " | ".join(show(r.get(p), args.timeout) for p in peers) + " |")
+        print("| growth exponent | | " + " | ".join([exponent(rows, "solve", sizes[kind]), "", exponent(rows, "derive", sizes[kind])]
+                                                    + [exponent(rows, p, sizes[kind]) for p in peers]) + " |")
+    shutil.rmtree(work, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()

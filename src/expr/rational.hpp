@@ -1,0 +1,42 @@
+// Rational functions: normal forms and zero tests, remembered per thread.
+#pragma once
+
+#include <unordered_map>
+
+#include <ginac/ginac.h>
+
+namespace tackle {
+
+/// normal(e), remembered per thread (the last 8192 expressions): a normal form is met again
+/// and again on its way through the solver and the report, and normal() of a rational
+/// function of many symbols costs a gcd each time. A normal form is remembered as its own
+/// normal form too. What is remembered changes no result: equal input, equal output.
+[[nodiscard]] GiNaC::ex normal_remembered(const GiNaC::ex& e);
+
+/// The numerator and denominator of normal(e) (GiNaC's numer_denom(), which normalizes
+/// again each time), remembered the same way.
+[[nodiscard]] GiNaC::ex numer_denom_remembered(const GiNaC::ex& e);
+
+/// The numerator and denominator of an expression already in normal form (normal()'s
+/// output), read off its structure: factors with a negative exponent and the denominator of
+/// the numeric coefficient below, the rest above. No gcd is computed again.
+[[nodiscard]] GiNaC::ex numer_denom_of_normal(const GiNaC::ex& n);
+
+/// The exact value of a rational function of symbols at a point (each symbol -> a rational
+/// number): `pole` when a denominator vanishes there, `other` when `e` is not a rational
+/// function of the point's symbols (a function, a fractional power, a symbol not given).
+/// A number is computed, never an expression: cheaper than subs() and normal().
+struct RationalAt {
+  enum class Kind { value, pole, other } kind = Kind::other;
+  GiNaC::numeric value;
+};
+struct ExHash {
+  std::size_t operator()(const GiNaC::ex& x) const { return x.gethash(); }
+};
+using RationalPoint = std::unordered_map<GiNaC::ex, GiNaC::numeric, ExHash, GiNaC::ex_is_equal>;
+[[nodiscard]] RationalAt rational_at(const GiNaC::ex& e, const RationalPoint& point);
+
+/// Zero, exactly: normal() and sin^2 + cos^2 = 1.
+[[nodiscard]] bool is_zero_exactly(const GiNaC::ex& e);
+
+}  // namespace tackle

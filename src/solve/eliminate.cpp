@@ -1,0 +1,167 @@
+#include "solve/eliminate.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <optional>
+#include <set>
+#include <tuple>
+
+
+namespace tackle {
+
+using namespace GiNaC;
+
+namespace {
+
+// The number of nodes of an expression: the pivot of fewest nodes among equally sparse
+// candidates keeps the entries small. Counted, not printed, and the same in every run.
+std::size_t nodes(const ex& e) {
+  if (is_a<numeric>(e)) return 0;
+  std::size_t n = 0;
+  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) ++n;
+  return n;
+}
+
+using Row = std::map<std::size_t, ex>;
+
+// One elimination step's bookkeeping: rows as maps, and for each column the active rows
+// that hold it.
+struct Work {
+  std::vector<Row> a;
+  std::vector<ex> b;
+  std::vector<Row> t;  // tracking: original row -> coefficient
+  std::vector<std::set<std::size_t>> rows_of;  // column -> active rows with a nonzero entry
+  std::vector<bool> active;
+  bool track = false;
+
+  // row k -= f * row r, in A, b and the tracking; entries that cancel are removed.
+  void subtract(std::size_t k, const ex& f, std::size_t r) {
+    for (const auto& [c, v] : a[r]) {
+      auto it = a[k].find(c);
+      const ex x = it == a[k].end() ? -f * v : it->second - f * v;
+      const ex n = normal(x);
+      if (is_zero_exactly(n)) {
+        if (it != a[k].end()) a[k].erase(it);
+        rows_of[c].erase(k);
+      } else {
+        a[k][c] = n;
+        rows_of[c].insert(k);
+      }
+    }
+    if (!b[r].is_zero()) b[k] = normal(b[k] - f * b[r]);
+    if (track)
+      for (const auto& [c, v] : t[r]) {
+        auto it = t[k].find(c);
+        const ex n = normal(it == t[k].end() ? -f * v : it->second - f * v);
+        if (is_zero_exactly(n)) {
+          if (it != t[k].end()) t[k].erase(it);
+        } else {
+          t[k][c] = n;
+        }
+      }
+  }
+};
+
+struct Pivot {
+  std::size_t row, column;
+};
+
+std::optional<Pivot> choose(const Work& w, const std::vector<bool>& eliminated, Pivoting pivoting) {
+  if (pivoting == Pivoting::in_column_order) {
+    for (std::size_t c = 0; c < w.rows_of.size(); ++c) {
+      if (eliminated[c] || w.rows_of[c].empty()) continue;
+      std::optional<Pivot> best;
+      std::tuple<std::size_t, std::size_t> best_key{};
+      for (const std::size_t r : w.rows_of[c]) {
+        const std::tuple<std::size_t, std::size_t> key{w.a[r].size(), nodes(w.a[r].at(c))};
+        if (!best || key < best_key) {
+          best = Pivot{r, c};
+          best_key = key;
+        }
+      }
+      return best;
+    }
+    return std::nullopt;
+  }
+  // Markowitz: the smallest (other entries in the row) x (other entries in the column),
+  // then the entry of fewest nodes, then the first row and column.
+  std::size_t best_count = std::numeric_limits<std::size_t>::max();
+  std::vector<Pivot> tied;
+  for (std::size_t r = 0; r < w.a.size(); ++r) {
+    if (!w.active[r]) continue;
+    for (const auto& [c, v] : w.a[r]) {
+      const std::size_t count = (w.a[r].size() - 1) * (w.rows_of[c].size() - 1);
+      if (count < best_count) {
+        best_count = count;
+        tied.clear();
+      }
+      if (count == best_count) tied.push_back({r, c});
+    }
+  }
+  if (tied.empty()) return std::nullopt;
+  std::optional<Pivot> best;
+  std::size_t best_nodes = 0;
+  for (const Pivot& p : tied) {
+    const std::size_t n = nodes(w.a[p.row].at(p.column));
+    if (!best || n < best_nodes) {
+      best = p;
+      best_nodes = n;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+Elimination eliminate(const SparseSystem& s, const std::vector<ex>& symbols, Pivoting pivoting, bool track) {
+  Work w;
+  w.a = s.a;
+  w.b = s.b;
+  w.track = track;
+  const std::size_t n_rows = s.a.size();
+  w.active.assign(n_rows, true);
+  w.rows_of.resize(s.columns);
+  if (track) {
+    w.t.resize(n_rows);
+    for (std::size_t i = 0; i < n_rows; ++i) w.t[i][i] = 1;
+  }
+  for (std::size_t i = 0; i < n_rows; ++i)
+    for (const auto& [c, v] : w.a[i]) w.rows_of[c].insert(i);
+
+  std::vector<bool> eliminated(s.columns, false);
+  std::vector<Pivot> order;
+  while (const auto p = choose(w, eliminated, pivoting)) {
+    const std::size_t r = p->row, c = p->column;
+    w.active[r] = false;
+    for (const auto& [cc, v] : w.a[r]) w.rows_of[cc].erase(r);
+    const ex pivot = w.a[r].at(c);
+    const std::vector<std::size_t> others(w.rows_of[c].begin(), w.rows_of[c].end());
+    for (const std::size_t k : others) w.subtract(k, normal(w.a[k].at(c) / pivot), r);
+    eliminated[c] = true;
+    order.push_back(*p);
+  }
+
+  Elimination out;
+  out.rank = order.size();
+  out.pivot = eliminated;
+  out.value.assign(s.columns, ex(0));
+  // Back substitution, last pivot first: a pivot row holds its pivot, the columns pivoted
+  // after it and free columns.
+  for (auto it = order.rbegin(); it != order.rend(); ++it) {
+    ex rest = w.b[it->row];
+    for (const auto& [cc, v] : w.a[it->row])
+      if (cc != it->column) rest -= v * (eliminated[cc] ? out.value[cc] : symbols[cc]);
+    out.value[it->column] = normal_remembered(rest / w.a[it->row].at(it->column));
+  }
+  for (std::size_t i = 0; i < n_rows; ++i) {
+    if (!w.active[i]) continue;
+    Elimination::Leftover l;
+    l.row = i;
+    l.rhs = w.b[i];
+    if (track) l.combination = w.t[i];
+    out.leftover.push_back(std::move(l));
+  }
+  return out;
+}
+
+}  // namespace tackle
