@@ -1,5 +1,7 @@
 #include "expr/rational.hpp"
 
+#include <map>
+#include <string>
 #include <unordered_map>
 
 #include "expr/trig.hpp"
@@ -23,8 +25,20 @@ ex numer_denom_remembered(const ex& e) {
   return nd;
 }
 
-ex normal_remembered(const ex& e) {
+Memory& normal_memory() {
   thread_local Memory memory;
+  return memory;
+}
+
+void remember_normal(const ex& e, const ex& n) {
+  Memory& memory = normal_memory();
+  if (memory.size() >= 8192) memory.clear();
+  memory.emplace(e, n);
+  memory.emplace(n, n);
+}
+
+ex normal_remembered(const ex& e) {
+  Memory& memory = normal_memory();
   if (is_a<numeric>(e) || is_a<symbol>(e)) return e;
   if (auto it = memory.find(e); it != memory.end()) return it->second;
   const ex n = normal(e);
@@ -85,6 +99,47 @@ RationalAt rational_at(const ex& e, const RationalPoint& point) {
     return {Kind::value, pow(b.value, x)};
   }
   return {};
+}
+
+// Values are drawn for the symbols in the order of their names, not in the order GiNaC
+// keeps them, so the points are the same in every run.
+exmap random_point(const ex& e, std::mt19937& rng) {
+  std::map<std::string, ex> by_name;
+  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+    if (is_a<symbol>(*it)) by_name.emplace(ex_to<symbol>(*it).get_name(), *it);
+  exmap m;
+  std::uniform_int_distribution<long> num(1, 1L << 30), den(1, 1L << 20);
+  for (const auto& [name, sym] : by_name) m[sym] = numeric(num(rng), den(rng));
+  return m;
+}
+
+std::set<ex, ex_is_less> symbols_in(const ex& e) {
+  std::set<ex, ex_is_less> out;
+  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+    if (is_a<symbol>(*it)) out.insert(*it);
+  return out;
+}
+
+std::size_t node_count(const ex& e) {
+  std::size_t n = 0;
+  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) ++n;
+  return n;
+}
+
+std::optional<bool> zero_at_random_points(const ex& e, int points) {
+  std::mt19937 rng(20261123);
+  int done = 0;
+  for (int draws = 0; done < points && draws < 30; ++draws) {
+    RationalPoint numbers;
+    for (const auto& [sym, v] : random_point(e, rng)) numbers.emplace(sym, ex_to<numeric>(v));
+    const RationalAt r = rational_at(e, numbers);
+    if (r.kind == RationalAt::Kind::other) return std::nullopt;
+    if (r.kind == RationalAt::Kind::pole) continue;
+    if (!r.value.is_zero()) return false;
+    ++done;
+  }
+  if (done < points) return std::nullopt;
+  return true;
 }
 
 bool is_zero_exactly(const ex& e) {

@@ -1,6 +1,9 @@
 // Rational functions: normal forms and zero tests, remembered per thread.
 #pragma once
 
+#include <optional>
+#include <random>
+#include <set>
 #include <unordered_map>
 
 #include <ginac/ginac.h>
@@ -12,6 +15,11 @@ namespace tackle {
 /// function of many symbols costs a gcd each time. A normal form is remembered as its own
 /// normal form too. What is remembered changes no result: equal input, equal output.
 [[nodiscard]] GiNaC::ex normal_remembered(const GiNaC::ex& e);
+
+/// Records `n` as the normal form of `e` (and of itself), for a form found by other means:
+/// a fraction built reduced (a numerator over an irreducible denominator it is coprime to),
+/// or the factored form of a normal form. normal() is then not asked again for a gcd.
+void remember_normal(const GiNaC::ex& e, const GiNaC::ex& n);
 
 /// The numerator and denominator of normal(e) (GiNaC's numer_denom(), which normalizes
 /// again each time), remembered the same way.
@@ -35,6 +43,23 @@ struct ExHash {
 };
 using RationalPoint = std::unordered_map<GiNaC::ex, GiNaC::numeric, ExHash, GiNaC::ex_is_equal>;
 [[nodiscard]] RationalAt rational_at(const GiNaC::ex& e, const RationalPoint& point);
+
+/// Whether a rational function of symbols is zero, decided at `points` random exact rational
+/// points (values from about 10^15 each, fixed seed: the same points in every run): false when
+/// it is not zero at some point (certain), true when it is zero at every point (a nonzero
+/// one vanishes at a point by chance with a probability of its degree over 10^15), nullopt
+/// when `e` is not a rational function of symbols or no point without a pole was found.
+/// For expressions too large to expand.
+[[nodiscard]] std::optional<bool> zero_at_random_points(const GiNaC::ex& e, int points = 2);
+
+/// A random exact rational point for the symbols of `e`, drawn in the order of their names.
+[[nodiscard]] GiNaC::exmap random_point(const GiNaC::ex& e, std::mt19937& rng);
+
+/// The symbols of `e`.
+[[nodiscard]] std::set<GiNaC::ex, GiNaC::ex_is_less> symbols_in(const GiNaC::ex& e);
+
+/// The number of nodes of `e`.
+[[nodiscard]] std::size_t node_count(const GiNaC::ex& e);
 
 /// Zero, exactly: normal() and sin^2 + cos^2 = 1.
 [[nodiscard]] bool is_zero_exactly(const GiNaC::ex& e);

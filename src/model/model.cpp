@@ -13,13 +13,17 @@ using namespace GiNaC;
 
 ex time_derivative(const ex& e, const std::vector<Body>& bodies, const std::vector<TurningLength>& lengths, const ex& time) {
   ex d = is_a<symbol>(time) ? e.diff(ex_to<symbol>(time)) : ex(0);
+  // Only the coordinates and rates `e` holds (a string of two bodies among 256: two, not 512
+  // derivatives).
+  const auto present = symbols_in(e);
   for (const auto& b : bodies) {
     if (b.coord.is_zero()) continue;
-    d += e.diff(ex_to<symbol>(b.coord)) * b.rate + e.diff(ex_to<symbol>(b.rate)) * b.accel;
+    if (present.count(b.coord) != 0) d += e.diff(ex_to<symbol>(b.coord)) * b.rate;
+    if (present.count(b.rate) != 0) d += e.diff(ex_to<symbol>(b.rate)) * b.accel;
   }
   // d l/dt = d(l^2)/dt / (2 l), with l^2 a polynomial in the coordinates.
   for (const auto& l : lengths)
-    if (e.has(l.symbol))
+    if (present.count(l.symbol) != 0)
       d += e.diff(ex_to<symbol>(l.symbol)) * time_derivative(l.squared, bodies, {}, time) / (2 * l.symbol);
   return d.expand();
 }

@@ -1,5 +1,7 @@
 #include "numeric/evaluate.hpp"
 
+#include "expr/rational.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -95,7 +97,16 @@ std::string decimal_string(const numeric& v, int digits) {
   return (v.is_negative() ? "-" : "") + out;
 }
 
-std::optional<ex> value_at(const ex& e, const exmap& values) { return NormalForm(e).at(values); }
+std::optional<ex> value_at(const ex& e, const exmap& values) {
+  // A rational function at rational numbers: computed as a number, without a normal form
+  // (normal() of a closed form over 128 bodies' masses is most of a report's time). A pole
+  // there may be removable, and roots or functions need more: those go through NormalForm.
+  RationalPoint point;
+  for (const auto& [sym, v] : values)
+    if (is_a<numeric>(v) && ex_to<numeric>(v).is_rational()) point.emplace(sym, ex_to<numeric>(v));
+  if (const RationalAt r = rational_at(e, point); r.kind == RationalAt::Kind::value) return ex(r.value);
+  return NormalForm(e).at(values);
+}
 
 std::optional<NumericValue> evaluate_with(const ex& e, const exmap& values, std::optional<Dimension> dimension,
                                           int digits, const std::optional<Unit>& unit) {

@@ -2,6 +2,7 @@
 #include "report/narrator.hpp"
 
 #include <algorithm>
+#include <set>
 #include <tuple>
 
 #include <Eigen/Dense>
@@ -271,10 +272,15 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       } else {
         // A closed form may contain parameters and given quantities only: anything else (a
         // velocity asked for while only accelerations are solved) is what is missing.
+        // (The symbols of the form are gathered once: asking has() of every symbol of a
+        // chain of 256 bodies would make this cubic.)
+        std::set<ex, ex_is_less> present;
+        for (const_preorder_iterator it = general.preorder_begin(); it != general.preorder_end(); ++it)
+          if (is_a<symbol>(*it)) present.insert(*it);
         for (const auto& sym : table.all()) {
           const bool known = sym->role == SymbolRole::parameter || sym->role == SymbolRole::defined || sym->role == SymbolRole::time ||
                              std::find(m.given.begin(), m.given.end(), sym->sym) != m.given.end();
-          if (!known && general.has(sym->sym)) a.missing.push_back(sym->sym);
+          if (!known && present.count(sym->sym) != 0) a.missing.push_back(sym->sym);
         }
         if (!a.missing.empty()) {
           a.status = Answer::Status::undetermined;

@@ -5,6 +5,8 @@
 #include <optional>
 #include <set>
 #include <tuple>
+#include <unordered_map>
+#include <utility>
 
 
 namespace tackle {
@@ -111,6 +113,61 @@ std::optional<Pivot> choose(const Work& w, const std::vector<bool>& eliminated, 
   return best;
 }
 
+// Whether a polynomial is irreducible because it is of degree 1 in some symbol x with
+// coefficients of x^1 and x^0 that have no common factor (m_1 + ... + m_n is: any factor
+// would be free of x and divide both). Remembered: a chain's values share one denominator.
+bool linear_irreducible(const ex& p) {
+  thread_local std::unordered_map<ex, bool, ExHash, ex_is_equal> memory;
+  if (auto it = memory.find(p); it != memory.end()) return it->second;
+  bool out = false;
+  if (is_a<add>(p))
+    for (const ex& x : symbols_in(p)) {
+      if (p.degree(x) != 1 || p.ldegree(x) != 0) continue;
+      if (is_a<numeric>(gcd(p.coeff(x, 1), p.coeff(x, 0)))) {
+        out = true;
+        break;
+      }
+    }
+  if (memory.size() >= 1024) memory.clear();
+  memory.emplace(p, out);
+  return out;
+}
+
+bool is_polynomial_form(const ex& e) { return numer_denom_of_normal(e).op(1).is_equal(1); }
+
+// (b - sum of v x) / pivot in normal form without a gcd, in the common case of a chain or a
+// cascade: b, each v and the pivot polynomials, the pivot a number, and every x a polynomial
+// or a fraction over one common irreducible denominator D. The numerator over D is expanded;
+// D divides it or the fraction is already reduced (D is irreducible). Nothing otherwise.
+std::optional<ex> quick_quotient(const ex& b, const std::vector<std::pair<ex, ex>>& terms, const ex& pivot) {
+  if (!is_a<numeric>(pivot) || !is_polynomial_form(b)) return std::nullopt;
+  std::optional<ex> D;
+  std::vector<std::pair<ex, ex>> parts;  // coefficient times numerator, and whether over D
+  for (const auto& [v, x] : terms) {
+    if (!is_polynomial_form(v)) return std::nullopt;
+    const ex nd = numer_denom_of_normal(x);
+    const ex& den = nd.op(1);
+    if (!den.is_equal(1)) {
+      if (!D) {
+        if (!linear_irreducible(den)) return std::nullopt;
+        D = den;
+      } else if (!D->is_equal(den)) {
+        return std::nullopt;
+      }
+    }
+    parts.emplace_back(v * nd.op(0), den);
+  }
+  if (!D) return std::nullopt;  // all polynomial: normal() has no gcd to compute either
+  ex num = b * *D;
+  for (const auto& [vn, den] : parts) num -= den.is_equal(1) ? vn * *D : vn;
+  num = (num / pivot).expand();
+  if (num.is_zero()) return ex(0);
+  ex q;
+  const ex out = divide(num, *D, q) ? q.expand() : num / *D;
+  remember_normal(out, out);
+  return out;
+}
+
 }  // namespace
 
 Elimination eliminate(const SparseSystem& s, const std::vector<ex>& symbols, Pivoting pivoting, bool track) {
@@ -148,10 +205,17 @@ Elimination eliminate(const SparseSystem& s, const std::vector<ex>& symbols, Piv
   // Back substitution, last pivot first: a pivot row holds its pivot, the columns pivoted
   // after it and free columns.
   for (auto it = order.rbegin(); it != order.rend(); ++it) {
-    ex rest = w.b[it->row];
+    std::vector<std::pair<ex, ex>> terms;  // coefficient, value
     for (const auto& [cc, v] : w.a[it->row])
-      if (cc != it->column) rest -= v * (eliminated[cc] ? out.value[cc] : symbols[cc]);
-    out.value[it->column] = normal_remembered(rest / w.a[it->row].at(it->column));
+      if (cc != it->column) terms.emplace_back(v, eliminated[cc] ? out.value[cc] : symbols[cc]);
+    const ex& pivot = w.a[it->row].at(it->column);
+    if (const auto q = quick_quotient(w.b[it->row], terms, pivot)) {
+      out.value[it->column] = *q;
+      continue;
+    }
+    ex rest = w.b[it->row];
+    for (const auto& [v, x] : terms) rest -= v * x;
+    out.value[it->column] = normal_remembered(rest / pivot);
   }
   for (std::size_t i = 0; i < n_rows; ++i) {
     if (!w.active[i]) continue;

@@ -103,13 +103,53 @@ namespace {
 // The monomial and integer content of a large expanded polynomial times what is left: GiNaC's
 // factor() takes seconds on sums of some dozens of terms in ten symbols (a collar hoisted by
 // two cables: 2 s for one problem), and factoring such a sum rarely shortens it.
+// The lowest and highest power of each symbol over the terms of an expanded polynomial, in
+// one pass over its terms (ldegree() and degree() of each symbol would be quadratic in a sum
+// over 256 masses).
+struct Degrees {
+  std::map<ex, int, ex_is_less> low, high;
+};
+
+Degrees degrees_of(const ex& expanded) {
+  Degrees d;
+  auto powers = [](const ex& term) {
+    std::map<ex, int, ex_is_less> p;
+    auto one = [&](const ex& f) {
+      if (is_a<symbol>(f)) p[f] += 1;
+      else if (is_a<power>(f) && is_a<symbol>(f.op(0)) && f.op(1).info(info_flags::nonnegint))
+        p[f.op(0)] += ex_to<numeric>(f.op(1)).to_int();
+    };
+    if (is_a<mul>(term))
+      for (std::size_t i = 0; i < term.nops(); ++i) one(term.op(i));
+    else
+      one(term);
+    return p;
+  };
+  const bool sum = is_a<add>(expanded);
+  const std::size_t n = sum ? expanded.nops() : 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto p = powers(sum ? expanded.op(i) : expanded);
+    for (const auto& [s, k] : p) d.high[s] = std::max(d.high[s], k);
+    if (i == 0) {
+      d.low = p;
+    } else {
+      for (auto it = d.low.begin(); it != d.low.end();) {
+        const auto q = p.find(it->first);
+        if (q == p.end()) {
+          it = d.low.erase(it);
+        } else {
+          it->second = std::min(it->second, q->second);
+          ++it;
+        }
+      }
+    }
+  }
+  return d;
+}
+
 ex content_only(const ex& expanded) {
-  std::set<ex, ex_is_less> symbols;
-  for (const_preorder_iterator it = expanded.preorder_begin(); it != expanded.preorder_end(); ++it)
-    if (is_a<symbol>(*it)) symbols.insert(*it);
   ex monomial = expanded.integer_content();
-  for (const ex& s : symbols)
-    if (const int low = expanded.ldegree(s); low > 0) monomial *= pow(s, low);
+  for (const auto& [s, low] : degrees_of(expanded).low) monomial *= pow(s, low);
   return monomial * (expanded / monomial).expand();
 }
 
@@ -125,15 +165,11 @@ constexpr std::size_t factor_wide_terms = 8, factor_wide_symbols = 8;
 // are such (k*y_0 - g*m, m*w^2 - k); gcd() is far cheaper than factor().
 bool linear_and_primitive(const ex& expanded) {
   if (!is_a<add>(expanded)) return false;
-  std::set<ex, ex_is_less> symbols;
-  for (const_preorder_iterator it = expanded.preorder_begin(); it != expanded.preorder_end(); ++it)
-    if (is_a<symbol>(*it)) symbols.insert(*it);
   ex monomial = 1;
-  for (const ex& x : symbols)
-    if (const int low = expanded.ldegree(x); low > 0) monomial *= pow(x, low);
+  for (const auto& [x, low] : degrees_of(expanded).low) monomial *= pow(x, low);
   const ex q = (expanded / monomial).expand();
-  for (const ex& x : symbols) {
-    if (q.degree(x) != 1) continue;
+  for (const auto& [x, high] : degrees_of(q).high) {
+    if (high != 1) continue;
     const ex a = q.coeff(x, 1), b = q.coeff(x, 0);
     if (!b.is_zero() && is_a<numeric>(gcd(a, b))) return true;
   }
@@ -224,6 +260,7 @@ ex simplest(const ex& e) {
     }
   const ex nd = numer_denom_of_normal(n);
   const ex f = factored(nd.op(0)) / factored(nd.op(1));
+  remember_normal(f, n);
   return to_text(f).size() < to_text(n).size() ? f : n;
 }
 
@@ -243,24 +280,7 @@ bool pole_at(const ex& e, const exmap& point) {
   return false;
 }
 
-std::size_t node_count(const ex& e) {
-  std::size_t n = 0;
-  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) ++n;
-  return n;
-}
 
-// Random exact positive rationals for every symbol in `e` that `keep` does not hold.
-// Values are drawn for the symbols in the order of their names, not in the order GiNaC
-// keeps them, so the points are the same in every run.
-exmap random_point(const ex& e, std::mt19937& rng) {
-  std::map<std::string, ex> by_name;
-  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
-    if (is_a<symbol>(*it)) by_name.emplace(ex_to<symbol>(*it).get_name(), *it);
-  exmap m;
-  std::uniform_int_distribution<long> num(1, 1L << 30), den(1, 1L << 20);
-  for (const auto& [name, sym] : by_name) m[sym] = numeric(num(rng), den(rng));
-  return m;
-}
 
 }  // namespace
 
@@ -278,8 +298,12 @@ int known_sign(const ex& e) { return sign_of(e).value_or(0); }
 
 // `e op 0` with the factors of known sign divided out: returns the factors left (their
 // product), and flips `op` for each negative factor divided out.
-ex strip_signed_factors(const ex& e, std::string& op) {
-  const ex nd = numer_denom_remembered(e);
+ex strip_signed_factors_of(const ex& nd, std::string& op);
+
+ex strip_signed_factors(const ex& e, std::string& op) { return strip_signed_factors_of(numer_denom_remembered(e), op); }
+
+// The same, given the numerator and denominator.
+ex strip_signed_factors_of(const ex& nd, std::string& op) {
   ex rest = 1;
   for (int side = 0; side < 2; ++side) {
     const bool denominator = side == 1;
@@ -527,20 +551,24 @@ Solution solve(const Model& model, const EquationSystem& s) {
   for (const auto& c : model.conditions) {
     CheckedCondition cc;
     cc.condition = &c;
-    cc.expr = simplest((c.lhs - c.rhs).subs(sol.general));
-    for (const auto& f : sol.free) cc.depends_on_free = cc.depends_on_free || cc.expr.has(f);
+    const ex normal_form = normal_remembered((c.lhs - c.rhs).subs(sol.general));
+    cc.expr = simplest(normal_form);
+    // The symbols are gathered once (has() of each symbol would be quadratic per condition).
+    const auto present = symbols_in(normal_form);
+    for (const auto& f : sol.free) cc.depends_on_free = cc.depends_on_free || present.count(f) != 0;
     // Conditions on unknowns that the chosen equations do not contain are left out.
     bool relevant = true;
     for (const auto& u : model.candidates)
-      if (cc.expr.has(u) && std::find(s.unknowns.begin(), s.unknowns.end(), u) == s.unknowns.end()) relevant = false;
+      if (present.count(u) != 0 && std::find(s.unknowns.begin(), s.unknowns.end(), u) == s.unknowns.end()) relevant = false;
     if (!relevant) continue;
     if (!cc.depends_on_free) {
       std::vector<ex> parameters;
       for (const auto& sym : model.symbols->all())
-        if (sym->role == SymbolRole::parameter) parameters.push_back(sym->sym);
+        if (sym->role == SymbolRole::parameter && present.count(sym->sym) != 0) parameters.push_back(sym->sym);
       // A given coordinate or velocity is a parameter of the instant: solve for it too (the
       // blocks of sample 12.4 stay together while y >= -y_s).
-      for (const auto& g : model.given) parameters.push_back(g);
+      for (const auto& g : model.given)
+        if (present.count(g) != 0) parameters.push_back(g);
       // Not for a name a turning strand's length depends on (or for that length itself):
       // the condition only looks linear in it.
       parameters.erase(std::remove_if(parameters.begin(), parameters.end(),
@@ -550,7 +578,7 @@ Solution solve(const Model& model, const EquationSystem& s) {
         // Factors of known sign divided out once: what is left is solved for a parameter, or
         // is a number, and then the condition always or never holds.
         std::string op = c.op;
-        const ex rest = strip_signed_factors(cc.expr, op);
+        const ex rest = strip_signed_factors_of(numer_denom_of_normal(normal_form), op);
         cc.solved = solve_reduced(rest, op, parameters);
         if (is_a<numeric>(rest)) cc.always = relation_holds(ex_to<numeric>(rest), op);
       }
