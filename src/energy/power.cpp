@@ -106,15 +106,6 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
     rate_values = r.general;
   }
   const ex balance = c.kinetic_rate - c.power;
-  // Every force must be known: a chosen set of balances may leave some out. (The solution's
-  // values hold parameters and free unknowns only, so a force left is one not solved for.)
-  const auto present = symbols_in(balance);
-  for (const auto& u : m.candidates)
-    if (present.count(u) != 0 && sol.general.count(u) == 0 &&
-        std::find(sol.free.begin(), sol.free.end(), u) == sol.free.end()) {
-      c.reason = "the balances chosen do not give " + to_text(u);
-      return c;
-    }
   // A large solution (a chain of many bodies) is put in at random exact points, each value
   // evaluated once, as the solver's own check does; the residual is written out and put in
   // normal form only when it is shown, that is when it is not zero.
@@ -127,6 +118,14 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
       return c;
     }
   const ex residual = balance.subs(sol.general).subs(rate_values);
+  // Every force must be known: a chosen set of balances may leave some out. (Symbols
+  // gathered once: has() of each candidate would be quadratic.)
+  const auto present = symbols_in(residual);
+  for (const auto& u : m.candidates)
+    if (present.count(u) != 0 && std::find(sol.free.begin(), sol.free.end(), u) == sol.free.end()) {
+      c.reason = "the balances chosen do not give " + to_text(u);
+      return c;
+    }
   c.residual = normal(reduced_on_lengths(residual, m));
   if (has_trig(c.residual))
     for (const bool to_cos : {true, false})

@@ -133,37 +133,97 @@ bool linear_irreducible(const ex& p) {
   return out;
 }
 
-bool is_polynomial_form(const ex& e) { return numer_denom_of_normal(e).op(1).is_equal(1); }
+// A polynomial in symbols with rational coefficients (what divide() takes): no functions,
+// no roots, no floating-point numbers.
+bool is_polynomial_form(const ex& e) { return e.info(info_flags::rational_polynomial); }
+
+// The irreducible factors of a denominator (each to the first power), and its numeric
+// coefficient; nothing when some factor is not known to be irreducible.
+std::optional<std::pair<numeric, std::vector<ex>>> irreducible_factors(const ex& den) {
+  numeric c = 1;
+  std::vector<ex> out;
+  auto one = [&](const ex& f) {
+    if (is_a<numeric>(f)) {
+      c *= ex_to<numeric>(f);
+      return true;
+    }
+    if (is_a<symbol>(f) || linear_irreducible(f)) {
+      out.push_back(f);
+      return true;
+    }
+    return false;
+  };
+  if (is_a<mul>(den)) {
+    for (std::size_t i = 0; i < den.nops(); ++i)
+      if (!one(den.op(i))) return std::nullopt;
+  } else if (!one(den)) {
+    return std::nullopt;
+  }
+  return std::make_pair(c, out);
+}
 
 // (b - sum of v x) / pivot in normal form without a gcd, in the common case of a chain or a
-// cascade: b, each v and the pivot polynomials, the pivot a number, and every x a polynomial
-// or a fraction over one common irreducible denominator D. The numerator over D is expanded;
-// D divides it or the fraction is already reduced (D is irreducible). Nothing otherwise.
+// cascade: b and each v polynomials, the pivot a number or a product of irreducible
+// polynomials, and every x a polynomial or a fraction whose denominator is such a product
+// (factors of degree 1 in some symbol with coprime coefficients, or symbols). The rest is
+// put over the product of the distinct factors of the x's denominators; the pivot's factors
+// join them; each factor that divides the numerator is divided out, and what is left is
+// reduced, its factors being irreducible. Nothing otherwise.
 std::optional<ex> quick_quotient(const ex& b, const std::vector<std::pair<ex, ex>>& terms, const ex& pivot) {
-  if (!is_a<numeric>(pivot) || !is_polynomial_form(b)) return std::nullopt;
-  std::optional<ex> D;
-  std::vector<std::pair<ex, ex>> parts;  // coefficient times numerator, and whether over D
+  if (!is_polynomial_form(b)) return std::nullopt;
+  auto holds = [](const std::vector<ex>& v, const ex& g) {
+    return std::any_of(v.begin(), v.end(), [&](const ex& h) { return h.is_equal(g); });
+  };
+  std::vector<ex> common;  // the distinct factors of the x's denominators
+  struct Part {
+    ex numerator;             // v times x's numerator, over x's numeric coefficient
+    std::vector<ex> factors;  // x's denominator's factors
+  };
+  std::vector<Part> parts;
   for (const auto& [v, x] : terms) {
     if (!is_polynomial_form(v)) return std::nullopt;
     const ex nd = numer_denom_of_normal(x);
-    const ex& den = nd.op(1);
-    if (!den.is_equal(1)) {
-      if (!D) {
-        if (!linear_irreducible(den)) return std::nullopt;
-        D = den;
-      } else if (!D->is_equal(den)) {
-        return std::nullopt;
-      }
-    }
-    parts.emplace_back(v * nd.op(0), den);
+    if (!is_polynomial_form(nd.op(0)) || !is_polynomial_form(nd.op(1))) return std::nullopt;
+    const auto f = irreducible_factors(nd.op(1));
+    if (!f) return std::nullopt;
+    for (const ex& g : f->second)
+      if (!holds(common, g)) common.push_back(g);
+    parts.push_back({v * nd.op(0) / f->first, f->second});
   }
-  if (!D) return std::nullopt;  // all polynomial: normal() has no gcd to compute either
-  ex num = b * *D;
-  for (const auto& [vn, den] : parts) num -= den.is_equal(1) ? vn * *D : vn;
-  num = (num / pivot).expand();
+  numeric c = 1;
+  std::vector<ex> pivot_factors;
+  if (is_a<numeric>(pivot)) {
+    c = ex_to<numeric>(pivot);
+  } else {
+    if (!is_polynomial_form(pivot)) return std::nullopt;
+    const auto f = irreducible_factors(pivot);
+    if (!f) return std::nullopt;
+    c = f->first;
+    pivot_factors = f->second;
+  }
+  // All polynomial with a number for pivot: normal() has no gcd to compute either.
+  if (common.empty() && pivot_factors.empty()) return std::nullopt;
+  if (common.size() + pivot_factors.size() > 8) return std::nullopt;
+  auto over_common = [&](ex e, const std::vector<ex>& have) {
+    for (const ex& g : common)
+      if (!holds(have, g)) e *= g;
+    return e;
+  };
+  ex num = over_common(b, {});
+  for (const auto& p : parts) num -= over_common(p.numerator, p.factors);
+  num = (num / c).expand();
   if (num.is_zero()) return ex(0);
-  ex q;
-  const ex out = divide(num, *D, q) ? q.expand() : num / *D;
+  std::vector<ex> den = common;
+  den.insert(den.end(), pivot_factors.begin(), pivot_factors.end());
+  ex out = 1;
+  for (const ex& g : den) {
+    ex q;
+    if (divide(num, g, q))
+      num = q.expand();
+    else
+      out /= g;
+  }
+  out *= num;
   remember_normal(out, out);
   return out;
 }
