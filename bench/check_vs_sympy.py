@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
-"""Times tackle's answer checks against SymPy on the same decisions, in one run.
+"""Times tackle's answer checks against SymPy and Maxima on the same decisions, in one run.
 
 tackle: build/bench/tackle_bench's check/* benchmarks (Google Benchmark, median of
 repetitions). SymPy: parse_expr + equals against the same closed form, per answer, median
-of repetitions. Prints a table and the ratio. Usage: bench/check_vs_sympy.py [BUILD_DIR]
+of repetitions. Maxima (when installed): parse_string + is(radcan(given - reference) = 0),
+timed inside one Maxima process with elapsed_real_time over 500 checks per answer (its
+start-up is not counted). Prints a table and the ratios.
+Usage: bench/check_vs_sympy.py [BUILD_DIR]
 """
 import json
 import statistics
@@ -52,6 +55,28 @@ def sympy_times(repeats=7, loops=20):
     return results
 
 
+def maxima_times(loops=500):
+    import shutil
+    if shutil.which("maxima") is None:
+        return None
+    program = ["display2d:false$", "load(stringproc)$", "assume(m>0, a>0, b>0, d>0, e>0, g>0, mu>0, h>0, l>0)$",
+               "ref(u) := if u = \"T_HI\" then m*a*sqrt(b^2 + d^2 + e^2)/(2*d) else m*g*(1/2 - mu*h/l)$",
+               "time1(u, s, n) := block([t0, v, r], r: ref(u), t0: elapsed_real_time(), for i:1 thru n do "
+               "(v: parse_string(s), if u = \"T_HI\" then v: subst(l = sqrt(b^2 + d^2 + e^2), v), "
+               "v: is(radcan(v - r) = 0)), [v, (elapsed_real_time() - t0)/n])$"]
+    for unknown, answer, _ in CASES:
+        program.append(f'print("CASE", time1("{unknown}", "{answer}", {loops}))$')
+    out = subprocess.run(["maxima", "--very-quiet", "--batch-string=" + "\n".join(program)],
+                         capture_output=True, text=True, check=True).stdout
+    results = []
+    for (unknown, answer, expect), line in zip(CASES, [l for l in out.splitlines() if l.startswith("CASE ")]):
+        verdict, seconds = line[len("CASE "):].strip("[] ").split(",")
+        if (verdict.strip() == "true") != expect:
+            print(f"warning: Maxima decided {verdict.strip()} for {answer}", file=sys.stderr)
+        results.append(float(seconds) * 1e6)
+    return results if len(results) == len(CASES) else None
+
+
 def tackle_times(build):
     out = subprocess.run(
         [f"{build}/bench/tackle_bench", "--benchmark_filter=^check", "--benchmark_repetitions=5",
@@ -66,11 +91,13 @@ def main():
     build = sys.argv[1] if len(sys.argv) > 1 else "build"
     ours, plain, batch = tackle_times(build)
     theirs = sympy_times()
-    print(f"{'answer':40} {'tackle us':>10} {'no LaTeX':>10} {'SymPy us':>10} {'ratio':>8}")
-    for (unknown, answer, _), t, p, s in zip(CASES, ours, plain, theirs):
-        print(f"{unknown + ': ' + answer:40} {t:10.1f} {p:10.1f} {s:10.1f} {s / t:8.0f}")
-    mt, mp, ms = statistics.median(ours), statistics.median(plain), statistics.median(theirs)
-    print(f"{'median per check':40} {mt:10.1f} {mp:10.1f} {ms:10.1f} {ms / mt:8.0f}")
+    maxima = maxima_times() or [float("nan")] * len(CASES)
+    print(f"{'answer':40} {'tackle us':>10} {'no LaTeX':>10} {'SymPy us':>10} {'ratio':>8} {'Maxima us':>10} {'ratio':>8}")
+    for (unknown, answer, _), t, p, s, x in zip(CASES, ours, plain, theirs, maxima):
+        print(f"{unknown + ': ' + answer:40} {t:10.1f} {p:10.1f} {s:10.1f} {s / t:8.0f} {x:10.1f} {x / t:8.1f}")
+    mt, mp, ms, mx = (statistics.median(ours), statistics.median(plain), statistics.median(theirs),
+                      statistics.median(maxima))
+    print(f"{'median per check':40} {mt:10.1f} {mp:10.1f} {ms:10.1f} {ms / mt:8.0f} {mx:10.1f} {mx / mt:8.1f}")
     if batch:
         print(f"batch of {len(CASES)}: {batch / len(CASES):.1f} us per check")
 

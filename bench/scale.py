@@ -135,6 +135,8 @@ def exponent(rows, column, sizes):
 def show(t, timeout):
     if t is None:
         return f"> {timeout:g} s"
+    if t < 0.1:
+        return f"{t * 1000:.1f} ms"
     return f"{t * 1000:.0f} ms" if t < 1 else f"{t:.2f} s"
 
 
@@ -145,6 +147,8 @@ def main():
     ap.add_argument("--peers", default="ginac,sympy,maxima,giac")
     ap.add_argument("--timeout", type=float, default=60)
     ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--files", default="examples/sample-12.8-sign-board.yaml,examples/atwood-machine.yaml",
+                    help="descriptions timed as they are, next to the peers on their equations")
     args = ap.parse_args()
     sizes = dict(DEFAULT_SIZES)
     for s in args.sizes:
@@ -194,6 +198,23 @@ def main():
                   + " | ".join(show(r.get(p), args.timeout) for p in peers) + " |")
         print("| growth exponent | | " + " | ".join([exponent(rows, "solve", sizes[kind]), "", exponent(rows, "derive", sizes[kind])]
                                                     + [exponent(rows, p, sizes[kind]) for p in peers]) + " |")
+    files = [f for f in args.files.split(",") if f]
+    if files:
+        print("\nsingle problems")
+        print("| file | unknowns | tackle solve | tackle derive | " + " | ".join(peers) + " |")
+        print("|---" * (4 + len(peers)) + "|")
+        for f in files:
+            path = f if os.path.isabs(f) else os.path.join(ROOT, f)
+            solve_t, _, _ = best([TACKLE, "solve", path], args.timeout, max(args.repeat, 10))
+            derive_t, _, _ = best([TACKLE, "derive", path], args.timeout, max(args.repeat, 10))
+            unknowns, eqs = equations_of(path)
+            cells = []
+            for p in peers:
+                cmd, stdin = peer_command(p, unknowns, eqs, work)
+                t, _, _ = best(cmd, args.timeout, max(args.repeat, 10), stdin)
+                cells.append(show(t, args.timeout))
+            print(f"| {os.path.basename(f)} | {len(unknowns)} | {show(solve_t, args.timeout)} | {show(derive_t, args.timeout)} | "
+                  + " | ".join(cells) + " |")
     shutil.rmtree(work, ignore_errors=True)
 
 

@@ -3,6 +3,8 @@
 #include "expr/kind.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <optional>
 #include <memory>
 #include <tuple>
 #include <unordered_map>
@@ -17,6 +19,29 @@ tackle_text::tackle_text() : print_dflt(std::cout) {}
 tackle_latex::tackle_latex() : print_latex(std::cout) {}
 GINAC_IMPLEMENT_PRINT_CONTEXT(tackle_text, print_dflt)
 GINAC_IMPLEMENT_PRINT_CONTEXT(tackle_latex, print_latex)
+
+// A term's shape and index: its key with each index (digits after "_") written as its
+// offset from the first (m_12*ddot(x_12) -> "m_#0*ddot(x_#0)", 12; T_3*dot(x_4) ->
+// "T_#0*dot(x_#1)", 3). Nothing when the term has no index.
+std::optional<std::pair<std::string, long>> index_shape(const std::string& key) {
+  std::string shape;
+  std::optional<long> first;
+  for (std::size_t i = 0; i < key.size();) {
+    if (key[i] == '_' && i + 1 < key.size() && std::isdigit(static_cast<unsigned char>(key[i + 1])) && key[i + 1] != '0') {
+      std::size_t e = i + 1;
+      while (e < key.size() && std::isdigit(static_cast<unsigned char>(key[e]))) ++e;
+      if (e - i - 1 > 9) return std::nullopt;
+      const long v = std::stol(key.substr(i + 1, e - i - 1));
+      if (!first) first = v;
+      shape += "_#" + std::to_string(v - *first);
+      i = e;
+    } else {
+      shape += key[i++];
+    }
+  }
+  if (!first) return std::nullopt;
+  return std::make_pair(shape, *first);
+}
 
 namespace {
 
@@ -91,6 +116,34 @@ struct TopLevelPrint {
 
 std::string key_of_uncached(const ex& e);
 
+// Keys compared with their digit runs as numbers (m_2 before m_10), the way a person
+// orders indexed names; otherwise as strings.
+bool natural_less(const std::string& a, const std::string& b) {
+  std::size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    const bool da = std::isdigit(static_cast<unsigned char>(a[i])) != 0, db = std::isdigit(static_cast<unsigned char>(b[j])) != 0;
+    if (da && db) {
+      std::size_t ie = i, je = j;
+      while (ie < a.size() && std::isdigit(static_cast<unsigned char>(a[ie]))) ++ie;
+      while (je < b.size() && std::isdigit(static_cast<unsigned char>(b[je]))) ++je;
+      // Leading zeros aside, the longer run is the larger number.
+      std::size_t is = i, js = j;
+      while (is + 1 < ie && a[is] == '0') ++is;
+      while (js + 1 < je && b[js] == '0') ++js;
+      if (ie - is != je - js) return ie - is < je - js;
+      if (const int c = a.compare(is, ie - is, b, js, je - js); c != 0) return c < 0;
+      if (ie - i != je - j) return ie - i < je - j;
+      i = ie;
+      j = je;
+      continue;
+    }
+    if (a[i] != b[j]) return a[i] < b[j];
+    ++i;
+    ++j;
+  }
+  return a.size() - i < b.size() - j;
+}
+
 // Sort key: the text form of an expression without its sign and numeric coefficient.
 std::string key_of(const ex& e) {
   if (is_exactly<numeric>(e)) return "~";  // numbers after names in sums
@@ -150,7 +203,7 @@ bool flip_sum(const ex& sum) {
   bool negative = false;
   for (std::size_t i = 0; i < sum.nops(); ++i) {
     std::string k = key_of(sum.op(i));
-    if (i == 0 || k < best) {
+    if (i == 0 || natural_less(k, best)) {
       best = std::move(k);
       negative = is_negative_term(sum.op(i));
     }
@@ -185,6 +238,23 @@ void print_number(const numeric& n, const print_context& c, unsigned level) {
 
 void print_numeric_fn(const numeric& n, const print_context& c, unsigned level) { print_number(n, c, level); }
 
+// The length of the run of terms of one shape and one coefficient whose indices go up by
+// one, starting at terms[i] (m_1 + m_2 + ... + m_256; T_1 dot(x_2) + T_2 dot(x_3) + ...).
+template <class Terms>
+std::size_t index_run(const Terms& terms, std::size_t i) {
+  const auto first = index_shape(terms[i].key);
+  if (!first) return 1;
+  std::size_t n = 1;
+  while (i + n < terms.size()) {
+    const auto& t = terms[i + n];
+    if (t.f.num_c != terms[i].f.num_c || t.f.den_c != terms[i].f.den_c) break;
+    const auto next = index_shape(t.key);
+    if (!next || next->first != first->first || next->second != first->second + static_cast<long>(n)) break;
+    ++n;
+  }
+  return n;
+}
+
 void print_add(const add& s, const print_context& c, unsigned level) {
   const bool latex = latex_ctx(c);
   struct Term {
@@ -200,7 +270,7 @@ void print_add(const add& s, const print_context& c, unsigned level) {
   }
   // By key; two terms with the same key (2*x and x*y^0...) by their full text.
   auto by_key = [&](const Term& a, const Term& b) {
-    if (a.key != b.key) return a.key < b.key;
+    if (a.key != b.key) return natural_less(a.key, b.key);
     return fraction_text(a.f, c, add_prec) < fraction_text(b.f, c, add_prec);
   };
   std::sort(pos.begin(), pos.end(), by_key);
@@ -209,16 +279,26 @@ void print_add(const add& s, const print_context& c, unsigned level) {
   const bool paren = level >= add_prec;
   if (paren) os << (latex ? "\\left(" : "(");
   bool first = true;
-  for (const auto& t : pos) {
-    if (!first) os << " + ";
-    print_fraction(t.f, c, add_prec);
-    first = false;
-  }
-  for (const auto& t : neg) {
-    os << (first ? "-" : " - ");
-    print_fraction(t.f, c, add_prec);
-    first = false;
-  }
+  // In LaTeX, a run of five or more names with one base and consecutive indices (m_1 + m_2
+  // + ... + m_256) is written m_1 + \dots + m_256, as a person writes it. The text form is
+  // kept whole: it is read back by programs.
+  auto print_terms = [&](const std::vector<Term>& terms, const char* sign) {
+    for (std::size_t i = 0; i < terms.size();) {
+      const std::size_t run = latex ? index_run(terms, i) : 1;
+      os << (first ? (sign[1] == '-' ? "-" : "") : sign);
+      print_fraction(terms[i].f, c, add_prec);
+      first = false;
+      if (run >= 5) {
+        os << sign << "\\dots" << sign;
+        print_fraction(terms[i + run - 1].f, c, add_prec);
+        i += run;
+      } else {
+        ++i;
+      }
+    }
+  };
+  print_terms(pos, " + ");
+  print_terms(neg, " - ");
   if (paren) os << (latex ? "\\right)" : ")");
 }
 
@@ -312,7 +392,8 @@ Fraction split_uncached(const ex& e) {
     keyed.reserve(xs.size());
     for (const auto& x : xs) keyed.emplace_back(rank(x), key_of(x), x);
     std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
-      return std::tie(std::get<0>(a), std::get<1>(a)) < std::tie(std::get<0>(b), std::get<1>(b));
+      if (std::get<0>(a) != std::get<0>(b)) return std::get<0>(a) < std::get<0>(b);
+      return natural_less(std::get<1>(a), std::get<1>(b));
     });
     for (std::size_t i = 0; i < xs.size(); ++i) xs[i] = std::get<2>(keyed[i]);
   };

@@ -8,7 +8,9 @@
 //   tackle_latex : textbook LaTeX (`-\frac{9 F}{9 m_{A} + 4 m_{B}}`), symbols by TeX name.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <utility>
 
 #include <ginac/ginac.h>
 
@@ -25,6 +27,12 @@ class tackle_latex : public GiNaC::print_latex {
  public:
   explicit tackle_latex(std::ostream& os, unsigned opt = 0) : GiNaC::print_latex(os, opt) {}
 };
+
+/// A printed term's shape and index: the text with each index (digits after "_") written as
+/// its offset from the first, and the first index (m_12*ddot(x_12) -> "m_#0*ddot(x_#0)", 12).
+/// Terms of one shape whose indices go up by one make a run, which LaTeX and the reports'
+/// lists write with dots. Nothing when the text has no index.
+[[nodiscard]] std::optional<std::pair<std::string, long>> index_shape(const std::string& text);
 
 [[nodiscard]] std::string to_text(const GiNaC::ex& e);
 [[nodiscard]] std::string to_latex(const GiNaC::ex& e);

@@ -107,9 +107,11 @@ exmap random_point(const ex& e, std::mt19937& rng) {
   std::map<std::string, ex> by_name;
   for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
     if (is_a<symbol>(*it)) by_name.emplace(ex_to<symbol>(*it).get_name(), *it);
+  // Integers up to 2^40: as good as rationals for telling a nonzero rational function from
+  // zero (the chance of a root is its degree over 2^40), and sums of them need no gcd.
   exmap m;
-  std::uniform_int_distribution<long> num(1, 1L << 30), den(1, 1L << 20);
-  for (const auto& [name, sym] : by_name) m[sym] = numeric(num(rng), den(rng));
+  std::uniform_int_distribution<long> value(1, 1L << 40);
+  for (const auto& [name, sym] : by_name) m[sym] = numeric(value(rng));
   return m;
 }
 
@@ -120,9 +122,9 @@ std::set<ex, ex_is_less> symbols_in(const ex& e) {
   return out;
 }
 
-std::size_t node_count(const ex& e) {
+std::size_t node_count(const ex& e, std::size_t limit) {
   std::size_t n = 0;
-  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) ++n;
+  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end() && n < limit; ++it) ++n;
   return n;
 }
 

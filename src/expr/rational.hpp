@@ -44,10 +44,10 @@ struct ExHash {
 using RationalPoint = std::unordered_map<GiNaC::ex, GiNaC::numeric, ExHash, GiNaC::ex_is_equal>;
 [[nodiscard]] RationalAt rational_at(const GiNaC::ex& e, const RationalPoint& point);
 
-/// Whether a rational function of symbols is zero, decided at `points` random exact rational
-/// points (values from about 10^15 each, fixed seed: the same points in every run): false when
+/// Whether a rational function of symbols is zero, decided at `points` random exact
+/// points (integers from 1 to 2^40, fixed seed: the same points in every run): false when
 /// it is not zero at some point (certain), true when it is zero at every point (a nonzero
-/// one vanishes at a point by chance with a probability of its degree over 10^15), nullopt
+/// one vanishes at a point by chance with a probability of its degree over 2^40), nullopt
 /// when `e` is not a rational function of symbols or no point without a pole was found.
 /// For expressions too large to expand.
 [[nodiscard]] std::optional<bool> zero_at_random_points(const GiNaC::ex& e, int points = 2);
@@ -58,8 +58,8 @@ using RationalPoint = std::unordered_map<GiNaC::ex, GiNaC::numeric, ExHash, GiNa
 /// The symbols of `e`.
 [[nodiscard]] std::set<GiNaC::ex, GiNaC::ex_is_less> symbols_in(const GiNaC::ex& e);
 
-/// The number of nodes of `e`.
-[[nodiscard]] std::size_t node_count(const GiNaC::ex& e);
+/// The number of nodes of `e`, counted up to `limit` at most.
+[[nodiscard]] std::size_t node_count(const GiNaC::ex& e, std::size_t limit = static_cast<std::size_t>(-1));
 
 /// Zero, exactly: normal() and sin^2 + cos^2 = 1.
 [[nodiscard]] bool is_zero_exactly(const GiNaC::ex& e);

@@ -82,6 +82,32 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     for (std::size_t i = 0; i < k; ++i) s += i ? ", {}" : "{}";
     return s;
   };
+  // A list of names as prose: runs of five or more names of one shape with indices going
+  // up by one are written with dots (x_1, ..., x_256), so that 511 unknowns make a line.
+  // Returns the text with a placeholder per name shown, and those names.
+  auto listed = [](const std::vector<ex>& xs) {
+    std::string s;
+    std::vector<ex> shown;
+    std::vector<std::optional<std::pair<std::string, long>>> shapes;
+    for (const auto& x : xs) shapes.push_back(index_shape(to_text(x)));
+    for (std::size_t i = 0; i < xs.size();) {
+      std::size_t run = 1;
+      if (shapes[i])
+        while (i + run < xs.size() && shapes[i + run] && shapes[i + run]->first == shapes[i]->first &&
+               shapes[i + run]->second == shapes[i]->second + static_cast<long>(run))
+          ++run;
+      s += shown.empty() ? "{}" : ", {}";
+      shown.push_back(xs[i]);
+      if (run >= 5) {
+        s += ", ..., {}";
+        shown.push_back(xs[i + run - 1]);
+        i += run;
+      } else {
+        ++i;
+      }
+    }
+    return std::make_pair(s, shown);
+  };
   auto bullet = [&](std::string t) { n.bullet(std::move(t)); };
   auto equation = [&](std::string label, ex lhs, ex rhs) { return n.equation(std::move(label), lhs, rhs); };
 
@@ -127,8 +153,9 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   if (!symbolic.empty()) {
     std::vector<ex> syms;
     for (const auto& n : symbolic) syms.push_back(table.find(n)->sym);
-    Step* st = step(Step::Kind::bullet, "Symbolic parameters (no value given): " + list_of(syms.size()) + ".");
-    st->math = syms;
+    const auto [names, shown] = listed(syms);
+    Step* st = step(Step::Kind::bullet, "Symbolic parameters (no value given): " + names + ".");
+    st->math = shown;
   }
 
   // An impact has no balances of forces: it is told by narrate_impact.
@@ -180,9 +207,12 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
 
   section("Solving");
   auto count = [](std::size_t n, const std::string& word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); };
-  text_with(count(s.equations.size(), "equation") + " in " + count(s.unknowns.size(), "unknown") + " (" +
-                list_of(s.unknowns.size()) + "); rank " + std::to_string(sol.rank) + ".",
-            s.unknowns);
+  {
+    const auto [names, shown] = listed(s.unknowns);
+    text_with(count(s.equations.size(), "equation") + " in " + count(s.unknowns.size(), "unknown") + " (" + names +
+                  "); rank " + std::to_string(sol.rank) + ".",
+              shown);
+  }
   for (const auto& group : sol.redundant)
     text(group.size() == 1 ? "Redundant: " + group[0] + " holds identically (it reads 0 = 0)."
                            : "Redundant: " + join(group, ", ") + " are linearly dependent (one follows from the others).");
@@ -190,7 +220,10 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     case Solution::Status::determined: d.status = "determined"; text("Every unknown is determined."); break;
     case Solution::Status::underdetermined:
       d.status = "underdetermined";
-      text_with("Not every unknown is determined; free: " + list_of(sol.free.size()) + ".", sol.free);
+      {
+        const auto [names, shown] = listed(sol.free);
+        text_with("Not every unknown is determined; free: " + names + ".", shown);
+      }
       break;
     case Solution::Status::inconsistent:
       d.status = "inconsistent";
@@ -205,10 +238,10 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     std::vector<ex> solved;
     for (const auto& [q, v] : level->general) solved.push_back(q);
     std::sort(solved.begin(), solved.end(), [&](const ex& a, const ex& b) { return to_text(a) < to_text(b); });
-    text_with(std::string(what) + count(equations->size(), "equation") + " in " +
-                  count(solved.size(), "unknown") + " (" + list_of(solved.size()) + "); rank " +
-                  std::to_string(level->rank) + ".",
-              solved);
+    const auto [names, shown] = listed(solved);
+    text_with(std::string(what) + count(equations->size(), "equation") + " in " + count(solved.size(), "unknown") +
+                  " (" + names + "); rank " + std::to_string(level->rank) + ".",
+              shown);
   }
   d.conflicts = sol.conflicts;
   for (const auto& f : sol.free) d.free.push_back(to_text(f));
@@ -278,9 +311,10 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
         for (const_preorder_iterator it = general.preorder_begin(); it != general.preorder_end(); ++it)
           if (is_a<symbol>(*it)) present.insert(*it);
         for (const auto& sym : table.all()) {
+          if (present.count(sym->sym) == 0) continue;
           const bool known = sym->role == SymbolRole::parameter || sym->role == SymbolRole::defined || sym->role == SymbolRole::time ||
                              std::find(m.given.begin(), m.given.end(), sym->sym) != m.given.end();
-          if (!known && present.count(sym->sym) != 0) a.missing.push_back(sym->sym);
+          if (!known) a.missing.push_back(sym->sym);
         }
         if (!a.missing.empty()) {
           a.status = Answer::Status::undetermined;

@@ -1,8 +1,11 @@
 #include "solve/eliminate.hpp"
 
+#include "expr/trig.hpp"
+
 #include <algorithm>
 #include <limits>
 #include <optional>
+#include <random>
 #include <set>
 #include <tuple>
 #include <unordered_map>
@@ -26,6 +29,16 @@ std::size_t nodes(const ex& e) {
 
 using Row = std::map<std::size_t, ex>;
 
+// An entry in normal form, and exactly 0 when it is zero (also by sin^2 + cos^2 = 1). A
+// polynomial with rational coefficients (most entries: m_1 + m_2, 1, -k) is only expanded:
+// normal() would look for a denominator to cancel against.
+ex reduced(const ex& x) {
+  if (x.info(info_flags::rational_polynomial)) return x.expand();
+  const ex n = normal(x);
+  if (!n.is_zero() && has_trig(n) && normal(pythagoras(n, true)).is_zero()) return 0;
+  return n;
+}
+
 // One elimination step's bookkeeping: rows as maps, and for each column the active rows
 // that hold it.
 struct Work {
@@ -40,9 +53,8 @@ struct Work {
   void subtract(std::size_t k, const ex& f, std::size_t r) {
     for (const auto& [c, v] : a[r]) {
       auto it = a[k].find(c);
-      const ex x = it == a[k].end() ? -f * v : it->second - f * v;
-      const ex n = normal(x);
-      if (is_zero_exactly(n)) {
+      const ex n = reduced(it == a[k].end() ? -f * v : it->second - f * v);
+      if (n.is_zero()) {
         if (it != a[k].end()) a[k].erase(it);
         rows_of[c].erase(k);
       } else {
@@ -50,12 +62,12 @@ struct Work {
         rows_of[c].insert(k);
       }
     }
-    if (!b[r].is_zero()) b[k] = normal(b[k] - f * b[r]);
+    if (!b[r].is_zero()) b[k] = reduced(b[k] - f * b[r]);
     if (track)
       for (const auto& [c, v] : t[r]) {
         auto it = t[k].find(c);
-        const ex n = normal(it == t[k].end() ? -f * v : it->second - f * v);
-        if (is_zero_exactly(n)) {
+        const ex n = reduced(it == t[k].end() ? -f * v : it->second - f * v);
+        if (n.is_zero()) {
           if (it != t[k].end()) t[k].erase(it);
         } else {
           t[k][c] = n;
@@ -162,6 +174,27 @@ std::optional<std::pair<numeric, std::vector<ex>>> irreducible_factors(const ex&
   return std::make_pair(c, out);
 }
 
+// False when the polynomial g (of degree 1 in some symbol x) certainly does not divide p: at
+// random integers for the other symbols, p is not zero at g's root in x. (divide() takes
+// long to say no for a sum over 256 masses.) True when that does not decide it.
+bool may_divide(const ex& p, const ex& g) {
+  if (is_a<symbol>(g)) return p.ldegree(g) > 0 || p.is_zero();
+  for (const ex& x : symbols_in(g)) {
+    if (g.degree(x) != 1) continue;
+    std::mt19937 rng(20261123);
+    const exmap point = random_point(p + g, rng);
+    RationalPoint numbers;
+    for (const auto& [s, v] : point)
+      if (!s.is_equal(x)) numbers.emplace(s, ex_to<numeric>(v));
+    const RationalAt a = rational_at(g.coeff(x, 1), numbers), b = rational_at(g.coeff(x, 0), numbers);
+    if (a.kind != RationalAt::Kind::value || b.kind != RationalAt::Kind::value || a.value.is_zero()) return true;
+    numbers.emplace(x, -b.value / a.value);
+    const RationalAt at = rational_at(p, numbers);
+    return at.kind != RationalAt::Kind::value || at.value.is_zero();
+  }
+  return true;
+}
+
 // (b - sum of v x) / pivot in normal form without a gcd, in the common case of a chain or a
 // cascade: b and each v polynomials, the pivot a number or a product of irreducible
 // polynomials, and every x a polynomial or a fraction whose denominator is such a product
@@ -218,6 +251,10 @@ std::optional<ex> quick_quotient(const ex& b, const std::vector<std::pair<ex, ex
   ex out = 1;
   for (const ex& g : den) {
     ex q;
+    if (!may_divide(num, g)) {
+      out /= g;
+      continue;
+    }
     if (divide(num, g, q))
       num = q.expand();
     else
@@ -253,7 +290,7 @@ Elimination eliminate(const SparseSystem& s, const std::vector<ex>& symbols, Piv
     for (const auto& [cc, v] : w.a[r]) w.rows_of[cc].erase(r);
     const ex pivot = w.a[r].at(c);
     const std::vector<std::size_t> others(w.rows_of[c].begin(), w.rows_of[c].end());
-    for (const std::size_t k : others) w.subtract(k, normal(w.a[k].at(c) / pivot), r);
+    for (const std::size_t k : others) w.subtract(k, reduced(w.a[k].at(c) / pivot), r);
     eliminated[c] = true;
     order.push_back(*p);
   }

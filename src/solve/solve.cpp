@@ -250,18 +250,43 @@ ex factored(const ex& polynomial) {
 
 }  // namespace
 
-ex simplest(const ex& e) {
+namespace {
+
+ex simplest_uncached(const ex& e) {
   ex n = normal_remembered(e);
+  // Which form is shorter is judged by its printed length; past some hundreds of nodes
+  // (a chain's closed forms over 256 masses), by its node count: printing both forms of
+  // every closed form was a quarter of the time of a large problem.
+  const bool large = node_count(n, 301) > 300;
+  auto shorter = [&](const ex& a, const ex& b) {
+    return large ? node_count(a) < node_count(b) : to_text(a).size() < to_text(b).size();
+  };
   // sin^2 + cos^2 = 1: the shorter of the two rewritings, when one is shorter.
   if (has_trig(n))
     for (const bool to_cos : {true, false}) {
       const ex t = normal(pythagoras(n, to_cos));
-      if (to_text(t).size() < to_text(n).size()) n = t;
+      if (shorter(t, n)) n = t;
     }
   const ex nd = numer_denom_of_normal(n);
   const ex f = factored(nd.op(0)) / factored(nd.op(1));
   remember_normal(f, n);
-  return to_text(f).size() < to_text(n).size() ? f : n;
+  return shorter(f, n) ? f : n;
+}
+
+}  // namespace
+
+// Remembered per thread like factored(): the solver, the conditions and the report ask for
+// the same closed forms.
+ex simplest(const ex& e) {
+  struct Hash {
+    std::size_t operator()(const ex& x) const { return x.gethash(); }
+  };
+  thread_local std::unordered_map<ex, ex, Hash, ex_is_equal> memory;
+  if (auto it = memory.find(e); it != memory.end()) return it->second;
+  const ex out = simplest_uncached(e);
+  if (memory.size() >= 4096) memory.clear();
+  memory.emplace(e, out);
+  return out;
 }
 
 namespace {
@@ -447,23 +472,24 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
   }
 
   // Verify: the general solution satisfies every equation at random exact rational values
-  // of the parameters and free unknowns (drawn from about 10^15 values each, so a residual
-  // that is not zero vanishes at one by chance with a probability of its degree over 10^15),
+  // of the parameters and free unknowns (integers drawn from 2^40 values each, so a residual
+  // that is not zero vanishes at one by chance with a probability of its degree over 2^40),
   // and symbolically when the solution is small (a textbook problem's always is; expanding
   // large residuals is what would make this the slowest step). At a point, each unknown's
   // value is evaluated once and put into every equation.
   std::size_t solution_nodes = 0;
-  for (const auto& [u, g] : sol.general) solution_nodes += node_count(g);
-  const bool symbolically = solution_nodes <= 2000;
+  for (const auto& [u, g] : sol.general)
+    if ((solution_nodes += node_count(g, 2001)) > 2000) break;
+  const bool symbolically = solution_nodes <= 2000;  // (counted up to 2001)
   if (symbolically)
     for (const auto& eq : equations) {
       const ex residual = (eq.lhs - eq.rhs).subs(sol.general);
       if (!zero(residual))
         throw InternalError("solution fails equation '" + eq.label + "': residual " + to_text(normal(residual)));
     }
+  // The values hold no symbol the equations do not: the points are drawn for theirs.
   lst everything;
   for (const auto& eq : equations) everything.append(eq.lhs - eq.rhs);
-  for (const auto& [u, g] : sol.general) everything.append(g);
   std::mt19937 rng(20261121);
   int trial = 0;
   // A point where some denominator vanishes is drawn again (GiNaC would throw there, from
@@ -571,9 +597,18 @@ Solution solve(const Model& model, const EquationSystem& s) {
         if (present.count(g) != 0) parameters.push_back(g);
       // Not for a name a turning strand's length depends on (or for that length itself):
       // the condition only looks linear in it.
-      parameters.erase(std::remove_if(parameters.begin(), parameters.end(),
-                                      [&](const ex& p) { return model.symbols->hidden_in_lengths(cc.expr, p); }),
-                       parameters.end());
+      // (The lengths in the condition are found once, not for each parameter.)
+      std::vector<const SymbolInfo*> lengths_in;
+      for (const auto& sym : model.symbols->all())
+        if (sym->geometric && present.count(sym->sym) != 0) lengths_in.push_back(sym.get());
+      if (!lengths_in.empty())
+        parameters.erase(std::remove_if(parameters.begin(), parameters.end(),
+                                        [&](const ex& p) {
+                                          return std::any_of(lengths_in.begin(), lengths_in.end(), [&](const SymbolInfo* l) {
+                                            return l->sym.is_equal(p) || l->definition->has(p);
+                                          });
+                                        }),
+                         parameters.end());
       if (c.op != "=") {
         // Factors of known sign divided out once: what is left is solved for a parameter, or
         // is a number, and then the condition always or never holds.
