@@ -10,6 +10,9 @@ KIND is one of
            the last string carries blocks B_n and B_(n+1)
   tackle   a block-and-tackle with n strands: a load L hangs from a movable pulley block,
            the string runs n times between it and the fixed block C, pulled down with F
+  carts    a 3-D train of n carts on a smooth floor joined by ball joints, the front one
+           pulled along x; every cart's LMB in x, y, z and AMB about its center of mass
+           (6n equations, 5n - 3 unknowns, the rest redundant)
 """
 import sys
 
@@ -66,7 +69,23 @@ def block_and_tackle(n):
     return "\n".join(out) + "\n"
 
 
-KINDS = {"chain": chain, "cascade": cascade, "tackle": block_and_tackle}
+def carts(n):
+    out = [f'title: "Benchmark: a 3-D train of {n} carts joined by ball joints"', "axes: [x, y, z]", "parameters:",
+           "  F: {value: 8, unit: N}", "  g: {value: 9.81, unit: m/s^2}", "  b: {value: 1, unit: m}"]
+    out += [f"  m_{i}: {{value: {1 + i % 3}, unit: kg}}" for i in range(1, n + 1)]
+    out += ["gravity: [0, 0, -g]", "bodies:"]
+    out += [f"  C{i}: {{mass: m_{i}, position: x_{i}, center_of_mass: [x_{i}, 0, 0]}}" for i in range(1, n + 1)]
+    out.append("points:")
+    out += [f"  J{i}: {{on: C{i + 1}, offset: [\"-b\", 0, 0]}}" for i in range(1, n)]
+    out.append("connections:")
+    out += [f"  - {{type: roller, body: C{i}, at: C{i}, normal: [0, 0, 1]}}" for i in range(1, n + 1)]
+    out += [f"  - {{type: ball_joint, body: C{i + 1}, other: C{i}, at: J{i}}}" for i in range(1, n)]
+    out.append(f"  - {{type: force, on: C{n}, at: C{n}, force: [F, 0, 0]}}")
+    out.append("layout: {" + ", ".join(f"x_{i}: {3 * i}" for i in range(1, n + 1)) + "}")
+    return "\n".join(out) + "\n"
+
+
+KINDS = {"chain": chain, "cascade": cascade, "tackle": block_and_tackle, "carts": carts}
 
 if __name__ == "__main__":
     if len(sys.argv) != 3 or sys.argv[1] not in KINDS:

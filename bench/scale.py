@@ -1,14 +1,15 @@
 #!/usr/bin/env python3
 """Scale benchmark: tackle against its peers on the same equations, in the same run.
 
-  python3 bench/scale.py [--kinds chain,cascade,tackle] [--sizes chain=16,32,64,128,256 ...]
-                         [--peers ginac,sympy,maxima,giac] [--timeout 60] [--repeat 3]
+  python3 bench/scale.py [--kinds chain,cascade,tackle,carts] [--sizes chain=16,32,64,128,256 ...]
+                         [--peers ginac,sympy,maxima,giac] [--timeout 60] [--repeat 3] [--files F,...]
 
 For each kind (bench/generate.py) and size n it writes the description, then times, whole
 process and best of --repeat runs:
   tackle solve    `build/tackle solve FILE`  (peak memory from /usr/bin/time)
   tackle derive   `build/tackle derive FILE`
-and, on the equations tackle writes (`derive --format json`), the peers:
+and, on the equations tackle writes (`derive --format json`: `equations` and `solved_for`),
+the peers:
   ginac           build/bench/ginac_lsolve: GiNaC's lsolve(), each value put in normal form
   sympy           python3 with SymPy: linsolve()
   maxima          maxima --batch-string: linsolve()
@@ -23,6 +24,7 @@ import math
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -32,18 +34,26 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = os.environ.get("TACKLE_BUILD_DIR", os.path.join(ROOT, "build"))
 TACKLE = os.path.join(BUILD, "tackle")
 GINAC = os.path.join(BUILD, "bench", "ginac_lsolve")
-DEFAULT_SIZES = {"chain": [16, 32, 64, 128, 256], "cascade": [2, 4, 6, 8, 10], "tackle": [4, 16, 64]}
+DEFAULT_SIZES = {"chain": [16, 32, 64, 128, 256], "cascade": [2, 4, 6, 8, 10], "tackle": [4, 16, 64],
+                 "carts": [8, 16, 32, 64]}
 
 
 def run(cmd, timeout, stdin=None):
-    """(seconds, peak KB or None, completed) of one whole-process run."""
+    """(seconds, peak KB or None, completed) of one whole-process run. A run past the timeout
+    is killed with everything it started (its own process group), so that it cannot go on
+    taking a core from the runs after it."""
     timed = ["/usr/bin/time", "-f", "%M"] + cmd if os.path.exists("/usr/bin/time") else cmd
     start = time.perf_counter()
+    proc = subprocess.Popen(timed, stdin=subprocess.PIPE if stdin else subprocess.DEVNULL, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, start_new_session=True)
     try:
-        p = subprocess.run(timed, input=stdin, capture_output=True, text=True, timeout=timeout)
+        out, err = proc.communicate(input=stdin, timeout=timeout)
     except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.communicate()
         return None, None, None
     seconds = time.perf_counter() - start
+    p = subprocess.CompletedProcess(timed, proc.returncode, out, err)
     peak = None
     if timed is not cmd:
         last = p.stderr.strip().splitlines()[-1:] or [""]
@@ -77,10 +87,12 @@ def plain(text):
 
 
 def equations_of(path):
+    """The equations tackle solves and the unknowns it solves them for (`derive --format
+    json` writes both; the JSON's `unknowns` are the answers asked for, which may be fewer)."""
     out = subprocess.run([TACKLE, "derive", "--format", "json", path], capture_output=True, text=True, check=True)
     d = json.loads(out.stdout)
-    unknowns = [plain(u["name"]) for u in d["unknowns"]]
     eqs = [(plain(e["lhs"]), plain(e["rhs"])) for e in d["equations"] if e.get("kind") != "definition"]
+    unknowns = [plain(u) for u in d["solved_for"]]
     return unknowns, eqs
 
 
@@ -95,9 +107,10 @@ def peer_command(peer, unknowns, eqs, workdir):
     if peer == "sympy":
         f = os.path.join(workdir, "system.py")
         with open(f, "w") as o:
-            o.write("from sympy import sympify, linsolve, Eq\n")
+            o.write("from sympy import sympify, linsolve, Eq, true\n")
             o.write(f"u = [sympify(n) for n in {unknowns!r}]\n")
             o.write(f"e = [Eq(sympify(l), sympify(r)) for l, r in {eqs!r}]\n")
+            o.write("e = [q for q in e if q is not true]  # an equation that reads 0 = 0\n")
             o.write("s = linsolve(e, u)\nprint(len(list(s)[0]))\n")
         return [sys.executable, f], None
     if peer == "maxima":
@@ -142,7 +155,7 @@ def show(t, timeout):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--kinds", default="chain,cascade,tackle")
+    ap.add_argument("--kinds", default="chain,cascade,tackle,carts")
     ap.add_argument("--sizes", action="append", default=[], help="KIND=N,N,...")
     ap.add_argument("--peers", default="ginac,sympy,maxima,giac")
     ap.add_argument("--timeout", type=float, default=60)

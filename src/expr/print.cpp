@@ -20,20 +20,22 @@ tackle_latex::tackle_latex() : print_latex(std::cout) {}
 GINAC_IMPLEMENT_PRINT_CONTEXT(tackle_text, print_dflt)
 GINAC_IMPLEMENT_PRINT_CONTEXT(tackle_latex, print_latex)
 
-// A term's shape and index: its key with each index (digits after "_") written as its
-// offset from the first (m_12*ddot(x_12) -> "m_#0*ddot(x_#0)", 12; T_3*dot(x_4) ->
-// "T_#0*dot(x_#1)", 3). Nothing when the term has no index.
+// A term's shape and index: its key with each index (digits ending a name or a part of it:
+// m_12, N_C3, J2_x) written as its offset from the first (m_12*ddot(x_12) ->
+// "m_#0*ddot(x_#0)", 12; T_3*dot(x_4) -> "T_#0*dot(x_#1)", 3). Nothing without an index.
 std::optional<std::pair<std::string, long>> index_shape(const std::string& key) {
   std::string shape;
   std::optional<long> first;
   for (std::size_t i = 0; i < key.size();) {
-    if (key[i] == '_' && i + 1 < key.size() && std::isdigit(static_cast<unsigned char>(key[i + 1])) && key[i + 1] != '0') {
+    const bool in_name = std::isalpha(static_cast<unsigned char>(key[i])) != 0 || key[i] == '_';
+    if (in_name && i + 1 < key.size() && std::isdigit(static_cast<unsigned char>(key[i + 1])) && key[i + 1] != '0') {
       std::size_t e = i + 1;
       while (e < key.size() && std::isdigit(static_cast<unsigned char>(key[e]))) ++e;
       if (e - i - 1 > 9) return std::nullopt;
       const long v = std::stol(key.substr(i + 1, e - i - 1));
       if (!first) first = v;
-      shape += "_#" + std::to_string(v - *first);
+      shape += key[i];
+      shape += "#" + std::to_string(v - *first);
       i = e;
     } else {
       shape += key[i++];

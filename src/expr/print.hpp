@@ -28,7 +28,7 @@ class tackle_latex : public GiNaC::print_latex {
   explicit tackle_latex(std::ostream& os, unsigned opt = 0) : GiNaC::print_latex(os, opt) {}
 };
 
-/// A printed term's shape and index: the text with each index (digits after "_") written as
+/// A printed term's shape and index: the text with each index (digits in a name) written as
 /// its offset from the first, and the first index (m_12*ddot(x_12) -> "m_#0*ddot(x_#0)", 12).
 /// Terms of one shape whose indices go up by one make a run, which LaTeX and the reports'
 /// lists write with dots. Nothing when the text has no index.

@@ -405,6 +405,10 @@ nlohmann::ordered_json json_object(const Derivation& d, bool full) {
                        {"sources", eq.sources}};
       j["equations"].push_back(e);
     }
+    // The unknowns the equations are solved for, in the solver's order (the answers asked
+    // for may be fewer): with the equations, everything a program needs to solve them again.
+    j["solved_for"] = nlohmann::ordered_json::array();
+    for (const auto& u : d.system->unknowns) j["solved_for"].push_back(to_text(u));
     j["constraints"] = nlohmann::ordered_json::array();
     for (const auto& c : d.system->constraints)
       j["constraints"].push_back({{"label", c.label},

@@ -422,12 +422,13 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
   // the columns in order, so that the free unknowns are the ones a person reading the
   // unknowns in order would leave free; when some equation is left over, again with the
   // rows tracked, to say which equations it combines.
-  Elimination e = eliminate(system, unknowns, Pivoting::markowitz, false);
+  // (With more equations than unknowns some are left over for certain: tracked at once.)
+  Elimination e = eliminate(system, unknowns, Pivoting::markowitz, n_eq > n_unk);
   Pivoting pivoting = Pivoting::markowitz;
   if (e.rank < n_unk) {
     pivoting = Pivoting::in_column_order;
     e = eliminate(system, unknowns, pivoting, !e.leftover.empty());
-  } else if (!e.leftover.empty()) {
+  } else if (!e.leftover.empty() && n_eq <= n_unk) {
     e = eliminate(system, unknowns, pivoting, true);
   }
   sol.rank = e.rank;

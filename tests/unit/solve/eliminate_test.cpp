@@ -144,3 +144,41 @@ TEST_CASE("Elimination: an equation left over names the equations it combines", 
   // The row left over is a combination of all three (x + y, x - y and 2 x are dependent).
   CHECK(e.leftover[0].combination.size() == 3);
 }
+
+TEST_CASE("Elimination: a 3-D train of 12 carts joined by ball joints gives each joint the share of the carts behind it", "[solve][scale]") {
+  // bench/generate.py carts 12. By hand: the carts share a = F/M (M = m_1 + ... + m_12);
+  // the joint J_k pushes cart k+1 with -(m_1 + ... + m_k) a along x and nothing across (no
+  // moment balances the y and z components about the centers of mass); each floor carries
+  // its cart's weight. Every cart's AMB about x reads 0 = 0 and is reported redundant.
+  const int n = 12;
+  std::ostringstream o;
+  o << "title: carts\naxes: [x, y, z]\nparameters: {F: {unit: N}, g: {unit: m/s^2}, b: {unit: m}";
+  for (int i = 1; i <= n; ++i) o << ", m_" << i << ": {unit: kg}";
+  o << "}\ngravity: [0, 0, -g]\nbodies:\n";
+  for (int i = 1; i <= n; ++i) o << "  C" << i << ": {mass: m_" << i << ", position: x_" << i << ", center_of_mass: [x_" << i << ", 0, 0]}\n";
+  o << "points:\n";
+  for (int i = 1; i < n; ++i) o << "  J" << i << ": {on: C" << i + 1 << ", offset: [\"-b\", 0, 0]}\n";
+  o << "connections:\n";
+  for (int i = 1; i <= n; ++i) o << "  - {type: roller, body: C" << i << ", at: C" << i << ", normal: [0, 0, 1]}\n";
+  for (int i = 1; i < n; ++i) o << "  - {type: ball_joint, body: C" << i + 1 << ", other: C" << i << ", at: J" << i << "}\n";
+  o << "  - {type: force, on: C" << n << ", at: C" << n << ", force: [F, 0, 0]}\nlayout: {";
+  for (int i = 1; i <= n; ++i) o << (i > 1 ? ", " : "") << "x_" << i << ": " << 3 * i;
+  o << "}\n";
+  const auto a = test::run_text(o.str());
+  REQUIRE(a->solution.status == Solution::Status::determined);
+  CHECK(a->solution.rank == 5 * n - 3);  // n accelerations, n normal forces, 3 (n - 1) joint forces
+  CHECK(a->solution.redundant.size() == a->system.equations.size() - a->solution.rank);
+  std::string total, partial;
+  for (int i = 1; i <= n; ++i) total += (i > 1 ? " + m_" : "m_") + std::to_string(i);
+  for (int i = 1; i <= n; ++i) {
+    CHECK(difference(*a, "ddot(x_" + std::to_string(i) + ")", "F/(" + total + ")").is_zero());
+    CHECK(difference(*a, "N_C" + std::to_string(i), "m_" + std::to_string(i) + "*g").is_zero());
+  }
+  for (int k = 1; k < n; ++k) {
+    partial += (k > 1 ? " + m_" : "m_") + std::to_string(k);
+    const std::string j = "J" + std::to_string(k);
+    CHECK(difference(*a, j + "_x", "-(" + partial + ")*F/(" + total + ")").is_zero());
+    CHECK(difference(*a, j + "_y", "0").is_zero());
+    CHECK(difference(*a, j + "_z", "0").is_zero());
+  }
+}
