@@ -1,3 +1,5 @@
+// Per-stage times of one description: build/bench/tackle_stages FILE (for reading, never for
+// pass/fail). The chain is run stage by stage, then whole (analyze, explain, write).
 #include <chrono>
 #include <cstdio>
 #include "pipeline/pipeline.hpp"
@@ -6,6 +8,10 @@ using namespace tackle;
 using clk = std::chrono::steady_clock;
 static double ms(clk::time_point a, clk::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
 int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: tackle_stages FILE\n");
+    return 2;
+  }
   auto t0 = clk::now();
   RuleSet rules = load_rules(TACKLE_SOURCE_DIR "/rules");
   auto t1 = clk::now();
