@@ -265,9 +265,9 @@ std::optional<ex> quick_quotient(const ex& b, const std::vector<std::pair<ex, ex
   return out;
 }
 
-}  // namespace
-
-Elimination eliminate(const SparseSystem& s, const std::vector<ex>& symbols, Pivoting pivoting, bool track) {
+// The elimination with symbolic tracking when asked; also the pivots in their order.
+std::pair<Elimination, std::vector<Pivot>> eliminate_symbolically(const SparseSystem& s, const std::vector<ex>& symbols,
+                                                                  Pivoting pivoting, bool track) {
   Work w;
   w.a = s.a;
   w.b = s.b;
@@ -319,10 +319,95 @@ Elimination eliminate(const SparseSystem& s, const std::vector<ex>& symbols, Piv
     Elimination::Leftover l;
     l.row = i;
     l.rhs = w.b[i];
-    if (track) l.combination = w.t[i];
+    if (track)
+      for (const auto& [row, coefficient] : w.t[i]) l.combination.push_back(row);
     out.leftover.push_back(std::move(l));
   }
-  return out;
+  return {std::move(out), std::move(order)};
+}
+
+// The pivots replayed in exact numbers at random points of integers, keeping track of the
+// original rows each row combines: for each row left over, those rows. Nothing when an entry
+// is not a rational function of symbols; a point where a pivot or an entry's denominator is
+// zero is drawn again (five draws at most).
+std::optional<std::vector<std::vector<std::size_t>>> replayed_combinations(const SparseSystem& s,
+                                                                          const std::vector<Pivot>& order,
+                                                                          const std::vector<std::size_t>& leftover) {
+  const std::size_t n_rows = s.a.size();
+  lst entries;
+  for (const auto& row : s.a)
+    for (const auto& [c, v] : row) entries.append(v);
+  std::mt19937 rng(20261124);
+  for (int draw = 0; draw < 5; ++draw) {
+    RationalPoint point;
+    for (const auto& [sym, v] : random_point(entries, rng)) point.emplace(sym, ex_to<numeric>(v));
+    using NumRow = std::map<std::size_t, numeric>;
+    std::vector<NumRow> a(n_rows), t(n_rows);
+    bool usable = true;
+    for (std::size_t i = 0; i < n_rows && usable; ++i) {
+      t[i][i] = 1;
+      for (const auto& [c, v] : s.a[i]) {
+        const RationalAt r = rational_at(v, point);
+        if (r.kind == RationalAt::Kind::other) return std::nullopt;
+        if (r.kind == RationalAt::Kind::pole) {
+          usable = false;
+          break;
+        }
+        if (!r.value.is_zero()) a[i][c] = r.value;
+      }
+    }
+    if (!usable) continue;
+    std::vector<bool> active(n_rows, true);
+    auto minus = [](NumRow& into, const numeric& f, const NumRow& from) {
+      for (const auto& [c, v] : from) {
+        const numeric x = into[c] - f * v;
+        if (x.is_zero())
+          into.erase(c);
+        else
+          into[c] = x;
+      }
+    };
+    for (const Pivot& p : order) {
+      active[p.row] = false;
+      const auto at = a[p.row].find(p.column);
+      if (at == a[p.row].end()) {
+        usable = false;  // the pivot is zero at this point
+        break;
+      }
+      const numeric pivot = at->second;
+      for (std::size_t k = 0; k < n_rows; ++k) {
+        if (!active[k]) continue;
+        const auto it = a[k].find(p.column);
+        if (it == a[k].end()) continue;
+        const numeric f = it->second / pivot;
+        minus(a[k], f, a[p.row]);
+        minus(t[k], f, t[p.row]);
+      }
+    }
+    if (!usable) continue;
+    std::vector<std::vector<std::size_t>> out;
+    for (const std::size_t l : leftover) {
+      std::vector<std::size_t> rows;
+      for (const auto& [row, coefficient] : t[l]) rows.push_back(row);
+      out.push_back(std::move(rows));
+    }
+    return out;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+Elimination eliminate(const SparseSystem& s, const std::vector<ex>& symbols, Pivoting pivoting, bool track) {
+  auto [out, order] = eliminate_symbolically(s, symbols, pivoting, false);
+  if (!track || out.leftover.empty()) return out;
+  std::vector<std::size_t> rows;
+  for (const auto& l : out.leftover) rows.push_back(l.row);
+  if (const auto combinations = replayed_combinations(s, order, rows)) {
+    for (std::size_t i = 0; i < rows.size(); ++i) out.leftover[i].combination = (*combinations)[i];
+    return out;
+  }
+  return eliminate_symbolically(s, symbols, pivoting, true).first;
 }
 
 }  // namespace tackle

@@ -37,17 +37,21 @@ struct Elimination {
   /// columns' symbols (normal form). Empty for free columns.
   std::vector<GiNaC::ex> value;
   /// Rows left without a pivot (each reads 0 = rhs): their index, the reduced right-hand
-  /// side and, when tracked, the original rows they combine (row -> coefficient).
+  /// side and, when tracked, the original rows they combine (in order).
   struct Leftover {
     std::size_t row = 0;
     GiNaC::ex rhs;
-    std::map<std::size_t, GiNaC::ex> combination;
+    std::vector<std::size_t> combination;
   };
   std::vector<Leftover> leftover;
 };
 
 /// Eliminates `s`. `symbols[j]` stands for column j in the values of the other columns when
 /// column j is free. `track`: record, for each row left over, which original rows it combines.
+/// Those are found by replaying the pivots in exact numbers at a random point of integers
+/// (the rows a leftover row combines are those whose coefficient is not zero there; a
+/// coefficient that is not zero vanishes at such a point with a chance of its degree over
+/// 2^40), and symbolically when the entries are not all rational functions.
 [[nodiscard]] Elimination eliminate(const SparseSystem& s, const std::vector<GiNaC::ex>& symbols, Pivoting pivoting,
                                     bool track);
 

@@ -435,7 +435,7 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
 
   auto involved = [&](const Elimination::Leftover& l) {
     std::vector<std::string> labels;
-    for (const auto& [row, coefficient] : l.combination) labels.push_back(equations[row].label);
+    for (const std::size_t row : l.combination) labels.push_back(equations[row].label);
     return labels;
   };
   // Rows without a pivot: 0 = b. Nonzero b: the equations that combine to it conflict.
