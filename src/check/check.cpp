@@ -18,6 +18,7 @@
 #include "expr/kind.hpp"
 #include "expr/parse.hpp"
 #include "expr/print.hpp"
+#include "expr/rational.hpp"
 #include "numeric/evaluate.hpp"
 #include "solve/solve.hpp"
 
@@ -120,18 +121,6 @@ double expanded_size(const ex& e) {
   return 1;
 }
 
-std::size_t tree_size(const ex& e) {
-  std::size_t n = 0;
-  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) ++n;
-  return n;
-}
-
-std::set<ex, ex_is_less> symbols_of(const ex& e) {
-  std::set<ex, ex_is_less> out;
-  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
-    if (is_a<symbol>(*it)) out.insert(*it);
-  return out;
-}
 
 // "6.8 N" -> ("6.8", "N"); "6.8" -> ("6.8", ""); nullopt when the text is not a number,
 // optionally followed by something that starts like a unit (a letter).
@@ -855,7 +844,7 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
   for (const_preorder_iterator it = answer.preorder_begin(); it != answer.preorder_end(); ++it)
     symbolic_exponent = symbolic_exponent || (is_exactly<power>(*it) && !is_exactly<numeric>(it->op(1)));
   const ex quotient = symbolic_exponent ? ex(0) : normal(answer.subs(definitions_) / ref.closed_form);
-  if (!symbolic_exponent && !is_a<numeric>(quotient) && tree_size(quotient) <= 7)
+  if (!symbolic_exponent && !is_a<numeric>(quotient) && node_count(quotient, 8) <= 7)
     factor_findings.push_back({"factor", "off by a factor of " + to_text(quotient)});
   // Two parameters swapped.
   std::vector<ex> params;
@@ -921,14 +910,14 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
   // One term too many: the answer is the correct one plus a single term (a product of the
   // parameters), when nothing above explains it.
   if (std::none_of(r.findings.begin(), r.findings.end(), [](const Finding& f) { return f.code == "term_sign" || f.code == "missing_term"; }) &&
-      is_a<add>(ref.closed_form.expand()) && tree_size(expanded) <= 200) {
+      is_a<add>(ref.closed_form.expand()) && node_count(expanded, 201) <= 200) {
     const ex extra = (expanded - ref.closed_form).expand();
     if (!extra.is_zero() && !is_a<add>(extra) && !is_a<numeric>(extra) && is_a<add>(expanded.expand()))
       r.findings.push_back({"extra_term", "the answer has one term too many"});
   }
   r.findings.insert(r.findings.end(), factor_findings.begin(), factor_findings.end());
   // Parameters the answer depends on, or misses (named in the problem's order).
-  const auto used = symbols_of(answer.subs(definitions_)), needed = symbols_of(ref.closed_form);
+  const auto used = symbols_in(answer.subs(definitions_)), needed = symbols_in(ref.closed_form);
   std::vector<std::string> extra, missing;
   for (const auto& p : parameters_) {
     if (used.count(p.symbol) && !needed.count(p.symbol)) extra.push_back(p.name);

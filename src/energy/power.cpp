@@ -10,45 +10,6 @@ namespace tackle {
 
 using namespace GiNaC;
 
-namespace {
-
-// Whether `e` is zero once each substitution is made in turn, decided at two random exact
-// points: each substituted value is evaluated at the point once, then `e`. Nothing when
-// some value is not a rational function of symbols, or no point without a pole was found.
-std::optional<bool> zero_after(const ex& e, const std::vector<const exmap*>& substitutions) {
-  lst everything{e};
-  for (const exmap* s : substitutions)
-    for (const auto& [u, v] : *s) everything.append(v);
-  std::mt19937 rng(20261123);
-  int done = 0;
-  for (int draws = 0; done < 2 && draws < 30; ++draws) {
-    RationalPoint numbers;
-    for (const auto& [sym, v] : random_point(everything, rng)) numbers.emplace(sym, ex_to<numeric>(v));
-    bool pole = false;
-    // Later substitutions are made in the result of earlier ones: evaluate the last first.
-    for (auto s = substitutions.rbegin(); !pole && s != substitutions.rend(); ++s)
-      for (const auto& [u, v] : **s) {
-        const RationalAt r = rational_at(v, numbers);
-        if (r.kind == RationalAt::Kind::other) return std::nullopt;
-        if (r.kind == RationalAt::Kind::pole) {
-          pole = true;
-          break;
-        }
-        numbers.insert_or_assign(u, r.value);
-      }
-    if (pole) continue;
-    const RationalAt r = rational_at(e, numbers);
-    if (r.kind == RationalAt::Kind::other) return std::nullopt;
-    if (r.kind == RationalAt::Kind::pole) continue;
-    if (!r.value.is_zero()) return false;
-    ++done;
-  }
-  if (done < 2) return std::nullopt;
-  return true;
-}
-
-}  // namespace
-
 PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& sol) {
   PowerCheck c;
   if (sol.status == Solution::Status::inconsistent) {
@@ -113,7 +74,7 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
   for (const auto& [u, g] : sol.general)
     if ((solution_nodes += node_count(g, 2001)) > 2000) break;
   if (m.lengths.empty() && solution_nodes > 2000)
-    if (const auto zero = zero_after(balance, {&sol.general, &rate_values}); zero && *zero) {
+    if (const auto zero = zero_at_random_points(balance, {&sol.general, &rate_values}); zero && *zero) {
       c.residual = 0;
       c.status = PowerCheck::Status::holds;
       return c;

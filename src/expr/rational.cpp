@@ -128,19 +128,83 @@ std::size_t node_count(const ex& e, std::size_t limit) {
   return n;
 }
 
-std::optional<bool> zero_at_random_points(const ex& e, int points) {
+Degrees degrees_of(const ex& expanded) {
+  Degrees d;
+  auto powers = [](const ex& term) {
+    std::map<ex, int, ex_is_less> p;
+    auto one = [&](const ex& f) {
+      if (is_a<symbol>(f)) p[f] += 1;
+      else if (is_a<power>(f) && is_a<symbol>(f.op(0)) && f.op(1).info(info_flags::nonnegint))
+        p[f.op(0)] += ex_to<numeric>(f.op(1)).to_int();
+    };
+    if (is_a<mul>(term))
+      for (std::size_t i = 0; i < term.nops(); ++i) one(term.op(i));
+    else
+      one(term);
+    return p;
+  };
+  const bool sum = is_a<add>(expanded);
+  const std::size_t n = sum ? expanded.nops() : 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto p = powers(sum ? expanded.op(i) : expanded);
+    for (const auto& [s, k] : p) d.high[s] = std::max(d.high[s], k);
+    if (i == 0) {
+      d.low = p;
+    } else {
+      for (auto it = d.low.begin(); it != d.low.end();) {
+        const auto q = p.find(it->first);
+        if (q == p.end()) {
+          it = d.low.erase(it);
+        } else {
+          it->second = std::min(it->second, q->second);
+          ++it;
+        }
+      }
+    }
+  }
+  return d;
+}
+
+bool linear_and_coprime(const ex& expanded) {
+  if (!is_a<add>(expanded)) return false;
+  const Degrees d = degrees_of(expanded);
+  for (const auto& [x, high] : d.high) {
+    if (high != 1 || d.low.count(x) != 0) continue;
+    const ex a = expanded.coeff(x, 1), b = expanded.coeff(x, 0);
+    if (!b.is_zero() && is_a<numeric>(gcd(a, b))) return true;
+  }
+  return false;
+}
+
+std::optional<bool> zero_at_random_points(const ex& e, const std::vector<const exmap*>& substitutions) {
+  lst everything{e};
+  for (const exmap* s : substitutions)
+    for (const auto& [u, v] : *s) everything.append(v);
   std::mt19937 rng(20261123);
   int done = 0;
-  for (int draws = 0; done < points && draws < 30; ++draws) {
+  for (int draws = 0; done < 2 && draws < 30; ++draws) {
     RationalPoint numbers;
-    for (const auto& [sym, v] : random_point(e, rng)) numbers.emplace(sym, ex_to<numeric>(v));
+    for (const auto& [sym, v] : random_point(everything, rng)) numbers.emplace(sym, ex_to<numeric>(v));
+    bool pole = false;
+    // Later substitutions are made in the result of earlier ones: evaluate the last first.
+    for (auto s = substitutions.rbegin(); !pole && s != substitutions.rend(); ++s)
+      for (const auto& [u, v] : **s) {
+        const RationalAt r = rational_at(v, numbers);
+        if (r.kind == RationalAt::Kind::other) return std::nullopt;
+        if (r.kind == RationalAt::Kind::pole) {
+          pole = true;
+          break;
+        }
+        numbers.insert_or_assign(u, r.value);
+      }
+    if (pole) continue;
     const RationalAt r = rational_at(e, numbers);
     if (r.kind == RationalAt::Kind::other) return std::nullopt;
     if (r.kind == RationalAt::Kind::pole) continue;
     if (!r.value.is_zero()) return false;
     ++done;
   }
-  if (done < points) return std::nullopt;
+  if (done < 2) return std::nullopt;
   return true;
 }
 

@@ -1,10 +1,12 @@
 // Rational functions: normal forms and zero tests, remembered per thread.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <random>
 #include <set>
 #include <unordered_map>
+#include <vector>
 
 #include <ginac/ginac.h>
 
@@ -44,19 +46,35 @@ struct ExHash {
 using RationalPoint = std::unordered_map<GiNaC::ex, GiNaC::numeric, ExHash, GiNaC::ex_is_equal>;
 [[nodiscard]] RationalAt rational_at(const GiNaC::ex& e, const RationalPoint& point);
 
-/// Whether a rational function of symbols is zero, decided at `points` random exact
-/// points (integers from 1 to 2^40, fixed seed: the same points in every run): false when
-/// it is not zero at some point (certain), true when it is zero at every point (a nonzero
-/// one vanishes at a point by chance with a probability of its degree over 2^40), nullopt
-/// when `e` is not a rational function of symbols or no point without a pole was found.
-/// For expressions too large to expand.
-[[nodiscard]] std::optional<bool> zero_at_random_points(const GiNaC::ex& e, int points = 2);
+/// Whether `e` is zero once each substitution is made in turn (the values of one may hold
+/// the symbols the next replaces), decided at two random exact points of integers (1 to
+/// 2^40, fixed seed: the same points in every run); each substituted value is evaluated at a
+/// point once, then `e`. False when it is not zero at some point (certain), true when it is
+/// zero at both (a nonzero one vanishes at a point by chance with a probability of its degree
+/// over 2^40), nullopt when some value or `e` is not a rational function of symbols or no
+/// point without a pole was found. For expressions too large to expand.
+[[nodiscard]] std::optional<bool> zero_at_random_points(const GiNaC::ex& e,
+                                                        const std::vector<const GiNaC::exmap*>& substitutions = {});
 
 /// A random exact rational point for the symbols of `e`, drawn in the order of their names.
 [[nodiscard]] GiNaC::exmap random_point(const GiNaC::ex& e, std::mt19937& rng);
 
 /// The symbols of `e`.
 [[nodiscard]] std::set<GiNaC::ex, GiNaC::ex_is_less> symbols_in(const GiNaC::ex& e);
+
+/// The lowest and highest power of each symbol over the terms of an expanded polynomial, read
+/// in one pass over its terms (ldegree() and degree() of each symbol would be quadratic in a
+/// sum over 256 masses). `low` holds only the symbols in every term.
+struct Degrees {
+  std::map<GiNaC::ex, int, GiNaC::ex_is_less> low, high;
+};
+[[nodiscard]] Degrees degrees_of(const GiNaC::ex& expanded);
+
+/// An expanded polynomial of degree 1 in some symbol x that it is not divisible by, whose
+/// coefficients of x^1 and x^0 have no common factor: it is irreducible (a factor would be
+/// free of x and divide both). m_1 + ... + m_n is; gcd() of the two is far cheaper than
+/// factor().
+[[nodiscard]] bool linear_and_coprime(const GiNaC::ex& expanded);
 
 /// The number of nodes of `e`, counted up to `limit` at most.
 [[nodiscard]] std::size_t node_count(const GiNaC::ex& e, std::size_t limit = static_cast<std::size_t>(-1));

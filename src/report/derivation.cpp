@@ -77,11 +77,6 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   auto section = [&](std::string t) { n.section(std::move(t)); };
   auto text = [&](std::string t) { n.text(std::move(t)); };
   auto text_with = [&](std::string t, std::vector<ex> math) { n.text_with(std::move(t), std::move(math)); };
-  auto list_of = [](std::size_t k) {
-    std::string s;
-    for (std::size_t i = 0; i < k; ++i) s += i ? ", {}" : "{}";
-    return s;
-  };
   // A list of names as prose: runs of five or more names of one shape with indices going
   // up by one are written with dots (x_1, ..., x_256), so that 511 unknowns make a line.
   // Returns the text with a placeholder per name shown, and those names.

@@ -20,12 +20,7 @@ namespace {
 
 // The number of nodes of an expression: the pivot of fewest nodes among equally sparse
 // candidates keeps the entries small. Counted, not printed, and the same in every run.
-std::size_t nodes(const ex& e) {
-  if (is_a<numeric>(e)) return 0;
-  std::size_t n = 0;
-  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it) ++n;
-  return n;
-}
+std::size_t nodes(const ex& e) { return is_a<numeric>(e) ? 0 : node_count(e); }
 
 using Row = std::map<std::size_t, ex>;
 
@@ -125,21 +120,12 @@ std::optional<Pivot> choose(const Work& w, const std::vector<bool>& eliminated, 
   return best;
 }
 
-// Whether a polynomial is irreducible because it is of degree 1 in some symbol x with
-// coefficients of x^1 and x^0 that have no common factor (m_1 + ... + m_n is: any factor
-// would be free of x and divide both). Remembered: a chain's values share one denominator.
+// Whether a polynomial is irreducible by linear_and_coprime, remembered: a chain's values
+// share one denominator.
 bool linear_irreducible(const ex& p) {
   thread_local std::unordered_map<ex, bool, ExHash, ex_is_equal> memory;
   if (auto it = memory.find(p); it != memory.end()) return it->second;
-  bool out = false;
-  if (is_a<add>(p))
-    for (const ex& x : symbols_in(p)) {
-      if (p.degree(x) != 1 || p.ldegree(x) != 0) continue;
-      if (is_a<numeric>(gcd(p.coeff(x, 1), p.coeff(x, 0)))) {
-        out = true;
-        break;
-      }
-    }
+  const bool out = linear_and_coprime(p);
   if (memory.size() >= 1024) memory.clear();
   memory.emplace(p, out);
   return out;

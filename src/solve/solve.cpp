@@ -103,50 +103,6 @@ namespace {
 // The monomial and integer content of a large expanded polynomial times what is left: GiNaC's
 // factor() takes seconds on sums of some dozens of terms in ten symbols (a collar hoisted by
 // two cables: 2 s for one problem), and factoring such a sum rarely shortens it.
-// The lowest and highest power of each symbol over the terms of an expanded polynomial, in
-// one pass over its terms (ldegree() and degree() of each symbol would be quadratic in a sum
-// over 256 masses).
-struct Degrees {
-  std::map<ex, int, ex_is_less> low, high;
-};
-
-Degrees degrees_of(const ex& expanded) {
-  Degrees d;
-  auto powers = [](const ex& term) {
-    std::map<ex, int, ex_is_less> p;
-    auto one = [&](const ex& f) {
-      if (is_a<symbol>(f)) p[f] += 1;
-      else if (is_a<power>(f) && is_a<symbol>(f.op(0)) && f.op(1).info(info_flags::nonnegint))
-        p[f.op(0)] += ex_to<numeric>(f.op(1)).to_int();
-    };
-    if (is_a<mul>(term))
-      for (std::size_t i = 0; i < term.nops(); ++i) one(term.op(i));
-    else
-      one(term);
-    return p;
-  };
-  const bool sum = is_a<add>(expanded);
-  const std::size_t n = sum ? expanded.nops() : 1;
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto p = powers(sum ? expanded.op(i) : expanded);
-    for (const auto& [s, k] : p) d.high[s] = std::max(d.high[s], k);
-    if (i == 0) {
-      d.low = p;
-    } else {
-      for (auto it = d.low.begin(); it != d.low.end();) {
-        const auto q = p.find(it->first);
-        if (q == p.end()) {
-          it = d.low.erase(it);
-        } else {
-          it->second = std::min(it->second, q->second);
-          ++it;
-        }
-      }
-    }
-  }
-  return d;
-}
-
 ex content_only(const ex& expanded) {
   ex monomial = expanded.integer_content();
   for (const auto& [s, low] : degrees_of(expanded).low) monomial *= pow(s, low);
@@ -167,21 +123,12 @@ bool linear_and_primitive(const ex& expanded) {
   if (!is_a<add>(expanded)) return false;
   ex monomial = 1;
   for (const auto& [x, low] : degrees_of(expanded).low) monomial *= pow(x, low);
-  const ex q = (expanded / monomial).expand();
-  for (const auto& [x, high] : degrees_of(q).high) {
-    if (high != 1) continue;
-    const ex a = q.coeff(x, 1), b = q.coeff(x, 0);
-    if (!b.is_zero() && is_a<numeric>(gcd(a, b))) return true;
-  }
-  return false;
+  return linear_and_coprime((expanded / monomial).expand());
 }
 
 bool too_wide(const ex& expanded) {
   if (!is_a<add>(expanded) || expanded.nops() <= factor_wide_terms) return false;
-  std::set<ex, ex_is_less> symbols;
-  for (const_preorder_iterator it = expanded.preorder_begin(); it != expanded.preorder_end(); ++it)
-    if (is_a<symbol>(*it)) symbols.insert(*it);
-  return symbols.size() > factor_wide_symbols;
+  return symbols_in(expanded).size() > factor_wide_symbols;
 }
 
 }  // namespace
@@ -236,10 +183,7 @@ namespace {
 // memory is per thread and forgets everything past 4096 polynomials; an equal polynomial
 // always gives an equal product, so what is remembered changes no output.
 ex factored(const ex& polynomial) {
-  struct Hash {
-    std::size_t operator()(const ex& e) const { return e.gethash(); }
-  };
-  thread_local std::unordered_map<ex, ex, Hash, ex_is_equal> memory;
+  thread_local std::unordered_map<ex, ex, ExHash, ex_is_equal> memory;
   if (auto it = memory.find(polynomial); it != memory.end()) return it->second;
   ex out = 1;
   for (const ex& x : canonical_factors(polynomial)) out *= x;
@@ -278,10 +222,7 @@ ex simplest_uncached(const ex& e) {
 // Remembered per thread like factored(): the solver, the conditions and the report ask for
 // the same closed forms.
 ex simplest(const ex& e) {
-  struct Hash {
-    std::size_t operator()(const ex& x) const { return x.gethash(); }
-  };
-  thread_local std::unordered_map<ex, ex, Hash, ex_is_equal> memory;
+  thread_local std::unordered_map<ex, ex, ExHash, ex_is_equal> memory;
   if (auto it = memory.find(e); it != memory.end()) return it->second;
   const ex out = simplest_uncached(e);
   if (memory.size() >= 4096) memory.clear();
@@ -321,13 +262,8 @@ std::string flipped(const std::string& op) {
 
 int known_sign(const ex& e) { return sign_of(e).value_or(0); }
 
-// `e op 0` with the factors of known sign divided out: returns the factors left (their
-// product), and flips `op` for each negative factor divided out.
-ex strip_signed_factors_of(const ex& nd, std::string& op);
-
-ex strip_signed_factors(const ex& e, std::string& op) { return strip_signed_factors_of(numer_denom_remembered(e), op); }
-
-// The same, given the numerator and denominator.
+// `e op 0` with the factors of known sign divided out, given e's numerator and denominator:
+// returns the factors left (their product), and flips `op` for each negative factor.
 ex strip_signed_factors_of(const ex& nd, std::string& op) {
   ex rest = 1;
   for (int side = 0; side < 2; ++side) {
@@ -345,6 +281,9 @@ ex strip_signed_factors_of(const ex& nd, std::string& op) {
   }
   return rest;
 }
+
+// The same for `e` itself.
+ex strip_signed_factors(const ex& e, std::string& op) { return strip_signed_factors_of(numer_denom_remembered(e), op); }
 
 }  // namespace
 
