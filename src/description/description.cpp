@@ -155,7 +155,7 @@ struct Reader {
       b.name = key_text(kv.first);
       b.at = where(kv.second, file);
       const std::string what = "body '" + b.name.text + "'";
-      if (check_map(kv.second, {"mass", "position", "center_of_mass", "acceleration"}, what, file, diags)) {
+      if (check_map(kv.second, {"mass", "position", "center_of_mass", "acceleration", "draw"}, what, file, diags)) {
         b.mass = opt_scalar(kv.second, "mass", what);
         b.position = opt_scalar(kv.second, "position", what);
         b.center_of_mass = opt_vector(kv.second, "center_of_mass", what);
@@ -169,6 +169,15 @@ struct Reader {
             }
           } else {
             b.acceleration = vector(acc, "'acceleration' of " + what);
+          }
+        }
+        if (const YAML::Node dr = kv.second["draw"]) {
+          if (!dr.IsMap())
+            diags.error(where(dr, file), "'draw' of " + what + " is not a mapping (expected {shape: rectangle, size: [w, h]} or {shape: circle, size: [d]})");
+          else if (check_map(dr, {"shape", "size"}, "'draw' of " + what, file, diags)) {
+            b.draw_shape = opt_scalar(dr, "shape", "'draw' of " + what);
+            b.draw_size = opt_vector(dr, "size", "'draw' of " + what);
+            if (!b.draw_shape) diags.error(where(dr, file), "'draw' of " + what + " has no 'shape' (expected rectangle or circle)");
           }
         }
       }

@@ -48,6 +48,9 @@ struct BodyDesc {
   std::optional<VectorDesc> acceleration;
   std::optional<VectorDesc> accel_along;
   std::optional<Text> accel_name;
+  // How the free body diagram draws it: `draw: {shape: rectangle | circle, size: [w, h] | [d]}`
+  std::optional<Text> draw_shape;
+  std::optional<VectorDesc> draw_size;
   Location at;
 };
 

@@ -32,6 +32,8 @@ Equation lmb_along(const Model& m, const std::vector<int>& bodies, bool system, 
                    const std::string& direction_label) {
   Equation eq;
   eq.kind = Equation::Kind::lmb;
+  eq.bodies = bodies;
+  eq.system = system;
   eq.label = "LMB " + std::string(system ? "of " : "") + body_list(m, bodies, system) + " (" + direction_label + ")";
   ex sum = 0, rhs = 0;
   for (const auto& l : m.loads) {
@@ -52,6 +54,8 @@ Equation amb_along(const Model& m, const std::vector<int>& bodies, bool system, 
                    const std::string& about_label, const Vec& direction, const std::string& direction_label) {
   Equation eq;
   eq.kind = Equation::Kind::amb;
+  eq.bodies = bodies;
+  eq.system = system;
   eq.label = "AMB " + std::string(system ? "of " : "") + body_list(m, bodies, system) + " about " + about_label + " (" +
              direction_label + ")";
   ex sum = 0, rhs = 0;
@@ -116,11 +120,11 @@ EquationSystem build_equations(const Model& m) {
     eq.sources = {"second time derivative of the " + c.meaning};
     s.equations.push_back(eq);
     Equation rate{Equation::Kind::constraint_rate, c.label + ": rate", steps.rate, 0,
-                  {"first time derivative of the " + c.meaning}, {steps.rate}, ""};
+                  {"first time derivative of the " + c.meaning}, {steps.rate}, "", {}, false};
     s.rate_equations.push_back(rate);
     if (!c.constant.is_zero())
       s.position_equations.push_back({Equation::Kind::constraint_position, c.label + ": position", varying, c.constant,
-                                      {"the " + c.meaning + " is constant"}, {varying}, ""});
+                                      {"the " + c.meaning + " is constant"}, {varying}, "", {}, false});
   };
   // One equation per axis; a 2-D moment has only a z component.
   auto add_lmb = [&](const std::vector<int>& bodies, bool system) {

@@ -20,6 +20,8 @@ struct Equation {
   std::vector<std::string> sources; // where each term of the lhs comes from
   std::vector<GiNaC::ex> terms;     // the lhs terms, one per source
   std::string why;                  // amb: what the choice of point or axis eliminates
+  std::vector<int> bodies;          // lmb, amb: the body or the system balanced
+  bool system = false;
 };
 
 /// A constraint as the derivation shows it: the constant quantity, its rate, its acceleration.

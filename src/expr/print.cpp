@@ -421,8 +421,31 @@ void print_product(const numeric& coeff, const std::vector<ex>& factors, const p
   }
 }
 
-void print_fraction(const Fraction& f, const print_context& c, unsigned level) {
+thread_local const FactorRank* person_rank = nullptr;
+
+// LaTeX writes a product's factors in the order a person does (m a, mu N_A) when the names'
+// kinds are known; the name order stays the tie-break.
+std::vector<ex> person_order(const std::vector<ex>& xs) {
+  if (!person_rank || xs.size() < 2) return xs;
+  std::vector<std::pair<int, ex>> ranked;
+  ranked.reserve(xs.size());
+  for (const auto& x : xs) ranked.emplace_back((*person_rank)(is_exactly<power>(x) ? x.op(0) : x), x);
+  std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<ex> out;
+  out.reserve(xs.size());
+  for (auto& [r, x] : ranked) out.push_back(x);
+  return out;
+}
+
+void print_fraction(const Fraction& given, const print_context& c, unsigned level) {
   const bool latex = latex_ctx(c);
+  Fraction reordered;
+  if (latex && person_rank) {
+    reordered = given;
+    reordered.num = person_order(given.num);
+    reordered.den = person_order(given.den);
+  }
+  const Fraction& f = latex && person_rank ? reordered : given;
   std::ostream& os = c.s;
   const bool has_den = f.den_c != 1 || !f.den.empty();
   const bool paren = (f.negative && level > add_prec) || (!latex && has_den && level >= pow_prec) ||
@@ -515,6 +538,9 @@ std::string to_text(const ex& e) {
   static const tackle_text text_like(std::cout);
   return in_context(text_like, [&](const print_context& c) { e.print(c); });
 }
+
+PersonOrder::PersonOrder(FactorRank rank) : rank_(std::move(rank)), previous_(person_rank) { person_rank = &rank_; }
+PersonOrder::~PersonOrder() { person_rank = previous_; }
 
 std::string to_latex(const ex& e) {
   ensure_registered();

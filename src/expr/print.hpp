@@ -8,6 +8,7 @@
 //   tackle_latex : textbook LaTeX (`-\frac{9 F}{9 m_{A} + 4 m_{B}}`), symbols by TeX name.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -33,6 +34,22 @@ class tackle_latex : public GiNaC::print_latex {
 /// Terms of one shape whose indices go up by one make a run, which LaTeX and the reports'
 /// lists write with dots. Nothing when the text has no index.
 [[nodiscard]] std::optional<std::pair<std::string, long>> index_shape(const std::string& text);
+
+/// The order a person writes a product's factors in, for LaTeX (m a, mu N_A, m g): a rank per
+/// factor, lower first; equal ranks keep the name order. Text keeps the name order.
+using FactorRank = std::function<int(const GiNaC::ex& factor)>;
+/// Installs a rank for LaTeX printing on this thread while it lives.
+class PersonOrder {
+ public:
+  explicit PersonOrder(FactorRank rank);
+  ~PersonOrder();
+  PersonOrder(const PersonOrder&) = delete;
+  PersonOrder& operator=(const PersonOrder&) = delete;
+
+ private:
+  FactorRank rank_;
+  const FactorRank* previous_;
+};
 
 [[nodiscard]] std::string to_text(const GiNaC::ex& e);
 [[nodiscard]] std::string to_latex(const GiNaC::ex& e);

@@ -26,6 +26,10 @@ struct Body {
   Vec cm = zero_vec();            // center of mass (1-D: the coordinate)
   bool has_cm = false;
   Vec acceleration = zero_vec();  // the same for every point of the body
+  // How the free body diagram draws it (`draw:`): "" (from its points), "rectangle" (size:
+  // width, height) or "circle" (size: diameter), centred on its center of mass.
+  std::string drawn_shape;
+  std::vector<GiNaC::ex> drawn_size;
   Location at;
 };
 
@@ -170,6 +174,8 @@ struct Model {
   std::optional<MotionSpec> motion;
   std::optional<IntervalSpec> interval;
   std::optional<ImpactSpec> impact;
+  // Numbers for drawing: every parameter's value (SI) and the layout's coordinates.
+  GiNaC::exmap layout;
 };
 
 /// d/dt of an expression in the bodies' coordinates and rates, the turning lengths and time

@@ -20,6 +20,24 @@ std::string tex_atom(std::string_view s) {
 
 }  // namespace
 
+FactorRank factor_rank(std::shared_ptr<const SymbolTable> table) {
+  return [table = std::move(table)](const GiNaC::ex& x) {
+    if (!GiNaC::is_a<GiNaC::symbol>(x)) return 5;
+    const SymbolInfo* s = table->find(x);
+    if (!s) return 2;
+    switch (s->role) {
+      case SymbolRole::parameter:
+      case SymbolRole::defined:
+        if (s->dimension ? s->dimension->exp == Dimension::none().exp : s->role == SymbolRole::parameter) return 0;
+        if (s->dimension->exp == Dimension::mass().exp) return 1;
+        return 2;
+      case SymbolRole::time: return 2;
+      case SymbolRole::coordinate: return 3;
+      default: return 4;
+    }
+  };
+}
+
 std::string default_tex(std::string_view name) {
   for (const char* op : {"ddot", "dot"}) {
     const std::string prefix = std::string(op) + "(";

@@ -15,6 +15,7 @@
 #include "core/diagnostics.hpp"
 #include "core/units.hpp"
 #include "expr/parse.hpp"
+#include "expr/print.hpp"
 
 namespace tackle {
 
@@ -48,6 +49,12 @@ struct SymbolInfo {
 /// TeX for a name as typed: `m_A` -> `m_{A}`, `mu` -> `\mu`, `mu_k` -> `\mu_{k}`,
 /// `ddot(x_A)` -> `\ddot{x}_{A}`, `T_HI` -> `T_{HI}`.
 [[nodiscard]] std::string default_tex(std::string_view name);
+
+class SymbolTable;
+/// The order a person writes a product's factors in, from what the names are: dimensionless
+/// coefficients (mu), masses, other parameters (g, lengths), coordinates, then unknowns,
+/// rates and accelerations; anything not a name last. For PersonOrder (expr/print.hpp).
+[[nodiscard]] FactorRank factor_rank(std::shared_ptr<const SymbolTable> table);
 
 class SymbolTable : public NameResolver, public DimensionLookup {
  public:

@@ -71,6 +71,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   d.n_equations = s.equations.size();
   d.unknowns = s.unknowns;
   d.system = &s;
+  d.symbols = m.symbols;
   const SymbolTable& table = *m.symbols;
   Narrator n{d, table};
   auto step = [&](Step::Kind kind, std::string t) { return n.step(kind, std::move(t)); };
@@ -163,8 +164,16 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
                                    [](const Equation& e) { return e.kind == Equation::Kind::amb; });
   section(has_amb ? "Free body diagrams: linear and angular momentum balance"
                   : "Free body diagrams: linear momentum balance");
+  std::pair<std::vector<int>, bool> drawn{{}, false};  // the body or system last drawn
   for (const auto& eq : s.equations) {
     if (eq.kind == Equation::Kind::constraint_acceleration || eq.kind == Equation::Kind::interval) continue;
+    if (!eq.bodies.empty() && std::pair{eq.bodies, eq.system} != drawn) {
+      drawn = {eq.bodies, eq.system};
+      if (auto fig = free_body_diagram(m, eq.bodies, eq.system)) {
+        Step* st = n.step(Step::Kind::figure, fig->caption);
+        st->figure = std::make_shared<const Figure>(std::move(*fig));
+      }
+    }
     std::vector<std::string> parts;
     std::vector<ex> terms;
     for (std::size_t i = 0; i < eq.terms.size(); ++i) {

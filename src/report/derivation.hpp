@@ -2,6 +2,7 @@
 // how it is encoded. Writers (text, latex, json) only format it.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include <ginac/ginac.h>
 
 #include "energy/power.hpp"
+#include "figure/figure.hpp"
 #include "equations/equations.hpp"
 #include "model/model.hpp"
 #include "motion/motion.hpp"
@@ -20,7 +22,8 @@ namespace tackle {
 
 struct Step {
   // given: a parameter's value (lhs = rhs, unit in note), listed like a bullet.
-  enum class Kind { section, text, bullet, equation, given } kind = Kind::text;
+  // figure: a drawn free body diagram (text and JSON leave it out).
+  enum class Kind { section, text, bullet, equation, given, figure } kind = Kind::text;
   std::string text;   // section title, paragraph, bullet, or an equation's label
   GiNaC::ex lhs, rhs;
   std::string relation = "=";
@@ -29,6 +32,7 @@ struct Step {
   std::string note;            // a number with its unit ("20 N"); for `given`, the unit only
   std::string number;          // given: the value as a decimal ("0.3")
   std::vector<GiNaC::ex> math; // text and bullets: each "{}" in `text` is the next of these
+  std::shared_ptr<const Figure> figure;  // figure
 };
 
 struct Answer {
@@ -92,6 +96,7 @@ struct Derivation {
   std::size_t n_equations = 0;
   std::vector<GiNaC::ex> unknowns;
   const EquationSystem* system = nullptr;  // for the JSON equations list
+  std::shared_ptr<const SymbolTable> symbols;  // what the names are (LaTeX writes m a, mu N_A)
   std::string figure_pgfplots;             // a sweep figure for the LaTeX report, when described
   std::string motion_pgfplots;             // the simulated motion for the LaTeX report, when 'motion' has 'until'
   std::vector<std::string> motion_events;  // what happened in that run, in words

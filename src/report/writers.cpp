@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "expr/print.hpp"
+#include "figure/figure.hpp"
 #include "report/derivation.hpp"
 #include "report/tex.hpp"
 
@@ -103,6 +104,7 @@ std::string derivation_text(const Derivation& d) {
       case Step::Kind::given:
         out += "  - " + to_text(st.lhs) + " = " + st.number + (st.note.empty() ? "" : " " + st.note) + "\n";
         break;
+      case Step::Kind::figure: break;  // drawn in LaTeX, Markdown and HTML
       case Step::Kind::equation: {
         std::string eq = st.equals_constant ? to_text(st.lhs) + " = const"
                                             : to_text(st.lhs) + " " + st.relation + " " + to_text(st.rhs);
@@ -142,7 +144,7 @@ std::string latex_equations(const std::vector<const Step*>& steps) {
 
 std::string latex_preamble(bool plots) {
   return "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{lmodern}\n\\usepackage{amsmath}\n"
-         "\\usepackage[margin=2.5cm]{geometry}\n" +
+         "\\usepackage[margin=2.5cm]{geometry}\n\\usepackage{tikz}\n" +
          std::string(plots ? "\\usepackage{pgfplots}\n\\pgfplotsset{compat=1.16}\n" : "") + "\\begin{document}\n";
 }
 
@@ -178,6 +180,9 @@ std::string latex_body(const Derivation& d, bool full, const std::string& title)
                  (st.note.empty() ? "" : "\\," + unit_latex(st.note)) + "$\n";
           break;
         case Step::Kind::equation: run.push_back(&st); break;
+        case Step::Kind::figure:
+          out += "\\begin{center}\n" + to_tikz(*st.figure) + "\\\\[2pt]{\\small " + tex_escape(st.text) + "}\n\\end{center}\n";
+          break;
       }
     }
     flush();
@@ -454,6 +459,7 @@ std::string markdown_document(const Derivation& d, bool full) {
           out += "- $" + to_latex(st.lhs) + " = " + st.number + (st.note.empty() ? "" : "\\," + unit_latex(st.note)) + "$\n";
           break;
         case Step::Kind::equation: out += eq(st); break;
+        case Step::Kind::figure: out += "<figure>\n" + to_svg(*st.figure) + "<figcaption>" + st.text + "</figcaption>\n</figure>\n\n"; break;
       }
     }
   } else {
@@ -474,6 +480,8 @@ std::string markdown_document(const Derivation& d, bool full) {
 
 std::string write(const std::vector<Derivation>& ds, Format f, bool full) {
   if (ds.size() == 1 && ds[0].phase.empty()) return write(ds[0], f, full);
+  std::optional<PersonOrder> order;
+  if (!ds.empty() && ds[0].symbols) order.emplace(factor_rank(ds[0].symbols));
   std::string out;
   switch (f) {
     case Format::text:
@@ -514,6 +522,8 @@ std::string write(const std::vector<Derivation>& ds, Format f, bool full) {
 }
 
 std::string write(const Derivation& d, Format f, bool full) {
+  std::optional<PersonOrder> order;
+  if (d.symbols) order.emplace(factor_rank(d.symbols));
   switch (f) {
     case Format::text: return full ? derivation_text(d) : answers_text(d);
     case Format::latex: return latex_document(d, full);

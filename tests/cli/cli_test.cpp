@@ -58,7 +58,7 @@ TEST_CASE("CLI: solve --format json gives sample 12.3's numbers and parseable cl
   CHECK(by_name["T"]["value"] == 20.0);
   CHECK(by_name["T"]["unit"] == "N");
   CHECK(by_name["T"]["closed_form"] == "2*F*m_B/(9*m_A + 4*m_B)");
-  CHECK(by_name["T"]["latex"] == "\\frac{2 F m_{B}}{9 m_{A} + 4 m_{B}}");
+  CHECK(by_name["T"]["latex"] == "\\frac{2 m_{B} F}{9 m_{A} + 4 m_{B}}");
   CHECK(by_name["ddot(x_A)"]["value"] == -2.25);
   CHECK(by_name["ddot(x_A)"]["unit"] == "m/s^2");
   CHECK(by_name["ddot(x_B)"]["value"] == -1.5);

@@ -9,6 +9,47 @@ namespace tackle::build {
 
 using namespace GiNaC;
 
+namespace {
+
+// `draw: {shape, size}`: the shape the free body diagram gives a body, its sizes lengths that
+// are positive with the given values.
+void draw_override(BuildContext& ctx, const BodyDesc& b, Body& body) {
+  const std::string what = "'draw' of body '" + body.name + "'";
+  const std::string& shape = b.draw_shape->text;
+  const std::size_t n = shape == "rectangle" ? 2 : shape == "circle" ? 1 : 0;
+  if (n == 0) {
+    ctx.diags.error(b.draw_shape->at, what + " has shape '" + shape + "' (expected rectangle or circle)");
+    return;
+  }
+  if (!b.draw_size) {
+    ctx.diags.error(b.draw_shape->at, what + " has no 'size' (expected " +
+                                          (n == 2 ? "[width, height]" : "[diameter]") + ")");
+    return;
+  }
+  if (b.draw_size->items.size() != n) {
+    ctx.diags.error(b.draw_size->at, what + ": 'size' has " + std::to_string(b.draw_size->items.size()) + " entries (expected " +
+                                         (n == 2 ? "2: [width, height]" : "1: [diameter]") + ")");
+    return;
+  }
+  std::vector<ex> size;
+  const exmap values = ctx.table->values();
+  for (const auto& t : b.draw_size->items) {
+    auto v = ctx.parse(t, *ctx.table, what);
+    if (!v) return;
+    ctx.check_dimension(*v, Dimension::length(), t.at, what);
+    const ex x = v->subs(values).evalf();
+    if (!is_a<numeric>(x) || !ex_to<numeric>(x).is_real() || ex_to<numeric>(x) <= 0) {
+      ctx.diags.error(t.at, what + ": size '" + t.text + "' is not a positive length with the given values");
+      return;
+    }
+    size.push_back(*v);
+  }
+  body.drawn_shape = shape;
+  body.drawn_size = std::move(size);
+}
+
+}  // namespace
+
 void bodies(BuildContext& ctx) {
   const bool one_d = ctx.m.dims() == 1;
   std::vector<ex> accelerations;  // unknown accelerations come first among the unknowns
@@ -104,8 +145,10 @@ void bodies(BuildContext& ctx) {
   for (std::size_t i = 0; i < ctx.d.bodies.size(); ++i) {
     const auto& b = ctx.d.bodies[i];
     auto it = ctx.body_index.find(b.name.text);
-    if (it == ctx.body_index.end() || !b.mass) continue;
+    if (it == ctx.body_index.end()) continue;
     Body& body = ctx.m.bodies[it->second];
+    if (b.draw_shape) draw_override(ctx, b, body);
+    if (!b.mass) continue;
     if (auto mass = ctx.parse(*b.mass, *ctx.table, "mass of body '" + body.name + "'")) {
       body.mass = *mass;
       body.has_mass = true;
@@ -180,6 +223,7 @@ void read_layout(BuildContext& ctx) {
   }
   // The instant is t = 0 for telling directions (a support that moves with time).
   if (is_a<symbol>(ctx.m.time)) ctx.layout[ctx.m.time] = 0;
+  ctx.m.layout = ctx.layout;
 }
 
 }  // namespace tackle::build

@@ -119,7 +119,7 @@ TEST_CASE("Elimination: in column order the unknown left free is the later one, 
   // a + b = 1 and c = 2: b lies in the span of the columns before it, so b is free and
   // a + b = 1 is a combination, even though Markowitz's rule alone could pivot on b.
   const symbol a("a"), b("b"), c("c");
-  const std::vector<Equation> eqs{{Equation::Kind::lmb, "first", a + b, 1, {}, {}, ""}, {Equation::Kind::lmb, "second", c, 2, {}, {}, ""}};
+  const std::vector<Equation> eqs{{Equation::Kind::lmb, "first", a + b, 1, {}, {}, "", {}, false}, {Equation::Kind::lmb, "second", c, 2, {}, {}, "", {}, false}};
   const Solution s = solve_equations("t.yaml", eqs, {a, b, c});
   CHECK(s.status == Solution::Status::underdetermined);
   REQUIRE(s.free.size() == 1);

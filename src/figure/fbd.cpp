@@ -1,0 +1,746 @@
+// Free body diagrams from the model's geometry: outlines, arrows at their points, labels
+// placed where nothing else is.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <set>
+
+#include "expr/print.hpp"
+#include "figure/figure.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+
+namespace {
+
+struct V {
+  double x = 0, y = 0;
+};
+V operator+(V a, V b) { return {a.x + b.x, a.y + b.y}; }
+V operator-(V a, V b) { return {a.x - b.x, a.y - b.y}; }
+V operator*(double s, V a) { return {s * a.x, s * a.y}; }
+double dot(V a, V b) { return a.x * b.x + a.y * b.y; }
+double cross(V a, V b) { return a.x * b.y - a.y * b.x; }
+double len(V a) { return std::hypot(a.x, a.y); }
+V normalized(V a) { return (1 / len(a)) * a; }
+V perp(V a) { return {-a.y, a.x}; }
+FigurePoint fp(V a) { return {a.x, a.y}; }
+V vp(FigurePoint a) { return {a.x, a.y}; }
+
+// Sizes in drawing units (about centimetres).
+constexpr double body_extent = 3.2;   // the largest drawn body
+constexpr double particle_side = 1.2; // a body drawn around one point
+constexpr double arrow_length = 1.2;
+constexpr double spacing = 0.38;      // between parallel arrows that would overlap
+constexpr double char_width = 0.2, label_height = 0.42, gap = 0.1;
+
+// Numbers for the geometry: parameters and layout coordinates, defined parameters and
+// turning lengths through their expressions. Evaluated by walking the expression, so that
+// no pole ever reaches GiNaC: a division by zero or an unknown name gives none.
+class Numbers {
+ public:
+  explicit Numbers(const Model& m) : m_(m), defs_(m.symbols->definitions(true)) {
+    for (const auto& [k, v] : m.layout)
+      if (is_a<numeric>(v.evalf())) known_[k] = ex_to<numeric>(v.evalf()).to_double();
+    for (const auto& l : m.lengths) turning_[l.symbol] = l.squared;
+  }
+
+  std::optional<double> operator()(const ex& e, int depth = 0) {
+    if (depth > 50) return std::nullopt;
+    if (is_a<numeric>(e)) {
+      if (!ex_to<numeric>(e).is_real()) return std::nullopt;
+      return ex_to<numeric>(e).to_double();
+    }
+    if (is_a<constant>(e)) {
+      const ex v = e.evalf();
+      if (is_a<numeric>(v)) return ex_to<numeric>(v).to_double();
+      return std::nullopt;
+    }
+    if (is_a<symbol>(e)) {
+      if (auto it = known_.find(e); it != known_.end()) return it->second;
+      std::optional<double> v;
+      if (auto d = defs_.find(e); d != defs_.end()) v = (*this)(d->second, depth + 1);
+      else if (auto t = turning_.find(e); t != turning_.end()) {
+        if (auto sq = (*this)(t->second, depth + 1); sq && *sq >= 0) v = std::sqrt(*sq);
+      }
+      if (v) known_[e] = *v;
+      return v;
+    }
+    if (is_a<add>(e) || is_a<mul>(e)) {
+      double acc = is_a<add>(e) ? 0 : 1;
+      for (const auto& op : e) {
+        auto v = (*this)(op, depth + 1);
+        if (!v) return std::nullopt;
+        acc = is_a<add>(e) ? acc + *v : acc * *v;
+      }
+      return finite(acc);
+    }
+    if (is_a<power>(e)) {
+      auto b = (*this)(e.op(0), depth + 1), x = (*this)(e.op(1), depth + 1);
+      if (!b || !x) return std::nullopt;
+      if (*b == 0 && *x < 0) return std::nullopt;
+      if (*b < 0 && std::floor(*x) != *x) return std::nullopt;
+      return finite(std::pow(*b, *x));
+    }
+    if (is_a<function>(e) && e.nops() == 1) {
+      auto a = (*this)(e.op(0), depth + 1);
+      if (!a) return std::nullopt;
+      const std::string name = ex_to<function>(e).get_name();
+      static const std::map<std::string, double (*)(double)> f{
+          {"sin", [](double v) { return std::sin(v); }},   {"cos", [](double v) { return std::cos(v); }},
+          {"tan", [](double v) { return std::tan(v); }},   {"exp", [](double v) { return std::exp(v); }},
+          {"log", [](double v) { return std::log(v); }},   {"asin", [](double v) { return std::asin(v); }},
+          {"acos", [](double v) { return std::acos(v); }}, {"atan", [](double v) { return std::atan(v); }},
+          {"abs", [](double v) { return std::fabs(v); }}};
+      if (auto it = f.find(name); it != f.end()) return finite(it->second(*a));
+    }
+    return std::nullopt;
+  }
+
+ private:
+  static std::optional<double> finite(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
+  const Model& m_;
+  exmap defs_, turning_;
+  std::map<ex, double, ex_is_less> known_;
+};
+
+// Model space to the drawing plane: 1-D along the axis (vertical when gravity acts along
+// it), 2-D as is, 3-D in an oblique view (x towards the viewer, y to the right, z up).
+struct Projection {
+  int dims = 2;
+  V axis1{1, 0};  // 1-D: the axis' direction on paper
+  [[nodiscard]] V operator()(const std::array<double, 3>& p) const {
+    if (dims == 1) return p[0] * axis1;
+    if (dims == 2) return {p[0], p[1]};
+    return {p[1] - 0.5 * p[0], p[2] - 0.35 * p[0]};
+  }
+  [[nodiscard]] V axis(int k) const {
+    std::array<double, 3> e{0, 0, 0};
+    e[k] = 1;
+    return (*this)(e);
+  }
+};
+
+// One force, or one component of it, to draw: where it acts (model units, or none for a 1-D
+// body or a body drawn around one point), its direction on paper, its label.
+struct Pending {
+  int body = -1;
+  std::optional<std::array<double, 3>> at;
+  V direction;
+  ex label;
+  bool dashed = false;
+  bool at_cm = false;  // acts at the center of mass: drawn pulling away from it
+};
+
+// A body as drawn: its outline and how forces attach to it.
+struct Drawn {
+  int body = -1;
+  FigureOutline outline;
+  V centre;            // on paper
+  bool particle = false;  // forces start on its outline, along their line through the centre
+};
+
+bool inside(const FigureOutline& o, V p) {
+  if (o.shape == FigureOutline::Shape::circle) return len(p - vp(o.centre)) < o.radius;
+  bool in = false;
+  const auto& c = o.corners;
+  for (std::size_t i = 0, j = c.size() - 1; i < c.size(); j = i++) {
+    if ((c[i].y > p.y) != (c[j].y > p.y) && p.x < (c[j].x - c[i].x) * (p.y - c[i].y) / (c[j].y - c[i].y) + c[i].x) in = !in;
+  }
+  return in;
+}
+
+double segment_distance(V p, V a, V b) {
+  const V ab = b - a;
+  const double l2 = dot(ab, ab);
+  const double t = l2 == 0 ? 0 : std::clamp(dot(p - a, ab) / l2, 0.0, 1.0);
+  return len(p - (a + t * ab));
+}
+
+double boundary_distance(const FigureOutline& o, V p) {
+  if (o.shape == FigureOutline::Shape::circle) return std::fabs(len(p - vp(o.centre)) - o.radius);
+  double d = 1e300;
+  for (std::size_t i = 0; i < o.corners.size(); ++i)
+    d = std::min(d, segment_distance(p, vp(o.corners[i]), vp(o.corners[(i + 1) % o.corners.size()])));
+  return d;
+}
+
+// Where the ray from p along u leaves the outline (p inside it).
+V exit_point(const FigureOutline& o, V p, V u) {
+  double lo = 0, hi = 4 * body_extent;
+  for (int i = 0; i < 40; ++i) {
+    const double mid = (lo + hi) / 2;
+    (inside(o, p + mid * u) ? lo : hi) = mid;
+  }
+  return p + hi * u;
+}
+
+std::vector<FigurePoint> convex_hull(std::vector<V> p) {
+  std::sort(p.begin(), p.end(), [](V a, V b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  std::vector<V> h(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(h[k - 1] - h[k - 2], p[i] - h[k - 2]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && cross(h[k - 1] - h[k - 2], p[i - 1] - h[k - 2]) <= 0) --k;
+    h[k++] = p[i - 1];
+  }
+  h.resize(k > 1 ? k - 1 : k);
+  std::vector<FigurePoint> out;
+  for (V v : h) out.push_back(fp(v));
+  return out;
+}
+
+FigureOutline rectangle(V centre, V along, double w, double h) {
+  const V u = normalized(along), n = perp(u);
+  FigureOutline o;
+  for (auto [a, b] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
+    o.corners.push_back(fp(centre + (a * w / 2) * u + (b * h / 2) * n));
+  return o;
+}
+
+struct Box {
+  V c;
+  double w, h;
+};
+bool overlaps(const Box& a, const Box& b) {
+  return std::fabs(a.c.x - b.c.x) * 2 < a.w + b.w && std::fabs(a.c.y - b.c.y) * 2 < a.h + b.h;
+}
+bool box_hits_segment(const Box& b, V p, V q) {
+  for (int i = 0; i <= 16; ++i) {
+    const V s = p + (i / 16.0) * (q - p);
+    if (std::fabs(s.x - b.c.x) * 2 < b.w && std::fabs(s.y - b.c.y) * 2 < b.h) return true;
+  }
+  return false;
+}
+
+class Layout {
+ public:
+  explicit Layout(Figure& f) : f_(f) {}
+
+  // A label near `anchor`, tried at the candidate centres in order; the first that touches
+  // nothing wins, else the one that touches least.
+  FigureLabel place(const std::string& tex, const std::vector<V>& candidates) {
+    FigureLabel l;
+    l.tex = tex;
+    l.width = char_width * static_cast<double>(shown_length(tex)) + 0.12;
+    l.height = label_height;
+    double best = 1e300;
+    V at = candidates.front();
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      const double p = penalty({candidates[i], l.width, l.height}) + 0.01 * static_cast<double>(i);
+      if (p < best) {
+        best = p;
+        at = candidates[i];
+      }
+    }
+    l.at = fp(at);
+    boxes_.push_back({at, l.width, l.height});
+    return l;
+  }
+
+ private:
+  double penalty(const Box& b) const {
+    double p = 0;
+    for (const auto& o : boxes_)
+      if (overlaps(b, o)) p += 100;
+    for (const auto& a : f_.arrows)
+      if (box_hits_segment(b, vp(a.from), vp(a.to))) p += 10;
+    for (const auto& o : f_.outlines) {
+      for (V c : {b.c, b.c + V{b.w / 2, b.h / 2}, b.c + V{-b.w / 2, b.h / 2}, b.c + V{b.w / 2, -b.h / 2}, b.c + V{-b.w / 2, -b.h / 2}})
+        if (inside(o, c)) p += 3;
+      if (o.shape == FigureOutline::Shape::polygon)
+        for (std::size_t i = 0; i < o.corners.size(); ++i)
+          if (box_hits_segment(b, vp(o.corners[i]), vp(o.corners[(i + 1) % o.corners.size()]))) p += 5;
+    }
+    for (const auto& d : f_.dots)
+      if (std::fabs(d.at.x - b.c.x) * 2 < b.w + 0.1 && std::fabs(d.at.y - b.c.y) * 2 < b.h + 0.1) p += 10;
+    return p;
+  }
+  Figure& f_;
+  std::vector<Box> boxes_;
+};
+
+std::string strip_suffix(const std::string& source) {
+  // "string s: strand pB-C at pB" and "string s (from its length sum) on A": one key per
+  // strand or connection, whichever body the load is on.
+  for (const char* sep : {" at ", " on "}) {
+    const auto at = source.rfind(sep);
+    if (at != std::string::npos && source.find(':') != std::string::npos && at > source.find(':')) return source.substr(0, at);
+  }
+  return source;
+}
+
+}  // namespace
+
+std::optional<Figure> free_body_diagram(const Model& m, const std::vector<int>& bodies, bool system) {
+  PersonOrder order(factor_rank(m.symbols));
+  Numbers num(m);
+  Projection proj;
+  proj.dims = m.dims();
+  if (proj.dims == 1) {
+    proj.axis1 = {1, 0};
+    if (m.gravity)
+      if (auto g = num((*m.gravity)[0]); g && *g != 0) proj.axis1 = {0, *g < 0 ? 1.0 : -1.0};
+  }
+  auto point3 = [&](const Vec& v) -> std::optional<std::array<double, 3>> {
+    std::array<double, 3> p{0, 0, 0};
+    for (int k = 0; k < m.dims(); ++k) {
+      auto x = num(v[k]);
+      if (!x) return std::nullopt;
+      p[k] = *x;
+    }
+    return p;
+  };
+  const std::set<ex, ex_is_less> unknowns(m.candidates.begin(), m.candidates.end());
+
+  // Forces from outside the system only: a connection (or strand) whose loads on the
+  // system's bodies add up to nothing is internal to it.
+  std::set<std::string> internal;
+  if (system && bodies.size() > 1) {
+    std::map<std::string, Vec> sums;
+    for (const auto& l : m.loads)
+      if (std::find(bodies.begin(), bodies.end(), l.body) != bodies.end()) {
+        auto [it, fresh] = sums.emplace(strip_suffix(l.source), zero_vec());
+        it->second = it->second + l.force;
+      }
+    for (const auto& [key, sum] : sums)
+      if (is_zero_vec(sum)) internal.insert(key);
+  }
+
+  // The arrows of a force vector: one per unknown in it (its coefficient gives the
+  // direction), and one per axis for what is known.
+  std::vector<Pending> pending;
+  bool failed = false;
+  auto decompose = [&](int body, const Vec& force, std::optional<std::array<double, 3>> at, const ex& factor, bool dashed, bool at_cm) {
+    Vec rest = zero_vec();
+    for (int k = 0; k < m.dims(); ++k) rest[k] = force[k].expand();
+    // In the model's order of unknowns, never GiNaC's (hash) order: the drawing must not
+    // change from run to run.
+    std::set<ex, ex_is_less> seen;
+    for (int k = 0; k < m.dims(); ++k)
+      for (const_preorder_iterator it = rest[k].preorder_begin(); it != rest[k].preorder_end(); ++it)
+        if (is_a<symbol>(*it) && unknowns.count(*it)) seen.insert(*it);
+    std::vector<ex> present;
+    for (const ex& c : m.candidates)
+      if (seen.count(c)) present.push_back(c);
+    for (const ex& u : present) {
+      Vec c = zero_vec();
+      bool linear = true;
+      for (int k = 0; k < m.dims(); ++k) {
+        if (rest[k].degree(u) > 1 || rest[k].ldegree(u) < 0) linear = false;
+        c[k] = rest[k].coeff(u, 1);
+      }
+      if (!linear) continue;  // drawn with the known part below
+      // One arrow per kind of term: a contact's mu N apart from its N (a dimensionless
+      // factor such as mu makes a term its own force), the geometry (angles, lengths) kept
+      // in the direction.
+      std::vector<std::pair<ex, Vec>> groups;  // in the order the terms are met, keyed by their text
+      for (int k = 0; k < m.dims(); ++k) {
+        const ex ck = c[k].expand();
+        const std::size_t n = is_a<add>(ck) ? ck.nops() : 1;
+        for (std::size_t t = 0; t < n; ++t) {
+          const ex term = is_a<add>(ck) ? ck.op(t) : ck;
+          if (term.is_zero()) continue;
+          ex key = 1;
+          const std::size_t nf = is_a<mul>(term) ? term.nops() : 1;
+          for (std::size_t q = 0; q < nf; ++q) {
+            const ex fac = is_a<mul>(term) ? term.op(q) : term;
+            const ex base = is_a<power>(fac) ? fac.op(0) : fac;
+            if (!is_a<symbol>(base)) continue;
+            const SymbolInfo* info = m.symbols->find(base);
+            if (info && info->role == SymbolRole::parameter && (!info->dimension || info->dimension->exp == Dimension::none().exp) &&
+                !info->definition)
+              key *= fac;
+          }
+          auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first.is_equal(key); });
+          if (it == groups.end()) it = groups.insert(groups.end(), {key, zero_vec()});
+          it->second[k] += term / key;
+        }
+      }
+      std::sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) { return to_text(a.first) < to_text(b.first); });
+      bool drawn_any = false;
+      for (const auto& [key, cvec] : groups) {
+        std::array<double, 3> cv{0, 0, 0};
+        int nonzero = 0, which = 0;
+        bool ok = true;
+        for (int k = 0; k < m.dims(); ++k) {
+          auto v = num(cvec[k]);
+          if (!v) ok = false;
+          else cv[k] = *v;
+          if (v && std::fabs(*v) > 1e-12) {
+            ++nonzero;
+            which = k;
+          }
+        }
+        if (!ok || nonzero == 0) continue;
+        const V d = proj(cv);
+        if (len(d) < 1e-9) continue;
+        ex label = key * u;
+        if (nonzero == 1) label = (cv[which] < 0 ? -cvec[which] : cvec[which]) * key * u;
+        pending.push_back({body, at, normalized(d), factor * label, dashed, at_cm});
+        drawn_any = true;
+      }
+      if (drawn_any)
+        for (int k = 0; k < m.dims(); ++k) rest[k] = (rest[k] - c[k] * u).expand();
+    }
+    for (int k = 0; k < m.dims(); ++k) {
+      if (rest[k].is_zero()) continue;
+      // A component with no unknown in it keeps the form it was written in (k (x_B - x_A - L)).
+      if (present.empty()) rest[k] = force[k];
+      std::array<double, 3> e{0, 0, 0};
+      // Pointing the way that leaves its label without a minus sign (m g down, not -m g up).
+      const bool negative = to_latex(rest[k]).rfind('-', 0) == 0;
+      e[k] = negative ? -1 : 1;
+      const V d = proj(e);
+      if (len(d) < 1e-9) continue;
+      pending.push_back({body, at, normalized(d), factor * (negative ? -rest[k] : rest[k]), dashed, at_cm});
+    }
+  };
+
+  Figure f;
+  std::vector<Drawn> drawn;
+  // Model units to drawing units, for 2-D and 3-D bodies drawn from their points.
+  std::vector<std::vector<std::array<double, 3>>> body_points(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const Body& b = m.bodies[bodies[i]];
+    if (proj.dims > 1 && b.has_cm) {
+      if (auto p = point3(b.cm)) body_points[i].push_back(*p);
+      else failed = true;
+    }
+    for (const auto& l : m.loads)
+      if (l.body == bodies[i] && l.at && proj.dims > 1) {
+        if (auto p = point3(*l.at)) body_points[i].push_back(*p);
+        else failed = true;
+      }
+  }
+  if (failed) return std::nullopt;
+  double scale = 1;
+  if (proj.dims > 1) {
+    double extent = 0;
+    std::vector<V> all;
+    for (const auto& pts : body_points)
+      for (const auto& p : pts) all.push_back(proj(p));
+    for (const V& a : all)
+      for (const V& b : all) extent = std::max(extent, len(a - b));
+    for (int bi : bodies)
+      if (!m.bodies[bi].drawn_size.empty())
+        for (const auto& s : m.bodies[bi].drawn_size) extent = std::max(extent, num(s).value_or(0));
+    scale = extent > 1e-9 ? body_extent / extent : 1;
+  }
+
+  // Outlines.
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const Body& b = m.bodies[bodies[i]];
+    Drawn d;
+    d.body = bodies[i];
+    d.outline.name = b.name;
+    if (proj.dims == 1) {
+      d.centre = (3.0 * static_cast<double>(i)) * (proj.axis1.x != 0 ? V{1, 0} : V{0, -1});
+    } else if (b.has_cm) {
+      d.centre = scale * proj(*point3(b.cm));
+    } else if (!body_points[i].empty()) {
+      d.centre = scale * proj(body_points[i].front());
+    }
+    if (!b.drawn_shape.empty()) {
+      const double unit = proj.dims == 1 ? particle_side : scale;
+      if (b.drawn_shape == "circle") {
+        d.outline.shape = FigureOutline::Shape::circle;
+        d.outline.centre = fp(d.centre);
+        d.outline.radius = unit * num(b.drawn_size[0]).value_or(1) / 2;
+      } else {
+        d.outline = rectangle(d.centre, {1, 0}, unit * num(b.drawn_size[0]).value_or(1), unit * num(b.drawn_size[1]).value_or(1));
+      }
+      d.outline.name = b.name;
+      d.particle = proj.dims == 1 || body_points[i].size() <= 1;  // else forces at their points
+    } else if (proj.dims == 1 || body_points[i].size() <= 1 || [&] {
+                 // every point in one place: a particle
+                 for (const auto& p : body_points[i])
+                   for (int k = 0; k < 3; ++k)
+                     if (std::fabs(p[k] - body_points[i][0][k]) > 1e-9 * (1 + std::fabs(p[k]))) return false;
+                 return true;
+               }()) {
+      d.particle = true;
+      if (proj.dims == 1 && (!b.has_mass || b.mass.is_zero())) {
+        d.outline.shape = FigureOutline::Shape::circle;  // a pulley block
+        d.outline.centre = fp(d.centre);
+        d.outline.radius = 0.45;
+      } else {
+        // Turned to its line of motion, as a block on an incline is drawn.
+        V along{1, 0};
+        if (proj.dims > 1) {
+          // The direction of its acceleration: the coefficient of the unknown in it, or
+          // the given vector.
+          std::optional<ex> u;
+          for (const ex& c : m.candidates)
+            for (int k = 0; k < m.dims() && !u; ++k)
+              if (b.acceleration[k].has(c)) u = c;
+          std::array<double, 3> a{0, 0, 0};
+          bool ok = true;
+          for (int k = 0; k < m.dims(); ++k) {
+            const ex ak = u ? b.acceleration[k].expand().coeff(*u, 1) : b.acceleration[k];
+            auto v = num(ak);
+            if (!v) ok = false;
+            else a[k] = *v;
+          }
+          if (ok && len(proj(a)) > 1e-9) along = normalized(proj(a));
+          if (along.x < 0) along = -1 * along;
+        }
+        d.outline = rectangle(d.centre, along, particle_side, particle_side * 0.8);
+      }
+      d.outline.name = b.name;
+    } else {
+      // From its points: their bounding box in model space, a bar, a plate or a box.
+      std::array<double, 3> lo = body_points[i][0], hi = lo;
+      for (const auto& p : body_points[i])
+        for (int k = 0; k < 3; ++k) {
+          lo[k] = std::min(lo[k], p[k]);
+          hi[k] = std::max(hi[k], p[k]);
+        }
+      double longest = 0;
+      for (int k = 0; k < 3; ++k) longest = std::max(longest, hi[k] - lo[k]);
+      // A center of mass on an edge of the box (a suitcase's at the height h of its
+      // middle): the body reaches as far beyond it.
+      if (b.has_cm)
+        if (auto cm = point3(b.cm))
+          for (int k = 0; k < 3; ++k) {
+            const double span = hi[k] - lo[k];
+            if (span <= 0.08 * longest) continue;
+            if ((*cm)[k] >= hi[k] - 0.02 * span) hi[k] = lo[k] + 2 * span;
+            else if ((*cm)[k] <= lo[k] + 0.02 * span) lo[k] = hi[k] - 2 * span;
+          }
+      int spread = 0;
+      for (int k = 0; k < 3; ++k) spread += hi[k] - lo[k] > 0.08 * longest;
+      std::vector<V> corners;
+      if (spread <= 1) {
+        // A bar from the farthest pair of points.
+        V a = scale * proj(body_points[i][0]), c = a;
+        double far = -1;
+        for (const auto& p : body_points[i])
+          for (const auto& q : body_points[i])
+            if (len(proj(p) - proj(q)) > far) {
+              far = len(proj(p) - proj(q));
+              a = scale * proj(p);
+              c = scale * proj(q);
+            }
+        // A little longer than its points, so that no force at an end runs along an edge.
+        d.outline = rectangle(0.5 * (a + c), c - a, len(c - a) + 0.3, std::min(1.0, 0.3 * len(c - a)));
+        d.outline.name = b.name;
+      } else {
+        for (int c = 0; c < 8; ++c) {
+          std::array<double, 3> p{(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2]};
+          corners.push_back(scale * proj(p));
+        }
+        d.outline.corners = convex_hull(corners);
+      }
+      V sum{0, 0};
+      for (const auto& c : d.outline.corners) sum = sum + vp(c);
+      if (!b.has_cm) d.centre = (1.0 / static_cast<double>(d.outline.corners.size())) * sum;
+    }
+    f.outlines.push_back(d.outline);
+    drawn.push_back(d);
+  }
+
+  // Forces and inertial terms.
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const int bi = bodies[i];
+    for (const auto& l : m.loads) {
+      if (l.body != bi || internal.count(strip_suffix(l.source))) continue;
+      std::optional<std::array<double, 3>> at;
+      if (l.at && proj.dims > 1) at = point3(*l.at);
+      const bool at_cm = l.at && m.bodies[bi].has_cm && is_zero_vec(*l.at - m.bodies[bi].cm);
+      decompose(bi, l.force, at, 1, false, at_cm);
+      if (proj.dims == 2 && !l.couple[2].is_zero()) {
+        FigureCouple c;
+        c.centre = fp(at ? scale * proj(*at) : drawn[i].centre);
+        auto v = num(l.couple[2]);
+        c.counterclockwise = !(v && *v < 0);
+        c.label.tex = to_latex(c.counterclockwise ? l.couple[2] : -l.couple[2]);
+        f.couples.push_back(c);
+      }
+    }
+    const Body& b = m.bodies[bi];
+    if (b.has_mass && !b.mass.is_zero() && !is_zero_vec(b.acceleration)) {
+      std::optional<std::array<double, 3>> at;
+      if (proj.dims > 1 && b.has_cm) at = point3(b.cm);
+      decompose(bi, b.acceleration, at, b.mass, true, true);
+    }
+  }
+
+  // Arrows: pushed onto the outline where they press on it, pulling away from it elsewhere;
+  // an arrow that would lie on another is moved to one side.
+  std::vector<std::pair<V, V>> placed;  // tail, head
+  std::vector<double> offsets;          // sideways, to keep off another arrow
+  for (const auto& p : pending) {
+    const Drawn& d = *std::find_if(drawn.begin(), drawn.end(), [&](const Drawn& x) { return x.body == p.body; });
+    const V anchor0 = p.at && !d.particle ? scale * proj(*p.at) : d.centre;
+    V tail, head;
+    auto make = [&](double offset) {
+      const V anchor = anchor0 + offset * perp(p.direction);
+      if ((p.dashed || p.at_cm) && !d.particle) {
+        tail = anchor;  // m a and the weight at the center of mass
+        head = tail + arrow_length * p.direction;
+      } else if (d.particle || !p.at) {
+        tail = inside(d.outline, anchor) ? exit_point(d.outline, anchor, p.direction) : anchor;
+        head = tail + arrow_length * p.direction;
+      } else if (boundary_distance(d.outline, anchor) < 0.05 && dot(p.direction, d.centre - anchor) > 1e-9) {
+        head = anchor;  // pressing on the body: drawn from outside, its head at the point
+        tail = anchor - arrow_length * p.direction;
+      } else {
+        tail = anchor;
+        head = anchor + arrow_length * p.direction;
+      }
+    };
+    auto clashes = [&] {
+      for (const auto& [t, h] : placed) {
+        const V u = normalized(h - t);
+        if (std::fabs(cross(u, p.direction)) > 0.1) continue;
+        if (std::fabs(cross(tail - t, u)) > 0.15) continue;
+        const double a0 = dot(tail - t, u), a1 = dot(head - t, u);
+        const double lo = std::min(a0, a1), hi = std::max(a0, a1), l = len(h - t);
+        if (hi > 0.05 && lo < l - 0.05) return true;
+      }
+      return false;
+    };
+    double offset = 0;
+    make(0);
+    for (int k = 1; k <= 8 && clashes(); ++k) make(offset = spacing * ((k + 1) / 2) * (k % 2 ? 1 : -1));
+    placed.push_back({tail, head});
+    offsets.push_back(offset);
+    FigureArrow a;
+    a.from = fp(tail);
+    a.to = fp(head);
+    a.dashed = p.dashed;
+    a.label.tex = to_latex(p.label);
+    f.arrows.push_back(a);
+  }
+
+  // In 1-D the arrows along one side of a body sit evenly about its middle (two strands
+  // under a pulley block to either side of it).
+  if (proj.dims == 1) {
+    std::map<std::pair<int, int>, std::vector<std::size_t>> sides;
+    for (std::size_t i = 0; i < pending.size(); ++i)
+      sides[{pending[i].body, dot(pending[i].direction, proj.axis1) > 0 ? 1 : -1}].push_back(i);
+    for (const auto& [key, members] : sides) {
+      double lo = 1e300, hi = -1e300;
+      for (std::size_t i : members) {
+        lo = std::min(lo, offsets[i]);
+        hi = std::max(hi, offsets[i]);
+      }
+      const double shift = -(lo + hi) / 2;
+      for (std::size_t i : members) {
+        const V by = shift * perp(pending[i].direction);
+        f.arrows[i].from = fp(vp(f.arrows[i].from) + by);
+        f.arrows[i].to = fp(vp(f.arrows[i].to) + by);
+      }
+    }
+  }
+
+  // Dots at the named points where forces act (2-D and 3-D), and at each centre of mass.
+  std::set<std::string> named;
+  if (proj.dims > 1)
+    for (int bi : bodies) {
+      for (const auto& l : m.loads)
+        if (l.body == bi && l.at && !l.at_name.empty() && !internal.count(strip_suffix(l.source)) &&
+            std::any_of(m.points.begin(), m.points.end(), [&](const Point& p) { return p.name == l.at_name; }) &&
+            named.insert(l.at_name).second) {
+          FigureDot dot;
+          dot.at = fp(scale * proj(*point3(*l.at)));
+          FigureLabel name;
+          name.tex = default_tex(l.at_name);
+          dot.label = name;
+          f.dots.push_back(dot);
+        }
+      if (m.bodies[bi].has_cm) f.dots.push_back({fp(scale * proj(*point3(m.bodies[bi].cm))), std::nullopt});
+    }
+
+  // Labels: at the free end of each arrow first, then beside it.
+  Layout lay(f);
+  for (auto& a : f.arrows) {
+    const V t = vp(a.from), h = vp(a.to);
+    const V u = normalized(h - t), n = perp(u);
+    // The free end: the tail of an arrow pressing on a body, else the head.
+    bool pressing = false;
+    for (const auto& o : f.outlines) pressing = pressing || boundary_distance(o, h) < 0.06;
+    const V end = pressing ? t : h;
+    const V out = pressing ? -1 * u : u;
+    const double w = char_width * static_cast<double>(shown_length(a.label.tex)) + 0.12;
+    const double reach = 0.5 * (std::fabs(out.x) * w + std::fabs(out.y) * label_height) + gap;
+    const V mid = 0.5 * (t + h);
+    const double side = 0.5 * (std::fabs(n.x) * w + std::fabs(n.y) * label_height) + gap;
+    a.label = lay.place(a.label.tex, {end + reach * out, end + side * n, end - side * n, mid + side * n, mid - side * n,
+                                      end + reach * out + side * n, end + reach * out - side * n, end + (reach + 0.4) * out});
+  }
+  for (auto& c : f.couples) c.label = lay.place(c.label.tex, {vp(c.centre) + V{0, c.radius + 0.3}, vp(c.centre) + V{c.radius + 0.4, 0}});
+  for (auto& d : f.dots)
+    if (d.label) {
+      const V p = vp(d.at);
+      std::vector<V> cand;
+      for (V dir : {V{-1, -1}, V{1, -1}, V{-1, 1}, V{1, 1}, V{0, -1}, V{-1, 0}, V{1, 0}, V{0, 1}}) cand.push_back(p + 0.3 * dir);
+      d.label = lay.place(d.label->tex, cand);
+    }
+
+  // Bounds, then the axes at the lower left, outside everything else.
+  f.min_x = f.min_y = 1e300;
+  f.max_x = f.max_y = -1e300;
+  auto grow = [&](V p) {
+    f.min_x = std::min(f.min_x, p.x);
+    f.max_x = std::max(f.max_x, p.x);
+    f.min_y = std::min(f.min_y, p.y);
+    f.max_y = std::max(f.max_y, p.y);
+  };
+  auto grow_label = [&](const FigureLabel& l) {
+    grow(vp(l.at) + V{l.width / 2, l.height / 2});
+    grow(vp(l.at) - V{l.width / 2, l.height / 2});
+  };
+  for (const auto& o : f.outlines) {
+    if (o.shape == FigureOutline::Shape::circle) {
+      grow(vp(o.centre) + V{o.radius, o.radius});
+      grow(vp(o.centre) - V{o.radius, o.radius});
+    }
+    for (const auto& c : o.corners) grow(vp(c));
+  }
+  for (const auto& a : f.arrows) {
+    grow(vp(a.from));
+    grow(vp(a.to));
+    grow_label(a.label);
+  }
+  for (const auto& c : f.couples) {
+    grow(vp(c.centre) + V{c.radius, c.radius});
+    grow(vp(c.centre) - V{c.radius, c.radius});
+    grow_label(c.label);
+  }
+  for (const auto& d : f.dots) {
+    grow(vp(d.at));
+    if (d.label) grow_label(*d.label);
+  }
+  const V origin{f.min_x - 1.3, f.min_y + 0.2};
+  for (int k = 0; k < m.dims(); ++k) {
+    FigureArrow a;
+    a.axis = true;
+    a.from = fp(origin);
+    const V d = normalized(proj.dims == 1 ? proj.axis1 : proj.axis(k));
+    a.to = fp(origin + 0.8 * d);
+    a.label.tex = m.axes[k];
+    a.label.width = char_width + 0.12;
+    a.label.height = label_height;
+    a.label.at = fp(origin + 1.05 * d);
+    grow(vp(a.from));
+    grow(vp(a.to));
+    grow_label(a.label);
+    f.arrows.push_back(a);
+  }
+
+  std::vector<std::string> names;
+  for (int bi : bodies) names.push_back(m.bodies[bi].name);
+  std::string list;
+  for (std::size_t i = 0; i < names.size(); ++i) list += (i ? (i + 1 == names.size() ? " and " : ", ") : "") + names[i];
+  f.caption = std::string("Free body diagram of ") + (system && bodies.size() > 1 ? "the system " : "") + list;
+  return f;
+}
+
+}  // namespace tackle

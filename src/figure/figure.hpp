@@ -1,0 +1,76 @@
+// Free body diagrams, drawn: a Figure is a picture in drawing units (about centimetres, y up)
+// made from the model's geometry: each body's outline, the points, every force as an arrow at
+// its point of application with its symbol, couples as arcs, the inertial term m a dashed
+// beside it, and the axes. Writers turn it into TikZ (LaTeX) or SVG (Markdown, HTML).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/model.hpp"
+
+namespace tackle {
+
+struct FigurePoint {
+  double x = 0, y = 0;
+};
+
+struct FigureLabel {
+  FigurePoint at;     // the centre of the label
+  std::string tex;    // LaTeX math (no dollars)
+  double width = 0, height = 0;  // the box the layout kept free for it
+};
+
+struct FigureArrow {
+  FigurePoint from, to;  // tail, head
+  FigureLabel label;
+  bool dashed = false;   // the inertial term m a
+  bool axis = false;     // a coordinate axis of the triad
+};
+
+struct FigureCouple {
+  FigurePoint centre;
+  double radius = 0.5;
+  bool counterclockwise = true;
+  FigureLabel label;
+};
+
+struct FigureOutline {
+  enum class Shape { polygon, circle } shape = Shape::polygon;
+  std::vector<FigurePoint> corners;  // polygon, in order
+  FigurePoint centre;                // circle
+  double radius = 0;
+  std::string name;                  // the body's name
+};
+
+struct FigureDot {
+  FigurePoint at;
+  std::optional<FigureLabel> label;  // a named point
+};
+
+struct Figure {
+  std::string caption;  // "Free body diagram of the suitcase"
+  std::vector<FigureOutline> outlines;
+  std::vector<FigureDot> dots;
+  std::vector<FigureArrow> arrows;  // forces, inertial terms and the axes
+  std::vector<FigureCouple> couples;
+  double min_x = 0, min_y = 0, max_x = 0, max_y = 0;  // everything drawn, labels included
+};
+
+/// The free body diagram of one body, or of a system of bodies (only the forces from outside
+/// it), from the model's geometry at the layout's numbers. None when the geometry cannot be
+/// evaluated (a length without a value).
+[[nodiscard]] std::optional<Figure> free_body_diagram(const Model& m, const std::vector<int>& bodies, bool system);
+
+/// The figure as a tikzpicture (needs \usepackage{tikz}).
+[[nodiscard]] std::string to_tikz(const Figure& f);
+/// The figure as a standalone <svg> element (labels as text with sub- and superscripts).
+[[nodiscard]] std::string to_svg(const Figure& f);
+/// A label's LaTeX as SVG text content (<tspan>s for sub- and superscripts, Greek letters as
+/// characters, dots as combining accents), XML-escaped.
+[[nodiscard]] std::string svg_text(const std::string& tex);
+/// The number of characters a label shows (for its width).
+[[nodiscard]] std::size_t shown_length(const std::string& tex);
+
+}  // namespace tackle

@@ -1,0 +1,212 @@
+// A Figure as TikZ and as SVG; labels' LaTeX as SVG text.
+#include <cmath>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "figure/figure.hpp"
+
+namespace tackle {
+
+namespace {
+
+std::string num(double v) {
+  if (std::fabs(v) < 5e-4) v = 0;
+  std::string s = fmt::format("{:.3f}", v);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
+
+std::string xml_escape(char c) {
+  switch (c) {
+    case '&': return "&amp;";
+    case '<': return "&lt;";
+    case '>': return "&gt;";
+    case '"': return "&quot;";
+    default: return std::string(1, c);
+  }
+}
+
+const std::map<std::string, std::string>& greek() {
+  static const std::map<std::string, std::string> g{
+      {"alpha", "α"}, {"beta", "β"},   {"gamma", "γ"},  {"delta", "δ"},   {"epsilon", "ε"}, {"varepsilon", "ε"},
+      {"zeta", "ζ"},  {"eta", "η"},    {"theta", "θ"},  {"vartheta", "ϑ"}, {"iota", "ι"},    {"kappa", "κ"},
+      {"lambda", "λ"}, {"mu", "μ"},    {"nu", "ν"},     {"xi", "ξ"},      {"pi", "π"},      {"rho", "ρ"},
+      {"sigma", "σ"}, {"tau", "τ"},    {"upsilon", "υ"}, {"phi", "φ"},    {"varphi", "φ"},  {"chi", "χ"},
+      {"psi", "ψ"},   {"omega", "ω"},  {"Gamma", "Γ"},  {"Delta", "Δ"},   {"Theta", "Θ"},   {"Lambda", "Λ"},
+      {"Xi", "Ξ"},    {"Pi", "Π"},     {"Sigma", "Σ"},  {"Phi", "Φ"},     {"Psi", "Ψ"},     {"Omega", "Ω"},
+      {"cdot", "·"},  {"times", "×"},  {"infty", "∞"},  {"ell", "ℓ"}};
+  return g;
+}
+
+// A small reader of the LaTeX that labels use: names with sub- and superscripts, Greek
+// letters, \dot and \ddot, \frac, \sqrt, \left and \right, functions, spacing.
+class SvgText {
+ public:
+  explicit SvgText(const std::string& s) : s_(s) {}
+  std::string run() {
+    std::string out;
+    while (i_ < s_.size()) out += item();
+    return out;
+  }
+
+ private:
+  std::string group() {
+    if (i_ < s_.size() && s_[i_] == '{') {
+      ++i_;
+      std::string out;
+      while (i_ < s_.size() && s_[i_] != '}') out += item();
+      if (i_ < s_.size()) ++i_;
+      return out;
+    }
+    return i_ < s_.size() ? item() : "";
+  }
+  std::string item() {
+    const char c = s_[i_];
+    if (c == '\\') {
+      ++i_;
+      std::string name;
+      while (i_ < s_.size() && std::isalpha(static_cast<unsigned char>(s_[i_]))) name += s_[i_++];
+      if (name.empty()) {  // \, \; \! \  and escaped characters
+        const char e = i_ < s_.size() ? s_[i_++] : ' ';
+        if (e == ',' || e == ';' || e == ' ') return " ";
+        if (e == '!') return "";
+        return xml_escape(e);
+      }
+      if (name == "left" || name == "right") return i_ < s_.size() ? (s_[i_] == '.' ? (++i_, "") : item()) : "";
+      if (auto g = greek().find(name); g != greek().end()) return g->second;
+      if (name == "dot" || name == "ddot") return group() + (name == "dot" ? "\u0307" : "\u0308");
+      if (name == "frac") {
+        const std::string a = group(), b = group();
+        return "(" + a + ")/(" + b + ")";
+      }
+      if (name == "sqrt") return "√(" + group() + ")";
+      if (name == "mathrm" || name == "text" || name == "operatorname" || name == "mathit")
+        return "<tspan font-style=\"normal\">" + group() + "</tspan>";
+      if (name == "quad" || name == "qquad") return " ";
+      return "<tspan font-style=\"normal\">" + name + "</tspan>";  // \sin, \cos, \log, ...
+    }
+    ++i_;
+    if (c == '_' || c == '^') {
+      return std::string("<tspan baseline-shift=\"") + (c == '_' ? "sub" : "super") + "\" font-size=\"70%\">" + group() + "</tspan>";
+    }
+    if (c == '{') {
+      --i_;
+      return group();
+    }
+    if (c == '-') return "−";
+    if (c == ' ') return "\u2009";  // between factors: a thin space
+    if (std::isdigit(static_cast<unsigned char>(c))) return "<tspan font-style=\"normal\">" + std::string(1, c) + "</tspan>";
+    if (c == '+' || c == '=' || c == '(' || c == ')') return std::string(c == '+' || c == '=' ? " " : "") + c + (c == '+' || c == '=' ? " " : "");
+    return xml_escape(c);
+  }
+  const std::string& s_;
+  std::size_t i_ = 0;
+};
+
+std::string svg_point(double x, double y, const Figure& f, double px) {
+  return num((x - f.min_x) * px) + "," + num((f.max_y - y) * px);
+}
+
+}  // namespace
+
+std::string svg_text(const std::string& tex) { return SvgText(tex).run(); }
+
+std::size_t shown_length(const std::string& tex) {
+  const std::string s = svg_text(tex);
+  std::size_t n = 0;
+  bool tag = false;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c == '<') tag = true;
+    else if (c == '>') tag = false;
+    else if (tag) continue;
+    else if (c == '&') {
+      ++n;
+      i = s.find(';', i);
+      if (i == std::string::npos) break;
+    } else if ((c & 0xC0) != 0x80) {
+      // a combining dot (U+0307, U+0308: CC 87, CC 88) takes no room
+      if (!(c == 0xCC && i + 1 < s.size() && (static_cast<unsigned char>(s[i + 1]) == 0x87 || static_cast<unsigned char>(s[i + 1]) == 0x88))) ++n;
+    }
+  }
+  return n;
+}
+
+std::string to_tikz(const Figure& f) {
+  std::string out = "\\begin{tikzpicture}[>=stealth, line cap=round, line join=round]\n";
+  for (const auto& o : f.outlines) {
+    if (o.shape == FigureOutline::Shape::circle) {
+      out += "  \\filldraw[fill=black!8, draw=black, thick] (" + num(o.centre.x) + "," + num(o.centre.y) + ") circle (" + num(o.radius) + ");\n";
+    } else {
+      out += "  \\filldraw[fill=black!8, draw=black, thick] ";
+      for (const auto& c : o.corners) out += "(" + num(c.x) + "," + num(c.y) + ") -- ";
+      out += "cycle;\n";
+    }
+  }
+  for (const auto& d : f.dots) {
+    out += "  \\fill (" + num(d.at.x) + "," + num(d.at.y) + ") circle (1.5pt);\n";
+    if (d.label) out += "  \\node[font=\\small, inner sep=1pt] at (" + num(d.label->at.x) + "," + num(d.label->at.y) + ") {$" + d.label->tex + "$};\n";
+  }
+  for (const auto& a : f.arrows) {
+    const std::string style = a.axis ? "->, thin" : a.dashed ? "->, thick, dashed" : "->, very thick";
+    out += "  \\draw[" + style + "] (" + num(a.from.x) + "," + num(a.from.y) + ") -- (" + num(a.to.x) + "," + num(a.to.y) + ");\n";
+    out += "  \\node[font=\\small, inner sep=1pt] at (" + num(a.label.at.x) + "," + num(a.label.at.y) + ") {$" + a.label.tex + "$};\n";
+  }
+  for (const auto& c : f.couples) {
+    const double start = c.counterclockwise ? -60 : 240, end = c.counterclockwise ? 240 : -60;
+    const double sx = c.centre.x + c.radius * std::cos(start * M_PI / 180), sy = c.centre.y + c.radius * std::sin(start * M_PI / 180);
+    out += "  \\draw[->, very thick] (" + num(sx) + "," + num(sy) + ") arc[start angle=" + num(start) + ", end angle=" + num(end) +
+           ", radius=" + num(c.radius) + "];\n";
+    out += "  \\node[font=\\small, inner sep=1pt] at (" + num(c.label.at.x) + "," + num(c.label.at.y) + ") {$" + c.label.tex + "$};\n";
+  }
+  return out + "\\end{tikzpicture}\n";
+}
+
+std::string to_svg(const Figure& f) {
+  const double px = 40;  // pixels per drawing unit
+  const double w = (f.max_x - f.min_x) * px, h = (f.max_y - f.min_y) * px;
+  std::string id = "head";
+  for (char c : f.caption) id += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
+  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"fbd\" width=\"" + num(w + 8) + "\" height=\"" + num(h + 8) +
+                    "\" viewBox=\"-4 -4 " + num(w + 8) + " " + num(h + 8) + "\" role=\"img\" aria-label=\"" + f.caption + "\">\n";
+  out += "<title>" + f.caption + "</title>\n";
+  out += "<defs><marker id=\"" + id + "\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" orient=\"auto-start-reverse\">"
+         "<path d=\"M 0 0 L 10 5 L 0 10 z\" fill=\"black\"/></marker></defs>\n";
+  for (const auto& o : f.outlines) {
+    if (o.shape == FigureOutline::Shape::circle) {
+      out += "<circle cx=\"" + num((o.centre.x - f.min_x) * px) + "\" cy=\"" + num((f.max_y - o.centre.y) * px) + "\" r=\"" +
+             num(o.radius * px) + "\" fill=\"#ebebeb\" stroke=\"black\" stroke-width=\"1.6\"/>\n";
+    } else {
+      out += "<polygon points=\"";
+      for (std::size_t i = 0; i < o.corners.size(); ++i) out += (i ? " " : "") + svg_point(o.corners[i].x, o.corners[i].y, f, px);
+      out += "\" fill=\"#ebebeb\" stroke=\"black\" stroke-width=\"1.6\" stroke-linejoin=\"round\"/>\n";
+    }
+  }
+  auto label = [&](const FigureLabel& l) {
+    return "<text x=\"" + num((l.at.x - f.min_x) * px) + "\" y=\"" + num((f.max_y - l.at.y) * px + 5) +
+           "\" text-anchor=\"middle\" font-family=\"serif\" font-style=\"italic\" font-size=\"15\">" + svg_text(l.tex) + "</text>\n";
+  };
+  for (const auto& d : f.dots) {
+    out += "<circle cx=\"" + num((d.at.x - f.min_x) * px) + "\" cy=\"" + num((f.max_y - d.at.y) * px) + "\" r=\"2.5\" fill=\"black\"/>\n";
+    if (d.label) out += label(*d.label);
+  }
+  for (const auto& a : f.arrows) {
+    out += "<line x1=\"" + num((a.from.x - f.min_x) * px) + "\" y1=\"" + num((f.max_y - a.from.y) * px) + "\" x2=\"" +
+           num((a.to.x - f.min_x) * px) + "\" y2=\"" + num((f.max_y - a.to.y) * px) + "\" stroke=\"black\" stroke-width=\"" +
+           (a.axis ? "1" : "2") + "\"" + (a.dashed ? " stroke-dasharray=\"6 4\"" : "") + " marker-end=\"url(#" + id + ")\"/>\n";
+    out += label(a.label);
+  }
+  for (const auto& c : f.couples) {
+    const double start = (c.counterclockwise ? -60 : 240) * M_PI / 180, end = (c.counterclockwise ? 240 : -60) * M_PI / 180;
+    const double cx = (c.centre.x - f.min_x) * px, cy = (f.max_y - c.centre.y) * px, r = c.radius * px;
+    out += "<path d=\"M " + num(cx + r * std::cos(start)) + " " + num(cy - r * std::sin(start)) + " A " + num(r) + " " + num(r) +
+           " 0 1 " + (c.counterclockwise ? "0" : "1") + " " + num(cx + r * std::cos(end)) + " " + num(cy - r * std::sin(end)) +
+           "\" fill=\"none\" stroke=\"black\" stroke-width=\"2\" marker-end=\"url(#" + id + ")\"/>\n";
+    out += label(c.label);
+  }
+  return out + "</svg>\n";
+}
+
+}  // namespace tackle

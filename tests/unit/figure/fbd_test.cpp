@@ -1,0 +1,182 @@
+// Drawn free body diagrams: the arrows where a person draws them, labels that never sit on
+// one another, every example drawn, and the description's own shape.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "figure/figure.hpp"
+#include "../../support/helpers.hpp"
+
+using namespace tackle;
+
+namespace {
+
+std::vector<Figure> figures_of(const Analysis& a) {
+  std::vector<Figure> out;
+  for (const auto& d : explain_phases(a))
+    for (const auto& st : d.steps)
+      if (st.kind == Step::Kind::figure) out.push_back(*st.figure);
+  return out;
+}
+
+const FigureArrow* arrow(const Figure& f, const std::string& tex) {
+  for (const auto& a : f.arrows)
+    if (a.label.tex == tex) return &a;
+  return nullptr;
+}
+
+bool near(FigurePoint a, FigurePoint b) { return std::hypot(a.x - b.x, a.y - b.y) < 1e-6; }
+
+FigurePoint dot_named(const Figure& f, const std::string& name) {
+  for (const auto& d : f.dots)
+    if (d.label && d.label->tex == name) return d.at;
+  FAIL("no point " << name);
+  return {};
+}
+
+}  // namespace
+
+TEST_CASE("FBD: the suitcase's normal forces press on it from below, friction mu N apart", "[figure]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.7-suitcase.yaml", test::rules());
+  const auto figs = figures_of(*a);
+  REQUIRE(figs.size() == 1);
+  const Figure& f = figs[0];
+  CHECK(f.caption == "Free body diagram of suitcase");
+  REQUIRE(f.outlines.size() == 1);
+  const FigurePoint A = dot_named(f, "A"), B = dot_named(f, "B");
+  // N_A points up with its head at A; mu N_A points left from A (away from the body); mu N_B
+  // points left with its head at B (pressing on it); the weight m g points down; m a_C is dashed.
+  const FigureArrow* na = arrow(f, "N_{A}");
+  REQUIRE(na);
+  CHECK(near(na->to, A));
+  CHECK(na->from.y < na->to.y);
+  CHECK(std::fabs(na->from.x - na->to.x) < 1e-9);
+  const FigureArrow* fa = arrow(f, "\\mu N_{A}");
+  REQUIRE(fa);
+  CHECK(near(fa->from, A));
+  CHECK(fa->to.x < fa->from.x);
+  const FigureArrow* fb = arrow(f, "\\mu N_{B}");
+  REQUIRE(fb);
+  CHECK(near(fb->to, B));
+  CHECK(fb->to.x < fb->from.x);
+  const FigureArrow* w = arrow(f, "m g");
+  REQUIRE(w);
+  CHECK(w->to.y < w->from.y);
+  CHECK(!w->dashed);
+  const FigureArrow* ma = arrow(f, "m a_{C}");
+  REQUIRE(ma);
+  CHECK(ma->dashed);
+  // Two axes, x and y.
+  CHECK(std::count_if(f.arrows.begin(), f.arrows.end(), [](const FigureArrow& x) { return x.axis; }) == 2);
+}
+
+TEST_CASE("FBD: a system's diagram leaves out the forces inside it", "[figure]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.1-towing-system.yaml", test::rules());
+  const auto figs = figures_of(*a);
+  REQUIRE(figs.size() == 1);
+  CHECK(figs[0].caption == "Free body diagram of the system car1 and car2");
+  CHECK(figs[0].outlines.size() == 2);
+  std::vector<std::string> labels;
+  for (const auto& x : figs[0].arrows)
+    if (!x.axis) labels.push_back(x.label.tex);
+  std::sort(labels.begin(), labels.end());
+  CHECK(labels == std::vector<std::string>{"F", "m_{1} \\ddot{x}_{1}", "m_{2} \\ddot{x}_{2}"});
+}
+
+TEST_CASE("FBD: two strands under a pulley block sit to either side of its middle", "[figure]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/atwood-machine.yaml", test::rules());
+  const auto figs = figures_of(*a);
+  REQUIRE(figs.size() == 3);
+  const Figure& c = figs[2];
+  CHECK(c.caption == "Free body diagram of C");
+  REQUIRE(c.outlines[0].shape == FigureOutline::Shape::circle);
+  std::vector<double> xs;
+  for (const auto& x : c.arrows)
+    if (x.label.tex == "T") {
+      CHECK(x.to.y < x.from.y);  // down: y points up in this problem
+      xs.push_back((x.from.x + x.to.x) / 2);
+    }
+  REQUIRE(xs.size() == 2);
+  CHECK(std::fabs(xs[0] + xs[1] - 2 * c.outlines[0].centre.x) < 1e-9);
+  CHECK(std::fabs(xs[0] - xs[1]) > 0.3);
+}
+
+TEST_CASE("FBD: in every example no label lies on another and no arrow lies on an outline's edge", "[figure]") {
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(TACKLE_SOURCE_DIR "/examples"))
+    if (e.path().extension() == ".yaml") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  std::size_t drawn = 0;
+  for (const auto& file : files) {
+    const auto a = analyze_file(file, test::rules());
+    for (const Figure& f : figures_of(*a)) {
+      ++drawn;
+      INFO(file << ": " << f.caption);
+      std::vector<FigureLabel> labels;
+      for (const auto& x : f.arrows) labels.push_back(x.label);
+      for (const auto& d : f.dots)
+        if (d.label) labels.push_back(*d.label);
+      for (std::size_t i = 0; i < labels.size(); ++i)
+        for (std::size_t k = i + 1; k < labels.size(); ++k) {
+          INFO(labels[i].tex << " and " << labels[k].tex);
+          const bool apart = std::fabs(labels[i].at.x - labels[k].at.x) * 2 >= labels[i].width + labels[k].width - 1e-9 ||
+                             std::fabs(labels[i].at.y - labels[k].at.y) * 2 >= labels[i].height + labels[k].height - 1e-9;
+          CHECK(apart);
+        }
+      // An arrow along an edge would hide it: no arrow runs on an edge's line over a length.
+      for (const auto& o : f.outlines) {
+        if (o.shape != FigureOutline::Shape::polygon) continue;
+        for (std::size_t i = 0; i < o.corners.size(); ++i) {
+          const FigurePoint p = o.corners[i], q = o.corners[(i + 1) % o.corners.size()];
+          const double ex = q.x - p.x, ey = q.y - p.y, el = std::hypot(ex, ey);
+          for (const auto& x : f.arrows) {
+            const double ax = x.to.x - x.from.x, ay = x.to.y - x.from.y, al = std::hypot(ax, ay);
+            if (std::fabs(ex * ay - ey * ax) > 0.02 * el * al) continue;                       // not parallel
+            if (std::fabs((x.from.x - p.x) * ey - (x.from.y - p.y) * ex) > 0.02 * el) continue;  // not on its line
+            const double t0 = ((x.from.x - p.x) * ex + (x.from.y - p.y) * ey) / el, t1 = ((x.to.x - p.x) * ex + (x.to.y - p.y) * ey) / el;
+            INFO(x.label.tex);
+            CHECK((std::max(t0, t1) <= 0.05 || std::min(t0, t1) >= el - 0.05));
+          }
+        }
+      }
+    }
+  }
+  CHECK(drawn >= 40);
+}
+
+TEST_CASE("FBD: labels in SVG keep their subscripts, Greek letters and dots", "[figure]") {
+  CHECK(svg_text("\\mu N_{A}") == "μ\u2009N<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>");
+  CHECK(svg_text("m_{A} \\ddot{x}_{A}") ==
+        "m<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>\u2009x\u0308<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>");
+  CHECK(svg_text("a < b & c") == "a\u2009&lt;\u2009b\u2009&amp;\u2009c");
+  CHECK(shown_length("m_{A} \\ddot{x}_{A}") == 5);
+}
+
+TEST_CASE("FBD: a description draws a body as it says", "[figure]") {
+  const std::string yaml = test::example_with("sample-12.7-suitcase.yaml", "center_of_mass: [l/2, h],",
+                                              "center_of_mass: [l/2, h], draw: {shape: circle, size: [l]},");
+  const auto a = test::run_text(yaml);
+  const auto figs = figures_of(*a);
+  REQUIRE(figs.size() == 1);
+  REQUIRE(figs[0].outlines[0].shape == FigureOutline::Shape::circle);
+  // The drawn circle's diameter is l, the distance from A to B.
+  const double ab = std::hypot(dot_named(figs[0], "A").x - dot_named(figs[0], "B").x, dot_named(figs[0], "A").y - dot_named(figs[0], "B").y);
+  CHECK(std::fabs(2 * figs[0].outlines[0].radius - ab) < 1e-9);
+}
+
+TEST_CASE("FBD: a wrong 'draw' is located", "[figure][errors]") {
+  auto errors = [](const std::string& draw) {
+    return test::errors_of(test::example_with("sample-12.7-suitcase.yaml", "center_of_mass: [l/2, h],",
+                                              "center_of_mass: [l/2, h], draw: " + draw + ","));
+  };
+  CHECK(errors("{shape: blob, size: [l]}") ==
+        std::vector<std::string>{"t.yaml:24:63: 'draw' of body 'suitcase' has shape 'blob' (expected rectangle or circle)"});
+  CHECK(errors("{shape: rectangle, size: [l]}") ==
+        std::vector<std::string>{"t.yaml:24:80: 'draw' of body 'suitcase': 'size' has 1 entries (expected 2: [width, height])"});
+  CHECK(errors("{shape: circle, size: [-l]}") ==
+        std::vector<std::string>{"t.yaml:24:78: 'draw' of body 'suitcase': size '-l' is not a positive length with the given values"});
+  CHECK(errors("{shape: circle}") ==
+        std::vector<std::string>{"t.yaml:24:63: 'draw' of body 'suitcase' has no 'size' (expected [diameter])"});
+}
