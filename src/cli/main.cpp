@@ -13,6 +13,7 @@
 #include "pipeline/pipeline.hpp"
 #include "report/isolation_report.hpp"
 #include "report/key.hpp"
+#include "report/html.hpp"
 #include "report/sheet.hpp"
 #include "core/files.hpp"
 #include "report/sweep.hpp"
@@ -73,13 +74,15 @@ struct Options {
   double tolerance = 0.01;
   int sig_figs = 0;
   bool require_simplified = false, no_latex = false, reveal = false, top_level_score = false;
+  bool figures = false;  // sheet
   std::vector<std::string> points_text, set_values;
 };
 
 const std::map<std::string, tackle::Format> formats{{"text", tackle::Format::text},
                                                    {"latex", tackle::Format::latex},
                                                    {"markdown", tackle::Format::markdown},
-                                                   {"json", tackle::Format::json}};
+                                                   {"json", tackle::Format::json},
+                                                   {"html", tackle::Format::html}};
 
 // The analysis of one phase (or of the whole description when it has none); nullptr, with
 // the usage problem said, when the phase named is not there.
@@ -163,7 +166,7 @@ int run_sheet(const Options& o, const tackle::RuleSet& rules) {
   for (std::size_t i = 0; i < p.derivations.size(); ++i)
     for (std::size_t k = 0; k < p.derivations[i].size(); ++k)
       entries.push_back({&p.derivations[i][k], &p.phases[i][k]->model, p.variants[i][k]});
-  return emit(tackle::write_sheet(entries, formats.at(o.key_format)), o.out);
+  return emit(tackle::write_sheet(entries, formats.at(o.key_format), o.figures), o.out);
 }
 
 int run_isolate(const Options& o, const tackle::RuleSet& rules) {
@@ -325,7 +328,7 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
     sub->add_option("--format", o.format, "Output format")
-        ->check(CLI::IsMember({"text", "latex", "markdown", "json"}))
+        ->check(CLI::IsMember({"text", "latex", "markdown", "json", "html"}))
         ->capture_default_str();
     sub->add_option("-o,--output", o.out, "Write to this file instead of standard output");
     return sub;
@@ -358,7 +361,8 @@ int main(int argc, char** argv) {
   auto* sheet = app.add_subcommand("sheet", "Problem sheets: each problem's statement with its numbers, per variant "
                                             "(the same numbers as key with the same seed)");
   sheet->add_option("files", o.key_files, "Problem descriptions (YAML)")->required();
-  sheet->add_option("--format", o.key_format, "Output format")->check(CLI::IsMember({"latex", "markdown"}))->capture_default_str();
+  sheet->add_option("--format", o.key_format, "Output format")->check(CLI::IsMember({"latex", "markdown", "html"}))->capture_default_str();
+  sheet->add_flag("--figures", o.figures, "Draw each problem's free body diagrams under its statement");
   sheet->add_option("--variants", o.variants, "Numeric variants per problem, drawn from the parameters' 'range'")
       ->check(CLI::Range(0, 10000));
   sheet->add_option("--seed", o.seed, "Seed for the variants (as for key)")->capture_default_str();
@@ -447,6 +451,9 @@ int main(int argc, char** argv) {
     return report_input_error(e);
   } catch (const tackle::InternalError& e) {
     std::cerr << "tackle: internal error: " << e.what() << "\n";
+    return 3;
+  } catch (const tackle::SetupError& e) {
+    std::cerr << "tackle: " << e.what() << "\n";
     return 3;
   } catch (const std::exception& e) {
     std::cerr << "tackle: internal error: " << e.what() << "\n";

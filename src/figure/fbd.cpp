@@ -64,6 +64,11 @@ class Numbers {
       if (auto d = defs_.find(e); d != defs_.end()) v = (*this)(d->second, depth + 1);
       else if (auto t = turning_.find(e); t != turning_.end()) {
         if (auto sq = (*this)(t->second, depth + 1); sq && *sq >= 0) v = std::sqrt(*sq);
+      } else if (const SymbolInfo* info = m_.symbols->find(e)) {
+        // A problem in symbols only is drawn too: a parameter without a value as 1 (in SI),
+        // a coordinate the layout does not place at 0.
+        if (info->role == SymbolRole::parameter) v = 1;
+        else if (info->role == SymbolRole::coordinate || info->role == SymbolRole::time) v = 0;
       }
       if (v) known_[e] = *v;
       return v;

@@ -59,8 +59,8 @@ struct Figure {
 };
 
 /// The free body diagram of one body, or of a system of bodies (only the forces from outside
-/// it), from the model's geometry at the layout's numbers. None when the geometry cannot be
-/// evaluated (a length without a value).
+/// it), from the model's geometry at the layout's numbers (a parameter without a value taken
+/// as 1). None when the geometry cannot be evaluated (a position undefined there).
 [[nodiscard]] std::optional<Figure> free_body_diagram(const Model& m, const std::vector<int>& bodies, bool system);
 
 /// The figure as a tikzpicture (needs \usepackage{tikz}).

@@ -53,9 +53,10 @@ class Problem {
     static const std::map<std::string, tackle::Format> formats{{"text", tackle::Format::text},
                                                                {"latex", tackle::Format::latex},
                                                                {"markdown", tackle::Format::markdown},
-                                                               {"json", tackle::Format::json}};
+                                                               {"json", tackle::Format::json},
+                                                               {"html", tackle::Format::html}};
     const auto f = formats.find(format);
-    if (f == formats.end()) throw py::value_error("format '" + format + "' (expected text, latex, markdown or json)");
+    if (f == formats.end()) throw py::value_error("format '" + format + "' (expected text, latex, markdown, json or html)");
     return tackle::write(derivation_, f->second, full);
   }
 

@@ -130,7 +130,7 @@ void narrate_impact(Derivation& d, const Model& m, const ImpactResult& r, const 
 /// (a*l*m/(2*d) rather than a*m*sqrt(b^2 + d^2 + e^2)/(2*d)).
 [[nodiscard]] GiNaC::ex fold_definitions(const GiNaC::ex& e, const SymbolTable& table);
 
-enum class Format { text, latex, json, markdown };
+enum class Format { text, latex, json, markdown, html };
 /// `full`: the whole derivation; otherwise the answers only (`tackle solve`).
 [[nodiscard]] std::string write(const Derivation& d, Format f, bool full);
 /// The derivations of a phased description's phases, one after the other (one LaTeX document,

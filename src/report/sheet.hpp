@@ -16,8 +16,9 @@ struct SheetEntry {
   std::vector<Variant> variants;  // none: the description's own values
 };
 
-/// One sheet for every entry and variant (LaTeX document or Markdown); an entry without a
-/// statement shows its title and what is asked.
-[[nodiscard]] std::string write_sheet(const std::vector<SheetEntry>& entries, Format f);
+/// One sheet for every entry and variant (LaTeX document, Markdown or an HTML page); an entry
+/// without a statement shows its title and what is asked. `figures`: each problem's drawn
+/// free body diagrams under its statement (left out by default: they are part of the answer).
+[[nodiscard]] std::string write_sheet(const std::vector<SheetEntry>& entries, Format f, bool figures = false);
 
 }  // namespace tackle

@@ -7,6 +7,7 @@
 #include "expr/print.hpp"
 #include "figure/figure.hpp"
 #include "report/derivation.hpp"
+#include "report/html.hpp"
 #include "report/tex.hpp"
 
 namespace tackle {
@@ -56,10 +57,10 @@ std::string value_text(const std::optional<NumericValue>& v) {
 std::string prose(const Step& st, Format f) {
   std::string out;
   std::size_t from = 0, k = 0;
-  auto plain = [&](const std::string& s) { return f == Format::latex ? tex_escape(s) : s; };
+  auto plain = [&](const std::string& s) { return f == Format::latex ? tex_escape(s) : f == Format::html ? html_escape(s) : s; };
   for (std::size_t at; (at = st.text.find("{}", from)) != std::string::npos && k < st.math.size(); from = at + 2, ++k) {
     out += plain(st.text.substr(from, at - from));
-    out += f == Format::text ? to_text(st.math[k]) : "$" + to_latex(st.math[k]) + "$";
+    out += f == Format::text ? to_text(st.math[k]) : f == Format::html ? html_math(to_latex(st.math[k])) : "$" + to_latex(st.math[k]) + "$";
   }
   return out + plain(st.text.substr(from));
 }
@@ -67,6 +68,22 @@ std::string prose(const Step& st, Format f) {
 // The title of a derivation, with its phase when it is one of a phased description's.
 std::string heading(const Derivation& d) {
   return d.phase.empty() ? d.title : d.title + ": phase " + std::to_string(d.phase_number) + ", " + d.phase;
+}
+
+// The closed forms as boxed equations with their numbers (`solve`'s report).
+std::vector<Step> result_steps(const Derivation& d) {
+  std::vector<Step> out;
+  for (const auto& a : d.answers) {
+    if (!a.closed_form) continue;
+    Step st;
+    st.kind = Step::Kind::equation;
+    st.lhs = a.symbol;
+    st.rhs = *a.closed_form;
+    st.boxed = true;
+    st.note = value_text(a.value);
+    out.push_back(st);
+  }
+  return out;
 }
 
 // ---- text ---------------------------------------------------------------------------------
@@ -195,17 +212,7 @@ std::string latex_body(const Derivation& d, bool full, const std::string& title)
       out += "\\begin{center}\n" + d.motion_pgfplots + "\\end{center}\n";
     }
   } else {
-    std::vector<Step> results;
-    for (const auto& a : d.answers) {
-      if (!a.closed_form) continue;
-      Step st;
-      st.kind = Step::Kind::equation;
-      st.lhs = a.symbol;
-      st.rhs = *a.closed_form;
-      st.boxed = true;
-      st.note = value_text(a.value);
-      results.push_back(st);
-    }
+    const std::vector<Step> results = result_steps(d);
     std::vector<const Step*> run;
     for (const auto& st : results) run.push_back(&st);
     if (!run.empty()) out += latex_equations(run);
@@ -463,16 +470,59 @@ std::string markdown_document(const Derivation& d, bool full) {
       }
     }
   } else {
-    for (const auto& a : d.answers)
-      if (a.closed_form) {
-        Step st;
-        st.kind = Step::Kind::equation;
-        st.lhs = a.symbol;
-        st.rhs = *a.closed_form;
-        st.note = value_text(a.value);
-        out += eq(st);
-      }
+    for (Step st : result_steps(d)) {
+      st.boxed = false;  // Markdown's answers stay plain
+      out += eq(st);
+    }
   }
+  return out;
+}
+
+// ---- HTML ---------------------------------------------------------------------------------
+
+// One equation: typeset by KaTeX, its label as a tag, its number as a note.
+std::string html_equation(const Step& st) {
+  std::string body = st.equals_constant ? to_latex(st.lhs) + " = \\text{const}"
+                                        : to_latex(st.lhs) + " " + tex_relation(st.relation) + " " + to_latex(st.rhs);
+  if (st.boxed) body = "\\boxed{" + body + "}";
+  if (!st.note.empty()) {
+    const auto sp = st.note.find(' ');
+    body += " \\quad \\left(= " + (sp == std::string::npos ? st.note : st.note.substr(0, sp) + "\\," + unit_latex(st.note.substr(sp + 1))) +
+            "\\right)";
+  }
+  std::string out = "<div class=\"eq\">" + html_math(body, true);
+  if (!st.text.empty()) out += "<span class=\"tag\">(" + html_escape(st.text) + ")</span>";
+  return out + "</div>\n";
+}
+
+// The body of one derivation (its title a heading of `level`), without the page around it.
+std::string html_body(const Derivation& d, bool full, const std::string& title, int level) {
+  const std::string h = std::to_string(level), h2 = std::to_string(level + 1);
+  std::string out = "<h" + h + ">" + html_escape(title) + "</h" + h + ">\n";
+  if (!full) {
+    for (const auto& st : result_steps(d)) out += html_equation(st);
+    return out;
+  }
+  bool in_list = false;
+  for (const auto& st : d.steps) {
+    const bool listed = st.kind == Step::Kind::bullet || st.kind == Step::Kind::given;
+    if (in_list && !listed) out += "</ul>\n";
+    if (!in_list && listed) out += "<ul>\n";
+    in_list = listed;
+    switch (st.kind) {
+      case Step::Kind::section: out += "<h" + h2 + ">" + html_escape(st.text) + "</h" + h2 + ">\n"; break;
+      case Step::Kind::text: out += "<p>" + prose(st, Format::html) + "</p>\n"; break;
+      case Step::Kind::bullet: out += "<li>" + prose(st, Format::html) + "</li>\n"; break;
+      case Step::Kind::given:
+        out += "<li>" + html_math(to_latex(st.lhs) + " = " + st.number + (st.note.empty() ? "" : "\\," + unit_latex(st.note))) + "</li>\n";
+        break;
+      case Step::Kind::equation: out += html_equation(st); break;
+      case Step::Kind::figure:
+        out += "<figure>\n" + to_svg(*st.figure) + "<figcaption>" + html_escape(st.text) + "</figcaption>\n</figure>\n";
+        break;
+    }
+  }
+  if (in_list) out += "</ul>\n";
   return out;
 }
 
@@ -508,6 +558,11 @@ std::string write(const std::vector<Derivation>& ds, Format f, bool full) {
       }
       return out + "\\end{document}\n";
     }
+    case Format::html: {
+      std::string body = "<h1>" + html_escape(ds[0].title) + "</h1>\n";
+      for (const auto& d : ds) body += html_body(d, full, "Phase " + std::to_string(d.phase_number) + ": " + d.phase, 2);
+      return html_page(ds[0].title, body);
+    }
     case Format::json: {
       nlohmann::ordered_json j;
       j["version"] = 2;
@@ -529,6 +584,7 @@ std::string write(const Derivation& d, Format f, bool full) {
     case Format::latex: return latex_document(d, full);
     case Format::json: return json_document(d, full);
     case Format::markdown: return markdown_document(d, full);
+    case Format::html: return html_page(heading(d), html_body(d, full, heading(d), 1));
   }
   return {};
 }

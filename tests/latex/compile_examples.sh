@@ -26,7 +26,7 @@ done
 (cd "$work" && pdflatex -interaction=nonstopmode -halt-on-error key.tex >key.out 2>&1) \
   || { echo "pdflatex failed for the answer key"; tail -30 "$work/key.out"; exit 1; }
 # The problem sheets of every example, with the same variants.
-"$tackle" sheet "$examples"/*.yaml --format latex --variants 2 --seed 1 -o "$work/sheet.tex"
+"$tackle" sheet "$examples"/*.yaml --format latex --variants 2 --seed 1 --figures -o "$work/sheet.tex"
 (cd "$work" && pdflatex -interaction=nonstopmode -halt-on-error sheet.tex >sheet.out 2>&1) \
   || { echo "pdflatex failed for the problem sheets"; tail -30 "$work/sheet.out"; exit 1; }
 echo "compiled $count examples, their answer key and their sheets"

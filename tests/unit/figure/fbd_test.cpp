@@ -180,3 +180,26 @@ TEST_CASE("FBD: a wrong 'draw' is located", "[figure][errors]") {
   CHECK(errors("{shape: circle}") ==
         std::vector<std::string>{"t.yaml:24:63: 'draw' of body 'suitcase' has no 'size' (expected [diameter])"});
 }
+
+TEST_CASE("FBD: a problem in symbols only is drawn, a couple as an arc with its moment", "[figure]") {
+  const auto a = test::run_text(R"(title: couple
+axes: [x, y]
+parameters: {M: {dimension: moment}, L: {unit: m}}
+points: {A: [0, 0], B: [L, 0], C: [L, L]}
+bodies: {beam: {mass: 0}}
+connections:
+  - {type: pin, body: beam, at: A}
+  - {type: cable, body: beam, from: B, to: C}
+  - {type: couple, on: beam, moment: M}
+)");
+  const auto figs = figures_of(*a);
+  REQUIRE(figs.size() == 1);
+  REQUIRE(figs[0].couples.size() == 1);
+  CHECK(figs[0].couples[0].label.tex == "M");
+  CHECK(figs[0].couples[0].counterclockwise);
+  // The cable pulls B up, towards C.
+  const FigureArrow* t = arrow(figs[0], "T_{BC}");
+  REQUIRE(t);
+  CHECK(near(t->from, dot_named(figs[0], "B")));
+  CHECK(t->to.y > t->from.y);
+}

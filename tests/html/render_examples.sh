@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Every example's HTML report (derive), one answers page (solve) and the problem sheets with
+# their figures, opened in headless Chromium: every formula typeset by KaTeX, no KaTeX error,
+# and nothing fetched from the network (the pages are self-contained).
+set -euo pipefail
+tackle=$1
+examples=$2
+browser=$(command -v chromium || command -v chromium-browser || true)
+[ -n "$browser" ] || { echo "chromium is not installed (scripts/setup installs it)"; exit 1; }
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+pages=()
+for f in "$examples"/*.yaml; do
+  name=$(basename "$f" .yaml)
+  "$tackle" derive "$f" --format html -o "$work/$name.html"
+  pages+=("$work/$name.html")
+done
+"$tackle" solve "$examples/sample-12.8-sign-board.yaml" --format html -o "$work/solve.html"
+"$tackle" sheet "$examples"/*.yaml --format html --variants 2 --seed 1 --figures -o "$work/sheet.html"
+pages+=("$work/solve.html" "$work/sheet.html")
+occurrences() { { grep -o "$1" "$2" || true; } | wc -l; }
+count=0
+for page in "${pages[@]}"; do
+  # Self-contained: no script, style, image or font from anywhere else.
+  if grep -Eq '(src|href)="(https?:)?//|url\((https?:)?//' "$page"; then
+    echo "$page refers to the network:"; grep -Eo '(src|href)="(https?:)?//[^"]*|url\((https?:)?//[^)]*' "$page" | head; exit 1
+  fi
+  expected=$(occurrences 'class="math' "$page")
+  timeout 60 "$browser" --headless --no-sandbox --disable-gpu --no-first-run --virtual-time-budget=10000 \
+    --dump-dom "file://$page" > "$work/dom.html" 2> "$work/browser.err" || { echo "chromium failed on $page"; tail "$work/browser.err"; exit 1; }
+  grep -q 'data-math-rendered="true"' "$work/dom.html" || { echo "$page: the typesetting script did not run"; exit 1; }
+  errors=$(occurrences 'class="katex-error"' "$work/dom.html")
+  if [ "$errors" -ne 0 ]; then
+    echo "$page: $errors KaTeX errors:"; grep -o '<span class="katex-error"[^>]*>' "$work/dom.html" | head -5; exit 1
+  fi
+  typeset=$(occurrences 'class="katex"' "$work/dom.html")
+  if [ "$typeset" -ne "$expected" ]; then
+    echo "$page: $typeset of $expected formulas typeset"; exit 1
+  fi
+  count=$((count + 1))
+done
+echo "rendered $count pages in $browser with every formula typeset"
+[ "$count" -gt 2 ]
