@@ -109,7 +109,23 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
 
   section("Model");
   for (const auto& a : m.assumptions) bullet("Assumed: " + a + ".");
-  for (const auto& c : m.connections) bullet(c + ".");
+  // Connections of one kind said once: "sliding at A and sliding at B: a Coulomb sliding ...".
+  {
+    std::vector<std::pair<std::vector<std::string>, std::string>> kinds;  // labels, summary
+    for (const auto& c : m.connections) {
+      const auto colon = c.find(": ");
+      const std::string label = c.substr(0, colon), summary = colon == std::string::npos ? "" : c.substr(colon + 2);
+      auto it = std::find_if(kinds.begin(), kinds.end(), [&](const auto& k) { return !summary.empty() && k.second == summary; });
+      if (it == kinds.end()) kinds.push_back({{label}, summary});
+      else it->first.push_back(label);
+    }
+    for (const auto& [labels, summary] : kinds) {
+      std::string who;
+      for (std::size_t i = 0; i < labels.size(); ++i)
+        who += (i == 0 ? "" : i + 1 == labels.size() ? " and " : ", ") + labels[i];
+      bullet(who + (summary.empty() ? "" : ": " + summary) + ".");
+    }
+  }
   std::vector<std::string> symbolic;
   for (const auto& sym : table.all()) {
     // Parameters, and quantities given with their value at the instant (z = 3 m).
@@ -476,7 +492,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
                                         r.simplified.is_equal(r.solved[0].parameter))) {
         text(r.solved.size() == 1 ? "It holds exactly when:" : "It holds exactly when (each form is equivalent):");
         for (const auto& sv : r.solved) {
-          Step* solved = equation("solved for " + to_text(sv.parameter), sv.parameter, sv.bound);
+          Step* solved = equation("solved for {}", sv.parameter, sv.bound);
+          solved->math = {sv.parameter};
           solved->relation = sv.op;
         }
       }

@@ -202,7 +202,8 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
     }
     text(std::string("So the model holds for all t exactly when this holds") + (c.solved.empty() ? "." : ", that is:"));
     for (const auto& sv : c.solved) {
-      Step* s = equation("for all t, solved for " + to_text(sv.parameter), sv.parameter, sv.bound);
+      Step* s = equation("for all {}, solved for {}", sv.parameter, sv.bound);
+      s->math = {t, sv.parameter};
       s->relation = sv.op;
     }
     if (c.holds_for_all_t) {

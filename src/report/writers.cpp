@@ -126,7 +126,7 @@ std::string derivation_text(const Derivation& d) {
         std::string eq = st.equals_constant ? to_text(st.lhs) + " = const"
                                             : to_text(st.lhs) + " " + st.relation + " " + to_text(st.rhs);
         if (!st.note.empty()) eq += "  = " + st.note;
-        out += "    " + eq + (st.text.empty() ? "" : "    [" + st.text + "]") + "\n";
+        out += "    " + eq + (st.text.empty() ? "" : "    [" + prose(st, Format::text) + "]") + "\n";
         break;
       }
     }
@@ -149,7 +149,7 @@ std::string latex_line(const Step& st) {
     if (sp == std::string::npos) return st.note;
     return st.note.substr(0, sp) + "\\," + unit_latex(st.note.substr(sp + 1));
   }() + "\\right)";
-  return body + (st.text.empty() ? "" : " \\tag*{" + tex_escape(st.text) + "}");
+  return body + (st.text.empty() ? "" : " \\tag*{" + prose(st, Format::latex) + "}");
 }
 
 // Equations one after another, in one align* block.
@@ -161,7 +161,7 @@ std::string latex_equations(const std::vector<const Step*>& steps) {
 
 std::string latex_preamble(bool plots) {
   return "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{lmodern}\n\\usepackage{amsmath}\n"
-         "\\usepackage[margin=2.5cm]{geometry}\n\\usepackage{tikz}\n" +
+         "\\usepackage[margin=2.5cm]{geometry}\n\\usepackage{tikz}\n\\usepackage{siunitx}\n" +
          std::string(plots ? "\\usepackage{pgfplots}\n\\pgfplotsset{compat=1.16}\n" : "") + "\\begin{document}\n";
 }
 
@@ -170,14 +170,25 @@ std::string latex_body(const Derivation& d, bool full, const std::string& title)
   std::string out = "\\section*{" + tex_escape(title) + "}\n";
   if (full) {
     bool in_list = false;
-    std::vector<const Step*> run;  // equations waiting for their align* block
+    std::vector<const Step*> run;    // equations waiting for their align* block
+    std::vector<const Step*> given;  // parameters waiting for their table
     auto flush = [&] {
       if (!run.empty()) out += latex_equations(run);
       run.clear();
     };
+    auto flush_given = [&] {
+      if (given.empty()) return;
+      out += "\\begin{center}\n\\begin{tabular}{lrl}\n\\hline\n"
+             "Parameter & Value & Unit \\\\\n\\hline\n";
+      for (const Step* g : given)
+        out += "$" + to_latex(g->lhs) + "$ & \\num{" + g->number + "} & " + (g->note.empty() ? "" : "$" + unit_latex(g->note) + "$") + " \\\\\n";
+      out += "\\hline\n\\end{tabular}\n\\end{center}\n";
+      given.clear();
+    };
     for (const auto& st : d.steps) {
-      const bool listed = st.kind == Step::Kind::bullet || st.kind == Step::Kind::given;
+      const bool listed = st.kind == Step::Kind::bullet;
       if (st.kind != Step::Kind::equation) flush();
+      if (st.kind != Step::Kind::given) flush_given();
       if (!listed && in_list) {
         out += "\\end{itemize}\n";
         in_list = false;
@@ -190,12 +201,7 @@ std::string latex_body(const Derivation& d, bool full, const std::string& title)
           in_list = true;
           out += "  \\item " + prose(st, Format::latex) + "\n";
           break;
-        case Step::Kind::given:
-          if (!in_list) out += "\\begin{itemize}\n";
-          in_list = true;
-          out += "  \\item $" + to_latex(st.lhs) + " = " + st.number +
-                 (st.note.empty() ? "" : "\\," + unit_latex(st.note)) + "$\n";
-          break;
+        case Step::Kind::given: given.push_back(&st); break;
         case Step::Kind::equation: run.push_back(&st); break;
         case Step::Kind::figure:
           out += "\\begin{center}\n" + to_tikz(*st.figure) + "\\\\[2pt]{\\small " + tex_escape(st.text) + "}\n\\end{center}\n";
@@ -203,6 +209,7 @@ std::string latex_body(const Derivation& d, bool full, const std::string& title)
       }
     }
     flush();
+    flush_given();
     if (in_list) out += "\\end{itemize}\n";
     if (!d.figure_pgfplots.empty())
       out += "\\subsection*{Sweep}\n\\begin{center}\n" + d.figure_pgfplots + "\\end{center}\n";
@@ -448,22 +455,24 @@ std::string markdown_document(const Derivation& d, bool full) {
     std::string body = st.equals_constant ? to_latex(st.lhs) + " = \\text{const}"
                                           : to_latex(st.lhs) + " " + tex_relation(st.relation) + " " + to_latex(st.rhs);
     if (st.boxed) body = "\\boxed{" + body + "}";
-    std::string line = "$$" + body + "$$" + (st.text.empty() ? "" : " *(" + st.text + ")*");
+    std::string line = "$$" + body + "$$" + (st.text.empty() ? "" : " *(" + prose(st, Format::markdown) + ")*");
     if (!st.note.empty()) line += " = " + st.note;
     return line + "\n\n";
   };
   if (full) {
-    bool in_list = false;
+    bool in_list = false, in_table = false;
     for (const auto& st : d.steps) {
-      const bool listed = st.kind == Step::Kind::bullet || st.kind == Step::Kind::given;
-      if (in_list && !listed) out += "\n";
+      const bool listed = st.kind == Step::Kind::bullet, table = st.kind == Step::Kind::given;
+      if ((in_list && !listed) || (in_table && !table)) out += "\n";
+      if (table && !in_table) out += (in_list ? "\n" : "") + std::string("| Parameter | Value | Unit |\n|---|--:|---|\n");
       in_list = listed;
+      in_table = table;
       switch (st.kind) {
         case Step::Kind::section: out += "## " + st.text + "\n\n"; break;
         case Step::Kind::text: out += prose(st, Format::markdown) + "\n\n"; break;
         case Step::Kind::bullet: out += "- " + prose(st, Format::markdown) + "\n"; break;
         case Step::Kind::given:
-          out += "- $" + to_latex(st.lhs) + " = " + st.number + (st.note.empty() ? "" : "\\," + unit_latex(st.note)) + "$\n";
+          out += "| $" + to_latex(st.lhs) + "$ | " + st.number + " | " + (st.note.empty() ? "" : "$" + unit_latex(st.note) + "$") + " |\n";
           break;
         case Step::Kind::equation: out += eq(st); break;
         case Step::Kind::figure: out += "<figure>\n" + to_svg(*st.figure) + "<figcaption>" + st.text + "</figcaption>\n</figure>\n\n"; break;
@@ -491,7 +500,7 @@ std::string html_equation(const Step& st) {
             "\\right)";
   }
   std::string out = "<div class=\"eq\">" + html_math(body, true);
-  if (!st.text.empty()) out += "<span class=\"tag\">(" + html_escape(st.text) + ")</span>";
+  if (!st.text.empty()) out += "<span class=\"tag\">(" + prose(st, Format::html) + ")</span>";
   return out + "</div>\n";
 }
 
@@ -503,18 +512,22 @@ std::string html_body(const Derivation& d, bool full, const std::string& title, 
     for (const auto& st : result_steps(d)) out += html_equation(st);
     return out;
   }
-  bool in_list = false;
+  bool in_list = false, in_table = false;
   for (const auto& st : d.steps) {
-    const bool listed = st.kind == Step::Kind::bullet || st.kind == Step::Kind::given;
+    const bool listed = st.kind == Step::Kind::bullet, table = st.kind == Step::Kind::given;
     if (in_list && !listed) out += "</ul>\n";
     if (!in_list && listed) out += "<ul>\n";
+    if (in_table && !table) out += "</table>\n";
+    if (!in_table && table) out += "<table class=\"parameters\">\n<tr><th>Parameter</th><th>Value</th><th>Unit</th></tr>\n";
     in_list = listed;
+    in_table = table;
     switch (st.kind) {
       case Step::Kind::section: out += "<h" + h2 + ">" + html_escape(st.text) + "</h" + h2 + ">\n"; break;
       case Step::Kind::text: out += "<p>" + prose(st, Format::html) + "</p>\n"; break;
       case Step::Kind::bullet: out += "<li>" + prose(st, Format::html) + "</li>\n"; break;
       case Step::Kind::given:
-        out += "<li>" + html_math(to_latex(st.lhs) + " = " + st.number + (st.note.empty() ? "" : "\\," + unit_latex(st.note))) + "</li>\n";
+        out += "<tr><td>" + html_math(to_latex(st.lhs)) + "</td><td class=\"number\">" + html_escape(st.number) + "</td><td>" +
+               (st.note.empty() ? "" : html_math(unit_latex(st.note))) + "</td></tr>\n";
         break;
       case Step::Kind::equation: out += html_equation(st); break;
       case Step::Kind::figure:
@@ -523,6 +536,7 @@ std::string html_body(const Derivation& d, bool full, const std::string& title, 
     }
   }
   if (in_list) out += "</ul>\n";
+  if (in_table) out += "</table>\n";
   return out;
 }
 

@@ -232,7 +232,18 @@ struct RuleReader {
                    "the rule", file, diags))
       return r;
     r.type = need_scalar(root, "type", "the rule");
-    if (auto s = root["summary"]) r.summary = scalar(s, "'summary'", file, diags).value_or(Text{}).text;
+    if (auto s = root["summary"]) {
+      if (s.IsMap()) {
+        // One text per number of axes.
+        if (check_map(s, {"1-D", "2-D", "3-D"}, "'summary'", file, diags))
+          for (int k = 1; k <= 3; ++k)
+            if (auto t = s[std::to_string(k) + "-D"]) r.summary_in[k - 1] = scalar(t, "'summary' for " + std::to_string(k) + "-D", file, diags).value_or(Text{}).text;
+        for (const auto& t : r.summary_in)
+          if (r.summary.empty() && !t.empty()) r.summary = t;
+      } else {
+        r.summary = scalar(s, "'summary'", file, diags).value_or(Text{}).text;
+      }
+    }
     if (auto s = root["assumes_direction"]) {
       const auto t = scalar(s, "'assumes_direction'", file, diags);
       if (t && (t->text == "true" || t->text == "false")) r.assumes_direction = t->text == "true";

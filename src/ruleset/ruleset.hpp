@@ -5,6 +5,7 @@
 // path, a length held constant, a body held still); no C++ code names a connection type.
 #pragma once
 
+#include <array>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -87,6 +88,12 @@ struct Assumption {
 struct Rule {
   std::string type;
   std::string summary;
+  // `summary: {1-D: ..., 2-D: ..., 3-D: ...}`: the text for a problem with that many axes
+  // (index 0..2); empty entries fall back to `summary`.
+  std::array<std::string, 3> summary_in;
+  [[nodiscard]] const std::string& summary_for(int dims) const {
+    return dims >= 1 && dims <= 3 && !summary_in[dims - 1].empty() ? summary_in[dims - 1] : summary;
+  }
   // The rule's loads assume the direction the body moves in (sliding friction opposite it):
   // past a turn the model no longer holds (a simulation ends there).
   bool assumes_direction = false;

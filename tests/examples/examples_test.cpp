@@ -337,7 +337,7 @@ TEST_CASE("Motion: driven inside the band, the cord goes slack in the steady sta
   const Simulation run = simulate(*a, spec, Location{});
   CHECK_FALSE(run.complete);
   REQUIRE(run.events.size() == 1);
-  CHECK(run.events[0].what == "elastic_cord c: the cord goes slack");
+  CHECK(run.events[0].what == "elastic cord c: the cord goes slack");
   CHECK(run.events[0].t == Approx(0.194697).epsilon(1e-5));
 }
 

@@ -213,6 +213,7 @@ std::string label_of(const Instance& in) {
   // "string s", or after the first point argument ("pulley at C", "rod from H"), else the
   // first body argument ("force on A").
   std::string label = rule->type;
+  std::replace(label.begin(), label.end(), '_', ' ');  // "ball and socket at O", as a person writes it
   if (c.name) {
     label += " " + c.name->text;
   } else {
@@ -413,7 +414,7 @@ void add_conditions(BuildContext& ctx, Instance& in) {
     if (!a.when.empty() && !c.arg(a.when)) continue;
     if (std::find(ctx.m.assumptions.begin(), ctx.m.assumptions.end(), a.text) == ctx.m.assumptions.end()) ctx.m.assumptions.push_back(a.text);
   }
-  ctx.m.connections.push_back(label + ": " + rule->summary);
+  ctx.m.connections.push_back(label + ": " + rule->summary_for(ctx.m.dims()));
   if (rule->assumes_direction) ctx.m.direction_assumed_by.push_back(label);
   for (const auto& chk : rule->checks) {
     if (!chk.when.empty() && !c.arg(chk.when)) continue;

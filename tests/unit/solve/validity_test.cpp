@@ -49,7 +49,7 @@ TEST_CASE("Validity: braking on the front wheels lifts the rear when d < mu h", 
       test::example_with("car-braking-front.yaml", "h: {value: 0.5, unit: m}", "h: {value: 2.5, unit: m}"));
   const Derivation d = explain(*a);
   const auto rear = std::find_if(d.conditions.begin(), d.conditions.end(),
-                                 [](const ConditionReport& c) { return c.source == "free_wheel at R"; });
+                                 [](const ConditionReport& c) { return c.source == "free wheel at R"; });
   REQUIRE(rear != d.conditions.end());
   REQUIRE(rear->holds);
   CHECK_FALSE(*rear->holds);
