@@ -129,10 +129,10 @@ Parts analyze_parts(const Options& o, const tackle::RuleSet& rules) {
     p.derivations.push_back(tackle::explain_phases(*a, tackle::ReportOptions{o.digits}));
     auto& ds = p.derivations.back();
     std::vector<const tackle::Analysis*> phases;
-    std::vector<std::pair<const tackle::Analysis*, const tackle::Derivation*>> parts;
+    std::vector<std::pair<const tackle::Model*, const tackle::Derivation*>> parts;
     for (std::size_t k = 0; k < ds.size(); ++k) {
       phases.push_back(a->phases.empty() ? a.get() : a->phases[k].analysis.get());
-      parts.emplace_back(phases.back(), &ds[k]);
+      parts.emplace_back(&phases.back()->model, &ds[k]);
     }
     p.variants.push_back(tackle::draw_variants(parts, o.variants, o.seed, o.digits));
     for (const auto& v : p.variants.back()) any = any || !v.empty();
@@ -216,7 +216,7 @@ int run_sweep(const Options& o, const tackle::RuleSet& rules) {
     return 2;
   }
   const tackle::Derivation d = tackle::explain(*analysis);
-  const auto result = tackle::run_sweep(*analysis, d, spec, tackle::Location{"--vary/--plot", 0, 0});
+  const auto result = tackle::run_sweep(analysis->model, d, spec, tackle::Location{"--vary/--plot", 0, 0});
   for (const auto& [path, text] : {std::pair{o.svg_out, tackle::sweep_svg(result)}, std::pair{o.pgf_out, tackle::sweep_pgfplots(result)}})
     if (!path.empty() && emit(text, path) != 0) return 1;
   return emit(tackle::sweep_csv(result), o.csv_out);
@@ -350,7 +350,7 @@ int main(int argc, char** argv) {
   auto* key = app.add_subcommand("key", "An answer key for one or more problems, with numeric variants if asked");
   key->add_option("files", o.key_files, "Problem descriptions (YAML)")->required();
   key->add_option("--format", o.key_format, "Output format")
-      ->check(CLI::IsMember({"latex", "markdown", "json"}))
+      ->check(CLI::IsMember({"latex", "markdown", "json", "html"}))
       ->capture_default_str();
   key->add_option("--variants", o.variants, "Numeric variants per problem, drawn from the parameters' 'range'")
       ->check(CLI::Range(0, 10000));

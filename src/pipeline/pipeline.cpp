@@ -214,7 +214,7 @@ Derivation explain(const Analysis& a, const ReportOptions& options) {
       if (!run.stopped.empty() && run.events.empty()) d.motion_events.push_back("Stopped: " + run.stopped + ".");
     }
   }
-  if (a.model.sweep) d.figure_pgfplots = sweep_pgfplots(run_sweep(a, d, sweep_spec(*a.model.sweep), a.model.sweep->at));
+  if (a.model.sweep) d.figure_pgfplots = sweep_pgfplots(run_sweep(a.model, d, sweep_spec(*a.model.sweep), a.model.sweep->at));
   return d;
 }
 

@@ -78,7 +78,7 @@ class Problem {
   // A variant: the parameters with a `range` drawn (the same seed, the same variant), and the
   // answers there; None when no parameter has a range.
   [[nodiscard]] py::object variant(unsigned long long seed, int digits) const {
-    const auto drawn = tackle::draw_variants(*analysis_, derivation_, 1, seed, digits);
+    const auto drawn = tackle::draw_variants(analysis_->model, derivation_, 1, seed, digits);
     if (drawn.empty()) return py::none();
     py::dict parameters, answers;
     for (const auto& q : drawn[0].parameters) parameters[py::str(q.name)] = py::dict(py::arg("value") = q.value, py::arg("unit") = q.unit, py::arg("text") = q.text());

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "pipeline/pipeline.hpp"
+#include "model/model.hpp"
 #include "report/derivation.hpp"
 
 namespace tackle {
@@ -30,12 +30,12 @@ struct Variant {
 /// on every platform (std::mt19937_64, no library distribution). A draw that breaks a
 /// validity condition, or leaves an answer undefined, is drawn again; InputError when 1000
 /// draws cannot give a valid variant. None when no parameter has a range.
-[[nodiscard]] std::vector<Variant> draw_variants(const Analysis& a, const Derivation& d, int count,
+[[nodiscard]] std::vector<Variant> draw_variants(const Model& m, const Derivation& d, int count,
                                                  unsigned long long seed, int digits);
 /// The same for parts that share parameters (the phases of a phased description): one draw
 /// for all, valid only when it is valid in every part; one list of variants per part.
 [[nodiscard]] std::vector<std::vector<Variant>> draw_variants(
-    const std::vector<std::pair<const Analysis*, const Derivation*>>& parts, int count, unsigned long long seed, int digits);
+    const std::vector<std::pair<const Model*, const Derivation*>>& parts, int count, unsigned long long seed, int digits);
 
 struct KeyEntry {
   const Derivation* derivation = nullptr;

@@ -50,8 +50,8 @@ std::string num(double v) { return fmt::format("{:.6g}", v); }
 
 }  // namespace
 
-SweepResult run_sweep(const Analysis& a, const Derivation& d, const SweepSpec& spec, const Location& where) {
-  const SymbolTable& table = *a.model.symbols;
+SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec, const Location& where) {
+  const SymbolTable& table = *m.symbols;
   Diagnostics diags;
   auto number = [&](const std::string& text, const std::string& what) -> std::optional<numeric> {
     auto r = parse_expression(text, numbers_only());

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/pipeline.hpp"
+#include "model/model.hpp"
 #include "report/derivation.hpp"
 
 namespace tackle {
@@ -31,7 +31,7 @@ struct SweepResult {
 
 /// Evaluates the sweep; problems with the spec are located InputErrors (`where` names the
 /// command-line option or the description key).
-[[nodiscard]] SweepResult run_sweep(const Analysis& a, const Derivation& d, const SweepSpec& spec, const Location& where);
+[[nodiscard]] SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec, const Location& where);
 
 [[nodiscard]] std::string sweep_csv(const SweepResult& r);
 [[nodiscard]] std::string sweep_svg(const SweepResult& r);

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Every example's HTML report (derive), one answers page (solve) and the problem sheets with
-# their figures, opened in headless Chromium: every formula typeset by KaTeX, no KaTeX error,
+# Every example's HTML report (derive), one answers page (solve), the problem sheets with
+# their figures and the answer key with its variants, opened in headless Chromium: every formula typeset by KaTeX, no KaTeX error,
 # and nothing fetched from the network (the pages are self-contained).
 set -euo pipefail
 tackle=$1
@@ -17,7 +17,8 @@ for f in "$examples"/*.yaml; do
 done
 "$tackle" solve "$examples/sample-12.8-sign-board.yaml" --format html -o "$work/solve.html"
 "$tackle" sheet "$examples"/*.yaml --format html --variants 2 --seed 1 --figures -o "$work/sheet.html"
-pages+=("$work/solve.html" "$work/sheet.html")
+"$tackle" key "$examples"/*.yaml --format html --variants 2 --seed 1 -o "$work/key.html"
+pages+=("$work/solve.html" "$work/sheet.html" "$work/key.html")
 occurrences() { { grep -o "$1" "$2" || true; } | wc -l; }
 count=0
 for page in "${pages[@]}"; do

@@ -9,7 +9,7 @@ namespace {
 SweepResult figure_12_28(const SweepSpec& spec) {
   static const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/figure-12.28-suitcase-normal-forces.yaml", test::rules());
   static const Derivation d = explain(*a);
-  return run_sweep(*a, d, spec, Location{"test", 0, 0});
+  return run_sweep(a->model, d, spec, Location{"test", 0, 0});
 }
 }  // namespace
 
@@ -63,7 +63,7 @@ TEST_CASE("Sweep: a point where a curve is undefined is a gap, not a crash (foun
   // (exit 3: GiNaC threw while substituting). Now that point has no value and is not valid.
   const auto a = analyze_file(TACKLE_SOURCE_DIR "/tests/fuzz/regressions/description/sweep-through-a-pole", test::rules());
   const Derivation d = explain(*a);
-  const auto r = run_sweep(*a, d, {"h=0:2:41", {}, {"N_A", "N_B"}}, Location{"test", 0, 0});
+  const auto r = run_sweep(a->model, d, {"h=0:2:41", {}, {"N_A", "N_B"}}, Location{"test", 0, 0});
   REQUIRE(r.x.size() == 41);
   int gaps = 0;
   for (std::size_t i = 0; i < r.x.size(); ++i)

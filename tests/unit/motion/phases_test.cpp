@@ -138,8 +138,8 @@ TEST_CASE("Phases: variants draw the shared parameters once for every phase", "[
   const auto a = test::run_text(test::example_with("sample-12.5-pile-driver.yaml", "h: {value: 2, unit: m}",
                                                    "h: {value: 2, unit: m, range: [1, 3]}"));
   const auto ds = explain_phases(*a);
-  std::vector<std::pair<const Analysis*, const Derivation*>> parts;
-  for (std::size_t i = 0; i < ds.size(); ++i) parts.emplace_back(a->phases[i].analysis.get(), &ds[i]);
+  std::vector<std::pair<const Model*, const Derivation*>> parts;
+  for (std::size_t i = 0; i < ds.size(); ++i) parts.emplace_back(&a->phases[i].analysis->model, &ds[i]);
   const auto variants = draw_variants(parts, 4, 7, 6);
   REQUIRE(variants.size() == 3);
   for (std::size_t k = 0; k < 4; ++k) {

@@ -1,0 +1,35 @@
+// One interface for every output format. A format is one class in one file
+// (src/report/writers/<format>.cpp) that writes each kind of document it has: a derivation
+// (derive, solve), the phases of a phased description, an answer key, problem sheets, the
+// isolations. The documents themselves are narrated elsewhere (Derivation, KeyEntry,
+// SheetEntry, Isolation): writers only format them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "isolate/isolate.hpp"
+#include "report/derivation.hpp"
+#include "report/key.hpp"
+#include "report/sheet.hpp"
+
+namespace tackle {
+
+class Writer {
+ public:
+  virtual ~Writer() = default;
+  [[nodiscard]] virtual const char* name() const = 0;
+  /// `full`: the whole derivation; otherwise the answers only (`tackle solve`).
+  [[nodiscard]] virtual std::string derivation(const Derivation& d, bool full) const = 0;
+  /// A phased description's phases, one after the other, as one document.
+  [[nodiscard]] virtual std::string phases(const std::vector<Derivation>& ds, bool full) const = 0;
+  // Documents a format may not have (the command line offers only those it has; asking a
+  // format for another is a bug, reported as an internal error).
+  [[nodiscard]] virtual std::string key(const std::vector<KeyEntry>& entries) const;
+  [[nodiscard]] virtual std::string sheet(const std::vector<SheetEntry>& entries, bool figures) const;
+  [[nodiscard]] virtual std::string isolations(const Model& m, const std::vector<Isolation>& found) const;
+};
+
+[[nodiscard]] const Writer& writer_for(Format f);
+
+}  // namespace tackle

@@ -1,0 +1,205 @@
+#include "report/writers/common.hpp"
+
+#include <stdexcept>
+
+#include "core/placeholders.hpp"
+#include "expr/print.hpp"
+#include "report/html.hpp"
+#include "report/tex.hpp"
+#include "report/writer.hpp"
+
+namespace tackle::writers {
+
+std::string status_name(Answer::Status s) {
+  switch (s) {
+    case Answer::Status::determined: return "determined";
+    case Answer::Status::free: return "free";
+    case Answer::Status::in_combination: return "in_combination";
+    case Answer::Status::not_in_equations: return "not_in_equations";
+    case Answer::Status::undetermined: return "undetermined";
+  }
+  return "";
+}
+
+std::string kind_name(Equation::Kind k) {
+  switch (k) {
+    case Equation::Kind::lmb: return "lmb";
+    case Equation::Kind::amb: return "amb";
+    case Equation::Kind::constraint_acceleration: return "constraint";
+    case Equation::Kind::constraint_rate: return "constraint_rate";
+    case Equation::Kind::constraint_position: return "constraint_position";
+    case Equation::Kind::interval: return "interval";
+    case Equation::Kind::impact: return "impact";
+  }
+  return "";
+}
+
+std::string tex_relation(const std::string& op) {
+  if (op == ">=") return "\\geq";
+  if (op == "<=") return "\\leq";
+  if (op == "!=") return "\\neq";
+  return op;
+}
+
+std::string value_text(const std::optional<NumericValue>& v) {
+  if (!v) return "";
+  return v->decimal + (v->unit.empty() ? "" : " " + v->unit);
+}
+
+std::string prose(const Step& st, Format f) {
+  std::string out;
+  std::size_t from = 0, k = 0;
+  auto plain = [&](const std::string& s) { return f == Format::latex ? tex_escape(s) : f == Format::html ? html_escape(s) : s; };
+  for (std::size_t at; (at = st.text.find("{}", from)) != std::string::npos && k < st.math.size(); from = at + 2, ++k) {
+    out += plain(st.text.substr(from, at - from));
+    out += f == Format::text ? to_text(st.math[k]) : f == Format::html ? html_math(to_latex(st.math[k])) : "$" + to_latex(st.math[k]) + "$";
+  }
+  return out + plain(st.text.substr(from));
+}
+
+std::string heading(const Derivation& d) {
+  return d.phase.empty() ? d.title : d.title + ": phase " + std::to_string(d.phase_number) + ", " + d.phase;
+}
+
+std::vector<Step> result_steps(const Derivation& d) {
+  std::vector<Step> out;
+  for (const auto& a : d.answers) {
+    if (!a.closed_form) continue;
+    Step st;
+    st.kind = Step::Kind::equation;
+    st.lhs = a.symbol;
+    st.rhs = *a.closed_form;
+    st.boxed = true;
+    st.note = value_text(a.value);
+    out.push_back(st);
+  }
+  return out;
+}
+
+std::vector<SheetProblem> sheet_problems(const std::vector<SheetEntry>& entries) {
+  std::vector<SheetProblem> out;
+  int number = 0;
+  for (const auto& e : entries) {
+    const Derivation& d = *e.derivation;
+    // The description's own values, then a variant's drawn ones over them.
+    std::map<std::string, Quantity> base;
+    for (const auto& p : d.parameters) {
+      const auto& v = p.stated ? p.stated : p.si;
+      if (v && p.kind == "parameter") base[p.name] = {p.name, v->decimal, v->unit, v->approx};
+    }
+    const std::size_t n = e.variants.empty() ? 1 : e.variants.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      SheetProblem p;
+      p.number = ++number;
+      p.title = d.title + (e.variants.empty() ? "" : " (variant " + std::to_string(e.variants[k].index) + ")");
+      p.derivation = &d;
+      p.model = e.model;
+      p.values = base;
+      if (!e.variants.empty())
+        for (const auto& q : e.variants[k].parameters) p.values[q.name] = q;
+      p.last_of_entry = k + 1 == n;
+      out.push_back(std::move(p));
+    }
+  }
+  return out;
+}
+
+std::string statement_of(const SheetProblem& p, bool math) {
+  if (!p.model || !p.model->statement) return "";
+  const std::string& statement = p.model->statement->text;
+  std::string out;
+  std::size_t from = 0;
+  for (const auto& ph : placeholders(statement)) {
+    out += statement.substr(from, ph.open - from);
+    const auto it = p.values.find(std::string(ph.name));
+    if (it == p.values.end()) {
+      out += statement.substr(ph.open, ph.close - ph.open + 1);
+    } else if (math) {
+      out += "$" + it->second.number + (it->second.unit.empty() ? "" : "\\," + unit_latex(it->second.unit)) + "$";
+    } else {
+      out += it->second.text();
+    }
+    from = ph.close + 1;
+  }
+  return out + statement.substr(from);
+}
+
+std::vector<const Step*> figures_of(const Derivation& d) {
+  std::vector<const Step*> out;
+  for (const auto& st : d.steps)
+    if (st.kind == Step::Kind::figure) out.push_back(&st);
+  return out;
+}
+
+std::vector<std::string> variant_head(const KeyEntry& e) {
+  std::vector<std::string> head{"#"};
+  if (e.variants.empty()) return head;
+  for (const auto& q : e.variants.front().parameters) head.push_back(q.name);
+  for (const auto& q : e.variants.front().answers) head.push_back(q.name);
+  return head;
+}
+
+Ordered::Ordered(const Derivation* d) {
+  if (d && d->symbols) order_.emplace(factor_rank(d->symbols));
+}
+
+}  // namespace tackle::writers
+
+namespace tackle {
+
+std::string Writer::key(const std::vector<KeyEntry>&) const {
+  throw std::logic_error(std::string("the ") + name() + " format has no answer key");
+}
+std::string Writer::sheet(const std::vector<SheetEntry>&, bool) const {
+  throw std::logic_error(std::string("the ") + name() + " format has no problem sheets");
+}
+std::string Writer::isolations(const Model&, const std::vector<Isolation>&) const {
+  throw std::logic_error(std::string("the ") + name() + " format has no isolation report");
+}
+
+std::string write(const Derivation& d, Format f, bool full) {
+  writers::Ordered order(&d);
+  return writer_for(f).derivation(d, full);
+}
+
+std::string write(const std::vector<Derivation>& ds, Format f, bool full) {
+  if (ds.size() == 1 && ds[0].phase.empty()) return write(ds[0], f, full);
+  writers::Ordered order(ds.empty() ? nullptr : &ds[0]);
+  return writer_for(f).phases(ds, full);
+}
+
+std::string write_key(const std::vector<KeyEntry>& entries, Format f) {
+  writers::Ordered order(entries.empty() ? nullptr : entries[0].derivation);
+  return writer_for(f).key(entries);
+}
+
+std::string write_sheet(const std::vector<SheetEntry>& entries, Format f, bool figures) {
+  writers::Ordered order(entries.empty() ? nullptr : entries[0].derivation);
+  return writer_for(f).sheet(entries, figures);
+}
+
+std::string write_isolations(const Model& m, const std::vector<Isolation>& found, Format f) {
+  return writer_for(f).isolations(m, found);
+}
+
+std::string tex_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '_': out += "\\_"; break;
+      case '&': out += "\\&"; break;
+      case '%': out += "\\%"; break;
+      case '#': out += "\\#"; break;
+      case '$': out += "\\$"; break;
+      case '{': out += "\\{"; break;
+      case '}': out += "\\}"; break;
+      case '^': out += "\\textasciicircum{}"; break;
+      case '~': out += "\\textasciitilde{}"; break;
+      case '\\': out += "\\textbackslash{}"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+}  // namespace tackle

@@ -1,0 +1,58 @@
+// What the format writers share: prose with typeset expressions, headings, names of
+// statuses and kinds, the answers as result steps, sheets' problems with their values.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "report/derivation.hpp"
+#include "report/key.hpp"
+#include "report/sheet.hpp"
+
+namespace tackle::writers {
+
+[[nodiscard]] std::string status_name(Answer::Status s);
+[[nodiscard]] std::string kind_name(Equation::Kind k);
+[[nodiscard]] std::string tex_relation(const std::string& op);
+/// A number with its unit ("20 N"), or "".
+[[nodiscard]] std::string value_text(const std::optional<NumericValue>& v);
+/// A step's text with its "{}" placeholders filled from its expressions, in format `f`
+/// (text: as text; LaTeX: escaped prose, $math$; Markdown: $math$; HTML: escaped, KaTeX spans).
+[[nodiscard]] std::string prose(const Step& st, Format f);
+/// The title of a derivation, with its phase when it is one of a phased description's.
+[[nodiscard]] std::string heading(const Derivation& d);
+/// The closed forms as boxed equations with their numbers (`solve`'s report).
+[[nodiscard]] std::vector<Step> result_steps(const Derivation& d);
+
+/// One problem of a sheet: its title (with the variant), what it asks, and its values.
+struct SheetProblem {
+  int number = 0;
+  std::string title;
+  const Derivation* derivation = nullptr;
+  const Model* model = nullptr;
+  std::map<std::string, Quantity> values;  // the description's, a variant's over them
+  bool last_of_entry = false;
+};
+[[nodiscard]] std::vector<SheetProblem> sheet_problems(const std::vector<SheetEntry>& entries);
+/// The statement with each {name} replaced by its value and unit: `$140\,\mathrm{N}$` for
+/// LaTeX and HTML (`math`), `140 N` for Markdown. Empty when the problem has no statement.
+[[nodiscard]] std::string statement_of(const SheetProblem& p, bool math);
+
+/// The drawn figures' steps of a derivation.
+[[nodiscard]] std::vector<const Step*> figures_of(const Derivation& d);
+
+/// The key's variant table: its header names ("#", the parameters, the answers).
+[[nodiscard]] std::vector<std::string> variant_head(const KeyEntry& e);
+
+/// Installs the person's order of factors for LaTeX while it lives (when the names are known).
+class Ordered {
+ public:
+  explicit Ordered(const Derivation* d);
+
+ private:
+  std::optional<PersonOrder> order_;
+};
+
+}  // namespace tackle::writers
