@@ -192,7 +192,9 @@ std::vector<Derivation> explain_phases(const Analysis& a, const ReportOptions& o
 
 Derivation explain(const Analysis& a, const ReportOptions& options) {
   if (!a.phases.empty()) throw InternalError("explain: a phased analysis is explained phase by phase (explain_phases)");
-  Derivation d = explain(a.model, a.system, a.solution, a.power, options, a.interval_end ? &*a.interval_end : nullptr);
+  // The answers with the report's digits: a stage of their own (solve/answers), narrated here.
+  const Answers answers = answer(a.model, a.system, a.solution, options.digits);
+  Derivation d = explain(a.model, a.system, a.solution, answers, a.power, options, a.interval_end ? &*a.interval_end : nullptr);
   if (a.impact) {
     narrate_impact(d, a.model, *a.impact, options);
     d.impact = &*a.impact;

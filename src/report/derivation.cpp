@@ -5,64 +5,13 @@
 #include <set>
 #include <tuple>
 
-#include <Eigen/Dense>
-
 #include "expr/print.hpp"
 
 namespace tackle {
 
 using namespace GiNaC;
 
-namespace {
-
-// Why an undetermined answer is not determined, with each missing quantity as "{}" when
-// `placeholders` (for typeset prose).
-std::string undetermined_reason(const Answer& a, const SymbolTable& table, const Solution& sol, bool placeholders) {
-  std::vector<std::string> names;
-  bool kinematic = false;
-  for (const auto& x : a.missing) {
-    const SymbolInfo* info = table.find(x);
-    names.push_back(placeholders ? "{}" : info->name);
-    kinematic = kinematic || info->role == SymbolRole::rate || info->role == SymbolRole::coordinate;
-  }
-  if (kinematic && (sol.rates || sol.positions))
-    return "it depends on " + join(names, ", ") + ", which the constraints leave free (give it in 'given')";
-  // A position or velocity other than the one asked for, in a force (a spring at x): the
-  // answer holds at any instant once it is given.
-  const bool other = std::none_of(a.missing.begin(), a.missing.end(), [&](const ex& x) { return x.is_equal(a.symbol); });
-  if (kinematic && other)
-    return "it depends on " + join(names, ", ") + " (give " + (names.size() == 1 ? "it" : "them") +
-           " in 'given' for the answer at any instant)";
-  return "no solved equation gives " + join(names, ", ") +
-         (kinematic ? "; the equations solved are at the acceleration level (balances and constraints differentiated twice)"
-                    : " in terms of the parameters and given quantities");
-}
-
-}  // namespace
-
-bool has_definition(const ex& e, const SymbolTable& table) {
-  for (const auto& sym : table.all())
-    if (sym->definition && !sym->geometric && e.has(sym->sym)) return true;
-  return false;
-}
-
-ex fold_definitions(const ex& e, const SymbolTable& table) {
-  ex best = e;
-  for (const auto& sym : table.all()) {  // in the table's order (an exmap's is the hash order)
-    if (!sym->definition) continue;
-    const ex& name_sym = sym->sym;
-    const ex& definition = *sym->definition;
-    // l = sqrt(A): put l^2 for A, so that sqrt(A) and 1/sqrt(A) become l and 1/l (l > 0).
-    const bool root = is_a<power>(definition) && definition.op(1).is_equal(numeric(1, 2));
-    const ex folded = root ? best.subs(definition.op(0) == pow(name_sym, 2)) : best.subs(definition == name_sym);
-    if (folded.is_equal(best)) continue;
-    const ex tidy = simplest(folded);
-    if (to_text(tidy).size() < to_text(best).size()) best = tidy;
-  }
-  return best;
-}
-
-Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol, const PowerCheck& power_check,
+Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol, const Answers& ans, const PowerCheck& power_check,
                    const ReportOptions& options, const IntervalEnd* end) {
   Derivation d;
   d.title = m.title;
@@ -266,158 +215,9 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   d.conflicts = sol.conflicts;
   for (const auto& f : sol.free) d.free.push_back(to_text(f));
 
-  // Answers: what `find` asks for, or every unknown.
-  std::vector<Wanted> wanted = m.wanted;
-  if (wanted.empty())
-    for (const auto& u : s.unknowns) {
-      const SymbolInfo* info = table.find(u);
-      wanted.push_back({info->name, info->tex, u, false, info->dimension, std::nullopt});
-    }
-  for (const auto& w : wanted) {
-    Answer a;
-    a.name = w.name;
-    a.tex = w.tex;
-    a.symbol = table.find(w.name)->sym;
-    a.unit = w.unit;
-    const bool is_unknown = std::find(s.unknowns.begin(), s.unknowns.end(), w.expr) != s.unknowns.end();
-    const bool is_candidate = std::find(m.candidates.begin(), m.candidates.end(), w.expr) != m.candidates.end();
-    if (sol.status == Solution::Status::inconsistent) {
-      a.status = Answer::Status::not_in_equations;
-    } else if (!w.defined && is_candidate && !is_unknown) {
-      a.status = Answer::Status::not_in_equations;
-    } else {
-      auto substituted = [&](const ex& e) {
-        ex g = e.subs(sol.general);
-        for (const auto* level : {sol.rates.get(), sol.positions.get()})
-          if (level) g = g.subs(level->general);
-        return g;
-      };
-      // A defined quantity that divides by something the equations make zero (F/ddot(x_B)
-      // where ddot(x_B) = 0) is undefined. Denominators are tried first, innermost first:
-      // GiNaC would throw from inside a node it is making, and that node would leak.
-      for (const_postorder_iterator it = w.expr.postorder_begin(); it != w.expr.postorder_end(); ++it) {
-        if (!is_a<power>(*it) || !is_a<numeric>(it->op(1)) || !ex_to<numeric>(it->op(1)).is_negative()) continue;
-        if (!normal(substituted(it->op(0))).is_zero()) continue;
-        a.zero_divisors.push_back(it->op(0));
-        break;
-      }
-      if (!a.zero_divisors.empty()) {
-        a.status = Answer::Status::undetermined;
-        a.reason = "its definition " + to_text(w.expr) + " divides by zero (" + to_text(a.zero_divisors[0]) + " = 0 here)";
-        d.answers.push_back(a);
-        continue;
-      }
-      const ex general = substituted(w.expr);
-      bool free = false;
-      for (const auto& f : sol.free) free = free || general.has(f);
-      if (free) {
-        const bool is_free = std::find(sol.free.begin(), sol.free.end(), w.expr) != sol.free.end();
-        a.status = is_free ? Answer::Status::free : Answer::Status::in_combination;
-        if (!is_free) {
-          // Affine in the free unknowns: each free unknown with its coefficient, then the rest.
-          exmap none;
-          for (const auto& f : sol.free) none[f] = 0;
-          const ex g = general.expand();
-          ex shown = simplest(g.subs(none));
-          for (const auto& f : sol.free) shown += simplest(g.coeff(f, 1)) * f;
-          a.general = shown;
-        }
-      } else {
-        // A closed form may contain parameters and given quantities only: anything else (a
-        // velocity asked for while only accelerations are solved) is what is missing.
-        // (The symbols of the form are gathered once: asking has() of every symbol of a
-        // chain of 256 bodies would make this cubic.)
-        std::set<ex, ex_is_less> present;
-        for (const_preorder_iterator it = general.preorder_begin(); it != general.preorder_end(); ++it)
-          if (is_a<symbol>(*it)) present.insert(*it);
-        for (const auto& sym : table.all()) {
-          if (present.count(sym->sym) == 0) continue;
-          const bool known = sym->role == SymbolRole::parameter || sym->role == SymbolRole::defined || sym->role == SymbolRole::time ||
-                             std::find(m.given.begin(), m.given.end(), sym->sym) != m.given.end();
-          if (!known) a.missing.push_back(sym->sym);
-        }
-        if (!a.missing.empty()) {
-          a.status = Answer::Status::undetermined;
-          a.reason = undetermined_reason(a, table, sol, false);
-        } else {
-          // With the definitions put in, terms may cancel (y_s = (m + M) g/k in sample 12.4):
-          // the shorter of the two, definitions folded back.
-          const ex plain = simplest(general);
-          if (has_definition(general, table)) {
-            ex expanded = general;
-            for (int depth = 0; depth < 8 && has_definition(expanded, table); ++depth) expanded = expanded.subs(table.definitions());
-            expanded = fold_definitions(simplest(expanded), table);
-            a.closed_form = to_text(expanded).size() < to_text(plain).size() ? expanded : fold_definitions(plain, table);
-          } else {
-            // Nothing to put in: the same form twice would cost a second simplification.
-            a.closed_form = fold_definitions(plain, table);
-          }
-          a.value = evaluate(*a.closed_form, table, w.dimension, options.digits, w.unit);
-          // For programs: the same closed form in the parameters alone (l put in).
-          if (has_definition(*a.closed_form, table)) {
-            ex in_parameters = *a.closed_form;
-            for (int depth = 0; depth < 8 && has_definition(in_parameters, table); ++depth)
-              in_parameters = in_parameters.subs(table.definitions());
-            a.in_parameters = simplest(in_parameters);
-          }
-
-        }
-      }
-    }
-    d.answers.push_back(a);
-  }
-  for (const auto& c : sol.combinations) {
-    std::string problem;
-    auto dim = dimension_of(c.combination, table, problem);
-    d.combinations.push_back({c.combination, c.value, evaluate(c.value, table, dim, options.digits)});
-  }
-
-  // Indeterminate, with numbers: x = p + N f over the free unknowns f; the member of least
-  // norm is the least-squares solution of N f = -p (Eigen, complete orthogonal decomposition).
-  if (sol.status == Solution::Status::underdetermined) {
-    std::vector<ex> family;
-    for (const auto& u : s.unknowns) {
-      const ex g = u.subs(sol.general);
-      if (std::any_of(sol.free.begin(), sol.free.end(), [&](const ex& f) { return g.has(f); })) family.push_back(u);
-    }
-    const exmap values = table.values();
-    exmap zero_free;
-    for (const auto& f : sol.free) zero_free[f] = 0;
-    Eigen::MatrixXd N(family.size(), sol.free.size());
-    Eigen::VectorXd p(family.size());
-    bool numeric_family = true;
-    // A family undefined at the given numbers (a denominator that vanishes there) has no
-    // least-norm member (found by fuzzing, where it was an internal error). Each number is
-    // taken from the normal form's numerator and denominator, the denominator checked first:
-    // GiNaC would throw from inside a node it is making, and that node would leak.
-    auto number = [&](const ex& x) { return NormalForm(x).approx_at(values); };
-    for (std::size_t i = 0; i < family.size() && numeric_family; ++i) {
-      const ex g = family[i].subs(sol.general).expand();
-      const auto base = number(g.subs(zero_free));
-      numeric_family = base.has_value();
-      if (numeric_family) p(static_cast<Eigen::Index>(i)) = *base;
-      for (std::size_t j = 0; j < sol.free.size() && numeric_family; ++j) {
-        const auto c = number(g.coeff(sol.free[j], 1));
-        numeric_family = c.has_value();
-        if (numeric_family) N(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = *c;
-      }
-    }
-    if (numeric_family && !family.empty()) {
-      const Eigen::VectorXd f = N.completeOrthogonalDecomposition().solve(-p);
-      const Eigen::VectorXd x = p + N * f;
-      for (std::size_t i = 0; i < family.size(); ++i) {
-        const SymbolInfo* info = table.find(family[i]);
-        // A double from Eigen, shown to the report's digits (not exact).
-        NumericValue v;
-        v.exact = v.si = numeric(x(static_cast<Eigen::Index>(i)));
-        v.approx = x(static_cast<Eigen::Index>(i));
-        v.decimal = decimal_string(numeric(std::abs(v.approx) < 1e-12 ? 0.0 : v.approx), std::min(options.digits, 12));
-        v.unit = info->dimension ? si_unit_name(*info->dimension) : "";
-        d.minimum_norm.emplace_back(info->name, v);
-      }
-    }
-  }
-
+  d.answers = ans.answers;
+  d.combinations = ans.combinations;
+  d.minimum_norm = ans.minimum_norm;
   if (sol.status != Solution::Status::inconsistent) {
     section("Results");
     for (const auto& a : d.answers) {
@@ -468,20 +268,12 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
 
   if (end) narrate_interval_end(d, m, *end, options);
 
-  if (!sol.conditions.empty()) {
+  d.conditions = ans.conditions;
+  if (!ans.conditions.empty()) {
     section("Validity");
-    for (const auto& cc : sol.conditions) {
-      ConditionReport r{cc.condition->source, cc.condition->lhs, cc.condition->rhs, cc.condition->op, cc.expr,
-                        std::nullopt, cc.condition->meaning, cc.condition->otherwise, cc.solved, cc.always};
-      if (!cc.depends_on_free) {
-        if (auto v = evaluate(cc.expr, table, std::nullopt)) {
-          // Exactly when the value is rational, else on its high-precision float.
-          const numeric x = is_a<numeric>(v->exact) ? ex_to<numeric>(v->exact) : ex_to<numeric>(evalf(v->exact));
-          r.holds = relation_holds(x, r.op);
-        }
-      }
-      text(cc.condition->source + ": the model holds while " + r.meaning + ":");
-      Step* rule = equation(cc.condition->source, r.lhs, r.rhs);
+    for (const auto& r : ans.conditions) {
+      text(r.source + ": the model holds while " + r.meaning + ":");
+      Step* rule = equation(r.source, r.lhs, r.rhs);
       rule->relation = r.op;
       Step* closed = equation("closed form", r.simplified, 0);
       closed->relation = r.op;
@@ -500,9 +292,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       if (r.holds)
         text(*r.holds ? "This holds for the given numbers."
                       : "This is VIOLATED for the given numbers: " + r.otherwise + ".");
-      else if (cc.depends_on_free)
+      else if (r.depends_on_free)
         text("This depends on an unknown the equations do not determine.");
-      d.conditions.push_back(r);
     }
   }
   // The power balance: an independent check, made in the analysis from the model's velocities

@@ -16,6 +16,7 @@
 #include "motion/motion.hpp"
 #include "motion/phases.hpp"
 #include "numeric/evaluate.hpp"
+#include "solve/answers.hpp"
 #include "solve/solve.hpp"
 
 namespace tackle {
@@ -35,25 +36,6 @@ struct Step {
   std::shared_ptr<const Figure> figure;  // figure
 };
 
-struct Answer {
-  std::string name;
-  std::string tex;
-  GiNaC::ex symbol;  // the name as a symbol (from the symbol table)
-  // undetermined: what it comes to still contains quantities no solved equation gives
-  // (`missing`): never reported as a closed form, least of all as itself.
-  enum class Status { determined, free, in_combination, not_in_equations, undetermined } status = Status::determined;
-  std::vector<GiNaC::ex> missing;
-  std::string reason;  // undetermined: why, in words ("no solved equation gives dot(x_A) ...")
-  // undetermined because a defined quantity divides by zero: the unknowns that are 0 there
-  // (F/ddot(x_B) with ddot(x_B) = 0)
-  std::vector<GiNaC::ex> zero_divisors;
-  std::optional<GiNaC::ex> closed_form;
-  std::optional<GiNaC::ex> in_parameters;  // the closed form with the defined parameters put in, when it has any
-  std::optional<NumericValue> value;
-  std::optional<GiNaC::ex> general;  // free or in combination: in terms of the free unknowns
-  std::optional<Unit> unit;          // the unit the numbers are given in (SI when absent)
-};
-
 /// A parameter (or a quantity given with its value) as the JSON reports it: enough for a
 /// program to evaluate every closed form.
 struct ParameterReport {
@@ -62,22 +44,6 @@ struct ParameterReport {
   std::optional<NumericValue> si;      // the value in SI
   std::optional<NumericValue> stated;  // the value in the unit the description states
   std::optional<GiNaC::ex> definition; // defined and length: the expression
-};
-
-struct ConditionReport {
-  std::string source;
-  GiNaC::ex lhs, rhs;  // as the rule states it (T_s >= 0)
-  std::string op;
-  GiNaC::ex simplified;  // closed form, `simplified op 0`
-  std::optional<bool> holds;  // with the given numbers
-  std::string meaning, otherwise;
-  std::vector<SolvedFor> solved;  // the condition solved for a parameter, when it can be
-  std::optional<bool> always;     // for every positive value of the parameters
-};
-
-struct CombinationReport {
-  GiNaC::ex combination, value;
-  std::optional<NumericValue> number;
 };
 
 struct Derivation {
@@ -116,7 +82,8 @@ struct ReportOptions {
 /// The derivation of a solved problem, in the book's order; `power_check` is the power-balance
 /// check made in the analysis (narrated here, not computed).
 /// `end`: the interval's end rates, told after the results.
-[[nodiscard]] Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol, const PowerCheck& power_check,
+[[nodiscard]] Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol, const Answers& answers,
+                                 const PowerCheck& power_check,
                                  const ReportOptions& options = {}, const IntervalEnd* end = nullptr);
 
 /// The motion in time appended to a derivation (report/motion_narration.cpp).
@@ -125,10 +92,6 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& motion, const R
 /// The end of an interval whose end rates were found, and an impact (report/phase_narration.cpp).
 void narrate_interval_end(Derivation& d, const Model& m, const IntervalEnd& end, const ReportOptions& options = {});
 void narrate_impact(Derivation& d, const Model& m, const ImpactResult& r, const ReportOptions& options = {});
-
-/// An expression with each defined parameter folded back in where that is shorter
-/// (a*l*m/(2*d) rather than a*m*sqrt(b^2 + d^2 + e^2)/(2*d)).
-[[nodiscard]] GiNaC::ex fold_definitions(const GiNaC::ex& e, const SymbolTable& table);
 
 enum class Format { text, latex, json, markdown, html };
 /// `full`: the whole derivation; otherwise the answers only (`tackle solve`).
