@@ -197,7 +197,7 @@ Derivation explain(const Analysis& a, const ReportOptions& options) {
   Derivation d = explain(a.model, a.system, a.solution, answers, a.power, options, a.interval_end ? &*a.interval_end : nullptr);
   if (a.impact) {
     narrate_impact(d, a.model, *a.impact, options);
-    d.impact = &*a.impact;
+    d.impact_equations = a.impact->equations;
   }
   if (a.motion) {
     narrate_motion(d, a.model, *a.motion, options);
@@ -208,7 +208,7 @@ Derivation explain(const Analysis& a, const ReportOptions& options) {
       SimulationSpec spec;
       spec.time_limit = 1;
       const Simulation run = simulate(a, spec, a.model.motion->at);
-      d.motion_pgfplots = sweep_pgfplots(run.table);
+      d.motion_plot = run.table;
       d.motion_events.push_back("Integrated to t = " + decimal_string(GiNaC::numeric(run.reached), 6) + " s (" +
                                 std::to_string(run.steps) + " steps, Dormand-Prince 5(4)).");
       for (const auto& e : run.events)
@@ -216,7 +216,7 @@ Derivation explain(const Analysis& a, const ReportOptions& options) {
       if (!run.stopped.empty() && run.events.empty()) d.motion_events.push_back("Stopped: " + run.stopped + ".");
     }
   }
-  if (a.model.sweep) d.figure_pgfplots = sweep_pgfplots(run_sweep(a.model, d, sweep_spec(*a.model.sweep), a.model.sweep->at));
+  if (a.model.sweep) d.sweep_plot = run_sweep(a.model, d, sweep_spec(*a.model.sweep), a.model.sweep->at);
   return d;
 }
 

@@ -19,7 +19,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   d.rank = sol.rank;
   d.n_equations = s.equations.size();
   d.unknowns = s.unknowns;
-  d.system = &s;
+  d.equations = s.equations;
+  d.constraint_steps = s.constraints;
   d.symbols = m.symbols;
   const SymbolTable& table = *m.symbols;
   Narrator n{d, table};

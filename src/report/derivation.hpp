@@ -11,6 +11,7 @@
 
 #include "energy/power.hpp"
 #include "figure/figure.hpp"
+#include "report/plot.hpp"
 #include "equations/equations.hpp"
 #include "model/model.hpp"
 #include "motion/motion.hpp"
@@ -61,10 +62,12 @@ struct Derivation {
   std::size_t rank = 0;
   std::size_t n_equations = 0;
   std::vector<GiNaC::ex> unknowns;
-  const EquationSystem* system = nullptr;  // for the JSON equations list
+  std::vector<Equation> equations;          // what was solved, for the JSON
+  std::vector<ConstraintSteps> constraint_steps;
+  std::vector<Equation> impact_equations;   // an impact's, for the JSON
   std::shared_ptr<const SymbolTable> symbols;  // what the names are (LaTeX writes m a, mu N_A)
-  std::string figure_pgfplots;             // a sweep figure for the LaTeX report, when described
-  std::string motion_pgfplots;             // the simulated motion for the LaTeX report, when 'motion' has 'until'
+  std::optional<SweepResult> sweep_plot;   // the described sweep, when there is one
+  std::optional<SweepResult> motion_plot;  // the simulated motion, when 'motion' has 'until'
   std::vector<std::string> motion_events;  // what happened in that run, in words
   // Indeterminate with numbers: the member of the family with the least norm (Eigen), for
   // the unknowns that are not determined alone.
@@ -72,7 +75,6 @@ struct Derivation {
   PowerCheck power;  // the power balance, checked against the solution
   std::vector<ParameterReport> parameters;
   const Motion* motion = nullptr;  // motion in time, for the JSON (narrated in the steps)
-  const ImpactResult* impact = nullptr;  // an impact, for the JSON's equations
 };
 
 struct ReportOptions {

@@ -243,15 +243,15 @@ std::string sweep_svg(const SweepResult& r) {
     return t;
   };
   for (const double xv : ticks(xmin, xmax))
-    out += fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{0}\" y2=\"{2}\" stroke=\"black\"/>"
-                       "<text x=\"{0}\" y=\"{3}\" text-anchor=\"middle\">{4}</text>\n",
+    out += fmt::format("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\" stroke=\"black\"/>"
+                       "<text x=\"{0:.2f}\" y=\"{3:.2f}\" text-anchor=\"middle\">{4}</text>\n",
                        sx(xv), top + ph, top + ph + 5, top + ph + 20, num(xv));
   for (const double yv : ticks(ymin, ymax))
-    out += fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{2}\" y2=\"{1}\" stroke=\"black\"/>"
-                       "<text x=\"{3}\" y=\"{4}\" text-anchor=\"end\">{5}</text>\n",
+    out += fmt::format("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\" stroke=\"black\"/>"
+                       "<text x=\"{3:.2f}\" y=\"{4:.2f}\" text-anchor=\"end\">{5}</text>\n",
                        left - 5, sy(yv), left, left - 8, sy(yv) + 4, num(yv));
   if (ymin < 0 && ymax > 0)
-    out += fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{2}\" y2=\"{1}\" stroke=\"#999\" stroke-dasharray=\"2,3\"/>\n", left,
+    out += fmt::format("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\" stroke=\"#999\" stroke-dasharray=\"2,3\"/>\n", left,
                        sy(0), left + pw);
   out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", left + pw / 2, H - 15,
                      r.x_name + (r.x_unit.empty() ? "" : " [" + r.x_unit + "]"));

@@ -9,6 +9,7 @@
 
 #include "model/model.hpp"
 #include "report/derivation.hpp"
+#include "report/plot.hpp"
 
 namespace tackle {
 
@@ -18,16 +19,6 @@ struct SweepSpec {
   std::vector<std::string> plot;   // expressions in the answers and parameters: "N_A - N_B"
 };
 
-struct SweepResult {
-  std::string title;
-  std::string x_name, x_unit;
-  std::vector<std::string> names;   // one per plotted expression, as written
-  std::vector<std::string> latex;   // the same in LaTeX
-  std::string y_unit;               // when every curve has the same dimension
-  std::vector<double> x;
-  std::vector<std::vector<std::optional<double>>> y;  // [curve][point]
-  std::vector<bool> valid;                            // every validity condition holds
-};
 
 /// Evaluates the sweep; problems with the spec are located InputErrors (`where` names the
 /// command-line option or the description key).

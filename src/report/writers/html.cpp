@@ -4,6 +4,7 @@
 #include "expr/print.hpp"
 #include "figure/figure.hpp"
 #include "report/html.hpp"
+#include "report/sweep.hpp"
 #include "report/writer.hpp"
 #include "report/writers/common.hpp"
 
@@ -84,6 +85,13 @@ std::string html_body(const Derivation& d, bool full, const std::string& title, 
   }
   if (in_list) out += "</ul>\n";
   if (in_table) out += "</table>\n";
+  // The plots, as SVG: the described sweep, the motion integrated numerically.
+  if (d.sweep_plot) out += "<h" + h2 + ">Sweep</h" + h2 + ">\n<figure>\n" + sweep_svg(*d.sweep_plot) + "</figure>\n";
+  if (d.motion_plot) {
+    out += "<h" + h2 + ">Motion, integrated numerically</h" + h2 + ">\n";
+    for (const auto& e : d.motion_events) out += "<p>" + html_escape(e) + "</p>\n";
+    out += "<figure>\n" + sweep_svg(*d.motion_plot) + "</figure>\n";
+  }
   return out;
 }
 

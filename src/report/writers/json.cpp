@@ -193,9 +193,9 @@ nlohmann::ordered_json json_object(const Derivation& d, bool full) {
     j["power_check"] = p;
   }
   if (d.motion) j["motion"] = motion_json(*d.motion);
-  if (full && d.system) {
+  if (full) {
     j["equations"] = nlohmann::ordered_json::array();
-    for (const auto& eq : d.system->equations) {
+    for (const auto& eq : d.equations) {
       nlohmann::ordered_json e{{"label", eq.label},
                        {"kind", kind_name(eq.kind)},
                        {"lhs", to_text(eq.lhs)},
@@ -207,16 +207,16 @@ nlohmann::ordered_json json_object(const Derivation& d, bool full) {
     // The unknowns the equations are solved for, in the solver's order (the answers asked
     // for may be fewer): with the equations, everything a program needs to solve them again.
     j["solved_for"] = nlohmann::ordered_json::array();
-    for (const auto& u : d.system->unknowns) j["solved_for"].push_back(to_text(u));
+    for (const auto& u : d.unknowns) j["solved_for"].push_back(to_text(u));
     j["constraints"] = nlohmann::ordered_json::array();
-    for (const auto& c : d.system->constraints)
+    for (const auto& c : d.constraint_steps)
       j["constraints"].push_back({{"label", c.label},
                                   {"quantity", to_text(c.quantity)},
                                   {"rate", to_text(c.rate)},
                                   {"acceleration", to_text(c.acceleration)}});
   }
-  if (full && d.impact) {
-    for (const auto& eq : d.impact->equations)
+  if (full) {
+    for (const auto& eq : d.impact_equations)
       j["equations"].push_back({{"label", eq.label}, {"kind", kind_name(eq.kind)}, {"lhs", to_text(eq.lhs)}, {"rhs", to_text(eq.rhs)},
                                 {"latex", to_latex(eq.lhs) + " = " + to_latex(eq.rhs)}, {"sources", eq.sources}});
   }

@@ -2,6 +2,7 @@
 // TikZ figures, siunitx tables): the derivation, the phases, the answer key, the sheets.
 #include "expr/print.hpp"
 #include "figure/figure.hpp"
+#include "report/sweep.hpp"
 #include "report/tex.hpp"
 #include "report/writer.hpp"
 #include "report/writers/common.hpp"
@@ -91,12 +92,12 @@ std::string latex_body(const Derivation& d, bool full, const std::string& title)
     flush();
     flush_given();
     if (in_list) out += "\\end{itemize}\n";
-    if (!d.figure_pgfplots.empty())
-      out += "\\subsection*{Sweep}\n\\begin{center}\n" + d.figure_pgfplots + "\\end{center}\n";
-    if (!d.motion_pgfplots.empty()) {
+    if (d.sweep_plot)
+      out += "\\subsection*{Sweep}\n\\begin{center}\n" + sweep_pgfplots(*d.sweep_plot) + "\\end{center}\n";
+    if (d.motion_plot) {
       out += "\\subsection*{Motion, integrated numerically}\n";
       for (const auto& e : d.motion_events) out += tex_escape(e) + "\n\n";
-      out += "\\begin{center}\n" + d.motion_pgfplots + "\\end{center}\n";
+      out += "\\begin{center}\n" + sweep_pgfplots(*d.motion_plot) + "\\end{center}\n";
     }
   } else {
     const std::vector<Step> results = result_steps(d);
@@ -108,7 +109,7 @@ std::string latex_body(const Derivation& d, bool full, const std::string& title)
 }
 
 std::string latex_document_(const Derivation& d, bool full) {
-  return latex_preamble(!d.figure_pgfplots.empty() || !d.motion_pgfplots.empty()) + latex_body(d, full, d.title) + "\\end{document}\n";
+  return latex_preamble(d.sweep_plot || d.motion_plot) + latex_body(d, full, d.title) + "\\end{document}\n";
 }
 
 class LatexWriter final : public Writer {
@@ -117,7 +118,7 @@ class LatexWriter final : public Writer {
   std::string derivation(const Derivation& d, bool full) const override { return latex_document_(d, full); }
   std::string phases(const std::vector<Derivation>& ds, bool full) const override {
     bool plots = false;
-    for (const auto& d : ds) plots = plots || !d.figure_pgfplots.empty() || !d.motion_pgfplots.empty();
+    for (const auto& d : ds) plots = plots || d.sweep_plot || d.motion_plot;
     std::string out = latex_preamble(plots) + "\\section*{" + tex_escape(ds[0].title) + "}\n";
     for (const auto& d : ds) {
       std::string body = latex_body(d, full, "Phase " + std::to_string(d.phase_number) + ": " + d.phase);

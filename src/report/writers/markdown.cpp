@@ -2,6 +2,7 @@
 // parameters and the variants: the derivation, the phases, the answer key, the sheets.
 #include "expr/print.hpp"
 #include "figure/figure.hpp"
+#include "report/sweep.hpp"
 #include "report/writer.hpp"
 #include "report/writers/common.hpp"
 
@@ -45,6 +46,13 @@ std::string markdown_document(const Derivation& d, bool full) {
         case Step::Kind::equation: out += eq(st); break;
         case Step::Kind::figure: out += markdown_figure(st); break;
       }
+    }
+    // The plots, as SVG: the described sweep, the motion integrated numerically.
+    if (d.sweep_plot) out += "## Sweep\n\n<figure>\n" + sweep_svg(*d.sweep_plot) + "</figure>\n\n";
+    if (d.motion_plot) {
+      out += "## Motion, integrated numerically\n\n";
+      for (const auto& e : d.motion_events) out += e + "\n\n";
+      out += "<figure>\n" + sweep_svg(*d.motion_plot) + "</figure>\n\n";
     }
   } else {
     for (Step st : result_steps(d)) {

@@ -1,0 +1,22 @@
+// A plot's data: curves over one variable (a sweep of a parameter, or a motion in time), each
+// point marked valid or not. The writers draw it (pgfplots in LaTeX, SVG elsewhere).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tackle {
+
+struct SweepResult {
+  std::string title;
+  std::string x_name, x_unit;
+  std::vector<std::string> names;   // one per plotted expression, as written
+  std::vector<std::string> latex;   // the same in LaTeX
+  std::string y_unit;               // when every curve has the same dimension
+  std::vector<double> x;
+  std::vector<std::vector<std::optional<double>>> y;  // [curve][point]
+  std::vector<bool> valid;                            // every validity condition holds
+};
+
+}  // namespace tackle
