@@ -7,6 +7,7 @@
 #include <set>
 
 #include "expr/print.hpp"
+#include "numeric/evaluate.hpp"
 #include "figure/figure.hpp"
 
 namespace tackle {
@@ -35,81 +36,6 @@ constexpr double particle_side = 1.2; // a body drawn around one point
 constexpr double arrow_length = 1.2;
 constexpr double spacing = 0.38;      // between parallel arrows that would overlap
 constexpr double char_width = 0.2, label_height = 0.42, gap = 0.1;
-
-// Numbers for the geometry: parameters and layout coordinates, defined parameters and
-// turning lengths through their expressions. Evaluated by walking the expression, so that
-// no pole ever reaches GiNaC: a division by zero or an unknown name gives none.
-class Numbers {
- public:
-  explicit Numbers(const Model& m) : m_(m), defs_(m.symbols->definitions(true)) {
-    for (const auto& [k, v] : m.layout)
-      if (is_a<numeric>(v.evalf())) known_[k] = ex_to<numeric>(v.evalf()).to_double();
-    for (const auto& l : m.lengths) turning_[l.symbol] = l.squared;
-  }
-
-  std::optional<double> operator()(const ex& e, int depth = 0) {
-    if (depth > 50) return std::nullopt;
-    if (is_a<numeric>(e)) {
-      if (!ex_to<numeric>(e).is_real()) return std::nullopt;
-      return ex_to<numeric>(e).to_double();
-    }
-    if (is_a<constant>(e)) {
-      const ex v = e.evalf();
-      if (is_a<numeric>(v)) return ex_to<numeric>(v).to_double();
-      return std::nullopt;
-    }
-    if (is_a<symbol>(e)) {
-      if (auto it = known_.find(e); it != known_.end()) return it->second;
-      std::optional<double> v;
-      if (auto d = defs_.find(e); d != defs_.end()) v = (*this)(d->second, depth + 1);
-      else if (auto t = turning_.find(e); t != turning_.end()) {
-        if (auto sq = (*this)(t->second, depth + 1); sq && *sq >= 0) v = std::sqrt(*sq);
-      } else if (const SymbolInfo* info = m_.symbols->find(e)) {
-        // A problem in symbols only is drawn too: a parameter without a value as 1 (in SI),
-        // a coordinate the layout does not place at 0.
-        if (info->role == SymbolRole::parameter) v = 1;
-        else if (info->role == SymbolRole::coordinate || info->role == SymbolRole::time) v = 0;
-      }
-      if (v) known_[e] = *v;
-      return v;
-    }
-    if (is_a<add>(e) || is_a<mul>(e)) {
-      double acc = is_a<add>(e) ? 0 : 1;
-      for (const auto& op : e) {
-        auto v = (*this)(op, depth + 1);
-        if (!v) return std::nullopt;
-        acc = is_a<add>(e) ? acc + *v : acc * *v;
-      }
-      return finite(acc);
-    }
-    if (is_a<power>(e)) {
-      auto b = (*this)(e.op(0), depth + 1), x = (*this)(e.op(1), depth + 1);
-      if (!b || !x) return std::nullopt;
-      if (*b == 0 && *x < 0) return std::nullopt;
-      if (*b < 0 && std::floor(*x) != *x) return std::nullopt;
-      return finite(std::pow(*b, *x));
-    }
-    if (is_a<function>(e) && e.nops() == 1) {
-      auto a = (*this)(e.op(0), depth + 1);
-      if (!a) return std::nullopt;
-      const std::string name = ex_to<function>(e).get_name();
-      static const std::map<std::string, double (*)(double)> f{
-          {"sin", [](double v) { return std::sin(v); }},   {"cos", [](double v) { return std::cos(v); }},
-          {"tan", [](double v) { return std::tan(v); }},   {"exp", [](double v) { return std::exp(v); }},
-          {"log", [](double v) { return std::log(v); }},   {"asin", [](double v) { return std::asin(v); }},
-          {"acos", [](double v) { return std::acos(v); }}, {"atan", [](double v) { return std::atan(v); }},
-          {"abs", [](double v) { return std::fabs(v); }}};
-      if (auto it = f.find(name); it != f.end()) return finite(it->second(*a));
-    }
-    return std::nullopt;
-  }
-
- private:
-  static std::optional<double> finite(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
-  const Model& m_;
-  exmap defs_, turning_;
-  std::map<ex, double, ex_is_less> known_;
-};
 
 // Model space to the drawing plane: 1-D along the axis (vertical when gravity acts along
 // it), 2-D as is, 3-D in an oblique view (x towards the viewer, y to the right, z up).
@@ -282,9 +208,43 @@ std::string strip_suffix(const std::string& source) {
 
 }  // namespace
 
+// The numbers the geometry is drawn at, made once per model: every parameter's value and the
+// layout's coordinates (a parameter without a value as 1, a coordinate the layout does not
+// place at 0), the defined parameters and turning lengths from them.
+FigureMaker::FigureMaker(const Model& m) : m_(m), values_(m.layout), unknowns_(m.candidates.begin(), m.candidates.end()) {
+  const SymbolTable& table = *m.symbols;
+  for (const auto& s : table.all()) {
+    if (values_.count(s->sym) || s->definition) continue;
+    if (s->role == SymbolRole::parameter) values_[s->sym] = 1;
+    else if (s->role == SymbolRole::coordinate || s->role == SymbolRole::time) values_[s->sym] = 0;
+  }
+  for (const auto& s : table.all())
+    if (s->definition && !values_.count(s->sym))
+      if (auto x = value_at(*s->definition, values_)) values_[s->sym] = *x;
+  for (const auto& l : m.lengths)
+    if (auto sq = value_at(l.squared, values_); sq && is_a<numeric>(*sq) && ex_to<numeric>(*sq) >= 0)
+      values_[l.symbol] = sqrt(*sq);
+}
+
+// A number of the geometry, through the evaluation every stage uses (no pole reaches GiNaC);
+// none where it is undefined or not real.
+std::optional<double> FigureMaker::number(const ex& e) const {
+  const auto v = value_at(e, values_);
+  if (!v) return std::nullopt;
+  const ex x = evalf(*v);
+  if (!is_a<numeric>(x) || !ex_to<numeric>(x).is_real()) return std::nullopt;
+  const double d = ex_to<numeric>(x).to_double();
+  return std::isfinite(d) ? std::optional<double>(d) : std::nullopt;
+}
+
 std::optional<Figure> free_body_diagram(const Model& m, const std::vector<int>& bodies, bool system) {
-  PersonOrder order(factor_rank(m.symbols));
-  Numbers num(m);
+  return FigureMaker(m).draw(bodies, system);
+}
+
+std::optional<Figure> FigureMaker::draw(const std::vector<int>& bodies, bool system) const {
+  const Model& m = m_;
+  PersonOrder order(factor_rank({m.symbols}));
+  auto num = [&](const ex& e) { return number(e); };
   Projection proj;
   proj.dims = m.dims();
   if (proj.dims == 1) {
@@ -301,7 +261,7 @@ std::optional<Figure> free_body_diagram(const Model& m, const std::vector<int>& 
     }
     return p;
   };
-  const std::set<ex, ex_is_less> unknowns(m.candidates.begin(), m.candidates.end());
+  const std::set<ex, ex_is_less>& unknowns = unknowns_;
 
   // Forces from outside the system only: a connection (or strand) whose loads on the
   // system's bodies add up to nothing is internal to it.
@@ -520,7 +480,6 @@ std::optional<Figure> free_body_diagram(const Model& m, const std::vector<int>& 
           }
       int spread = 0;
       for (int k = 0; k < 3; ++k) spread += hi[k] - lo[k] > 0.08 * longest;
-      std::vector<V> corners;
       if (spread <= 1) {
         // A bar from the farthest pair of points.
         V a = scale * proj(body_points[i][0]), c = a;
@@ -536,6 +495,7 @@ std::optional<Figure> free_body_diagram(const Model& m, const std::vector<int>& 
         d.outline = rectangle(0.5 * (a + c), c - a, len(c - a) + 0.3, std::min(1.0, 0.3 * len(c - a)));
         d.outline.name = b.name;
       } else {
+        std::vector<V> corners;
         for (int c = 0; c < 8; ++c) {
           std::array<double, 3> p{(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2]};
           corners.push_back(scale * proj(p));

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,21 @@ struct Figure {
   std::vector<FigureArrow> arrows;  // forces, inertial terms and the axes
   std::vector<FigureCouple> couples;
   double min_x = 0, min_y = 0, max_x = 0, max_y = 0;  // everything drawn, labels included
+};
+
+/// Draws the free body diagrams of one model: the numbers its geometry is drawn at are made
+/// once (for a chain of 256 bodies, not 256 times).
+class FigureMaker {
+ public:
+  explicit FigureMaker(const Model& m);
+  /// The diagram of one body, or of a system of bodies (see free_body_diagram).
+  [[nodiscard]] std::optional<Figure> draw(const std::vector<int>& bodies, bool system) const;
+
+ private:
+  [[nodiscard]] std::optional<double> number(const GiNaC::ex& e) const;
+  const Model& m_;
+  GiNaC::exmap values_;
+  std::set<GiNaC::ex, GiNaC::ex_is_less> unknowns_;
 };
 
 /// The free body diagram of one body, or of a system of bodies (only the forces from outside

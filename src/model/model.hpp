@@ -163,7 +163,11 @@ struct Model {
   std::vector<TurningLength> lengths;
   std::vector<std::string> assumptions;
   std::vector<std::string> direction_assumed_by;  // connections whose rule assumes the direction of motion
-  std::vector<std::string> connections;  // one line per connection: "string s: <summary>"
+  struct ConnectionNote {
+    std::string label;    // "sliding at A", "string s"
+    std::string summary;  // the rule's, for the problem's number of axes
+  };
+  std::vector<ConnectionNote> connections;  // one per connection, in the description's order
   std::optional<Vec> gravity;
   std::vector<GiNaC::ex> candidates;  // possible unknowns: accelerations, then rule unknowns
   std::vector<GiNaC::ex> given;       // kinematic quantities given as known

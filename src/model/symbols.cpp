@@ -20,10 +20,12 @@ std::string tex_atom(std::string_view s) {
 
 }  // namespace
 
-FactorRank factor_rank(std::shared_ptr<const SymbolTable> table) {
-  return [table = std::move(table)](const GiNaC::ex& x) {
+FactorRank factor_rank(std::vector<std::shared_ptr<const SymbolTable>> tables) {
+  return [tables = std::move(tables)](const GiNaC::ex& x) {
     if (!GiNaC::is_a<GiNaC::symbol>(x)) return 5;
-    const SymbolInfo* s = table->find(x);
+    const SymbolInfo* s = nullptr;
+    for (const auto& t : tables)
+      if (t && (s = t->find(x))) break;
     if (!s) return 2;
     switch (s->role) {
       case SymbolRole::parameter:

@@ -54,7 +54,9 @@ class SymbolTable;
 /// The order a person writes a product's factors in, from what the names are: dimensionless
 /// coefficients (mu), masses, other parameters (g, lengths), coordinates, then unknowns,
 /// rates and accelerations; anything not a name last. For PersonOrder (expr/print.hpp).
-[[nodiscard]] FactorRank factor_rank(std::shared_ptr<const SymbolTable> table);
+/// Several tables (the problems of a key, the phases of a description): each name is looked
+/// up in the table that made it.
+[[nodiscard]] FactorRank factor_rank(std::vector<std::shared_ptr<const SymbolTable>> tables);
 
 class SymbolTable : public NameResolver, public DimensionLookup {
  public:

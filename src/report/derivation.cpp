@@ -63,11 +63,9 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   {
     std::vector<std::pair<std::vector<std::string>, std::string>> kinds;  // labels, summary
     for (const auto& c : m.connections) {
-      const auto colon = c.find(": ");
-      const std::string label = c.substr(0, colon), summary = colon == std::string::npos ? "" : c.substr(colon + 2);
-      auto it = std::find_if(kinds.begin(), kinds.end(), [&](const auto& k) { return !summary.empty() && k.second == summary; });
-      if (it == kinds.end()) kinds.push_back({{label}, summary});
-      else it->first.push_back(label);
+      auto it = std::find_if(kinds.begin(), kinds.end(), [&](const auto& k) { return !c.summary.empty() && k.second == c.summary; });
+      if (it == kinds.end()) kinds.push_back({{c.label}, c.summary});
+      else it->first.push_back(c.label);
     }
     for (const auto& [labels, summary] : kinds) {
       std::string who;
@@ -131,11 +129,13 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   section(has_amb ? "Free body diagrams: linear and angular momentum balance"
                   : "Free body diagrams: linear momentum balance");
   std::pair<std::vector<int>, bool> drawn{{}, false};  // the body or system last drawn
+  std::optional<FigureMaker> figures;                   // made at the first balance
   for (const auto& eq : s.equations) {
     if (eq.kind == Equation::Kind::constraint_acceleration || eq.kind == Equation::Kind::interval) continue;
     if (!eq.bodies.empty() && std::pair{eq.bodies, eq.system} != drawn) {
       drawn = {eq.bodies, eq.system};
-      if (auto fig = free_body_diagram(m, eq.bodies, eq.system)) {
+      if (!figures) figures.emplace(m);
+      if (auto fig = figures->draw(eq.bodies, eq.system)) {
         Step* st = n.step(Step::Kind::figure, fig->caption);
         st->figure = std::make_shared<const Figure>(std::move(*fig));
       }

@@ -14,11 +14,12 @@ trap 'rm -rf "$work"' EXIT
 
 commands=()
 for f in "$src"/examples/*.yaml; do
-  for fmt in text latex markdown json; do commands+=("derive $f --format $fmt"); done
+  for fmt in text latex markdown json html; do commands+=("derive $f --format $fmt"); done
   commands+=("isolate $f --all" "isolate $f --all --format json")
 done
 commands+=("key $src/examples/*.yaml --variants 3 --seed 11 --format json")
 commands+=("key $src/examples/*.yaml --variants 2 --seed 5 --format latex")
+commands+=("sheet $src/examples/*.yaml --variants 2 --seed 5 --format html --figures")
 for f in "$src"/tests/data/bad/*.yaml; do commands+=("derive $f"); done
 
 pad() { head -c "$1" /dev/zero | tr '\0' x; }

@@ -70,3 +70,12 @@ TEST_CASE("Key: the LaTeX table's headers are typeset as in the derivation", "[k
   CHECK(latex.find("\\# & $F$ & $m_{A}$ & $m_{B}$ & $T$ & $\\ddot{x}_{A}$ & $\\ddot{x}_{B}$ \\\\") != std::string::npos);
   CHECK(latex.find("\\texttt{ddot") == std::string::npos);
 }
+
+TEST_CASE("Key: every problem of a key writes its products in a person's order, not only the first", "[key]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.8-sign-board.yaml", test::rules());
+  const auto b = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.7-suitcase.yaml", test::rules());
+  const Derivation da = explain(*a), db = explain(*b);
+  const std::string md = write_key({{&da, {}}, {&db, {}}}, Format::markdown);
+  CHECK(md.find("- $a_{C} = -\\mu g$ = -2.943 m/s^2\n") != std::string::npos);
+  CHECK(md.find("- $N_{A} = \\frac{m g \\left(l - 2 \\mu h\\right)}{2 l}$ = 29.43 N\n") != std::string::npos);
+}

@@ -414,7 +414,7 @@ void add_conditions(BuildContext& ctx, Instance& in) {
     if (!a.when.empty() && !c.arg(a.when)) continue;
     if (std::find(ctx.m.assumptions.begin(), ctx.m.assumptions.end(), a.text) == ctx.m.assumptions.end()) ctx.m.assumptions.push_back(a.text);
   }
-  ctx.m.connections.push_back(label + ": " + rule->summary_for(ctx.m.dims()));
+  ctx.m.connections.push_back({label, rule->summary_for(ctx.m.dims())});
   if (rule->assumes_direction) ctx.m.direction_assumed_by.push_back(label);
   for (const auto& chk : rule->checks) {
     if (!chk.when.empty() && !c.arg(chk.when)) continue;

@@ -139,8 +139,11 @@ std::vector<std::string> variant_head(const KeyEntry& e) {
   return head;
 }
 
-Ordered::Ordered(const Derivation* d) {
-  if (d && d->symbols) order_.emplace(factor_rank(d->symbols));
+Ordered::Ordered(const std::vector<const Derivation*>& ds) {
+  std::vector<std::shared_ptr<const SymbolTable>> tables;
+  for (const Derivation* d : ds)
+    if (d->symbols) tables.push_back(d->symbols);
+  if (!tables.empty()) order_.emplace(factor_rank(std::move(tables)));
 }
 
 }  // namespace tackle::writers
@@ -158,23 +161,29 @@ std::string Writer::isolations(const Model&, const std::vector<Isolation>&) cons
 }
 
 std::string write(const Derivation& d, Format f, bool full) {
-  writers::Ordered order(&d);
+  writers::Ordered order({&d});
   return writer_for(f).derivation(d, full);
 }
 
 std::string write(const std::vector<Derivation>& ds, Format f, bool full) {
   if (ds.size() == 1 && ds[0].phase.empty()) return write(ds[0], f, full);
-  writers::Ordered order(ds.empty() ? nullptr : &ds[0]);
+  std::vector<const Derivation*> all;
+  for (const auto& d : ds) all.push_back(&d);
+  writers::Ordered order(all);
   return writer_for(f).phases(ds, full);
 }
 
 std::string write_key(const std::vector<KeyEntry>& entries, Format f) {
-  writers::Ordered order(entries.empty() ? nullptr : entries[0].derivation);
+  std::vector<const Derivation*> all;
+  for (const auto& e : entries) all.push_back(e.derivation);
+  writers::Ordered order(all);
   return writer_for(f).key(entries);
 }
 
 std::string write_sheet(const std::vector<SheetEntry>& entries, Format f, bool figures) {
-  writers::Ordered order(entries.empty() ? nullptr : entries[0].derivation);
+  std::vector<const Derivation*> all;
+  for (const auto& e : entries) all.push_back(e.derivation);
+  writers::Ordered order(all);
   return writer_for(f).sheet(entries, figures);
 }
 

@@ -46,10 +46,11 @@ struct SheetProblem {
 /// The key's variant table: its header names ("#", the parameters, the answers).
 [[nodiscard]] std::vector<std::string> variant_head(const KeyEntry& e);
 
-/// Installs the person's order of factors for LaTeX while it lives (when the names are known).
+/// Installs the person's order of factors for LaTeX while it lives, for the names of every
+/// derivation given (each problem of a key or a sheet, each phase).
 class Ordered {
  public:
-  explicit Ordered(const Derivation* d);
+  explicit Ordered(const std::vector<const Derivation*>& ds);
 
  private:
   std::optional<PersonOrder> order_;
