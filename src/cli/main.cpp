@@ -67,6 +67,7 @@ struct Options {
   // sweep and simulate
   std::string vary, plot, csv_out, svg_out, pgf_out, sim_plot;
   std::vector<std::string> fixes;
+  std::string against;  // sweep
   double until = 0;
   int samples = 201;
   // check
@@ -208,8 +209,12 @@ int run_sweep(const Options& o, const tackle::RuleSet& rules) {
   if (!analysis) return 2;
   tackle::SweepSpec spec;
   if (analysis->model.sweep) spec = tackle::sweep_spec(*analysis->model.sweep);
-  if (!o.vary.empty()) spec.vary = o.vary;
+  if (!o.vary.empty()) {
+    spec.vary = o.vary;
+    spec.against.clear();  // the description's axis was for its own range
+  }
   if (!o.fixes.empty()) spec.fix = o.fixes;
+  if (!o.against.empty()) spec.against = o.against;
   if (!o.plot.empty()) spec.plot = split_commas(o.plot);
   if (spec.vary.empty()) {
     std::cerr << "tackle sweep: give --vary (the description has no 'sweep')\n";
@@ -362,7 +367,7 @@ int main(int argc, char** argv) {
                                             "(the same numbers as key with the same seed)");
   sheet->add_option("files", o.key_files, "Problem descriptions (YAML)")->required();
   sheet->add_option("--format", o.key_format, "Output format")->check(CLI::IsMember({"latex", "markdown", "html"}))->capture_default_str();
-  sheet->add_flag("--figures", o.figures, "Draw each problem's free body diagrams under its statement");
+  sheet->add_flag("--figures", o.figures, "Also draw each problem's free body diagrams under its statement (a 1-D mechanism's sketch is always drawn)");
   sheet->add_option("--variants", o.variants, "Numeric variants per problem, drawn from the parameters' 'range'")
       ->check(CLI::Range(0, 10000));
   sheet->add_option("--seed", o.seed, "Seed for the variants (as for key)")->capture_default_str();
@@ -373,6 +378,7 @@ int main(int argc, char** argv) {
   sweep->add_option("file", o.file, "Problem description (YAML)")->required();
   sweep->add_option("--vary", o.vary, "name=start:end:count, in the parameter's unit (default: the description's sweep)");
   sweep->add_option("--fix", o.fixes, "name=value, in the parameter's unit (repeatable)");
+  sweep->add_option("--against", o.against, "The horizontal axis: an expression in the parameters, e.g. h/l (default: the varied parameter)");
   sweep->add_option("--plot", o.plot, "Comma-separated expressions in the answers and parameters, e.g. N_A,N_B,N_A-N_B");
   sweep->add_option("--csv", o.csv_out, "Write the data as CSV here (default: standard output)");
   sweep->add_option("--svg", o.svg_out, "Write an SVG plot here");

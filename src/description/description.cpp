@@ -470,7 +470,7 @@ struct Reader {
     if (auto f = root["find"]) read_find(f);
     if (auto dv = root["derive"]) read_derive(dv);
     if (auto sw = root["sweep"]) {
-      if (check_map(sw, {"vary", "fix", "plot"}, "'sweep'", file, diags)) {
+      if (check_map(sw, {"vary", "fix", "plot", "against"}, "'sweep'", file, diags)) {
         SweepDesc sd;
         sd.at = where(sw, file);
         if (auto v = sw["vary"]) {
@@ -482,6 +482,7 @@ struct Reader {
           if (auto items = scalar_list(f, "'fix' of 'sweep'", file, diags)) sd.fix = *items;
         if (auto p = sw["plot"])
           if (auto items = scalar_list(p, "'plot' of 'sweep'", file, diags)) sd.plot = *items;
+        if (auto a = sw["against"]) sd.against = scalar(a, "'against' of 'sweep'", file, diags);
         d.sweep = sd;
       }
     }

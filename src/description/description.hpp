@@ -104,6 +104,7 @@ struct SweepDesc {
   Text vary;               // "h=0:2:41"
   std::vector<Text> fix;   // "l=1"
   std::vector<Text> plot;  // "N_A - N_B"
+  std::optional<Text> against;  // "h/l": the horizontal axis, when not the varied parameter
   Location at;
 };
 

@@ -9,33 +9,14 @@
 #include "expr/print.hpp"
 #include "numeric/evaluate.hpp"
 #include "figure/figure.hpp"
+#include "figure/geometry.hpp"
 
 namespace tackle {
 
 using namespace GiNaC;
+using namespace fig;
 
 namespace {
-
-struct V {
-  double x = 0, y = 0;
-};
-V operator+(V a, V b) { return {a.x + b.x, a.y + b.y}; }
-V operator-(V a, V b) { return {a.x - b.x, a.y - b.y}; }
-V operator*(double s, V a) { return {s * a.x, s * a.y}; }
-double dot(V a, V b) { return a.x * b.x + a.y * b.y; }
-double cross(V a, V b) { return a.x * b.y - a.y * b.x; }
-double len(V a) { return std::hypot(a.x, a.y); }
-V normalized(V a) { return (1 / len(a)) * a; }
-V perp(V a) { return {-a.y, a.x}; }
-FigurePoint fp(V a) { return {a.x, a.y}; }
-V vp(FigurePoint a) { return {a.x, a.y}; }
-
-// Sizes in drawing units (about centimetres).
-constexpr double body_extent = 3.2;   // the largest drawn body
-constexpr double particle_side = 1.2; // a body drawn around one point
-constexpr double arrow_length = 1.2;
-constexpr double spacing = 0.38;      // between parallel arrows that would overlap
-constexpr double char_width = 0.2, label_height = 0.42, gap = 0.1;
 
 // Model space to the drawing plane: 1-D along the axis (vertical when gravity acts along
 // it), 2-D as is, 3-D in an oblique view (x towards the viewer, y to the right, z up).
@@ -73,128 +54,6 @@ struct Drawn {
   bool particle = false;  // forces start on its outline, along their line through the centre
 };
 
-bool inside(const FigureOutline& o, V p) {
-  if (o.shape == FigureOutline::Shape::circle) return len(p - vp(o.centre)) < o.radius;
-  bool in = false;
-  const auto& c = o.corners;
-  for (std::size_t i = 0, j = c.size() - 1; i < c.size(); j = i++) {
-    if ((c[i].y > p.y) != (c[j].y > p.y) && p.x < (c[j].x - c[i].x) * (p.y - c[i].y) / (c[j].y - c[i].y) + c[i].x) in = !in;
-  }
-  return in;
-}
-
-double segment_distance(V p, V a, V b) {
-  const V ab = b - a;
-  const double l2 = dot(ab, ab);
-  const double t = l2 == 0 ? 0 : std::clamp(dot(p - a, ab) / l2, 0.0, 1.0);
-  return len(p - (a + t * ab));
-}
-
-double boundary_distance(const FigureOutline& o, V p) {
-  if (o.shape == FigureOutline::Shape::circle) return std::fabs(len(p - vp(o.centre)) - o.radius);
-  double d = 1e300;
-  for (std::size_t i = 0; i < o.corners.size(); ++i)
-    d = std::min(d, segment_distance(p, vp(o.corners[i]), vp(o.corners[(i + 1) % o.corners.size()])));
-  return d;
-}
-
-// Where the ray from p along u leaves the outline (p inside it).
-V exit_point(const FigureOutline& o, V p, V u) {
-  double lo = 0, hi = 4 * body_extent;
-  for (int i = 0; i < 40; ++i) {
-    const double mid = (lo + hi) / 2;
-    (inside(o, p + mid * u) ? lo : hi) = mid;
-  }
-  return p + hi * u;
-}
-
-std::vector<FigurePoint> convex_hull(std::vector<V> p) {
-  std::sort(p.begin(), p.end(), [](V a, V b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  std::vector<V> h(2 * p.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && cross(h[k - 1] - h[k - 2], p[i] - h[k - 2]) <= 0) --k;
-    h[k++] = p[i];
-  }
-  for (std::size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
-    while (k >= t && cross(h[k - 1] - h[k - 2], p[i - 1] - h[k - 2]) <= 0) --k;
-    h[k++] = p[i - 1];
-  }
-  h.resize(k > 1 ? k - 1 : k);
-  std::vector<FigurePoint> out;
-  for (V v : h) out.push_back(fp(v));
-  return out;
-}
-
-FigureOutline rectangle(V centre, V along, double w, double h) {
-  const V u = normalized(along), n = perp(u);
-  FigureOutline o;
-  for (auto [a, b] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
-    o.corners.push_back(fp(centre + (a * w / 2) * u + (b * h / 2) * n));
-  return o;
-}
-
-struct Box {
-  V c;
-  double w, h;
-};
-bool overlaps(const Box& a, const Box& b) {
-  return std::fabs(a.c.x - b.c.x) * 2 < a.w + b.w && std::fabs(a.c.y - b.c.y) * 2 < a.h + b.h;
-}
-bool box_hits_segment(const Box& b, V p, V q) {
-  for (int i = 0; i <= 16; ++i) {
-    const V s = p + (i / 16.0) * (q - p);
-    if (std::fabs(s.x - b.c.x) * 2 < b.w && std::fabs(s.y - b.c.y) * 2 < b.h) return true;
-  }
-  return false;
-}
-
-class Layout {
- public:
-  explicit Layout(Figure& f) : f_(f) {}
-
-  // A label near `anchor`, tried at the candidate centres in order; the first that touches
-  // nothing wins, else the one that touches least.
-  FigureLabel place(const std::string& tex, const std::vector<V>& candidates) {
-    FigureLabel l;
-    l.tex = tex;
-    l.width = char_width * static_cast<double>(shown_length(tex)) + 0.12;
-    l.height = label_height;
-    double best = 1e300;
-    V at = candidates.front();
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-      const double p = penalty({candidates[i], l.width, l.height}) + 0.01 * static_cast<double>(i);
-      if (p < best) {
-        best = p;
-        at = candidates[i];
-      }
-    }
-    l.at = fp(at);
-    boxes_.push_back({at, l.width, l.height});
-    return l;
-  }
-
- private:
-  double penalty(const Box& b) const {
-    double p = 0;
-    for (const auto& o : boxes_)
-      if (overlaps(b, o)) p += 100;
-    for (const auto& a : f_.arrows)
-      if (box_hits_segment(b, vp(a.from), vp(a.to))) p += 10;
-    for (const auto& o : f_.outlines) {
-      for (V c : {b.c, b.c + V{b.w / 2, b.h / 2}, b.c + V{-b.w / 2, b.h / 2}, b.c + V{b.w / 2, -b.h / 2}, b.c + V{-b.w / 2, -b.h / 2}})
-        if (inside(o, c)) p += 3;
-      if (o.shape == FigureOutline::Shape::polygon)
-        for (std::size_t i = 0; i < o.corners.size(); ++i)
-          if (box_hits_segment(b, vp(o.corners[i]), vp(o.corners[(i + 1) % o.corners.size()]))) p += 5;
-    }
-    for (const auto& d : f_.dots)
-      if (std::fabs(d.at.x - b.c.x) * 2 < b.w + 0.1 && std::fabs(d.at.y - b.c.y) * 2 < b.h + 0.1) p += 10;
-    return p;
-  }
-  Figure& f_;
-  std::vector<Box> boxes_;
-};
 
 std::string strip_suffix(const std::string& source) {
   // "string s: strand pB-C at pB" and "string s (from its length sum) on A": one key per
@@ -207,6 +66,67 @@ std::string strip_suffix(const std::string& source) {
 }
 
 }  // namespace
+
+namespace fig {
+
+void finish(Figure& f, const std::vector<V>& directions, const std::vector<std::string>& names) {
+  // Bounds, then the axes at the lower left, outside everything else.
+  f.min_x = f.min_y = 1e300;
+  f.max_x = f.max_y = -1e300;
+  auto grow = [&](V p) {
+    f.min_x = std::min(f.min_x, p.x);
+    f.max_x = std::max(f.max_x, p.x);
+    f.min_y = std::min(f.min_y, p.y);
+    f.max_y = std::max(f.max_y, p.y);
+  };
+  auto grow_label = [&](const FigureLabel& l) {
+    grow(vp(l.at) + V{l.width / 2, l.height / 2});
+    grow(vp(l.at) - V{l.width / 2, l.height / 2});
+  };
+  for (const auto& o : f.outlines) {
+    if (o.shape == FigureOutline::Shape::circle) {
+      grow(vp(o.centre) + V{o.radius, o.radius});
+      grow(vp(o.centre) - V{o.radius, o.radius});
+    }
+    for (const auto& c : o.corners) grow(vp(c));
+  }
+  for (const auto& l : f.lines)
+    for (const auto& p : l.points) grow(vp(p));
+  for (const auto& t : f.texts) grow_label(t);
+  for (const auto& a : f.arrows) {
+    grow(vp(a.from));
+    grow(vp(a.to));
+    grow_label(a.label);
+  }
+  for (const auto& c : f.couples) {
+    grow(vp(c.centre) + V{c.radius, c.radius});
+    grow(vp(c.centre) - V{c.radius, c.radius});
+    grow_label(c.label);
+  }
+  for (const auto& d : f.dots) {
+    grow(vp(d.at));
+    if (d.label) grow_label(*d.label);
+  }
+  const V origin{f.min_x - 1.3, f.min_y + 0.2};
+  for (std::size_t k = 0; k < directions.size(); ++k) {
+    FigureArrow a;
+    a.axis = true;
+    a.from = fp(origin);
+    const V d = directions[k];
+    a.to = fp(origin + 0.8 * d);
+    a.label.tex = names[k];
+    a.label.width = char_width + 0.12;
+    a.label.height = label_height;
+    a.label.at = fp(origin + 1.05 * d);
+    grow(vp(a.from));
+    grow(vp(a.to));
+    grow_label(a.label);
+    f.arrows.push_back(a);
+  }
+
+}
+
+}  // namespace fig
 
 // The numbers the geometry is drawn at, made once per model: every parameter's value and the
 // layout's coordinates (a parameter without a value as 1, a coordinate the layout does not
@@ -649,56 +569,9 @@ std::optional<Figure> FigureMaker::draw(const std::vector<int>& bodies, bool sys
       d.label = lay.place(d.label->tex, cand);
     }
 
-  // Bounds, then the axes at the lower left, outside everything else.
-  f.min_x = f.min_y = 1e300;
-  f.max_x = f.max_y = -1e300;
-  auto grow = [&](V p) {
-    f.min_x = std::min(f.min_x, p.x);
-    f.max_x = std::max(f.max_x, p.x);
-    f.min_y = std::min(f.min_y, p.y);
-    f.max_y = std::max(f.max_y, p.y);
-  };
-  auto grow_label = [&](const FigureLabel& l) {
-    grow(vp(l.at) + V{l.width / 2, l.height / 2});
-    grow(vp(l.at) - V{l.width / 2, l.height / 2});
-  };
-  for (const auto& o : f.outlines) {
-    if (o.shape == FigureOutline::Shape::circle) {
-      grow(vp(o.centre) + V{o.radius, o.radius});
-      grow(vp(o.centre) - V{o.radius, o.radius});
-    }
-    for (const auto& c : o.corners) grow(vp(c));
-  }
-  for (const auto& a : f.arrows) {
-    grow(vp(a.from));
-    grow(vp(a.to));
-    grow_label(a.label);
-  }
-  for (const auto& c : f.couples) {
-    grow(vp(c.centre) + V{c.radius, c.radius});
-    grow(vp(c.centre) - V{c.radius, c.radius});
-    grow_label(c.label);
-  }
-  for (const auto& d : f.dots) {
-    grow(vp(d.at));
-    if (d.label) grow_label(*d.label);
-  }
-  const V origin{f.min_x - 1.3, f.min_y + 0.2};
-  for (int k = 0; k < m.dims(); ++k) {
-    FigureArrow a;
-    a.axis = true;
-    a.from = fp(origin);
-    const V d = normalized(proj.dims == 1 ? proj.axis1 : proj.axis(k));
-    a.to = fp(origin + 0.8 * d);
-    a.label.tex = m.axes[k];
-    a.label.width = char_width + 0.12;
-    a.label.height = label_height;
-    a.label.at = fp(origin + 1.05 * d);
-    grow(vp(a.from));
-    grow(vp(a.to));
-    grow_label(a.label);
-    f.arrows.push_back(a);
-  }
+  std::vector<V> directions;
+  for (int k = 0; k < m.dims(); ++k) directions.push_back(normalized(proj.dims == 1 ? proj.axis1 : proj.axis(k)));
+  finish(f, directions, m.axes);
 
   std::vector<std::string> names;
   for (int bi : bodies) names.push_back(m.bodies[bi].name);

@@ -50,9 +50,18 @@ struct FigureDot {
   std::optional<FigureLabel> label;  // a named point
 };
 
+// A line drawn through points: a string, a spring's coils, a support, the hatching of the ground.
+struct FigureLine {
+  std::vector<FigurePoint> points;
+  bool thin = false;  // hatching
+};
+
 struct Figure {
   std::string caption;  // "Free body diagram of the suitcase"
+  bool sketch = false;  // the mechanism's sketch (a sheet shows it), not a free body diagram
   std::vector<FigureOutline> outlines;
+  std::vector<FigureLine> lines;     // drawn over the outlines
+  std::vector<FigureLabel> texts;    // names written on the figure (a block's)
   std::vector<FigureDot> dots;
   std::vector<FigureArrow> arrows;  // forces, inertial terms and the axes
   std::vector<FigureCouple> couples;
@@ -66,6 +75,8 @@ class FigureMaker {
   explicit FigureMaker(const Model& m);
   /// The diagram of one body, or of a system of bodies (see free_body_diagram).
   [[nodiscard]] std::optional<Figure> draw(const std::vector<int>& bodies, bool system) const;
+  /// A 1-D mechanism's sketch (see mechanism_sketch).
+  [[nodiscard]] std::optional<Figure> sketch() const;
 
  private:
   [[nodiscard]] std::optional<double> number(const GiNaC::ex& e) const;
@@ -78,6 +89,13 @@ class FigureMaker {
 /// it), from the model's geometry at the layout's numbers (a parameter without a value taken
 /// as 1). None when the geometry cannot be evaluated (a position undefined there).
 [[nodiscard]] std::optional<Figure> free_body_diagram(const Model& m, const std::vector<int>& bodies, bool system);
+
+/// The sketch of a 1-D mechanism at the layout's positions: its blocks, its strings along
+/// their paths (strands side by side, wrapped around sheaves where they turn), springs and
+/// dampers, the ground where points are fixed, the applied forces and the axis. None for
+/// 2-D and 3-D problems, for one without a string, spring or damper, and when the layout
+/// cannot be evaluated.
+[[nodiscard]] std::optional<Figure> mechanism_sketch(const Model& m);
 
 /// The figure as a tikzpicture (needs \usepackage{tikz}).
 [[nodiscard]] std::string to_tikz(const Figure& f);

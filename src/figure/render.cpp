@@ -145,6 +145,12 @@ std::string to_tikz(const Figure& f) {
       out += "cycle;\n";
     }
   }
+  for (const auto& l : f.lines) {
+    out += std::string("  \\draw[") + (l.thin ? "thin" : "thick") + "] ";
+    for (std::size_t i = 0; i < l.points.size(); ++i) out += (i ? " -- (" : "(") + num(l.points[i].x) + "," + num(l.points[i].y) + ")";
+    out += ";\n";
+  }
+  for (const auto& t : f.texts) out += "  \\node[inner sep=1pt] at (" + num(t.at.x) + "," + num(t.at.y) + ") {$" + t.tex + "$};\n";
   for (const auto& d : f.dots) {
     out += "  \\fill (" + num(d.at.x) + "," + num(d.at.y) + ") circle (1.5pt);\n";
     if (d.label) out += "  \\node[font=\\small, inner sep=1pt] at (" + num(d.label->at.x) + "," + num(d.label->at.y) + ") {$" + d.label->tex + "$};\n";
@@ -188,6 +194,12 @@ std::string to_svg(const Figure& f) {
     return "<text x=\"" + num((l.at.x - f.min_x) * px) + "\" y=\"" + num((f.max_y - l.at.y) * px + 5) +
            "\" text-anchor=\"middle\" font-family=\"serif\" font-style=\"italic\" font-size=\"15\">" + svg_text(l.tex) + "</text>\n";
   };
+  for (const auto& l : f.lines) {
+    out += "<polyline points=\"";
+    for (std::size_t i = 0; i < l.points.size(); ++i) out += (i ? " " : "") + svg_point(l.points[i].x, l.points[i].y, f, px);
+    out += std::string("\" fill=\"none\" stroke=\"black\" stroke-width=\"") + (l.thin ? "0.8" : "1.6") + "\" stroke-linejoin=\"round\"/>\n";
+  }
+  for (const auto& t : f.texts) out += label(t);
   for (const auto& d : f.dots) {
     out += "<circle cx=\"" + num((d.at.x - f.min_x) * px) + "\" cy=\"" + num((f.max_y - d.at.y) * px) + "\" r=\"2.5\" fill=\"black\"/>\n";
     if (d.label) out += label(*d.label);

@@ -168,6 +168,15 @@ struct Model {
     std::string summary;  // the rule's, for the problem's number of axes
   };
   std::vector<ConnectionNote> connections;  // one per connection, in the description's order
+  /// What a 1-D mechanism's sketch draws of a connection (its rule's `sketch:`).
+  struct Drawing {
+    std::string as;         // line, spring, damper, pulley, support, arrow
+    std::string label;      // the connection's label ("force on A": its loads' source)
+    std::vector<int> path;  // its path's points (line, spring, damper)
+    int point = -1;         // its point (pulley)
+    int body = -1;          // its body (support, arrow)
+  };
+  std::vector<Drawing> drawings;  // in the description's order
   std::optional<Vec> gravity;
   std::vector<GiNaC::ex> candidates;  // possible unknowns: accelerations, then rule unknowns
   std::vector<GiNaC::ex> given;       // kinematic quantities given as known

@@ -33,7 +33,7 @@ FactorRank factor_rank(std::vector<std::shared_ptr<const SymbolTable>> tables) {
         if (s->dimension ? s->dimension->exp == Dimension::none().exp : s->role == SymbolRole::parameter) return 0;
         if (s->dimension->exp == Dimension::mass().exp) return 1;
         return 2;
-      case SymbolRole::time: return 2;
+      case SymbolRole::time: return 3;  // omega t, as a person writes it
       case SymbolRole::coordinate: return 3;
       default: return 4;
     }

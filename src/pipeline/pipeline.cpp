@@ -225,6 +225,7 @@ SweepSpec sweep_spec(const SweepDesc& s) {
   spec.vary = s.vary.text;
   for (const auto& f : s.fix) spec.fix.push_back(f.text);
   for (const auto& p : s.plot) spec.plot.push_back(p.text);
+  if (s.against) spec.against = s.against->text;
   return spec;
 }
 

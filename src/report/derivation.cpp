@@ -58,6 +58,14 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   auto equation = [&](std::string label, ex lhs, ex rhs) { return n.equation(std::move(label), lhs, rhs); };
 
   section("Model");
+  std::optional<FigureMaker> figures;  // made once, for the sketch and every balance
+  if (m.dims() == 1) {
+    figures.emplace(m);
+    if (auto fig = figures->sketch()) {
+      Step* st = step(Step::Kind::figure, fig->caption);
+      st->figure = std::make_shared<const Figure>(std::move(*fig));
+    }
+  }
   for (const auto& a : m.assumptions) bullet("Assumed: " + a + ".");
   // Connections of one kind said once: "sliding at A and sliding at B: a Coulomb sliding ...".
   {
@@ -129,7 +137,6 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   section(has_amb ? "Free body diagrams: linear and angular momentum balance"
                   : "Free body diagrams: linear momentum balance");
   std::pair<std::vector<int>, bool> drawn{{}, false};  // the body or system last drawn
-  std::optional<FigureMaker> figures;                   // made at the first balance
   for (const auto& eq : s.equations) {
     if (eq.kind == Equation::Kind::constraint_acceleration || eq.kind == Equation::Kind::interval) continue;
     if (!eq.bodies.empty() && std::pair{eq.bodies, eq.system} != drawn) {

@@ -129,6 +129,32 @@ SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec
   if (same && common) r.y_unit = si_unit_name(*common);
   r.x_name = x->name;
   r.x_unit = x->unit;
+  r.x_latex = x->tex;
+  // Against an expression in the parameters (figure 12.28 plots against h/l): its value at
+  // each point, in SI (or a pure number).
+  std::optional<NormalForm> against;
+  if (!spec.against.empty()) {
+    auto parsed = parse_expression(spec.against, table);
+    std::string problem;
+    if (!parsed.value) {
+      diags.error(where, "against '" + spec.against + "': " + parsed.problems.front().message);
+    } else if (!parsed.value->has(x->sym)) {
+      diags.error(where, "against '" + trim(spec.against) + "' does not change with " + x->name + " (expected an expression in it, e.g. " + x->name + "/l)");
+    } else if (auto dim = dimension_of(*parsed.value, table, problem); !dim) {
+      diags.error(where, "against '" + trim(spec.against) + "': " + problem);
+    } else {
+      for (const auto& s : table.all())
+        if (s->role != SymbolRole::parameter && parsed.value->has(s->sym))
+          diags.error(where, "against '" + trim(spec.against) + "' uses '" + s->name + "', which is not a parameter");
+      against.emplace(*parsed.value);
+      r.varied_name = r.x_name;
+      r.varied_unit = r.x_unit;
+      r.x_name = trim(spec.against);
+      r.x_unit = dim->exp == Dimension::none().exp ? "" : si_unit_name(*dim);
+      r.x_latex = to_latex(*parsed.value);
+    }
+    diags.throw_if_any();
+  }
   const ex factor = x->unit_to_si;
   const int n = count->to_int();
   r.y.assign(curves.size(), {});
@@ -144,7 +170,12 @@ SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec
     for (const auto& s : table.all())
       if (s->definition)
         if (auto v = value_at(*s->definition, values)) values[s->sym] = *v;
-    r.x.push_back(xv.to_double());
+    if (against) {
+      r.varied.push_back(xv.to_double());
+      r.x.push_back(against->approx_at(values).value_or(std::nan("")));
+    } else {
+      r.x.push_back(xv.to_double());
+    }
     for (std::size_t c = 0; c < curves.size(); ++c) {
       r.y[c].push_back(curve_forms[c].approx_at(values));
     }
@@ -167,15 +198,29 @@ SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec
     }
     r.valid.push_back(valid);
   }
+  // Where the axis' expression is undefined, no curve has a point.
+  bool any = false;
+  for (std::size_t i = 0; i < r.x.size(); ++i) {
+    if (std::isfinite(r.x[i])) any = true;
+    else
+      for (auto& c : r.y) c[i].reset();
+  }
+  if (!any) {
+    diags.error(where, "against '" + trim(spec.against) + "' is undefined over the whole range");
+    diags.throw_if_any();
+  }
   return r;
 }
 
 std::string sweep_csv(const SweepResult& r) {
-  std::string out = r.x_name + (r.x_unit.empty() ? "" : " [" + r.x_unit + "]");
+  std::string out;
+  if (!r.varied.empty()) out += r.varied_name + (r.varied_unit.empty() ? "" : " [" + r.varied_unit + "]") + ",";
+  out += r.x_name + (r.x_unit.empty() ? "" : " [" + r.x_unit + "]");
   for (const auto& n : r.names) out += "," + n + (r.y_unit.empty() ? "" : " [" + r.y_unit + "]");
   out += ",valid\n";
   for (std::size_t i = 0; i < r.x.size(); ++i) {
-    out += num(r.x[i]);
+    if (!r.varied.empty()) out += num(r.varied[i]) + ",";
+    out += std::isfinite(r.x[i]) ? num(r.x[i]) : std::string();  // undefined there: empty
     for (const auto& curve : r.y) out += "," + (curve[i] ? num(*curve[i]) : std::string());
     out += std::string(",") + (r.valid[i] ? "true" : "false") + "\n";
   }
@@ -212,7 +257,14 @@ std::string sweep_svg(const SweepResult& r) {
   // condition fails), a legend. Written by hand: it is a few dozen lines of SVG.
   const double W = 640, H = 420, left = 70, right = 170, top = 40, bottom = 60;
   const double pw = W - left - right, ph = H - top - bottom;
-  double xmin = r.x.front(), xmax = r.x.back(), ymin = 0, ymax = 0;
+  // The axis runs over the finite values (an expression against may fall, or be undefined somewhere).
+  double xmin = 1e300, xmax = -1e300, ymin = 0, ymax = 0;
+  for (const double v : r.x)
+    if (std::isfinite(v)) {
+      xmin = std::min(xmin, v);
+      xmax = std::max(xmax, v);
+    }
+  if (xmax - xmin < 1e-12) xmax = xmin + 1;
   bool any = false;
   for (const auto& c : r.y)
     for (const auto& v : c)
@@ -282,7 +334,7 @@ std::string sweep_svg(const SweepResult& r) {
 
 std::string sweep_pgfplots(const SweepResult& r) {
   std::string out = "\\begin{tikzpicture}\n\\begin{axis}[width=0.8\\textwidth, height=0.5\\textwidth, xlabel={$" +
-                    to_latex(symbol(r.x_name)) + "$" + (r.x_unit.empty() ? "" : " [$" + unit_latex(r.x_unit) + "$]") +
+                    r.x_latex + "$" + (r.x_unit.empty() ? "" : " [$" + unit_latex(r.x_unit) + "$]") +
                     "}, " + (r.y_unit.empty() ? "" : "ylabel={[$" + unit_latex(r.y_unit) + "$]}, ") +
                     "legend pos=outer north east, grid=major, scaled x ticks=false, xticklabel style={/pgf/number format/fixed}]\n";
   // As the SVG: each curve in its colour, solid where every validity condition holds and

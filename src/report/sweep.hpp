@@ -17,6 +17,8 @@ struct SweepSpec {
   std::string vary;                // "h=0:2:41": name=start:end:count, in the parameter's unit
   std::vector<std::string> fix;    // "l=1", in the parameter's unit
   std::vector<std::string> plot;   // expressions in the answers and parameters: "N_A - N_B"
+  std::string against;             // "h/l": the horizontal axis, an expression in the parameters
+                                   // (empty: the varied parameter, in its unit)
 };
 
 

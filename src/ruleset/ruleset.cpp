@@ -228,7 +228,7 @@ struct RuleReader {
     Rule r;
     r.at = where(root, file);
     if (!check_map(root, {"type", "summary", "needs", "optional", "one_of", "unknowns", "loads", "constraints",
-                          "validity", "checks", "assumptions", "dimensions", "assumes_direction"},
+                          "validity", "checks", "assumptions", "dimensions", "assumes_direction", "sketch"},
                    "the rule", file, diags))
       return r;
     r.type = need_scalar(root, "type", "the rule");
@@ -248,6 +248,12 @@ struct RuleReader {
       const auto t = scalar(s, "'assumes_direction'", file, diags);
       if (t && (t->text == "true" || t->text == "false")) r.assumes_direction = t->text == "true";
       else if (t) diags.error(t->at, "'assumes_direction' is '" + t->text + "' (expected true or false)");
+    }
+    if (auto s = root["sketch"]) {
+      const auto t = scalar(s, "'sketch'", file, diags);
+      static const std::vector<std::string> kinds{"line", "spring", "damper", "pulley", "support", "arrow"};
+      if (t && std::find(kinds.begin(), kinds.end(), t->text) != kinds.end()) r.sketch = t->text;
+      else if (t) diags.error(t->at, "'sketch' is '" + t->text + "' (expected line, spring, damper, pulley, support or arrow)");
     }
     if (auto n = root["needs"]) read_args(n, true, r);
     if (auto n = root["optional"]) read_args(n, false, r);

@@ -97,6 +97,10 @@ struct Rule {
   // The rule's loads assume the direction the body moves in (sliding friction opposite it):
   // past a turn the model no longer holds (a simulation ends there).
   bool assumes_direction = false;
+  // How a 1-D mechanism's sketch draws it (`sketch:`): "line" (a string along its path),
+  // "spring", "damper", "pulley" (a sheave at its point), "support" (its body held by the
+  // ground), "arrow" (a force on its body); "" when it is not drawn.
+  std::string sketch;
   std::vector<ArgSpec> args;
   std::vector<std::vector<std::string>> one_of;  // exactly one argument of each group
   std::vector<UnknownSpec> unknowns;

@@ -268,7 +268,14 @@ TEST_CASE("CLI: sweep writes CSV, SVG and pgfplots, and without a range it is a 
   const Run r = run_tackle("sweep " + examples + "figure-12.28-suitcase-normal-forces.yaml --svg " + (dir / "f.svg").string() +
                            " --pgfplots " + (dir / "f.tex").string());
   CHECK(r.code == 0);
-  CHECK(r.out.rfind("h [m],N_A [N],N_B [N],N_A - N_B [N],valid\n", 0) == 0);
+  // The description plots against h/l (l = 1 m): h's column, then the axis'.
+  CHECK(r.out.rfind("h [m],h/l,N_A [N],N_B [N],N_A - N_B [N],valid\n0,0,0.5,0.5,0,true\n", 0) == 0);
+  CHECK(slurp(dir / "f.tex").find("xlabel={$\\frac{h}{l}$}") != std::string::npos);
+  // --against on the command line; --vary alone drops the description's axis.
+  CHECK(run_tackle("sweep " + examples + "figure-12.28-suitcase-normal-forces.yaml --vary h=0:1:2 --against 2*h --plot N_A").out ==
+        "h [m],2*h [m],N_A [N],valid\n0,0,0.5,true\n1,2,0,true\n");
+  CHECK(run_tackle("sweep " + examples + "figure-12.28-suitcase-normal-forces.yaml --vary h=0:1:2 --plot N_A").out ==
+        "h [m],N_A [N],valid\n0,0.5,true\n1,0,true\n");
   CHECK(slurp(dir / "f.svg").find("</svg>") != std::string::npos);
   CHECK(slurp(dir / "f.tex").find("\\begin{axis}") != std::string::npos);
   const Run custom = run_tackle("sweep " + examples + "sample-12.7-suitcase.yaml --vary l=0.5:1:2 --plot N_B");
@@ -462,4 +469,22 @@ TEST_CASE("CLI: a sheet and a key from one seed show the same numbers", "[cli][s
   CHECK(sheet.out.find("Find $T$, $\\ddot{x}_{A}$, $\\ddot{x}_{B}$.") != std::string::npos);
   // Without variants: the description's own numbers.
   CHECK(run_tackle("sheet " + file + " --format markdown").out.find("a force $F$ = 130 N") != std::string::npos);
+}
+
+TEST_CASE("CLI: a sheet shows the mechanism's sketch, and the free body diagrams only when asked", "[cli][sheet]") {
+  const std::string file = examples + "sample-12.3-two-mass-pulley.yaml";
+  auto count = [](const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+  };
+  const Run plain = run_tackle("sheet " + file + " --format markdown");
+  REQUIRE(plain.code == 0);
+  CHECK(count(plain.out, "<figcaption>Sketch of the mechanism</figcaption>") == 1);
+  CHECK(count(plain.out, "<figcaption>Free body diagram") == 0);
+  const Run all = run_tackle("sheet " + file + " --format markdown --figures");
+  CHECK(count(all.out, "<figcaption>Sketch of the mechanism</figcaption>") == 1);
+  CHECK(count(all.out, "<figcaption>Free body diagram") == 2);
+  // The sketch comes before what is asked.
+  CHECK(all.out.find("Sketch of the mechanism") < all.out.find("Find $T$"));
 }

@@ -38,6 +38,42 @@ TEST_CASE("Sweep: figure 12.28, N1, N2 and N1 - N2 against h/l for mg = 1, mu = 
   CHECK(pgf.find("\\addlegendentry{dashed: invalid}") != std::string::npos);
 }
 
+TEST_CASE("Sweep: against h/l, the book's axis, with h's own values beside it", "[sweep]") {
+  // With l fixed at 2 m, h/l is h/2: N_A = m g (1/2 - mu h/l) = 1/2 - (h/l)/2 in N.
+  const auto r = figure_12_28({"h=0:2:5", {"l=2"}, {"N_A"}, "h/l"});
+  REQUIRE(r.x.size() == 5);
+  CHECK(r.x_name == "h/l");
+  CHECK(r.x_unit.empty());
+  CHECK(r.x_latex == "\\frac{h}{l}");
+  for (std::size_t i = 0; i < 5; ++i) {
+    CHECK(r.varied[i] == Approx(0.5 * static_cast<double>(i)));
+    CHECK(r.x[i] == Approx(0.25 * static_cast<double>(i)));
+    CHECK(*r.y[0][i] == Approx(0.5 - r.x[i] / 2).margin(1e-12));
+  }
+  CHECK(sweep_csv(r).rfind("h [m],h/l,N_A [N],valid\n0,0,0.5,true\n0.5,0.25,0.375,true\n", 0) == 0);
+  CHECK(sweep_pgfplots(r).find("xlabel={$\\frac{h}{l}$}") != std::string::npos);
+  // Where the axis is undefined (l/h at h = 0) the point is left out, in the CSV too.
+  const auto inverse = figure_12_28({"h=0:2:3", {}, {"N_A"}, "l/h"});
+  CHECK(!inverse.y[0][0]);
+  CHECK(sweep_csv(inverse).find("\n0,,,") != std::string::npos);
+}
+
+TEST_CASE("Sweep: a bad axis is reported", "[sweep]") {
+  auto errors = [](const std::string& against) {
+    std::vector<std::string> got;
+    try {
+      (void)figure_12_28({"h=0:1:3", {}, {"N_A"}, against});
+    } catch (const InputError& e) {
+      for (const auto& d : e.diagnostics()) got.push_back(d.message);
+    }
+    return got;
+  };
+  CHECK(errors("l") == std::vector<std::string>{"against 'l' does not change with h (expected an expression in it, e.g. h/l)"});
+  CHECK(errors("h + g") == std::vector<std::string>{"against 'h + g': adds an acceleration to a length"});
+  CHECK(errors("h/q") == std::vector<std::string>{"against 'h/q': unknown name 'q' (known: m, g, mu, l, h, t, a_C, N_A, N_B)"});
+  CHECK(errors("h - h") == std::vector<std::string>{"against 'h - h' does not change with h (expected an expression in it, e.g. h/l)"});
+}
+
 TEST_CASE("Sweep: fixed values are in the parameter's unit", "[sweep]") {
   const auto r = figure_12_28({"h=0:1:3", {"mu=0", "g=2"}, {"N_A"}});
   for (std::size_t i = 0; i < 3; ++i) CHECK(*r.y[0][i] == Approx(1.0));  // m g/2 with g = 2

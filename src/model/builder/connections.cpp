@@ -415,6 +415,15 @@ void add_conditions(BuildContext& ctx, Instance& in) {
     if (std::find(ctx.m.assumptions.begin(), ctx.m.assumptions.end(), a.text) == ctx.m.assumptions.end()) ctx.m.assumptions.push_back(a.text);
   }
   ctx.m.connections.push_back({label, rule->summary_for(ctx.m.dims())});
+  if (!rule->sketch.empty()) {
+    Model::Drawing d{rule->sketch, label, {}, -1, -1};
+    for (const auto& spec : rule->args) {  // the first argument of each kind, in the rule's order
+      if (spec.kind == ArgKind::points && d.path.empty() && in.path_args.count(spec.key)) d.path = in.path_args.at(spec.key);
+      if (spec.kind == ArgKind::body && d.body < 0 && in.body_args.count(spec.key)) d.body = in.body_args.at(spec.key);
+      if (spec.kind == ArgKind::point && d.point < 0 && in.point_args.count(spec.key)) d.point = in.point_args.at(spec.key);
+    }
+    ctx.m.drawings.push_back(std::move(d));
+  }
   if (rule->assumes_direction) ctx.m.direction_assumed_by.push_back(label);
   for (const auto& chk : rule->checks) {
     if (!chk.when.empty() && !c.arg(chk.when)) continue;

@@ -124,10 +124,10 @@ std::string statement_of(const SheetProblem& p, bool math) {
   return out + statement.substr(from);
 }
 
-std::vector<const Step*> figures_of(const Derivation& d) {
+std::vector<const Step*> figures_of(const Derivation& d, bool diagrams) {
   std::vector<const Step*> out;
   for (const auto& st : d.steps)
-    if (st.kind == Step::Kind::figure) out.push_back(&st);
+    if (st.kind == Step::Kind::figure && (diagrams || st.figure->sketch)) out.push_back(&st);
   return out;
 }
 

@@ -40,8 +40,9 @@ struct SheetProblem {
 /// LaTeX and HTML (`math`), `140 N` for Markdown. Empty when the problem has no statement.
 [[nodiscard]] std::string statement_of(const SheetProblem& p, bool math);
 
-/// The drawn figures' steps of a derivation.
-[[nodiscard]] std::vector<const Step*> figures_of(const Derivation& d);
+/// The drawn figures' steps of a derivation: the mechanism's sketch, and the free body
+/// diagrams when `diagrams`.
+[[nodiscard]] std::vector<const Step*> figures_of(const Derivation& d, bool diagrams);
 
 /// The key's variant table: its header names ("#", the parameters, the answers).
 [[nodiscard]] std::vector<std::string> variant_head(const KeyEntry& e);

@@ -115,8 +115,7 @@ class MarkdownWriter final : public Writer {
       const std::string statement = statement_of(p, false);
       out += "## Problem " + std::to_string(p.number) + ": " + p.title + "\n\n";
       if (!statement.empty()) out += statement + "\n\n";
-      if (figures)
-        for (const Step* st : figures_of(*p.derivation)) out += markdown_figure(*st);
+      for (const Step* st : figures_of(*p.derivation, figures)) out += markdown_figure(*st);
       out += "Find " + join(asked) + ".\n\n";
     }
     return out;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <set>
 
 #include "figure/figure.hpp"
 #include "../../support/helpers.hpp"
@@ -13,13 +14,28 @@ using namespace tackle;
 
 namespace {
 
-std::vector<Figure> figures_of(const Analysis& a) {
+// The free body diagrams of a derivation (its sketch too when `sketches`).
+std::vector<Figure> figures_of(const Analysis& a, bool sketches = false) {
   std::vector<Figure> out;
   for (const auto& d : explain_phases(a))
     for (const auto& st : d.steps)
-      if (st.kind == Step::Kind::figure) out.push_back(*st.figure);
+      if (st.kind == Step::Kind::figure && (sketches || !st.figure->sketch)) out.push_back(*st.figure);
   return out;
 }
+
+std::optional<Figure> sketch_of(const std::string& example) {
+  return mechanism_sketch(analyze_file(TACKLE_SOURCE_DIR "/examples/" + example, test::rules())->model);
+}
+
+std::vector<FigureOutline> outlines_of(const Figure& f, FigureOutline::Shape shape) {
+  std::vector<FigureOutline> out;
+  for (const auto& o : f.outlines)
+    if (o.shape == shape) out.push_back(o);
+  return out;
+}
+
+bool is_horizontal(const FigureLine& l) { return l.points.size() == 2 && std::fabs(l.points[0].y - l.points[1].y) < 1e-9; }
+bool is_vertical(const FigureLine& l) { return l.points.size() == 2 && std::fabs(l.points[0].x - l.points[1].x) < 1e-9; }
 
 const FigureArrow* arrow(const Figure& f, const std::string& tex) {
   for (const auto& a : f.arrows)
@@ -111,10 +127,10 @@ TEST_CASE("FBD: in every example no label lies on another and no arrow lies on a
   std::size_t drawn = 0;
   for (const auto& file : files) {
     const auto a = analyze_file(file, test::rules());
-    for (const Figure& f : figures_of(*a)) {
+    for (const Figure& f : figures_of(*a, true)) {
       ++drawn;
       INFO(file << ": " << f.caption);
-      std::vector<FigureLabel> labels;
+      std::vector<FigureLabel> labels = f.texts;
       for (const auto& x : f.arrows) labels.push_back(x.label);
       for (const auto& d : f.dots)
         if (d.label) labels.push_back(*d.label);
@@ -143,7 +159,7 @@ TEST_CASE("FBD: in every example no label lies on another and no arrow lies on a
       }
     }
   }
-  CHECK(drawn >= 40);
+  CHECK(drawn >= 50);
 }
 
 TEST_CASE("FBD: labels in SVG keep their subscripts, Greek letters and dots", "[figure]") {
@@ -202,4 +218,79 @@ connections:
   REQUIRE(t);
   CHECK(near(t->from, dot_named(figs[0], "B")));
   CHECK(t->to.y > t->from.y);
+}
+
+TEST_CASE("Sketch: the Atwood machine hangs from the ceiling over one sheave, its strands tangent to it", "[figure][sketch]") {
+  const auto f = sketch_of("atwood-machine.yaml");
+  REQUIRE(f);
+  CHECK(f->sketch);
+  CHECK(f->caption == "Sketch of the mechanism");
+  const auto sheaves = outlines_of(*f, FigureOutline::Shape::circle);
+  const auto blocks = outlines_of(*f, FigureOutline::Shape::polygon);
+  REQUIRE(sheaves.size() == 1);
+  REQUIRE(blocks.size() == 2);
+  const FigureOutline& c = sheaves[0];
+  // Both blocks hang below the sheave (y points up), A (y_A = -2) above B (y_B = -3).
+  auto centre_y = [](const FigureOutline& o) { return (o.corners[0].y + o.corners[2].y) / 2; };
+  CHECK(blocks[0].name == "A");
+  CHECK(centre_y(blocks[0]) < c.centre.y);
+  CHECK(centre_y(blocks[1]) < centre_y(blocks[0]));
+  // Two vertical strands leave the sheave's sides at its centre's height, one to each block.
+  std::vector<double> xs;
+  for (const auto& l : f->lines)
+    if (!l.thin && is_vertical(l) && std::fabs(std::max(l.points[0].y, l.points[1].y) - c.centre.y) < 1e-9) xs.push_back(l.points[0].x);
+  std::sort(xs.begin(), xs.end());
+  REQUIRE(xs.size() == 2);
+  CHECK(std::fabs(xs[0] - (c.centre.x - c.radius)) < 1e-9);
+  CHECK(std::fabs(xs[1] - (c.centre.x + c.radius)) < 1e-9);
+  // The ceiling: a horizontal line above the sheave, hatched.
+  CHECK(std::any_of(f->lines.begin(), f->lines.end(), [&](const FigureLine& l) {
+    return !l.thin && is_horizontal(l) && l.points[0].y > c.centre.y + c.radius;
+  }));
+  CHECK(std::count_if(f->lines.begin(), f->lines.end(), [](const FigureLine& l) { return l.thin; }) >= 3);
+}
+
+TEST_CASE("Sketch: sample 12.3's string turns around three sheaves, F pulls A to the left", "[figure][sketch]") {
+  const auto f = sketch_of("sample-12.3-two-mass-pulley.yaml");
+  REQUIRE(f);
+  // Its path pB, C, pB, C, pA, C turns back at C, at pB and at pA: three sheaves, one a
+  // fixed pulley and one in each block.
+  CHECK(outlines_of(*f, FigureOutline::Shape::circle).size() == 3);
+  const auto blocks = outlines_of(*f, FigureOutline::Shape::polygon);
+  REQUIRE(blocks.size() == 2);
+  const FigureArrow* F = arrow(*f, "F");
+  REQUIRE(F);
+  CHECK(F->to.x < F->from.x);
+  double left = 1e300;
+  for (const auto& p : blocks[0].corners) left = std::min(left, p.x);
+  CHECK(std::fabs(F->from.x - left) < 1e-9);
+  // The strands lie in four lanes, one above the other.
+  std::set<long long> lanes;
+  for (const auto& l : f->lines)
+    if (!l.thin && is_horizontal(l)) lanes.insert(std::llround(l.points[0].y * 1000));
+  CHECK(lanes.size() >= 4);
+}
+
+TEST_CASE("Sketch: springs are coiled, a damper is a dashpot, the walls are hatched", "[figure][sketch]") {
+  const auto f = sketch_of("three-blocks-on-springs.yaml");
+  REQUIRE(f);
+  CHECK(outlines_of(*f, FigureOutline::Shape::polygon).size() == 3);
+  CHECK(outlines_of(*f, FigureOutline::Shape::circle).empty());
+  // Three springs as zigzags (many points each), the two walls as vertical lines at W and V.
+  CHECK(std::count_if(f->lines.begin(), f->lines.end(), [](const FigureLine& l) { return l.points.size() > 6; }) == 3);
+  CHECK(std::count_if(f->lines.begin(), f->lines.end(), [](const FigureLine& l) { return !l.thin && is_vertical(l) && std::fabs(l.points[0].y - l.points[1].y) > 1; }) == 2);
+  // The dashpot's cylinder: four points, open towards the wall V.
+  CHECK(std::count_if(f->lines.begin(), f->lines.end(), [](const FigureLine& l) { return l.points.size() == 4; }) == 1);
+}
+
+TEST_CASE("Sketch: only 1-D mechanisms with a string, spring or damper are sketched", "[figure][sketch]") {
+  CHECK(!sketch_of("sample-12.7-suitcase.yaml"));     // 2-D
+  CHECK(!sketch_of("box-in-a-truck-system.yaml"));   // 1-D, nothing between the bodies to draw
+  CHECK(sketch_of("sample-12.1-towing.yaml"));       // a tow rope
+  // In a derivation it opens the model, before the free body diagrams.
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/atwood-machine.yaml", test::rules());
+  const auto figs = figures_of(*a, true);
+  REQUIRE(figs.size() == 4);
+  CHECK(figs[0].sketch);
+  CHECK(!figs[1].sketch);
 }

@@ -1,0 +1,180 @@
+// The plane geometry the figures share (internal to src/figure/): points on paper, outlines,
+// and the greedy placement of labels where nothing else is drawn.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "figure/figure.hpp"
+
+namespace tackle::fig {
+
+struct V {
+  double x = 0, y = 0;
+};
+inline V operator+(V a, V b) { return {a.x + b.x, a.y + b.y}; }
+inline V operator-(V a, V b) { return {a.x - b.x, a.y - b.y}; }
+inline V operator*(double s, V a) { return {s * a.x, s * a.y}; }
+inline double dot(V a, V b) { return a.x * b.x + a.y * b.y; }
+inline double cross(V a, V b) { return a.x * b.y - a.y * b.x; }
+inline double len(V a) { return std::hypot(a.x, a.y); }
+inline V normalized(V a) { return (1 / len(a)) * a; }
+inline V perp(V a) { return {-a.y, a.x}; }
+inline FigurePoint fp(V a) { return {a.x, a.y}; }
+inline V vp(FigurePoint a) { return {a.x, a.y}; }
+
+
+// Sizes in drawing units (about centimetres).
+constexpr double body_extent = 3.2;   // the largest drawn body
+constexpr double particle_side = 1.2; // a body drawn around one point
+constexpr double arrow_length = 1.2;
+constexpr double spacing = 0.38;      // between parallel arrows that would overlap
+constexpr double char_width = 0.2, label_height = 0.42, gap = 0.1;
+
+
+inline bool inside(const FigureOutline& o, V p) {
+  if (o.shape == FigureOutline::Shape::circle) return len(p - vp(o.centre)) < o.radius;
+  bool in = false;
+  const auto& c = o.corners;
+  for (std::size_t i = 0, j = c.size() - 1; i < c.size(); j = i++) {
+    if ((c[i].y > p.y) != (c[j].y > p.y) && p.x < (c[j].x - c[i].x) * (p.y - c[i].y) / (c[j].y - c[i].y) + c[i].x) in = !in;
+  }
+  return in;
+}
+
+inline double segment_distance(V p, V a, V b) {
+  const V ab = b - a;
+  const double l2 = dot(ab, ab);
+  const double t = l2 == 0 ? 0 : std::clamp(dot(p - a, ab) / l2, 0.0, 1.0);
+  return len(p - (a + t * ab));
+}
+
+inline double boundary_distance(const FigureOutline& o, V p) {
+  if (o.shape == FigureOutline::Shape::circle) return std::fabs(len(p - vp(o.centre)) - o.radius);
+  double d = 1e300;
+  for (std::size_t i = 0; i < o.corners.size(); ++i)
+    d = std::min(d, segment_distance(p, vp(o.corners[i]), vp(o.corners[(i + 1) % o.corners.size()])));
+  return d;
+}
+
+// Where the ray from p along u leaves the outline (p inside it).
+inline V exit_point(const FigureOutline& o, V p, V u) {
+  double lo = 0, hi = 4 * body_extent;
+  for (int i = 0; i < 40; ++i) {
+    const double mid = (lo + hi) / 2;
+    (inside(o, p + mid * u) ? lo : hi) = mid;
+  }
+  return p + hi * u;
+}
+
+inline std::vector<FigurePoint> convex_hull(std::vector<V> p) {
+  std::sort(p.begin(), p.end(), [](V a, V b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  std::vector<V> h(2 * p.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(h[k - 1] - h[k - 2], p[i] - h[k - 2]) <= 0) --k;
+    h[k++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
+    while (k >= t && cross(h[k - 1] - h[k - 2], p[i - 1] - h[k - 2]) <= 0) --k;
+    h[k++] = p[i - 1];
+  }
+  h.resize(k > 1 ? k - 1 : k);
+  std::vector<FigurePoint> out;
+  for (V v : h) out.push_back(fp(v));
+  return out;
+}
+
+inline FigureOutline rectangle(V centre, V along, double w, double h) {
+  const V u = normalized(along), n = perp(u);
+  FigureOutline o;
+  for (auto [a, b] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
+    o.corners.push_back(fp(centre + (a * w / 2) * u + (b * h / 2) * n));
+  return o;
+}
+
+struct Box {
+  V c;
+  double w, h;
+};
+inline bool overlaps(const Box& a, const Box& b) {
+  return std::fabs(a.c.x - b.c.x) * 2 < a.w + b.w && std::fabs(a.c.y - b.c.y) * 2 < a.h + b.h;
+}
+// Whether the segment p-q passes through the box (Liang-Barsky clipping).
+inline bool box_hits_segment(const Box& b, V p, V q) {
+  double t0 = 0, t1 = 1;
+  const V d = q - p;
+  const double lo[2] = {b.c.x - b.w / 2, b.c.y - b.h / 2}, hi[2] = {b.c.x + b.w / 2, b.c.y + b.h / 2};
+  const double s[2] = {p.x, p.y}, ds[2] = {d.x, d.y};
+  for (int k = 0; k < 2; ++k) {
+    if (std::fabs(ds[k]) < 1e-12) {
+      if (s[k] <= lo[k] || s[k] >= hi[k]) return false;
+      continue;
+    }
+    double a = (lo[k] - s[k]) / ds[k], c = (hi[k] - s[k]) / ds[k];
+    if (a > c) std::swap(a, c);
+    t0 = std::max(t0, a);
+    t1 = std::min(t1, c);
+    if (t0 >= t1) return false;
+  }
+  return true;
+}
+
+class Layout {
+ public:
+  explicit Layout(Figure& f) : f_(f) {}
+
+  // A label near `anchor`, tried at the candidate centres in order; the first that touches
+  // nothing wins, else the one that touches least.
+  FigureLabel place(const std::string& tex, const std::vector<V>& candidates) {
+    FigureLabel l;
+    l.tex = tex;
+    l.width = char_width * static_cast<double>(shown_length(tex)) + 0.12;
+    l.height = label_height;
+    double best = 1e300;
+    V at = candidates.front();
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+      const double p = penalty({candidates[i], l.width, l.height}) + 0.01 * static_cast<double>(i);
+      if (p < best) {
+        best = p;
+        at = candidates[i];
+      }
+    }
+    l.at = fp(at);
+    boxes_.push_back({at, l.width, l.height});
+    return l;
+  }
+
+ private:
+  double penalty(const Box& b) const {
+    double p = 0;
+    for (const auto& o : boxes_)
+      if (overlaps(b, o)) p += 100;
+    for (const auto& a : f_.arrows)
+      if (box_hits_segment(b, vp(a.from), vp(a.to))) p += 10;
+    for (const auto& l : f_.lines)
+      for (std::size_t i = 1; i < l.points.size(); ++i)
+        if (box_hits_segment(b, vp(l.points[i - 1]), vp(l.points[i]))) p += l.thin ? 3 : 10;
+    for (const auto& t : f_.texts)
+      if (overlaps(b, {vp(t.at), t.width, t.height})) p += 100;
+    for (const auto& o : f_.outlines) {
+      for (V c : {b.c, b.c + V{b.w / 2, b.h / 2}, b.c + V{-b.w / 2, b.h / 2}, b.c + V{b.w / 2, -b.h / 2}, b.c + V{-b.w / 2, -b.h / 2}})
+        if (inside(o, c)) p += 3;
+      if (o.shape == FigureOutline::Shape::polygon)
+        for (std::size_t i = 0; i < o.corners.size(); ++i)
+          if (box_hits_segment(b, vp(o.corners[i]), vp(o.corners[(i + 1) % o.corners.size()]))) p += 5;
+    }
+    for (const auto& d : f_.dots)
+      if (std::fabs(d.at.x - b.c.x) * 2 < b.w + 0.1 && std::fabs(d.at.y - b.c.y) * 2 < b.h + 0.1) p += 10;
+    return p;
+  }
+  Figure& f_;
+  std::vector<Box> boxes_;
+};
+
+/// Bounds of everything drawn, then the axes at the lower left, outside it: `directions`
+/// are the axes' directions on paper, `names` their names.
+void finish(Figure& f, const std::vector<V>& directions, const std::vector<std::string>& names);
+
+}  // namespace tackle::fig

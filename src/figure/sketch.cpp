@@ -1,0 +1,418 @@
+// The sketch of a 1-D mechanism: blocks at their positions along the axis, each string's
+// strands side by side in lanes (a strand turns around a sheave where its path reverses),
+// springs and dampers, the ground where points are fixed, the applied forces and the axis.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "expr/print.hpp"
+#include "figure/figure.hpp"
+#include "figure/geometry.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+using namespace fig;
+
+namespace {
+
+constexpr double lane_gap = 1.0;      // between strands side by side (drawing units)
+constexpr double sheave_radius = 0.5; // strands in neighbouring lanes are tangent to it
+constexpr double block_length = 1.0;  // a block's size along the axis
+constexpr double margin = 0.45;       // a block's edge beyond the strands fixed to it
+constexpr double hatch = 0.22;
+
+// A strand of a path: between two points' positions along the axis, in one lane.
+struct Strand {
+  double s0, s1;  // along the axis, drawing units
+  double lat;     // across it
+  std::string as; // line, spring, damper
+  int from, to;   // points
+};
+
+// Where a path meets a point: its end, a strand passing it, or a sheave it turns around.
+struct Meeting {
+  int point;
+  double s, lat;  // the sheave's centre, for a sheave
+  enum class Kind { end, pass, sheave } kind;
+  bool pulley = false;  // a pulley connection is at the point (its axle is drawn)
+};
+
+// A block as drawn: its extent along and across the axis.
+struct Block {
+  int body;
+  double s_lo, s_hi, lat_lo, lat_hi;
+};
+
+std::vector<FigurePoint> zigzag(V a, V b, V across) {
+  // Straight leads, then coils.
+  const double l = len(b - a);
+  const V u = normalized(b - a);
+  const double lead = std::min(0.25, 0.2 * l);
+  const int n = std::max(4, static_cast<int>((l - 2 * lead) / 0.22));
+  std::vector<FigurePoint> out{fp(a), fp(a + lead * u)};
+  for (int i = 0; i < n; ++i) {
+    const double t = lead + (i + 0.5) * (l - 2 * lead) / n;
+    out.push_back(fp(a + t * u + ((i % 2 ? -1 : 1) * 0.18) * across));
+  }
+  out.push_back(fp(b - lead * u));
+  out.push_back(fp(b));
+  return out;
+}
+
+}  // namespace
+
+std::optional<Figure> mechanism_sketch(const Model& m) { return FigureMaker(m).sketch(); }
+
+std::optional<Figure> FigureMaker::sketch() const {
+  const Model& m = m_;
+  auto is_path = [](const Model::Drawing& d) {
+    return d.path.size() >= 2 && (d.as == "line" || d.as == "spring" || d.as == "damper");
+  };
+  if (m.dims() != 1 || std::none_of(m.drawings.begin(), m.drawings.end(), is_path)) return std::nullopt;
+  PersonOrder order(factor_rank({m.symbols}));
+
+  // The axis on paper: vertical when gravity acts along it (up the page against it).
+  // An axis named y or z is drawn vertical, as a person would.
+  V axis{1, 0};
+  if (m.axes[0] == "y" || m.axes[0] == "z") axis = {0, 1};
+  if (m.gravity)
+    if (auto g = number((*m.gravity)[0]); g && *g != 0) axis = {0, *g < 0 ? 1.0 : -1.0};
+  const V across = axis.x != 0 ? V{0, 1} : V{1, 0};
+  auto at = [&](double s, double lat) { return s * axis + lat * across; };
+
+  // Positions along the axis, in model units: the points the drawings use and every body.
+  std::vector<std::optional<double>> pos(m.points.size());
+  std::vector<std::optional<double>> body_pos(m.bodies.size());
+  std::vector<double> used;
+  auto need_point = [&](int p) {
+    if (!pos[p]) pos[p] = number(m.points[p].position[0]);
+    if (pos[p]) used.push_back(*pos[p]);
+    return pos[p].has_value();
+  };
+  std::set<int> supported, anchored_points;
+  std::map<int, bool> pulley_at;
+  for (const auto& d : m.drawings) {
+    for (int p : d.path)
+      if (!need_point(p)) return std::nullopt;
+    if (d.as == "pulley" && d.point >= 0) pulley_at[d.point] = true;
+    if (d.as == "support" && d.body >= 0) supported.insert(d.body);
+  }
+  // A block unless its mass is 0 (a pulley block, drawn as its sheaves).
+  auto massive = [&](const Body& b) { return !(b.has_mass && b.mass.is_zero()); };
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    body_pos[b] = number(m.bodies[b].has_cm ? m.bodies[b].cm[0] : m.bodies[b].coord);
+    if (!body_pos[b]) return std::nullopt;
+    if (massive(m.bodies[b])) used.push_back(*body_pos[b]);
+  }
+  std::sort(used.begin(), used.end());
+  double extent = used.back() - used.front(), closest = 1e300;
+  for (std::size_t i = 1; i < used.size(); ++i)
+    if (used[i] - used[i - 1] > 1e-9 * (1 + extent)) closest = std::min(closest, used[i] - used[i - 1]);
+  // About 8 units long in all, things apart by at least 2.2 units where that fits in 12.
+  double scale = extent > 1e-12 ? std::min(2.5, 8 / extent) : 1;
+  if (closest < 1e300 && closest * scale < 2.2) scale = std::min(2.2 / closest, extent > 1e-12 ? 12 / extent : 2.2 / closest);
+  auto s_of = [&](int p) { return scale * *pos[p]; };
+
+  // Strands in lanes: each path takes the lowest free lanes (0, 1, -1, 2, ...); it moves to
+  // the next lane where it turns back around a point.
+  std::vector<Strand> strands;
+  std::vector<Meeting> meetings;
+  std::map<int, std::vector<std::pair<double, double>>> busy;
+  for (const auto& d : m.drawings) {
+    if (!is_path(d)) continue;
+    const std::size_t n = d.path.size();
+    std::vector<int> rel(n - 1, 0);
+    int lane = 0;
+    double last = 0;  // the direction of the last strand that has a length
+    for (std::size_t k = 0; k + 1 < n; ++k) {
+      const double dir = s_of(d.path[k + 1]) - s_of(d.path[k]);
+      if (std::fabs(dir) > 1e-9) {
+        if (last * dir < 0) ++lane;
+        last = dir;
+      }
+      rel[k] = lane;
+    }
+    auto fits = [&](int base) {
+      for (std::size_t k = 0; k + 1 < n; ++k) {
+        const double a = std::min(s_of(d.path[k]), s_of(d.path[k + 1])), b = std::max(s_of(d.path[k]), s_of(d.path[k + 1]));
+        if (b - a < 1e-9) continue;
+        for (const auto& [lo, hi] : busy[base + rel[k]])
+          if (std::min(hi, b) - std::max(lo, a) > 1e-6) return false;
+      }
+      return true;
+    };
+    int base = 0;
+    for (int tries = 0; tries < 64; ++tries) {
+      base = ((tries + 1) / 2) * (tries % 2 ? 1 : -1);
+      if (fits(base)) break;
+    }
+    for (std::size_t k = 0; k + 1 < n; ++k) {
+      const double a = s_of(d.path[k]), b = s_of(d.path[k + 1]);
+      if (std::fabs(b - a) < 1e-9) continue;
+      busy[base + rel[k]].push_back({std::min(a, b), std::max(a, b)});
+      strands.push_back({a, b, lane_gap * (base + rel[k]), d.as, d.path[k], d.path[k + 1]});
+    }
+    auto meet = [&](int p, double lat, Meeting::Kind kind) {
+      meetings.push_back({p, s_of(p), lat, kind, pulley_at.count(p) > 0});
+    };
+    meet(d.path.front(), lane_gap * (base + rel.front()), Meeting::Kind::end);
+    for (std::size_t k = 1; k + 1 < n; ++k) {
+      if (rel[k] != rel[k - 1]) meet(d.path[k], lane_gap * (base + 0.5 * (rel[k - 1] + rel[k])), Meeting::Kind::sheave);
+      else meet(d.path[k], lane_gap * (base + rel[k]), Meeting::Kind::pass);
+    }
+    meet(d.path.back(), lane_gap * (base + rel.back()), Meeting::Kind::end);
+  }
+  auto reach = [](const Meeting& t) { return t.kind == Meeting::Kind::sheave ? sheave_radius : 0.0; };
+
+  Figure f;
+  // Blocks: the bodies with mass, at their positions, across the lanes fixed to them; a
+  // point of the body away from the block hangs from it.
+  std::vector<Block> blocks;
+  std::vector<std::pair<V, V>> hangers;
+  for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+    const Body& body = m.bodies[b];
+    if (!massive(body)) continue;
+    const double c = scale * *body_pos[b];
+    Block k{static_cast<int>(b), c - block_length / 2, c + block_length / 2, 1e300, -1e300};
+    for (const auto& t : meetings) {
+      if (m.points[t.point].body != static_cast<int>(b)) continue;
+      const double extra = t.kind == Meeting::Kind::sheave ? sheave_radius + 0.25 : margin;
+      k.lat_lo = std::min(k.lat_lo, t.lat - extra);
+      k.lat_hi = std::max(k.lat_hi, t.lat + extra);
+      if (std::fabs(t.s - c) <= block_length / 2 + 1e-9) {
+        k.s_lo = std::min(k.s_lo, t.s - reach(t) - 0.25 * (t.kind == Meeting::Kind::sheave));
+        k.s_hi = std::max(k.s_hi, t.s + reach(t) + 0.25 * (t.kind == Meeting::Kind::sheave));
+      }
+    }
+    if (k.lat_lo > k.lat_hi) k.lat_lo = -margin, k.lat_hi = margin;
+    // Wide enough for its name.
+    const double name = char_width * static_cast<double>(shown_length(default_tex(body.name))) + 0.3;
+    if (axis.x != 0 && k.s_hi - k.s_lo < name) k.s_lo = c - name / 2, k.s_hi = c + name / 2;
+    if (axis.x == 0 && k.lat_hi - k.lat_lo < name) {
+      const double mid = (k.lat_lo + k.lat_hi) / 2;
+      k.lat_lo = mid - name / 2;
+      k.lat_hi = mid + name / 2;
+    }
+    for (const auto& t : meetings) {
+      if (m.points[t.point].body != static_cast<int>(b) || (t.s >= k.s_lo - 1e-9 && t.s <= k.s_hi + 1e-9)) continue;
+      const double edge = t.s > k.s_hi ? k.s_hi : k.s_lo, dir = t.s > k.s_hi ? 1 : -1;
+      hangers.push_back({at(edge, t.lat), at(t.s - dir * reach(t), t.lat)});
+    }
+    blocks.push_back(k);
+    FigureOutline o;
+    for (auto [s, l] : {std::pair{k.s_lo, k.lat_lo}, {k.s_hi, k.lat_lo}, {k.s_hi, k.lat_hi}, {k.s_lo, k.lat_hi}}) o.corners.push_back(fp(at(s, l)));
+    o.name = body.name;
+    f.outlines.push_back(o);
+  }
+  auto block_of = [&](int point) -> const Block* {
+    for (const auto& k : blocks)
+      if (k.body == m.points[point].body) return &k;
+    return nullptr;
+  };
+
+  // Sheaves, over the blocks they are fixed to.
+  for (const auto& t : meetings)
+    if (t.kind == Meeting::Kind::sheave) {
+      FigureOutline o;
+      o.shape = FigureOutline::Shape::circle;
+      o.centre = fp(at(t.s, t.lat));
+      o.radius = sheave_radius;
+      o.name = m.points[t.point].name;
+      f.outlines.push_back(o);
+      if (t.pulley) f.dots.push_back({o.centre, std::nullopt});
+    }
+
+  // The strands: a string's end on a block is tied to its edge.
+  for (const auto& st : strands) {
+    double a = st.s0, b = st.s1;
+    const double dir = b > a ? 1 : -1;
+    if (const Block* k = block_of(st.from); k && a >= k->s_lo - 1e-9 && a <= k->s_hi + 1e-9 &&
+                                            !std::any_of(meetings.begin(), meetings.end(), [&](const Meeting& t) {
+                                              return t.point == st.from && t.kind == Meeting::Kind::sheave && std::fabs(t.s - a) < 1e-9 &&
+                                                     std::fabs(std::fabs(t.lat - st.lat) - sheave_radius) < 1e-9;
+                                            }))
+      a = dir > 0 ? k->s_hi : k->s_lo;
+    if (const Block* k = block_of(st.to); k && b >= k->s_lo - 1e-9 && b <= k->s_hi + 1e-9 &&
+                                          !std::any_of(meetings.begin(), meetings.end(), [&](const Meeting& t) {
+                                            return t.point == st.to && t.kind == Meeting::Kind::sheave && std::fabs(t.s - b) < 1e-9 &&
+                                                   std::fabs(std::fabs(t.lat - st.lat) - sheave_radius) < 1e-9;
+                                          }))
+      b = dir > 0 ? k->s_lo : k->s_hi;
+    if ((b - a) * dir <= 1e-9) continue;
+    const V p = at(a, st.lat), q = at(b, st.lat);
+    if (st.as == "spring") {
+      f.lines.push_back({zigzag(p, q, across), false});
+    } else if (st.as == "damper") {
+      // A dashpot: the cylinder open towards the far end, the piston in it.
+      const V u = normalized(q - p);
+      const double l = len(q - p), mid = l / 2, h = 0.22, w = std::min(0.35, 0.3 * l);
+      f.lines.push_back({{fp(p), fp(p + (mid - w) * u)}, false});
+      f.lines.push_back({{fp(p + (mid + w) * u + h * across), fp(p + (mid - w) * u + h * across), fp(p + (mid - w) * u - h * across),
+                          fp(p + (mid + w) * u - h * across)},
+                         false});
+      f.lines.push_back({{fp(p + mid * u + 0.7 * h * across), fp(p + mid * u - 0.7 * h * across)}, false});
+      f.lines.push_back({{fp(p + mid * u), fp(q)}, false});
+    } else {
+      f.lines.push_back({{fp(p), fp(q)}, false});
+    }
+  }
+  for (const auto& [p, q] : hangers) f.lines.push_back({{fp(p), fp(q)}, false});
+
+  // The ground: where a point is fixed (or its body held), beyond it, away from the moving
+  // bodies; below everything, with a post, when moving bodies are on both sides of it.
+  double lowest = 0;
+  for (const auto& st : strands) lowest = std::min(lowest, st.lat);
+  for (const auto& k : blocks) lowest = std::min(lowest, k.lat_lo);
+  for (const auto& t : meetings) lowest = std::min(lowest, t.lat - reach(t));
+  std::vector<double> moving;
+  for (const auto& k : blocks) moving.push_back(0.5 * (k.s_lo + k.s_hi));
+  for (const auto& t : meetings) {
+    const int b = m.points[t.point].body;
+    if (b >= 0 && !supported.count(b)) moving.push_back(t.s);
+  }
+  struct Ground {
+    double s, dir;  // dir 0: a floor below, with a post at s
+    double lo = 1e300, hi = -1e300, depth = 0;
+  };
+  std::vector<Ground> grounds;
+  std::vector<std::pair<Meeting, std::size_t>> fixed;  // meeting, its ground
+  std::set<std::pair<int, long long>> seen;
+  for (const auto& t : meetings) {
+    const int b = m.points[t.point].body;
+    if ((b >= 0 && !supported.count(b)) || t.kind == Meeting::Kind::pass) continue;
+    if (!seen.insert({t.point, std::llround(t.lat * 1000)}).second) continue;
+    const bool below = std::any_of(moving.begin(), moving.end(), [&](double s) { return s < t.s - 1e-6; });
+    const bool above = std::any_of(moving.begin(), moving.end(), [&](double s) { return s > t.s + 1e-6; });
+    const double dir = !above ? 1 : !below ? -1 : 0;
+    auto it = std::find_if(grounds.begin(), grounds.end(), [&](const Ground& g) { return g.dir == dir && std::fabs(g.s - t.s) < 1e-6; });
+    if (it == grounds.end()) it = grounds.insert(grounds.end(), Ground{t.s, dir});
+    it->lo = std::min(it->lo, t.lat);
+    it->hi = std::max(it->hi, t.lat);
+    it->depth = std::max(it->depth, reach(t) > 0 ? reach(t) + 0.35 : 0.0);
+    fixed.push_back({t, static_cast<std::size_t>(it - grounds.begin())});
+  }
+  for (const auto& [t, gi] : fixed) {
+    const Ground& g = grounds[gi];
+    if (g.dir != 0) {
+      const double sg = g.s + g.dir * g.depth;
+      if (std::fabs(sg - (t.s + g.dir * reach(t))) > 1e-9) f.lines.push_back({{fp(at(t.s + g.dir * reach(t), t.lat)), fp(at(sg, t.lat))}, false});
+    }
+  }
+  for (const auto& g : grounds) {
+    if (g.dir != 0) {
+      const double sg = g.s + g.dir * g.depth, lo = g.lo - 0.6, hi = g.hi + 0.6;
+      f.lines.push_back({{fp(at(sg, lo)), fp(at(sg, hi))}, false});
+      for (double l = lo; l <= hi + 1e-9; l += 0.25) f.lines.push_back({{fp(at(sg, l)), fp(at(sg + g.dir * hatch, l + hatch))}, true});
+    } else {
+      // The post, broken where a strand passes it.
+      const double floor = lowest - 0.9;
+      std::vector<double> passing;
+      for (const auto& t : meetings)
+        if (t.kind == Meeting::Kind::pass && std::fabs(t.s - g.s) < 1e-6 && t.lat > floor && t.lat < g.hi) passing.push_back(t.lat);
+      std::sort(passing.begin(), passing.end());
+      double from = floor;
+      for (double l : passing) {
+        if (l - 0.12 > from) f.lines.push_back({{fp(at(g.s, from)), fp(at(g.s, l - 0.12))}, false});
+        from = l + 0.12;
+      }
+      f.lines.push_back({{fp(at(g.s, from)), fp(at(g.s, g.hi))}, false});
+      f.lines.push_back({{fp(at(g.s - 0.6, floor)), fp(at(g.s + 0.6, floor))}, false});
+      for (double s = g.s - 0.6; s <= g.s + 0.6 + 1e-9; s += 0.25) f.lines.push_back({{fp(at(s, floor)), fp(at(s + hatch, floor - hatch))}, true});
+    }
+  }
+  // A string's end tied to a fixed point or a massless body: a dot.
+  for (const auto& t : meetings)
+    if (t.kind == Meeting::Kind::end && !block_of(t.point)) f.dots.push_back({fp(at(t.s, t.lat)), std::nullopt});
+
+  // Applied forces, from the edge of their block (or the sheave of a massless body).
+  struct Pull {
+    V tail, dir;
+    std::string tex;
+  };
+  std::vector<Pull> pulls;
+  for (const auto& d : m.drawings) {
+    if (d.as != "arrow" || d.body < 0) continue;
+    for (const auto& l : m.loads) {
+      if (l.source != d.label || l.body != d.body) continue;
+      const auto v = number(l.force[0]);
+      if (!v || std::fabs(*v) < 1e-12) continue;
+      const double dir = *v > 0 ? 1 : -1;
+      const ex shown = *v > 0 ? l.force[0] : -l.force[0];
+      double s = scale * *body_pos[d.body], lat = 0;
+      if (auto k = std::find_if(blocks.begin(), blocks.end(), [&](const Block& b) { return b.body == d.body; }); k != blocks.end()) {
+        s = dir > 0 ? k->s_hi : k->s_lo;
+        lat = 0.5 * (k->lat_lo + k->lat_hi);
+      } else {
+        for (const auto& t : meetings)
+          if (m.points[t.point].body == d.body) {
+            s = t.s + dir * reach(t);
+            lat = t.lat;
+            break;
+          }
+      }
+      pulls.push_back({at(s, lat), dir * axis, to_latex(shown)});
+    }
+  }
+  for (const auto& p : pulls) {
+    FigureArrow a;
+    a.from = fp(p.tail);
+    a.to = fp(p.tail + arrow_length * p.dir);
+    a.label.tex = p.tex;
+    f.arrows.push_back(a);
+  }
+
+  // Labels: the forces' at their heads, then the points' names (fixed points, sheaves, the
+  // points of a body away from its own name).
+  Layout lay(f);
+  for (auto& a : f.arrows) {
+    const V t = vp(a.from), h = vp(a.to), u = normalized(h - t), n = perp(u);
+    const double w = char_width * static_cast<double>(shown_length(a.label.tex)) + 0.12;
+    const double out = 0.5 * (std::fabs(u.x) * w + std::fabs(u.y) * label_height) + gap;
+    const double side = 0.5 * (std::fabs(n.x) * w + std::fabs(n.y) * label_height) + gap;
+    a.label = lay.place(a.label.tex, {h + out * u, 0.5 * (t + h) + side * n, 0.5 * (t + h) - side * n});
+  }
+  // Each block's name inside it, or beside it when a sheave or a strand is in the way.
+  for (const auto& k : blocks) {
+    const std::string tex = default_tex(m.bodies[k.body].name);
+    const V c = at(0.5 * (k.s_lo + k.s_hi), 0.5 * (k.lat_lo + k.lat_hi));
+    const double w = char_width * static_cast<double>(shown_length(tex)) + 0.12;
+    bool clear = true;
+    const Box box{c, w, label_height};
+    for (const auto& o : f.outlines)
+      if (o.shape == FigureOutline::Shape::circle && overlaps(box, {vp(o.centre), 2 * o.radius, 2 * o.radius})) clear = false;
+    for (const auto& l : f.lines)
+      for (std::size_t i = 1; i < l.points.size(); ++i)
+        if (box_hits_segment(box, vp(l.points[i - 1]), vp(l.points[i]))) clear = false;
+    if (clear) {
+      f.texts.push_back(lay.place(tex, {c}));
+      continue;
+    }
+    const V lo = at(k.s_lo, k.lat_lo), hi = at(k.s_hi, k.lat_hi);
+    const double x0 = std::min(lo.x, hi.x), x1 = std::max(lo.x, hi.x), y0 = std::min(lo.y, hi.y), y1 = std::max(lo.y, hi.y);
+    f.texts.push_back(lay.place(tex, {{x0 - w / 2 - gap, y1 - label_height / 2}, {x1 + w / 2 + gap, y1 - label_height / 2},
+                                      {x0 + w / 2, y1 + label_height / 2 + gap}, {x0 + w / 2, y0 - label_height / 2 - gap},
+                                      {x0 - w / 2 - gap, y0 + label_height / 2}, {x1 + w / 2 + gap, y0 + label_height / 2}}));
+  }
+  std::set<int> named;
+  for (const auto& t : meetings) {
+    const Point& p = m.points[t.point];
+    // A point in its block: the block's name says it.
+    if (const Block* k = block_of(t.point); k && t.s >= k->s_lo - 1e-9 && t.s <= k->s_hi + 1e-9) continue;
+    if (t.kind == Meeting::Kind::pass || !named.insert(t.point).second) continue;
+    const V c = at(t.s, t.lat);
+    const std::string tex = default_tex(p.name);
+    const double r = reach(t) + 0.15, w = char_width * static_cast<double>(shown_length(tex)) + 0.12;
+    std::vector<V> cand;
+    for (V d : {V{-1, 1}, V{1, 1}, V{-1, -1}, V{1, -1}, V{0, 1}, V{-1, 0}, V{1, 0}, V{0, -1}})
+      cand.push_back(c + V{d.x * (r * std::fabs(normalized(d).x) + w / 2), d.y * (r * std::fabs(normalized(d).y) + label_height / 2)});
+    f.texts.push_back(lay.place(tex, cand));
+  }
+  finish(f, {axis}, {m.axes[0]});
+  f.caption = "Sketch of the mechanism";
+  f.sketch = true;
+  return f;
+}
+
+}  // namespace tackle
