@@ -165,7 +165,8 @@ struct Model {
   std::vector<std::string> direction_assumed_by;  // connections whose rule assumes the direction of motion
   struct ConnectionNote {
     std::string label;    // "sliding at A", "string s"
-    std::string summary;  // the rule's, for the problem's number of axes
+    std::string summary;  // the rule's, for the problem's number of axes, with a {} per term
+    std::vector<GiNaC::ex> terms;  // the rule's {N}, {mu*N} in this connection's symbols
   };
   std::vector<ConnectionNote> connections;  // one per connection, in the description's order
   /// What a 1-D mechanism's sketch draws of a connection (its rule's `sketch:`).

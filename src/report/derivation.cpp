@@ -69,17 +69,29 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   for (const auto& a : m.assumptions) bullet("Assumed: " + a + ".");
   // Connections of one kind said once: "sliding at A and sliding at B: a Coulomb sliding ...".
   {
-    std::vector<std::pair<std::vector<std::string>, std::string>> kinds;  // labels, summary
+    // (Said once when the text is the same, its symbols too: three springs of stiffness k.)
+    struct Kind {
+      std::vector<std::string> labels;
+      const Model::ConnectionNote* note;
+    };
+    std::vector<Kind> kinds;
+    auto same = [](const Model::ConnectionNote& a, const Model::ConnectionNote& b) {
+      if (a.summary.empty() || a.summary != b.summary || a.terms.size() != b.terms.size()) return false;
+      for (std::size_t i = 0; i < a.terms.size(); ++i)
+        if (!a.terms[i].is_equal(b.terms[i])) return false;
+      return true;
+    };
     for (const auto& c : m.connections) {
-      auto it = std::find_if(kinds.begin(), kinds.end(), [&](const auto& k) { return !c.summary.empty() && k.second == c.summary; });
-      if (it == kinds.end()) kinds.push_back({{c.label}, c.summary});
-      else it->first.push_back(c.label);
+      auto it = std::find_if(kinds.begin(), kinds.end(), [&](const Kind& k) { return same(*k.note, c); });
+      if (it == kinds.end()) kinds.push_back({{c.label}, &c});
+      else it->labels.push_back(c.label);
     }
-    for (const auto& [labels, summary] : kinds) {
+    for (const auto& [labels, note] : kinds) {
       std::string who;
       for (std::size_t i = 0; i < labels.size(); ++i)
         who += (i == 0 ? "" : i + 1 == labels.size() ? " and " : ", ") + labels[i];
-      bullet(who + (summary.empty() ? "" : ": " + summary) + ".");
+      Step* st = step(Step::Kind::bullet, who + (note->summary.empty() ? "" : ": " + note->summary) + ".");
+      st->math = note->terms;
     }
   }
   std::vector<std::string> symbolic;

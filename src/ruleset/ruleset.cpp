@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "description/yaml_reader.hpp"
+#include "core/placeholders.hpp"
 #include "expr/parse.hpp"
 
 namespace tackle {
@@ -315,6 +316,14 @@ struct RuleReader {
       auto res = parse_expression(text, names);
       for (const auto& p : res.problems) diags.error(at, "in '" + text + "': " + p.message);
     };
+    // The summary's {N}, {mu*N}: expressions in the rule's local names, typeset in the
+    // derivation with the connection's own symbols.
+    if (auto s = root["summary"]) {
+      std::vector<const std::string*> texts{&r.summary};
+      for (const auto& t : r.summary_in) texts.push_back(&t);
+      for (const std::string* t : texts)
+        for (const auto& ph : placeholders(*t)) check_expr(std::string(ph.name), where(s, file));
+    }
     if (auto n = root["loads"]; n && is_list(n, "'loads'", file, diags)) {
       for (const auto& l : n) {
         if (!check_map(l, {"on", "along", "from_length", "force", "tension", "at", "couple", "when"}, "a load of the rule", file,

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "core/placeholders.hpp"
 #include "expr/print.hpp"
 
 namespace tackle::build {
@@ -414,7 +415,25 @@ void add_conditions(BuildContext& ctx, Instance& in) {
     if (!a.when.empty() && !c.arg(a.when)) continue;
     if (std::find(ctx.m.assumptions.begin(), ctx.m.assumptions.end(), a.text) == ctx.m.assumptions.end()) ctx.m.assumptions.push_back(a.text);
   }
-  ctx.m.connections.push_back({label, rule->summary_for(ctx.m.dims())});
+  {
+    // The rule's text with its {N}, {mu*N} in this connection's own symbols (N_A, mu N_A).
+    const std::string& tmpl = rule->summary_for(ctx.m.dims());
+    Model::ConnectionNote note{label, "", {}};
+    std::size_t from = 0;
+    for (const auto& ph : placeholders(tmpl)) {
+      note.summary += tmpl.substr(from, ph.open - from);
+      auto r = parse_expression(ph.name, in.scope);
+      if (r.value && !is_vector(*r.value)) {
+        note.summary += "{}";
+        note.terms.push_back(*r.value);
+      } else {
+        note.summary += std::string(ph.name);  // an optional argument not given: as written
+      }
+      from = ph.close + 1;
+    }
+    note.summary += tmpl.substr(from);
+    ctx.m.connections.push_back(std::move(note));
+  }
   if (!rule->sketch.empty()) {
     Model::Drawing d{rule->sketch, label, {}, -1, -1};
     for (const auto& spec : rule->args) {  // the first argument of each kind, in the rule's order

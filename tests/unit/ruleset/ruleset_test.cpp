@@ -56,6 +56,26 @@ TEST_CASE("Rules: a rule file with errors is reported like a description, all at
                });
 }
 
+TEST_CASE("Rules: a sketch kind and the summary's symbols are checked", "[rules]") {
+  const std::string text =
+      "type: bumper\n"
+      "summary: a bumper pushing with {N}, at most {mu*M}\n"
+      "sketch: zigzag\n"
+      "needs: {on: body, mu: expr}\n"
+      "unknowns:\n"
+      "  - {local: N, name: N_b, dimension: force}\n";
+  CHECK(rule_errors(text, "rules/bumper.yaml") == std::vector<std::string>{
+                   "rules/bumper.yaml:3:9: 'sketch' is 'zigzag' (expected line, spring, damper, pulley, support or arrow)",
+                   "rules/bumper.yaml:2:10: in 'mu*M': unknown name 'M' (known: mu, N)",
+               });
+  // Read, the rule keeps them: the sketch kind, and the summary as written.
+  const Rule r = parse_rule("type: bumper\nsummary: pushing with {N}\nsketch: spring\nneeds: {on: body}\nunknowns:\n"
+                            "  - {local: N, name: N_b, dimension: force}\n",
+                            "rules/bumper.yaml");
+  CHECK(r.sketch == "spring");
+  CHECK(r.summary == "pushing with {N}");
+}
+
 TEST_CASE("Rules: an argument used as the wrong kind", "[rules]") {
   const std::string text =
       "type: weight\n"
