@@ -632,7 +632,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   for (const auto& c : sol.conditions) {
     if (c.depends_on_free || (!c.expr.has(eom.q[0]) && !c.expr.has(eom.dq[0]))) continue;
     ConditionInTime ct;
-    ct.condition = &c;
+    ct.condition = *c.condition;
     const ex g = put_in(c.expr, dep).subs(along);
     ct.of_t = in_lambda(g);
     const std::string& op = c.condition->op;

@@ -61,7 +61,7 @@ struct Response {
 
 /// A validity condition of the instant, followed in time along the response.
 struct ConditionInTime {
-  const CheckedCondition* condition = nullptr;
+  Condition condition;  // the model's (a copy: a report keeps it after the analysis is gone)
   GiNaC::ex of_t;  // the condition's expression along the response: the condition is `of_t op 0`
   // The least (for >=, >) or greatest (for <=, <) value over all t, in closed form, and the
   // condition for all t (`extreme op 0`) solved for the parameters where it can be.

@@ -201,7 +201,9 @@ Derivation explain(const Analysis& a, const ReportOptions& options) {
   }
   if (a.motion) {
     narrate_motion(d, a.model, *a.motion, options);
-    d.motion = &*a.motion;
+    d.motion = *a.motion;
+    d.motion->in_state.clear();
+    d.motion->conditions_in_state.clear();  // pointers into the analysis' solution
     if (a.model.motion->until) {
       // A figure, not a command: a second of computing at most (a hostile 'until' must not
       // hold a report up; `tackle simulate` allows 10 s).

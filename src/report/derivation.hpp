@@ -74,7 +74,9 @@ struct Derivation {
   std::vector<std::pair<std::string, std::optional<NumericValue>>> minimum_norm;
   PowerCheck power;  // the power balance, checked against the solution
   std::vector<ParameterReport> parameters;
-  const Motion* motion = nullptr;  // motion in time, for the JSON (narrated in the steps)
+  // Motion in time, for the JSON (narrated in the steps): a copy without the simulation's
+  // state functions, so that nothing in it points into the analysis.
+  std::optional<Motion> motion;
 };
 
 struct ReportOptions {

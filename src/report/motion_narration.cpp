@@ -157,7 +157,7 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
     st->boxed = true;
   }
   for (const auto& c : mo.conditions) {
-    const Condition& cond = *c.condition->condition;
+    const Condition& cond = c.condition;
     text(cond.source + " along the motion (" + cond.meaning + "):");
     Step* st = equation("in time", c.of_t, 0);
     st->relation = cond.op;

@@ -225,7 +225,7 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
       }
       auto condition = [&](const std::string& source) {
         const auto c = std::find_if(mo.conditions.begin(), mo.conditions.end(),
-                                    [&](const ConditionInTime& x) { return x.condition->condition->source == source; });
+                                    [&](const ConditionInTime& x) { return x.condition.source == source; });
         REQUIRE(c != mo.conditions.end());
         return *c;
       };

@@ -79,3 +79,20 @@ TEST_CASE("Key: every problem of a key writes its products in a person's order, 
   CHECK(md.find("- $a_{C} = -\\mu g$ = -2.943 m/s^2\n") != std::string::npos);
   CHECK(md.find("- $N_{A} = \\frac{m g \\left(l - 2 \\mu h\\right)}{2 l}$ = 29.43 N\n") != std::string::npos);
 }
+
+TEST_CASE("Derivation: a report outlives its analysis, its motion and figures included", "[report]") {
+  // The Derivation holds values (its motion in time is a copy whose conditions are the
+  // model's, copied): written after the analysis is gone, the JSON still says the motion.
+  std::vector<Derivation> phases;
+  {
+    const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.4-stacked-blocks-on-spring.yaml", test::rules());
+    phases = explain_phases(*a);
+  }
+  REQUIRE(!phases.empty());
+  REQUIRE(phases[0].motion);
+  const std::string json = write(phases, Format::json, true);
+  CHECK(json.find("\"degrees_of_freedom\": 1") != std::string::npos);
+  CHECK(json.find("\"source\": \"contact c\"") != std::string::npos);
+  const std::string html = write(phases, Format::html, true);
+  CHECK(html.find("Sketch of the mechanism") != std::string::npos);
+}

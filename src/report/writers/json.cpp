@@ -75,8 +75,8 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
   for (const auto& q : mo.quantities) j["quantities"].push_back({{"name", q.name}, {"in_time", expr(q.of_t)}});
   j["conditions"] = J::array();
   for (const auto& c : mo.conditions) {
-    const std::string& op = c.condition->condition->op;
-    J x{{"source", c.condition->condition->source}, {"in_time", to_text(c.of_t) + " " + op + " 0"}};
+    const std::string& op = c.condition.op;
+    J x{{"source", c.condition.source}, {"in_time", to_text(c.of_t) + " " + op + " 0"}};
     x["extreme"] = c.extreme ? J(to_text(*c.extreme) + " " + op + " 0") : J(nullptr);
     x["extreme_at"] = c.extreme_at ? J(to_text(*c.extreme_at)) : J(nullptr);
     x["for_all_t"] = J::array();
