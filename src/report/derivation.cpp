@@ -175,7 +175,9 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     section("Constraints: constant lengths, differentiated twice");
     for (const auto& c : s.constraints) {
       text("The " + c.meaning + " is constant in time.");
-      Step* st = equation(c.label + ": " + c.meaning, c.quantity, c.constant);
+      // "length of string s", not "string s: length of string s".
+      const bool named = c.meaning.size() >= c.label.size() && c.meaning.compare(c.meaning.size() - c.label.size(), c.label.size(), c.label) == 0;
+      Step* st = equation(named ? c.meaning : c.label + ": " + c.meaning, c.quantity, c.constant);
       st->equals_constant = c.constant.is_zero();
       equation(c.label + ": rate", 0, c.rate);
       equation(c.label + ": acceleration", 0, c.acceleration);
