@@ -151,7 +151,10 @@ SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec
       r.varied_unit = r.x_unit;
       r.x_name = trim(spec.against);
       r.x_unit = dim->exp == Dimension::none().exp ? "" : si_unit_name(*dim);
-      r.x_latex = to_latex(*parsed.value);
+      // Inline, as an axis is labelled: h/l, not a built-up fraction.
+      const ex nd = numer_denom(*parsed.value);
+      auto part = [](const ex& e) { return is_a<add>(e) ? "\\left(" + to_latex(e) + "\\right)" : to_latex(e); };
+      r.x_latex = nd.op(1).is_equal(1) ? to_latex(*parsed.value) : part(nd.op(0)) + "/" + part(nd.op(1));
     }
     diags.throw_if_any();
   }
