@@ -548,20 +548,24 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
         // Verified: M q'' + C q' + K q - F(t) at random parameter values and times.
         std::mt19937 rng(11);
         bool ok = true;
+        // The residual and its scale made once; each trial puts its parameters in first, so
+        // that each time only substitutes into an expression in t.
+        exmap defs;
+        for (const auto& [sym, def] : r.definitions) defs[sym] = def;
+        for (int depth = 0; depth < 4; ++depth)
+          for (auto& [k, v] : defs) v = v.subs(defs);
+        const ex acceleration = r.q.diff(ex_to<symbol>(t), 2);
+        const ex residual = (M * acceleration + C * r.rate + K * r.q - eom.forcing[0]).subs(defs);
+        const ex scale_of = (abs(M * acceleration) + abs(K * r.q) + abs(eom.forcing[0]) + 1).subs(defs);
         for (int trial_no = 0; trial_no < 4 && ok; ++trial_no) {
           exmap p = random_point(table, rng);
           for (int depth = 0; depth < 8; ++depth)
             for (auto& [k, v] : p) v = v.subs(table.definitions());
-          exmap defs;
-          for (const auto& [sym, def] : r.definitions) defs[sym] = def;
-          for (int depth = 0; depth < 4; ++depth)
-            for (auto& [k, v] : defs) v = v.subs(defs);
-          const ex residual = (M * r.q.diff(ex_to<symbol>(t), 2) + C * r.rate + K * r.q - eom.forcing[0]).subs(defs);
+          const ex residual_here = residual.subs(p), scale_here = scale_of.subs(p);
           for (const double tt : {0.0, 0.37, 1.9}) {
-            exmap at = p;
-            at[t] = numeric(tt);
-            const ex v = evalf(residual.subs(at));
-            const ex scale = evalf((abs(M * r.q.diff(ex_to<symbol>(t), 2)) + abs(K * r.q) + abs(eom.forcing[0]) + 1).subs(defs).subs(at));
+            const exmap at{{t, numeric(tt)}};
+            const ex v = evalf(residual_here.subs(at));
+            const ex scale = evalf(scale_here.subs(at));
             if (!is_a<numeric>(v) || !is_a<numeric>(scale)) continue;  // a damping regime that does not hold at this point
             const numeric nv = ex_to<numeric>(v);
             if (!nv.is_real()) continue;
