@@ -2,6 +2,7 @@
 #include "report/narrator.hpp"
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <tuple>
 
@@ -10,6 +11,42 @@
 namespace tackle {
 
 using namespace GiNaC;
+
+namespace {
+
+// The longest sum of five or more parameter terms found in at least two closed forms (as a
+// whole subexpression), with a name for it that the problem does not use: M for masses,
+// else S. Chosen by size, then by its text: never by GiNaC's order of terms.
+std::optional<std::pair<ex, ex>> shared_sum(const std::vector<Answer>& answers, const SymbolTable& table) {
+  std::map<ex, int, ex_is_less> count;
+  for (const auto& a : answers) {
+    if (!a.closed_form) continue;
+    std::set<ex, ex_is_less> seen;
+    for (const_preorder_iterator it = a.closed_form->preorder_begin(); it != a.closed_form->preorder_end(); ++it) {
+      if (!is_a<add>(*it) || it->nops() < 5) continue;
+      bool parameters = true;
+      for (std::size_t k = 0; k < it->nops() && parameters; ++k) {
+        ex term = it->op(k);
+        if (is_a<mul>(term) && term.nops() == 2 && is_a<numeric>(term.op(1))) term = term.op(0);
+        const SymbolInfo* info = is_a<symbol>(term) ? table.find(term) : nullptr;
+        parameters = info && info->role == SymbolRole::parameter;
+      }
+      if (parameters && seen.insert(*it).second) ++count[*it];
+    }
+  }
+  std::optional<ex> best;
+  for (const auto& [sum, n] : count)
+    if (n >= 2 && (!best || sum.nops() > best->nops() || (sum.nops() == best->nops() && to_text(sum) < to_text(*best)))) best = sum;
+  if (!best) return std::nullopt;
+  std::string problem;
+  const auto dim = dimension_of(*best, table, problem);
+  const bool mass = dim && *dim == Dimension::mass();
+  for (const std::string name : {mass ? "M" : "S", mass ? "M_sum" : "S_sum", "Sigma_sum"})
+    if (!table.find(name)) return std::make_pair(ex(symbol(name, default_tex(name))), *best);
+  return std::nullopt;
+}
+
+}  // namespace
 
 Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol, const Answers& ans, const PowerCheck& power_check,
                    const ReportOptions& options, const IntervalEnd* end) {
@@ -240,11 +277,16 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   d.answers = ans.answers;
   d.combinations = ans.combinations;
   d.minimum_norm = ans.minimum_norm;
+  // A long sum that several closed forms share (a chain's m_1 + ... + m_n) is named once,
+  // as a person would write it, and the closed forms and conditions below use the name.
+  const auto shared = shared_sum(d.answers, table);
+  auto named = [&](const ex& e) { return shared ? e.subs(shared->second == shared->first) : e; };
   if (sol.status != Solution::Status::inconsistent) {
     section("Results");
+    if (shared) equation("a name for the sum the closed forms share", shared->first, shared->second);
     for (const auto& a : d.answers) {
       if (a.closed_form) {
-        Step* st = equation("", table.find(a.name)->sym, *a.closed_form);
+        Step* st = equation("", table.find(a.name)->sym, named(*a.closed_form));
         st->boxed = true;
         if (a.value) st->note = a.value->decimal + (a.value->unit.empty() ? "" : " " + a.value->unit);
       } else if (a.status == Answer::Status::not_in_equations) {
@@ -297,7 +339,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       text(r.source + ": the model holds while " + r.meaning + ":");
       Step* rule = equation(r.source, r.lhs, r.rhs);
       rule->relation = r.op;
-      Step* closed = equation("closed form", r.simplified, 0);
+      Step* closed = equation("closed form", named(r.simplified), 0);
       closed->relation = r.op;
       if (r.always) {
         text(*r.always ? "This holds for all positive values of the parameters."

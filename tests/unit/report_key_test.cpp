@@ -1,10 +1,13 @@
 #include <catch2/catch.hpp>
 
+#include <map>
+
 #include "expr/print.hpp"
 #include "report/key.hpp"
 #include "support/helpers.hpp"
 
 using namespace tackle;
+using GiNaC::ex;
 
 namespace {
 std::vector<Variant> variants_of(const std::string& example, int n, unsigned long long seed) {
@@ -95,4 +98,41 @@ TEST_CASE("Derivation: a report outlives its analysis, its motion and figures in
   CHECK(json.find("\"source\": \"contact c\"") != std::string::npos);
   const std::string html = write(phases, Format::html, true);
   CHECK(html.find("Sketch of the mechanism") != std::string::npos);
+}
+
+TEST_CASE("Derivation: a sum the closed forms share is named once (a chain's M = m_1 + ... + m_5)", "[report]") {
+  std::string yaml = "title: a chain of five blocks\naxes: [x]\nparameters:\n  F: {unit: N}\n";
+  for (int i = 1; i <= 5; ++i) yaml += "  m_" + std::to_string(i) + ": {unit: kg}\n";
+  yaml += "bodies:\n";
+  for (int i = 1; i <= 5; ++i) yaml += "  b" + std::to_string(i) + ": {mass: m_" + std::to_string(i) + ", position: x_" + std::to_string(i) + "}\n";
+  yaml += "loads:\n  - {on: b5, force: F}\nstrings:\n";
+  for (int i = 1; i <= 4; ++i)
+    yaml += "  - {name: s" + std::to_string(i) + ", path: [b" + std::to_string(i) + ", b" + std::to_string(i + 1) + "], tension: T_" +
+            std::to_string(i) + "}\n";
+  yaml += "layout: {x_1: 1, x_2: 2, x_3: 3, x_4: 4, x_5: 5}\nfind: [ddot(x_1), T_1, T_4]\n";
+  const auto a = test::run_text(yaml);
+  const Derivation d = explain(*a);
+  const SymbolTable& table = *a->model.symbols;
+  const ex F = table.find("F")->sym, m1 = table.find("m_1")->sym;
+  ex total = 0;
+  for (int i = 1; i <= 5; ++i) total += table.find("m_" + std::to_string(i))->sym;
+  // By hand: every block accelerates at F/(m_1 + ... + m_5); the string behind block k pulls
+  // the k blocks behind it: T_1 = m_1 F/M, T_4 = (m_1 + ... + m_4) F/M.
+  const Step* named = nullptr;
+  std::map<std::string, ex> results;
+  for (const auto& st : d.steps)
+    if (st.kind == Step::Kind::equation) {
+      if (st.text == "a name for the sum the closed forms share") named = &st;
+      else if (st.boxed) results[to_text(st.lhs)] = st.rhs;
+    }
+  REQUIRE(named);
+  CHECK(to_text(named->lhs) == "M");
+  CHECK(normal(named->rhs - total).is_zero());
+  const ex M = named->lhs;
+  REQUIRE(results.count("ddot(x_1)"));
+  CHECK(normal(results["ddot(x_1)"] - F / M).is_zero());
+  CHECK(normal(results["T_1"] - m1 * F / M).is_zero());
+  CHECK(normal(results["T_4"] - (total - table.find("m_5")->sym) * F / M).is_zero());
+  // The answers themselves (JSON, `tackle solve`) stay whole.
+  CHECK(normal(*d.answers[0].closed_form - F / total).is_zero());
 }
