@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "expr/print.hpp"
+#include "solve/eliminate.hpp"
 #include "solve/solve.hpp"
 
 namespace tackle {
@@ -85,32 +86,32 @@ std::vector<Equation> candidate_equations(const Model& m) {
 namespace {
 
 // Basis of the null space of `rows` (each of length k): the vectors y with row . y = 0 for
-// every row. Gauss-Jordan over rational functions, pivots decided by normal().
-std::vector<std::vector<ex>> null_space(std::vector<std::vector<ex>> rows, std::size_t k) {
-  std::vector<int> pivot_of_col(k, -1);
-  std::size_t r = 0;
-  for (std::size_t j = 0; j < k && r < rows.size(); ++j) {
-    std::size_t p = r;
-    while (p < rows.size() && normal(rows[p][j]).is_zero()) ++p;
-    if (p == rows.size()) continue;
-    std::swap(rows[r], rows[p]);
-    const ex pv = rows[r][j];
-    for (auto& x : rows[r]) x = normal(x / pv);
-    for (std::size_t q = 0; q < rows.size(); ++q) {
-      if (q == r || normal(rows[q][j]).is_zero()) continue;
-      const ex f = rows[q][j];
-      for (std::size_t c = 0; c < k; ++c) rows[q][c] = normal(rows[q][c] - f * rows[r][c]);
-    }
-    pivot_of_col[j] = static_cast<int>(r);
-    ++r;
+// every row, from the solver's elimination in column order (so the free columns are those a
+// person reading the columns in order would choose): one vector per free column, 1 there and
+// 0 at the other free columns.
+std::vector<std::vector<ex>> null_space(const std::vector<std::vector<ex>>& rows, std::size_t k) {
+  SparseSystem sys;
+  sys.columns = k;
+  for (const auto& row : rows) {
+    std::map<std::size_t, ex> entries;
+    for (std::size_t c = 0; c < k; ++c)
+      if (!normal(row[c]).is_zero()) entries.emplace(c, row[c]);
+    sys.a.push_back(std::move(entries));
+    sys.b.push_back(0);
   }
+  std::vector<ex> free_symbols;
+  for (std::size_t c = 0; c < k; ++c) free_symbols.push_back(symbol("y_" + std::to_string(c)));
+  const Elimination e = eliminate(sys, free_symbols, Pivoting::in_column_order, false);
   std::vector<std::vector<ex>> basis;
   for (std::size_t f = 0; f < k; ++f) {
-    if (pivot_of_col[f] >= 0) continue;
+    if (e.pivot[f]) continue;
+    exmap at;
+    for (std::size_t c = 0; c < k; ++c)
+      if (!e.pivot[c]) at[free_symbols[c]] = c == f ? 1 : 0;
     std::vector<ex> y(k, 0);
     y[f] = 1;
     for (std::size_t j = 0; j < k; ++j)
-      if (pivot_of_col[j] >= 0) y[j] = normal(-rows[pivot_of_col[j]][f]);
+      if (e.pivot[j]) y[j] = normal(e.value[j].subs(at));
     basis.push_back(y);
   }
   return basis;
@@ -149,21 +150,23 @@ Vec tidy(const Vec& given) {
 // The exact test for one body; fills `r` when a combination is found.
 bool isolate_in_body(const Model& m, int b, const std::vector<ex>& unknowns, const ex& unknown, Isolation& r) {
   const int dims = m.dims();
-  // Balance components: LMB (dims of them), AMB about the origin (z in 2-D; x, y, z in 3-D).
-  Vec force_residual = zero_vec(), moment_residual = zero_vec();
-  for (const auto& l : m.loads) {
-    if (l.body != b) continue;
-    force_residual = force_residual + l.force;
-    moment_residual = moment_residual + l.couple;
-    if (l.at) moment_residual = moment_residual + cross(*l.at, l.force);
-  }
-  const Body& body = m.bodies[b];
-  force_residual = force_residual - body.mass * body.acceleration;
-  moment_residual = moment_residual - cross(body.cm, body.mass * body.acceleration);
+  // Balance components, from the equations stage's own balances: LMB along each axis, AMB
+  // about the origin along each axis (z only in 2-D).
   std::vector<ex> components;
-  for (int i = 0; i < dims; ++i) components.push_back(force_residual[i].expand());
+  auto axis = [](int i) {
+    Vec e = zero_vec();
+    e[i] = 1;
+    return e;
+  };
+  for (int i = 0; i < dims; ++i) {
+    const Equation eq = lmb_along(m, {b}, false, axis(i), m.axes[i]);
+    components.push_back((eq.lhs - eq.rhs).expand());
+  }
   const int first_moment = dims == 2 ? 2 : 0;
-  for (int i = first_moment; i < 3; ++i) components.push_back(moment_residual[i].expand());
+  for (int i = first_moment; i < 3; ++i) {
+    const Equation eq = amb_along(m, {b}, false, zero_vec(), "the origin", axis(i), "axis " + std::to_string(i));
+    components.push_back((eq.lhs - eq.rhs).expand());
+  }
   const std::size_t k = components.size();
   auto column = [&](const ex& u) {
     std::vector<ex> c;
