@@ -49,7 +49,14 @@ std::string value_text(const std::optional<NumericValue>& v) {
 std::string prose(const Step& st, Format f) {
   std::string out;
   std::size_t from = 0, k = 0;
-  auto plain = [&](const std::string& s) { return f == Format::latex ? tex_escape(s) : f == Format::html ? html_escape(s) : s; };
+  // A spaced hyphen in prose is a dash (an en dash in LaTeX and HTML).
+  auto dashed = [](std::string s, const std::string& dash) {
+    for (std::size_t at = s.find(" - "); at != std::string::npos; at = s.find(" - ", at + dash.size())) s.replace(at, 3, dash);
+    return s;
+  };
+  auto plain = [&](const std::string& s) {
+    return f == Format::latex ? dashed(tex_escape(s), " -- ") : f == Format::html ? dashed(html_escape(s), " &ndash; ") : s;
+  };
   for (std::size_t at; (at = st.text.find("{}", from)) != std::string::npos && k < st.math.size(); from = at + 2, ++k) {
     out += plain(st.text.substr(from, at - from));
     out += f == Format::text ? to_text(st.math[k]) : f == Format::html ? html_math(to_latex(st.math[k])) : "$" + to_latex(st.math[k]) + "$";
