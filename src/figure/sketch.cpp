@@ -410,6 +410,26 @@ std::optional<Figure> FigureMaker::sketch() const {
     f.texts.push_back(lay.place(tex, cand));
   }
   finish(f, {axis}, {m.axes[0]});
+  // Gravity along the axis, as the book marks it: an arrow beside the mechanism, labelled
+  // with its size along the axis (g, or g sin(theta) on an incline).
+  if (m.gravity)
+    if (auto g = number((*m.gravity)[0]); g && std::fabs(*g) > 1e-12) {
+      FigureArrow a;
+      const V dir = (*g > 0 ? 1.0 : -1.0) * axis;
+      const V side = axis.x != 0 ? V{0, f.max_y + 0.5} : V{f.max_x + 0.6, 0};
+      const V mid = axis.x != 0 ? V{0.5 * (f.min_x + f.max_x), side.y} : V{side.x, 0.5 * (f.min_y + f.max_y)};
+      a.from = fp(mid - 0.5 * dir);
+      a.to = fp(mid + 0.5 * dir);
+      a.label.tex = to_latex(*g > 0 ? (*m.gravity)[0] : -(*m.gravity)[0]);
+      a.label.width = char_width * static_cast<double>(shown_length(a.label.tex)) + 0.12;
+      a.label.height = label_height;
+      const V n = axis.x != 0 ? V{a.label.width / 2 + 0.15, 0} : V{a.label.width / 2 + 0.15, 0};
+      a.label.at = fp(mid + n);
+      f.arrows.push_back(a);
+      f.max_x = std::max(f.max_x, a.label.at.x + a.label.width / 2);
+      f.max_y = std::max({f.max_y, a.from.y, a.to.y, a.label.at.y + a.label.height / 2});
+      f.min_y = std::min({f.min_y, a.from.y, a.to.y});
+    }
   f.caption = "Sketch of the mechanism";
   f.sketch = true;
   return f;

@@ -248,6 +248,11 @@ TEST_CASE("Sketch: the Atwood machine hangs from the ceiling over one sheave, it
     return !l.thin && is_horizontal(l) && l.points[0].y > c.centre.y + c.radius;
   }));
   CHECK(std::count_if(f->lines.begin(), f->lines.end(), [](const FigureLine& l) { return l.thin; }) >= 3);
+  // Gravity (y up, gravity -g) is an arrow down beside the mechanism, labelled g.
+  const FigureArrow* g = arrow(*f, "g");
+  REQUIRE(g);
+  CHECK(g->to.y < g->from.y);
+  CHECK(std::fabs(g->to.x - g->from.x) < 1e-9);
 }
 
 TEST_CASE("Sketch: sample 12.3's string turns around three sheaves, F pulls A to the left", "[figure][sketch]") {
