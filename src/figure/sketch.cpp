@@ -91,7 +91,7 @@ std::optional<Figure> FigureMaker::sketch() const {
     if (pos[p]) used.push_back(*pos[p]);
     return pos[p].has_value();
   };
-  std::set<int> supported, anchored_points;
+  std::set<int> supported;
   std::map<int, bool> pulley_at;
   for (const auto& d : m.drawings) {
     for (int p : d.path)
@@ -224,22 +224,20 @@ std::optional<Figure> FigureMaker::sketch() const {
       if (t.pulley) f.dots.push_back({o.centre, std::nullopt});
     }
 
-  // The strands: a string's end on a block is tied to its edge.
+  // The strands: a string's end in a block is tied to the block's edge (facing `toward`),
+  // unless it leaves a sheave there.
+  auto tied = [&](int point, double s, double lat, double toward) {
+    const Block* k = block_of(point);
+    if (!k || s < k->s_lo - 1e-9 || s > k->s_hi + 1e-9) return s;
+    for (const auto& t : meetings)
+      if (t.point == point && t.kind == Meeting::Kind::sheave && std::fabs(t.s - s) < 1e-9 &&
+          std::fabs(std::fabs(t.lat - lat) - sheave_radius) < 1e-9)
+        return s;
+    return toward > 0 ? k->s_hi : k->s_lo;
+  };
   for (const auto& st : strands) {
-    double a = st.s0, b = st.s1;
-    const double dir = b > a ? 1 : -1;
-    if (const Block* k = block_of(st.from); k && a >= k->s_lo - 1e-9 && a <= k->s_hi + 1e-9 &&
-                                            !std::any_of(meetings.begin(), meetings.end(), [&](const Meeting& t) {
-                                              return t.point == st.from && t.kind == Meeting::Kind::sheave && std::fabs(t.s - a) < 1e-9 &&
-                                                     std::fabs(std::fabs(t.lat - st.lat) - sheave_radius) < 1e-9;
-                                            }))
-      a = dir > 0 ? k->s_hi : k->s_lo;
-    if (const Block* k = block_of(st.to); k && b >= k->s_lo - 1e-9 && b <= k->s_hi + 1e-9 &&
-                                          !std::any_of(meetings.begin(), meetings.end(), [&](const Meeting& t) {
-                                            return t.point == st.to && t.kind == Meeting::Kind::sheave && std::fabs(t.s - b) < 1e-9 &&
-                                                   std::fabs(std::fabs(t.lat - st.lat) - sheave_radius) < 1e-9;
-                                          }))
-      b = dir > 0 ? k->s_lo : k->s_hi;
+    const double dir = st.s1 > st.s0 ? 1 : -1;
+    const double a = tied(st.from, st.s0, st.lat, dir), b = tied(st.to, st.s1, st.lat, -dir);
     if ((b - a) * dir <= 1e-9) continue;
     const V p = at(a, st.lat), q = at(b, st.lat);
     if (st.as == "spring") {
@@ -327,11 +325,6 @@ std::optional<Figure> FigureMaker::sketch() const {
     if (t.kind == Meeting::Kind::end && !block_of(t.point)) f.dots.push_back({fp(at(t.s, t.lat)), std::nullopt});
 
   // Applied forces, from the edge of their block (or the sheave of a massless body).
-  struct Pull {
-    V tail, dir;
-    std::string tex;
-  };
-  std::vector<Pull> pulls;
   for (const auto& d : m.drawings) {
     if (d.as != "arrow" || d.body < 0) continue;
     for (const auto& l : m.loads) {
@@ -352,15 +345,12 @@ std::optional<Figure> FigureMaker::sketch() const {
             break;
           }
       }
-      pulls.push_back({at(s, lat), dir * axis, to_latex(shown)});
+      FigureArrow a;
+      a.from = fp(at(s, lat));
+      a.to = fp(at(s, lat) + (arrow_length * dir) * axis);
+      a.label.tex = to_latex(shown);
+      f.arrows.push_back(a);
     }
-  }
-  for (const auto& p : pulls) {
-    FigureArrow a;
-    a.from = fp(p.tail);
-    a.to = fp(p.tail + arrow_length * p.dir);
-    a.label.tex = p.tex;
-    f.arrows.push_back(a);
   }
 
   // Labels: the forces' at their heads, then the points' names (fixed points, sheaves, the
@@ -423,8 +413,7 @@ std::optional<Figure> FigureMaker::sketch() const {
       a.label.tex = to_latex(*g > 0 ? (*m.gravity)[0] : -(*m.gravity)[0]);
       a.label.width = char_width * static_cast<double>(shown_length(a.label.tex)) + 0.12;
       a.label.height = label_height;
-      const V n = axis.x != 0 ? V{a.label.width / 2 + 0.15, 0} : V{a.label.width / 2 + 0.15, 0};
-      a.label.at = fp(mid + n);
+      a.label.at = fp(mid + V{a.label.width / 2 + 0.15, 0});  // to its right
       f.arrows.push_back(a);
       f.max_x = std::max(f.max_x, a.label.at.x + a.label.width / 2);
       f.max_y = std::max({f.max_y, a.from.y, a.to.y, a.label.at.y + a.label.height / 2});

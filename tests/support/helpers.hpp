@@ -18,6 +18,19 @@ inline std::unique_ptr<const Analysis> run_text(const std::string& yaml, const s
   return tackle::analyze_text(yaml, file, rules());
 }
 
+/// A massless beam pinned at A, held by a cable from B up to C, turned by a couple M: a
+/// problem in symbols only (by hand, moments about A: T_BC = -M/L).
+inline const std::string pinned_beam_with_couple = R"(title: couple
+axes: [x, y]
+parameters: {M: {dimension: moment}, L: {unit: m}}
+points: {A: [0, 0], B: [L, 0], C: [L, L]}
+bodies: {beam: {mass: 0}}
+connections:
+  - {type: pin, body: beam, at: A}
+  - {type: cable, body: beam, from: B, to: C}
+  - {type: couple, on: beam, moment: M}
+)";
+
 /// An example's text, to vary it in a test.
 inline std::string read_example(const std::string& name) { return read_text_file(TACKLE_SOURCE_DIR "/examples/" + name); }
 

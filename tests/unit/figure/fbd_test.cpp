@@ -198,16 +198,7 @@ TEST_CASE("FBD: a wrong 'draw' is located", "[figure][errors]") {
 }
 
 TEST_CASE("FBD: a problem in symbols only is drawn, a couple as an arc with its moment", "[figure]") {
-  const auto a = test::run_text(R"(title: couple
-axes: [x, y]
-parameters: {M: {dimension: moment}, L: {unit: m}}
-points: {A: [0, 0], B: [L, 0], C: [L, L]}
-bodies: {beam: {mass: 0}}
-connections:
-  - {type: pin, body: beam, at: A}
-  - {type: cable, body: beam, from: B, to: C}
-  - {type: couple, on: beam, moment: M}
-)");
+  const auto a = test::run_text(test::pinned_beam_with_couple);
   const auto figs = figures_of(*a);
   REQUIRE(figs.size() == 1);
   REQUIRE(figs[0].couples.size() == 1);

@@ -37,16 +37,7 @@ TEST_CASE("Rules: a 2-D fixed support carries the weight and its moment", "[rule
 }
 
 TEST_CASE("Rules: a couple on a pinned beam is balanced by a cable", "[rules][statics]") {
-  const auto r = answers(R"(title: couple
-axes: [x, y]
-parameters: {M: {dimension: moment}, L: {unit: m}}
-points: {A: [0, 0], B: [L, 0], C: [L, L]}
-bodies: {beam: {mass: 0}}
-connections:
-  - {type: pin, body: beam, at: A}
-  - {type: cable, body: beam, from: B, to: C}
-  - {type: couple, on: beam, moment: M}
-)");
+  const auto r = answers(test::pinned_beam_with_couple);
   CHECK(r == std::map<std::string, std::string>{{"A_x", "0"}, {"A_y", "M/L"}, {"T_BC", "-M/L"}});
 }
 
