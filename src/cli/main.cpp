@@ -97,11 +97,12 @@ const tackle::Analysis* the_phase(const tackle::Analysis& whole, const Options& 
 // derive and solve: every phase of a phased description, unless --phase names one.
 int run_report(const Options& o, const tackle::RuleSet& rules, bool full) {
   const auto whole = tackle::analyze_file(o.file, rules);
+  const tackle::ReportOptions options{o.digits, full};  // solve prints no steps, figures or plots
   if (o.phase.empty() && !whole->phases.empty())
-    return emit(tackle::write(tackle::explain_phases(*whole, tackle::ReportOptions{o.digits}), formats.at(o.format), full), o.out);
+    return emit(tackle::write(tackle::explain_phases(*whole, options), formats.at(o.format), full), o.out);
   const tackle::Analysis* analysis = the_phase(*whole, o);
   if (!analysis) return 2;
-  return emit(tackle::write(tackle::explain(*analysis, tackle::ReportOptions{o.digits}), formats.at(o.format), full), o.out);
+  return emit(tackle::write(tackle::explain(*analysis, options), formats.at(o.format), full), o.out);
 }
 
 // The files of key and sheet: each analyzed (every problem of every file reported at once),
@@ -220,7 +221,7 @@ int run_sweep(const Options& o, const tackle::RuleSet& rules) {
     std::cerr << "tackle sweep: give --vary (the description has no 'sweep')\n";
     return 2;
   }
-  const tackle::Derivation d = tackle::explain(*analysis);
+  const tackle::Derivation d = tackle::explain(*analysis, tackle::ReportOptions{.narrate = false});
   const auto result = tackle::run_sweep(analysis->model, d, spec, tackle::Location{"--vary/--plot", 0, 0});
   for (const auto& [path, text] : {std::pair{o.svg_out, tackle::sweep_svg(result)}, std::pair{o.pgf_out, tackle::sweep_pgfplots(result)}})
     if (!path.empty() && emit(text, path) != 0) return 1;

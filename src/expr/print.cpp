@@ -93,28 +93,21 @@ Fraction split(const ex& e);
 std::string fraction_text(const Fraction& f, const print_context& like, unsigned level);
 void print_fraction(const Fraction& f, const print_context& c, unsigned level);
 
-// Sort keys are rendered once per node within one top-level print (the cache holds the
-// expressions too, so that no node's address is reused while its key is cached).
+// Sort keys and splits are made once per expression and remembered (per thread) across
+// prints: neither depends on the print context (LaTeX's person order is applied when a
+// fraction is printed), and one run prints the same parts many times (a sum's terms in its
+// closed form, its condition and its report). The memory forgets everything past 16384
+// entries of either kind; a remembered key is the key made again, so it changes no output.
 struct Fraction;
 struct KeyCache {
-  int depth = 0;
   // By structure, not by node: the printer makes new nodes (a sum negated term by term) whose
   // parts it has seen, and a cache by address missed them all, so nested fractions cost
   // time exponential in their depth (found by fuzzing).
   std::unordered_map<ex, std::string, std::hash<ex>, ex_is_equal> keys;
   std::unordered_map<ex, std::shared_ptr<const Fraction>, std::hash<ex>, ex_is_equal> splits;
+  static constexpr std::size_t limit = 16384;
 };
 thread_local KeyCache key_cache;
-
-struct TopLevelPrint {
-  TopLevelPrint() { ++key_cache.depth; }
-  ~TopLevelPrint() {
-    if (--key_cache.depth == 0) {
-      key_cache.keys.clear();
-      key_cache.splits.clear();
-    }
-  }
-};
 
 std::string key_of_uncached(const ex& e);
 
@@ -153,9 +146,9 @@ std::string key_of(const ex& e) {
   if (is_exactly<symbol>(e)) return ex_to<symbol>(e).get_name();
   if (is_exactly<power>(e) && is_exactly<symbol>(e.op(0)) && is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_pos_integer())
     return ex_to<symbol>(e.op(0)).get_name() + "^" + std::to_string(ex_to<numeric>(e.op(1)).to_int());
-  if (key_cache.depth == 0) return key_of_uncached(e);
   if (auto it = key_cache.keys.find(e); it != key_cache.keys.end()) return it->second;
   std::string k = key_of_uncached(e);
+  if (key_cache.keys.size() >= KeyCache::limit) key_cache.keys.clear();
   key_cache.keys.emplace(e, k);
   return k;
 }
@@ -309,9 +302,9 @@ Fraction split_uncached(const ex& e);
 // Splits a product into sign, |coefficient|, numerator factors and denominator factors (once
 // per node within a top-level print).
 Fraction split(const ex& e) {
-  if (key_cache.depth == 0) return split_uncached(e);
   if (auto it = key_cache.splits.find(e); it != key_cache.splits.end()) return *it->second;
   auto f = std::make_shared<const Fraction>(split_uncached(e));
+  if (key_cache.splits.size() >= KeyCache::limit) key_cache.splits.clear();
   key_cache.splits.emplace(e, f);
   return *f;
 }
@@ -532,11 +525,20 @@ void ensure_registered() { static Registration once; }
 
 }  // namespace
 
+// Remembered per thread, like the keys: the text form does not depend on the context (the
+// person order is LaTeX's), and simplest() compares the lengths of the same forms again and
+// again.
 std::string to_text(const ex& e) {
   ensure_registered();
-  TopLevelPrint scope;
+  if (is_exactly<symbol>(e)) return ex_to<symbol>(e).get_name();
+  thread_local std::unordered_map<ex, std::string, std::hash<ex>, ex_is_equal> memory;
+  if (auto it = memory.find(e); it != memory.end()) return it->second;
   static const tackle_text text_like(std::cout);
-  return in_context(text_like, [&](const print_context& c) { e.print(c); });
+  std::string out = in_context(text_like, [&](const print_context& c) { e.print(c); });
+  if (out.size() > 1000) return out;  // the memory holds short forms only (a chain's closed forms are long)
+  if (memory.size() >= KeyCache::limit) memory.clear();
+  memory.emplace(e, out);
+  return out;
 }
 
 PersonOrder::PersonOrder(FactorRank rank) : rank_(std::move(rank)), previous_(person_rank) { person_rank = &rank_; }
@@ -544,7 +546,6 @@ PersonOrder::~PersonOrder() { person_rank = previous_; }
 
 std::string to_latex(const ex& e) {
   ensure_registered();
-  TopLevelPrint scope;
   static const tackle_latex latex_like(std::cout);
   return in_context(latex_like, [&](const print_context& c) { e.print(c); });
 }
@@ -555,7 +556,6 @@ namespace tackle {
 
 std::pair<std::string, std::string> to_text_and_latex(const ex& e) {
   ensure_registered();
-  TopLevelPrint scope;  // one key cache for both
   return {to_text(e), to_latex(e)};
 }
 

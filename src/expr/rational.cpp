@@ -19,7 +19,9 @@ using Memory = std::unordered_map<ex, ex, ExHash, ex_is_equal>;
 ex numer_denom_remembered(const ex& e) {
   thread_local Memory memory;
   if (auto it = memory.find(e); it != memory.end()) return it->second;
-  const ex nd = e.numer_denom();
+  // From the remembered normal form: the same numerator and denominator as numer_denom()
+  // makes, and the closed forms' normal forms are usually made already.
+  const ex nd = numer_denom_of_normal(normal_remembered(e));
   if (memory.size() >= 8192) memory.clear();
   memory.emplace(e, nd);
   return nd;
@@ -209,7 +211,7 @@ std::optional<bool> zero_at_random_points(const ex& e, const std::vector<const e
 }
 
 bool is_zero_exactly(const ex& e) {
-  const ex n = normal(e);
+  const ex n = normal_remembered(e);
   return n.is_zero() || (has_trig(n) && normal(pythagoras(n, true)).is_zero());
 }
 

@@ -8,6 +8,7 @@
 
 #include "expr/normal_form.hpp"
 #include "expr/print.hpp"
+#include "expr/rational.hpp"
 #include "numeric/compiled.hpp"
 
 namespace tackle {
@@ -163,8 +164,8 @@ EnergyAnswer work_energy(const Model& m, const EquationsOfMotion& eom, const Mot
     const symbol s("s");
     const ex W = integral(s, q0, q1, Q.subs(q == s)).eval_integ();
     if (!is_a<integral>(W)) {
-      e.work = simplest(normal(W));
-      e.rate_squared = simplest(normal(pow(v0, 2) + 2 * e.work / M));
+      e.work = simplest(W);
+      e.rate_squared = simplest(pow(v0, 2) + 2 * e.work / M);
       if (auto v = NormalForm(*e.rate_squared).approx_at(table.values())) e.rate_squared_number = *v;
       return e;
     }
@@ -217,11 +218,11 @@ void steady_state(ConditionInTime& ct, const CheckedCondition& c, const Response
   const symbol cs("cs"), sn("sn");
   const ex p = normal(g).subs(lst{cos(w * t) == cs, sin(w * t) == sn}).expand();
   if (p.has(t) || !p.is_polynomial(lst{cs, sn}) || p.degree(cs) > 1 || p.degree(sn) > 1 || p.coeff(cs, 1).has(sn)) return;
-  const ex alpha = simplest(normal(p.subs(lst{cs == 0, sn == 0})));
-  const ex beta = simplest(normal(p.coeff(cs, 1))), gamma = simplest(normal(p.coeff(sn, 1)));
+  const ex alpha = simplest(p.subs(lst{cs == 0, sn == 0}));
+  const ex beta = simplest(p.coeff(cs, 1)), gamma = simplest(p.coeff(sn, 1));
   const std::string& op = c.condition->op;
   const bool lower = op == ">=" || op == ">";
-  ct.steady_of_t = simplest(normal(g));
+  ct.steady_of_t = simplest(g);
   ct.steady_offset = alpha;
   // alpha^2 - beta^2 - gamma^2 over a denominator that is a square (positive): its numerator.
   const ex diff = normal(alpha * alpha - beta * beta - gamma * gamma);
@@ -253,10 +254,10 @@ void steady_state(ConditionInTime& ct, const CheckedCondition& c, const Response
     const ex fi = is_a<mul>(f) ? f.op(i) : f;
     if (!fi.has(W)) continue;
     if (is_a<power>(fi) && fi.op(1).is_equal(2) && fi.op(0).degree(W) == 1) {
-      roots.push_back(simplest(normal(-fi.op(0).coeff(W, 0) / fi.op(0).coeff(W, 1))));
+      roots.push_back(simplest(-fi.op(0).coeff(W, 0) / fi.op(0).coeff(W, 1)));
       roots.push_back(roots.back());
     } else if (fi.degree(W) == 1) {
-      roots.push_back(simplest(normal(-fi.coeff(W, 0) / fi.coeff(W, 1))));
+      roots.push_back(simplest(-fi.coeff(W, 0) / fi.coeff(W, 1)));
     }
   }
   if (roots.size() != 2) return;
@@ -404,11 +405,11 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
           kij -= eom.M(i, l) * A(l, j);
           cij -= eom.M(i, l) * B(l, j);
         }
-        eom.K(i, j) = simplest(normal(kij));
-        eom.C(i, j) = simplest(normal(cij));
+        eom.K(i, j) = simplest(kij);
+        eom.C(i, j) = simplest(cij);
         Fi += eom.M(i, j) * f[j];
       }
-      eom.forcing.push_back(simplest(normal(Fi)));
+      eom.forcing.push_back(simplest(Fi));
     }
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = 0; j < n; ++j) eom.M(i, j) = simplest(eom.M(i, j));
@@ -419,7 +420,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
       for (std::size_t i = 0; i < n; ++i) rhs(i, 0) = eom.forcing[i];
       const matrix qe = eom.K.inverse().mul(rhs);
       std::vector<ex> e;
-      for (std::size_t i = 0; i < n; ++i) e.push_back(simplest(normal(qe(i, 0))));
+      for (std::size_t i = 0; i < n; ++i) e.push_back(simplest(qe(i, 0)));
       eom.equilibrium = e;
     }
   }
@@ -475,34 +476,34 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
         h2 = t;
       } else if (undamped) {
         r.regime = Response::Regime::undamped;
-        r.definitions.emplace_back(lambda, sqrt(simplest(normal(K / M))));
+        r.definitions.emplace_back(lambda, sqrt(simplest(K / M)));
         h1 = cos(lambda * t);
         h2 = sin(lambda * t);
       } else if (unsprung) {
         r.regime = Response::Regime::damped_particle;
         h1 = 1;
-        h2 = exp(-simplest(normal(C / M)) * t);
+        h2 = exp(-simplest(C / M) * t);
       } else {
-        r.definitions.emplace_back(lambda, sqrt(simplest(normal(K / M))));
-        r.definitions.emplace_back(zeta, simplest(normal(C / (2 * sqrt(K * M)))));
+        r.definitions.emplace_back(lambda, sqrt(simplest(K / M)));
+        r.definitions.emplace_back(zeta, simplest(C / (2 * sqrt(K * M))));
         const ex disc = normal(C * C - 4 * K * M);
         const auto sg = zero(disc) ? std::optional<int>(0) : numeric_sign(disc);
         // The decay rate zeta*lambda = C/(2 M) and the damped frequency are written in the
         // parameters directly (GiNaC does not see sqrt(k/m)*c/(2*sqrt(k*m)) = c/(2*m)).
-        const ex decay = simplest(normal(C / (2 * M)));
+        const ex decay = simplest(C / (2 * M));
         if (sg == 0) {
           r.regime = Response::Regime::critically_damped;
           h1 = exp(-decay * t);
           h2 = t * exp(-decay * t);
         } else if (sg == 1) {
           r.regime = Response::Regime::overdamped;
-          r.definitions.emplace_back(wd, sqrt(simplest(normal(pow(C / (2 * M), 2) - K / M))));
+          r.definitions.emplace_back(wd, sqrt(simplest(pow(C / (2 * M), 2) - K / M)));
           h1 = exp(-decay * t) * cosh(wd * t);
           h2 = exp(-decay * t) * sinh(wd * t);
         } else {
           r.regime = Response::Regime::underdamped;
           if (!sg) r.assumptions.push_back({zeta, 1, "<", "underdamped"});
-          r.definitions.emplace_back(wd, sqrt(simplest(normal(K / M - pow(C / (2 * M), 2)))));
+          r.definitions.emplace_back(wd, sqrt(simplest(K / M - pow(C / (2 * M), 2))));
           h1 = exp(-decay * t) * cos(wd * t);
           h2 = exp(-decay * t) * sin(wd * t);
         }
@@ -520,8 +521,8 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
           resonant = true;
           out.no_response = "the forcing is at the natural frequency (resonance; simulate it)";
         } else {
-          const ex X = simplest(normal((k * forcing->a - c * forcing->b) / det));
-          const ex Y = simplest(normal((c * forcing->a + k * forcing->b) / det));
+          const ex X = simplest((k * forcing->a - c * forcing->b) / det);
+          const ex Y = simplest((c * forcing->a + k * forcing->b) / det);
           qp += X * cos(w * t) + Y * sin(w * t);
           if (undamped) r.assumptions.push_back({w, lambda, "!=", "no resonance"});
           r.forcing_frequency = w;
@@ -537,41 +538,53 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
         const ex sol2 = lsolve(lst{eq1 == 0, eq2 == 0}, lst{a, b});
         ex av = 0, bv = 0;
         for (const auto& rel : sol2) {
-          if (rel.lhs().is_equal(a)) av = simplest(normal(rel.rhs()));
-          if (rel.lhs().is_equal(b)) bv = simplest(normal(rel.rhs()));
+          if (rel.lhs().is_equal(a)) av = simplest(rel.rhs());
+          if (rel.lhs().is_equal(b)) bv = simplest(rel.rhs());
         }
         r.particular = qp;
         r.homogeneous = av * h1 + bv * h2;
         r.q = qp + r.homogeneous;
         r.rate = r.q.diff(ex_to<symbol>(t));
         for (const auto& [sym, def] : r.definitions) out.definitions[sym] = def;
-        // Verified: M q'' + C q' + K q - F(t) at random parameter values and times.
-        std::mt19937 rng(11);
-        bool ok = true;
-        // The residual and its scale made once; each trial puts its parameters in first, so
-        // that each time only substitutes into an expression in t.
-        exmap defs;
+        // Verified: M q'' + C q' + K q - F(t) at random parameter values and times. The
+        // defined parameters (every geometric length too) and the response's own definitions
+        // are put in first, so that the residual and its scale are in the free parameters and
+        // t only; both are compiled once and evaluated in doubles.
+        exmap defs = table.definitions(true);
         for (const auto& [sym, def] : r.definitions) defs[sym] = def;
-        for (int depth = 0; depth < 4; ++depth)
+        for (int depth = 0; depth < 8; ++depth)
           for (auto& [k, v] : defs) v = v.subs(defs);
         const ex acceleration = r.q.diff(ex_to<symbol>(t), 2);
         const ex residual = (M * acceleration + C * r.rate + K * r.q - eom.forcing[0]).subs(defs);
         const ex scale_of = (abs(M * acceleration) + abs(K * r.q) + abs(eom.forcing[0]) + 1).subs(defs);
+        std::vector<ex> inputs{t};
+        for (const ex& x : symbols_in(residual + scale_of))
+          if (!x.is_equal(t)) inputs.push_back(x);
+        std::string problem;
+        const auto residual_at = Compiled::compile(residual, inputs, problem);
+        const auto scale_at = Compiled::compile(scale_of, inputs, problem);
+        std::mt19937 rng(11);
+        bool ok = residual_at && scale_at;
+        int checked = 0;
         for (int trial_no = 0; trial_no < 4 && ok; ++trial_no) {
-          exmap p = random_point(table, rng);
-          for (int depth = 0; depth < 8; ++depth)
-            for (auto& [k, v] : p) v = v.subs(table.definitions());
-          const ex residual_here = residual.subs(p), scale_here = scale_of.subs(p);
+          const exmap p = random_point(table, rng);
+          std::vector<double> x(inputs.size());
+          bool valued = true;
+          for (std::size_t i = 1; i < inputs.size() && valued; ++i) {
+            const auto it = p.find(inputs[i]);
+            if (it == p.end()) valued = false;
+            else x[i] = ex_to<numeric>(it->second).to_double();
+          }
+          if (!valued) continue;
           for (const double tt : {0.0, 0.37, 1.9}) {
-            const exmap at{{t, numeric(tt)}};
-            const ex v = evalf(residual_here.subs(at));
-            const ex scale = evalf(scale_here.subs(at));
-            if (!is_a<numeric>(v) || !is_a<numeric>(scale)) continue;  // a damping regime that does not hold at this point
-            const numeric nv = ex_to<numeric>(v);
-            if (!nv.is_real()) continue;
-            if (std::abs(nv.to_double()) > 1e-8 * ex_to<numeric>(scale).to_double()) ok = false;
+            x[0] = tt;
+            const double v = (*residual_at)(x.data()), scale = (*scale_at)(x.data());
+            if (!std::isfinite(v) || !std::isfinite(scale)) continue;  // a damping regime that does not hold at this point
+            ++checked;
+            if (std::abs(v) > 1e-8 * scale) ok = false;
           }
         }
+        ok = ok && checked > 0;
         r.verified = ok;
         out.response = std::move(r);
       }
@@ -605,14 +618,22 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   exmap along{{eom.q[0], r.q}, {eom.dq[0], r.rate}};
   // The lambda form: the stiffness's one symbol replaced by lambda^2 times the mass (k ->
   // lambda^2 (m + M)), where that is shorter.
+  // Remembered: a condition is often a quantity asked for (N >= 0 with N found). The normal
+  // forms are remembered too, so that simplest() does not make them again.
+  std::vector<std::pair<ex, ex>> lambda_forms;
   auto in_lambda = [&](const ex& e) {
-    const ex plain = normal(e);
+    for (const auto& [key, form] : lambda_forms)
+      if (key.is_equal(e)) return form;
+    const ex plain = normal_remembered(e);
     const ex K = eom.K(0, 0), M = eom.M(0, 0);
+    ex chosen = plain;
     if (r.regime == Response::Regime::undamped && is_a<symbol>(K)) {
-      const ex alt = normal(e.subs(K == pow(spec.lambda, 2) * M));
-      if (to_text(alt).size() < to_text(plain).size()) return simplest(alt);
+      const ex alt = normal_remembered(e.subs(K == pow(spec.lambda, 2) * M));
+      if (to_text(alt).size() < to_text(plain).size()) chosen = alt;
     }
-    return simplest(plain);
+    const ex form = simplest(chosen);
+    lambda_forms.emplace_back(e, form);
+    return form;
   };
   for (const auto& w : m.wanted) {
     ex value = w.defined ? w.expr.subs(sol.general) : w.expr.subs(sol.general);
@@ -646,18 +667,18 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
       const ex lt = spec.lambda * t;
       const ex p = normal(g).subs(lst{cos(lt) == cs, sin(lt) == sn}).expand();
       if (!p.has(t) && p.degree(cs) <= 1 && p.degree(sn) <= 1 && !p.coeff(cs, 1).has(sn)) {
-        const ex alpha = simplest(normal(p.subs(lst{cs == 0, sn == 0})));
-        const ex beta = simplest(normal(p.coeff(cs, 1))), gamma = simplest(normal(p.coeff(sn, 1)));
+        const ex alpha = simplest(p.subs(lst{cs == 0, sn == 0}));
+        const ex beta = simplest(p.coeff(cs, 1)), gamma = simplest(p.coeff(sn, 1));
         ex amplitude;
         std::optional<int> beta_sign = sign_of(beta);
         if (gamma.is_zero() && beta_sign) amplitude = *beta_sign >= 0 ? beta : -beta;
-        else amplitude = sqrt(simplest(normal(beta * beta + gamma * gamma)));
+        else amplitude = sqrt(simplest(beta * beta + gamma * gamma));
         const bool lower = op == ">=" || op == ">";
         const ex extreme = lower ? alpha - amplitude : alpha + amplitude;
         ct.extreme = in_lambda(extreme);
         if (gamma.is_zero() && beta_sign && *beta_sign != 0)
           ct.extreme_at = (lower == (*beta_sign > 0)) ? Pi / spec.lambda : ex(0);
-        if (is_rational_function(extreme)) ct.solved = solve_condition(simplest(normal(extreme)), op, params);
+        if (is_rational_function(extreme)) ct.solved = solve_condition(simplest(extreme), op, params);
         exmap all_values = values;
         for (const auto& [sym, def] : out.definitions) all_values[sym] = def.subs(values);
         if (auto v = NormalForm(extreme).approx_at(all_values)) {

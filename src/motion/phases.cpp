@@ -56,8 +56,8 @@ IntervalEnd interval_end(const Model& m, const Solution& sol) {
     r.accel = *a;
     if (iv.duration) {
       const ex T = *iv.duration;
-      r.value = simplest(normal(c.from + *a * T));
-      r.displacement = simplest(normal(c.from * T + *a * T * T / 2));
+      r.value = simplest(c.from + *a * T);
+      r.displacement = simplest(c.from * T + *a * T * T / 2);
     } else {
       const ex s = *iv.distance;
       const auto s_positive = positive(s, false, table), s_negative = positive(-s, false, table);
@@ -66,7 +66,7 @@ IntervalEnd interval_end(const Model& m, const Solution& sol) {
                       ", which is not known (expected a distance of known sign)";
         return out;
       }
-      const ex squared = simplest(normal(pow(c.from, 2) + 2 * *a * s));
+      const ex squared = simplest(pow(c.from, 2) + 2 * *a * s);
       r.value = (*s_positive ? 1 : -1) * sqrt(squared);
       r.reaches = {{squared, ">="}};
       const ex towards_start = normal(c.from * s), towards_accel = normal(*a * s);
@@ -138,13 +138,13 @@ ImpactResult analyze_impact(const Model& m) {
     a.before = bf.rate;
     a.after = simplest(*v);
     a.impulse_symbol = bf.impulse;
-    a.impulse = simplest(normal(b.mass * (*v - bf.rate)));
+    a.impulse = simplest(b.mass * (*v - bf.rate));
     out.energy_after += b.mass * pow(*v, 2) / 2;
     out.after.push_back(a);
   }
-  out.energy_lost = simplest(normal(out.energy_before - out.energy_after));
-  out.energy_before = simplest(normal(out.energy_before));
-  out.energy_after = simplest(normal(out.energy_after));
+  out.energy_lost = simplest(out.energy_before - out.energy_after);
+  out.energy_before = simplest(out.energy_before);
+  out.energy_after = simplest(out.energy_after);
   out.energy_lost_symbol = im.energy_lost;
   return out;
 }

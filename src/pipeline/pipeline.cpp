@@ -104,7 +104,7 @@ std::unique_ptr<Analysis> analyze_phases(const Description& d, const RuleSet& ru
         ok = false;
         continue;
       }
-      at_end = simplest(normal(at_end));
+      at_end = simplest(at_end);
       ParameterDesc p;
       p.name = name;
       p.define = Text{to_text(at_end), value.at};
@@ -200,11 +200,11 @@ Derivation explain(const Analysis& a, const ReportOptions& options) {
     d.impact_equations = a.impact->equations;
   }
   if (a.motion) {
-    narrate_motion(d, a.model, *a.motion, options);
+    if (options.narrate) narrate_motion(d, a.model, *a.motion, options);
     d.motion = *a.motion;
     d.motion->in_state.clear();
     d.motion->conditions_in_state.clear();  // pointers into the analysis' solution
-    if (a.model.motion->until) {
+    if (a.model.motion->until && options.narrate) {
       // A figure, not a command: a second of computing at most (a hostile 'until' must not
       // hold a report up; `tackle simulate` allows 10 s).
       SimulationSpec spec;
@@ -218,7 +218,7 @@ Derivation explain(const Analysis& a, const ReportOptions& options) {
       if (!run.stopped.empty() && run.events.empty()) d.motion_events.push_back("Stopped: " + run.stopped + ".");
     }
   }
-  if (a.model.sweep) d.sweep_plot = run_sweep(a.model, d, sweep_spec(*a.model.sweep), a.model.sweep->at);
+  if (a.model.sweep && options.narrate) d.sweep_plot = run_sweep(a.model, d, sweep_spec(*a.model.sweep), a.model.sweep->at);
   return d;
 }
 

@@ -81,6 +81,10 @@ struct Derivation {
 
 struct ReportOptions {
   int digits = 6;  // significant digits of the numbers
+  /// The steps' figures, the motion's narration and the plots (a simulation, a sweep). Off
+  /// for what prints the answers only (`tackle solve`, `tackle sweep`): the answers, the
+  /// conditions, the power check and the motion are the same either way.
+  bool narrate = true;
 };
 
 /// The derivation of a solved problem, in the book's order; `power_check` is the power-balance

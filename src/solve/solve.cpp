@@ -224,9 +224,14 @@ ex simplest_uncached(const ex& e) {
 ex simplest(const ex& e) {
   thread_local std::unordered_map<ex, ex, ExHash, ex_is_equal> memory;
   if (auto it = memory.find(e); it != memory.end()) return it->second;
-  const ex out = simplest_uncached(e);
+  // Keyed by the normal form too: simplest(e) and simplest(normal(e)) are one form, made once.
+  const ex n = normal_remembered(e);
+  ex out;
+  if (auto it = memory.find(n); it != memory.end()) out = it->second;
+  else out = simplest_uncached(n);
   if (memory.size() >= 4096) memory.clear();
   memory.emplace(e, out);
+  memory.emplace(n, out);
   return out;
 }
 
@@ -347,7 +352,7 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
       if (std::any_of(present.begin(), present.end(), [&](std::size_t k) { return a.has(unknowns[k]); }))
         problems.push_back("equation '" + equations[i].label + "' is not linear in " + to_text(unknowns[j]) +
                            " (tackle solves linear systems)");
-      if (!zero(a)) system.a[i][j] = normal(a);
+      if (!zero(a)) system.a[i][j] = normal_remembered(a);
     }
     system.b[i] = normal(-residual.subs(zero_unknowns));
   }
@@ -413,20 +418,10 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
 
   // Verify: the general solution satisfies every equation at random exact rational values
   // of the parameters and free unknowns (integers drawn from 2^40 values each, so a residual
-  // that is not zero vanishes at one by chance with a probability of its degree over 2^40),
-  // and symbolically when the solution is small (a textbook problem's always is; expanding
-  // large residuals is what would make this the slowest step). At a point, each unknown's
-  // value is evaluated once and put into every equation.
-  std::size_t solution_nodes = 0;
-  for (const auto& [u, g] : sol.general)
-    if ((solution_nodes += node_count(g, 2001)) > 2000) break;
-  const bool symbolically = solution_nodes <= 2000;  // (counted up to 2001)
-  if (symbolically)
-    for (const auto& eq : equations) {
-      const ex residual = (eq.lhs - eq.rhs).subs(sol.general);
-      if (!zero(residual))
-        throw InternalError("solution fails equation '" + eq.label + "': residual " + to_text(normal(residual)));
-    }
+  // that is not zero vanishes at one by chance with a probability of its degree over 2^40).
+  // At a point, each unknown's value is evaluated once and put into every equation. Only when
+  // no point can be used (a denominator vanishes at every one drawn) is every residual put in
+  // normal form, which for a large solution is what would make this the slowest step.
   // The values hold no symbol the equations do not: the points are drawn for theirs.
   lst everything;
   for (const auto& eq : equations) everything.append(eq.lhs - eq.rhs);
@@ -470,7 +465,7 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
     if (pole) continue;
     ++trial;
   }
-  if (trial == 0 && !symbolically)
+  if (trial == 0)
     for (const auto& eq : equations) {
       const ex residual = (eq.lhs - eq.rhs).subs(sol.general);
       if (!zero(residual))

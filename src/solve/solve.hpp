@@ -81,7 +81,8 @@ struct Solution {
 /// out gathered in the coefficient. The same for every hash order.
 [[nodiscard]] std::vector<GiNaC::ex> canonical_factors(const GiNaC::ex& polynomial);
 
-/// Shortest of the normal form and its factored form.
+/// Shortest of the normal form and its factored form (the normal form made here: there is no
+/// need to call normal() first). Remembered per thread, by `e` and by its normal form.
 [[nodiscard]] GiNaC::ex simplest(const GiNaC::ex& e);
 
 [[nodiscard]] Solution solve(const Model& m, const EquationSystem& s);

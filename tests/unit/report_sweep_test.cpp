@@ -99,7 +99,7 @@ TEST_CASE("Sweep: a point where a curve is undefined is a gap, not a crash (foun
   // (exit 3: GiNaC threw while substituting). Now that point has no value and is not valid.
   const auto a = analyze_file(TACKLE_SOURCE_DIR "/tests/fuzz/regressions/description/sweep-through-a-pole", test::rules());
   const Derivation d = explain(*a);
-  const auto r = run_sweep(a->model, d, {"h=0:2:41", {}, {"N_A", "N_B"}}, Location{"test", 0, 0});
+  const auto r = run_sweep(a->model, d, {"h=0:2:41", {}, {"N_A", "N_B"}, {}}, Location{"test", 0, 0});
   REQUIRE(r.x.size() == 41);
   int gaps = 0;
   for (std::size_t i = 0; i < r.x.size(); ++i)
