@@ -7,6 +7,11 @@
 #include <cmath>
 
 #include <cln/float.h>
+#include <cln/integer.h>
+#include <cln/integer_ring.h>
+#include <cln/rational.h>
+#include <cln/rational_ring.h>
+#include <cln/real_ring.h>
 #include <cln/real.h>
 #include <functional>
 #include <random>
@@ -157,6 +162,7 @@ std::string factor_words(const numeric& c) {
 Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(options), symbols_(analysis.model.symbols) {
   const Model& m = analysis.model;
   GiNaC::Digits = std::max<long>(GiNaC::Digits, options_.digits);
+  tolerance_ = ex_to<numeric>(GiNaC::pow(numeric(10), numeric(-(options_.digits - 8))));
   // The names an answer may use: the parameters and the given quantities.
   for (const auto& s : symbols_->all())
     if (s->role == SymbolRole::parameter) parameters_.push_back({s->name, s->sym, s->dimension});
@@ -191,12 +197,12 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   // References: every determined unknown, and the defined quantities of `find`.
   auto add_reference = [&](const std::string& name, const ex& closed_form, std::optional<Dimension> dim) {
     const ex closed = closed_form.subs(definitions_);
-    Reference ref{name, closed, dim, std::nullopt, {}, to_text(closed_form).size()};
+    Reference ref{name, closed, program(closed), dim, std::nullopt, {}, to_text(closed_form).size()};
     if (auto v = evaluate(closed, *symbols_, dim); v && is_a<numeric>(evalf(v->exact)))
       ref.value = ex_to<numeric>(evalf(v->exact));
     bool ok = true;
     for (std::size_t k = 0; k < points_.size() && ok; ++k) {
-      auto v = value_at(closed, k);
+      auto v = ref.program(points_[k]);
       if (v) ref.at_points.push_back(*v);
       else ok = false;
     }
@@ -220,13 +226,6 @@ std::vector<std::string> Checker::unknowns() const {
   return out;
 }
 
-std::optional<numeric> Checker::value_at(const ex& e, std::size_t point) const {
-  return evaluate_at(e.subs(lengths_).subs(lengths_), points_[point]);
-}
-
-// Walks the expression with numbers: exact rationals as long as the operations allow, CLN
-// floats at the current Digits after a fractional power or a function. No expression is
-// rebuilt. nullopt: a symbol without a value, a division by zero, a complex value.
 namespace {
 
 // Numbers the evaluator keeps working with: at most this many bits in a rational's
@@ -235,61 +234,133 @@ namespace {
 // of 10^16 digits).
 constexpr long max_bits = 8192;
 
-long bits_of(const numeric& v) {
-  if (v.is_zero()) return 0;
-  if (v.is_rational()) return std::max<long>(v.numer().int_length(), v.denom().int_length());
-  return std::labs(cln::float_exponent(cln::the<cln::cl_F>(cln::the<cln::cl_R>(v.to_cl_N()))));
+// In CLN's own reals: the evaluator works with them, not with GiNaC's numeric objects.
+long bits_of(const cln::cl_R& v) {
+  if (cln::zerop(v)) return 0;
+  // (What numer().int_length() and denom().int_length() say, without making either.)
+  if (cln::instanceof(v, cln::cl_I_ring)) return std::max<long>(cln::integer_length(cln::the<cln::cl_I>(v)), 1);
+  if (cln::instanceof(v, cln::cl_RA_ring)) {
+    const cln::cl_RA& q = cln::the<cln::cl_RA>(v);
+    return std::max<long>(cln::integer_length(cln::numerator(q)), cln::integer_length(cln::denominator(q)));
+  }
+  return std::labs(cln::float_exponent(cln::the<cln::cl_F>(v)));
 }
 
-bool bounded(const numeric& v) { return v.is_real() && bits_of(v) <= max_bits; }
+bool integral(const cln::cl_R& v) { return cln::instanceof(v, cln::cl_I_ring); }
+
+std::optional<cln::cl_R> real_of(const numeric& v) {
+  if (!v.is_real()) return std::nullopt;
+  return cln::the<cln::cl_R>(v.to_cl_N());
+}
 
 }  // namespace
 
-std::optional<numeric> Checker::evaluate_at(const ex& e, const Point& point) {
-  try {
-    if (is_exactly<numeric>(e)) {
-      if (!ex_to<numeric>(e).is_real()) return std::nullopt;
-      return ex_to<numeric>(e);
-    }
-    if (is_exactly<symbol>(e)) {
-      for (const auto& [s, v] : point)
-        if (s.is_equal(e)) return v;
-      return std::nullopt;
-    }
-    if (is_exactly<add>(e) || is_exactly<mul>(e)) {
-      const bool sum = is_exactly<add>(e);
-      numeric acc = sum ? 0 : 1;
-      for (std::size_t i = 0; i < e.nops(); ++i) {
-        auto v = evaluate_at(e.op(i), point);
-        if (!v) return std::nullopt;
-        acc = sum ? acc + *v : acc * *v;
-        if (!bounded(acc)) return std::nullopt;
+Checker::Exact::Exact(const ex& e, const Point& layout, const exmap& definitions) { emit(e, layout, definitions, 0); }
+
+void Checker::Exact::emit(const ex& e, const Point& layout, const exmap& definitions, int depth) {
+  if (is_exactly<numeric>(e)) {
+    if (const auto v = real_of(ex_to<numeric>(e))) nodes_.push_back({Op::number, *v});
+    else nodes_.push_back({Op::nothing, 0});
+    return;
+  }
+  if (is_exactly<symbol>(e)) {
+    for (std::size_t i = 0; i < layout.size(); ++i)
+      if (layout[i].first.is_equal(e)) {
+        nodes_.push_back({Op::input, 0, i});
+        return;
       }
-      return acc;
-    }
-    if (is_exactly<power>(e)) {
-      auto base = evaluate_at(e.op(0), point), expo = evaluate_at(e.op(1), point);
-      if (!base || !expo) return std::nullopt;
-      if (base->is_zero() && !expo->is_pos_integer()) return std::nullopt;
-      if (!expo->is_integer() && base->is_negative()) return std::nullopt;  // complex
-      // The result's size in bits is about |expo| * log2|base|: bound it before making it.
-      if (bits_of(*expo) > 62 || std::fabs(expo->to_double()) * static_cast<double>(bits_of(*base) + 1) > max_bits)
-        return std::nullopt;
-      numeric v = expo->is_integer() ? base->power(*expo) : ex_to<numeric>(evalf(pow(*base, *expo)));
-      if (!v.is_real()) return std::nullopt;
-      return v;
-    }
-    if (is_exactly<function>(e) && e.nops() == 1) {
-      auto arg = evaluate_at(e.op(0), point);
-      if (!arg || bits_of(*arg) > 62) return std::nullopt;  // sin(10^30) says nothing; exp of it is huge
-      if (ex_to<function>(e).get_serial() == exp_SERIAL::serial && std::fabs(arg->to_double()) > 5000) return std::nullopt;
-      const ex v = evalf(function(ex_to<function>(e).get_serial(), ex(*arg)));
-      if (!is_exactly<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
-      return ex_to<numeric>(v);
-    }
+    if (const auto d = definitions.find(e); d != definitions.end() && depth < 8) emit(d->second, layout, definitions, depth + 1);
+    else nodes_.push_back({Op::nothing, 0});
+    return;
+  }
+  if (is_exactly<add>(e) || is_exactly<mul>(e)) {
+    nodes_.push_back({is_exactly<add>(e) ? Op::add : Op::mul, 0, 0, 0, e.nops()});
+    for (std::size_t i = 0; i < e.nops(); ++i) emit(e.op(i), layout, definitions, depth);
+    return;
+  }
+  if (is_exactly<power>(e)) {
+    nodes_.push_back({Op::power, 0});
+    emit(e.op(0), layout, definitions, depth);
+    emit(e.op(1), layout, definitions, depth);
+    return;
+  }
+  if (is_exactly<function>(e) && e.nops() == 1) {
+    nodes_.push_back({Op::function, 0, 0, ex_to<function>(e).get_serial()});
+    emit(e.op(0), layout, definitions, depth);
+    return;
+  }
+  nodes_.push_back({Op::nothing, 0});
+}
+
+std::optional<numeric> Checker::Exact::operator()(const Point& point) const {
+  if (nodes_.empty()) return std::nullopt;
+  try {
+    std::size_t at = 0;
+    if (const auto v = run(at, point)) return numeric(*v);
   } catch (const std::exception&) {
   }
   return std::nullopt;
+}
+
+// The node at `at` and what follows it; `at` moves past them (an early nothing leaves it
+// anywhere: the caller gives up too). Exact rationals as long as the operations allow; a
+// fractional power or a function is evaluated by GiNaC in CLN floats at the current Digits.
+std::optional<cln::cl_R> Checker::Exact::run(std::size_t& at, const Point& point) const {
+  const Node& node = nodes_[at++];
+  switch (node.op) {
+    case Op::number: return node.number;
+    case Op::input: return real_of(point[node.index].second);
+    case Op::nothing: return std::nullopt;
+    case Op::add:
+    case Op::mul: {
+      const bool sum = node.op == Op::add;
+      cln::cl_R acc = sum ? 0 : 1;
+      for (std::size_t i = 0; i < node.n; ++i) {
+        auto v = run(at, point);
+        if (!v) return std::nullopt;
+        acc = sum ? acc + *v : acc * *v;
+        if (bits_of(acc) > max_bits) return std::nullopt;
+      }
+      return acc;
+    }
+    case Op::power: {
+      auto base = run(at, point);
+      if (!base) return std::nullopt;
+      auto expo = run(at, point);
+      if (!expo) return std::nullopt;
+      const bool whole = integral(*expo);
+      if (cln::zerop(*base) && !(whole && cln::plusp(*expo))) return std::nullopt;
+      if (!whole && cln::minusp(*base)) return std::nullopt;  // complex
+      // The result's size in bits is about |expo| * log2|base|: bound it before making it.
+      if (bits_of(*expo) > 62 || std::fabs(cln::double_approx(*expo)) * static_cast<double>(bits_of(*base) + 1) > max_bits)
+        return std::nullopt;
+      if (whole) return cln::expt(*base, cln::the<cln::cl_I>(*expo));
+      // A rational power of a rational: exact when the base is a perfect power (sqrt(m^2) at a
+      // point), else in floats at the current Digits, as evalf() would make it.
+      if (cln::instanceof(*base, cln::cl_RA_ring) && cln::instanceof(*expo, cln::cl_RA_ring)) {
+        const cln::cl_RA& q = cln::the<cln::cl_RA>(*expo);
+        cln::cl_RA root;
+        if (cln::rootp(cln::the<cln::cl_RA>(*base), cln::denominator(q), &root)) return cln::expt(root, cln::numerator(q));
+      }
+      const cln::cl_N v = cln::expt(cln::cl_N(cln::cl_float(*base, cln::default_float_format)), cln::cl_N(*expo));
+      if (!cln::instanceof(v, cln::cl_R_ring)) return std::nullopt;
+      return cln::the<cln::cl_R>(v);
+    }
+    case Op::function: {
+      auto arg = run(at, point);
+      if (!arg || bits_of(*arg) > 62) return std::nullopt;  // sin(10^30) says nothing; exp of it is huge
+      if (node.serial == exp_SERIAL::serial && std::fabs(cln::double_approx(*arg)) > 5000) return std::nullopt;
+      const ex v = evalf(function(node.serial, ex(numeric(*arg))));
+      if (!is_exactly<numeric>(v)) return std::nullopt;
+      return real_of(ex_to<numeric>(v));
+    }
+  }
+  return std::nullopt;
+}
+
+Checker::Exact Checker::program(const ex& e) const {
+  static const Point none;
+  return Exact(e, points_.empty() ? none : points_.front(), lengths_);
 }
 
 namespace {
@@ -328,7 +399,14 @@ std::string as_typed(std::string_view in, std::vector<int>& origin) {
     return c < 0x80 ? 1 : c < 0xe0 ? 2 : c < 0xf0 ? 3 : 4;
   };
   int column = 0;
+  out.reserve(in.size());
+  origin.reserve(in.size() + 1);
   for (std::size_t i = 0; i < in.size();) {
+    if (static_cast<unsigned char>(in[i]) < 0x80) {  // ASCII is kept (every entry above starts past it)
+      out += in[i++];
+      origin.push_back(column++);
+      continue;
+    }
     if (superscript_at(i) >= 0) {
       // A run of superscripts is one exponent.
       std::string exponent;
@@ -413,7 +491,7 @@ bool Checker::same(const numeric& a, const numeric& b) const {
   if (a.is_rational() && b.is_rational()) return a == b;
   const numeric scale = std::max(abs(a), abs(b));
   if (scale.is_zero()) return true;
-  return abs(a - b) <= scale * GiNaC::pow(numeric(10), numeric(-(options_.digits - 8)));
+  return abs(a - b) <= scale * tolerance_;
 }
 
 std::string Checker::describe(const ex& parameter) const {
@@ -682,11 +760,11 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
                   "this is " + with_article(dim->describe()) + "; " + with_article(ref.dimension->describe()) + " was expected");
   // Numeric first (cheap, and it settles every wrong answer): the answer at the random points,
   // exactly in rationals where it can be, else in CLN floats to `digits`.
-  const ex expanded = answer.subs(definitions_);
+  const Exact answer_at = program(answer);
   std::vector<numeric> values;
   for (std::size_t k = 0; k < points_.size(); ++k) {
     if (over_budget()) return finish(Verdict::undecided, "budget", "the answer took too long to check");
-    auto v = evaluate_at(expanded, points_[k]);
+    auto v = answer_at(points_[k]);
     if (!v)
       return finish(Verdict::undecided, "evaluation",
                     "the answer could not be evaluated at the test values (a division by zero, a negative square root, or a number too large to work with?)");
@@ -702,6 +780,7 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
     // overwhelming probability; with square roots and the like, try to prove it with normal()
     // when the expansion stays within the budget.
     bool proved = false;
+    const ex expanded = exact_values ? answer : answer.subs(definitions_);
     if (!exact_values && expanded_size(expanded) <= static_cast<double>(options_.exact_size_budget) && !over_budget()) {
       try {
         proved = normal(expanded - ref.closed_form).is_zero();
@@ -748,6 +827,7 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
 void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector<numeric>& values, CheckResult& r) const {
   const std::size_t n = std::min(values.size(), ref.at_points.size());
   const ex expanded = answer.subs(definitions_);
+  const Exact answer_at = program(answer);
   // Does the answer, at points changed by `change`, equal the reference at the points changed
   // by `change_ref`? (Swapping two parameters or setting one to zero changes the point, not
   // the expression.)
@@ -756,7 +836,7 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
       Point pa = points_[k], pr = points_[k];
       change(pa);
       change_ref(pr);
-      auto a = evaluate_at(expanded, pa), b = evaluate_at(ref.closed_form, pr);
+      auto a = answer_at(pa), b = ref.program(pr);
       if (!a || !b || !same(*a, *b)) return false;
     }
     return true;
@@ -810,8 +890,9 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
   // Does the answer equal `other` (an expression in the parameters) at every point?
   auto equals_at_points = [&](const ex& other) {
     if (n == 0) return false;
+    const Exact other_at = program(other);
     for (std::size_t k = 0; k < n; ++k) {
-      auto v = value_at(other, k);
+      auto v = other_at(points_[k]);
       if (!v || !same(values[k], *v)) return false;
     }
     return true;
@@ -828,8 +909,9 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
     const ex swapped = expanded.subs(lst{sin(wild(0)) == cos(wild(0)), cos(wild(0)) == sin(wild(0))});
     if (!swapped.is_equal(expanded)) {
       bool all = n > 0;
+      const Exact swapped_at = program(swapped);
       for (std::size_t k = 0; all && k < n; ++k) {
-        auto v = value_at(swapped, k);
+        auto v = swapped_at(points_[k]);
         all = v && same(*v, ref.at_points[k]);
       }
       if (all) r.findings.push_back({"trig_swapped", "sin and cos are swapped"});
@@ -857,8 +939,9 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
         const exmap swap{{params[i], params[j]}, {params[j], params[i]}};
         const ex swapped = answer.subs(swap).subs(definitions_);
         bool all = true;
+        const Exact swapped_at = program(swapped);
         for (std::size_t k = 0; all && k < points_.size(); ++k) {
-          auto a = evaluate_at(swapped, points_[k]);
+          auto a = swapped_at(points_[k]);
           all = a && same(*a, ref.at_points[k]);
         }
         if (all) r.findings.push_back({"swapped", to_text(params[i]) + " and " + to_text(params[j]) + " are swapped"});
