@@ -205,8 +205,9 @@ ex simplest_uncached(const ex& e) {
   auto shorter = [&](const ex& a, const ex& b) {
     return large ? node_count(a) < node_count(b) : to_text(a).size() < to_text(b).size();
   };
-  // sin^2 + cos^2 = 1: the shorter of the two rewritings, when one is shorter.
-  if (has_trig(n))
+  // sin^2 + cos^2 = 1: the shorter of the two rewritings, when one is shorter (only a power
+  // of a sin or a cos can be rewritten: a long response in cos(omega_d t) has none).
+  if (n.has(pow(sin(wild(0)), wild(1))) || n.has(pow(cos(wild(0)), wild(1))))
     for (const bool to_cos : {true, false}) {
       const ex t = normal(pythagoras(n, to_cos));
       if (shorter(t, n)) n = t;

@@ -38,6 +38,17 @@ TEST_CASE("Check: equivalent forms of the sign-board tension are correct", "[che
   }
 }
 
+TEST_CASE("Check: an answer in a turning strand's length is evaluated, as the closed form is written", "[check]") {
+  // The bead's acceleration is printed with l_bead_P = sqrt(D^2 + x^2); an answer copied from
+  // it was undecided (the length had no value at the points) until the lengths were put in.
+  const Checker& bead = checker("problem-12.63-bead-on-wire.yaml");
+  for (const char* a : {"k*x*(l_0 - l_bead_P)/(l_bead_P*m)", "k*x*(l_0 - sqrt(D^2 + x^2))/(m*sqrt(D^2 + x^2))"}) {
+    INFO(a);
+    CHECK(bead.check("ddot(x)", a).verdict == Verdict::correct);
+  }
+  CHECK(bead.check("ddot(x)", "k*x*(l_bead_P - l_0)/(l_bead_P*m)").summary == "the sign is wrong");
+}
+
 TEST_CASE("Check: off by a factor of 2, wrong sign, swapped l and d", "[check]") {
   auto r = board().check("T_HI", "m*a*sqrt(b^2+d^2+e^2)/d");
   CHECK(r.verdict == Verdict::incorrect);
