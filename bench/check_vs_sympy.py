@@ -4,7 +4,7 @@
 tackle: build/bench/tackle_bench's check/* benchmarks (Google Benchmark, median of
 repetitions). SymPy: parse_expr + equals against the same closed form, per answer, median
 of repetitions. Maxima (when installed): parse_string + is(radcan(given - reference) = 0),
-timed inside one Maxima process with elapsed_real_time over 500 checks per answer (its
+timed inside one Maxima process with elapsed_real_time over 5000 checks per answer (its
 start-up is not counted). Prints a table and the ratios.
 Usage: bench/check_vs_sympy.py [BUILD_DIR]
 """
@@ -55,7 +55,7 @@ def sympy_times(repeats=7, loops=20):
     return results
 
 
-def maxima_times(loops=500):
+def maxima_times(loops=5000):
     import shutil
     if shutil.which("maxima") is None:
         return None
