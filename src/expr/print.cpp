@@ -97,7 +97,8 @@ void print_fraction(const Fraction& f, const print_context& c, unsigned level);
 // prints: neither depends on the print context (LaTeX's person order is applied when a
 // fraction is printed), and one run prints the same parts many times (a sum's terms in its
 // closed form, its condition and its report). The memory forgets everything past 16384
-// entries of either kind; a remembered key is the key made again, so it changes no output.
+// entries of either kind, between prints only (a print's own keys must stay: see below); a
+// remembered key is the key made again, so it changes no output.
 struct Fraction;
 struct KeyCache {
   // By structure, not by node: the printer makes new nodes (a sum negated term by term) whose
@@ -108,6 +109,12 @@ struct KeyCache {
   static constexpr std::size_t limit = 16384;
 };
 thread_local KeyCache key_cache;
+
+// At the start of a print: the memory forgets everything once it is past its limit.
+void trim_key_cache() {
+  if (key_cache.keys.size() >= KeyCache::limit) key_cache.keys.clear();
+  if (key_cache.splits.size() >= KeyCache::limit) key_cache.splits.clear();
+}
 
 std::string key_of_uncached(const ex& e);
 
@@ -148,7 +155,6 @@ std::string key_of(const ex& e) {
     return ex_to<symbol>(e.op(0)).get_name() + "^" + std::to_string(ex_to<numeric>(e.op(1)).to_int());
   if (auto it = key_cache.keys.find(e); it != key_cache.keys.end()) return it->second;
   std::string k = key_of_uncached(e);
-  if (key_cache.keys.size() >= KeyCache::limit) key_cache.keys.clear();
   key_cache.keys.emplace(e, k);
   return k;
 }
@@ -304,7 +310,6 @@ Fraction split_uncached(const ex& e);
 Fraction split(const ex& e) {
   if (auto it = key_cache.splits.find(e); it != key_cache.splits.end()) return *it->second;
   auto f = std::make_shared<const Fraction>(split_uncached(e));
-  if (key_cache.splits.size() >= KeyCache::limit) key_cache.splits.clear();
   key_cache.splits.emplace(e, f);
   return *f;
 }
@@ -533,6 +538,7 @@ std::string to_text(const ex& e) {
   if (is_exactly<symbol>(e)) return ex_to<symbol>(e).get_name();
   thread_local std::unordered_map<ex, std::string, std::hash<ex>, ex_is_equal> memory;
   if (auto it = memory.find(e); it != memory.end()) return it->second;
+  trim_key_cache();
   static const tackle_text text_like(std::cout);
   std::string out = in_context(text_like, [&](const print_context& c) { e.print(c); });
   if (out.size() > 1000) return out;  // the memory holds short forms only (a chain's closed forms are long)
@@ -546,6 +552,7 @@ PersonOrder::~PersonOrder() { person_rank = previous_; }
 
 std::string to_latex(const ex& e) {
   ensure_registered();
+  trim_key_cache();
   static const tackle_latex latex_like(std::cout);
   return in_context(latex_like, [&](const print_context& c) { e.print(c); });
 }
