@@ -236,7 +236,11 @@ void steady_state(ConditionInTime& ct, const CheckedCondition& c, const Response
     if (!even && sign_of(fi) != std::optional<int>(1)) positive = false;
   }
   if (!positive) return;
-  ct.steady_amplitude_condition = simplest(num);
+  // Undamped: alpha^2 - beta^2 = (alpha - beta)(alpha + beta), and the numerator's factors
+  // are theirs (factor() of the whole numerator was half the run).
+  ct.steady_amplitude_condition =
+      gamma.is_zero() ? simplest_of_product(num, {numer_denom_remembered(alpha - beta).op(0), numer_denom_remembered(alpha + beta).op(0)})
+                      : simplest(num);
   if (const auto v = NormalForm(lower ? alpha - sqrt(beta * beta + gamma * gamma) : alpha + sqrt(beta * beta + gamma * gamma)).approx_at(values))
     ct.steady_holds = lower ? (op == ">=" ? *v >= 0 : *v > 0) : (op == "<=" ? *v <= 0 : *v < 0);
   // In w^2: a quadratic with two roots gives the band.

@@ -196,15 +196,17 @@ ex factored(const ex& polynomial) {
 
 namespace {
 
+// Which form is shorter is judged by its printed length; past some hundreds of nodes (a
+// chain's closed forms over 256 masses), by its node count: printing both forms of every
+// closed form was a quarter of the time of a large problem.
+bool shorter(const ex& a, const ex& b, bool large) {
+  return large ? node_count(a) < node_count(b) : to_text(a).size() < to_text(b).size();
+}
+
 ex simplest_uncached(const ex& e) {
   ex n = normal_remembered(e);
-  // Which form is shorter is judged by its printed length; past some hundreds of nodes
-  // (a chain's closed forms over 256 masses), by its node count: printing both forms of
-  // every closed form was a quarter of the time of a large problem.
   const bool large = node_count(n, 301) > 300;
-  auto shorter = [&](const ex& a, const ex& b) {
-    return large ? node_count(a) < node_count(b) : to_text(a).size() < to_text(b).size();
-  };
+  auto shorter = [&](const ex& a, const ex& b) { return tackle::shorter(a, b, large); };
   // sin^2 + cos^2 = 1: the shorter of the two rewritings, when one is shorter (only a power
   // of a sin or a cos can be rewritten: a long response in cos(omega_d t) has none).
   if (n.has(pow(sin(wild(0)), wild(1))) || n.has(pow(cos(wild(0)), wild(1))))
@@ -234,6 +236,30 @@ ex simplest(const ex& e) {
   memory.emplace(e, out);
   memory.emplace(n, out);
   return out;
+}
+
+ex simplest_of_product(const ex& polynomial, const std::vector<ex>& parts) {
+  const ex n = normal_remembered(polynomial);
+  const ex nd = numer_denom_of_normal(n);
+  if (!nd.op(1).is_equal(1) || n.has(pow(sin(wild(0)), wild(1))) || n.has(pow(cos(wild(0)), wild(1))))
+    return simplest(polynomial);
+  // The number c with polynomial = c * (the parts' product), from one exact random point,
+  // then checked exactly.
+  ex product = 1;
+  for (const ex& p : parts) product *= p;
+  const ex expanded = product.expand();
+  std::mt19937 rng(20261124);
+  RationalPoint at;
+  for (const auto& [sym, v] : random_point(lst{nd.op(0), expanded}, rng)) at.emplace(sym, ex_to<numeric>(v));
+  const RationalAt whole = rational_at(nd.op(0), at), of_parts = rational_at(expanded, at);
+  if (whole.kind != RationalAt::Kind::value || of_parts.kind != RationalAt::Kind::value || of_parts.value.is_zero())
+    return simplest(polynomial);
+  const numeric c = whole.value / of_parts.value;
+  if (!(nd.op(0) - c * expanded).expand().is_zero()) return simplest(polynomial);
+  ex f = c;
+  for (const ex& p : parts) f *= factored(p);
+  remember_normal(f, n);
+  return shorter(f, n, node_count(n, 301) > 300) ? f : n;
 }
 
 namespace {

@@ -83,3 +83,16 @@ connections: [{type: push, on: A, amount: d}]
           "t.yaml: equation 'LMB A (x)' is not dimensionally consistent: the term from push on A is a length (expected a force)");
   }
 }
+
+TEST_CASE("Simplest: a product known by its parts gives the form simplest() gives the whole", "[solve]") {
+  using namespace GiNaC;
+  const symbol a("a"), g("g"), k("k"), m("m"), w("w");
+  // The cord's amplitude condition: -m^2 (a k w^2 + g k - g m w^2)(a k w^2 + g m w^2 - g k).
+  const ex p1 = a * k * pow(w, 2) + g * k - g * m * pow(w, 2), p2 = a * k * pow(w, 2) + g * m * pow(w, 2) - g * k;
+  const ex whole = (-pow(m, 2) * p1 * p2).expand();
+  const ex by_parts = simplest_of_product(whole, {(m * p1).expand(), (m * p2).expand()});
+  CHECK(by_parts.is_equal(simplest(whole)));
+  CHECK(to_text(by_parts) == "-m^2*(a*k*w^2 + g*k - g*m*w^2)*(a*k*w^2 + g*m*w^2 - g*k)");
+  // Parts that are not the whole's factors: the whole is simplified as it is.
+  CHECK(simplest_of_product(whole, {p1, p1}).is_equal(simplest(whole)));
+}
