@@ -97,7 +97,7 @@ const tackle::Analysis* the_phase(const tackle::Analysis& whole, const Options& 
 // derive and solve: every phase of a phased description, unless --phase names one.
 int run_report(const Options& o, const tackle::RuleSet& rules, bool full) {
   const auto whole = tackle::analyze_file(o.file, rules);
-  const tackle::ReportOptions options{o.digits, full};  // solve prints no steps, figures or plots
+  const tackle::ReportOptions options{.digits = o.digits, .narrate = full};  // solve prints no steps, figures or plots
   if (o.phase.empty() && !whole->phases.empty())
     return emit(tackle::write(tackle::explain_phases(*whole, options), formats.at(o.format), full), o.out);
   const tackle::Analysis* analysis = the_phase(*whole, o);

@@ -24,6 +24,13 @@ namespace tackle {
   return e.has(sin(wild())) || e.has(cos(wild()));
 }
 
+/// True when `e` has a power of a sin or a cos in it: only such a power can be rewritten by
+/// sin^2 + cos^2 = 1 (pythagoras()).
+[[nodiscard]] inline bool has_trig_power(const GiNaC::ex& e) {
+  using namespace GiNaC;
+  return e.has(pow(sin(wild(0)), wild(1))) || e.has(pow(cos(wild(0)), wild(1)));
+}
+
 /// The sum of squares `e` (expanded) with sin^2 + cos^2 = 1 used where that leaves fewer terms
 /// (a number when it can): what goes under the root of a length or a norm.
 [[nodiscard]] inline GiNaC::ex fewer_trig_terms(GiNaC::ex e) {

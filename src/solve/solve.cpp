@@ -203,21 +203,26 @@ bool shorter(const ex& a, const ex& b, bool large) {
   return large ? node_count(a) < node_count(b) : to_text(a).size() < to_text(b).size();
 }
 
+// The factored form f of the normal form n, or n, whichever is shorter; f is remembered as
+// having the normal form n.
+ex shorter_form(const ex& f, const ex& n, bool large) {
+  remember_normal(f, n);
+  return shorter(f, n, large) ? f : n;
+}
+
 ex simplest_uncached(const ex& e) {
   ex n = normal_remembered(e);
   const bool large = node_count(n, 301) > 300;
   auto shorter = [&](const ex& a, const ex& b) { return tackle::shorter(a, b, large); };
   // sin^2 + cos^2 = 1: the shorter of the two rewritings, when one is shorter (only a power
   // of a sin or a cos can be rewritten: a long response in cos(omega_d t) has none).
-  if (n.has(pow(sin(wild(0)), wild(1))) || n.has(pow(cos(wild(0)), wild(1))))
+  if (has_trig_power(n))
     for (const bool to_cos : {true, false}) {
       const ex t = normal(pythagoras(n, to_cos));
       if (shorter(t, n)) n = t;
     }
   const ex nd = numer_denom_of_normal(n);
-  const ex f = factored(nd.op(0)) / factored(nd.op(1));
-  remember_normal(f, n);
-  return shorter(f, n) ? f : n;
+  return shorter_form(factored(nd.op(0)) / factored(nd.op(1)), n, large);
 }
 
 }  // namespace
@@ -241,8 +246,7 @@ ex simplest(const ex& e) {
 ex simplest_of_product(const ex& polynomial, const std::vector<ex>& parts) {
   const ex n = normal_remembered(polynomial);
   const ex nd = numer_denom_of_normal(n);
-  if (!nd.op(1).is_equal(1) || n.has(pow(sin(wild(0)), wild(1))) || n.has(pow(cos(wild(0)), wild(1))))
-    return simplest(polynomial);
+  if (!nd.op(1).is_equal(1) || has_trig_power(n)) return simplest(polynomial);
   // The number c with polynomial = c * (the parts' product), from one exact random point,
   // then checked exactly.
   ex product = 1;
@@ -258,8 +262,7 @@ ex simplest_of_product(const ex& polynomial, const std::vector<ex>& parts) {
   if (!(nd.op(0) - c * expanded).expand().is_zero()) return simplest(polynomial);
   ex f = c;
   for (const ex& p : parts) f *= factored(p);
-  remember_normal(f, n);
-  return shorter(f, n, node_count(n, 301) > 300) ? f : n;
+  return shorter_form(f, n, node_count(n, 301) > 300);
 }
 
 namespace {
