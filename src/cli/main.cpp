@@ -9,6 +9,7 @@
 #include "core/diagnostics.hpp"
 #include "check/batch.hpp"
 #include "expr/parse.hpp"
+#include "expr/rational.hpp"
 #include "isolate/isolate.hpp"
 #include "pipeline/pipeline.hpp"
 #include "report/isolation_report.hpp"
@@ -189,7 +190,7 @@ int run_isolate(const Options& o, const tackle::RuleSet& rules) {
   std::vector<GiNaC::ex> wanted = unknowns;
   if (!o.all) {
     const auto parsed = tackle::parse_expression(o.target, *model.symbols);
-    if (!parsed.value || std::find(unknowns.begin(), unknowns.end(), *parsed.value) == unknowns.end()) {
+    if (!parsed.value || !tackle::contains(unknowns, *parsed.value)) {
       std::vector<std::string> names;
       for (const auto& u : unknowns) names.push_back(model.symbols->find(u)->name);
       std::cerr << o.file << ": '" << o.target << "' is not an unknown of this problem (unknowns: "

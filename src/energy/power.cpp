@@ -56,7 +56,7 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
   // fix, in terms of the rest.
   std::vector<ex> rates;
   for (const auto& b : m.bodies)
-    if (!b.rate.is_zero() && std::find(m.given.begin(), m.given.end(), b.rate) == m.given.end()) rates.push_back(b.rate);
+    if (!b.rate.is_zero() && !contains(m.given, b.rate)) rates.push_back(b.rate);
   exmap rate_values;
   if (!s.rate_equations.empty() && !rates.empty()) {
     const Solution r = solve_equations(m.file, s.rate_equations, rates);
@@ -83,7 +83,7 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
   // gathered once: has() of each candidate would be quadratic.)
   const auto present = symbols_in(residual);
   for (const auto& u : m.candidates)
-    if (present.count(u) != 0 && std::find(sol.free.begin(), sol.free.end(), u) == sol.free.end()) {
+    if (present.count(u) != 0 && !contains(sol.free, u)) {
       c.reason = "the balances chosen do not give " + to_text(u);
       return c;
     }

@@ -256,7 +256,50 @@ std::size_t index_run(const Terms& terms, std::size_t i) {
   return n;
 }
 
+void print_add_terms(const add& s, const print_context& c);
+
+// The person order of LaTeX products in force (see PersonOrder), if any.
+thread_local const FactorRank* person_rank = nullptr;
+
+// A long sum's terms are printed once per kind of context and remembered (per thread, up to
+// 16 MB of text): a chain's m_1 + ... + m_256 is in every one of its 511 closed forms, and
+// sorting its terms each time was most of printing them. Not in LaTeX under a person order
+// (the order of factors depends on it).
+constexpr std::size_t long_sum_terms = 16;
+struct LongSums {
+  std::unordered_map<ex, std::string, std::hash<ex>, ex_is_equal> text[2];
+  std::size_t bytes = 0;
+};
+thread_local LongSums long_sums;
+
 void print_add(const add& s, const print_context& c, unsigned level) {
+  const bool latex = latex_ctx(c);
+  const bool paren = level >= add_prec;
+  if (s.nops() < long_sum_terms || (latex && person_rank)) {
+    if (paren) c.s << (latex ? "\\left(" : "(");
+    print_add_terms(s, c);
+    if (paren) c.s << (latex ? "\\right)" : ")");
+    return;
+  }
+  auto& memory = long_sums.text[latex ? 1 : 0];
+  const ex e(s);
+  auto it = memory.find(e);
+  if (it == memory.end()) {
+    std::string body = in_context(c, [&](const print_context& inner) { print_add_terms(s, inner); });
+    if (long_sums.bytes + body.size() > (std::size_t{16} << 20)) {
+      long_sums.text[0].clear();
+      long_sums.text[1].clear();
+      long_sums.bytes = 0;
+    }
+    long_sums.bytes += body.size();
+    it = memory.emplace(e, std::move(body)).first;
+  }
+  if (paren) c.s << (latex ? "\\left(" : "(");
+  c.s << it->second;
+  if (paren) c.s << (latex ? "\\right)" : ")");
+}
+
+void print_add_terms(const add& s, const print_context& c) {
   const bool latex = latex_ctx(c);
   struct Term {
     Fraction f;
@@ -277,8 +320,6 @@ void print_add(const add& s, const print_context& c, unsigned level) {
   std::sort(pos.begin(), pos.end(), by_key);
   std::sort(neg.begin(), neg.end(), by_key);
   std::ostream& os = c.s;
-  const bool paren = level >= add_prec;
-  if (paren) os << (latex ? "\\left(" : "(");
   bool first = true;
   // In LaTeX, a run of five or more names with one base and consecutive indices (m_1 + m_2
   // + ... + m_256) is written m_1 + \dots + m_256, as a person writes it. The text form is
@@ -300,7 +341,6 @@ void print_add(const add& s, const print_context& c, unsigned level) {
   };
   print_terms(pos, " + ");
   print_terms(neg, " - ");
-  if (paren) os << (latex ? "\\right)" : ")");
 }
 
 Fraction split_uncached(const ex& e);
@@ -418,8 +458,6 @@ void print_product(const numeric& coeff, const std::vector<ex>& factors, const p
     first = false;
   }
 }
-
-thread_local const FactorRank* person_rank = nullptr;
 
 // LaTeX writes a product's factors in the order a person does (m a, mu N_A) when the names'
 // kinds are known; the name order stays the tie-break.

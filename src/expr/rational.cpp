@@ -1,9 +1,15 @@
 #include "expr/rational.hpp"
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 
+#include <cln/integer.h>
+#include <cln/rational.h>
+
+#include "expr/kind.hpp"
 #include "expr/trig.hpp"
 
 namespace tackle {
@@ -73,42 +79,93 @@ ex numer_denom_of_normal(const ex& n) {
   return lst{num, den};
 }
 
-RationalAt rational_at(const ex& e, const RationalPoint& point) {
+namespace {
+
+// rational_at in CLN's rationals: one number object per node instead of a GiNaC numeric
+// (each a new heap object with its own hash), and classes told apart by their class-info
+// address (is_a<> is a dynamic_cast that compares type names across libraries).
+RationalAt::Kind rational_in(const ex& e, const RationalPoint& point, cln::cl_RA& out) {
   using Kind = RationalAt::Kind;
-  if (is_a<numeric>(e)) {
+  if (is_exactly<numeric>(e)) {
     const numeric& c = ex_to<numeric>(e);
-    return c.is_rational() ? RationalAt{Kind::value, c} : RationalAt{};
+    if (!c.is_rational()) return Kind::other;
+    out = cln::the<cln::cl_RA>(c.to_cl_N());
+    return Kind::value;
   }
-  if (is_a<symbol>(e)) {
+  if (is_exactly<symbol>(e)) {
     const auto it = point.find(e);
-    return it == point.end() ? RationalAt{} : RationalAt{Kind::value, it->second};
+    if (it == point.end() || !it->second.is_rational()) return Kind::other;
+    out = cln::the<cln::cl_RA>(it->second.to_cl_N());
+    return Kind::value;
   }
-  if (is_a<add>(e) || is_a<mul>(e)) {
-    const bool sum = is_a<add>(e);
-    numeric acc = sum ? 0 : 1;
-    for (std::size_t i = 0; i < e.nops(); ++i) {
-      const RationalAt t = rational_at(e.op(i), point);
-      if (t.kind != Kind::value) return t;
-      acc = sum ? acc + t.value : acc * t.value;
+  const bool sum = is_exactly<add>(e);
+  if (sum || is_exactly<mul>(e)) {
+    cln::cl_RA acc = sum ? 0 : 1, t;
+    const std::size_t n = e.nops();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Kind k = rational_in(e.op(i), point, t);
+      if (k != Kind::value) return k;
+      acc = sum ? acc + t : acc * t;
     }
-    return {Kind::value, acc};
+    out = acc;
+    return Kind::value;
   }
-  if (is_a<power>(e) && is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer()) {
-    const RationalAt b = rational_at(e.op(0), point);
-    if (b.kind != Kind::value) return b;
-    const numeric& x = ex_to<numeric>(e.op(1));
-    if (b.value.is_zero() && x.is_negative()) return {Kind::pole, 0};
-    return {Kind::value, pow(b.value, x)};
+  if (is_exactly<power>(e) && is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer()) {
+    cln::cl_RA b;
+    const Kind k = rational_in(e.op(0), point, b);
+    if (k != Kind::value) return k;
+    const cln::cl_I x = cln::the<cln::cl_I>(ex_to<numeric>(e.op(1)).to_cl_N());
+    if (cln::zerop(b) && cln::minusp(x)) return Kind::pole;
+    out = cln::expt(b, x);
+    return Kind::value;
   }
-  return {};
+  return Kind::other;
 }
+
+}  // namespace
+
+RationalAt rational_at(const ex& e, const RationalPoint& point) {
+  cln::cl_RA v;
+  const RationalAt::Kind k = rational_in(e, point, v);
+  if (k == RationalAt::Kind::value) return {k, numeric(v)};
+  return {k, 0};
+}
+
+namespace {
+
+// The distinct symbols of `e` in the order first met, walked by op() (GiNaC's preorder
+// iterator keeps a stack of copies and was a tenth of a chain's run); each symbol is
+// remembered by its hash, so a sum over 256 masses met again costs no comparisons of names.
+void gather_symbols(const ex& e, std::unordered_set<ex, ExHash, ex_is_equal>& seen, std::vector<ex>& out) {
+  if (is_exactly<symbol>(e)) {
+    if (seen.insert(e).second) out.push_back(e);
+    return;
+  }
+  if (is_exactly<numeric>(e)) return;
+  const std::size_t n = e.nops();
+  for (std::size_t i = 0; i < n; ++i) gather_symbols(e.op(i), seen, out);
+}
+
+std::vector<ex> distinct_symbols(const ex& e) {
+  std::unordered_set<ex, ExHash, ex_is_equal> seen;
+  std::vector<ex> out;
+  gather_symbols(e, seen, out);
+  return out;
+}
+
+void count_nodes(const ex& e, std::size_t limit, std::size_t& n) {
+  if (++n >= limit) return;
+  const std::size_t k = e.nops();
+  for (std::size_t i = 0; i < k && n < limit; ++i) count_nodes(e.op(i), limit, n);
+}
+
+}  // namespace
 
 // Values are drawn for the symbols in the order of their names, not in the order GiNaC
 // keeps them, so the points are the same in every run.
 exmap random_point(const ex& e, std::mt19937& rng) {
   std::map<std::string, ex> by_name;
-  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
-    if (is_a<symbol>(*it)) by_name.emplace(ex_to<symbol>(*it).get_name(), *it);
+  for (const ex& s : distinct_symbols(e)) by_name.emplace(ex_to<symbol>(s).get_name(), s);
   // Integers up to 2^40: as good as rationals for telling a nonzero rational function from
   // zero (the chance of a root is its degree over 2^40), and sums of them need no gcd.
   exmap m;
@@ -118,15 +175,17 @@ exmap random_point(const ex& e, std::mt19937& rng) {
 }
 
 std::set<ex, ex_is_less> symbols_in(const ex& e) {
-  std::set<ex, ex_is_less> out;
-  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
-    if (is_a<symbol>(*it)) out.insert(*it);
-  return out;
+  const std::vector<ex> v = distinct_symbols(e);
+  return std::set<ex, ex_is_less>(v.begin(), v.end());
+}
+
+bool contains(const std::vector<ex>& v, const ex& x) {
+  return std::any_of(v.begin(), v.end(), [&](const ex& y) { return y.is_equal(x); });
 }
 
 std::size_t node_count(const ex& e, std::size_t limit) {
   std::size_t n = 0;
-  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end() && n < limit; ++it) ++n;
+  if (limit > 0) count_nodes(e, limit, n);
   return n;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "expr/print.hpp"
+#include "expr/rational.hpp"
 #include "solve/eliminate.hpp"
 #include "solve/solve.hpp"
 
@@ -23,7 +24,7 @@ Vec axis_vec(int i) {
 std::vector<ex> model_unknowns(const Model& m) {
   std::vector<ex> out;
   for (const auto& u : m.candidates)
-    if (std::find(m.given.begin(), m.given.end(), u) == m.given.end()) out.push_back(u);
+    if (!contains(m.given, u)) out.push_back(u);
   return out;
 }
 

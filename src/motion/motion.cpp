@@ -51,7 +51,7 @@ Dependents dependents(const Model& m, const EquationSystem& s, const MotionSpec&
   std::vector<ex> dep_rates, dep_coords;
   for (const auto& b : m.bodies) {
     if (b.coord.is_zero()) continue;
-    if (std::find(spec.coordinates.begin(), spec.coordinates.end(), b.coord) != spec.coordinates.end()) continue;
+    if (contains(spec.coordinates, b.coord)) continue;
     dep_rates.push_back(b.rate);
     dep_coords.push_back(b.coord);
   }
@@ -343,7 +343,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
       }
     for (const auto& b : m.bodies)
       if (!b.coord.is_zero() && (a.has(b.coord) || a.has(b.rate)) &&
-          std::find(state.begin(), state.end(), a.has(b.coord) ? b.coord : b.rate) == state.end()) {
+          !contains(state, a.has(b.coord) ? b.coord : b.rate)) {
         out.problem = "the acceleration " + to_text(eom.ddq[&a - eom.acceleration.data()]) + " depends on " +
                       to_text(a.has(b.coord) ? b.coord : b.rate) + ", which the constraints do not give from the motion's coordinates";
         return out;

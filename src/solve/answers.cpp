@@ -7,6 +7,7 @@
 
 #include "expr/normal_form.hpp"
 #include "expr/print.hpp"
+#include "expr/rational.hpp"
 
 namespace tackle {
 
@@ -71,8 +72,8 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
     a.tex = w.tex;
     a.symbol = table.find(w.name)->sym;
     a.unit = w.unit;
-    const bool is_unknown = std::find(s.unknowns.begin(), s.unknowns.end(), w.expr) != s.unknowns.end();
-    const bool is_candidate = std::find(m.candidates.begin(), m.candidates.end(), w.expr) != m.candidates.end();
+    const bool is_unknown = contains(s.unknowns, w.expr);
+    const bool is_candidate = contains(m.candidates, w.expr);
     if (sol.status == Solution::Status::inconsistent) {
       a.status = Answer::Status::not_in_equations;
     } else if (!w.defined && is_candidate && !is_unknown) {
@@ -103,7 +104,7 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
       bool free = false;
       for (const auto& f : sol.free) free = free || general.has(f);
       if (free) {
-        const bool is_free = std::find(sol.free.begin(), sol.free.end(), w.expr) != sol.free.end();
+        const bool is_free = contains(sol.free, w.expr);
         a.status = is_free ? Answer::Status::free : Answer::Status::in_combination;
         if (!is_free) {
           // Affine in the free unknowns: each free unknown with its coefficient, then the rest.
@@ -125,7 +126,7 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
         for (const auto& sym : table.all()) {
           if (present.count(sym->sym) == 0) continue;
           const bool known = sym->role == SymbolRole::parameter || sym->role == SymbolRole::defined || sym->role == SymbolRole::time ||
-                             std::find(m.given.begin(), m.given.end(), sym->sym) != m.given.end();
+                             contains(m.given, sym->sym);
           if (!known) a.missing.push_back(sym->sym);
         }
         if (!a.missing.empty()) {

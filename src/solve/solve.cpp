@@ -133,7 +133,9 @@ bool too_wide(const ex& expanded) {
 
 }  // namespace
 
-std::vector<ex> canonical_factors(const ex& polynomial) {
+namespace {
+
+std::vector<ex> canonical_factors_uncached(const ex& polynomial) {
   // sin(theta) and the like stand in as symbols while factoring (factor() leaves a sum with
   // them unfactored), and are put back in each factor.
   exmap repl;
@@ -173,6 +175,20 @@ std::vector<ex> canonical_factors(const ex& polynomial) {
     out.push_back(exponent.is_equal(1) ? base : pow(base, exponent));
   }
   if (!coefficient.is_equal(1) || out.empty()) out.insert(out.begin(), coefficient);
+  return out;
+}
+
+}  // namespace
+
+// Remembered per thread (the last 4096 polynomials): a condition's numerator and
+// denominator are factored again after simplest() factored them, and a chain's 255 tensions
+// share one denominator. Equal polynomials give equal factors, so nothing printed changes.
+std::vector<ex> canonical_factors(const ex& polynomial) {
+  thread_local std::unordered_map<ex, std::vector<ex>, ExHash, ex_is_equal> memory;
+  if (auto it = memory.find(polynomial); it != memory.end()) return it->second;
+  std::vector<ex> out = canonical_factors_uncached(polynomial);
+  if (memory.size() >= 4096) memory.clear();
+  memory.emplace(polynomial, out);
   return out;
 }
 
@@ -518,7 +534,7 @@ std::optional<Solution> solve_level(const Model& model, const std::vector<Equati
   std::vector<ex> unknowns;
   for (const auto& b : model.bodies) {
     const ex& q = role == SymbolRole::rate ? b.rate : b.coord;
-    if (q.is_zero() || std::find(model.given.begin(), model.given.end(), q) != model.given.end()) continue;
+    if (q.is_zero() || contains(model.given, q)) continue;
     // A coordinate inside a turning strand's length (x in l_CP = sqrt(h^2 + x^2)): the length
     // sum only looks linear in it, so it is not solved for (it stays what it depends on).
     if (std::any_of(equations.begin(), equations.end(),
@@ -550,7 +566,7 @@ Solution solve(const Model& model, const EquationSystem& s) {
     // Conditions on unknowns that the chosen equations do not contain are left out.
     bool relevant = true;
     for (const auto& u : model.candidates)
-      if (present.count(u) != 0 && std::find(s.unknowns.begin(), s.unknowns.end(), u) == s.unknowns.end()) relevant = false;
+      if (present.count(u) != 0 && !contains(s.unknowns, u)) relevant = false;
     if (!relevant) continue;
     if (!cc.depends_on_free) {
       std::vector<ex> parameters;

@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "expr/print.hpp"
+#include "expr/rational.hpp"
 
 namespace tackle::build {
 
@@ -130,7 +131,7 @@ void motion(BuildContext& ctx) {
     // those chosen before it.
     std::vector<std::size_t> order;
     for (std::size_t j = 0; j < n; ++j)
-      if (std::find(m.given.begin(), m.given.end(), m.bodies[moving[j]].coord) != m.given.end()) order.push_back(j);
+      if (contains(m.given, m.bodies[moving[j]].coord)) order.push_back(j);
     for (std::size_t j = 0; j < n; ++j)
       if (std::find(order.begin(), order.end(), j) == order.end()) order.push_back(j);
     for (auto j : order) {
@@ -155,7 +156,7 @@ void motion(BuildContext& ctx) {
   // The motion's coordinates and rates are known at every instant.
   for (const auto& q : {spec.coordinates, spec.rates})
     for (const auto& s : q)
-      if (std::find(m.given.begin(), m.given.end(), s) == m.given.end()) {
+      if (!contains(m.given, s)) {
         m.given.push_back(s);
         m.candidates.erase(std::remove(m.candidates.begin(), m.candidates.end(), s), m.candidates.end());
       }
@@ -174,7 +175,7 @@ void motion(BuildContext& ctx) {
       continue;
     }
     const bool is_rate = s->role == SymbolRole::rate;
-    const bool independent = std::find(spec.coordinates.begin(), spec.coordinates.end(), m.bodies[body].coord) != spec.coordinates.end();
+    const bool independent = contains(spec.coordinates, m.bodies[body].coord);
     if (is_rate && !independent) {
       std::vector<std::string> rates;
       for (const auto& r : spec.rates) rates.push_back(to_text(r));
@@ -233,7 +234,7 @@ void motion(BuildContext& ctx) {
   if (md.speed_at) {
     const auto& [key, value] = *md.speed_at;
     const auto r = parse_expression(key.text, *ctx.table);
-    if (!r.value || std::find(spec.coordinates.begin(), spec.coordinates.end(), *r.value) == spec.coordinates.end()) {
+    if (!r.value || !contains(spec.coordinates, *r.value)) {
       std::vector<std::string> known;
       for (const auto& q : spec.coordinates) known.push_back(to_text(q));
       ctx.unknown_name(key, "coordinate of the motion", known);
