@@ -1,8 +1,10 @@
 #include "equations/equations.hpp"
 
 #include <algorithm>
+#include <set>
 
 #include "expr/print.hpp"
+#include "expr/rational.hpp"
 
 namespace tackle {
 
@@ -187,12 +189,18 @@ EquationSystem build_equations(const Model& m) {
       eq.terms = {eq.lhs};
       s.equations.push_back(eq);
     }
+  // The candidates the equations hold, in the candidates' order. The equations' symbols are
+  // gathered once: has() of each candidate in each equation is quadratic in a chain.
+  std::vector<ex> residuals;
+  std::set<ex, ex_is_less> present;
+  for (const auto& eq : s.equations) {
+    residuals.push_back(eq.lhs - eq.rhs);
+    for (const ex& x : symbols_in(residuals.back())) present.insert(x);
+  }
   for (const auto& u : m.candidates) {
-    for (const auto& eq : s.equations)
-      if ((eq.lhs - eq.rhs).has(u)) {
-        s.unknowns.push_back(u);
-        break;
-      }
+    const bool held = is_a<symbol>(u) ? present.count(u) != 0
+                                      : std::any_of(residuals.begin(), residuals.end(), [&](const ex& r) { return r.has(u); });
+    if (held) s.unknowns.push_back(u);
   }
   return s;
 }

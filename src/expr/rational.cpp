@@ -1,6 +1,7 @@
 #include "expr/rational.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <unordered_map>
@@ -83,8 +84,10 @@ namespace {
 
 // rational_at in CLN's rationals: one number object per node instead of a GiNaC numeric
 // (each a new heap object with its own hash), and classes told apart by their class-info
-// address (is_a<> is a dynamic_cast that compares type names across libraries).
-RationalAt::Kind rational_in(const ex& e, const RationalPoint& point, cln::cl_RA& out) {
+// address (is_a<> is a dynamic_cast that compares type names across libraries). `value_of`
+// gives a symbol's value.
+template <class ValueOf>
+RationalAt::Kind rational_in(const ex& e, ValueOf& value_of, cln::cl_RA& out) {
   using Kind = RationalAt::Kind;
   if (is_exactly<numeric>(e)) {
     const numeric& c = ex_to<numeric>(e);
@@ -92,18 +95,13 @@ RationalAt::Kind rational_in(const ex& e, const RationalPoint& point, cln::cl_RA
     out = cln::the<cln::cl_RA>(c.to_cl_N());
     return Kind::value;
   }
-  if (is_exactly<symbol>(e)) {
-    const auto it = point.find(e);
-    if (it == point.end() || !it->second.is_rational()) return Kind::other;
-    out = cln::the<cln::cl_RA>(it->second.to_cl_N());
-    return Kind::value;
-  }
+  if (is_exactly<symbol>(e)) return value_of(e, out);
   const bool sum = is_exactly<add>(e);
   if (sum || is_exactly<mul>(e)) {
     cln::cl_RA acc = sum ? 0 : 1, t;
     const std::size_t n = e.nops();
     for (std::size_t i = 0; i < n; ++i) {
-      const Kind k = rational_in(e.op(i), point, t);
+      const Kind k = rational_in(e.op(i), value_of, t);
       if (k != Kind::value) return k;
       acc = sum ? acc + t : acc * t;
     }
@@ -112,7 +110,7 @@ RationalAt::Kind rational_in(const ex& e, const RationalPoint& point, cln::cl_RA
   }
   if (is_exactly<power>(e) && is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer()) {
     cln::cl_RA b;
-    const Kind k = rational_in(e.op(0), point, b);
+    const Kind k = rational_in(e.op(0), value_of, b);
     if (k != Kind::value) return k;
     const cln::cl_I x = cln::the<cln::cl_I>(ex_to<numeric>(e.op(1)).to_cl_N());
     if (cln::zerop(b) && cln::minusp(x)) return Kind::pole;
@@ -122,14 +120,126 @@ RationalAt::Kind rational_in(const ex& e, const RationalPoint& point, cln::cl_RA
   return Kind::other;
 }
 
-}  // namespace
+RationalAt::Kind value_in(const RationalPoint& point, const ex& s, cln::cl_RA& out) {
+  const auto it = point.find(s);
+  if (it == point.end() || !it->second.is_rational()) return RationalAt::Kind::other;
+  out = cln::the<cln::cl_RA>(it->second.to_cl_N());
+  return RationalAt::Kind::value;
+}
 
-RationalAt rational_at(const ex& e, const RationalPoint& point) {
-  cln::cl_RA v;
-  const RationalAt::Kind k = rational_in(e, point, v);
+RationalAt result(RationalAt::Kind k, const cln::cl_RA& v) {
   if (k == RationalAt::Kind::value) return {k, numeric(v)};
   return {k, 0};
 }
+
+}  // namespace
+
+RationalAt rational_at(const ex& e, const RationalPoint& point) {
+  auto value_of = [&](const ex& s, cln::cl_RA& out) { return value_in(point, s, out); };
+  cln::cl_RA v;
+  const RationalAt::Kind k = rational_in(e, value_of, v);
+  return result(k, v);
+}
+
+numeric drawn_value(const std::string& name, std::uint64_t seed) {
+  // FNV-1a of the name, mixed with the seed by splitmix64's finalizer.
+  std::uint64_t h = 14695981039346656037ULL;
+  for (const unsigned char c : name) h = (h ^ c) * 1099511628211ULL;
+  h ^= seed + 0x9e3779b97f4a7c15ULL;
+  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
+  h ^= h >> 31;
+  return numeric(static_cast<long>(1 + (h & ((std::uint64_t{1} << 40) - 1))));
+}
+
+RationalAt rational_at_drawn(const ex& e, RationalPoint& point, std::uint64_t seed) {
+  auto value_of = [&](const ex& s, cln::cl_RA& out) {
+    auto it = point.find(s);
+    if (it == point.end()) it = point.emplace(s, drawn_value(ex_to<symbol>(s).get_name(), seed)).first;
+    if (!it->second.is_rational()) return RationalAt::Kind::other;
+    out = cln::the<cln::cl_RA>(it->second.to_cl_N());
+    return RationalAt::Kind::value;
+  };
+  cln::cl_RA v;
+  const RationalAt::Kind k = rational_in(e, value_of, v);
+  return result(k, v);
+}
+
+namespace {
+
+using u64 = std::uint64_t;
+constexpr u64 P = ModularPoint::prime;
+
+u64 mod_mul(u64 a, u64 b) {
+  const unsigned __int128 x = static_cast<unsigned __int128>(a) * b;
+  u64 r = static_cast<u64>(x & P) + static_cast<u64>(x >> 61);
+  return r >= P ? r - P : r;
+}
+u64 mod_add(u64 a, u64 b) {
+  const u64 r = a + b;
+  return r >= P ? r - P : r;
+}
+u64 mod_pow(u64 b, u64 k) {
+  u64 r = 1;
+  for (; k; k >>= 1, b = mod_mul(b, b))
+    if (k & 1) r = mod_mul(r, b);
+  return r;
+}
+u64 mod_inverse(u64 a) { return mod_pow(a, P - 2); }
+
+u64 mod_of(const cln::cl_I& x) { return cln::cl_I_to_UQ(cln::mod(x, cln::cl_I(P))); }
+
+ModularAt modular_in(const ex& e, ModularPoint& point) {
+  using Kind = RationalAt::Kind;
+  if (is_exactly<numeric>(e)) {
+    const numeric& c = ex_to<numeric>(e);
+    if (c.is_integer()) return {Kind::value, mod_of(cln::the<cln::cl_I>(c.to_cl_N()))};
+    if (!c.is_rational()) return {};
+    const cln::cl_RA r = cln::the<cln::cl_RA>(c.to_cl_N());
+    const u64 d = mod_of(cln::denominator(r));
+    if (d == 0) return {Kind::pole, 0};
+    return {Kind::value, mod_mul(mod_of(cln::numerator(r)), mod_inverse(d))};
+  }
+  if (is_exactly<symbol>(e)) {
+    auto it = point.values.find(e);
+    if (it == point.values.end()) {
+      const numeric v = drawn_value(ex_to<symbol>(e).get_name(), point.seed);
+      it = point.values.emplace(e, static_cast<u64>(v.to_long())).first;
+    }
+    return {Kind::value, it->second};
+  }
+  const bool sum = is_exactly<add>(e);
+  if (sum || is_exactly<mul>(e)) {
+    u64 acc = sum ? 0 : 1;
+    const std::size_t n = e.nops();
+    for (std::size_t i = 0; i < n; ++i) {
+      const ModularAt t = modular_in(e.op(i), point);
+      if (t.kind != Kind::value) return t;
+      acc = sum ? mod_add(acc, t.value) : mod_mul(acc, t.value);
+    }
+    return {Kind::value, acc};
+  }
+  if (is_exactly<power>(e) && is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer()) {
+    const ModularAt b = modular_in(e.op(0), point);
+    if (b.kind != Kind::value) return b;
+    const cln::cl_I x = cln::the<cln::cl_I>(ex_to<numeric>(e.op(1)).to_cl_N());
+    // b^(p-1) = 1 for b != 0: the exponent counts modulo p - 1.
+    const u64 k = cln::cl_I_to_UQ(cln::mod(cln::abs(x), cln::cl_I(P - 1)));
+    if (b.value == 0) {
+      if (cln::minusp(x)) return {Kind::pole, 0};
+      return {Kind::value, cln::zerop(x) ? u64{1} : u64{0}};
+    }
+    const u64 v = mod_pow(b.value, k);
+    return {Kind::value, cln::minusp(x) ? mod_inverse(v) : v};
+  }
+  return {};
+}
+
+}  // namespace
+
+ModularAt modular_at(const ex& e, ModularPoint& point) { return modular_in(e, point); }
+std::uint64_t modular_negated(std::uint64_t a) { return a == 0 ? 0 : P - a; }
+std::uint64_t modular_quotient(std::uint64_t a, std::uint64_t b) { return mod_mul(a, mod_inverse(b)); }
 
 namespace {
 
@@ -146,13 +256,6 @@ void gather_symbols(const ex& e, std::unordered_set<ex, ExHash, ex_is_equal>& se
   for (std::size_t i = 0; i < n; ++i) gather_symbols(e.op(i), seen, out);
 }
 
-std::vector<ex> distinct_symbols(const ex& e) {
-  std::unordered_set<ex, ExHash, ex_is_equal> seen;
-  std::vector<ex> out;
-  gather_symbols(e, seen, out);
-  return out;
-}
-
 void count_nodes(const ex& e, std::size_t limit, std::size_t& n) {
   if (++n >= limit) return;
   const std::size_t k = e.nops();
@@ -160,6 +263,13 @@ void count_nodes(const ex& e, std::size_t limit, std::size_t& n) {
 }
 
 }  // namespace
+
+std::vector<ex> distinct_symbols(const ex& e) {
+  std::unordered_set<ex, ExHash, ex_is_equal> seen;
+  std::vector<ex> out;
+  gather_symbols(e, seen, out);
+  return out;
+}
 
 // Values are drawn for the symbols in the order of their names, not in the order GiNaC
 // keeps them, so the points are the same in every run.
@@ -190,32 +300,37 @@ std::size_t node_count(const ex& e, std::size_t limit) {
 }
 
 Degrees degrees_of(const ex& expanded) {
-  Degrees d;
-  auto powers = [](const ex& term) {
-    std::map<ex, int, ex_is_less> p;
-    auto one = [&](const ex& f) {
-      if (is_a<symbol>(f)) p[f] += 1;
-      else if (is_a<power>(f) && is_a<symbol>(f.op(0)) && f.op(1).info(info_flags::nonnegint))
-        p[f.op(0)] += ex_to<numeric>(f.op(1)).to_int();
-    };
-    if (is_a<mul>(term))
-      for (std::size_t i = 0; i < term.nops(); ++i) one(term.op(i));
-    else
-      one(term);
-    return p;
+  // One pass over the terms with the symbols kept by hash (a map per term, ordered by
+  // ex_is_less, was most of the time of factoring a chain's closed forms); ordered at the end.
+  using Powers = std::unordered_map<ex, int, ExHash, ex_is_equal>;
+  auto one = [](const ex& f, Powers& p) {
+    if (is_exactly<symbol>(f)) p[f] += 1;
+    else if (is_exactly<power>(f) && is_exactly<symbol>(f.op(0)) && f.op(1).info(info_flags::nonnegint))
+      p[f.op(0)] += ex_to<numeric>(f.op(1)).to_int();
   };
-  const bool sum = is_a<add>(expanded);
+  auto powers = [&](const ex& term, Powers& p) {
+    p.clear();
+    if (is_exactly<mul>(term))
+      for (std::size_t i = 0; i < term.nops(); ++i) one(term.op(i), p);
+    else
+      one(term, p);
+  };
+  const bool sum = is_exactly<add>(expanded);
   const std::size_t n = sum ? expanded.nops() : 1;
+  Powers high, low, p;
   for (std::size_t i = 0; i < n; ++i) {
-    const auto p = powers(sum ? expanded.op(i) : expanded);
-    for (const auto& [s, k] : p) d.high[s] = std::max(d.high[s], k);
+    powers(sum ? expanded.op(i) : expanded, p);
+    for (const auto& [x, k] : p) {
+      auto [it, inserted] = high.emplace(x, k);
+      if (!inserted) it->second = std::max(it->second, k);
+    }
     if (i == 0) {
-      d.low = p;
+      low = p;
     } else {
-      for (auto it = d.low.begin(); it != d.low.end();) {
+      for (auto it = low.begin(); it != low.end();) {
         const auto q = p.find(it->first);
         if (q == p.end()) {
-          it = d.low.erase(it);
+          it = low.erase(it);
         } else {
           it->second = std::min(it->second, q->second);
           ++it;
@@ -223,6 +338,9 @@ Degrees degrees_of(const ex& expanded) {
       }
     }
   }
+  Degrees d;
+  d.high.insert(high.begin(), high.end());
+  d.low.insert(low.begin(), low.end());
   return d;
 }
 
@@ -238,31 +356,26 @@ bool linear_and_coprime(const ex& expanded) {
 }
 
 std::optional<bool> zero_at_random_points(const ex& e, const std::vector<const exmap*>& substitutions) {
-  lst everything{e};
-  for (const exmap* s : substitutions)
-    for (const auto& [u, v] : *s) everything.append(v);
-  std::mt19937 rng(20261123);
   int done = 0;
-  for (int draws = 0; done < 2 && draws < 30; ++draws) {
-    RationalPoint numbers;
-    for (const auto& [sym, v] : random_point(everything, rng)) numbers.emplace(sym, ex_to<numeric>(v));
+  for (std::uint64_t draw = 0; done < 2 && draw < 30; ++draw) {
+    ModularPoint point(20261123 + draw);
     bool pole = false;
     // Later substitutions are made in the result of earlier ones: evaluate the last first.
     for (auto s = substitutions.rbegin(); !pole && s != substitutions.rend(); ++s)
       for (const auto& [u, v] : **s) {
-        const RationalAt r = rational_at(v, numbers);
+        const ModularAt r = modular_at(v, point);
         if (r.kind == RationalAt::Kind::other) return std::nullopt;
         if (r.kind == RationalAt::Kind::pole) {
           pole = true;
           break;
         }
-        numbers.insert_or_assign(u, r.value);
+        point.values.insert_or_assign(u, r.value);
       }
     if (pole) continue;
-    const RationalAt r = rational_at(e, numbers);
+    const ModularAt r = modular_at(e, point);
     if (r.kind == RationalAt::Kind::other) return std::nullopt;
     if (r.kind == RationalAt::Kind::pole) continue;
-    if (!r.value.is_zero()) return false;
+    if (r.value != 0) return false;
     ++done;
   }
   if (done < 2) return std::nullopt;

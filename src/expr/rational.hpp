@@ -1,10 +1,12 @@
 // Rational functions: normal forms and zero tests, remembered per thread.
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <random>
 #include <set>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -46,18 +48,52 @@ struct ExHash {
 using RationalPoint = std::unordered_map<GiNaC::ex, GiNaC::numeric, ExHash, GiNaC::ex_is_equal>;
 [[nodiscard]] RationalAt rational_at(const GiNaC::ex& e, const RationalPoint& point);
 
+/// The same at a point whose values are drawn from the symbols' names: a symbol not in
+/// `point` gets an integer from 1 to 2^40 made from its name and `seed` (the same in every
+/// run and for every expression), and is added to `point`. No pass over `e` to gather its
+/// symbols first, and two expressions evaluated with one seed meet at one point.
+[[nodiscard]] RationalAt rational_at_drawn(const GiNaC::ex& e, RationalPoint& point, std::uint64_t seed);
+[[nodiscard]] GiNaC::numeric drawn_value(const std::string& name, std::uint64_t seed);
+
+/// The value of a rational function modulo the prime 2^61 - 1 at a point whose values are
+/// drawn from the symbols' names (drawn_value: the same integers as rational_at_drawn) or
+/// given: machine words instead of exact rationals, whose numerators grow with every
+/// product. `pole` when a denominator is 0 modulo the prime (a pole, or by a chance of its
+/// degree over 2^61 a number that is not: either way another point is wanted); `other` when
+/// `e` is not a rational function of symbols. A value that is not 0 says for certain that
+/// the exact value is not 0; a 0 says it is, but for that chance.
+struct ModularPoint {
+  static constexpr std::uint64_t prime = (std::uint64_t{1} << 61) - 1;
+  explicit ModularPoint(std::uint64_t seed) : seed(seed) {}
+  std::uint64_t seed;
+  std::unordered_map<GiNaC::ex, std::uint64_t, ExHash, GiNaC::ex_is_equal> values;
+};
+struct ModularAt {
+  RationalAt::Kind kind = RationalAt::Kind::other;
+  std::uint64_t value = 0;
+};
+[[nodiscard]] ModularAt modular_at(const GiNaC::ex& e, ModularPoint& point);
+/// -a and a / b (b not 0) modulo ModularPoint::prime.
+[[nodiscard]] std::uint64_t modular_negated(std::uint64_t a);
+[[nodiscard]] std::uint64_t modular_quotient(std::uint64_t a, std::uint64_t b);
+
 /// Whether `e` is zero once each substitution is made in turn (the values of one may hold
-/// the symbols the next replaces), decided at two random exact points of integers (1 to
-/// 2^40, fixed seed: the same points in every run); each substituted value is evaluated at a
-/// point once, then `e`. False when it is not zero at some point (certain), true when it is
-/// zero at both (a nonzero one vanishes at a point by chance with a probability of its degree
-/// over 2^40), nullopt when some value or `e` is not a rational function of symbols or no
-/// point without a pole was found. For expressions too large to expand.
+/// the symbols the next replaces), decided at two points modulo the prime 2^61 - 1 (values
+/// drawn from the names with fixed seeds: the same points in every run); each substituted
+/// value is evaluated at a point once, then `e`. False when it is not zero at some point
+/// (certain), true when it is zero at both (a nonzero one vanishes at a point by chance with
+/// a probability of its degree over 2^61), nullopt when some value or `e` is not a rational
+/// function of symbols or no point without a pole was found. For expressions too large to
+/// expand.
 [[nodiscard]] std::optional<bool> zero_at_random_points(const GiNaC::ex& e,
                                                         const std::vector<const GiNaC::exmap*>& substitutions = {});
 
 /// A random exact rational point for the symbols of `e`, drawn in the order of their names.
 [[nodiscard]] GiNaC::exmap random_point(const GiNaC::ex& e, std::mt19937& rng);
+
+/// The distinct symbols of `e`, in the order first met (GiNaC's order, which is the hash
+/// order: not for choosing what is printed).
+[[nodiscard]] std::vector<GiNaC::ex> distinct_symbols(const GiNaC::ex& e);
 
 /// The symbols of `e`.
 [[nodiscard]] std::set<GiNaC::ex, GiNaC::ex_is_less> symbols_in(const GiNaC::ex& e);

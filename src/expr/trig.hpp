@@ -7,6 +7,8 @@
 
 #include <ginac/ginac.h>
 
+#include "expr/kind.hpp"
+
 namespace tackle {
 
 /// `e` with every sin(x)^2 written as 1 - cos(x)^2 (`to_cos`), or every cos(x)^2 as
@@ -18,18 +20,35 @@ namespace tackle {
   return e.subs(from == to, subs_options::algebraic).expand();
 }
 
-/// True when `e` has a sin or cos in it.
-[[nodiscard]] inline bool has_trig(const GiNaC::ex& e) {
+namespace detail {
+
+inline bool is_sin_or_cos(const GiNaC::ex& e) {
   using namespace GiNaC;
-  return e.has(sin(wild())) || e.has(cos(wild()));
+  if (!is_exactly<function>(e)) return false;
+  const unsigned s = ex_to<function>(e).get_serial();
+  return s == sin_SERIAL::serial || s == cos_SERIAL::serial;
 }
+
+// Walked by op(), the class told by its class-info address: has() with a pattern tries a
+// match at every node, which for a sum over 256 masses was most of simplest()'s time.
+inline bool has_trig_node(const GiNaC::ex& e, bool power_only) {
+  using namespace GiNaC;
+  if (is_exactly<symbol>(e) || is_exactly<numeric>(e)) return false;
+  if (power_only ? (is_exactly<power>(e) && is_sin_or_cos(e.op(0))) : is_sin_or_cos(e)) return true;
+  const std::size_t n = e.nops();
+  for (std::size_t i = 0; i < n; ++i)
+    if (has_trig_node(e.op(i), power_only)) return true;
+  return false;
+}
+
+}  // namespace detail
+
+/// True when `e` has a sin or cos in it.
+[[nodiscard]] inline bool has_trig(const GiNaC::ex& e) { return detail::has_trig_node(e, false); }
 
 /// True when `e` has a power of a sin or a cos in it: only such a power can be rewritten by
 /// sin^2 + cos^2 = 1 (pythagoras()).
-[[nodiscard]] inline bool has_trig_power(const GiNaC::ex& e) {
-  using namespace GiNaC;
-  return e.has(pow(sin(wild(0)), wild(1))) || e.has(pow(cos(wild(0)), wild(1)));
-}
+[[nodiscard]] inline bool has_trig_power(const GiNaC::ex& e) { return detail::has_trig_node(e, true); }
 
 /// The sum of squares `e` (expanded) with sin^2 + cos^2 = 1 used where that leaves fewer terms
 /// (a number when it can): what goes under the root of a length or a norm.

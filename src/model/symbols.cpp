@@ -156,9 +156,11 @@ bool SymbolTable::hidden_in_lengths(const GiNaC::ex& e, const GiNaC::ex& s) cons
   return false;
 }
 
-GiNaC::exmap SymbolTable::values() const {
+GiNaC::exmap SymbolTable::values() const { return value_set()->map; }
+
+std::shared_ptr<const SymbolTable::ValueSet> SymbolTable::value_set() const {
   const std::lock_guard<std::mutex> lock(values_mutex_);
-  if (values_) return *values_;
+  if (values_) return values_;
   // Defined parameters get their exact expression in the values before them (sqrt(61)/2,
   // not a float whose last digits would depend on the order of operations).
   GiNaC::exmap m;
@@ -176,8 +178,13 @@ GiNaC::exmap SymbolTable::values() const {
       if (complete) m[s->sym] = v;
     }
   }
-  values_ = m;
-  return m;
+  auto set = std::make_shared<ValueSet>();
+  for (const auto& [sym, v] : m)
+    if (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_rational())
+      set->rational.emplace(sym, GiNaC::ex_to<GiNaC::numeric>(v));
+  set->map = std::move(m);
+  values_ = set;
+  return values_;
 }
 
 }  // namespace tackle

@@ -16,6 +16,7 @@
 #include "core/units.hpp"
 #include "expr/parse.hpp"
 #include "expr/print.hpp"
+#include "expr/rational.hpp"
 
 namespace tackle {
 
@@ -78,6 +79,13 @@ class SymbolTable : public NameResolver, public DimensionLookup {
 
   /// Substitution map of every parameter that has a value (SI).
   [[nodiscard]] GiNaC::exmap values() const;
+  /// The same values, and the rational ones as a point for rational_at(), made once (every
+  /// closed form of a chain is evaluated at them: a copy of each for each was a tenth of it).
+  struct ValueSet {
+    GiNaC::exmap map;
+    RationalPoint rational;
+  };
+  [[nodiscard]] std::shared_ptr<const ValueSet> value_set() const;
   /// Substitution map of every defined parameter to its expression; the geometric lengths
   /// too when asked (for numbers only: their roots are not for normal()).
   [[nodiscard]] GiNaC::exmap definitions(bool geometric = false) const;
@@ -93,7 +101,7 @@ class SymbolTable : public NameResolver, public DimensionLookup {
   std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> by_symbol_;
   // values(), made once after the last change (every change forgets it); a run asks for it
   // some thirty times.
-  mutable std::optional<GiNaC::exmap> values_;
+  mutable std::shared_ptr<const ValueSet> values_;
   mutable std::mutex values_mutex_;
   void changed() { values_.reset(); }
 };

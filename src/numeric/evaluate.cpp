@@ -97,23 +97,30 @@ std::string decimal_string(const numeric& v, int digits) {
   return (v.is_negative() ? "-" : "") + out;
 }
 
-std::optional<ex> value_at(const ex& e, const exmap& values) {
+namespace {
+
+// value_at with the rational values already made into a point.
+std::optional<ex> value_at(const ex& e, const exmap& values, const RationalPoint& point) {
   // A rational function at rational numbers: computed as a number, without a normal form
   // (normal() of a closed form over 128 bodies' masses is most of a report's time). A pole
   // there may be removable, and roots or functions need more: those go through NormalForm.
-  RationalPoint point;
-  for (const auto& [sym, v] : values)
-    if (is_a<numeric>(v) && ex_to<numeric>(v).is_rational()) point.emplace(sym, ex_to<numeric>(v));
   if (const RationalAt r = rational_at(e, point); r.kind == RationalAt::Kind::value) return ex(r.value);
   return NormalForm(e).at(values);
 }
 
-std::optional<NumericValue> evaluate_with(const ex& e, const exmap& values, std::optional<Dimension> dimension,
-                                          int digits, const std::optional<Unit>& unit) {
+RationalPoint rational_values(const exmap& values) {
+  RationalPoint point;
+  for (const auto& [sym, v] : values)
+    if (is_a<numeric>(v) && ex_to<numeric>(v).is_rational()) point.emplace(sym, ex_to<numeric>(v));
+  return point;
+}
+
+std::optional<NumericValue> evaluate_at(const ex& e, const exmap& values, const RationalPoint& point,
+                                        std::optional<Dimension> dimension, int digits, const std::optional<Unit>& unit) {
   // A closed form may be undefined at the given numbers (a denominator c - e with c = e):
   // no number then. The denominator is checked first, so that GiNaC does not throw from
   // inside a new object (found by fuzzing: exit 3 for a description with c = e).
-  const auto at = value_at(e, values);
+  const auto at = value_at(e, values, point);
   if (!at) return std::nullopt;
   const ex v = *at;
   for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
@@ -140,9 +147,19 @@ std::optional<NumericValue> evaluate_with(const ex& e, const exmap& values, std:
   return out;
 }
 
+}  // namespace
+
+std::optional<ex> value_at(const ex& e, const exmap& values) { return value_at(e, values, rational_values(values)); }
+
+std::optional<NumericValue> evaluate_with(const ex& e, const exmap& values, std::optional<Dimension> dimension,
+                                          int digits, const std::optional<Unit>& unit) {
+  return evaluate_at(e, values, rational_values(values), dimension, digits, unit);
+}
+
 std::optional<NumericValue> evaluate(const ex& e, const SymbolTable& symbols, std::optional<Dimension> dimension,
                                      int digits, const std::optional<Unit>& unit) {
-  return evaluate_with(e, symbols.values(), dimension, digits, unit);
+  const auto set = symbols.value_set();
+  return evaluate_at(e, set->map, set->rational, dimension, digits, unit);
 }
 
 }  // namespace tackle

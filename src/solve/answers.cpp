@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <unordered_set>
 
 #include <Eigen/Dense>
 
@@ -120,9 +121,8 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
         // velocity asked for while only accelerations are solved) is what is missing.
         // (The symbols of the form are gathered once: asking has() of every symbol of a
         // chain of 256 bodies would make this cubic.)
-        std::set<ex, ex_is_less> present;
-        for (const_preorder_iterator it = general.preorder_begin(); it != general.preorder_end(); ++it)
-          if (is_a<symbol>(*it)) present.insert(*it);
+        const std::vector<ex> in_general = distinct_symbols(general);
+        const std::unordered_set<ex, ExHash, ex_is_equal> present(in_general.begin(), in_general.end());
         for (const auto& sym : table.all()) {
           if (present.count(sym->sym) == 0) continue;
           const bool known = sym->role == SymbolRole::parameter || sym->role == SymbolRole::defined || sym->role == SymbolRole::time ||

@@ -3,6 +3,7 @@
 #include "expr/trig.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <random>
@@ -161,24 +162,37 @@ std::optional<std::pair<numeric, std::vector<ex>>> irreducible_factors(const ex&
 }
 
 // False when the polynomial g (of degree 1 in some symbol x) certainly does not divide p: at
-// random integers for the other symbols, p is not zero at g's root in x. (divide() takes
-// long to say no for a sum over 256 masses.) True when that does not decide it.
+// integers drawn from the other symbols' names, p is not zero at g's root in x. (divide()
+// takes long to say no for a sum over 256 masses.) True when that does not decide it. The
+// symbol and the root are found once per g (a chain's values share one denominator); the
+// values drawn by name are the same for g's coefficients and for p.
 bool may_divide(const ex& p, const ex& g) {
   if (is_a<symbol>(g)) return p.ldegree(g) > 0 || p.is_zero();
-  for (const ex& x : symbols_in(g)) {
-    if (g.degree(x) != 1) continue;
-    std::mt19937 rng(20261123);
-    const exmap point = random_point(p + g, rng);
-    RationalPoint numbers;
-    for (const auto& [s, v] : point)
-      if (!s.is_equal(x)) numbers.emplace(s, ex_to<numeric>(v));
-    const RationalAt a = rational_at(g.coeff(x, 1), numbers), b = rational_at(g.coeff(x, 0), numbers);
-    if (a.kind != RationalAt::Kind::value || b.kind != RationalAt::Kind::value || a.value.is_zero()) return true;
-    numbers.emplace(x, -b.value / a.value);
-    const RationalAt at = rational_at(p, numbers);
-    return at.kind != RationalAt::Kind::value || at.value.is_zero();
+  constexpr std::uint64_t seed = 20261123;
+  struct Root {
+    ex x;
+    std::uint64_t value;
+  };
+  thread_local std::unordered_map<ex, std::optional<Root>, ExHash, ex_is_equal> roots;
+  auto it = roots.find(g);
+  if (it == roots.end()) {
+    std::optional<Root> root;
+    for (const ex& x : symbols_in(g)) {
+      if (g.degree(x) != 1) continue;
+      ModularPoint point(seed);
+      const ModularAt a = modular_at(g.coeff(x, 1), point), b = modular_at(g.coeff(x, 0), point);
+      if (a.kind == RationalAt::Kind::value && b.kind == RationalAt::Kind::value && a.value != 0)
+        root = Root{x, modular_quotient(modular_negated(b.value), a.value)};
+      break;
+    }
+    if (roots.size() >= 1024) roots.clear();
+    it = roots.emplace(g, root).first;
   }
-  return true;
+  if (!it->second) return true;
+  ModularPoint point(seed);
+  point.values.emplace(it->second->x, it->second->value);
+  const ModularAt at = modular_at(p, point);
+  return at.kind != RationalAt::Kind::value || at.value == 0;
 }
 
 // (b - sum of v x) / pivot in normal form without a gcd, in the common case of a chain or a

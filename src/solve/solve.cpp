@@ -462,21 +462,46 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
       sol.combinations.push_back({u + rest, value});
   }
 
-  // Verify: the general solution satisfies every equation at random exact rational values
-  // of the parameters and free unknowns (integers drawn from 2^40 values each, so a residual
-  // that is not zero vanishes at one by chance with a probability of its degree over 2^40).
+  // Verify: the general solution satisfies every equation at two random points of the
+  // parameters and free unknowns (integers drawn from 2^40 values each, so a residual that
+  // is not zero vanishes at one by chance with a probability of its degree over 2^40).
   // At a point, each unknown's value is evaluated once and put into every equation. Only when
   // no point can be used (a denominator vanishes at every one drawn) is every residual put in
   // normal form, which for a large solution is what would make this the slowest step.
   // The values hold no symbol the equations do not: the points are drawn for theirs.
+  // Rational functions are first evaluated modulo the prime 2^61 - 1, in machine words (exact
+  // rationals grew with every product: a chain's check was a tenth of its run); a residual
+  // that is not 0 there is not 0. Anything else (sin(theta), a turning strand's square root)
+  // is checked at exact points below.
+  int trial = 0;
+  bool modular = true;
+  for (std::uint64_t draw = 0; modular && trial < 2 && draw < 30; ++draw) {
+    ModularPoint point(20261121 + draw);
+    bool pole = false;
+    for (const auto& [u, g] : sol.general) {
+      const ModularAt r = modular_at(g, point);
+      modular = r.kind != RationalAt::Kind::other;
+      pole = r.kind == RationalAt::Kind::pole;
+      if (!modular || pole) break;
+      point.values.insert_or_assign(u, r.value);
+    }
+    for (std::size_t i = 0; modular && !pole && i < equations.size(); ++i) {
+      const ModularAt r = modular_at(equations[i].lhs - equations[i].rhs, point);
+      modular = r.kind != RationalAt::Kind::other;
+      pole = r.kind == RationalAt::Kind::pole;
+      if (r.kind == RationalAt::Kind::value && r.value != 0)
+        throw InternalError("solution fails equation '" + equations[i].label + "' at a random point");
+    }
+    if (modular && !pole) ++trial;
+  }
+  if (!modular) trial = 0;
   lst everything;
   for (const auto& eq : equations) everything.append(eq.lhs - eq.rhs);
   std::mt19937 rng(20261121);
-  int trial = 0;
   // A point where some denominator vanishes is drawn again (GiNaC would throw there, from
   // inside a node it is making; found by fuzzing). Rational functions are evaluated as
   // numbers; anything else (sin(theta), a turning strand's square root) by substitution.
-  for (int draws = 0; trial < 2 && draws < 30; ++draws) {
+  for (int draws = 0; !modular && trial < 2 && draws < 30; ++draws) {
     const exmap point = random_point(everything, rng);
     RationalPoint numbers;
     for (const auto& [sym, v] : point) numbers.emplace(sym, ex_to<numeric>(v));

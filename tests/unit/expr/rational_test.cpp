@@ -1,0 +1,100 @@
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+
+#include "expr/rational.hpp"
+#include "expr/trig.hpp"
+
+using namespace tackle;
+using namespace GiNaC;
+
+namespace {
+
+// n modulo 2^61 - 1, by hand: the values below are small enough to write out.
+std::uint64_t mod(long n) {
+  const long p = static_cast<long>(ModularPoint::prime);
+  return static_cast<std::uint64_t>(((n % p) + p) % p);
+}
+
+}  // namespace
+
+TEST_CASE("Modular: a rational function at given values is its value modulo 2^61 - 1", "[rational]") {
+  const symbol a("a"), b("b"), c("c");
+  ModularPoint point(1);
+  point.values[a] = 3;
+  point.values[b] = 5;
+  point.values[c] = 7;
+  // (a + 2 b)^3 - c a b = 13^3 - 105 = 2092
+  const ModularAt r = modular_at(pow(a + 2 * b, 3) - c * a * b, point);
+  REQUIRE(r.kind == RationalAt::Kind::value);
+  CHECK(r.value == mod(2092));
+  // -(a + b) / 4: -2 modulo the prime.
+  const ModularAt q = modular_at(-(a + b) / 4, point);
+  REQUIRE(q.kind == RationalAt::Kind::value);
+  CHECK(q.value == mod(-2));
+  // 1/2 times 2 is 1: the inverse is exact modulo the prime.
+  CHECK(modular_at(numeric(1, 2) * 2 * a / a, point).value == 1);
+  CHECK(modular_quotient(mod(-12), 4) == mod(-3));
+  CHECK(modular_negated(0) == 0);
+}
+
+TEST_CASE("Modular: a vanishing denominator is a pole, a function is not rational", "[rational]") {
+  const symbol a("a"), b("b");
+  ModularPoint point(1);
+  point.values[a] = 4;
+  point.values[b] = 4;
+  CHECK(modular_at(1 / (a - b), point).kind == RationalAt::Kind::pole);
+  CHECK(modular_at(pow(a - b, -2) * a, point).kind == RationalAt::Kind::pole);
+  CHECK(modular_at(sin(a), point).kind == RationalAt::Kind::other);
+  CHECK(modular_at(sqrt(a), point).kind == RationalAt::Kind::other);
+  // 0^0 = 1, 0^3 = 0.
+  CHECK(modular_at(pow(a - b, 3) + 1, point).value == 1);
+}
+
+TEST_CASE("Modular: values drawn from names are the same for every expression and seed", "[rational]") {
+  const symbol m1("m_1"), m2("m_2");
+  ModularPoint one(7), two(7), other(8);
+  const ModularAt x = modular_at(m1, one), y = modular_at(m1 + 0 * m2, two), z = modular_at(m1, other);
+  CHECK(x.value == y.value);
+  CHECK(x.value == static_cast<std::uint64_t>(drawn_value("m_1", 7).to_long()));
+  CHECK(x.value >= 1);
+  CHECK(x.value <= (std::uint64_t{1} << 40));
+  CHECK(x.value != z.value);
+}
+
+TEST_CASE("Zero at random points: zero, not zero, and not a rational function", "[rational]") {
+  const symbol m("m"), M("M"), F("F"), a("a");
+  // a = F/(m + M) put in (m + M) a - F.
+  const exmap solution{{a, F / (m + M)}};
+  CHECK(zero_at_random_points((m + M) * a - F, {&solution}) == std::optional<bool>(true));
+  CHECK(zero_at_random_points(m * a - F, {&solution}) == std::optional<bool>(false));
+  CHECK(zero_at_random_points(sin(m) - sin(m)) == std::optional<bool>(true));  // GiNaC makes it 0
+  CHECK_FALSE(zero_at_random_points(sin(m) * a - F, {&solution}).has_value());
+  // (m + M)^2 - m^2 - 2 m M - M^2 is zero; with one sign wrong it is not.
+  CHECK(zero_at_random_points(pow(m + M, 2) - pow(m, 2) - 2 * m * M - pow(M, 2)) == std::optional<bool>(true));
+  CHECK(zero_at_random_points(pow(m + M, 2) - pow(m, 2) + 2 * m * M - pow(M, 2)) == std::optional<bool>(false));
+}
+
+TEST_CASE("Rational at: exact values and poles, drawn or given", "[rational]") {
+  const symbol a("a"), b("b");
+  RationalPoint point{{a, numeric(1, 3)}, {b, numeric(2)}};
+  const RationalAt r = rational_at(pow(a, -2) + b / 4, point);
+  REQUIRE(r.kind == RationalAt::Kind::value);
+  CHECK(r.value == numeric(19, 2));
+  RationalPoint zero{{a, numeric(2)}, {b, numeric(2)}};
+  CHECK(rational_at(1 / (a - b), zero).kind == RationalAt::Kind::pole);
+  RationalPoint drawn;
+  const RationalAt d = rational_at_drawn(a * b, drawn, 3);
+  REQUIRE(d.kind == RationalAt::Kind::value);
+  CHECK(d.value == drawn_value("a", 3) * drawn_value("b", 3));
+  CHECK(drawn.size() == 2);
+}
+
+TEST_CASE("Trig: sin and cos and their powers found by structure", "[rational]") {
+  const symbol t("theta"), m("m");
+  CHECK(has_trig(m * cos(t) + 1));
+  CHECK_FALSE(has_trig(m * exp(t)));
+  CHECK(has_trig_power(m * pow(sin(t), 2) + 1));
+  CHECK_FALSE(has_trig_power(m * sin(t) + cos(t)));
+  CHECK(has_trig_power(1 / (m + pow(cos(t), 3))));
+}
