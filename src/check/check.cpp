@@ -196,7 +196,7 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   }
   // References: every determined unknown, and the defined quantities of `find`.
   auto add_reference = [&](const std::string& name, const ex& closed_form, std::optional<Dimension> dim) {
-    const ex closed = closed_form.subs(definitions_);
+    const ex closed = substituted(closed_form, definitions_);
     Reference ref{name, closed, program(closed), dim, std::nullopt, {}, to_text(closed_form).size()};
     if (auto v = evaluate(closed, *symbols_, dim); v && is_a<numeric>(evalf(v->exact)))
       ref.value = ex_to<numeric>(evalf(v->exact));
@@ -214,7 +214,7 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   }
   for (const auto& w : m.wanted) {
     if (!w.defined) continue;
-    const ex general = w.expr.subs(analysis.solution.general);
+    const ex general = substituted(w.expr, analysis.solution.general);
     if (std::none_of(analysis.solution.free.begin(), analysis.solution.free.end(), [&](const ex& f) { return general.has(f); }))
       add_reference(w.name, simplest(general), w.dimension);
   }
@@ -639,7 +639,7 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
   std::optional<numeric> at_values = ref.value;
   if (values) {
     at_values.reset();
-    if (auto v = tackle::value_at(ref.closed_form.subs(lengths_).subs(lengths_), *values))
+    if (auto v = tackle::value_at(substituted(substituted(ref.closed_form, lengths_), lengths_), *values))
       if (const ex f = evalf(*v); is_a<numeric>(f) && ex_to<numeric>(f).is_real()) at_values = ex_to<numeric>(f);
   }
   if (!at_values)
@@ -780,7 +780,7 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
     // overwhelming probability; with square roots and the like, try to prove it with normal()
     // when the expansion stays within the budget.
     bool proved = false;
-    const ex expanded = exact_values ? answer : answer.subs(definitions_);
+    const ex expanded = exact_values ? answer : substituted(answer, definitions_);
     if (!exact_values && expanded_size(expanded) <= static_cast<double>(options_.exact_size_budget) && !over_budget()) {
       try {
         proved = normal(expanded - ref.closed_form).is_zero();
@@ -826,7 +826,7 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
 
 void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector<numeric>& values, CheckResult& r) const {
   const std::size_t n = std::min(values.size(), ref.at_points.size());
-  const ex expanded = answer.subs(definitions_);
+  const ex expanded = substituted(answer, definitions_);
   const Exact answer_at = program(answer);
   // Does the answer, at points changed by `change`, equal the reference at the points changed
   // by `change_ref`? (Swapping two parameters or setting one to zero changes the point, not
@@ -925,7 +925,7 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
   bool symbolic_exponent = false;
   for (const_preorder_iterator it = answer.preorder_begin(); it != answer.preorder_end(); ++it)
     symbolic_exponent = symbolic_exponent || (is_exactly<power>(*it) && !is_exactly<numeric>(it->op(1)));
-  const ex quotient = symbolic_exponent ? ex(0) : normal(answer.subs(definitions_) / ref.closed_form);
+  const ex quotient = symbolic_exponent ? ex(0) : normal(substituted(answer, definitions_) / ref.closed_form);
   if (!symbolic_exponent && !is_a<numeric>(quotient) && node_count(quotient, 8) <= 7)
     factor_findings.push_back({"factor", "off by a factor of " + to_text(quotient)});
   // Two parameters swapped.
@@ -937,7 +937,7 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
       if (definitions_.count(params[i]) || definitions_.count(params[j])) {
         // A defined parameter has no value of its own at the point: swap in the expression.
         const exmap swap{{params[i], params[j]}, {params[j], params[i]}};
-        const ex swapped = answer.subs(swap).subs(definitions_);
+        const ex swapped = substituted(substituted(answer, swap), definitions_);
         bool all = true;
         const Exact swapped_at = program(swapped);
         for (std::size_t k = 0; all && k < points_.size(); ++k) {
@@ -1000,7 +1000,7 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
   }
   r.findings.insert(r.findings.end(), factor_findings.begin(), factor_findings.end());
   // Parameters the answer depends on, or misses (named in the problem's order).
-  const auto used = symbols_in(answer.subs(definitions_)), needed = symbols_in(ref.closed_form);
+  const auto used = symbols_in(substituted(answer, definitions_)), needed = symbols_in(ref.closed_form);
   std::vector<std::string> extra, missing;
   for (const auto& p : parameters_) {
     if (used.count(p.symbol) && !needed.count(p.symbol)) extra.push_back(p.name);

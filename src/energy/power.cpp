@@ -78,7 +78,7 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
       c.status = PowerCheck::Status::holds;
       return c;
     }
-  const ex residual = balance.subs(sol.general).subs(rate_values);
+  const ex residual = substituted(substituted(balance, sol.general), rate_values);
   // Every force must be known: a chosen set of balances may leave some out. (Symbols
   // gathered once: has() of each candidate would be quadratic.)
   const auto present = symbols_in(residual);

@@ -97,9 +97,9 @@ EquationSystem build_equations(const Model& m) {
     // A term varies when it has a coordinate, or a turning strand's length (whose square does).
     const ex q = c.quantity.expand();
     auto varies = [&](const ex& t) {
-      if (!(t - t.subs(still_coordinates)).expand().is_zero()) return true;
+      if (!(t - substituted(t, still_coordinates)).expand().is_zero()) return true;
       return std::any_of(m.lengths.begin(), m.lengths.end(), [&](const TurningLength& l) {
-        return t.has(l.symbol) && !(l.squared - l.squared.subs(still_coordinates)).expand().is_zero();
+        return t.has(l.symbol) && !(l.squared - substituted(l.squared, still_coordinates)).expand().is_zero();
       });
     };
     ex varying = 0;

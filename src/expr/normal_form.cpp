@@ -65,19 +65,19 @@ bool is_rational_number(const ex& e) { return rational_over(e, false); }
 bool is_rational_function(const ex& e) { return rational_over(e, true); }
 
 bool has_pole_at(const ex& e, const exmap& values) {
-  const ex v = e.subs(values);
+  const ex v = substituted(e, values);
   return has_hidden_pole(v);
 }
 
 bool NormalForm::undefined_at(const exmap& values) const { return !denominator_at(values); }
 
 std::optional<ex> NormalForm::denominator_at(const exmap& values) const {
-  const ex ds = den.subs(values);
+  const ex ds = substituted(den, values);
   // Exact arithmetic decides a rational number; with radicals in it, normal() is costly and
   // not a zero test anyway: the numeric look for a cancelling sum decides.
   const bool rational = is_rational_number(ds);
   const ex d = rational ? normal(ds) : ds;
-  if (d.is_zero() || has_hidden_pole(d) || (!rational && has_hidden_pole(1 / d)) || has_hidden_pole(num.subs(values)))
+  if (d.is_zero() || has_hidden_pole(d) || (!rational && has_hidden_pole(1 / d)) || has_hidden_pole(substituted(num, values)))
     return std::nullopt;
   return d;
 }
@@ -85,7 +85,7 @@ std::optional<ex> NormalForm::denominator_at(const exmap& values) const {
 std::optional<ex> NormalForm::at(const exmap& values) const {
   const auto d = denominator_at(values);
   if (!d) return std::nullopt;
-  const ex v = normal(num.subs(values) / *d);
+  const ex v = normal(substituted(num, values) / *d);
   for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
     if (is_a<symbol>(*it)) return std::nullopt;
   return v;
@@ -94,7 +94,7 @@ std::optional<ex> NormalForm::at(const exmap& values) const {
 std::optional<double> NormalForm::approx_at(const exmap& values) const {
   const auto d = denominator_at(values);
   if (!d) return std::nullopt;
-  const ex v = evalf(num.subs(values)) / evalf(*d);
+  const ex v = evalf(substituted(num, values)) / evalf(*d);
   if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
   return ex_to<numeric>(v).to_double();
 }

@@ -210,13 +210,18 @@ ModularAt modular_in(const ex& e, ModularPoint& point) {
   }
   const bool sum = is_exactly<add>(e);
   if (sum || is_exactly<mul>(e)) {
-    u64 acc = sum ? 0 : 1;
     const std::size_t n = e.nops();
+    const bool long_sum = sum && n >= 8;
+    const basic* node = &ex_to<basic>(e);
+    if (long_sum)
+      if (const auto it = point.sums.find(node); it != point.sums.end()) return {Kind::value, it->second.second};
+    u64 acc = sum ? 0 : 1;
     for (std::size_t i = 0; i < n; ++i) {
       const ModularAt t = modular_in(e.op(i), point);
       if (t.kind != Kind::value) return t;
       acc = sum ? mod_add(acc, t.value) : mod_mul(acc, t.value);
     }
+    if (long_sum) point.sums.emplace(node, std::make_pair(e, acc));
     return {Kind::value, acc};
   }
   if (is_exactly<power>(e) && is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer()) {
@@ -287,6 +292,27 @@ exmap random_point(const ex& e, std::mt19937& rng) {
 std::set<ex, ex_is_less> symbols_in(const ex& e) {
   const std::vector<ex> v = distinct_symbols(e);
   return std::set<ex, ex_is_less>(v.begin(), v.end());
+}
+
+ex substituted(const ex& e, const exmap& m) {
+  if (m.empty()) return e;
+  // What GiNaC's subschildren() would find by looking through the map at every sum and
+  // product: whether a key is a product or a power (then pairs are recombined to find it).
+  bool product = false;
+  for (const auto& [k, v] : m) product = product || is_exactly<mul>(k) || is_exactly<power>(k);
+  return e.subs(m, subs_options::no_pattern |
+                       (product ? subs_options::pattern_is_product : subs_options::pattern_is_not_product));
+}
+
+bool is_polynomial_in_symbols(const ex& e) {
+  if (is_exactly<symbol>(e) || is_exactly<numeric>(e)) return true;
+  if (is_exactly<power>(e))
+    return e.op(1).info(info_flags::nonnegint) && is_polynomial_in_symbols(e.op(0));
+  if (!is_exactly<add>(e) && !is_exactly<mul>(e)) return false;
+  const std::size_t n = e.nops();
+  for (std::size_t i = 0; i < n; ++i)
+    if (!is_polynomial_in_symbols(e.op(i))) return false;
+  return true;
 }
 
 bool contains(const std::vector<ex>& v, const ex& x) {
@@ -369,7 +395,7 @@ std::optional<bool> zero_at_random_points(const ex& e, const std::vector<const e
           pole = true;
           break;
         }
-        point.values.insert_or_assign(u, r.value);
+        point.assign(u, r.value);
       }
     if (pole) continue;
     const ModularAt r = modular_at(e, point);

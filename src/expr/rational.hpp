@@ -67,6 +67,16 @@ struct ModularPoint {
   explicit ModularPoint(std::uint64_t seed) : seed(seed) {}
   std::uint64_t seed;
   std::unordered_map<GiNaC::ex, std::uint64_t, ExHash, GiNaC::ex_is_equal> values;
+  // The values of long sums met so far, by node (each kept alive here, so that its address
+  // is not taken by another): a chain's 511 values share one denominator object.
+  std::unordered_map<const GiNaC::basic*, std::pair<GiNaC::ex, std::uint64_t>> sums;
+  /// Sets a symbol's value; the sums remembered are forgotten when it had one already.
+  void assign(const GiNaC::ex& s, std::uint64_t v) {
+    auto [it, inserted] = values.emplace(s, v);
+    if (inserted) return;
+    it->second = v;
+    sums.clear();
+  }
 };
 struct ModularAt {
   RationalAt::Kind kind = RationalAt::Kind::other;
@@ -90,6 +100,16 @@ struct ModularAt {
 
 /// A random exact rational point for the symbols of `e`, drawn in the order of their names.
 [[nodiscard]] GiNaC::exmap random_point(const GiNaC::ex& e, std::mt19937& rng);
+
+/// `e` with each node equal to a key of `m` replaced by its value: subs() for a map whose
+/// keys hold no wildcards, the same result without pattern matching (GiNaC's subs() tries
+/// match() of every key at every node: a chain's 511 solved unknowns put in a closed form
+/// cost each of its nodes 511 matches).
+[[nodiscard]] GiNaC::ex substituted(const GiNaC::ex& e, const GiNaC::exmap& m);
+
+/// True when `e` is built of symbols and numbers by sums, products and powers of natural
+/// exponents: to_polynomial() has nothing to replace (and would copy every node to say so).
+[[nodiscard]] bool is_polynomial_in_symbols(const GiNaC::ex& e);
 
 /// The distinct symbols of `e`, in the order first met (GiNaC's order, which is the hash
 /// order: not for choosing what is printed).

@@ -112,7 +112,7 @@ std::vector<std::vector<ex>> null_space(const std::vector<std::vector<ex>>& rows
     std::vector<ex> y(k, 0);
     y[f] = 1;
     for (std::size_t j = 0; j < k; ++j)
-      if (e.pivot[j]) y[j] = normal(e.value[j].subs(at));
+      if (e.pivot[j]) y[j] = normal(substituted(e.value[j], at));
     basis.push_back(y);
   }
   return basis;
@@ -136,7 +136,7 @@ Vec tidy(const Vec& given) {
   ex g = 0;
   for (const auto& x : w) g = x.is_zero() ? g : (g.is_zero() ? x : gcd(g, x));
   if (!g.is_zero()) w = {normal(w[0] / g), normal(w[1] / g), normal(w[2] / g)};
-  for (auto& x : w) x = normal(x.subs(repl));
+  for (auto& x : w) x = normal(substituted(x, repl));
   // gcd() chooses the sign by GiNaC's term order: orient the direction canonically (its
   // first nonzero component's canonical factorization has a positive coefficient).
   for (const auto& x : w) {

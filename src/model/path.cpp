@@ -19,7 +19,7 @@ std::optional<numeric> in_layout(const ex& e, const exmap& layout, std::string& 
   // throw from inside a node it is making, which leaks).
   const NormalForm form(e);
   if (form.undefined_at(layout)) return std::nullopt;
-  const ex v = evalf(form.num.subs(layout) / form.den.subs(layout));
+  const ex v = evalf(substituted(form.num, layout) / substituted(form.den, layout));
   if (is_a<numeric>(v) && ex_to<numeric>(v).is_real()) return ex_to<numeric>(v);
   std::set<std::string> names;
   for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
@@ -56,7 +56,7 @@ std::optional<ex> square_root_of(const ex& squared) {
   } else if (!take(f)) {
     return std::nullopt;
   }
-  return root.subs(repl).expand();
+  return substituted(root, repl).expand();
 }
 
 // True when no root of an expression in the coordinates is left (the segment's direction

@@ -171,7 +171,7 @@ std::shared_ptr<const SymbolTable::ValueSet> SymbolTable::value_set() const {
       // Undefined at these values (a denominator that vanishes): no value.
       const NormalForm form(*s->definition);
       if (form.undefined_at(m)) continue;
-      const GiNaC::ex v = form.num.subs(m) / form.den.subs(m);
+      const GiNaC::ex v = substituted(form.num, m) / substituted(form.den, m);
       bool complete = true;
       for (GiNaC::const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
         complete = complete && !GiNaC::is_a<GiNaC::symbol>(*it);

@@ -65,7 +65,7 @@ Dependents dependents(const Model& m, const EquationSystem& s, const MotionSpec&
   // quantity(q) = quantity(q at t = 0) for each constraint.
   std::vector<Equation> eqs;
   for (const auto& c : m.constraints) {
-    const ex at0 = c.quantity.subs(spec.initial);
+    const ex at0 = substituted(c.quantity, spec.initial);
     for (const auto& b : m.bodies)
       if (!b.coord.is_zero() && at0.has(b.coord)) {
         d.problem = "the motion needs the initial value of " + to_text(b.coord) +
@@ -86,9 +86,9 @@ Dependents dependents(const Model& m, const EquationSystem& s, const MotionSpec&
 
 ex put_in(const ex& e, const Dependents& d) {
   ex out = e;
-  for (int depth = 0; depth < 8; ++depth) out = out.subs(d.definitions);
-  if (!d.coords.empty()) out = out.subs(d.coords);
-  if (!d.rates.empty()) out = out.subs(d.rates);
+  for (int depth = 0; depth < 8; ++depth) out = substituted(out, d.definitions);
+  if (!d.coords.empty()) out = substituted(out, d.coords);
+  if (!d.rates.empty()) out = substituted(out, d.rates);
   return out;
 }
 
@@ -174,11 +174,11 @@ EnergyAnswer work_energy(const Model& m, const EquationsOfMotion& eom, const Mot
   e.numeric_only = true;
   ex Qn = Q;
   const exmap defs = table.definitions(true);
-  for (int depth = 0; depth < 8; ++depth) Qn = Qn.subs(defs);
+  for (int depth = 0; depth < 8; ++depth) Qn = substituted(Qn, defs);
   const exmap values = table.values();
   exmap without_q = values;
   without_q.erase(q);
-  Qn = Qn.subs(without_q);
+  Qn = substituted(Qn, without_q);
   const auto a = NormalForm(q0).approx_at(values), b = NormalForm(q1).approx_at(values), mv = NormalForm(M).approx_at(values),
              v0n = NormalForm(v0).approx_at(values);
   if (!a || !b || !mv || !v0n) {
@@ -214,7 +214,7 @@ void steady_state(ConditionInTime& ct, const CheckedCondition& c, const Response
   const ex& t = m.time;
   const ex w = r.forcing_frequency;
   const ex qp = r.particular;
-  const ex g = c.expr.subs(m.symbols->definitions()).subs(exmap{{eom.q[0], qp}, {eom.dq[0], qp.diff(ex_to<symbol>(t))}});
+  const ex g = substituted(substituted(c.expr, m.symbols->definitions()), exmap{{eom.q[0], qp}, {eom.dq[0], qp.diff(ex_to<symbol>(t))}});
   const symbol cs("cs"), sn("sn");
   const ex p = normal(g).subs(lst{cos(w * t) == cs, sin(w * t) == sn}).expand();
   if (p.has(t) || !p.is_polynomial(lst{cs, sn}) || p.degree(cs) > 1 || p.degree(sn) > 1 || p.coeff(cs, 1).has(sn)) return;
@@ -576,10 +576,10 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
         exmap defs = table.definitions(true);
         for (const auto& [sym, def] : r.definitions) defs[sym] = def;
         for (int depth = 0; depth < 8; ++depth)
-          for (auto& [k, v] : defs) v = v.subs(defs);
+          for (auto& [k, v] : defs) v = substituted(v, defs);
         const ex acceleration = r.q.diff(ex_to<symbol>(t), 2);
-        const ex residual = (M * acceleration + C * r.rate + K * r.q - eom.forcing[0]).subs(defs);
-        const ex scale_of = (abs(M * acceleration) + abs(K * r.q) + abs(eom.forcing[0]) + 1).subs(defs);
+        const ex residual = substituted(M * acceleration + C * r.rate + K * r.q - eom.forcing[0], defs);
+        const ex scale_of = substituted(abs(M * acceleration) + abs(K * r.q) + abs(eom.forcing[0]) + 1, defs);
         std::vector<ex> inputs{t};
         for (const ex& x : symbols_in(residual + scale_of))
           if (!x.is_equal(t)) inputs.push_back(x);
@@ -626,7 +626,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   for (const auto& w : m.wanted) {
     const SymbolInfo* si = table.find(w.name);
     if (!si) continue;
-    const ex value = put_in(w.expr.subs(sol.general), dep);
+    const ex value = put_in(substituted(w.expr, sol.general), dep);
     bool known = true;
     for (const auto& c : m.candidates)
       if (value.has(c)) known = false;
@@ -659,7 +659,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     return form;
   };
   for (const auto& w : m.wanted) {
-    ex value = w.defined ? w.expr.subs(sol.general) : w.expr.subs(sol.general);
+    ex value = w.defined ? substituted(w.expr, sol.general) : substituted(w.expr, sol.general);
     value = put_in(value, dep);
     bool known = true;
     for (const auto& c : m.candidates)
@@ -670,7 +670,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     qt.name = w.name;
     qt.tex = w.tex;
     if (const SymbolInfo* si = table.find(w.name)) qt.symbol = si->sym;
-    qt.of_t = in_lambda(value.subs(along));
+    qt.of_t = in_lambda(substituted(value, along));
     qt.dimension = w.dimension;
     out.quantities.push_back(std::move(qt));
   }
@@ -681,7 +681,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     if (c.depends_on_free || (!c.expr.has(eom.q[0]) && !c.expr.has(eom.dq[0]))) continue;
     ConditionInTime ct;
     ct.condition = *c.condition;
-    const ex g = put_in(c.expr, dep).subs(along);
+    const ex g = substituted(put_in(c.expr, dep), along);
     ct.of_t = in_lambda(g);
     const std::string& op = c.condition->op;
     if (r.regime == Response::Regime::undamped) {
@@ -703,7 +703,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
           ct.extreme_at = (lower == (*beta_sign > 0)) ? Pi / spec.lambda : ex(0);
         if (is_rational_function(extreme)) ct.solved = solve_condition(simplest(extreme), op, params);
         exmap all_values = values;
-        for (const auto& [sym, def] : out.definitions) all_values[sym] = def.subs(values);
+        for (const auto& [sym, def] : out.definitions) all_values[sym] = substituted(def, values);
         if (auto v = NormalForm(extreme).approx_at(all_values)) {
           ct.holds_for_all_t = lower ? (op == ">=" ? *v >= 0 : *v > 0) : (op == "<=" ? *v <= 0 : *v < 0);
         }
@@ -711,7 +711,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
         if (gamma.is_zero() && beta_sign && ((lower && *beta_sign > 0) || (!lower && *beta_sign < 0))) {
           ct.first_failure = acos(in_lambda(-alpha / beta)) / spec.lambda;
           if (ct.holds_for_all_t == false) {
-            const ex v = evalf(ct.first_failure->subs(all_values).subs(all_values));
+            const ex v = evalf(substituted(substituted(*ct.first_failure, all_values), all_values));
             if (is_a<numeric>(v) && ex_to<numeric>(v).is_real()) ct.first_failure_s = ex_to<numeric>(v).to_double();
           }
         }

@@ -155,7 +155,7 @@ exmap end_state(const Model& m, const Solution& sol, const std::optional<Interva
   for (const auto& w : m.wanted)
     if (w.defined) {
       const SymbolInfo* s = m.symbols->find(w.name);
-      if (s) state[s->sym] = normal(w.expr.subs(state));
+      if (s) state[s->sym] = normal(substituted(w.expr, state));
     }
   if (end)
     for (const auto& r : end->rates) state[r.rate] = r.value;

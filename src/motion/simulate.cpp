@@ -24,8 +24,8 @@ using State = std::vector<double>;
 ex in_numbers(const ex& e, const SymbolTable& table, const exmap& values) {
   ex out = e;
   const exmap defs = table.definitions(true);
-  for (int depth = 0; depth < 8; ++depth) out = out.subs(defs);
-  return out.subs(values);
+  for (int depth = 0; depth < 8; ++depth) out = substituted(out, defs);
+  return substituted(out, values);
 }
 
 bool holds(double v, const std::string& op) {

@@ -41,7 +41,10 @@ std::optional<std::pair<ex, ex>> shared_sum(const std::vector<Answer>& answers, 
   };
   std::function<void(const ex&)> walk = [&](const ex& e) {
     if (is_a<symbol>(e) || is_a<numeric>(e)) return;
-    if (is_a<add>(e) && e.nops() >= 5 && is_sum_of_parameters(e) && seen.insert(e).second) ++count[e];
+    if (is_a<add>(e) && e.nops() >= 5 && is_sum_of_parameters(e)) {
+      if (seen.insert(e).second) ++count[e];
+      return;  // its terms are names (times numbers): no sum inside
+    }
     for (std::size_t i = 0; i < e.nops(); ++i) walk(e.op(i));
   };
   for (const auto& a : answers) {

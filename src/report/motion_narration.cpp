@@ -46,7 +46,7 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
   // A number for an expression in the parameters and the motion's quantities.
   auto number = [&](const ex& e, std::optional<Dimension> dim) {
     ex x = e;
-    for (int depth = 0; depth < 4; ++depth) x = x.subs(mo.definitions);
+    for (int depth = 0; depth < 4; ++depth) x = substituted(x, mo.definitions);
     return evaluate(x, table, dim, options.digits);
   };
   const ex& t = m.time;

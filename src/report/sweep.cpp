@@ -189,7 +189,7 @@ SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec
       // undefined there: not valid.
       // With roots in it (a tilted normal), a double: normal() of radicals is slow and no
       // exact zero test anyway.
-      if (!is_rational_number(condition_forms[k].num.subs(values)) || !is_rational_number(condition_forms[k].den.subs(values))) {
+      if (!is_rational_number(substituted(condition_forms[k].num, values)) || !is_rational_number(substituted(condition_forms[k].den, values))) {
         const auto a = condition_forms[k].approx_at(values);
         valid = valid && a && relation_holds(numeric(*a), cond.op);
         continue;

@@ -80,10 +80,10 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
     } else if (!w.defined && is_candidate && !is_unknown) {
       a.status = Answer::Status::not_in_equations;
     } else {
-      auto substituted = [&](const ex& e) {
-        ex g = e.subs(sol.general);
+      auto solved_in = [&](const ex& e) {
+        ex g = substituted(e, sol.general);
         for (const auto* level : {sol.rates.get(), sol.positions.get()})
-          if (level) g = g.subs(level->general);
+          if (level) g = substituted(g, level->general);
         return g;
       };
       // A defined quantity that divides by something the equations make zero (F/ddot(x_B)
@@ -91,7 +91,7 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
       // GiNaC would throw from inside a node it is making, and that node would leak.
       for (const_postorder_iterator it = w.expr.postorder_begin(); it != w.expr.postorder_end(); ++it) {
         if (!is_a<power>(*it) || !is_a<numeric>(it->op(1)) || !ex_to<numeric>(it->op(1)).is_negative()) continue;
-        if (!normal(substituted(it->op(0))).is_zero()) continue;
+        if (!normal(solved_in(it->op(0))).is_zero()) continue;
         a.zero_divisors.push_back(it->op(0));
         break;
       }
@@ -101,7 +101,7 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
         out.answers.push_back(a);
         continue;
       }
-      const ex general = substituted(w.expr);
+      const ex general = solved_in(w.expr);
       bool free = false;
       for (const auto& f : sol.free) free = free || general.has(f);
       if (free) {
@@ -112,7 +112,7 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
           exmap none;
           for (const auto& f : sol.free) none[f] = 0;
           const ex g = general.expand();
-          ex shown = simplest(g.subs(none));
+          ex shown = simplest(substituted(g, none));
           for (const auto& f : sol.free) shown += simplest(g.coeff(f, 1)) * f;
           a.general = shown;
         }
@@ -138,7 +138,7 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
           const ex plain = simplest(general);
           if (has_definition(general, table)) {
             ex expanded = general;
-            for (int depth = 0; depth < 8 && has_definition(expanded, table); ++depth) expanded = expanded.subs(table.definitions());
+            for (int depth = 0; depth < 8 && has_definition(expanded, table); ++depth) expanded = substituted(expanded, table.definitions());
             expanded = fold_definitions(simplest(expanded), table);
             a.closed_form = to_text(expanded).size() < to_text(plain).size() ? expanded : fold_definitions(plain, table);
           } else {
@@ -150,7 +150,7 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
           if (has_definition(*a.closed_form, table)) {
             ex in_parameters = *a.closed_form;
             for (int depth = 0; depth < 8 && has_definition(in_parameters, table); ++depth)
-              in_parameters = in_parameters.subs(table.definitions());
+              in_parameters = substituted(in_parameters, table.definitions());
             a.in_parameters = simplest(in_parameters);
           }
 
@@ -170,7 +170,7 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
   if (sol.status == Solution::Status::underdetermined) {
     std::vector<ex> family;
     for (const auto& u : s.unknowns) {
-      const ex g = u.subs(sol.general);
+      const ex g = substituted(u, sol.general);
       if (std::any_of(sol.free.begin(), sol.free.end(), [&](const ex& f) { return g.has(f); })) family.push_back(u);
     }
     const exmap values = table.values();
@@ -185,8 +185,8 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
     // GiNaC would throw from inside a node it is making, and that node would leak.
     auto number = [&](const ex& x) { return NormalForm(x).approx_at(values); };
     for (std::size_t i = 0; i < family.size() && numeric_family; ++i) {
-      const ex g = family[i].subs(sol.general).expand();
-      const auto base = number(g.subs(zero_free));
+      const ex g = substituted(family[i], sol.general).expand();
+      const auto base = number(substituted(g, zero_free));
       numeric_family = base.has_value();
       if (numeric_family) p(static_cast<Eigen::Index>(i)) = *base;
       for (std::size_t j = 0; j < sol.free.size() && numeric_family; ++j) {

@@ -139,11 +139,11 @@ std::vector<ex> canonical_factors_uncached(const ex& polynomial) {
   // sin(theta) and the like stand in as symbols while factoring (factor() leaves a sum with
   // them unfactored), and are put back in each factor.
   exmap repl;
-  const ex p = polynomial.to_polynomial(repl);
+  const ex p = is_polynomial_in_symbols(polynomial) ? polynomial : polynomial.to_polynomial(repl);
   const ex expanded = p.expand();
   const bool plain = (is_a<add>(expanded) && expanded.nops() > factor_term_limit) || too_wide(expanded) ||
                      linear_and_primitive(expanded);
-  const ex f = (plain ? content_only(expanded) : factor(p)).subs(repl);
+  const ex f = substituted(plain ? content_only(expanded) : factor(p), repl);
   std::vector<ex> raw;
   if (is_a<mul>(f))
     for (std::size_t i = 0; i < f.nops(); ++i) raw.push_back(f.op(i));
@@ -292,7 +292,7 @@ bool zero(const ex& e) { return is_zero_exactly(e); }
 bool pole_at(const ex& e, const exmap& point) {
   for (const_postorder_iterator it = e.postorder_begin(); it != e.postorder_end(); ++it)
     if (is_a<power>(*it) && is_a<numeric>(it->op(1)) && ex_to<numeric>(it->op(1)).is_negative() &&
-        normal(it->op(0).subs(point)).is_zero())
+        normal(substituted(it->op(0), point)).is_zero())
       return true;
   return false;
 }
@@ -400,7 +400,7 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
                            " (tackle solves linear systems)");
       if (!zero(a)) system.a[i][j] = normal_remembered(a);
     }
-    system.b[i] = normal(-residual.subs(zero_unknowns));
+    system.b[i] = normal(-substituted(residual, zero_unknowns));
   }
   if (!problems.empty()) {
     std::vector<Diagnostic> ds;
@@ -454,7 +454,7 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
     ex rest = 0;  // the free unknowns in this unknown's row: u + rest = value
     for (const auto& f : sol.free)
       if (general.has(f)) rest -= normal(general.diff(ex_to<symbol>(f))) * f;
-    const ex value = simplest(sol.free.empty() ? general : general.subs(no_free));
+    const ex value = simplest(sol.free.empty() ? general : substituted(general, no_free));
     sol.general[u] = value - rest;
     if (rest.is_zero())
       sol.values.push_back({u, value});
@@ -483,7 +483,7 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
       modular = r.kind != RationalAt::Kind::other;
       pole = r.kind == RationalAt::Kind::pole;
       if (!modular || pole) break;
-      point.values.insert_or_assign(u, r.value);
+      point.assign(u, r.value);
     }
     for (std::size_t i = 0; modular && !pole && i < equations.size(); ++i) {
       const ModularAt r = modular_at(equations[i].lhs - equations[i].rhs, point);
@@ -518,7 +518,7 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
         at[u] = r.value;
       } else {
         rational = false;
-        at[u] = g.subs(point);
+        at[u] = substituted(g, point);
       }
     }
     if (pole) continue;
@@ -530,7 +530,7 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
         pole = true;
       else if (r.kind == RationalAt::Kind::value && !r.value.is_zero())
         throw InternalError("solution fails equation '" + equations[i].label + "' at a random point");
-      else if (r.kind == RationalAt::Kind::other && !zero(residual.subs(at)))
+      else if (r.kind == RationalAt::Kind::other && !zero(substituted(residual, at)))
         throw InternalError("solution fails equation '" + equations[i].label + "' at a random point");
     }
     if (pole) continue;
@@ -538,7 +538,7 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
   }
   if (trial == 0)
     for (const auto& eq : equations) {
-      const ex residual = (eq.lhs - eq.rhs).subs(sol.general);
+      const ex residual = substituted(eq.lhs - eq.rhs, sol.general);
       if (!zero(residual))
         throw InternalError("solution fails equation '" + eq.label + "': residual " + to_text(normal(residual)));
     }
@@ -583,7 +583,7 @@ Solution solve(const Model& model, const EquationSystem& s) {
   for (const auto& c : model.conditions) {
     CheckedCondition cc;
     cc.condition = &c;
-    const ex normal_form = normal_remembered((c.lhs - c.rhs).subs(sol.general));
+    const ex normal_form = normal_remembered(substituted(c.lhs - c.rhs, sol.general));
     cc.expr = simplest(normal_form);
     // The symbols are gathered once (has() of each symbol would be quadratic per condition).
     const auto present = symbols_in(normal_form);

@@ -333,8 +333,8 @@ void add_loads(BuildContext& ctx, Instance& in) {
       for (const auto& b : ctx.m.bodies)
         if (!b.coord.is_zero()) origin[b.coord] = 0;
       for (const auto& t : ctx.m.lengths)
-        if (path->length.has(t.symbol)) origin[t.symbol] = sqrt(t.squared.subs(origin));
-      in.scope.bind("origin_length", path->length.subs(origin));
+        if (path->length.has(t.symbol)) origin[t.symbol] = sqrt(substituted(t.squared, origin));
+      in.scope.bind("origin_length", substituted(path->length, origin));
       auto tension = rule_expr(ctx, in, l.expr, l.at);
       if (!tension) continue;
       for (auto& load : tension_loads(*path, ctx.m.points, *tension, label)) ctx.m.loads.push_back(std::move(load));
@@ -450,7 +450,7 @@ void add_conditions(BuildContext& ctx, Instance& in) {
       // A stiffness or damping coefficient: positive where its value is known.
       auto it = in.expr_args.find(chk.arg);
       if (it == in.expr_args.end()) continue;
-      const ex v = evalf(it->second.first.subs(ctx.table->values()));
+      const ex v = evalf(substituted(it->second.first, ctx.table->values()));
       if (is_a<numeric>(v) && ex_to<numeric>(v).is_real() && !ex_to<numeric>(v).is_positive())
       {
         const ArgSpec* spec = in.rule.arg(chk.arg);

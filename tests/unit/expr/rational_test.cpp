@@ -1,6 +1,8 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "expr/rational.hpp"
 #include "expr/trig.hpp"
@@ -97,4 +99,17 @@ TEST_CASE("Trig: sin and cos and their powers found by structure", "[rational]")
   CHECK(has_trig_power(m * pow(sin(t), 2) + 1));
   CHECK_FALSE(has_trig_power(m * sin(t) + cos(t)));
   CHECK(has_trig_power(1 / (m + pow(cos(t), 3))));
+}
+
+TEST_CASE("Modular: a long sum remembered is forgotten when a value it used changes", "[rational]") {
+  ex sum = 0;
+  std::vector<symbol> m;
+  for (int i = 1; i <= 9; ++i) m.emplace_back("m_" + std::to_string(i));
+  for (const auto& s : m) sum += s;
+  ModularPoint point(1);
+  for (const auto& s : m) point.assign(s, 1);
+  CHECK(modular_at(sum, point).value == 9);
+  CHECK(modular_at(2 / sum, point).value == modular_quotient(2, 9));  // the same node, remembered
+  point.assign(m[0], 10);
+  CHECK(modular_at(sum, point).value == 18);
 }
