@@ -226,6 +226,49 @@ ex shorter_form(const ex& f, const ex& n, bool large) {
   return shorter(f, n, large) ? f : n;
 }
 
+ex simplest_uncached(const ex& e);
+
+// A compound Atwood machine's accelerations are sums over the masses of the product of all
+// but one, over another such sum (11 terms of 10 masses for 10 levels): divided through by
+// the product, each term is a number over one mass, and the closed form grows like the
+// number of levels instead of its square. Such symbols (of degree 1 in the denominator,
+// three or more of them) are put in as reciprocals, u = 1/m, the form in u simplified, and
+// 1/m put back for u. Kept only when it has fewer than half the nodes of `best`: textbook
+// problems keep their forms. The stand-in symbols are made once per thread (the same ones
+// in every run), and a form is not inverted again inside this.
+std::optional<ex> reciprocal_form(const ex& n, const ex& nd, const ex& best) {
+  constexpr std::size_t min_nodes = 80, max_symbols = 64;
+  thread_local bool inside = false;
+  // Named as the symbol they stand for (sums are then ordered as they print), positive
+  // when it is; by name and sign, made once.
+  thread_local std::map<std::pair<std::string, bool>, ex> stand_ins;
+  if (inside || node_count(best, min_nodes) < min_nodes) return std::nullopt;
+  const ex d = nd.op(1).expand();
+  if (!is_exactly<add>(d) || !is_polynomial_in_symbols(nd.op(0)) || !is_polynomial_in_symbols(d)) return std::nullopt;
+  std::vector<ex> inverted;
+  for (const auto& [x, high] : degrees_of(d).high)
+    if (high == 1) inverted.push_back(x);
+  if (inverted.size() < 3 || inverted.size() > max_symbols) return std::nullopt;
+  exmap in, back;
+  for (const ex& x : inverted) {
+    const symbol& s = ex_to<symbol>(x);
+    const bool positive = x.info(info_flags::positive);
+    auto it = stand_ins.find({s.get_name(), positive});
+    if (it == stand_ins.end())
+      it = stand_ins.emplace(std::make_pair(s.get_name(), positive), positive ? ex(possymbol(s.get_name())) : ex(symbol(s.get_name()))).first;
+    in[x] = 1 / it->second;
+    back[it->second] = 1 / x;
+  }
+  inside = true;
+  struct Leave {
+    ~Leave() { inside = false; }
+  } leave;
+  const ex r = substituted(simplest(substituted(n, in)), back);
+  if (2 * node_count(r) >= node_count(best)) return std::nullopt;
+  remember_normal(r, n);
+  return r;
+}
+
 ex simplest_uncached(const ex& e) {
   ex n = normal_remembered(e);
   const bool large = node_count(n, 301) > 300;
@@ -238,7 +281,9 @@ ex simplest_uncached(const ex& e) {
       if (shorter(t, n)) n = t;
     }
   const ex nd = numer_denom_of_normal(n);
-  return shorter_form(factored(nd.op(0)) / factored(nd.op(1)), n, large);
+  const ex best = shorter_form(factored(nd.op(0)) / factored(nd.op(1)), n, large);
+  if (const auto r = reciprocal_form(n, nd, best)) return *r;
+  return best;
 }
 
 }  // namespace

@@ -1,5 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <string>
+#include <vector>
+
 #include "expr/print.hpp"
 #include "../../support/helpers.hpp"
 
@@ -95,4 +98,30 @@ TEST_CASE("Simplest: a product known by its parts gives the form simplest() give
   CHECK(to_text(by_parts) == "-m^2*(a*k*w^2 + g*k - g*m*w^2)*(a*k*w^2 + g*m*w^2 - g*k)");
   // Parts that are not the whole's factors: the whole is simplified as it is.
   CHECK(simplest_of_product(whole, {p1, p1}).is_equal(simplest(whole)));
+}
+
+TEST_CASE("Simplest: a compound Atwood machine's sums over all masses but one are divided through", "[solve]") {
+  using namespace GiNaC;
+  // Ten levels: the denominator is sum_k 4^(k-1) prod_{j != k} m_j. Divided by the product of
+  // all ten masses (by hand), a tension 2 g prod_j m_j / den is 2 g / (sum_k 4^(k-1)/m_k).
+  const possymbol g("g");
+  std::vector<possymbol> m;
+  for (int k = 1; k <= 10; ++k) m.emplace_back("m_" + std::to_string(k));
+  ex all = 1, den = 0, reciprocal_sum = 0;
+  for (const auto& x : m) all *= x;
+  for (int k = 0; k < 10; ++k) {
+    const ex c = pow(4, k);
+    den += c * all / m[static_cast<std::size_t>(k)];
+    reciprocal_sum += c / m[static_cast<std::size_t>(k)];
+  }
+  const ex tension = 2 * g * all / den.expand();
+  const ex expected = 2 * g / reciprocal_sum;
+  const ex s = simplest(tension);
+  CHECK(normal(s - tension).is_zero());
+  CHECK(to_text(s) == to_text(expected));
+  CHECK(to_text(s) == "2*g/(1/m_1 + 4/m_2 + 16/m_3 + 64/m_4 + 256/m_5 + 1024/m_6 + 4096/m_7 + 16384/m_8 + 65536/m_9 + 262144/m_10)");
+  // A small problem keeps its polynomial form: the Atwood machine.
+  const possymbol m1("m_1"), m2("m_2"), m3("m_3");
+  CHECK(to_text(simplest(g * (m1 - m2) / (m1 + m2))) == "g*(m_1 - m_2)/(m_1 + m_2)");
+  CHECK(to_text(simplest(g * m1 * m2 / (m1 * m2 + 4 * m1 * m3 + m2 * m3))) == "g*m_1*m_2/(m_1*m_2 + 4*m_1*m_3 + m_2*m_3)");
 }
