@@ -1,6 +1,7 @@
 #include "expr/print.hpp"
 
 #include "expr/kind.hpp"
+#include "expr/pairs.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -173,12 +174,7 @@ std::string key_of_uncached(const ex& e) {
 
 numeric coefficient(const ex& e) {
   if (is_exactly<numeric>(e)) return ex_to<numeric>(e);
-  if (is_exactly<mul>(e)) {
-    numeric c = 1;
-    for (const auto& f : e)
-      if (is_exactly<numeric>(f)) c *= ex_to<numeric>(f);
-    return c;
-  }
+  if (is_exactly<mul>(e)) return Pairs::overall(e);  // a product's numbers are its coefficient
   return 1;
 }
 
@@ -382,10 +378,20 @@ Fraction split_uncached(const ex& e) {
       f.num.push_back(x);
     }
   };
-  if (is_exactly<mul>(e))
-    for (const auto& x : e) factor(x);
-  else
+  if (is_exactly<mul>(e)) {
+    // By the stored pairs (op() would make each power of a sum again: see pairs.hpp); the
+    // order of the factors is op()'s, the coefficient last.
+    for (const auto& p : Pairs::of(e)) {
+      const numeric& k = ex_to<numeric>(p.coeff);
+      if (k.is_negative())
+        f.den.push_back(pow(p.rest, -k));
+      else
+        f.num.push_back(k.is_equal(1) ? p.rest : pow(p.rest, k));
+    }
+    factor(Pairs::overall(e));
+  } else {
     factor(e);
+  }
   // Signs as a textbook writes them: a sum with more negative than positive terms is
   // negated (c + d - h mu, not h mu - c - d), and a leading minus moves into a sum when that
   // leaves the sum no worse: g (m_B - m_A), not -g (m_A - m_B).

@@ -11,6 +11,7 @@
 #include <cln/rational.h>
 
 #include "expr/kind.hpp"
+#include "expr/pairs.hpp"
 #include "expr/trig.hpp"
 
 namespace tackle {
@@ -73,10 +74,19 @@ ex numer_denom_of_normal(const ex& n) {
     }
     num *= f;
   };
-  if (is_a<mul>(n))
-    for (std::size_t i = 0; i < n.nops(); ++i) take(n.op(i));
-  else
+  if (is_exactly<mul>(n)) {
+    // By its pairs: op(i) would make each power of a sum again (see pairs.hpp).
+    take(Pairs::overall(n));
+    for (const auto& p : Pairs::of(n)) {
+      const numeric& k = ex_to<numeric>(p.coeff);
+      if (k.is_negative())
+        den *= pow(p.rest, -k);
+      else
+        num *= k.is_equal(1) ? p.rest : pow(p.rest, k);
+    }
+  } else {
     take(n);
+  }
   return lst{num, den};
 }
 
@@ -98,12 +108,22 @@ RationalAt::Kind rational_in(const ex& e, ValueOf& value_of, cln::cl_RA& out) {
   if (is_exactly<symbol>(e)) return value_of(e, out);
   const bool sum = is_exactly<add>(e);
   if (sum || is_exactly<mul>(e)) {
-    cln::cl_RA acc = sum ? 0 : 1, t;
-    const std::size_t n = e.nops();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Kind k = rational_in(e.op(i), value_of, t);
-      if (k != Kind::value) return k;
-      acc = sum ? acc + t : acc * t;
+    // By the stored pairs (see pairs.hpp): a term rest*coeff, a factor rest^coeff.
+    const numeric& overall = Pairs::overall(e);
+    if (!overall.is_rational()) return Kind::other;
+    cln::cl_RA acc = cln::the<cln::cl_RA>(overall.to_cl_N()), t;
+    for (const auto& p : Pairs::of(e)) {
+      const numeric& k = ex_to<numeric>(p.coeff);
+      if (sum ? !k.is_rational() : !k.is_integer()) return Kind::other;
+      const Kind r = rational_in(p.rest, value_of, t);
+      if (r != Kind::value) return r;
+      if (sum) {
+        acc = acc + t * cln::the<cln::cl_RA>(k.to_cl_N());
+      } else {
+        const cln::cl_I x = cln::the<cln::cl_I>(k.to_cl_N());
+        if (cln::zerop(t) && cln::minusp(x)) return Kind::pole;
+        acc = acc * cln::expt(t, x);
+      }
     }
     out = acc;
     return Kind::value;
@@ -189,17 +209,34 @@ u64 mod_inverse(u64 a) { return mod_pow(a, P - 2); }
 
 u64 mod_of(const cln::cl_I& x) { return cln::cl_I_to_UQ(cln::mod(x, cln::cl_I(P))); }
 
+// A rational number modulo the prime.
+ModularAt number_mod(const numeric& c) {
+  using Kind = RationalAt::Kind;
+  if (c.is_integer()) return {Kind::value, mod_of(cln::the<cln::cl_I>(c.to_cl_N()))};
+  if (!c.is_rational()) return {};
+  const cln::cl_RA r = cln::the<cln::cl_RA>(c.to_cl_N());
+  const u64 d = mod_of(cln::denominator(r));
+  if (d == 0) return {Kind::pole, 0};
+  return {Kind::value, mod_mul(mod_of(cln::numerator(r)), mod_inverse(d))};
+}
+
+// b^x for an integer x modulo the prime; a pole for 0 to a negative power.
+ModularAt power_mod(u64 b, const numeric& exponent) {
+  using Kind = RationalAt::Kind;
+  const cln::cl_I x = cln::the<cln::cl_I>(exponent.to_cl_N());
+  if (b == 0) {
+    if (cln::minusp(x)) return {Kind::pole, 0};
+    return {Kind::value, cln::zerop(x) ? u64{1} : u64{0}};
+  }
+  // b^(p-1) = 1 for b != 0: the exponent counts modulo p - 1.
+  const u64 k = cln::cl_I_to_UQ(cln::mod(cln::abs(x), cln::cl_I(P - 1)));
+  const u64 v = mod_pow(b, k);
+  return {Kind::value, cln::minusp(x) ? mod_inverse(v) : v};
+}
+
 ModularAt modular_in(const ex& e, ModularPoint& point) {
   using Kind = RationalAt::Kind;
-  if (is_exactly<numeric>(e)) {
-    const numeric& c = ex_to<numeric>(e);
-    if (c.is_integer()) return {Kind::value, mod_of(cln::the<cln::cl_I>(c.to_cl_N()))};
-    if (!c.is_rational()) return {};
-    const cln::cl_RA r = cln::the<cln::cl_RA>(c.to_cl_N());
-    const u64 d = mod_of(cln::denominator(r));
-    if (d == 0) return {Kind::pole, 0};
-    return {Kind::value, mod_mul(mod_of(cln::numerator(r)), mod_inverse(d))};
-  }
+  if (is_exactly<numeric>(e)) return number_mod(ex_to<numeric>(e));
   if (is_exactly<symbol>(e)) {
     auto it = point.values.find(e);
     if (it == point.values.end()) {
@@ -210,32 +247,36 @@ ModularAt modular_in(const ex& e, ModularPoint& point) {
   }
   const bool sum = is_exactly<add>(e);
   if (sum || is_exactly<mul>(e)) {
-    const std::size_t n = e.nops();
-    const bool long_sum = sum && n >= 8;
+    const auto& pairs = Pairs::of(e);
+    const bool long_sum = sum && pairs.size() >= 8;
     const basic* node = &ex_to<basic>(e);
     if (long_sum)
       if (const auto it = point.sums.find(node); it != point.sums.end()) return {Kind::value, it->second.second};
-    u64 acc = sum ? 0 : 1;
-    for (std::size_t i = 0; i < n; ++i) {
-      const ModularAt t = modular_in(e.op(i), point);
+    // By the stored pairs (see pairs.hpp): a term rest*coeff, a factor rest^coeff.
+    ModularAt acc = number_mod(Pairs::overall(e));
+    if (acc.kind != Kind::value) return acc;
+    for (const auto& p : pairs) {
+      const ModularAt t = modular_in(p.rest, point);
       if (t.kind != Kind::value) return t;
-      acc = sum ? mod_add(acc, t.value) : mod_mul(acc, t.value);
+      const numeric& k = ex_to<numeric>(p.coeff);
+      if (sum) {
+        const ModularAt c = number_mod(k);
+        if (c.kind != Kind::value) return c;
+        acc.value = mod_add(acc.value, mod_mul(c.value, t.value));
+      } else {
+        if (!k.is_integer()) return {};
+        const ModularAt f = power_mod(t.value, k);
+        if (f.kind != Kind::value) return f;
+        acc.value = mod_mul(acc.value, f.value);
+      }
     }
-    if (long_sum) point.sums.emplace(node, std::make_pair(e, acc));
-    return {Kind::value, acc};
+    if (long_sum) point.sums.emplace(node, std::make_pair(e, acc.value));
+    return acc;
   }
   if (is_exactly<power>(e) && is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer()) {
     const ModularAt b = modular_in(e.op(0), point);
     if (b.kind != Kind::value) return b;
-    const cln::cl_I x = cln::the<cln::cl_I>(ex_to<numeric>(e.op(1)).to_cl_N());
-    // b^(p-1) = 1 for b != 0: the exponent counts modulo p - 1.
-    const u64 k = cln::cl_I_to_UQ(cln::mod(cln::abs(x), cln::cl_I(P - 1)));
-    if (b.value == 0) {
-      if (cln::minusp(x)) return {Kind::pole, 0};
-      return {Kind::value, cln::zerop(x) ? u64{1} : u64{0}};
-    }
-    const u64 v = mod_pow(b.value, k);
-    return {Kind::value, cln::minusp(x) ? mod_inverse(v) : v};
+    return power_mod(b.value, ex_to<numeric>(e.op(1)));
   }
   return {};
 }
@@ -257,15 +298,41 @@ void gather_symbols(const ex& e, std::unordered_set<ex, ExHash, ex_is_equal>& se
     return;
   }
   if (is_exactly<numeric>(e)) return;
+  if (is_exactly<add>(e) || is_exactly<mul>(e)) {
+    for (const auto& p : Pairs::of(e)) gather_symbols(p.rest, seen, out);  // the coefficients are numbers
+    return;
+  }
   const std::size_t n = e.nops();
   for (std::size_t i = 0; i < n; ++i) gather_symbols(e.op(i), seen, out);
 }
 
+// The nodes as op() would make them, counted from the pairs (see pairs.hpp): a term
+// rest*c (c != 1) is a product of rest's factors and c, or of rest and c; a factor rest^c
+// (c != 1) a power of rest and c; the numeric term or coefficient one node more.
 void count_nodes(const ex& e, std::size_t limit, std::size_t& n) {
   if (++n >= limit) return;
+  const bool sum = is_exactly<add>(e);
+  if (sum || is_exactly<mul>(e)) {
+    for (const auto& p : Pairs::of(e)) {
+      if (n >= limit) return;
+      if (ex_to<numeric>(p.coeff).is_equal(1)) {
+        count_nodes(p.rest, limit, n);
+      } else if (sum && is_exactly<mul>(p.rest)) {
+        count_nodes(p.rest, limit, n);
+        n = std::min(limit, n + 1);
+      } else {
+        n = std::min(limit, n + 1);
+        if (n < limit) count_nodes(p.rest, limit, n);
+        n = std::min(limit, n + 1);
+      }
+    }
+    if (!Pairs::overall(e).is_equal(sum ? 0 : 1)) n = std::min(limit, n + 1);
+    return;
+  }
   const std::size_t k = e.nops();
   for (std::size_t i = 0; i < k && n < limit; ++i) count_nodes(e.op(i), limit, n);
 }
+
 
 }  // namespace
 

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -112,4 +113,37 @@ TEST_CASE("Modular: a long sum remembered is forgotten when a value it used chan
   CHECK(modular_at(2 / sum, point).value == modular_quotient(2, 9));  // the same node, remembered
   point.assign(m[0], 10);
   CHECK(modular_at(sum, point).value == 18);
+}
+
+namespace {
+
+// The count node_count() keeps to: GiNaC's own operands, op() by op().
+std::size_t nodes_by_op(const ex& e) {
+  std::size_t n = 1;
+  for (std::size_t i = 0; i < e.nops(); ++i) n += nodes_by_op(e.op(i));
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("Node count: read from the stored pairs, the same as op() by op()", "[rational]") {
+  const possymbol m1("m_1"), m2("m_2"), m3("m_3"), F("F"), g("g");
+  const symbol x("x"), y("y");
+  ex M = 0;
+  for (const auto& s : {m1, m2, m3}) M += s;
+  const std::vector<ex> forms{
+      F / M,
+      -F * (m2 + m3) / M,
+      3 * m1 - 2 * m2 * m3 + 7,
+      pow(m1 + 2 * m2, 2) * x / (pow(y, 3) * (m1 - m3)),
+      2 * x * y + numeric(1, 2) * pow(x, 2) - 5,
+      sqrt(2) * x / (3 * pow(g, numeric(1, 2))),
+      -g * (m1 - m2) / (m1 + m2) + sin(x) * pow(cos(x), 2),
+      (F - 4 * g * m1 * m2) / pow(M, 3) + 1,
+  };
+  for (const ex& e : forms) {
+    CAPTURE(e);
+    CHECK(node_count(e) == nodes_by_op(e));
+    CHECK(node_count(e, 5) == std::min<std::size_t>(5, nodes_by_op(e)));
+  }
 }
