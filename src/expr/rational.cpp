@@ -172,18 +172,6 @@ numeric drawn_value(const std::string& name, std::uint64_t seed) {
   return numeric(static_cast<long>(1 + (h & ((std::uint64_t{1} << 40) - 1))));
 }
 
-RationalAt rational_at_drawn(const ex& e, RationalPoint& point, std::uint64_t seed) {
-  auto value_of = [&](const ex& s, cln::cl_RA& out) {
-    auto it = point.find(s);
-    if (it == point.end()) it = point.emplace(s, drawn_value(ex_to<symbol>(s).get_name(), seed)).first;
-    if (!it->second.is_rational()) return RationalAt::Kind::other;
-    out = cln::the<cln::cl_RA>(it->second.to_cl_N());
-    return RationalAt::Kind::value;
-  };
-  cln::cl_RA v;
-  const RationalAt::Kind k = rational_in(e, value_of, v);
-  return result(k, v);
-}
 
 namespace {
 

@@ -48,11 +48,10 @@ struct ExHash {
 using RationalPoint = std::unordered_map<GiNaC::ex, GiNaC::numeric, ExHash, GiNaC::ex_is_equal>;
 [[nodiscard]] RationalAt rational_at(const GiNaC::ex& e, const RationalPoint& point);
 
-/// The same at a point whose values are drawn from the symbols' names: a symbol not in
-/// `point` gets an integer from 1 to 2^40 made from its name and `seed` (the same in every
-/// run and for every expression), and is added to `point`. No pass over `e` to gather its
-/// symbols first, and two expressions evaluated with one seed meet at one point.
-[[nodiscard]] RationalAt rational_at_drawn(const GiNaC::ex& e, RationalPoint& point, std::uint64_t seed);
+/// The value drawn for a symbol of this name with this seed: an integer from 1 to 2^40 made
+/// from the name (the same in every run and for every expression), so that no pass over an
+/// expression is needed to gather its symbols first, and two expressions evaluated with one
+/// seed meet at one point.
 [[nodiscard]] GiNaC::numeric drawn_value(const std::string& name, std::uint64_t seed);
 
 /// The value of a rational function modulo the prime 2^61 - 1 at a point whose values are

@@ -231,39 +231,34 @@ ex simplest_uncached(const ex& e);
 // A compound Atwood machine's accelerations are sums over the masses of the product of all
 // but one, over another such sum (11 terms of 10 masses for 10 levels): divided through by
 // the product, each term is a number over one mass, and the closed form grows like the
-// number of levels instead of its square. Such symbols (of degree 1 in the denominator,
-// three or more of them) are put in as reciprocals, u = 1/m, the form in u simplified, and
-// 1/m put back for u. Kept only when it has fewer than half the nodes of `best`: textbook
-// problems keep their forms. The stand-in symbols are made once per thread (the same ones
-// in every run), and a form is not inverted again inside this.
+// number of levels instead of its square. Tried only for that shape (three or more symbols
+// of degree 1 in the denominator, each of its terms holding all of them but one at most),
+// made by expand() alone (no gcd), and kept only when it has fewer than half the nodes of
+// `best`: textbook problems keep their forms.
 std::optional<ex> reciprocal_form(const ex& n, const ex& nd, const ex& best) {
-  constexpr std::size_t min_nodes = 80, max_symbols = 64;
-  thread_local bool inside = false;
-  // Named as the symbol they stand for (sums are then ordered as they print), positive
-  // when it is; by name and sign, made once.
-  thread_local std::map<std::pair<std::string, bool>, ex> stand_ins;
-  if (inside || node_count(best, min_nodes) < min_nodes) return std::nullopt;
+  constexpr std::size_t min_nodes = 80;
+  if (node_count(best, min_nodes) < min_nodes) return std::nullopt;
   const ex d = nd.op(1).expand();
   if (!is_exactly<add>(d) || !is_polynomial_in_symbols(nd.op(0)) || !is_polynomial_in_symbols(d)) return std::nullopt;
-  std::vector<ex> inverted;
+  std::set<ex, ex_is_less> inverted;
   for (const auto& [x, high] : degrees_of(d).high)
-    if (high == 1) inverted.push_back(x);
-  if (inverted.size() < 3 || inverted.size() > max_symbols) return std::nullopt;
-  exmap in, back;
-  for (const ex& x : inverted) {
-    const symbol& s = ex_to<symbol>(x);
-    const bool positive = x.info(info_flags::positive);
-    auto it = stand_ins.find({s.get_name(), positive});
-    if (it == stand_ins.end())
-      it = stand_ins.emplace(std::make_pair(s.get_name(), positive), positive ? ex(possymbol(s.get_name())) : ex(symbol(s.get_name()))).first;
-    in[x] = 1 / it->second;
-    back[it->second] = 1 / x;
+    if (high == 1) inverted.insert(x);
+  if (inverted.size() < 3) return std::nullopt;
+  for (std::size_t i = 0; i < d.nops(); ++i) {
+    const ex term = d.op(i);
+    std::size_t held = 0;
+    for (const ex& x : inverted) held += term.has(x) ? 1 : 0;
+    if (held + 1 < inverted.size()) return std::nullopt;
   }
-  inside = true;
-  struct Leave {
-    ~Leave() { inside = false; }
-  } leave;
-  const ex r = substituted(simplest(substituted(n, in)), back);
+  ex product = 1;
+  for (const ex& x : inverted) product *= x;
+  const ex over = pow(product, -1);
+  const ex num = (nd.op(0) * over).expand(), den = (d * over).expand();
+  // The numerator's common monomial and integer content taken out (g, 524288 g).
+  ex content = is_exactly<add>(num) ? ex(num.integer_content()) : ex(1);
+  if (is_exactly<add>(num))
+    for (const auto& [x, low] : degrees_of(num).low) content *= pow(x, low);
+  const ex r = content * (num / content).expand() / den;
   if (2 * node_count(r) >= node_count(best)) return std::nullopt;
   remember_normal(r, n);
   return r;
