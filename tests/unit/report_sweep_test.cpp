@@ -14,7 +14,7 @@ SweepResult figure_12_28(const SweepSpec& spec) {
 }  // namespace
 
 TEST_CASE("Sweep: figure 12.28, N1, N2 and N1 - N2 against h/l for mg = 1, mu = 0.5", "[sweep]") {
-  const auto r = figure_12_28({"h=0:2:41", {}, {"N_A", "N_B", "N_A - N_B"}});
+  const auto r = figure_12_28({"h=0:2:41", {}, {"N_A", "N_B", "N_A - N_B"}, ""});
   REQUIRE(r.x.size() == 41);
   CHECK(r.y_unit == "N");
   for (std::size_t i = 0; i < r.x.size(); ++i) {
@@ -75,13 +75,13 @@ TEST_CASE("Sweep: a bad axis is reported", "[sweep]") {
 }
 
 TEST_CASE("Sweep: fixed values are in the parameter's unit", "[sweep]") {
-  const auto r = figure_12_28({"h=0:1:3", {"mu=0", "g=2"}, {"N_A"}});
+  const auto r = figure_12_28({"h=0:1:3", {"mu=0", "g=2"}, {"N_A"}, ""});
   for (std::size_t i = 0; i < 3; ++i) CHECK(*r.y[0][i] == Approx(1.0));  // m g/2 with g = 2
 }
 
 TEST_CASE("Sweep: a bad spec is reported, all at once", "[sweep]") {
   try {
-    (void)figure_12_28({"x=0:1:0", {"q=1"}, {"N_Q"}});
+    (void)figure_12_28({"x=0:1:0", {"q=1"}, {"N_Q"}, ""});
     FAIL("expected an InputError");
   } catch (const InputError& e) {
     std::vector<std::string> got;
