@@ -55,12 +55,12 @@ using RationalPoint = std::unordered_map<GiNaC::ex, GiNaC::numeric, ExHash, GiNa
 [[nodiscard]] GiNaC::numeric drawn_value(const std::string& name, std::uint64_t seed);
 
 /// The value of a rational function modulo the prime 2^61 - 1 at a point whose values are
-/// drawn from the symbols' names (drawn_value: the same integers as rational_at_drawn) or
-/// given: machine words instead of exact rationals, whose numerators grow with every
-/// product. `pole` when a denominator is 0 modulo the prime (a pole, or by a chance of its
-/// degree over 2^61 a number that is not: either way another point is wanted); `other` when
-/// `e` is not a rational function of symbols. A value that is not 0 says for certain that
-/// the exact value is not 0; a 0 says it is, but for that chance.
+/// drawn from the symbols' names (drawn_value) or given: machine words instead of exact
+/// rationals, whose numerators grow with every product. `pole` when a denominator is 0
+/// modulo the prime (a pole, or by a chance of its degree over 2^40, the number of values
+/// drawn from, one that is not: either way another point is wanted); `other` when `e` is not
+/// a rational function of symbols. A value that is not 0 says for certain that the exact
+/// value is not 0; a 0 says it is, but for that chance.
 struct ModularPoint {
   static constexpr std::uint64_t prime = (std::uint64_t{1} << 61) - 1;
   explicit ModularPoint(std::uint64_t seed) : seed(seed) {}
@@ -91,7 +91,7 @@ struct ModularAt {
 /// drawn from the names with fixed seeds: the same points in every run); each substituted
 /// value is evaluated at a point once, then `e`. False when it is not zero at some point
 /// (certain), true when it is zero at both (a nonzero one vanishes at a point by chance with
-/// a probability of its degree over 2^61), nullopt when some value or `e` is not a rational
+/// a probability of its degree over 2^40), nullopt when some value or `e` is not a rational
 /// function of symbols or no point without a pole was found. For expressions too large to
 /// expand.
 [[nodiscard]] std::optional<bool> zero_at_random_points(const GiNaC::ex& e,
