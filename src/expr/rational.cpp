@@ -94,35 +94,45 @@ namespace {
 
 // rational_at in CLN's rationals: one number object per node instead of a GiNaC numeric
 // (each a new heap object with its own hash), and classes told apart by their class-info
-// address (is_a<> is a dynamic_cast that compares type names across libraries). `value_of`
-// gives a symbol's value.
-template <class ValueOf>
-RationalAt::Kind rational_in(const ex& e, ValueOf& value_of, cln::cl_RA& out) {
+// address (is_a<> is a dynamic_cast that compares type names across libraries).
+RationalAt::Kind rational_in(const ex& e, const RationalPoint& point, cln::cl_RA& out);
+
+// b^x for an integer x; a pole for 0 to a negative power.
+RationalAt::Kind power_in(const cln::cl_RA& b, const numeric& exponent, cln::cl_RA& out) {
+  const cln::cl_I x = cln::the<cln::cl_I>(exponent.to_cl_N());
+  if (cln::zerop(b) && cln::minusp(x)) return RationalAt::Kind::pole;
+  out = cln::expt(b, x);
+  return RationalAt::Kind::value;
+}
+
+RationalAt::Kind rational_in(const ex& e, const RationalPoint& point, cln::cl_RA& out) {
   using Kind = RationalAt::Kind;
-  if (is_exactly<numeric>(e)) {
-    const numeric& c = ex_to<numeric>(e);
-    if (!c.is_rational()) return Kind::other;
-    out = cln::the<cln::cl_RA>(c.to_cl_N());
+  if (is_exactly<numeric>(e) || is_exactly<symbol>(e)) {
+    const numeric* c = nullptr;
+    if (is_exactly<numeric>(e)) {
+      c = &ex_to<numeric>(e);
+    } else if (const auto it = point.find(e); it != point.end()) {
+      c = &it->second;
+    }
+    if (!c || !c->is_rational()) return Kind::other;
+    out = cln::the<cln::cl_RA>(c->to_cl_N());
     return Kind::value;
   }
-  if (is_exactly<symbol>(e)) return value_of(e, out);
   const bool sum = is_exactly<add>(e);
   if (sum || is_exactly<mul>(e)) {
     // By the stored pairs (see pairs.hpp): a term rest*coeff, a factor rest^coeff.
     const numeric& overall = Pairs::overall(e);
     if (!overall.is_rational()) return Kind::other;
-    cln::cl_RA acc = cln::the<cln::cl_RA>(overall.to_cl_N()), t;
+    cln::cl_RA acc = cln::the<cln::cl_RA>(overall.to_cl_N()), t, f;
     for (const auto& p : Pairs::of(e)) {
       const numeric& k = ex_to<numeric>(p.coeff);
       if (sum ? !k.is_rational() : !k.is_integer()) return Kind::other;
-      const Kind r = rational_in(p.rest, value_of, t);
-      if (r != Kind::value) return r;
+      if (const Kind r = rational_in(p.rest, point, t); r != Kind::value) return r;
       if (sum) {
         acc = acc + t * cln::the<cln::cl_RA>(k.to_cl_N());
       } else {
-        const cln::cl_I x = cln::the<cln::cl_I>(k.to_cl_N());
-        if (cln::zerop(t) && cln::minusp(x)) return Kind::pole;
-        acc = acc * cln::expt(t, x);
+        if (const Kind r = power_in(t, k, f); r != Kind::value) return r;
+        acc = acc * f;
       }
     }
     out = acc;
@@ -130,35 +140,19 @@ RationalAt::Kind rational_in(const ex& e, ValueOf& value_of, cln::cl_RA& out) {
   }
   if (is_exactly<power>(e) && is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer()) {
     cln::cl_RA b;
-    const Kind k = rational_in(e.op(0), value_of, b);
-    if (k != Kind::value) return k;
-    const cln::cl_I x = cln::the<cln::cl_I>(ex_to<numeric>(e.op(1)).to_cl_N());
-    if (cln::zerop(b) && cln::minusp(x)) return Kind::pole;
-    out = cln::expt(b, x);
-    return Kind::value;
+    if (const Kind k = rational_in(e.op(0), point, b); k != Kind::value) return k;
+    return power_in(b, ex_to<numeric>(e.op(1)), out);
   }
   return Kind::other;
-}
-
-RationalAt::Kind value_in(const RationalPoint& point, const ex& s, cln::cl_RA& out) {
-  const auto it = point.find(s);
-  if (it == point.end() || !it->second.is_rational()) return RationalAt::Kind::other;
-  out = cln::the<cln::cl_RA>(it->second.to_cl_N());
-  return RationalAt::Kind::value;
-}
-
-RationalAt result(RationalAt::Kind k, const cln::cl_RA& v) {
-  if (k == RationalAt::Kind::value) return {k, numeric(v)};
-  return {k, 0};
 }
 
 }  // namespace
 
 RationalAt rational_at(const ex& e, const RationalPoint& point) {
-  auto value_of = [&](const ex& s, cln::cl_RA& out) { return value_in(point, s, out); };
   cln::cl_RA v;
-  const RationalAt::Kind k = rational_in(e, value_of, v);
-  return result(k, v);
+  const RationalAt::Kind k = rational_in(e, point, v);
+  if (k == RationalAt::Kind::value) return {k, numeric(v)};
+  return {k, 0};
 }
 
 numeric drawn_value(const std::string& name, std::uint64_t seed) {

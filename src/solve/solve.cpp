@@ -535,8 +535,9 @@ Solution solve_equations(const std::string& file, const std::vector<Equation>& e
     if (modular && !pole) ++trial;
   }
   if (!modular) trial = 0;
-  lst everything;
-  for (const auto& eq : equations) everything.append(eq.lhs - eq.rhs);
+  lst everything;  // the equations' symbols, for the exact points (only when not modular)
+  if (!modular)
+    for (const auto& eq : equations) everything.append(eq.lhs - eq.rhs);
   std::mt19937 rng(20261121);
   // A point where some denominator vanishes is drawn again (GiNaC would throw there, from
   // inside a node it is making; found by fuzzing). Rational functions are evaluated as
