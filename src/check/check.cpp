@@ -20,7 +20,7 @@
 
 #include <fmt/format.h>
 
-#include "expr/kind.hpp"
+#include "core/kind.hpp"
 #include "expr/parse.hpp"
 #include "expr/print.hpp"
 #include "expr/rational.hpp"
@@ -292,70 +292,187 @@ void Checker::Exact::emit(const ex& e, const Point& layout, const exmap& definit
   nodes_.push_back({Op::nothing, 0});
 }
 
+// A value while evaluating: exact as a fraction n/d (d > 0) not put in lowest terms (a
+// rational's product and sum in CLN take gcds at every step, most of an evaluation's time;
+// they are taken here only when a value grows past the bound, and once at the end), or a
+// CLN float after a fractional power or a function.
+struct Checker::Exact::Value {
+  bool exact = true;
+  cln::cl_I n = 0, d = 1;
+  cln::cl_R f;
+
+  void set(const cln::cl_R& v) {
+    exact = cln::instanceof(v, cln::cl_RA_ring);
+    if (exact) {
+      const cln::cl_RA& q = cln::the<cln::cl_RA>(v);
+      n = cln::numerator(q);
+      d = cln::denominator(q);
+    } else {
+      f = v;
+    }
+  }
+  [[nodiscard]] cln::cl_R real() const {
+    if (!exact) return f;
+    if (d == 1) return n;
+    return cln::cl_RA(n) / cln::cl_RA(d);
+  }
+  void reduce() {
+    const cln::cl_I g = cln::gcd(n, d);
+    if (g != 1) {
+      n = cln::exquo(n, g);
+      d = cln::exquo(d, g);
+    }
+  }
+  // Past the bound on bits (in lowest terms)?
+  bool too_large() {
+    if (!exact) return bits_of(f) > max_bits;
+    const auto over = [&] { return cln::integer_length(n) > max_bits || cln::integer_length(d) > max_bits; };
+    if (!over()) return false;
+    reduce();
+    return over();
+  }
+};
+
 std::optional<numeric> Checker::Exact::operator()(const Point& point) const {
   if (nodes_.empty()) return std::nullopt;
   try {
     std::size_t at = 0;
-    if (const auto v = run(at, point)) return numeric(*v);
+    Value v;
+    if (run(at, point, v)) return numeric(v.real());
   } catch (const std::exception&) {
   }
   return std::nullopt;
 }
 
-// The node at `at` and what follows it; `at` moves past them (an early nothing leaves it
-// anywhere: the caller gives up too). Exact rationals as long as the operations allow; a
-// fractional power or a function is evaluated by GiNaC in CLN floats at the current Digits.
-std::optional<cln::cl_R> Checker::Exact::run(std::size_t& at, const Point& point) const {
+// The node at `at` and what follows it into `out`; `at` moves past them (false, for nothing,
+// leaves it anywhere: the caller gives up too). Exact rationals as long as the operations
+// allow; a fractional power or a function is evaluated by GiNaC in CLN floats at the current
+// Digits.
+bool Checker::Exact::run(std::size_t& at, const Point& point, Value& out) const {
   const Node& node = nodes_[at++];
   switch (node.op) {
-    case Op::number: return node.number;
-    case Op::input: return real_of(point[node.index].second);
-    case Op::nothing: return std::nullopt;
+    case Op::number:
+      out.set(node.number);
+      return true;
+    case Op::input: {
+      const auto v = real_of(point[node.index].second);
+      if (!v) return false;
+      out.set(*v);
+      return true;
+    }
+    case Op::nothing: return false;
     case Op::add:
     case Op::mul: {
       const bool sum = node.op == Op::add;
-      cln::cl_R acc = sum ? 0 : 1;
+      out.exact = true;
+      out.n = sum ? 0 : 1;
+      out.d = 1;
+      Value v;
       for (std::size_t i = 0; i < node.n; ++i) {
-        auto v = run(at, point);
-        if (!v) return std::nullopt;
-        acc = sum ? acc + *v : acc * *v;
-        if (bits_of(acc) > max_bits) return std::nullopt;
+        if (!run(at, point, v)) return false;
+        if (out.exact && v.exact) {
+          if (!sum) {
+            out.n = out.n * v.n;
+            out.d = out.d * v.d;
+          } else if (out.d == v.d) {
+            out.n = out.n + v.n;
+          } else {
+            out.n = out.n * v.d + v.n * out.d;
+            out.d = out.d * v.d;
+          }
+        } else if (out.exact || v.exact) {
+          // A float and a fraction: the fraction enters as n and d (CLN would reduce it first).
+          const Value& q = out.exact ? out : v;
+          const cln::cl_R& f = out.exact ? v.f : out.f;
+          const cln::cl_R r = sum ? f * q.d + q.n : f * q.n;
+          out.set(q.d == 1 ? r : r / q.d);
+        } else {
+          out.set(sum ? out.f + v.f : out.f * v.f);
+        }
+        if (out.too_large()) return false;
       }
-      return acc;
+      return true;
     }
     case Op::power: {
-      auto base = run(at, point);
-      if (!base) return std::nullopt;
-      auto expo = run(at, point);
-      if (!expo) return std::nullopt;
-      const bool whole = integral(*expo);
-      if (cln::zerop(*base) && !(whole && cln::plusp(*expo))) return std::nullopt;
-      if (!whole && cln::minusp(*base)) return std::nullopt;  // complex
+      Value b, x;
+      if (!run(at, point, b) || !run(at, point, x)) return false;
+      if (b.exact && x.exact && x.d == 1) {  // a fraction to a whole power (most powers)
+        if (cln::integer_length(x.n) > 62) return false;
+        const long k = cln::cl_I_to_long(x.n);
+        const unsigned long m = static_cast<unsigned long>(k < 0 ? -k : k);
+        if (cln::zerop(b.n)) {
+          if (k <= 0) return false;  // 0^0, or a division by zero
+          out.set(0);
+          return true;
+        }
+        // The result's size in bits is about |k| * log2|base|: bound it before making it.
+        const auto bits = [&] {
+          return static_cast<double>(m) * static_cast<double>(std::max(cln::integer_length(b.n), cln::integer_length(b.d)) + 1);
+        };
+        if (bits() > max_bits) {
+          b.reduce();
+          if (bits() > max_bits) return false;
+        }
+        out.exact = true;
+        if (m == 0) {
+          out.n = 1;
+          out.d = 1;
+        } else if (k > 0) {
+          out.n = cln::expt_pos(b.n, m);
+          out.d = cln::expt_pos(b.d, m);
+        } else {
+          const bool negative = cln::minusp(b.n);
+          out.n = cln::expt_pos(b.d, m);
+          out.d = cln::expt_pos(negative ? cln::cl_I(-b.n) : b.n, m);
+          if (negative && (m & 1)) out.n = -out.n;
+        }
+        return true;
+      }
+      const cln::cl_R base = b.real(), expo = x.real();
+      const bool whole = integral(expo);
+      if (cln::zerop(base) && !(whole && cln::plusp(expo))) return false;
+      if (!whole && cln::minusp(base)) return false;  // complex
       // The result's size in bits is about |expo| * log2|base|: bound it before making it.
-      if (bits_of(*expo) > 62 || std::fabs(cln::double_approx(*expo)) * static_cast<double>(bits_of(*base) + 1) > max_bits)
-        return std::nullopt;
-      if (whole) return cln::expt(*base, cln::the<cln::cl_I>(*expo));
+      if (bits_of(expo) > 62 || std::fabs(cln::double_approx(expo)) * static_cast<double>(bits_of(base) + 1) > max_bits)
+        return false;
+      if (whole) {
+        out.set(cln::expt(base, cln::the<cln::cl_I>(expo)));
+        return true;
+      }
       // A rational power of a rational: exact when the base is a perfect power (sqrt(m^2) at a
       // point), else in floats at the current Digits, as evalf() would make it.
-      if (cln::instanceof(*base, cln::cl_RA_ring) && cln::instanceof(*expo, cln::cl_RA_ring)) {
-        const cln::cl_RA& q = cln::the<cln::cl_RA>(*expo);
+      if (cln::instanceof(base, cln::cl_RA_ring) && cln::instanceof(expo, cln::cl_RA_ring)) {
+        const cln::cl_RA& q = cln::the<cln::cl_RA>(expo);
         cln::cl_RA root;
-        if (cln::rootp(cln::the<cln::cl_RA>(*base), cln::denominator(q), &root)) return cln::expt(root, cln::numerator(q));
+        if (cln::rootp(cln::the<cln::cl_RA>(base), cln::denominator(q), &root)) {
+          out.set(cln::expt(root, cln::numerator(q)));
+          return true;
+        }
       }
-      const cln::cl_N v = cln::expt(cln::cl_N(cln::cl_float(*base, cln::default_float_format)), cln::cl_N(*expo));
-      if (!cln::instanceof(v, cln::cl_R_ring)) return std::nullopt;
-      return cln::the<cln::cl_R>(v);
+      if (expo == cln::cl_RA(1) / 2) {  // a square root (base > 0 here): sqrt, not exp(log(base)/2)
+        out.set(cln::sqrt(cln::cl_float(base, cln::default_float_format)));
+        return true;
+      }
+      const cln::cl_N v = cln::expt(cln::cl_N(cln::cl_float(base, cln::default_float_format)), cln::cl_N(expo));
+      if (!cln::instanceof(v, cln::cl_R_ring)) return false;
+      out.set(cln::the<cln::cl_R>(v));
+      return true;
     }
     case Op::function: {
-      auto arg = run(at, point);
-      if (!arg || bits_of(*arg) > 62) return std::nullopt;  // sin(10^30) says nothing; exp of it is huge
-      if (node.serial == exp_SERIAL::serial && std::fabs(cln::double_approx(*arg)) > 5000) return std::nullopt;
-      const ex v = evalf(function(node.serial, ex(numeric(*arg))));
-      if (!is_exactly<numeric>(v)) return std::nullopt;
-      return real_of(ex_to<numeric>(v));
+      Value a;
+      if (!run(at, point, a)) return false;
+      const cln::cl_R arg = a.real();
+      if (bits_of(arg) > 62) return false;  // sin(10^30) says nothing; exp of it is huge
+      if (node.serial == exp_SERIAL::serial && std::fabs(cln::double_approx(arg)) > 5000) return false;
+      const ex v = evalf(function(node.serial, ex(numeric(arg))));
+      if (!is_exactly<numeric>(v)) return false;
+      const auto r = real_of(ex_to<numeric>(v));
+      if (!r) return false;
+      out.set(*r);
+      return true;
     }
   }
-  return std::nullopt;
+  return false;
 }
 
 Checker::Exact Checker::program(const ex& e) const {
@@ -489,6 +606,11 @@ std::string degrees_as_radians(const std::string& in, std::vector<int>& origin) 
 
 bool Checker::same(const numeric& a, const numeric& b) const {
   if (a.is_rational() && b.is_rational()) return a == b;
+  if (a.is_real() && b.is_real()) {  // in CLN's reals, without GiNaC's numeric objects
+    const cln::cl_R x = cln::the<cln::cl_R>(a.to_cl_N()), y = cln::the<cln::cl_R>(b.to_cl_N());
+    const cln::cl_R scale = cln::max(cln::abs(x), cln::abs(y));
+    return cln::zerop(scale) || cln::abs(x - y) <= scale * cln::the<cln::cl_R>(tolerance_.to_cl_N());
+  }
   const numeric scale = std::max(abs(a), abs(b));
   if (scale.is_zero()) return true;
   return abs(a - b) <= scale * tolerance_;
@@ -781,7 +903,11 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
     // when the expansion stays within the budget.
     bool proved = false;
     const ex expanded = exact_values ? answer : substituted(answer, definitions_);
-    if (!exact_values && expanded_size(expanded) <= static_cast<double>(options_.exact_size_budget) && !over_budget()) {
+    // The closed form itself, as GiNaC writes it: equal by structure, nothing to expand.
+    if (!exact_values && expanded.is_equal(ref.closed_form)) {
+      proved = true;
+    } else if (!exact_values && expanded_size(expanded) <= static_cast<double>(options_.exact_size_budget) &&
+               !over_budget()) {
       try {
         proved = normal(expanded - ref.closed_form).is_zero();
       } catch (const std::exception&) {
@@ -826,27 +952,6 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
 
 void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector<numeric>& values, CheckResult& r) const {
   const std::size_t n = std::min(values.size(), ref.at_points.size());
-  const ex expanded = substituted(answer, definitions_);
-  const Exact answer_at = program(answer);
-  // Does the answer, at points changed by `change`, equal the reference at the points changed
-  // by `change_ref`? (Swapping two parameters or setting one to zero changes the point, not
-  // the expression.)
-  auto matches_at = [&](const std::function<void(Point&)>& change, const std::function<void(Point&)>& change_ref) {
-    for (std::size_t k = 0; k < points_.size(); ++k) {
-      Point pa = points_[k], pr = points_[k];
-      change(pa);
-      change_ref(pr);
-      auto a = answer_at(pa), b = ref.program(pr);
-      if (!a || !b || !same(*a, *b)) return false;
-    }
-    return true;
-  };
-  auto value_of = [](Point& p, const ex& s) -> numeric* {
-    for (auto& [sym, v] : p)
-      if (sym.is_equal(s)) return &v;
-    return nullptr;
-  };
-  const auto keep = [](Point&) {};
   // The sign, or a constant factor (exact when the ratio simplifies to a number).
   bool constant_ratio = n > 0;
   std::optional<numeric> ratio;
@@ -887,6 +992,28 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
       r.findings.push_back({"factor", "off by a factor of " + to_text(c) + " (the answer is " + factor_words(c) + ")"});
     return;
   }
+  // Past the sign and a factor: the answer with the definitions put in, and as a program.
+  const ex expanded = substituted(answer, definitions_);
+  const Exact answer_at = program(answer);
+  // Does the answer, at points changed by `change`, equal the reference at the points changed
+  // by `change_ref`? (Swapping two parameters or setting one to zero changes the point, not
+  // the expression.)
+  auto matches_at = [&](const std::function<void(Point&)>& change, const std::function<void(Point&)>& change_ref) {
+    for (std::size_t k = 0; k < points_.size(); ++k) {
+      Point pa = points_[k], pr = points_[k];
+      change(pa);
+      change_ref(pr);
+      auto a = answer_at(pa), b = ref.program(pr);
+      if (!a || !b || !same(*a, *b)) return false;
+    }
+    return true;
+  };
+  auto value_of = [](Point& p, const ex& s) -> numeric* {
+    for (auto& [sym, v] : p)
+      if (sym.is_equal(s)) return &v;
+    return nullptr;
+  };
+  const auto keep = [](Point&) {};
   // Does the answer equal `other` (an expression in the parameters) at every point?
   auto equals_at_points = [&](const ex& other) {
     if (n == 0) return false;

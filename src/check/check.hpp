@@ -106,9 +106,10 @@ class Checker {
       unsigned serial = 0;    // function
       std::size_t n = 0;      // add, mul: how many operands follow
     };
+    struct Value;  // a fraction kept unreduced, or a float
     std::vector<Node> nodes_;  // in preorder
     void emit(const GiNaC::ex& e, const Point& layout, const GiNaC::exmap& definitions, int depth);
-    std::optional<cln::cl_R> run(std::size_t& at, const Point& point) const;
+    bool run(std::size_t& at, const Point& point, Value& out) const;
   };
   struct Reference {
     std::string name;

@@ -1,5 +1,7 @@
 #include "core/units.hpp"
 
+#include "core/kind.hpp"
+
 #include <cctype>
 #include <map>
 #include <vector>
@@ -250,9 +252,10 @@ std::string with_article(const std::string& noun) {
 std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup& lookup,
                                       std::string& problem) {
   using namespace GiNaC;
-  if (is_a<numeric>(e) || is_a<GiNaC::constant>(e)) return Dimension::none();
-  if (is_a<symbol>(e)) return lookup.dimension_of(ex_to<symbol>(e));
-  if (is_a<add>(e)) {
+  // Class by class-info (is_a<> is a dynamic_cast: a check spent a tenth of its time there).
+  if (is_exactly<numeric>(e) || is_exactly<GiNaC::constant>(e)) return Dimension::none();
+  if (is_exactly<symbol>(e)) return lookup.dimension_of(ex_to<symbol>(e));
+  if (is_exactly<add>(e)) {
     std::optional<Dimension> first;
     for (const auto& term : e) {
       auto d = dimension_of(term, lookup, problem);
@@ -269,7 +272,7 @@ std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup&
     }
     return first;
   }
-  if (is_a<mul>(e)) {
+  if (is_exactly<mul>(e)) {
     Dimension total;
     for (const auto& f : e) {
       auto d = dimension_of(f, lookup, problem);
@@ -278,12 +281,12 @@ std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup&
     }
     return total;
   }
-  if (is_a<power>(e)) {
+  if (is_exactly<power>(e)) {
     auto base = dimension_of(e.op(0), lookup, problem);
     if (!base) return std::nullopt;
     const ex expo = e.op(1);
     if (base->exp == Dimension::none().exp) return Dimension::none();
-    if (is_a<numeric>(expo)) {
+    if (is_exactly<numeric>(expo)) {
       const numeric n = ex_to<numeric>(expo);
       if (n.is_integer()) return base->pow(n.to_int());
       if (n.is_rational()) {

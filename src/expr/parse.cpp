@@ -3,6 +3,7 @@
 #include <cctype>
 
 #include "core/diagnostics.hpp"
+#include "core/kind.hpp"
 #include "expr/trig.hpp"
 
 namespace tackle {
@@ -124,17 +125,24 @@ class Parser {
 
   bool at_op(std::string_view op) const { return peek().kind == Tok::op && peek().text == op; }
 
+  // A sum's terms (and below, a product's factors) are gathered and made into one GiNaC
+  // object at the end: each intermediate sum or product would be evaluated (sorted and
+  // combined) again. A vector is always the only term or factor.
   ex sum() {
-    ex e = product();
+    exvector terms{product()};
     while (at_op("+") || at_op("-")) {
       const bool minus = peek().text == "-";
       const int col = peek().column;
       advance();
       ex rhs = product();
-      if (is_vector(e) != is_vector(rhs)) fail(col, "cannot add a vector and a number");
-      e = is_vector(e) ? combine(e, rhs, minus ? -1 : 1) : (minus ? e - rhs : e + rhs);
+      const bool vector = terms.size() == 1 && is_vector(terms[0]);
+      if (vector != is_vector(rhs)) fail(col, "cannot add a vector and a number");
+      if (vector)
+        terms[0] = combine(terms[0], rhs, minus ? -1 : 1);
+      else
+        terms.push_back(minus ? -rhs : rhs);
     }
-    return e;
+    return terms.size() == 1 ? terms[0] : ex(add(terms));
   }
 
   static ex combine(const ex& u, const ex& v, int sign) {
@@ -143,27 +151,32 @@ class Parser {
   static ex scaled(const ex& v, const ex& f) { return make_vector(v.op(0) * f, v.op(1) * f, v.op(2) * f); }
 
   ex product() {
-    ex e = unary();
+    exvector factors{unary()};
+    const auto value = [&] { return factors.size() == 1 ? factors[0] : ex(mul(factors)); };
     while (true) {
       if (at_op("*") || at_op("/")) {
         const bool divide = peek().text == "/";
         const int col = peek().column;
         advance();
         ex rhs = unary();
-        if (is_vector(rhs) && (divide || is_vector(e)))
+        const bool vector = factors.size() == 1 && is_vector(factors[0]);
+        if (is_vector(rhs) && (divide || vector))
           fail(col, divide ? "cannot divide by a vector" : "cannot multiply two vectors (use cross or inner)");
         if (divide) {
           if (rhs.is_zero()) fail(col, "division by zero");
-          e = is_vector(e) ? scaled(e, 1 / rhs) : e / rhs;
-        } else if (is_vector(e) || is_vector(rhs)) {
-          e = is_vector(e) ? scaled(e, rhs) : scaled(rhs, e);
+          if (vector)
+            factors[0] = scaled(factors[0], 1 / rhs);
+          else
+            factors.push_back(pow(rhs, -1));
+        } else if (vector || is_vector(rhs)) {
+          factors = {vector ? scaled(factors[0], rhs) : scaled(rhs, value())};
         } else {
-          e = e * rhs;
+          factors.push_back(rhs);
         }
       } else if (peek().kind == Tok::number || peek().kind == Tok::name || peek().kind == Tok::lparen) {
         fail(peek().column, "missing '*' before '" + peek().text + "'");
       } else {
-        return e;
+        return value();
       }
     }
   }
@@ -470,7 +483,7 @@ const NameResolver& numbers_only() {
 }
 
 bool is_vector(const ex& e) {
-  return is_a<matrix>(e) && ex_to<matrix>(e).rows() == 3 && ex_to<matrix>(e).cols() == 1;
+  return is_exactly<matrix>(e) && ex_to<matrix>(e).rows() == 3 && ex_to<matrix>(e).cols() == 1;
 }
 
 ex make_vector(const ex& x, const ex& y, const ex& z) { return matrix(3, 1, lst{x, y, z}); }

@@ -1,6 +1,6 @@
 #include "expr/print.hpp"
 
-#include "expr/kind.hpp"
+#include "core/kind.hpp"
 #include "expr/pairs.hpp"
 
 #include <algorithm>

@@ -10,7 +10,7 @@
 #include <cln/integer.h>
 #include <cln/rational.h>
 
-#include "expr/kind.hpp"
+#include "core/kind.hpp"
 #include "expr/pairs.hpp"
 #include "expr/trig.hpp"
 

@@ -7,7 +7,7 @@
 
 #include <ginac/ginac.h>
 
-#include "expr/kind.hpp"
+#include "core/kind.hpp"
 
 namespace tackle {
 

@@ -49,6 +49,29 @@ TEST_CASE("Check: an answer in a turning strand's length is evaluated, as the cl
   CHECK(bead.check("ddot(x)", "k*x*(l_bead_P - l_0)/(l_bead_P*m)").summary == "the sign is wrong");
 }
 
+TEST_CASE("Check: values kept as unreduced fractions are reduced before they are judged too large", "[check][limits]") {
+  // S = h^32 + l^32 + h^16 l^16 + h^8 l^24 + h^24 l^8 and the same sum written so that GiNaC
+  // does not see it: the answer is the closed form times (S/S)^6. S's terms have different
+  // denominators at a point, so S as an unreduced fraction has five times the bits it has in
+  // lowest terms, and its sixth power more than the 8192 allowed; reduced, it is decided.
+  const std::string s = "(h^32+l^32+h^16*l^16+h^8*l^24+h^24*l^8)";
+  const std::string same_s = "((h^16+l^16)*(h^16-l^16)+2*l^32+h^16*l^16+h^8*l^24+h^24*l^8)";
+  const auto r = suitcase().check("N_A", "m*g*(1/2 - mu*h/l)*(" + s + "/" + same_s + ")^6");
+  CHECK(r.verdict == Verdict::correct);
+  CHECK(r.method == "exact rationals");
+  const auto twice = suitcase().check("N_A", "2*m*g*(1/2 - mu*h/l)*(" + s + "/" + same_s + ")^6");
+  CHECK(twice.summary == "off by a factor of 2 (the answer is twice the correct answer)");
+}
+
+TEST_CASE("Check: a fraction to a whole power, zero and negative bases", "[check]") {
+  // The evaluator's own rule for whole powers of fractions: negative powers of negative bases,
+  // the zeroth power, and 0 to a negative power (a division by zero at every point).
+  CHECK(suitcase().check("N_A", "m*g*(1/2 - mu*h/l)*(-h/l)^(-3)*(-h/l)^3").verdict == Verdict::correct);
+  CHECK(suitcase().check("N_A", "m*g*(1/2 - mu*h/l)*(-h/l)^(-3)*(h/l)^3").summary == "the sign is wrong");
+  CHECK(suitcase().check("N_A", "m*g*(1/2 - mu*h/l)*(h - h)^(-1)").verdict != Verdict::correct);
+  CHECK(suitcase().check("N_A", "m*g*(1/2 - mu*h/l)*(mu*h*l - l*h*mu + 1)^0").verdict == Verdict::correct);
+}
+
 TEST_CASE("Check: off by a factor of 2, wrong sign, swapped l and d", "[check]") {
   auto r = board().check("T_HI", "m*a*sqrt(b^2+d^2+e^2)/d");
   CHECK(r.verdict == Verdict::incorrect);
