@@ -2,6 +2,7 @@
 
 #include "core/kind.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 #include <vector>
@@ -255,30 +256,39 @@ std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup&
   // Class by class-info (is_a<> is a dynamic_cast: a check spent a tenth of its time there).
   if (is_exactly<numeric>(e) || is_exactly<GiNaC::constant>(e)) return Dimension::none();
   if (is_exactly<symbol>(e)) return lookup.dimension_of(ex_to<symbol>(e));
-  if (is_exactly<add>(e)) {
-    std::optional<Dimension> first;
-    for (const auto& term : e) {
-      auto d = dimension_of(term, lookup, problem);
-      if (!d) return std::nullopt;
-      if (!first) {
-        first = d;
-      } else if (!(*first == *d)) {
-        // In name order, so that the message does not depend on the order of the terms.
-        std::string x = first->describe(), y = d->describe();
-        if (y < x) std::swap(x, y);
-        problem = "adds " + with_article(x) + " to " + with_article(y);
-        return std::nullopt;
-      }
+  // A sum's terms and a product's factors are all looked at, and what is said does not depend
+  // on their order (GiNaC's order follows hashes of addresses, which differ between runs): the
+  // first problem in text order, else the two dimensions first in name order.
+  const auto parts = [&](std::vector<Dimension>& dims) {
+    std::optional<std::string> first_problem;
+    bool unknown = false;
+    for (const auto& part : e) {
+      std::string p;
+      if (auto d = dimension_of(part, lookup, p)) dims.push_back(*d);
+      else if (p.empty()) unknown = true;
+      else if (!first_problem || p < *first_problem) first_problem = p;
     }
-    return first;
+    if (first_problem) problem = *first_problem;
+    return !first_problem && !unknown;
+  };
+  if (is_exactly<add>(e)) {
+    std::vector<Dimension> dims;
+    if (!parts(dims)) return std::nullopt;
+    if (std::all_of(dims.begin(), dims.end(), [&](const Dimension& d) { return d == dims.front(); }))
+      return dims.front();
+    std::vector<std::string> names;
+    for (const auto& d : dims)
+      if (std::none_of(dims.begin(), dims.begin() + (&d - dims.data()), [&](const Dimension& x) { return x == d; }))
+        names.push_back(d.describe());
+    std::sort(names.begin(), names.end());
+    problem = "adds " + with_article(names[0]) + " to " + with_article(names[1]);
+    return std::nullopt;
   }
   if (is_exactly<mul>(e)) {
+    std::vector<Dimension> dims;
+    if (!parts(dims)) return std::nullopt;
     Dimension total;
-    for (const auto& f : e) {
-      auto d = dimension_of(f, lookup, problem);
-      if (!d) return std::nullopt;
-      total = total * *d;
-    }
+    for (const auto& d : dims) total = total * d;
     return total;
   }
   if (is_exactly<power>(e)) {

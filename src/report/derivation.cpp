@@ -18,7 +18,7 @@ using namespace GiNaC;
 
 namespace {
 
-// The longest sum of five or more parameter terms found in at least two closed forms (as a
+// The longest sum of five or more terms, each a number times a parameter or its reciprocal, found in at least two closed forms (as a
 // whole subexpression), with a name for it that the problem does not use: M for masses,
 // else S. Chosen by size, then by its text: never by GiNaC's order of terms.
 std::optional<std::pair<ex, ex>> shared_sum(const std::vector<Answer>& answers, const SymbolTable& table) {
@@ -33,6 +33,8 @@ std::optional<std::pair<ex, ex>> shared_sum(const std::vector<Answer>& answers, 
     for (std::size_t k = 0; k < s.nops() && parameters; ++k) {
       ex term = s.op(k);
       if (is_a<mul>(term) && term.nops() == 2 && is_a<numeric>(term.op(1))) term = term.op(0);
+      // A parameter's reciprocal too (a compound Atwood machine's 16384/m_1 + ... + 1/m_8).
+      if (is_a<power>(term) && term.op(1).is_equal(-1)) term = term.op(0);
       const SymbolInfo* info = is_a<symbol>(term) ? table.find(term) : nullptr;
       parameters = info && info->role == SymbolRole::parameter;
     }

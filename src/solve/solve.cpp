@@ -259,7 +259,7 @@ std::optional<ex> reciprocal_form(const ex& n, const ex& nd, const ex& best) {
   if (is_exactly<add>(num))
     for (const auto& [x, low] : degrees_of(num).low) content *= pow(x, low);
   const ex r = content * (num / content).expand() / den;
-  if (2 * node_count(r) >= node_count(best)) return std::nullopt;
+  if (3 * node_count(r) >= 2 * node_count(best)) return std::nullopt;
   remember_normal(r, n);
   return r;
 }

@@ -2,8 +2,9 @@
 # Determinism under any memory layout: every command and format of every example (and of
 # every bad description) is run in many separate processes, with address randomisation on
 # (GiNaC's hash order follows the addresses, so it changes from run to run) and under
-# `setarch -R` with environments of different sizes (which move the stack). Each command
-# must give one distinct output (stdout, stderr and exit code) over all its runs.
+# `setarch -R` with environments of different sizes (which move the stack); so is a batch of
+# answer checks. Each command must give one distinct output (stdout, stderr and exit code)
+# over all its runs.
 # Usage: run.sh TACKLE_BINARY SOURCE_DIR [RUNS]   (RUNS: ASLR processes per command, default 20)
 set -uo pipefail
 tackle=$1
@@ -21,6 +22,8 @@ commands+=("key $src/examples/*.yaml --variants 3 --seed 11 --format json")
 commands+=("key $src/examples/*.yaml --variants 2 --seed 5 --format latex")
 commands+=("sheet $src/examples/*.yaml --variants 2 --seed 5 --format html --figures")
 for f in "$src"/tests/data/bad/*.yaml; do commands+=("derive $f"); done
+# Answer checks whose feedback could follow the order of a sum's terms (mixed dimensions).
+commands+=("check $src/examples/sample-12.8-sign-board.yaml --batch $src/tests/determinism/sign-board-answers.jsonl")
 
 pad() { head -c "$1" /dev/zero | tr '\0' x; }
 arch=$(uname -m)

@@ -100,6 +100,20 @@ TEST_CASE("Derivation: a report outlives its analysis, its motion and figures in
   CHECK(html.find("Sketch of the mechanism") != std::string::npos);
 }
 
+namespace {
+// The derivation's step naming a shared sum (if any), and its boxed results by name.
+std::pair<const Step*, std::map<std::string, ex>> named_sum_and_results(const Derivation& d) {
+  const Step* named = nullptr;
+  std::map<std::string, ex> results;
+  for (const auto& st : d.steps)
+    if (st.kind == Step::Kind::equation) {
+      if (st.text == "a name for the sum the closed forms share") named = &st;
+      else if (st.boxed) results[to_text(st.lhs)] = st.rhs;
+    }
+  return {named, results};
+}
+}  // namespace
+
 TEST_CASE("Derivation: a sum the closed forms share is named once (a chain's M = m_1 + ... + m_5)", "[report]") {
   std::string yaml = "title: a chain of five blocks\naxes: [x]\nparameters:\n  F: {unit: N}\n";
   for (int i = 1; i <= 5; ++i) yaml += "  m_" + std::to_string(i) + ": {unit: kg}\n";
@@ -118,21 +132,36 @@ TEST_CASE("Derivation: a sum the closed forms share is named once (a chain's M =
   for (int i = 1; i <= 5; ++i) total += table.find("m_" + std::to_string(i))->sym;
   // By hand: every block accelerates at F/(m_1 + ... + m_5); the string behind block k pulls
   // the k blocks behind it: T_1 = m_1 F/M, T_4 = (m_1 + ... + m_4) F/M.
-  const Step* named = nullptr;
-  std::map<std::string, ex> results;
-  for (const auto& st : d.steps)
-    if (st.kind == Step::Kind::equation) {
-      if (st.text == "a name for the sum the closed forms share") named = &st;
-      else if (st.boxed) results[to_text(st.lhs)] = st.rhs;
-    }
+  const auto [named, results] = named_sum_and_results(d);
   REQUIRE(named);
   CHECK(to_text(named->lhs) == "M");
   CHECK(normal(named->rhs - total).is_zero());
   const ex M = named->lhs;
   REQUIRE(results.count("ddot(x_1)"));
-  CHECK(normal(results["ddot(x_1)"] - F / M).is_zero());
-  CHECK(normal(results["T_1"] - m1 * F / M).is_zero());
-  CHECK(normal(results["T_4"] - (total - table.find("m_5")->sym) * F / M).is_zero());
+  CHECK(normal(results.at("ddot(x_1)") - F / M).is_zero());
+  CHECK(normal(results.at("T_1") - m1 * F / M).is_zero());
+  CHECK(normal(results.at("T_4") - (total - table.find("m_5")->sym) * F / M).is_zero());
   // The answers themselves (JSON, `tackle solve`) stay whole.
   CHECK(normal(*d.answers[0].closed_form - F / total).is_zero());
+}
+
+TEST_CASE("Derivation: a compound Atwood machine's sum of reciprocal masses is named S", "[report]") {
+  const auto a = test::run_text(test::read_example("compound-atwood-8-levels.yaml"));
+  const Derivation d = explain(*a);
+  const SymbolTable& table = *a->model.symbols;
+  const ex g = table.find("g")->sym;
+  std::vector<ex> m{0};
+  for (int i = 1; i <= 9; ++i) m.push_back(table.find("m_" + std::to_string(i))->sym);
+  // By hand (the example's notes): T_8 = 256 g/S with S = 16384/m_1 + 4096/m_2 + ... + 4/m_7
+  // + 1/m_8 + 1/m_9, T_k = 2^(8-k) T_8, ddot(y_k) = 2^(8-k) T_8/m_k - g.
+  ex total = 1 / m[9];
+  for (int k = 1; k <= 8; ++k) total += pow(4, 8 - k) / m[static_cast<std::size_t>(k)];
+  const auto [named, results] = named_sum_and_results(d);
+  REQUIRE(named);
+  CHECK(to_text(named->lhs) == "S");
+  CHECK(normal(named->rhs - total).is_zero());
+  const ex S = named->lhs;
+  CHECK(to_text(results.at("T_1")) == "32768*g/S");
+  CHECK(normal(results.at("T_8") - 256 * g / S).is_zero());
+  CHECK(normal(results.at("ddot(y_3)").subs(S == total) - (pow(2, 5) * 256 * g / (m[3] * total) - g)).is_zero());
 }

@@ -107,6 +107,12 @@ TEST_CASE("Check: dimensions, from the problem's own parameters", "[check]") {
   r = board().check("T_HI", "m*a/d");
   CHECK(r.summary == "this is a stiffness (force per length); a force was expected");
   CHECK(board().check("T_HI", "sqrt(m)*a").summary == "the answer is dimensionally inconsistent: it takes a fractional power of a mass");
+  // Three dimensions in one sum, and two sums with different mixes: what is said does not
+  // follow the order of the terms (which follows addresses, so changed from run to run).
+  CHECK(board().check("T_HI", "m + a + b + d + e").summary ==
+        "the answer is dimensionally inconsistent: it adds an acceleration to a length");
+  CHECK(board().check("T_HI", "m*a*(b + m) + a*(d + a)").summary ==
+        "the answer is dimensionally inconsistent: it adds a length to a mass");
 }
 
 TEST_CASE("Check: invalid answers name what to fix", "[check][invalid]") {
