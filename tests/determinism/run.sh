@@ -22,8 +22,10 @@ commands+=("key $src/examples/*.yaml --variants 3 --seed 11 --format json")
 commands+=("key $src/examples/*.yaml --variants 2 --seed 5 --format latex")
 commands+=("sheet $src/examples/*.yaml --variants 2 --seed 5 --format html --figures")
 for f in "$src"/tests/data/bad/*.yaml; do commands+=("derive $f"); done
-# Answer checks whose feedback could follow the order of a sum's terms (mixed dimensions).
+# Answer checks whose feedback could follow the order of a sum's terms (mixed dimensions,
+# the diagnoses of wrong answers).
 commands+=("check $src/examples/sample-12.8-sign-board.yaml --batch $src/tests/determinism/sign-board-answers.jsonl")
+commands+=("check $src/examples/sample-12.7-suitcase.yaml --batch $src/tests/determinism/suitcase-answers.jsonl")
 
 pad() { head -c "$1" /dev/zero | tr '\0' x; }
 arch=$(uname -m)
