@@ -52,6 +52,18 @@ constexpr unsigned add_prec = 40, mul_prec = 50, pow_prec = 60;
 
 bool latex_ctx(const print_context& c) { return &c.get_class_info() == &tackle_latex::get_class_info_static(); }
 
+// Prints e, a symbol written as GiNaC writes it (its name, or in LaTeX its TeX name) without
+// GiNaC's dispatch, which casts the object and the context on every call (a twentieth of an
+// answer check went there).
+void print_factor(const ex& e, const print_context& c, unsigned level) {
+  if (is_exactly<symbol>(e)) {
+    const symbol& s = ex_to<symbol>(e);
+    c.s << (latex_ctx(c) ? s.get_TeX_name() : s.get_name());
+  } else {
+    e.print(c, level);
+  }
+}
+
 // Prints with a fresh context of the same kind (text or LaTeX) as `like`, into a string.
 // Renders nest (a key needs its factors' keys), so streams are reused from a per-depth pool
 // rather than constructed each time.
@@ -78,7 +90,8 @@ std::string in_context(const print_context& like, Body body) {
 }
 
 std::string render(const ex& e, const print_context& like, unsigned level = 0) {
-  return in_context(like, [&](const print_context& c) { e.print(c, level); });
+  if (is_exactly<symbol>(e)) return latex_ctx(like) ? ex_to<symbol>(e).get_TeX_name() : ex_to<symbol>(e).get_name();
+  return in_context(like, [&](const print_context& c) { print_factor(e, c, level); });
 }
 
 // A product as printed: its sign, numeric coefficient, and the factors above and below the
@@ -460,7 +473,7 @@ void print_product(const numeric& coeff, const std::vector<ex>& factors, const p
   for (const auto& f : factors) {
     // In LaTeX a number directly before a number needs a visible product sign.
     if (!first) os << (latex ? ((is_exactly<numeric>(f)) ? " \\cdot " : " ") : "*");
-    f.print(c, (standalone_parens || !first || factors.size() > 1 || coeff != 1) ? mul_prec : 0);
+    print_factor(f, c, (standalone_parens || !first || factors.size() > 1 || coeff != 1) ? mul_prec : 0);
     first = false;
   }
 }
