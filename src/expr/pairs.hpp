@@ -6,6 +6,8 @@
 // reached through a pointer to member formed in a derived class (which the language allows).
 #pragma once
 
+#include <optional>
+
 #include <ginac/ginac.h>
 
 #include "core/kind.hpp"
@@ -23,5 +25,21 @@ struct Pairs : GiNaC::expairseq {
     return GiNaC::ex_to<GiNaC::numeric>(GiNaC::ex_to<GiNaC::expairseq>(e).*(&Pairs::overall_coeff));
   }
 };
+
+/// num/den made as GiNaC's evaluation would leave it, without evaluating it: evaluating a
+/// product takes, for each sum in it, the sum's integer content (a gcd and an lcm per term),
+/// and GiNaC evaluates a product again each time one is made from it; a chain's 511 closed
+/// forms over m_1 + ... + m_256 spent a tenth of a run there. Made only when num and den are
+/// numbers, symbols, sums and products of them whose evaluation is known to leave them as they
+/// are: each sum with integer coefficients without a common factor, the first one positive
+/// (see primitive_sum), to a whole power, every base once. Nothing otherwise (the caller
+/// divides as usual).
+[[nodiscard]] std::optional<GiNaC::ex> evaluated_quotient(const GiNaC::ex& num, const GiNaC::ex& den);
+
+/// True when `s` is a sum with integer coefficients whose greatest common divisor is 1 and
+/// whose first coefficient (GiNaC's order) is positive: the form GiNaC's evaluation leaves a
+/// sum in, as a factor of a product or the base of a whole power. Decided in machine integers
+/// where the coefficients fit.
+[[nodiscard]] bool primitive_sum(const GiNaC::ex& s);
 
 }  // namespace tackle

@@ -8,6 +8,7 @@
 #include <ginac/ginac.h>
 
 #include "core/kind.hpp"
+#include "expr/pairs.hpp"
 
 namespace tackle {
 
@@ -29,12 +30,22 @@ inline bool is_sin_or_cos(const GiNaC::ex& e) {
   return s == sin_SERIAL::serial || s == cos_SERIAL::serial;
 }
 
-// Walked by op(), the class told by its class-info address: has() with a pattern tries a
-// match at every node, which for a sum over 256 masses was most of simplest()'s time.
+// Walked by structure, the class told by its class-info address: has() with a pattern tries
+// a match at every node, which for a sum over 256 masses was most of simplest()'s time. Sums
+// and products by their stored pairs (op() would make each power of a sum anew).
 inline bool has_trig_node(const GiNaC::ex& e, bool power_only) {
   using namespace GiNaC;
   if (is_exactly<symbol>(e) || is_exactly<numeric>(e)) return false;
   if (power_only ? (is_exactly<power>(e) && is_sin_or_cos(e.op(0))) : is_sin_or_cos(e)) return true;
+  if (is_exactly<add>(e) || is_exactly<mul>(e)) {
+    const bool product = is_exactly<mul>(e);
+    for (const auto& p : Pairs::of(e)) {
+      // A factor sin(x)^2 is kept as the pair (sin(x), 2).
+      if (product && power_only && ex_to<numeric>(p.coeff) != 1 && is_sin_or_cos(p.rest)) return true;
+      if (has_trig_node(p.rest, power_only)) return true;
+    }
+    return false;
+  }
   const std::size_t n = e.nops();
   for (std::size_t i = 0; i < n; ++i)
     if (has_trig_node(e.op(i), power_only)) return true;

@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "expr/pairs.hpp"
 #include "expr/print.hpp"
 #include "expr/rational.hpp"
 
@@ -22,8 +23,8 @@ namespace {
 // whole subexpression), with a name for it that the problem does not use: M for masses,
 // else S. Chosen by size, then by its text: never by GiNaC's order of terms.
 std::optional<std::pair<ex, ex>> shared_sum(const std::vector<Answer>& answers, const SymbolTable& table) {
-  // Each sum is judged once (by hash), and the closed forms are walked by op(): a chain's
-  // closed forms hold the same sum over 256 masses 511 times.
+  // Each sum is judged once (by hash), and the closed forms are walked by structure: a
+  // chain's closed forms hold the same sum over 256 masses 511 times.
   std::unordered_map<ex, bool, ExHash, ex_is_equal> of_parameters;
   std::unordered_map<ex, int, ExHash, ex_is_equal> count;
   std::unordered_set<ex, ExHash, ex_is_equal> seen;
@@ -46,6 +47,11 @@ std::optional<std::pair<ex, ex>> shared_sum(const std::vector<Answer>& answers, 
     if (is_a<add>(e) && e.nops() >= 5 && is_sum_of_parameters(e)) {
       if (seen.insert(e).second) ++count[e];
       return;  // its terms are names (times numbers): no sum inside
+    }
+    // A sum's and a product's stored pairs: op() would make each power of a sum anew.
+    if (is_exactly<add>(e) || is_exactly<mul>(e)) {
+      for (const auto& p : Pairs::of(e)) walk(p.rest);
+      return;
     }
     for (std::size_t i = 0; i < e.nops(); ++i) walk(e.op(i));
   };

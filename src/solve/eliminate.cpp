@@ -1,5 +1,6 @@
 #include "solve/eliminate.hpp"
 
+#include "expr/pairs.hpp"
 #include "expr/trig.hpp"
 
 #include <algorithm>
@@ -248,19 +249,18 @@ std::optional<ex> quick_quotient(const ex& b, const std::vector<std::pair<ex, ex
   if (num.is_zero()) return ex(0);
   std::vector<ex> den = common;
   den.insert(den.end(), pivot_factors.begin(), pivot_factors.end());
-  ex out = 1;
+  ex kept = 1;  // the factors that do not divide the numerator
   for (const ex& g : den) {
     ex q;
-    if (!may_divide(num, g)) {
-      out /= g;
-      continue;
-    }
-    if (divide(num, g, q))
+    if (may_divide(num, g) && divide(num, g, q))
       num = q.expand();
     else
-      out /= g;
+      kept *= g;
   }
-  out *= num;
+  // Made without evaluating where GiNaC's evaluation would leave it as it is (a chain's
+  // values over m_1 + ... + m_256: the sum's integer content, taken at each evaluation).
+  const auto held = evaluated_quotient(num, kept);
+  const ex out = held ? *held : num / kept;
   remember_normal(out, out);
   return out;
 }

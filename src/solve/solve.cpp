@@ -9,6 +9,7 @@
 #include <random>
 
 #include "core/diagnostics.hpp"
+#include "expr/pairs.hpp"
 #include "expr/print.hpp"
 #include "solve/eliminate.hpp"
 
@@ -276,7 +277,9 @@ ex simplest_uncached(const ex& e) {
       if (shorter(t, n)) n = t;
     }
   const ex nd = numer_denom_of_normal(n);
-  const ex best = shorter_form(factored(nd.op(0)) / factored(nd.op(1)), n, large);
+  const ex num = factored(nd.op(0)), den = factored(nd.op(1));
+  const auto held = evaluated_quotient(num, den);  // (see pairs.hpp)
+  const ex best = shorter_form(held ? *held : num / den, n, large);
   if (const auto r = reciprocal_form(n, nd, best)) return *r;
   return best;
 }

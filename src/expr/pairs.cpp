@@ -1,0 +1,93 @@
+#include "expr/pairs.hpp"
+
+#include <numeric>
+#include <unordered_map>
+
+#include "expr/rational.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+
+namespace {
+
+bool primitive_sum_uncached(const ex& s) {
+  const epvector& seq = Pairs::of(s);
+  if (seq.empty() || !ex_to<numeric>(seq.front().coeff).is_pos_integer()) return false;
+  long g = 0;
+  bool big = false;  // a coefficient past a long: its gcd is left to CLN below
+  auto take = [&](const numeric& c) {
+    if (!c.is_integer()) return false;
+    if (g == 1) return true;
+    if (c.is_zero()) return true;
+    if (!big && c.numer().int_length() < 62) g = std::gcd(g, std::labs(c.to_long()));
+    else big = true;
+    return true;
+  };
+  for (const auto& p : seq)
+    if (!take(ex_to<numeric>(p.coeff))) return false;
+  if (!take(Pairs::overall(s))) return false;
+  if (g == 1) return true;
+  if (!big) return false;
+  return s.integer_content() == 1;
+}
+
+// One factor of a product: its base and integer exponent when evaluation leaves it so.
+bool plain_factor(const ex& base, const ex& expo) {
+  if (!is_exactly<numeric>(expo) || !ex_to<numeric>(expo).is_integer() || expo.is_zero()) return false;
+  if (is_exactly<symbol>(base)) return true;
+  return is_exactly<add>(base) && primitive_sum(base);
+}
+
+// The factors of `e` (a number, a symbol, a sum, a power or a product) as pairs with their
+// exponents times `sign`, and its number into `c`; false when some factor is not plain.
+bool gather(const ex& e, int sign, epvector& pairs, numeric& c) {
+  if (is_exactly<numeric>(e)) {
+    if (e.is_zero()) return false;
+    c = c.mul(sign > 0 ? ex_to<numeric>(e) : ex_to<numeric>(e).inverse());
+    return true;
+  }
+  if (is_exactly<mul>(e)) {
+    for (const auto& p : Pairs::of(e)) {
+      if (!plain_factor(p.rest, p.coeff)) return false;
+      pairs.emplace_back(p.rest, sign > 0 ? p.coeff : ex(-ex_to<numeric>(p.coeff)));
+    }
+    const numeric& k = Pairs::overall(e);
+    c = c.mul(sign > 0 ? k : k.inverse());
+    return true;
+  }
+  const bool is_power = is_exactly<power>(e);
+  const ex base = is_power ? e.op(0) : e, expo = is_power ? e.op(1) : ex(1);
+  if (!plain_factor(base, expo)) return false;
+  pairs.emplace_back(base, sign > 0 ? expo : ex(-ex_to<numeric>(expo)));
+  return true;
+}
+
+}  // namespace
+
+bool primitive_sum(const ex& s) {
+  if (!is_exactly<add>(s)) return false;
+  // Remembered: a chain's closed forms share one denominator.
+  thread_local std::unordered_map<ex, bool, ExHash, ex_is_equal> memory;
+  if (auto it = memory.find(s); it != memory.end()) return it->second;
+  const bool out = primitive_sum_uncached(s);
+  if (memory.size() >= 1024) memory.clear();
+  memory.emplace(s, out);
+  return out;
+}
+
+std::optional<ex> evaluated_quotient(const ex& num, const ex& den) {
+  epvector pairs;
+  numeric c = 1;
+  if (!gather(num, 1, pairs, c) || !gather(den, -1, pairs, c)) return std::nullopt;
+  // Every base once (GiNaC would combine two), and at least two of them: a product of one
+  // factor is evaluated to the factor, and a number times a sum to a sum.
+  if (pairs.size() < 2) return std::nullopt;
+  for (std::size_t i = 0; i < pairs.size(); ++i)
+    for (std::size_t j = i + 1; j < pairs.size(); ++j)
+      if (pairs[i].rest.is_equal(pairs[j].rest)) return std::nullopt;
+  // The constructor puts the pairs in GiNaC's order; evaluation would change nothing more.
+  return dynallocate<mul>(std::move(pairs), c).setflag(status_flags::evaluated);
+}
+
+}  // namespace tackle
