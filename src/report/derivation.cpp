@@ -305,7 +305,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   d.minimum_norm = ans.minimum_norm;
   // A long sum that several closed forms share (a chain's m_1 + ... + m_n) is named once,
   // as a person would write it, and the closed forms and conditions below use the name.
-  const auto shared = shared_sum(d.answers, table);
+  // Only the steps show it: without them (`tackle solve`) nothing is named.
+  const auto shared = options.narrate ? shared_sum(d.answers, table) : std::nullopt;
   // By structure, not as a pattern: a pattern is matched at every node (a chain's 511 closed
   // forms over 256 masses spent 0.7 G instructions so).
   exmap naming;
