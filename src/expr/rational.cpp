@@ -374,48 +374,70 @@ std::size_t node_count(const ex& e, std::size_t limit) {
   return n;
 }
 
-Degrees degrees_of(const ex& expanded) {
+namespace {
+
+Degrees degrees_of_uncached(const ex& expanded) {
   // One pass over the terms with the symbols kept by hash (a map per term, ordered by
   // ex_is_less, was most of the time of factoring a chain's closed forms); ordered at the end.
+  // Sums and products by their stored pairs (a term's number has no symbol in it).
   using Powers = std::unordered_map<ex, int, ExHash, ex_is_equal>;
-  auto one = [](const ex& f, Powers& p) {
-    if (is_exactly<symbol>(f)) p[f] += 1;
-    else if (is_exactly<power>(f) && is_exactly<symbol>(f.op(0)) && f.op(1).info(info_flags::nonnegint))
-      p[f.op(0)] += ex_to<numeric>(f.op(1)).to_int();
+  auto one = [](const ex& base, const ex& expo, Powers& p) {
+    if (is_exactly<symbol>(base) && expo.info(info_flags::nonnegint)) p[base] += ex_to<numeric>(expo).to_int();
   };
   auto powers = [&](const ex& term, Powers& p) {
     p.clear();
     if (is_exactly<mul>(term))
-      for (std::size_t i = 0; i < term.nops(); ++i) one(term.op(i), p);
+      for (const auto& f : Pairs::of(term)) one(f.rest, f.coeff, p);
+    else if (is_exactly<power>(term))
+      one(term.op(0), term.op(1), p);
     else
-      one(term, p);
+      one(term, 1, p);
   };
-  const bool sum = is_exactly<add>(expanded);
-  const std::size_t n = sum ? expanded.nops() : 1;
   Powers high, low, p;
-  for (std::size_t i = 0; i < n; ++i) {
-    powers(sum ? expanded.op(i) : expanded, p);
+  bool first = true;
+  auto take = [&](const ex& term) {
+    powers(term, p);
     for (const auto& [x, k] : p) {
       auto [it, inserted] = high.emplace(x, k);
       if (!inserted) it->second = std::max(it->second, k);
     }
-    if (i == 0) {
+    if (first) {
       low = p;
-    } else {
-      for (auto it = low.begin(); it != low.end();) {
-        const auto q = p.find(it->first);
-        if (q == p.end()) {
-          it = low.erase(it);
-        } else {
-          it->second = std::min(it->second, q->second);
-          ++it;
-        }
+      first = false;
+      return;
+    }
+    for (auto it = low.begin(); it != low.end();) {
+      const auto q = p.find(it->first);
+      if (q == p.end()) {
+        it = low.erase(it);
+      } else {
+        it->second = std::min(it->second, q->second);
+        ++it;
       }
     }
+  };
+  if (is_exactly<add>(expanded)) {
+    for (const auto& t : Pairs::of(expanded)) take(t.rest);
+    if (!Pairs::overall(expanded).is_zero()) take(Pairs::overall(expanded));  // a term without symbols
+  } else {
+    take(expanded);
   }
   Degrees d;
   d.high.insert(high.begin(), high.end());
   d.low.insert(low.begin(), low.end());
+  return d;
+}
+
+}  // namespace
+
+// Remembered per thread (the last 1024 polynomials): a chain's closed forms share one
+// denominator, and a numerator's degrees are asked for by each step of its factoring.
+Degrees degrees_of(const ex& expanded) {
+  thread_local std::unordered_map<ex, Degrees, ExHash, ex_is_equal> memory;
+  if (auto it = memory.find(expanded); it != memory.end()) return it->second;
+  Degrees d = degrees_of_uncached(expanded);
+  if (memory.size() >= 1024) memory.clear();
+  memory.emplace(expanded, d);
   return d;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <unordered_map>
+#include <unordered_set>
 #include <set>
 #include <map>
 #include <random>
@@ -26,45 +27,61 @@ std::optional<ex> Solution::value_of(const ex& unknown) const {
 // The sign of an expression when the domains of its symbols decide it: +1, -1, 0 (zero) or
 // nullopt (unknown). Decided structurally (not by GiNaC's info flags, which say nothing of a
 // sum of negative terms), so the answer never depends on the order GiNaC keeps terms in.
+namespace {
+
+// The sign of base^expo from the base's: a power of a positive base is positive, an even power
+// of a negative one too, an odd one negative.
+std::optional<int> sign_of_power(std::optional<int> b, const ex& expo) {
+  if (!b || *b == 0 || !expo.info(info_flags::real)) return std::nullopt;
+  if (*b > 0) return 1;
+  if (expo.info(info_flags::even)) return 1;
+  if (expo.info(info_flags::odd)) return -1;
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<int> sign_of(const ex& e) {
-  if (is_a<numeric>(e)) {
+  if (is_exactly<numeric>(e)) {
     const numeric& n = ex_to<numeric>(e);
     if (!n.is_real()) return std::nullopt;
     return n.is_zero() ? 0 : (n.is_positive() ? 1 : -1);
   }
-  if (is_a<symbol>(e)) {
+  if (is_exactly<symbol>(e)) {
     if (e.info(info_flags::positive)) return 1;
     return std::nullopt;
   }
-  if (is_a<add>(e)) {
+  // Sums and products by their stored pairs: a term is rest times a number, a factor rest to
+  // a number.
+  if (is_exactly<add>(e)) {
     int s = 0;  // the common sign of the nonzero terms so far
-    for (std::size_t i = 0; i < e.nops(); ++i) {
-      const auto t = sign_of(e.op(i));
-      if (!t) return std::nullopt;
-      if (*t == 0) continue;
-      if (s != 0 && *t != s) return std::nullopt;
+    auto take = [&](std::optional<int> t) {
+      if (!t) return false;
+      if (*t == 0) return true;
+      if (s != 0 && *t != s) return false;
       s = *t;
+      return true;
+    };
+    for (const auto& p : Pairs::of(e)) {
+      const auto r = sign_of(p.rest), c = sign_of(p.coeff);
+      if (!take(r && c ? std::optional<int>(*r * *c) : std::nullopt)) return std::nullopt;
     }
+    if (!take(sign_of(Pairs::overall(e)))) return std::nullopt;
     return s == 0 ? std::nullopt : std::optional<int>(s);  // an all-zero sum is not left unevaluated
   }
-  if (is_a<mul>(e)) {
+  if (is_exactly<mul>(e)) {
     int s = 1;
-    for (std::size_t i = 0; i < e.nops(); ++i) {
-      const auto t = sign_of(e.op(i));
+    for (const auto& p : Pairs::of(e)) {
+      const auto r = sign_of(p.rest);
+      const auto t = ex_to<numeric>(p.coeff) == 1 ? r : sign_of_power(r, p.coeff);
       if (!t) return std::nullopt;
       s *= *t;
     }
-    return s;
+    const auto c = sign_of(Pairs::overall(e));
+    if (!c) return std::nullopt;
+    return s * *c;
   }
-  if (is_a<power>(e)) {
-    const auto b = sign_of(e.op(0));
-    const ex& x = e.op(1);
-    if (!b || *b == 0 || !x.info(info_flags::real)) return std::nullopt;
-    if (*b > 0) return 1;
-    if (x.info(info_flags::even)) return 1;
-    if (x.info(info_flags::odd)) return -1;
-    return std::nullopt;
-  }
+  if (is_exactly<power>(e)) return sign_of_power(sign_of(e.op(0)), e.op(1));
   return std::nullopt;
 }
 
@@ -629,8 +646,10 @@ Solution solve(const Model& model, const EquationSystem& s) {
     cc.condition = &c;
     const ex normal_form = normal_remembered(substituted(c.lhs - c.rhs, sol.general));
     cc.expr = simplest(normal_form);
-    // The symbols are gathered once (has() of each symbol would be quadratic per condition).
-    const auto present = symbols_in(normal_form);
+    // The symbols are gathered once (has() of each symbol would be quadratic per condition),
+    // by hash: they are only looked up.
+    const std::vector<ex> symbols = distinct_symbols(normal_form);
+    const std::unordered_set<ex, ExHash, ex_is_equal> present(symbols.begin(), symbols.end());
     for (const auto& f : sol.free) cc.depends_on_free = cc.depends_on_free || present.count(f) != 0;
     // Conditions on unknowns that the chosen equations do not contain are left out.
     bool relevant = true;
