@@ -76,6 +76,23 @@ bool primitive_sum(const ex& s) {
   return out;
 }
 
+bool rational_polynomial(const ex& e) {
+  if (is_exactly<numeric>(e)) return ex_to<numeric>(e).is_rational();
+  if (is_exactly<symbol>(e)) return true;
+  if (is_exactly<add>(e)) {
+    for (const auto& p : Pairs::of(e))
+      if (!ex_to<numeric>(p.coeff).is_rational() || !rational_polynomial(p.rest)) return false;
+    return Pairs::overall(e).is_rational();
+  }
+  if (is_exactly<mul>(e)) {
+    for (const auto& p : Pairs::of(e))
+      if (!ex_to<numeric>(p.coeff).is_nonneg_integer() || !rational_polynomial(p.rest)) return false;
+    return Pairs::overall(e).is_rational();
+  }
+  if (is_exactly<power>(e)) return e.op(1).info(info_flags::nonnegint) && rational_polynomial(e.op(0));
+  return e.info(info_flags::rational_polynomial);
+}
+
 std::optional<ex> evaluated_quotient(const ex& num, const ex& den) {
   epvector pairs;
   numeric c = 1;

@@ -36,6 +36,10 @@ struct Pairs : GiNaC::expairseq {
 /// divides as usual).
 [[nodiscard]] std::optional<GiNaC::ex> evaluated_quotient(const GiNaC::ex& num, const GiNaC::ex& den);
 
+/// e.info(info_flags::rational_polynomial), read from the stored pairs: GiNaC decides it by
+/// making every term and factor anew (a tenth of a chain's elimination went there).
+[[nodiscard]] bool rational_polynomial(const GiNaC::ex& e);
+
 /// True when `s` is a sum with integer coefficients whose greatest common divisor is 1 and
 /// whose first coefficient (GiNaC's order) is positive: the form GiNaC's evaluation leaves a
 /// sum in, as a factor of a product or the base of a whole power. Decided in machine integers

@@ -30,7 +30,7 @@ using Row = std::map<std::size_t, ex>;
 // polynomial with rational coefficients (most entries: m_1 + m_2, 1, -k) is only expanded:
 // normal() would look for a denominator to cancel against.
 ex reduced(const ex& x) {
-  if (x.info(info_flags::rational_polynomial)) return x.expand();
+  if (rational_polynomial(x)) return x.expand();
   const ex n = normal(x);
   if (!n.is_zero() && has_trig(n) && normal(pythagoras(n, true)).is_zero()) return 0;
   return n;
@@ -135,7 +135,7 @@ bool linear_irreducible(const ex& p) {
 
 // A polynomial in symbols with rational coefficients (what divide() takes): no functions,
 // no roots, no floating-point numbers.
-bool is_polynomial_form(const ex& e) { return e.info(info_flags::rational_polynomial); }
+bool is_polynomial_form(const ex& e) { return rational_polynomial(e); }
 
 // The irreducible factors of a denominator (each to the first power), and its numeric
 // coefficient; nothing when some factor is not known to be irreducible.
@@ -239,7 +239,7 @@ std::optional<ex> quick_quotient(const ex& b, const std::vector<std::pair<ex, ex
     if (!f) return std::nullopt;
     for (const ex& g : f->second)
       if (!holds(common, g)) common.push_back(g);
-    parts.push_back({v * nd.op(0) / f->first, f->second});
+    parts.push_back({f->first == 1 ? v * nd.op(0) : v * nd.op(0) / f->first, f->second});
   }
   numeric c = 1;
   std::vector<ex> pivot_factors;
@@ -262,7 +262,7 @@ std::optional<ex> quick_quotient(const ex& b, const std::vector<std::pair<ex, ex
   };
   ex num = over_common(b, {});
   for (const auto& p : parts) num -= over_common(p.numerator, p.factors);
-  num = num / c;
+  if (c != 1) num = num / c;
   if (!expanded_polynomial(num)) num = num.expand();
   if (num.is_zero()) return ex(0);
   std::vector<ex> den = common;

@@ -85,3 +85,15 @@ TEST_CASE("Trig: a power of a sin or a cos found through a product's pairs", "[p
   CHECK(has_trig_power(m + pow(cos(x), 3)));
   CHECK_FALSE(has_trig(m / (m + 1)));
 }
+
+TEST_CASE("Rational polynomial: read from the pairs, as GiNaC's info flag says", "[pairs]") {
+  const symbol a("a"), b("b"), c("c");
+  const std::vector<ex> cases = {a, ex(3), numeric(1, 2), a + b, 2 * a * b + numeric(1, 3), pow(a + b, 2) * c,
+                                 (a + b) / 2, a / b, pow(a, -2) + b, sqrt(a) + b, sin(a) * b, a * sqrt(ex(2)),
+                                 pow(a + 1, 3) - pow(b, 4) * c + 7, ex(numeric(2).power_dyn(numeric(1, 2))) * a,
+                                 Pi * a, numeric(1.5) * a, pow(a + b, numeric(1, 2))};
+  for (const ex& e : cases) {
+    INFO(e);
+    CHECK(rational_polynomial(e) == e.info(info_flags::rational_polynomial));
+  }
+}
