@@ -329,12 +329,13 @@ void add_loads(BuildContext& ctx, Instance& in) {
       in.scope.bind("length", path->length);
       in.scope.bind("lengthening", time_derivative(path->length, ctx.m.bodies, ctx.m.lengths, ctx.m.time));
       // ... and its length where every coordinate is 0 (a spring's stretch is stated there).
-      exmap origin;
-      for (const auto& b : ctx.m.bodies)
-        if (!b.coord.is_zero()) origin[b.coord] = 0;
+      const exmap& coordinates = ctx.coordinates_at_zero();
+      exmap lengths;  // the turning strands' lengths there
       for (const auto& t : ctx.m.lengths)
-        if (path->length.has(t.symbol)) origin[t.symbol] = sqrt(substituted(t.squared, origin));
-      in.scope.bind("origin_length", substituted(path->length, origin));
+        if (path->length.has(t.symbol)) lengths[t.symbol] = sqrt(substituted(t.squared, coordinates));
+      ex origin_length = substituted(path->length, coordinates);
+      if (!lengths.empty()) origin_length = substituted(origin_length, lengths);
+      in.scope.bind("origin_length", origin_length);
       auto tension = rule_expr(ctx, in, l.expr, l.at);
       if (!tension) continue;
       for (auto& load : tension_loads(*path, ctx.m.points, *tension, label)) ctx.m.loads.push_back(std::move(load));

@@ -94,6 +94,11 @@ struct BuildContext {
   // Points some path runs over (neither end): the first connection to do so, for messages.
   std::map<int, std::pair<std::string, Location>> interior_points;
   bool connection_failed = false;  // some connection's arguments could not be read
+  // Every body's coordinate mapped to 0 (made once for all connections, and again if bodies
+  // were added since: a map per connection was quadratic in the bodies).
+  const GiNaC::exmap& coordinates_at_zero();
+  GiNaC::exmap coordinates_at_zero_;
+  std::size_t coordinates_at_zero_bodies_ = 0;
 
   bool claim(const Text& name, const std::string& what) { return claim_in(names_in_use, name, what); }
   bool claim_place(const Text& name, const std::string& what) { return claim_in(places_in_use, name, what); }
