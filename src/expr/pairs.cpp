@@ -93,6 +93,21 @@ bool rational_polynomial(const ex& e) {
   return e.info(info_flags::rational_polynomial);
 }
 
+bool expanded_polynomial(const ex& e) {
+  const auto monomial = [](const ex& t) {
+    if (is_exactly<symbol>(t) || is_exactly<numeric>(t)) return true;
+    if (is_exactly<power>(t)) return is_exactly<symbol>(t.op(0)) && t.op(1).info(info_flags::posint);
+    if (!is_exactly<mul>(t)) return false;
+    for (const auto& p : Pairs::of(t))
+      if (!is_exactly<symbol>(p.rest) || !ex_to<numeric>(p.coeff).is_pos_integer()) return false;
+    return true;
+  };
+  if (!is_exactly<add>(e)) return monomial(e);
+  for (const auto& p : Pairs::of(e))
+    if (!monomial(p.rest)) return false;
+  return true;
+}
+
 std::optional<ex> evaluated_quotient(const ex& num, const ex& den) {
   epvector pairs;
   numeric c = 1;

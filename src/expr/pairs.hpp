@@ -40,6 +40,10 @@ struct Pairs : GiNaC::expairseq {
 /// making every term and factor anew (a tenth of a chain's elimination went there).
 [[nodiscard]] bool rational_polynomial(const GiNaC::ex& e);
 
+/// True when `e` is a symbol, a number, a product of powers of symbols, or a sum of such
+/// terms: expand() would give it back (walking every term, and making each product anew).
+[[nodiscard]] bool expanded_polynomial(const GiNaC::ex& e);
+
 /// True when `s` is a sum with integer coefficients whose greatest common divisor is 1 and
 /// whose first coefficient (GiNaC's order) is positive: the form GiNaC's evaluation leaves a
 /// sum in, as a factor of a product or the base of a whole power. Decided in machine integers

@@ -196,23 +196,6 @@ bool may_divide(const ex& p, const ex& g) {
   return at.kind != RationalAt::Kind::value || at.value == 0;
 }
 
-// True when `e` is a symbol, a product of powers of symbols, or a sum of such terms: expand()
-// would give it back (walking every term, and making each product anew).
-bool expanded_polynomial(const ex& e) {
-  const auto monomial = [](const ex& t) {
-    if (is_exactly<symbol>(t) || is_exactly<numeric>(t)) return true;
-    if (is_exactly<power>(t)) return is_exactly<symbol>(t.op(0)) && t.op(1).info(info_flags::posint);
-    if (!is_exactly<mul>(t)) return false;
-    for (const auto& p : Pairs::of(t))
-      if (!is_exactly<symbol>(p.rest) || !ex_to<numeric>(p.coeff).is_pos_integer()) return false;
-    return true;
-  };
-  if (!is_exactly<add>(e)) return monomial(e);
-  for (const auto& p : Pairs::of(e))
-    if (!monomial(p.rest)) return false;
-  return true;
-}
-
 // (b - sum of v x) / pivot in normal form without a gcd, in the common case of a chain or a
 // cascade: b and each v polynomials, the pivot a number or a product of irreducible
 // polynomials, and every x a polynomial or a fraction whose denominator is such a product

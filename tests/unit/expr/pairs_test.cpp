@@ -97,3 +97,15 @@ TEST_CASE("Rational polynomial: read from the pairs, as GiNaC's info flag says",
     CHECK(rational_polynomial(e) == e.info(info_flags::rational_polynomial));
   }
 }
+
+TEST_CASE("Expanded polynomial: recognised only where expand() would give it back", "[pairs]") {
+  const symbol a("a"), b("b"), c("c");
+  const std::vector<std::pair<ex, bool>> cases = {
+      {a, true}, {ex(3), true}, {a * b + 2 * c, true}, {pow(a, 3) * b - 5, true}, {a * b * c + a + numeric(1, 2), true},
+      {(a + b) * c, false}, {pow(a + b, 2), false}, {a / b + c, false}, {sqrt(a) + b, false}, {sin(a) * b, false}};
+  for (const auto& [e, expected] : cases) {
+    INFO(e);
+    CHECK(expanded_polynomial(e) == expected);
+    if (expanded_polynomial(e)) CHECK(e.expand().is_equal(e));
+  }
+}
