@@ -277,9 +277,9 @@ std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup&
     if (std::all_of(dims.begin(), dims.end(), [&](const Dimension& d) { return d == dims.front(); }))
       return dims.front();
     std::vector<std::string> names;
-    for (const auto& d : dims)
-      if (std::none_of(dims.begin(), dims.begin() + (&d - dims.data()), [&](const Dimension& x) { return x == d; }))
-        names.push_back(d.describe());
+    for (std::size_t i = 0; i < dims.size(); ++i)  // each distinct dimension once
+      if (std::none_of(dims.begin(), dims.begin() + static_cast<std::ptrdiff_t>(i), [&](const Dimension& x) { return x == dims[i]; }))
+        names.push_back(dims[i].describe());
     std::sort(names.begin(), names.end());
     problem = "adds " + with_article(names[0]) + " to " + with_article(names[1]);
     return std::nullopt;

@@ -68,12 +68,8 @@ bool gather(const ex& e, int sign, epvector& pairs, numeric& c) {
 bool primitive_sum(const ex& s) {
   if (!is_exactly<add>(s)) return false;
   // Remembered: a chain's closed forms share one denominator.
-  thread_local std::unordered_map<ex, bool, ExHash, ex_is_equal> memory;
-  if (auto it = memory.find(s); it != memory.end()) return it->second;
-  const bool out = primitive_sum_uncached(s);
-  if (memory.size() >= 1024) memory.clear();
-  memory.emplace(s, out);
-  return out;
+  thread_local ExMemory<bool> memory;
+  return remembered(memory, s, 1024, [&] { return primitive_sum_uncached(s); });
 }
 
 bool rational_polynomial(const ex& e) {

@@ -166,7 +166,6 @@ numeric drawn_value(const std::string& name, std::uint64_t seed) {
   return numeric(static_cast<long>(1 + (h & ((std::uint64_t{1} << 40) - 1))));
 }
 
-
 namespace {
 
 using u64 = std::uint64_t;
@@ -315,7 +314,6 @@ void count_nodes(const ex& e, std::size_t limit, std::size_t& n) {
   for (std::size_t i = 0; i < k && n < limit; ++i) count_nodes(e.op(i), limit, n);
 }
 
-
 }  // namespace
 
 std::vector<ex> distinct_symbols(const ex& e) {
@@ -433,12 +431,8 @@ Degrees degrees_of_uncached(const ex& expanded) {
 // Remembered per thread (the last 1024 polynomials): a chain's closed forms share one
 // denominator, and a numerator's degrees are asked for by each step of its factoring.
 Degrees degrees_of(const ex& expanded) {
-  thread_local std::unordered_map<ex, Degrees, ExHash, ex_is_equal> memory;
-  if (auto it = memory.find(expanded); it != memory.end()) return it->second;
-  Degrees d = degrees_of_uncached(expanded);
-  if (memory.size() >= 1024) memory.clear();
-  memory.emplace(expanded, d);
-  return d;
+  thread_local ExMemory<Degrees> memory;
+  return remembered(memory, expanded, 1024, [&] { return degrees_of_uncached(expanded); });
 }
 
 bool linear_and_coprime(const ex& expanded) {

@@ -46,6 +46,22 @@ struct ExHash {
   std::size_t operator()(const GiNaC::ex& x) const { return x.gethash(); }
 };
 using RationalPoint = std::unordered_map<GiNaC::ex, GiNaC::numeric, ExHash, GiNaC::ex_is_equal>;
+
+/// A memory of values by expression (by hash), for remembered().
+template <class Value>
+using ExMemory = std::unordered_map<GiNaC::ex, Value, ExHash, GiNaC::ex_is_equal>;
+
+/// The value for `key` in `memory`, else `compute()` put there; past `limit` entries the
+/// memory forgets everything. Each caller keeps its memory thread_local; equal keys always
+/// give equal values, so what is remembered changes no output.
+template <class Value, class Compute>
+Value remembered(ExMemory<Value>& memory, const GiNaC::ex& key, std::size_t limit, Compute compute) {
+  if (auto it = memory.find(key); it != memory.end()) return it->second;
+  Value v = compute();
+  if (memory.size() >= limit) memory.clear();
+  memory.emplace(key, v);
+  return v;
+}
 [[nodiscard]] RationalAt rational_at(const GiNaC::ex& e, const RationalPoint& point);
 
 /// The value drawn for a symbol of this name with this seed: an integer from 1 to 2^40 made

@@ -19,9 +19,9 @@ using namespace GiNaC;
 
 namespace {
 
-// The longest sum of five or more terms, each a number times a parameter or its reciprocal, found in at least two closed forms (as a
-// whole subexpression), with a name for it that the problem does not use: M for masses,
-// else S. Chosen by size, then by its text: never by GiNaC's order of terms.
+// The longest sum of five or more terms, each a number times a parameter or its reciprocal,
+// found in at least two closed forms (as a whole subexpression), with a name for it that the
+// problem does not use: M for masses, else S. Chosen by size, then by its text: never by GiNaC's order of terms.
 std::optional<std::pair<ex, ex>> shared_sum(const std::vector<Answer>& answers, const SymbolTable& table) {
   // Each sum is judged once (by hash), and the closed forms are walked by structure: a
   // chain's closed forms hold the same sum over 256 masses 511 times.
@@ -30,13 +30,14 @@ std::optional<std::pair<ex, ex>> shared_sum(const std::vector<Answer>& answers, 
   std::unordered_set<ex, ExHash, ex_is_equal> seen;
   auto is_sum_of_parameters = [&](const ex& s) {
     if (auto it = of_parameters.find(s); it != of_parameters.end()) return it->second;
-    bool parameters = true;
-    for (std::size_t k = 0; k < s.nops() && parameters; ++k) {
-      ex term = s.op(k);
-      if (is_a<mul>(term) && term.nops() == 2 && is_a<numeric>(term.op(1))) term = term.op(0);
-      // A parameter's reciprocal too (a compound Atwood machine's 16384/m_1 + ... + 1/m_8).
-      if (is_a<power>(term) && term.op(1).is_equal(-1)) term = term.op(0);
-      const SymbolInfo* info = is_a<symbol>(term) ? table.find(term) : nullptr;
+    // Each term a number times a parameter, or its reciprocal (a compound Atwood machine's
+    // 16384/m_1 + ... + 1/m_9), and no number alone.
+    bool parameters = Pairs::overall(s).is_zero();
+    for (const auto& p : Pairs::of(s)) {
+      if (!parameters) break;
+      ex term = p.rest;
+      if (is_exactly<power>(term) && term.op(1).is_equal(-1)) term = term.op(0);
+      const SymbolInfo* info = is_exactly<symbol>(term) ? table.find(term) : nullptr;
       parameters = info && info->role == SymbolRole::parameter;
     }
     of_parameters.emplace(s, parameters);

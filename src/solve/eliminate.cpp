@@ -125,12 +125,8 @@ std::optional<Pivot> choose(const Work& w, const std::vector<bool>& eliminated, 
 // Whether a polynomial is irreducible by linear_and_coprime, remembered: a chain's values
 // share one denominator.
 bool linear_irreducible(const ex& p) {
-  thread_local std::unordered_map<ex, bool, ExHash, ex_is_equal> memory;
-  if (auto it = memory.find(p); it != memory.end()) return it->second;
-  const bool out = linear_and_coprime(p);
-  if (memory.size() >= 1024) memory.clear();
-  memory.emplace(p, out);
-  return out;
+  thread_local ExMemory<bool> memory;
+  return remembered(memory, p, 1024, [&] { return linear_and_coprime(p); });
 }
 
 // A polynomial in symbols with rational coefficients (what divide() takes): no functions,
@@ -174,24 +170,21 @@ bool may_divide(const ex& p, const ex& g) {
     ex x;
     std::uint64_t value;
   };
-  thread_local std::unordered_map<ex, std::optional<Root>, ExHash, ex_is_equal> roots;
-  auto it = roots.find(g);
-  if (it == roots.end()) {
-    std::optional<Root> root;
+  thread_local ExMemory<std::optional<Root>> roots;
+  const std::optional<Root> root = remembered(roots, g, 1024, [&]() -> std::optional<Root> {
     for (const ex& x : symbols_in(g)) {
       if (g.degree(x) != 1) continue;
       ModularPoint point(seed);
       const ModularAt a = modular_at(g.coeff(x, 1), point), b = modular_at(g.coeff(x, 0), point);
       if (a.kind == RationalAt::Kind::value && b.kind == RationalAt::Kind::value && a.value != 0)
-        root = Root{x, modular_quotient(modular_negated(b.value), a.value)};
+        return Root{x, modular_quotient(modular_negated(b.value), a.value)};
       break;
     }
-    if (roots.size() >= 1024) roots.clear();
-    it = roots.emplace(g, root).first;
-  }
-  if (!it->second) return true;
+    return std::nullopt;
+  });
+  if (!root) return true;
   ModularPoint point(seed);
-  point.values.emplace(it->second->x, it->second->value);
+  point.values.emplace(root->x, root->value);
   const ModularAt at = modular_at(p, point);
   return at.kind != RationalAt::Kind::value || at.value == 0;
 }

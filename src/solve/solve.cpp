@@ -24,9 +24,6 @@ std::optional<ex> Solution::value_of(const ex& unknown) const {
   return std::nullopt;
 }
 
-// The sign of an expression when the domains of its symbols decide it: +1, -1, 0 (zero) or
-// nullopt (unknown). Decided structurally (not by GiNaC's info flags, which say nothing of a
-// sum of negative terms), so the answer never depends on the order GiNaC keeps terms in.
 namespace {
 
 // The sign of base^expo from the base's: a power of a positive base is positive, an even power
@@ -41,6 +38,9 @@ std::optional<int> sign_of_power(std::optional<int> b, const ex& expo) {
 
 }  // namespace
 
+// The sign of an expression when the domains of its symbols decide it: +1, -1, 0 (zero) or
+// nullopt (unknown). Decided structurally (not by GiNaC's info flags, which say nothing of a
+// sum of negative terms), so the answer never depends on the order GiNaC keeps terms in.
 std::optional<int> sign_of(const ex& e) {
   if (is_exactly<numeric>(e)) {
     const numeric& n = ex_to<numeric>(e);
@@ -202,12 +202,8 @@ std::vector<ex> canonical_factors_uncached(const ex& polynomial) {
 // denominator are factored again after simplest() factored them, and a chain's 255 tensions
 // share one denominator. Equal polynomials give equal factors, so nothing printed changes.
 std::vector<ex> canonical_factors(const ex& polynomial) {
-  thread_local std::unordered_map<ex, std::vector<ex>, ExHash, ex_is_equal> memory;
-  if (auto it = memory.find(polynomial); it != memory.end()) return it->second;
-  std::vector<ex> out = canonical_factors_uncached(polynomial);
-  if (memory.size() >= 4096) memory.clear();
-  memory.emplace(polynomial, out);
-  return out;
+  thread_local ExMemory<std::vector<ex>> memory;
+  return remembered(memory, polynomial, 4096, [&] { return canonical_factors_uncached(polynomial); });
 }
 
 namespace {
@@ -217,13 +213,12 @@ namespace {
 // memory is per thread and forgets everything past 4096 polynomials; an equal polynomial
 // always gives an equal product, so what is remembered changes no output.
 ex factored(const ex& polynomial) {
-  thread_local std::unordered_map<ex, ex, ExHash, ex_is_equal> memory;
-  if (auto it = memory.find(polynomial); it != memory.end()) return it->second;
-  ex out = 1;
-  for (const ex& x : canonical_factors(polynomial)) out *= x;
-  if (memory.size() >= 4096) memory.clear();
-  memory.emplace(polynomial, out);
-  return out;
+  thread_local ExMemory<ex> memory;
+  return remembered(memory, polynomial, 4096, [&] {
+    ex out = 1;
+    for (const ex& x : canonical_factors(polynomial)) out *= x;
+    return out;
+  });
 }
 
 }  // namespace
@@ -251,8 +246,8 @@ ex simplest_uncached(const ex& e);
 // the product, each term is a number over one mass, and the closed form grows like the
 // number of levels instead of its square. Tried only for that shape (three or more symbols
 // of degree 1 in the denominator, each of its terms holding all of them but one at most),
-// made by expand() alone (no gcd), and kept only when it has fewer than half the nodes of
-// `best`: textbook problems keep their forms.
+// made by expand() alone (no gcd), and kept only when it takes a third of the nodes of
+// `best` off: textbook problems keep their forms.
 std::optional<ex> reciprocal_form(const ex& n, const ex& nd, const ex& best) {
   constexpr std::size_t min_nodes = 80;
   if (node_count(best, min_nodes) < min_nodes) return std::nullopt;
@@ -273,10 +268,7 @@ std::optional<ex> reciprocal_form(const ex& n, const ex& nd, const ex& best) {
   const ex over = pow(product, -1);
   const ex num = (nd.op(0) * over).expand(), den = (d * over).expand();
   // The numerator's common monomial and integer content taken out (g, 524288 g).
-  ex content = is_exactly<add>(num) ? ex(num.integer_content()) : ex(1);
-  if (is_exactly<add>(num))
-    for (const auto& [x, low] : degrees_of(num).low) content *= pow(x, low);
-  const ex r = content * (num / content).expand() / den;
+  const ex r = content_only(num) / den;
   if (3 * node_count(r) >= 2 * node_count(best)) return std::nullopt;
   remember_normal(r, n);
   return r;
