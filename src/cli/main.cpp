@@ -1,7 +1,9 @@
 // The tackle command: a thin shell over the library. Exit codes: 0 ok, 1 input error,
 // 2 usage error, 3 internal error.
+#include <functional>
 #include <iostream>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
@@ -98,12 +100,15 @@ const tackle::Analysis* the_phase(const tackle::Analysis& whole, const Options& 
 // derive and solve: every phase of a phased description, unless --phase names one.
 int run_report(const Options& o, const tackle::RuleSet& rules, bool full) {
   const auto whole = tackle::analyze_file(o.file, rules);
-  const tackle::ReportOptions options{.digits = o.digits, .narrate = full};  // solve prints no steps, figures or plots
+  // solve prints no steps, figures or plots; text and JSON show no figures.
+  const tackle::Format format = formats.at(o.format);
+  const tackle::ReportOptions options{.digits = o.digits, .narrate = full,
+                                      .figures = format != tackle::Format::text && format != tackle::Format::json};
   if (o.phase.empty() && !whole->phases.empty())
-    return emit(tackle::write(tackle::explain_phases(*whole, options), formats.at(o.format), full), o.out);
+    return emit(tackle::write(tackle::explain_phases(*whole, options), format, full), o.out);
   const tackle::Analysis* analysis = the_phase(*whole, o);
   if (!analysis) return 2;
-  return emit(tackle::write(tackle::explain(*analysis, options), formats.at(o.format), full), o.out);
+  return emit(tackle::write(tackle::explain(*analysis, options), format, full), o.out);
 }
 
 // The files of key and sheet: each analyzed (every problem of every file reported at once),
@@ -319,6 +324,21 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
   return emit(o.format == "json" ? tackle::result_json(result, o.answer) : tackle::result_text(result), o.out);
 }
 
+// The subcommand a command line asks for: the first argument that is not an option (nor the
+// value of --rules, the one option before it that takes a value), or "" when there is none.
+std::string asked_subcommand(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--rules") {
+      ++i;
+      continue;
+    }
+    if (!arg.empty() && arg[0] == '-') continue;
+    return arg;
+  }
+  return {};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -338,99 +358,116 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"text", "latex", "markdown", "json", "html"}))
         ->capture_default_str();
     sub->add_option("-o,--output", o.out, "Write to this file instead of standard output");
+  };
+  // Every subcommand is made, but only the one asked for gets its options (all of them when
+  // none is named, as for --help): making them all was a third of a short run's start-up.
+  const std::string asked = asked_subcommand(argc, argv);
+  const std::set<std::string> names{"derive", "solve", "isolate", "key", "sheet", "sweep", "simulate", "check"};
+  auto add = [&](const std::string& name, const std::string& description, const std::function<void(CLI::App*)>& define) {
+    CLI::App* sub = app.add_subcommand(name, description);
+    if (names.count(asked) == 0 || asked == name) define(sub);
     return sub;
   };
-  auto* derive = with_common_options(
-      app.add_subcommand("derive", "Print the derivation: FBD equations, constraints, solve, results"));
-  with_common_options(app.add_subcommand("solve", "Print the answers only: closed forms and numbers"));
+  auto* derive = add("derive", "Print the derivation: FBD equations, constraints, solve, results", with_common_options);
+  add("solve", "Print the answers only: closed forms and numbers", with_common_options);
 
-  auto* isolate = app.add_subcommand("isolate", "Find one balance equation (LMB along a direction, AMB about a point "
-                                                "and axis) that contains an unknown alone");
-  isolate->add_option("file", o.file, "Problem description (YAML)")->required();
-  auto* target_opt = isolate->add_option("unknown", o.target, "The unknown, e.g. T_HI");
-  auto* all_opt = isolate->add_flag("--all", o.all, "Report for every unknown whether one equation gives it");
-  target_opt->excludes(all_opt);
-  isolate->add_option("--format", o.format, "Output format")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
-  isolate->add_option("-o,--output", o.out, "Write to this file instead of standard output");
-  with_phase(isolate);
+  auto* isolate = add("isolate", "Find one balance equation (LMB along a direction, AMB about a point "
+                                 "and axis) that contains an unknown alone",
+                      [&](CLI::App* isolate) {
+    isolate->add_option("file", o.file, "Problem description (YAML)")->required();
+    auto* target_opt = isolate->add_option("unknown", o.target, "The unknown, e.g. T_HI");
+    auto* all_opt = isolate->add_flag("--all", o.all, "Report for every unknown whether one equation gives it");
+    target_opt->excludes(all_opt);
+    isolate->add_option("--format", o.format, "Output format")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
+    isolate->add_option("-o,--output", o.out, "Write to this file instead of standard output");
+    with_phase(isolate);
+  });
 
-  auto* key = app.add_subcommand("key", "An answer key for one or more problems, with numeric variants if asked");
-  key->add_option("files", o.key_files, "Problem descriptions (YAML)")->required();
-  key->add_option("--format", o.key_format, "Output format")
-      ->check(CLI::IsMember({"latex", "markdown", "json", "html"}))
-      ->capture_default_str();
-  key->add_option("--variants", o.variants, "Numeric variants per problem, drawn from the parameters' 'range'")
-      ->check(CLI::Range(0, 10000));
-  key->add_option("--seed", o.seed, "Seed for the variants (the same seed gives the same variants)")->capture_default_str();
-  key->add_option("--digits", o.digits, "Significant digits of the numbers")->check(CLI::Range(1, 1000));
-  key->add_option("-o,--output", o.out, "Write to this file instead of standard output");
+  auto* key = add("key", "An answer key for one or more problems, with numeric variants if asked", [&](CLI::App* key) {
+    key->add_option("files", o.key_files, "Problem descriptions (YAML)")->required();
+    key->add_option("--format", o.key_format, "Output format")
+        ->check(CLI::IsMember({"latex", "markdown", "json", "html"}))
+        ->capture_default_str();
+    key->add_option("--variants", o.variants, "Numeric variants per problem, drawn from the parameters' 'range'")
+        ->check(CLI::Range(0, 10000));
+    key->add_option("--seed", o.seed, "Seed for the variants (the same seed gives the same variants)")->capture_default_str();
+    key->add_option("--digits", o.digits, "Significant digits of the numbers")->check(CLI::Range(1, 1000));
+    key->add_option("-o,--output", o.out, "Write to this file instead of standard output");
+  });
 
-  auto* sheet = app.add_subcommand("sheet", "Problem sheets: each problem's statement with its numbers, per variant "
-                                            "(the same numbers as key with the same seed)");
-  sheet->add_option("files", o.key_files, "Problem descriptions (YAML)")->required();
-  sheet->add_option("--format", o.key_format, "Output format")->check(CLI::IsMember({"latex", "markdown", "html"}))->capture_default_str();
-  sheet->add_flag("--figures", o.figures, "Also draw each problem's free body diagrams under its statement (a 1-D mechanism's sketch is always drawn)");
-  sheet->add_option("--variants", o.variants, "Numeric variants per problem, drawn from the parameters' 'range'")
-      ->check(CLI::Range(0, 10000));
-  sheet->add_option("--seed", o.seed, "Seed for the variants (as for key)")->capture_default_str();
-  sheet->add_option("--digits", o.digits, "Significant digits of the numbers")->check(CLI::Range(1, 1000));
-  sheet->add_option("-o,--output", o.out, "Write to this file instead of standard output");
+  auto* sheet = add("sheet", "Problem sheets: each problem's statement with its numbers, per variant "
+                             "(the same numbers as key with the same seed)",
+                    [&](CLI::App* sheet) {
+    sheet->add_option("files", o.key_files, "Problem descriptions (YAML)")->required();
+    sheet->add_option("--format", o.key_format, "Output format")->check(CLI::IsMember({"latex", "markdown", "html"}))->capture_default_str();
+    sheet->add_flag("--figures", o.figures, "Also draw each problem's free body diagrams under its statement (a 1-D mechanism's sketch is always drawn)");
+    sheet->add_option("--variants", o.variants, "Numeric variants per problem, drawn from the parameters' 'range'")
+        ->check(CLI::Range(0, 10000));
+    sheet->add_option("--seed", o.seed, "Seed for the variants (as for key)")->capture_default_str();
+    sheet->add_option("--digits", o.digits, "Significant digits of the numbers")->check(CLI::Range(1, 1000));
+    sheet->add_option("-o,--output", o.out, "Write to this file instead of standard output");
+  });
 
-  auto* sweep = app.add_subcommand("sweep", "Evaluate the closed forms over a range of one parameter: CSV, SVG plot, pgfplots");
-  sweep->add_option("file", o.file, "Problem description (YAML)")->required();
-  sweep->add_option("--vary", o.vary, "name=start:end:count, in the parameter's unit (default: the description's sweep)");
-  sweep->add_option("--fix", o.fixes, "name=value, in the parameter's unit (repeatable)");
-  sweep->add_option("--against", o.against, "The horizontal axis: an expression in the parameters, e.g. h/l (default: the varied parameter)");
-  sweep->add_option("--plot", o.plot, "Comma-separated expressions in the answers and parameters, e.g. N_A,N_B,N_A-N_B");
-  sweep->add_option("--csv", o.csv_out, "Write the data as CSV here (default: standard output)");
-  sweep->add_option("--svg", o.svg_out, "Write an SVG plot here");
-  sweep->add_option("--pgfplots", o.pgf_out, "Write a pgfplots figure (LaTeX) here");
-  with_phase(sweep);
+  auto* sweep = add("sweep", "Evaluate the closed forms over a range of one parameter: CSV, SVG plot, pgfplots", [&](CLI::App* sweep) {
+    sweep->add_option("file", o.file, "Problem description (YAML)")->required();
+    sweep->add_option("--vary", o.vary, "name=start:end:count, in the parameter's unit (default: the description's sweep)");
+    sweep->add_option("--fix", o.fixes, "name=value, in the parameter's unit (repeatable)");
+    sweep->add_option("--against", o.against, "The horizontal axis: an expression in the parameters, e.g. h/l (default: the varied parameter)");
+    sweep->add_option("--plot", o.plot, "Comma-separated expressions in the answers and parameters, e.g. N_A,N_B,N_A-N_B");
+    sweep->add_option("--csv", o.csv_out, "Write the data as CSV here (default: standard output)");
+    sweep->add_option("--svg", o.svg_out, "Write an SVG plot here");
+    sweep->add_option("--pgfplots", o.pgf_out, "Write a pgfplots figure (LaTeX) here");
+    with_phase(sweep);
+  });
 
-  auto* simulate = app.add_subcommand("simulate", "Integrate the motion in time numerically, with events (a string going slack, "
-                                                  "a contact lost, a body turning): a table, CSV, SVG, pgfplots");
-  simulate->add_option("file", o.file, "Problem description (YAML) with a 'motion' section")->required();
-  simulate->add_option("--until", o.until, "End time in seconds (default: the description's 'until')")->check(CLI::PositiveNumber);
-  simulate->add_option("--plot", o.sim_plot, "Comma-separated expressions in the answers, coordinates, rates, parameters and t, e.g. y,N");
-  simulate->add_option("--samples", o.samples, "Rows of the table, evenly spaced in time")->check(CLI::Range(2, 100000))->capture_default_str();
-  simulate->add_option("--csv", o.csv_out, "Write the table as CSV here");
-  simulate->add_option("--svg", o.svg_out, "Write an SVG plot here");
-  simulate->add_option("--pgfplots", o.pgf_out, "Write a pgfplots figure (LaTeX) here");
-  simulate->add_option("-o,--output", o.out, "Write the report (events and table) here instead of standard output");
-  with_phase(simulate);
+  auto* simulate = add("simulate", "Integrate the motion in time numerically, with events (a string going slack, "
+                                   "a contact lost, a body turning): a table, CSV, SVG, pgfplots",
+                       [&](CLI::App* simulate) {
+    simulate->add_option("file", o.file, "Problem description (YAML) with a 'motion' section")->required();
+    simulate->add_option("--until", o.until, "End time in seconds (default: the description's 'until')")->check(CLI::PositiveNumber);
+    simulate->add_option("--plot", o.sim_plot, "Comma-separated expressions in the answers, coordinates, rates, parameters and t, e.g. y,N");
+    simulate->add_option("--samples", o.samples, "Rows of the table, evenly spaced in time")->check(CLI::Range(2, 100000))->capture_default_str();
+    simulate->add_option("--csv", o.csv_out, "Write the table as CSV here");
+    simulate->add_option("--svg", o.svg_out, "Write an SVG plot here");
+    simulate->add_option("--pgfplots", o.pgf_out, "Write a pgfplots figure (LaTeX) here");
+    simulate->add_option("-o,--output", o.out, "Write the report (events and table) here instead of standard output");
+    with_phase(simulate);
+  });
 
-  auto* check = app.add_subcommand("check", "Check a student's answer (or a batch of them) against the closed form");
-  check->add_option("file", o.file, "Problem description (YAML)")->required();
-  auto* unknown_opt = check->add_option("--unknown", o.unknown, "The unknown the answer is for, e.g. T_HI");
-  auto* answer_opt = check->add_option("--answer", o.answer, "The answer: an expression, 'T = ...', or a number with a unit");
-  auto* batch_opt = check->add_option("--batch", o.batch, "JSON Lines file of {\"id\", \"unknown\", \"answer\"} (- for standard input)");
-  auto* results_opt = check->add_option("--results", o.results, "With --batch: also write a grading platform's results file")
-      ->needs(batch_opt);
-  check->add_option("--results-format", o.results_format, "The results file's platform")
-      ->check(CLI::IsMember({"gradescope", "prairielearn", "jsonl"}))
-      ->capture_default_str()
-      ->needs(results_opt);
-  check->add_option("--points", o.points_text, "Points for each answer (N), or for one unknown's answers (NAME=N); repeatable")
-      ->needs(batch_opt);
-  check->add_flag("--top-level-score", o.top_level_score, "Gradescope: also write the total as the top-level score "
-                                                           "(it overrides the tests' sum)")
-      ->needs(results_opt);
-  check->add_option("--set", o.set_values, "A parameter's value for this check, in its stated unit (NAME=VALUE, repeatable): "
-                                           "a student's own variant");
-  check->add_flag("--reveal", o.reveal, "Name the correct value in the feedback (never, without it)");
-  check->add_option("--tolerance", o.tolerance, "Relative tolerance for numbers with units")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str();
-  check->add_option("--sig-figs", o.sig_figs, "Instead of the tolerance: numbers must match to this many significant figures")
-      ->check(CLI::Range(1, 15));
-  check->add_flag("--require-simplified", o.require_simplified, "A correct answer that is not simplified is incorrect");
-  check->add_flag("--no-latex", o.no_latex, "Do not echo answers in LaTeX (faster batches)");
-  check->add_option("--format", o.format, "Output format (single answers)")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
-  check->add_option("-o,--output", o.out, "Write to this file instead of standard output");
-  with_phase(check);
-  answer_opt->needs(unknown_opt);
-  unknown_opt->needs(answer_opt);
-  batch_opt->excludes(answer_opt);
+  CLI::Option *answer_opt = nullptr, *batch_opt = nullptr;
+  auto* check = add("check", "Check a student's answer (or a batch of them) against the closed form", [&](CLI::App* check) {
+    check->add_option("file", o.file, "Problem description (YAML)")->required();
+    auto* unknown_opt = check->add_option("--unknown", o.unknown, "The unknown the answer is for, e.g. T_HI");
+    answer_opt = check->add_option("--answer", o.answer, "The answer: an expression, 'T = ...', or a number with a unit");
+    batch_opt = check->add_option("--batch", o.batch, "JSON Lines file of {\"id\", \"unknown\", \"answer\"} (- for standard input)");
+    auto* results_opt = check->add_option("--results", o.results, "With --batch: also write a grading platform's results file")
+        ->needs(batch_opt);
+    check->add_option("--results-format", o.results_format, "The results file's platform")
+        ->check(CLI::IsMember({"gradescope", "prairielearn", "jsonl"}))
+        ->capture_default_str()
+        ->needs(results_opt);
+    check->add_option("--points", o.points_text, "Points for each answer (N), or for one unknown's answers (NAME=N); repeatable")
+        ->needs(batch_opt);
+    check->add_flag("--top-level-score", o.top_level_score, "Gradescope: also write the total as the top-level score "
+                                                             "(it overrides the tests' sum)")
+        ->needs(results_opt);
+    check->add_option("--set", o.set_values, "A parameter's value for this check, in its stated unit (NAME=VALUE, repeatable): "
+                                             "a student's own variant");
+    check->add_flag("--reveal", o.reveal, "Name the correct value in the feedback (never, without it)");
+    check->add_option("--tolerance", o.tolerance, "Relative tolerance for numbers with units")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
+    check->add_option("--sig-figs", o.sig_figs, "Instead of the tolerance: numbers must match to this many significant figures")
+        ->check(CLI::Range(1, 15));
+    check->add_flag("--require-simplified", o.require_simplified, "A correct answer that is not simplified is incorrect");
+    check->add_flag("--no-latex", o.no_latex, "Do not echo answers in LaTeX (faster batches)");
+    check->add_option("--format", o.format, "Output format (single answers)")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
+    check->add_option("-o,--output", o.out, "Write to this file instead of standard output");
+    with_phase(check);
+    answer_opt->needs(unknown_opt);
+    unknown_opt->needs(answer_opt);
+    batch_opt->excludes(answer_opt);
+  });
 
   try {
     app.parse(argc, argv);

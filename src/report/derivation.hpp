@@ -85,6 +85,9 @@ struct ReportOptions {
   /// for what prints the answers only (`tackle solve`, `tackle sweep`): the answers, the
   /// conditions, the power check and the motion are the same either way.
   bool narrate = true;
+  /// The free body diagrams and sketches drawn (with `narrate`). Off where the format shows
+  /// no figure (text and JSON): drawing them is a tenth of a small problem's run.
+  bool figures = true;
 };
 
 /// The derivation of a solved problem, in the book's order; `power_check` is the power-balance

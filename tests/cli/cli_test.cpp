@@ -105,6 +105,30 @@ TEST_CASE("CLI: exit codes: 0 ok, 1 input error, 2 usage", "[cli]") {
   CHECK(missing.err == "no/such/file.yaml: cannot read the file\n");
 }
 
+// Only the subcommand named gets its options defined (start-up): what each one accepts and
+// says must not depend on that.
+TEST_CASE("CLI: each subcommand's options are there whichever way it is named", "[cli]") {
+  for (const std::string prefix : {"", "--rules " TACKLE_SOURCE_DIR "/rules ", "--rules=" TACKLE_SOURCE_DIR "/rules "}) {
+    const Run help = run_tackle(prefix + "check --help");
+    CHECK(help.code == 0);
+    CHECK(help.out.find("--require-simplified") != std::string::npos);
+    CHECK(help.out.find("--results-format") != std::string::npos);
+    const Run isolate = run_tackle(prefix + "isolate --help");
+    CHECK(isolate.out.find("--all") != std::string::npos);
+    CHECK(isolate.out.find("--require-simplified") == std::string::npos);
+  }
+  const Run top = run_tackle("--help");
+  for (const char* sub : {"derive", "solve", "isolate", "key", "sheet", "sweep", "simulate", "check"})
+    CHECK(top.out.find(std::string("  ") + sub) != std::string::npos);
+  const Run needs = run_tackle("check " + examples + "sample-12.8-sign-board.yaml --answer x");
+  CHECK(needs.code == 2);
+  CHECK(needs.err == "--answer requires --unknown\nRun with --help for more information.\n");
+  const Run checked = run_tackle("--rules " TACKLE_SOURCE_DIR "/rules check " + examples +
+                                 "sample-12.8-sign-board.yaml --unknown T_HI --answer 'm*a*l/(2*d)'");
+  CHECK(checked.code == 0);
+  CHECK(checked.out.rfind("correct", 0) == 0);
+}
+
 TEST_CASE("CLI: a bad description reports every located problem on stderr and exits 1", "[cli]") {
   const fs::path bad = fs::temp_directory_path() / "tackle-bad.yaml";
   std::ofstream(bad) << "title: bad\nbodies:\n  A: {mas: m, position: x_A}\nloads:\n  - {on: Q, force: F}\n";

@@ -88,6 +88,20 @@ TEST_CASE("FBD: the suitcase's normal forces press on it from below, friction mu
   CHECK(std::count_if(f.arrows.begin(), f.arrows.end(), [](const FigureArrow& x) { return x.axis; }) == 2);
 }
 
+TEST_CASE("FBD: without figures (text, JSON) none is drawn and the text and JSON are the same", "[figure]") {
+  for (const char* example : {"sample-12.7-suitcase.yaml", "sample-12.3-two-mass-pulley.yaml"}) {
+    const auto a = analyze_file(std::string(TACKLE_SOURCE_DIR "/examples/") + example, test::rules());
+    const Derivation with = explain(*a), without = explain(*a, ReportOptions{.figures = false});
+    const auto drawn = [](const Derivation& d) {
+      return std::count_if(d.steps.begin(), d.steps.end(), [](const Step& st) { return st.kind == Step::Kind::figure; });
+    };
+    CHECK(drawn(with) > 0);
+    CHECK(drawn(without) == 0);
+    CHECK(write(with, Format::text, true) == write(without, Format::text, true));
+    CHECK(write(with, Format::json, true) == write(without, Format::json, true));
+  }
+}
+
 TEST_CASE("FBD: a system's diagram leaves out the forces inside it", "[figure]") {
   const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.1-towing-system.yaml", test::rules());
   const auto figs = figures_of(*a);
