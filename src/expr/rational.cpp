@@ -273,18 +273,20 @@ namespace {
 // The distinct symbols of `e` in the order first met, walked by op() (GiNaC's preorder
 // iterator keeps a stack of copies and was a tenth of a chain's run); each symbol is
 // remembered by its hash, so a sum over 256 masses met again costs no comparisons of names.
-void gather_symbols(const ex& e, std::unordered_set<ex, ExHash, ex_is_equal>& seen, std::vector<ex>& out) {
+// Only the symbols `keep` says yes to are gathered.
+template <class Keep>
+void gather_symbols(const ex& e, std::unordered_set<ex, ExHash, ex_is_equal>& seen, std::vector<ex>& out, const Keep& keep) {
   if (is_exactly<symbol>(e)) {
-    if (seen.insert(e).second) out.push_back(e);
+    if (keep(e) && seen.insert(e).second) out.push_back(e);
     return;
   }
   if (is_exactly<numeric>(e)) return;
   if (is_exactly<add>(e) || is_exactly<mul>(e)) {
-    for (const auto& p : Pairs::of(e)) gather_symbols(p.rest, seen, out);  // the coefficients are numbers
+    for (const auto& p : Pairs::of(e)) gather_symbols(p.rest, seen, out, keep);  // the coefficients are numbers
     return;
   }
   const std::size_t n = e.nops();
-  for (std::size_t i = 0; i < n; ++i) gather_symbols(e.op(i), seen, out);
+  for (std::size_t i = 0; i < n; ++i) gather_symbols(e.op(i), seen, out, keep);
 }
 
 // The nodes as op() would make them, counted from the pairs (see pairs.hpp): a term
@@ -319,7 +321,14 @@ void count_nodes(const ex& e, std::size_t limit, std::size_t& n) {
 std::vector<ex> distinct_symbols(const ex& e) {
   std::unordered_set<ex, ExHash, ex_is_equal> seen;
   std::vector<ex> out;
-  gather_symbols(e, seen, out);
+  gather_symbols(e, seen, out, [](const ex&) { return true; });
+  return out;
+}
+
+std::vector<ex> distinct_symbols_among(const ex& e, const std::unordered_set<ex, ExHash, ex_is_equal>& among) {
+  std::unordered_set<ex, ExHash, ex_is_equal> seen;
+  std::vector<ex> out;
+  if (!among.empty()) gather_symbols(e, seen, out, [&](const ex& x) { return among.count(x) > 0; });
   return out;
 }
 
@@ -430,6 +439,98 @@ Degrees degrees_of_uncached(const ex& expanded) {
 
 // Remembered per thread (the last 1024 polynomials): a chain's closed forms share one
 // denominator, and a numerator's degrees are asked for by each step of its factoring.
+std::map<ex, int, ex_is_less> low_degrees(const ex& expanded) {
+  std::map<ex, int, ex_is_less> low;
+  // The power of a symbol in a term (0 when it is not there or not to a whole power).
+  auto power_in = [](const ex& term, const ex& x) -> int {
+    auto one = [&](const ex& base, const ex& expo) {
+      return is_exactly<symbol>(base) && base.is_equal(x) && expo.info(info_flags::nonnegint) ? ex_to<numeric>(expo).to_int() : 0;
+    };
+    if (is_exactly<mul>(term)) {
+      for (const auto& f : Pairs::of(term))
+        if (const int k = one(f.rest, f.coeff); k != 0) return k;
+      return 0;
+    }
+    if (is_exactly<power>(term)) return one(term.op(0), term.op(1));
+    return one(term, 1);
+  };
+  auto first_powers = [&](const ex& term) {
+    auto one = [&](const ex& base, const ex& expo) {
+      if (is_exactly<symbol>(base) && expo.info(info_flags::nonnegint)) low[base] += ex_to<numeric>(expo).to_int();
+    };
+    if (is_exactly<mul>(term))
+      for (const auto& f : Pairs::of(term)) one(f.rest, f.coeff);
+    else if (is_exactly<power>(term))
+      one(term.op(0), term.op(1));
+    else
+      one(term, 1);
+  };
+  if (!is_exactly<add>(expanded)) {
+    first_powers(expanded);
+    return low;
+  }
+  if (!Pairs::overall(expanded).is_zero()) return low;  // a term without symbols
+  bool first = true;
+  for (const auto& t : Pairs::of(expanded)) {
+    if (first) {
+      first_powers(t.rest);
+      first = false;
+      continue;
+    }
+    for (auto it = low.begin(); it != low.end();) {
+      const int k = power_in(t.rest, it->first);
+      if (k == 0) {
+        it = low.erase(it);
+      } else {
+        it->second = std::min(it->second, k);
+        ++it;
+      }
+    }
+    if (low.empty()) break;
+  }
+  return low;
+}
+
+Content content_of(const ex& expanded) {
+  const ex integer = expanded.integer_content();
+  const auto low = low_degrees(expanded);
+  ex monomial = integer;
+  for (const auto& [x, k] : low) monomial *= pow(x, k);
+  if (!is_exactly<add>(expanded) || !expanded_polynomial(expanded) || !is_exactly<numeric>(integer) || integer.is_zero())
+    return {monomial, (expanded / monomial).expand()};
+  const numeric& c = ex_to<numeric>(integer);
+  // A term rest*coeff over the content: rest with each common symbol's power lowered (a
+  // term that is one symbol or one power holds the one common symbol there can be), coeff/c.
+  auto lowered = [&](const ex& rest) -> ex {
+    if (low.empty()) return rest;
+    if (!is_exactly<mul>(rest)) return rest * pow(low.begin()->first, -low.begin()->second);
+    epvector factors;
+    factors.reserve(Pairs::of(rest).size());
+    for (const auto& f : Pairs::of(rest)) {
+      const auto it = low.find(f.rest);
+      if (it == low.end()) {
+        factors.push_back(f);
+        continue;
+      }
+      const numeric left = ex_to<numeric>(f.coeff) - it->second;
+      if (!left.is_zero()) factors.emplace_back(f.rest, left);
+    }
+    return dynallocate<mul>(std::move(factors), Pairs::overall(rest));
+  };
+  epvector terms;
+  terms.reserve(Pairs::of(expanded).size());
+  numeric overall = Pairs::overall(expanded) / c;
+  for (const auto& t : Pairs::of(expanded)) {
+    const ex r = lowered(t.rest);
+    const numeric coeff = ex_to<numeric>(t.coeff) / c;
+    if (is_exactly<numeric>(r))
+      overall += coeff * ex_to<numeric>(r);
+    else
+      terms.emplace_back(r, coeff);
+  }
+  return {monomial, dynallocate<add>(std::move(terms), overall)};
+}
+
 Degrees degrees_of(const ex& expanded) {
   thread_local ExMemory<Degrees> memory;
   return remembered(memory, expanded, 1024, [&] { return degrees_of_uncached(expanded); });

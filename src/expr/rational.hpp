@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -129,6 +130,9 @@ struct ModularAt {
 /// The distinct symbols of `e`, in the order first met (GiNaC's order, which is the hash
 /// order: not for choosing what is printed).
 [[nodiscard]] std::vector<GiNaC::ex> distinct_symbols(const GiNaC::ex& e);
+/// The same, only those in `among` (a look-up per symbol met, nothing kept for the others).
+[[nodiscard]] std::vector<GiNaC::ex> distinct_symbols_among(const GiNaC::ex& e,
+                                                            const std::unordered_set<GiNaC::ex, ExHash, GiNaC::ex_is_equal>& among);
 
 /// The symbols of `e`.
 [[nodiscard]] std::set<GiNaC::ex, GiNaC::ex_is_less> symbols_in(const GiNaC::ex& e);
@@ -140,6 +144,17 @@ struct Degrees {
   std::map<GiNaC::ex, int, GiNaC::ex_is_less> low, high;
 };
 [[nodiscard]] Degrees degrees_of(const GiNaC::ex& expanded);
+/// degrees_of(expanded).low alone: each term is asked only for the symbols still common to
+/// all terms before it (no map per term; a chain's numerators F m_1 + ... + F m_k).
+[[nodiscard]] std::map<GiNaC::ex, int, GiNaC::ex_is_less> low_degrees(const GiNaC::ex& expanded);
+/// An expanded polynomial's integer and monomial content c and what is left, p/c expanded,
+/// made term by term (expand() of p/c makes each term twice). p/c is exactly what
+/// (p/c).expand() gives; c is integer_content() times x^k for each symbol x in every term
+/// at its lowest power k.
+struct Content {
+  GiNaC::ex content, rest;
+};
+[[nodiscard]] Content content_of(const GiNaC::ex& expanded);
 
 /// An expanded polynomial of degree 1 in some symbol x that it is not divisible by, whose
 /// coefficients of x^1 and x^0 have no common factor: it is irreducible (a factor would be

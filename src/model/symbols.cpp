@@ -137,8 +137,8 @@ void SymbolTable::set_range(const std::string& name, GiNaC::numeric low, GiNaC::
 
 GiNaC::exmap SymbolTable::definitions(bool geometric) const {
   GiNaC::exmap m;
-  for (const auto& s : items_)
-    if (s->definition && (geometric || !s->geometric)) m[s->sym] = *s->definition;
+  for (const SymbolInfo* s : defined())
+    if (geometric || !s->geometric) m[s->sym] = *s->definition;
   return m;
 }
 
@@ -148,10 +148,18 @@ void SymbolTable::set_definition(const std::string& name, GiNaC::ex definition, 
   if (it == by_name_.end()) throw InternalError("no symbol '" + name + "'");
   items_[it->second]->definition = std::move(definition);
   items_[it->second]->geometric = geometric;
+  defined_.insert(it->second);
+}
+
+std::vector<const SymbolInfo*> SymbolTable::defined() const {
+  std::vector<const SymbolInfo*> out;
+  out.reserve(defined_.size());
+  for (const std::size_t i : defined_) out.push_back(items_[i].get());
+  return out;
 }
 
 bool SymbolTable::hidden_in_lengths(const GiNaC::ex& e, const GiNaC::ex& s) const {
-  for (const auto& item : items_)
+  for (const SymbolInfo* item : defined())
     if (item->geometric && e.has(item->sym) && (item->sym.is_equal(s) || item->definition->has(s))) return true;
   return false;
 }

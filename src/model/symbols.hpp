@@ -4,6 +4,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <mutex>
 #include <memory>
 #include <optional>
@@ -90,6 +91,9 @@ class SymbolTable : public NameResolver, public DimensionLookup {
   /// too when asked (for numbers only: their roots are not for normal()).
   [[nodiscard]] GiNaC::exmap definitions(bool geometric = false) const;
   void set_definition(const std::string& name, GiNaC::ex definition, bool geometric = false);
+  /// The symbols with a definition, in the table's order (a chain's thousand symbols have
+  /// none: each closed form and each term of the derivation asked every symbol).
+  [[nodiscard]] std::vector<const SymbolInfo*> defined() const;
   /// True when a geometric length in `e` depends on `s` (e is then not linear in s where it
   /// looks so).
   [[nodiscard]] bool hidden_in_lengths(const GiNaC::ex& e, const GiNaC::ex& s) const;
@@ -99,6 +103,7 @@ class SymbolTable : public NameResolver, public DimensionLookup {
   std::vector<std::unique_ptr<SymbolInfo>> items_;
   std::map<std::string, std::size_t, std::less<>> by_name_;
   std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> by_symbol_;
+  std::set<std::size_t> defined_;  // the indices of the symbols with a definition
   // values(), made once after the last change (every change forgets it); a run asks for it
   // some thirty times.
   mutable std::shared_ptr<const ValueSet> values_;

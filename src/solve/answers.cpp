@@ -36,15 +36,14 @@ std::string undetermined_reason(const Answer& a, const SymbolTable& table, const
 }
 
 bool has_definition(const ex& e, const SymbolTable& table) {
-  for (const auto& sym : table.all())
-    if (sym->definition && !sym->geometric && e.has(sym->sym)) return true;
+  for (const SymbolInfo* sym : table.defined())
+    if (!sym->geometric && e.has(sym->sym)) return true;
   return false;
 }
 
 ex fold_definitions(const ex& e, const SymbolTable& table) {
   ex best = e;
-  for (const auto& sym : table.all()) {  // in the table's order (an exmap's is the hash order)
-    if (!sym->definition) continue;
+  for (const SymbolInfo* sym : table.defined()) {  // in the table's order (an exmap's is the hash order)
     const ex& name_sym = sym->sym;
     const ex& definition = *sym->definition;
     // l = sqrt(A): put l^2 for A, so that sqrt(A) and 1/sqrt(A) become l and 1/l (l > 0).
@@ -67,6 +66,13 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
       const SymbolInfo* info = table.find(u);
       wanted.push_back({info->name, info->tex, u, false, info->dimension, std::nullopt});
     }
+  // What a closed form may not contain: anything but parameters, defined quantities, time
+  // and what is given.
+  std::unordered_set<ex, ExHash, ex_is_equal> not_known;
+  for (const auto& sym : table.all())
+    if (!(sym->role == SymbolRole::parameter || sym->role == SymbolRole::defined || sym->role == SymbolRole::time ||
+          contains(m.given, sym->sym)))
+      not_known.insert(sym->sym);
   for (const auto& w : wanted) {
     Answer a;
     a.name = w.name;
@@ -119,15 +125,13 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
       } else {
         // A closed form may contain parameters and given quantities only: anything else (a
         // velocity asked for while only accelerations are solved) is what is missing.
-        // (The symbols of the form are gathered once: asking has() of every symbol of a
-        // chain of 256 bodies would make this cubic.)
-        const std::vector<ex> in_general = distinct_symbols(general);
-        const std::unordered_set<ex, ExHash, ex_is_equal> present(in_general.begin(), in_general.end());
-        for (const auto& sym : table.all()) {
-          if (present.count(sym->sym) == 0) continue;
-          const bool known = sym->role == SymbolRole::parameter || sym->role == SymbolRole::defined || sym->role == SymbolRole::time ||
-                             contains(m.given, sym->sym);
-          if (!known) a.missing.push_back(sym->sym);
+        // (Only the symbols that are not known are looked for, each met once: asking has()
+        // of every symbol of a chain of 256 bodies would make this cubic.) In the table's order.
+        const std::vector<ex> found = distinct_symbols_among(general, not_known);
+        if (!found.empty()) {
+          const std::unordered_set<ex, ExHash, ex_is_equal> present(found.begin(), found.end());
+          for (const auto& sym : table.all())
+            if (present.count(sym->sym) > 0) a.missing.push_back(sym->sym);
         }
         if (!a.missing.empty()) {
           a.status = Answer::Status::undetermined;

@@ -122,9 +122,8 @@ namespace {
 // factor() takes seconds on sums of some dozens of terms in ten symbols (a collar hoisted by
 // two cables: 2 s for one problem), and factoring such a sum rarely shortens it.
 ex content_only(const ex& expanded) {
-  ex monomial = expanded.integer_content();
-  for (const auto& [s, low] : degrees_of(expanded).low) monomial *= pow(s, low);
-  return monomial * (expanded / monomial).expand();
+  const Content c = content_of(expanded);
+  return c.content * c.rest;
 }
 
 constexpr std::size_t factor_term_limit = 16;
@@ -660,8 +659,8 @@ Solution solve(const Model& model, const EquationSystem& s) {
       // the condition only looks linear in it.
       // (The lengths in the condition are found once, not for each parameter.)
       std::vector<const SymbolInfo*> lengths_in;
-      for (const auto& sym : model.symbols->all())
-        if (sym->geometric && present.count(sym->sym) != 0) lengths_in.push_back(sym.get());
+      for (const SymbolInfo* sym : model.symbols->defined())
+        if (sym->geometric && present.count(sym->sym) != 0) lengths_in.push_back(sym);
       if (!lengths_in.empty())
         parameters.erase(std::remove_if(parameters.begin(), parameters.end(),
                                         [&](const ex& p) {

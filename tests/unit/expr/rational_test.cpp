@@ -142,3 +142,44 @@ TEST_CASE("Node count: read from the stored pairs, the same as op() by op()", "[
     CHECK(node_count(e, 5) == std::min<std::size_t>(5, nodes_by_op(e)));
   }
 }
+
+TEST_CASE("Content: the integer and monomial content, and the rest term by term as expand() gives it", "[rational]") {
+  const symbol F("F"), g("g"), x("x"), y("y"), m1("m_1"), m2("m_2"), m3("m_3");
+  // Worked by hand: the content and the rest of each.
+  struct Case {
+    ex p, content, rest;
+  };
+  const std::vector<Case> cases{
+      {F * m1 + F * m2 + F * m3, F, m1 + m2 + m3},
+      {6 * F * pow(x, 2) * y + 4 * F * x * pow(y, 3), 2 * F * x * y, 3 * x + 2 * pow(y, 2)},
+      {numeric(3, 4) * x * g + numeric(9, 2) * x, numeric(3, 4) * x, g + 6},
+      {pow(x, 3) + pow(x, 5), pow(x, 3), 1 + pow(x, 2)},
+      {x * y + 2, 1, x * y + 2},
+      {-2 * x - 4 * x * y, 2 * x, -1 - 2 * y},
+      {x + y, 1, x + y},
+      {5 * pow(x, 2) * y, 5 * pow(x, 2) * y, 1},
+  };
+  for (const auto& c : cases) {
+    const ex p = c.p.expand();
+    const Content got = content_of(p);
+    CHECK(got.content.is_equal(c.content));
+    CHECK(got.rest.is_equal(c.rest));
+    // The same objects the formula it replaces makes, and the same lowest degrees.
+    ex monomial = p.integer_content();
+    for (const auto& [s, k] : degrees_of(p).low) monomial *= pow(s, k);
+    CHECK(got.content.is_equal(monomial));
+    CHECK(got.rest.is_equal((p / monomial).expand()));
+    CHECK(got.rest.gethash() == (p / monomial).expand().gethash());
+    CHECK(low_degrees(p) == degrees_of(p).low);
+  }
+  // A sum over 256 masses, each times F: F and the sum of the masses.
+  ex sum = 0, masses = 0;
+  for (int i = 1; i <= 256; ++i) {
+    const symbol m("m_" + std::to_string(i));
+    sum += F * m;
+    masses += m;
+  }
+  const Content big = content_of(sum);
+  CHECK(big.content.is_equal(F));
+  CHECK(big.rest.is_equal(masses));
+}
