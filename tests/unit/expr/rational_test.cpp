@@ -5,6 +5,9 @@
 #include <string>
 #include <vector>
 
+#include <cln/integer.h>
+#include <cln/modinteger.h>
+
 #include "expr/rational.hpp"
 #include "expr/trig.hpp"
 
@@ -182,4 +185,25 @@ TEST_CASE("Content: the integer and monomial content, and the rest term by term 
   const Content big = content_of(sum);
   CHECK(big.content.is_equal(F));
   CHECK(big.rest.is_equal(masses));
+}
+
+TEST_CASE("Modular: integers and exponents past 62 bits and negative ones, as CLN's modular ring gives them",
+          "[rational]") {
+  const symbol x("x");
+  const cln::cl_modint_ring R = cln::find_modint_ring(cln::cl_I(static_cast<unsigned long>(ModularPoint::prime)));
+  const cln::cl_I two62 = cln::expt_pos(cln::cl_I(2), 62), two70 = cln::expt_pos(cln::cl_I(2), 70);
+  const std::vector<cln::cl_I> coefficients{-1, 3, -two62, two62 - 1, two62, two70 + 5, -two70, cln::cl_I(static_cast<unsigned long>(ModularPoint::prime))};
+  const std::vector<cln::cl_I> exponents{1, -1, 5, -7, two62 + 3, -(two70 + 1)};
+  for (const auto& c : coefficients)
+    for (const auto& k : exponents) {
+      ModularPoint point(1);
+      point.values[x] = 3;
+      const ex e = numeric(cln::cl_N(c)) * pow(x, numeric(cln::cl_N(k)));
+      const ModularAt got = modular_at(e, point);
+      REQUIRE(got.kind == RationalAt::Kind::value);
+      const cln::cl_MI three = R->canonhom(3);
+      const cln::cl_MI power = cln::minusp(k) ? cln::recip(cln::expt_pos(three, -k)) : cln::expt_pos(three, k);
+      const cln::cl_MI want = R->canonhom(c) * power;
+      CHECK(cln::cl_I(static_cast<unsigned long>(got.value)) == R->retract(want));
+    }
 }
