@@ -20,6 +20,7 @@
 #include "report/sheet.hpp"
 #include "core/files.hpp"
 #include "report/sweep.hpp"
+#include "ruleset/builtin_rules.hpp"
 #include "motion/simulate.hpp"
 
 namespace {
@@ -484,7 +485,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const tackle::RuleSet rules = tackle::load_rules(o.rules_dir);
+    const tackle::RuleSet rules = tackle::load_rules(o.rules_dir, tackle::RuleLoading::when_used, tackle::builtin_rules());
     if (key->parsed()) return run_key(o, rules);
     if (sheet->parsed()) return run_sheet(o, rules);
     if (isolate->parsed()) return run_isolate(o, rules);

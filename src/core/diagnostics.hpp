@@ -17,6 +17,7 @@ struct Location {
 
   /// The same file and line, `offset` columns further right (for a position inside a scalar).
   [[nodiscard]] Location shifted(int offset) const;
+  friend bool operator==(const Location&, const Location&) = default;
 };
 
 struct Diagnostic {

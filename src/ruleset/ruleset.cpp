@@ -41,17 +41,28 @@ void RuleSet::add(Rule r) {
   rules_[r.type] = std::move(r);
 }
 
-void RuleSet::add_pending(const std::string& type, std::string text, std::string file) {
+void RuleSet::add_pending(const std::string& type, std::string text, std::string file, const BuiltinRule* builtin) {
   const std::lock_guard<std::mutex> lock(mutex_);
   rules_.erase(type);
-  pending_[type] = {std::move(text), std::move(file)};
+  pending_[type] = {std::move(text), std::move(file), builtin};
+}
+
+Rule made_from(const BuiltinRule& builtin, const std::string& file) {
+  Rule r = builtin.make();
+  r.at.file = file;
+  for (auto& l : r.loads) l.at.file = file;
+  for (auto& c : r.constraints) c.at.file = file;
+  for (auto& v : r.validity) v.at.file = file;
+  for (auto& c : r.checks) c.at.file = file;
+  return r;
 }
 
 namespace {
 
-// A pending rule, read; its type must be the one its `type:` line gave.
-Rule read_pending(const std::string& type, const std::string& text, const std::string& file) {
-  Rule r = parse_rule(text, file);
+// A pending rule, read (or made by its builtin); its type must be the one its `type:` line
+// gave.
+Rule read_pending(const std::string& type, const std::string& text, const std::string& file, const BuiltinRule* builtin) {
+  Rule r = builtin ? made_from(*builtin, file) : parse_rule(text, file);
   if (r.type != type)
     throw InputError({{r.at, "rule type '" + r.type + "' differs from its 'type: " + type + "' line (expected one 'type' key)"}});
   return r;
@@ -62,7 +73,7 @@ Rule read_pending(const std::string& type, const std::string& text, const std::s
 const Rule* RuleSet::find(const std::string& type) const {
   const std::lock_guard<std::mutex> lock(mutex_);
   if (auto p = pending_.find(type); p != pending_.end()) {
-    Rule r = read_pending(type, p->second.text, p->second.file);  // throws the file's problems
+    Rule r = read_pending(type, p->second.text, p->second.file, p->second.builtin);  // throws the file's problems
     pending_.erase(p);
     rules_[type] = std::move(r);
   }
@@ -84,7 +95,7 @@ void RuleSet::read_all() const {
   std::vector<Diagnostic> all;
   for (auto p = pending_.begin(); p != pending_.end();) {
     try {
-      rules_[p->first] = read_pending(p->first, p->second.text, p->second.file);
+      rules_[p->first] = read_pending(p->first, p->second.text, p->second.file, p->second.builtin);
       p = pending_.erase(p);
     } catch (const InputError& e) {
       all.insert(all.end(), e.diagnostics().begin(), e.diagnostics().end());
@@ -493,7 +504,7 @@ std::string plain_type(const std::string& text) {
 
 }  // namespace
 
-RuleSet load_rules(const std::string& dir, RuleLoading how) {
+RuleSet load_rules(const std::string& dir, RuleLoading how, std::span<const BuiltinRule> builtins) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::is_directory(dir, ec))
@@ -518,7 +529,10 @@ RuleSet load_rules(const std::string& dir, RuleLoading how) {
           continue;
         }
         defined_in[type] = f.string();
-        set.add_pending(type, std::move(text), f.string());
+        const std::string name = f.filename().string();
+        const auto builtin = std::find_if(builtins.begin(), builtins.end(),
+                                          [&](const BuiltinRule& b) { return b.name == name && b.text == text; });
+        set.add_pending(type, std::move(text), f.string(), builtin == builtins.end() ? nullptr : &*builtin);
         continue;
       }
       Rule r = parse_rule(text, f.string());

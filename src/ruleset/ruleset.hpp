@@ -9,7 +9,9 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/diagnostics.hpp"
@@ -25,6 +27,7 @@ struct ArgSpec {
   std::optional<Dimension> dimension;  // for expr arguments
   bool required = true;
   bool kind_known = true;  // false when the rule file named an unknown kind (already reported)
+  friend bool operator==(const ArgSpec&, const ArgSpec&) = default;
 };
 
 struct UnknownSpec {
@@ -32,6 +35,7 @@ struct UnknownSpec {
   std::string name_template;  // e.g. "T_{name}": {key} is replaced by the argument's text
   std::optional<std::string> rename_arg;  // a `name` argument that overrides the template
   Dimension dimension;
+  friend bool operator==(const UnknownSpec&, const UnknownSpec&) = default;
 };
 
 /// Loads: `on` applies the force `expr` (and the couple `couple`) to a body, at the point
@@ -46,6 +50,7 @@ struct LoadSpec {
   std::string couple;  // on: a couple, as an expression
   std::string when;    // an optional argument; the load applies only when it is given
   Location at;
+  friend bool operator==(const LoadSpec&, const LoadSpec&) = default;
 };
 
 /// Constraints: `length` holds a path's length constant, `length_sum` a hand-written length
@@ -56,6 +61,7 @@ struct ConstraintSpec {
   std::string arg;
   std::string with;  // together: the second body argument
   Location at;
+  friend bool operator==(const ConstraintSpec&, const ConstraintSpec&) = default;
 };
 
 struct ValiditySpec {
@@ -64,6 +70,7 @@ struct ValiditySpec {
   std::string otherwise;
   std::string when;   // an optional argument; the condition applies only when it is given
   Location at;
+  friend bool operator==(const ValiditySpec&, const ValiditySpec&) = default;
 };
 
 /// Checks on the description: `passes_over` requires a string path to run over the point;
@@ -76,6 +83,7 @@ struct CheckSpec {
   std::string arg;
   Location at;
   std::string when;
+  friend bool operator==(const CheckSpec&, const CheckSpec&) = default;
 };
 
 /// An assumption the rule stands for, printed in the derivation; `when`: only when that
@@ -83,6 +91,7 @@ struct CheckSpec {
 struct Assumption {
   std::string text;
   std::string when;
+  friend bool operator==(const Assumption&, const Assumption&) = default;
 };
 
 struct Rule {
@@ -113,6 +122,17 @@ struct Rule {
   Location at;
 
   [[nodiscard]] const ArgSpec* arg(const std::string& key) const;
+  friend bool operator==(const Rule&, const Rule&) = default;
+};
+
+/// A rule file compiled into the program (src/ruleset/embed_rules.cpp writes them at build
+/// time from rules/): its name and text, and the rule parse_rule() makes of that text, its
+/// locations naming no file. A file with that name and that very text is not read again;
+/// any other text (an edited rule, another directory's) is.
+struct BuiltinRule {
+  std::string_view name;  // the file's name, e.g. "hinge.yaml"
+  std::string_view text;
+  Rule (*make)();
 };
 
 /// The rules by type. A rule file whose type is plain to see (a top-level `type: name` line)
@@ -125,8 +145,9 @@ class RuleSet {
   RuleSet(const RuleSet& other);
   RuleSet& operator=(const RuleSet& other);
   void add(Rule r);
-  /// A rule read when it is first asked for: `text` of `file`, whose type is `type`.
-  void add_pending(const std::string& type, std::string text, std::string file);
+  /// A rule read when it is first asked for: `text` of `file`, whose type is `type`; made by
+  /// `builtin` instead of read when that is the same file compiled in.
+  void add_pending(const std::string& type, std::string text, std::string file, const BuiltinRule* builtin = nullptr);
   [[nodiscard]] const Rule* find(const std::string& type) const;
   [[nodiscard]] std::vector<std::string> names() const;
   /// Reads every rule not yet read; all their problems at once (InputError).
@@ -135,6 +156,7 @@ class RuleSet {
  private:
   struct Pending {
     std::string text, file;
+    const BuiltinRule* builtin = nullptr;
   };
   mutable std::map<std::string, Rule> rules_;
   mutable std::map<std::string, Pending> pending_;
@@ -145,8 +167,13 @@ enum class RuleLoading { when_used, all };
 
 /// Reads the `*.yaml` in `dir` (sorted by name): each rule's type at once, the rest when it
 /// is used (`when_used`), or everything now (`all`: every problem of every file at once).
-/// Two files with one type are an error either way.
-[[nodiscard]] RuleSet load_rules(const std::string& dir, RuleLoading how = RuleLoading::when_used);
+/// Two files with one type are an error either way. A file that is one of `builtins` (the
+/// same name and text) is made from it when used, not parsed (reading the YAML of three rules
+/// was a fifth of a small problem's run).
+[[nodiscard]] RuleSet load_rules(const std::string& dir, RuleLoading how = RuleLoading::when_used,
+                                 std::span<const BuiltinRule> builtins = {});
+/// The rule of a builtin, its locations naming `file`.
+[[nodiscard]] Rule made_from(const BuiltinRule& builtin, const std::string& file);
 /// One rule from text (tests).
 [[nodiscard]] Rule parse_rule(const std::string& text, const std::string& file);
 
