@@ -4,6 +4,7 @@
 #include "expr/pairs.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <cctype>
 #include <optional>
 #include <memory>
@@ -321,13 +322,24 @@ void print_add_terms(const add& s, const print_context& c) {
     t.f.negative = false;
     (negative ? neg : pos).push_back(std::move(t));
   }
-  // By key; two terms with the same key (2*x and x*y^0...) by their full text.
+  // By key; two terms with the same key (2*x and x*y^0...) by their full text. The terms are
+  // sorted by index (moving a term moves its fraction: most of sorting a chain's sums of 256
+  // masses).
   auto by_key = [&](const Term& a, const Term& b) {
     if (a.key != b.key) return natural_less(a.key, b.key);
     return fraction_text(a.f, c, add_prec) < fraction_text(b.f, c, add_prec);
   };
-  std::sort(pos.begin(), pos.end(), by_key);
-  std::sort(neg.begin(), neg.end(), by_key);
+  auto in_order = [&](std::vector<Term>& terms) {
+    std::vector<std::size_t> order(terms.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return by_key(terms[a], terms[b]); });
+    std::vector<Term> out;
+    out.reserve(terms.size());
+    for (const std::size_t i : order) out.push_back(std::move(terms[i]));
+    terms = std::move(out);
+  };
+  in_order(pos);
+  in_order(neg);
   std::ostream& os = c.s;
   bool first = true;
   // In LaTeX, a run of five or more names with one base and consecutive indices (m_1 + m_2
