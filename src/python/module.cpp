@@ -16,6 +16,7 @@
 #include "expr/print.hpp"
 #include "pipeline/pipeline.hpp"
 #include "report/key.hpp"
+#include "ruleset/builtin_rules.hpp"
 
 namespace py = pybind11;
 
@@ -39,7 +40,8 @@ std::string module_rules_dir() {
 class Problem {
  public:
   Problem(const std::string& path, const std::string& phase, const std::string& rules_dir)
-      : rules_(tackle::load_rules(rules_dir.empty() ? module_rules_dir() : rules_dir)),
+      : rules_(tackle::load_rules(rules_dir.empty() ? module_rules_dir() : rules_dir, tackle::RuleLoading::when_used,
+                                  tackle::builtin_rules())),
         whole_(tackle::analyze_file(path, rules_)) {
     std::string problem;
     analysis_ = tackle::pick_phase(*whole_, phase, problem);
