@@ -1,9 +1,9 @@
 // The tackle command: a thin shell over the library. Exit codes: 0 ok, 1 input error,
 // 2 usage error, 3 internal error.
+#include <algorithm>
 #include <functional>
 #include <iostream>
 #include <optional>
-#include <set>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
@@ -362,11 +362,11 @@ int main(int argc, char** argv) {
   };
   // Every subcommand is made, but only the one asked for gets its options (all of them when
   // none is named, as for --help): making them all was a third of a short run's start-up.
-  const std::string asked = asked_subcommand(argc, argv);
-  const std::set<std::string> names{"derive", "solve", "isolate", "key", "sheet", "sweep", "simulate", "check"};
-  auto add = [&](const std::string& name, const std::string& description, const std::function<void(CLI::App*)>& define) {
+  // The options are defined once every subcommand is there (below).
+  std::vector<std::pair<CLI::App*, std::function<void(CLI::App*)>>> definitions;
+  auto add = [&](const std::string& name, const std::string& description, std::function<void(CLI::App*)> define) {
     CLI::App* sub = app.add_subcommand(name, description);
-    if (names.count(asked) == 0 || asked == name) define(sub);
+    definitions.emplace_back(sub, std::move(define));
     return sub;
   };
   auto* derive = add("derive", "Print the derivation: FBD equations, constraints, solve, results", with_common_options);
@@ -469,6 +469,10 @@ int main(int argc, char** argv) {
     unknown_opt->needs(answer_opt);
     batch_opt->excludes(answer_opt);
   });
+  const std::string asked = asked_subcommand(argc, argv);
+  const bool named = std::any_of(definitions.begin(), definitions.end(), [&](const auto& d) { return d.first->get_name() == asked; });
+  for (const auto& [sub, define] : definitions)
+    if (!named || sub->get_name() == asked) define(sub);
 
   try {
     app.parse(argc, argv);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <map>
 #include <string>
 #include <unordered_map>
@@ -257,9 +258,8 @@ ModularAt power_mod(u64 b, const numeric& exponent) {
   }
   // b^(p-1) = 1 for b != 0: the exponent counts modulo p - 1 (in machine integers when it
   // fits, as in mod_of).
-  const u64 k = cln::integer_length(x) < 63
-                    ? static_cast<u64>(cln::cl_I_to_Q(x) < 0 ? -cln::cl_I_to_Q(x) : cln::cl_I_to_Q(x)) % (P - 1)
-                    : cln::cl_I_to_UQ(cln::mod(cln::abs(x), cln::cl_I(P - 1)));
+  const u64 k = cln::integer_length(x) < 63 ? static_cast<u64>(std::llabs(cln::cl_I_to_Q(x))) % (P - 1)
+                                            : cln::cl_I_to_UQ(cln::mod(cln::abs(x), cln::cl_I(P - 1)));
   const u64 v = mod_pow(b, k);
   return {Kind::value, cln::minusp(x) ? mod_inverse(v) : v};
 }
@@ -432,22 +432,28 @@ std::size_t node_count(const ex& e, std::size_t limit) {
 
 namespace {
 
+// The whole powers of the symbols in one term of an expanded polynomial, added to `p`; a
+// product by its stored pairs (a term's number has no symbol in it).
+template <class Powers>
+void add_symbol_powers(const ex& term, Powers& p) {
+  auto one = [&](const ex& base, const ex& expo) {
+    if (is_exactly<symbol>(base) && expo.info(info_flags::nonnegint)) p[base] += ex_to<numeric>(expo).to_int();
+  };
+  if (is_exactly<mul>(term))
+    for (const auto& f : Pairs::of(term)) one(f.rest, f.coeff);
+  else if (is_exactly<power>(term))
+    one(term.op(0), term.op(1));
+  else
+    one(term, 1);
+}
+
 Degrees degrees_of_uncached(const ex& expanded) {
   // One pass over the terms with the symbols kept by hash (a map per term, ordered by
   // ex_is_less, was most of the time of factoring a chain's closed forms); ordered at the end.
-  // Sums and products by their stored pairs (a term's number has no symbol in it).
   using Powers = std::unordered_map<ex, int, ExHash, ex_is_equal>;
-  auto one = [](const ex& base, const ex& expo, Powers& p) {
-    if (is_exactly<symbol>(base) && expo.info(info_flags::nonnegint)) p[base] += ex_to<numeric>(expo).to_int();
-  };
   auto powers = [&](const ex& term, Powers& p) {
     p.clear();
-    if (is_exactly<mul>(term))
-      for (const auto& f : Pairs::of(term)) one(f.rest, f.coeff, p);
-    else if (is_exactly<power>(term))
-      one(term.op(0), term.op(1), p);
-    else
-      one(term, 1, p);
+    add_symbol_powers(term, p);
   };
   Powers high, low, p;
   bool first = true;
@@ -486,12 +492,10 @@ Degrees degrees_of_uncached(const ex& expanded) {
 
 }  // namespace
 
-// Remembered per thread (the last 1024 polynomials): a chain's closed forms share one
-// denominator, and a numerator's degrees are asked for by each step of its factoring.
 std::map<ex, int, ex_is_less> low_degrees(const ex& expanded) {
   std::map<ex, int, ex_is_less> low;
   // The power of a symbol in a term (0 when it is not there or not to a whole power).
-  auto power_in = [](const ex& term, const ex& x) -> int {
+  auto degree_in = [](const ex& term, const ex& x) -> int {
     auto one = [&](const ex& base, const ex& expo) {
       return is_exactly<symbol>(base) && base.is_equal(x) && expo.info(info_flags::nonnegint) ? ex_to<numeric>(expo).to_int() : 0;
     };
@@ -503,31 +507,20 @@ std::map<ex, int, ex_is_less> low_degrees(const ex& expanded) {
     if (is_exactly<power>(term)) return one(term.op(0), term.op(1));
     return one(term, 1);
   };
-  auto first_powers = [&](const ex& term) {
-    auto one = [&](const ex& base, const ex& expo) {
-      if (is_exactly<symbol>(base) && expo.info(info_flags::nonnegint)) low[base] += ex_to<numeric>(expo).to_int();
-    };
-    if (is_exactly<mul>(term))
-      for (const auto& f : Pairs::of(term)) one(f.rest, f.coeff);
-    else if (is_exactly<power>(term))
-      one(term.op(0), term.op(1));
-    else
-      one(term, 1);
-  };
   if (!is_exactly<add>(expanded)) {
-    first_powers(expanded);
+    add_symbol_powers(expanded, low);
     return low;
   }
   if (!Pairs::overall(expanded).is_zero()) return low;  // a term without symbols
   bool first = true;
   for (const auto& t : Pairs::of(expanded)) {
     if (first) {
-      first_powers(t.rest);
+      add_symbol_powers(t.rest, low);
       first = false;
       continue;
     }
     for (auto it = low.begin(); it != low.end();) {
-      const int k = power_in(t.rest, it->first);
+      const int k = degree_in(t.rest, it->first);
       if (k == 0) {
         it = low.erase(it);
       } else {
@@ -541,13 +534,12 @@ std::map<ex, int, ex_is_less> low_degrees(const ex& expanded) {
 }
 
 Content content_of(const ex& expanded) {
-  const ex integer = expanded.integer_content();
+  const numeric c = expanded.integer_content();
   const auto low = low_degrees(expanded);
-  ex monomial = integer;
+  ex monomial = c;
   for (const auto& [x, k] : low) monomial *= pow(x, k);
-  if (!is_exactly<add>(expanded) || !expanded_polynomial(expanded) || !is_exactly<numeric>(integer) || integer.is_zero())
+  if (!is_exactly<add>(expanded) || !expanded_polynomial(expanded) || c.is_zero())
     return {monomial, (expanded / monomial).expand()};
-  const numeric& c = ex_to<numeric>(integer);
   // A term rest*coeff over the content: rest with each common symbol's power lowered (a
   // term that is one symbol or one power holds the one common symbol there can be), coeff/c.
   auto lowered = [&](const ex& rest) -> ex {
@@ -580,6 +572,8 @@ Content content_of(const ex& expanded) {
   return {monomial, dynallocate<add>(std::move(terms), overall)};
 }
 
+// Remembered per thread (the last 1024 polynomials): a chain's closed forms share one
+// denominator, and a numerator's degrees are asked for by each step of its factoring.
 Degrees degrees_of(const ex& expanded) {
   thread_local ExMemory<Degrees> memory;
   return remembered(memory, expanded, 1024, [&] { return degrees_of_uncached(expanded); });

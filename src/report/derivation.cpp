@@ -123,7 +123,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
 
   section("Model");
   std::optional<FigureMaker> figures;  // made once, for the sketch and every balance
-  if (m.dims() == 1 && options.narrate && options.figures) {
+  const bool draw = options.narrate && options.figures;
+  if (m.dims() == 1 && draw) {
     figures.emplace(m);
     if (auto fig = figures->sketch()) {
       Step* st = step(Step::Kind::figure, fig->caption);
@@ -215,7 +216,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   std::pair<std::vector<int>, bool> drawn{{}, false};  // the body or system last drawn
   for (const auto& eq : s.equations) {
     if (eq.kind == Equation::Kind::constraint_acceleration || eq.kind == Equation::Kind::interval) continue;
-    if (options.narrate && options.figures && !eq.bodies.empty() && std::pair{eq.bodies, eq.system} != drawn) {
+    if (draw && !eq.bodies.empty() && std::pair{eq.bodies, eq.system} != drawn) {
       drawn = {eq.bodies, eq.system};
       if (!figures) figures.emplace(m);
       if (auto fig = figures->draw(eq.bodies, eq.system)) {
