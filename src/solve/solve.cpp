@@ -247,24 +247,37 @@ ex simplest_uncached(const ex& e);
 // of degree 1 in the denominator, each of its terms holding all of them but one at most),
 // made by expand() alone (no gcd), and kept only when it takes a third of the nodes of
 // `best` off: textbook problems keep their forms.
+// The product of the symbols of degree 1 in the expanded denominator d when d has the shape
+// reciprocal_form() looks for; nothing otherwise. Remembered per thread: a chain's 255
+// tensions share one denominator of 256 terms, and telling that it has not the shape was a
+// set of 256 symbols made for each.
+std::optional<ex> reciprocal_denominator(const ex& d) {
+  thread_local ExMemory<std::optional<ex>> memory;
+  return remembered(memory, d, 1024, [&]() -> std::optional<ex> {
+    if (!is_exactly<add>(d) || !is_polynomial_in_symbols(d)) return std::nullopt;
+    std::set<ex, ex_is_less> inverted;
+    for (const auto& [x, high] : degrees_of(d).high)
+      if (high == 1) inverted.insert(x);
+    if (inverted.size() < 3) return std::nullopt;
+    for (std::size_t i = 0; i < d.nops(); ++i) {
+      const ex term = d.op(i);
+      std::size_t held = 0;
+      for (const ex& x : inverted) held += term.has(x) ? 1 : 0;
+      if (held + 1 < inverted.size()) return std::nullopt;
+    }
+    ex product = 1;
+    for (const ex& x : inverted) product *= x;
+    return product;
+  });
+}
+
 std::optional<ex> reciprocal_form(const ex& n, const ex& nd, const ex& best) {
   constexpr std::size_t min_nodes = 80;
   if (node_count(best, min_nodes) < min_nodes) return std::nullopt;
   const ex d = nd.op(1).expand();
-  if (!is_exactly<add>(d) || !is_polynomial_in_symbols(nd.op(0)) || !is_polynomial_in_symbols(d)) return std::nullopt;
-  std::set<ex, ex_is_less> inverted;
-  for (const auto& [x, high] : degrees_of(d).high)
-    if (high == 1) inverted.insert(x);
-  if (inverted.size() < 3) return std::nullopt;
-  for (std::size_t i = 0; i < d.nops(); ++i) {
-    const ex term = d.op(i);
-    std::size_t held = 0;
-    for (const ex& x : inverted) held += term.has(x) ? 1 : 0;
-    if (held + 1 < inverted.size()) return std::nullopt;
-  }
-  ex product = 1;
-  for (const ex& x : inverted) product *= x;
-  const ex over = pow(product, -1);
+  const std::optional<ex> product = reciprocal_denominator(d);
+  if (!product || !is_polynomial_in_symbols(nd.op(0))) return std::nullopt;
+  const ex over = pow(*product, -1);
   const ex num = (nd.op(0) * over).expand(), den = (d * over).expand();
   // The numerator's common monomial and integer content taken out (g, 524288 g).
   const ex r = content_only(num) / den;
