@@ -201,8 +201,18 @@ bool is_negative_term(const ex& e) {
 // run to run, so split() orients every sum factor canonically: more positive than negative
 // terms, and on a tie the first term (sorted by name) positive.
 int balance_of(const ex& sum) {  // positive terms minus negative terms
+  // By the stored pairs (see pairs.hpp): a term rest*coeff has the sign of its coefficient,
+  // times the rest's own number when the rest is a product (GiNaC's evaluation moves it into
+  // the coefficient; a sum made from pairs may keep it), and the number term counts when
+  // not 0.
+  auto negative = [](const numeric& k) { return k.is_real() && k.is_negative(); };
   int b = 0;
-  for (std::size_t i = 0; i < sum.nops(); ++i) b += is_negative_term(sum.op(i)) ? -1 : 1;
+  for (const auto& p : Pairs::of(sum)) {
+    const numeric& k = ex_to<numeric>(p.coeff);
+    const bool own = is_exactly<mul>(p.rest) && !Pairs::overall(p.rest).is_equal(1);
+    b += negative(own ? k * Pairs::overall(p.rest) : k) ? -1 : 1;
+  }
+  if (const numeric& n = Pairs::overall(sum); !n.is_zero()) b += negative(n) ? -1 : 1;
   return b;
 }
 
@@ -250,15 +260,16 @@ void print_number(const numeric& n, const print_context& c, unsigned level) {
 void print_numeric_fn(const numeric& n, const print_context& c, unsigned level) { print_number(n, c, level); }
 
 // The length of the run of terms of one shape and one coefficient whose indices go up by
-// one, starting at terms[i] (m_1 + m_2 + ... + m_256; T_1 dot(x_2) + T_2 dot(x_3) + ...).
-template <class Terms>
-std::size_t index_run(const Terms& terms, std::size_t i) {
+// one, starting at terms[i] (m_1 + m_2 + ... + m_256; T_1 dot(x_2) + T_2 dot(x_3) + ...);
+// same_coefficient(a, b) tells whether terms a and b have one coefficient.
+template <class Terms, class SameCoefficient>
+std::size_t index_run(const Terms& terms, std::size_t i, SameCoefficient same_coefficient) {
   const auto first = index_shape(terms[i].key);
   if (!first) return 1;
   std::size_t n = 1;
   while (i + n < terms.size()) {
     const auto& t = terms[i + n];
-    if (t.f.num_c != terms[i].f.num_c || t.f.den_c != terms[i].f.den_c) break;
+    if (!same_coefficient(t, terms[i])) break;
     const auto next = index_shape(t.key);
     if (!next || next->first != first->first || next->second != first->second + static_cast<long>(n)) break;
     ++n;
@@ -309,7 +320,101 @@ void print_add(const add& s, const print_context& c, unsigned level) {
   if (paren) c.s << (latex ? "\\right)" : ")");
 }
 
+// Sorts the terms by `less`, moving indices rather than terms (a term holds strings and a
+// fraction: moving them was most of sorting a chain's sums of 256 masses).
+template <class Term, class Less>
+void sort_by_index(std::vector<Term>& terms, Less less) {
+  std::vector<std::size_t> order(terms.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return less(terms[a], terms[b]); });
+  std::vector<Term> out;
+  out.reserve(terms.size());
+  for (const std::size_t i : order) out.push_back(std::move(terms[i]));
+  terms = std::move(out);
+}
+
+// A sum whose terms are all names, each with coefficient 1 or -1, and no number (a chain's
+// m_1 + ... + m_256 and every partial sum of it): its terms, positive and negative, as
+// print_add_terms() would order them. Printed straight from the names: the general path
+// makes, sorts and prints a fraction for each term (most of printing a chain's closed
+// forms).
+struct NameTerm {
+  std::string key;  // the name, which is also the term's sort key
+  const symbol* name;
+  // The name as a base and the number ending it (m_12: "m_", 12), when it ends in digits
+  // without a leading zero, at most nine: names of one base are ordered by their numbers
+  // (as natural_less() orders them, without comparing strings); -1 when there is none.
+  std::size_t base = 0;
+  long index = -1;
+};
+
+NameTerm name_term(const symbol& x) {
+  NameTerm t{x.get_name(), &x};
+  const std::string& k = t.key;
+  std::size_t b = k.size();
+  while (b > 0 && std::isdigit(static_cast<unsigned char>(k[b - 1]))) --b;
+  if (b < k.size() && k.size() - b <= 9 && k[b] != '0') {
+    t.base = b;
+    t.index = std::stol(k.substr(b));
+  }
+  return t;
+}
+
+// natural_less() of the two keys.
+bool name_less(const NameTerm& a, const NameTerm& b) {
+  if (a.index >= 0 && b.index >= 0 && a.base == b.base && a.key.compare(0, a.base, b.key, 0, b.base) == 0)
+    return a.index < b.index;
+  return natural_less(a.key, b.key);
+}
+bool names_only(const add& s) {
+  const ex e(s);
+  if (!Pairs::overall(e).is_zero()) return false;
+  for (const auto& p : Pairs::of(e)) {
+    if (!is_exactly<symbol>(p.rest)) return false;
+    const numeric& k = ex_to<numeric>(p.coeff);
+    if (!k.is_equal(1) && !k.is_equal(-1)) return false;
+  }
+  return true;
+}
+
+void print_names(const add& s, const print_context& c) {
+  const bool latex = latex_ctx(c);
+  auto text = [&](const NameTerm& t) { return latex ? t.name->get_TeX_name() : t.key; };
+  std::vector<NameTerm> pos, neg;
+  const ex e(s);
+  for (const auto& p : Pairs::of(e))
+    (ex_to<numeric>(p.coeff).is_negative() ? neg : pos).push_back(name_term(ex_to<symbol>(p.rest)));
+  // By key, then by the text printed (two names alike: the general path's tie-break).
+  auto by_key = [&](const NameTerm& a, const NameTerm& b) {
+    if (a.key != b.key) return name_less(a, b);
+    return text(a) < text(b);
+  };
+  sort_by_index(pos, by_key);
+  sort_by_index(neg, by_key);
+  std::ostream& os = c.s;
+  bool first = true;
+  auto print_terms = [&](const std::vector<NameTerm>& terms, const char* sign) {
+    for (std::size_t i = 0; i < terms.size();) {
+      const std::size_t run = latex ? index_run(terms, i, [](const NameTerm&, const NameTerm&) { return true; }) : 1;
+      os << (first ? (sign[1] == '-' ? "-" : "") : sign) << text(terms[i]);
+      first = false;
+      if (run >= 5) {
+        os << sign << "\\dots" << sign << text(terms[i + run - 1]);
+        i += run;
+      } else {
+        ++i;
+      }
+    }
+  };
+  print_terms(pos, " + ");
+  print_terms(neg, " - ");
+}
+
 void print_add_terms(const add& s, const print_context& c) {
+  if (names_only(s)) {
+    print_names(s, c);
+    return;
+  }
   const bool latex = latex_ctx(c);
   struct Term {
     Fraction f;
@@ -322,24 +427,13 @@ void print_add_terms(const add& s, const print_context& c) {
     t.f.negative = false;
     (negative ? neg : pos).push_back(std::move(t));
   }
-  // By key; two terms with the same key (2*x and x*y^0...) by their full text. The terms are
-  // sorted by index (moving a term moves its fraction: most of sorting a chain's sums of 256
-  // masses).
+  // By key; two terms with the same key (2*x and x*y^0...) by their full text.
   auto by_key = [&](const Term& a, const Term& b) {
     if (a.key != b.key) return natural_less(a.key, b.key);
     return fraction_text(a.f, c, add_prec) < fraction_text(b.f, c, add_prec);
   };
-  auto in_order = [&](std::vector<Term>& terms) {
-    std::vector<std::size_t> order(terms.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return by_key(terms[a], terms[b]); });
-    std::vector<Term> out;
-    out.reserve(terms.size());
-    for (const std::size_t i : order) out.push_back(std::move(terms[i]));
-    terms = std::move(out);
-  };
-  in_order(pos);
-  in_order(neg);
+  sort_by_index(pos, by_key);
+  sort_by_index(neg, by_key);
   std::ostream& os = c.s;
   bool first = true;
   // In LaTeX, a run of five or more names with one base and consecutive indices (m_1 + m_2
@@ -347,7 +441,9 @@ void print_add_terms(const add& s, const print_context& c) {
   // kept whole: it is read back by programs.
   auto print_terms = [&](const std::vector<Term>& terms, const char* sign) {
     for (std::size_t i = 0; i < terms.size();) {
-      const std::size_t run = latex ? index_run(terms, i) : 1;
+      const std::size_t run =
+          latex ? index_run(terms, i, [](const Term& a, const Term& b) { return a.f.num_c == b.f.num_c && a.f.den_c == b.f.den_c; })
+                : 1;
       os << (first ? (sign[1] == '-' ? "-" : "") : sign);
       print_fraction(terms[i].f, c, add_prec);
       first = false;

@@ -29,3 +29,20 @@ TEST_CASE("Printer: the same expression prints the same however it was built", "
   CHECK(to_text(z + y + x) == to_text(x + y + z));
   CHECK(to_text(z * y * x) == "x*y*z");
 }
+
+TEST_CASE("Printer: a sum of names is ordered as a person orders indexed names", "[print]") {
+  std::vector<possymbol> m;
+  for (int i = 0; i <= 12; ++i) m.emplace_back("m_" + std::to_string(i), "m_{" + std::to_string(i) + "}");
+  const possymbol x("x"), m02("m_02", "m_{02}"), T3("T_3", "T_{3}"), T12("T_12", "T_{12}"), a2("a_2"), b1("b_1");
+  CHECK(to_text(m[10] + m[2] + m[1] + x - T12 - T3) == "m_1 + m_2 + m_10 + x - T_3 - T_12");
+  // Equal numbers: the run without a leading zero first, as natural_less orders them.
+  CHECK(to_text(m02 + m[2] + m[1]) == "m_1 + m_2 + m_02");
+  CHECK(to_text(-m[2] - m[1]) == "-m_1 - m_2");
+  CHECK(to_text(b1 + a2) == "a_2 + b_1");
+  CHECK(to_latex(m[4] + m[3] + m[2] + m[1]) == "m_{1} + m_{2} + m_{3} + m_{4}");
+  CHECK(to_latex(m[5] + m[4] + m[3] + m[2] + m[1] + m[7]) == "m_{1} + \\dots + m_{5} + m_{7}");
+  CHECK(to_latex(-m[12] - m[11] - m[10] - m[9] - m[8]) == "-m_{8} - \\dots - m_{12}");
+  // A sum of names inside a product: its sign as a textbook writes it.
+  const possymbol F("F"), g("g"), T("T");
+  CHECK(to_text(F * (m[1] - m[2] - g) / T) == "-F*(g + m_2 - m_1)/T");
+}
