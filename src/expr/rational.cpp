@@ -133,7 +133,9 @@ namespace {
 // rational_at in CLN's rationals: one number object per node instead of a GiNaC numeric
 // (each a new heap object with its own hash), and classes told apart by their class-info
 // address (is_a<> is a dynamic_cast that compares type names across libraries).
-RationalAt::Kind rational_in(const ex& e, const RationalPoint& point, cln::cl_RA& out);
+// `value_of(symbol)` is the symbol's number, or null.
+template <class ValueOf>
+RationalAt::Kind rational_in(const ex& e, const ValueOf& value_of, cln::cl_RA& out);
 
 // b^x for an integer x; a pole for 0 to a negative power.
 RationalAt::Kind power_in(const cln::cl_RA& b, const numeric& exponent, cln::cl_RA& out) {
@@ -143,15 +145,11 @@ RationalAt::Kind power_in(const cln::cl_RA& b, const numeric& exponent, cln::cl_
   return RationalAt::Kind::value;
 }
 
-RationalAt::Kind rational_in(const ex& e, const RationalPoint& point, cln::cl_RA& out) {
+template <class ValueOf>
+RationalAt::Kind rational_in(const ex& e, const ValueOf& value_of, cln::cl_RA& out) {
   using Kind = RationalAt::Kind;
   if (is_exactly<numeric>(e) || is_exactly<symbol>(e)) {
-    const numeric* c = nullptr;
-    if (is_exactly<numeric>(e)) {
-      c = &ex_to<numeric>(e);
-    } else if (const auto it = point.find(e); it != point.end()) {
-      c = &it->second;
-    }
+    const numeric* c = is_exactly<numeric>(e) ? &ex_to<numeric>(e) : value_of(e);
     if (!c || !c->is_rational()) return Kind::other;
     out = cln::the<cln::cl_RA>(c->to_cl_N());
     return Kind::value;
@@ -165,7 +163,7 @@ RationalAt::Kind rational_in(const ex& e, const RationalPoint& point, cln::cl_RA
     for (const auto& p : Pairs::of(e)) {
       const numeric& k = ex_to<numeric>(p.coeff);
       if (sum ? !k.is_rational() : !k.is_integer()) return Kind::other;
-      if (const Kind r = rational_in(p.rest, point, t); r != Kind::value) return r;
+      if (const Kind r = rational_in(p.rest, value_of, t); r != Kind::value) return r;
       if (sum) {
         acc = acc + t * cln::the<cln::cl_RA>(k.to_cl_N());
       } else {
@@ -178,7 +176,7 @@ RationalAt::Kind rational_in(const ex& e, const RationalPoint& point, cln::cl_RA
   }
   if (is_exactly<power>(e) && is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer()) {
     cln::cl_RA b;
-    if (const Kind k = rational_in(e.op(0), point, b); k != Kind::value) return k;
+    if (const Kind k = rational_in(e.op(0), value_of, b); k != Kind::value) return k;
     return power_in(b, ex_to<numeric>(e.op(1)), out);
   }
   return Kind::other;
@@ -186,11 +184,31 @@ RationalAt::Kind rational_in(const ex& e, const RationalPoint& point, cln::cl_RA
 
 }  // namespace
 
-RationalAt rational_at(const ex& e, const RationalPoint& point) {
+namespace {
+
+template <class ValueOf>
+RationalAt rational_at_with(const ex& e, const ValueOf& value_of) {
   cln::cl_RA v;
-  const RationalAt::Kind k = rational_in(e, point, v);
+  const RationalAt::Kind k = rational_in(e, value_of, v);
   if (k == RationalAt::Kind::value) return {k, numeric(v)};
   return {k, 0};
+}
+
+}  // namespace
+
+RationalAt rational_at(const ex& e, const RationalPoint& point) {
+  return rational_at_with(e, [&](const ex& x) -> const numeric* {
+    const auto it = point.find(x);
+    return it == point.end() ? nullptr : &it->second;
+  });
+}
+
+RationalAt rational_at(const ex& e, const exmap& values) {
+  return rational_at_with(e, [&](const ex& x) -> const numeric* {
+    const auto it = values.find(x);
+    if (it == values.end() || !is_exactly<numeric>(it->second)) return nullptr;
+    return &ex_to<numeric>(it->second);
+  });
 }
 
 numeric drawn_value(const std::string& name, std::uint64_t seed) {
@@ -447,6 +465,20 @@ void add_symbol_powers(const ex& term, Powers& p) {
     one(term, 1);
 }
 
+// `low` keeps only the symbols also in `p`, each at the lesser of its two powers.
+template <class Low, class Powers>
+void keep_least(Low& low, const Powers& p) {
+  for (auto it = low.begin(); it != low.end();) {
+    const auto q = p.find(it->first);
+    if (q == p.end()) {
+      it = low.erase(it);
+    } else {
+      it->second = std::min(it->second, q->second);
+      ++it;
+    }
+  }
+}
+
 Degrees degrees_of_uncached(const ex& expanded) {
   // One pass over the terms with the symbols kept by hash (a map per term, ordered by
   // ex_is_less, was most of the time of factoring a chain's closed forms); ordered at the end.
@@ -468,15 +500,7 @@ Degrees degrees_of_uncached(const ex& expanded) {
       first = false;
       return;
     }
-    for (auto it = low.begin(); it != low.end();) {
-      const auto q = p.find(it->first);
-      if (q == p.end()) {
-        it = low.erase(it);
-      } else {
-        it->second = std::min(it->second, q->second);
-        ++it;
-      }
-    }
+    keep_least(low, p);
   };
   if (is_exactly<add>(expanded)) {
     for (const auto& t : Pairs::of(expanded)) take(t.rest);
@@ -538,6 +562,9 @@ Content content_of(const ex& expanded) {
   const auto low = low_degrees(expanded);
   ex monomial = c;
   for (const auto& [x, k] : low) monomial *= pow(x, k);
+  // Nothing to take out: the polynomial itself (the term-by-term walk below would make it
+  // again).
+  if (c.is_equal(1) && low.empty() && expanded_polynomial(expanded)) return {monomial, expanded};
   if (!is_exactly<add>(expanded) || !expanded_polynomial(expanded) || c.is_zero())
     return {monomial, (expanded / monomial).expand()};
   // A term rest*coeff over the content: rest with each common symbol's power lowered (a
@@ -570,6 +597,49 @@ Content content_of(const ex& expanded) {
       terms.emplace_back(r, coeff);
   }
   return {monomial, dynallocate<add>(std::move(terms), overall)};
+}
+
+std::optional<Content> content_of_product(const ex& p, std::size_t min_terms) {
+  if (!is_exactly<mul>(p)) return std::nullopt;
+  const numeric& k = Pairs::overall(p);
+  if (!k.is_integer()) return std::nullopt;
+  ex sum;
+  ex monomial = abs(k);
+  for (const auto& f : Pairs::of(p)) {
+    const numeric& e = ex_to<numeric>(f.coeff);
+    if (is_exactly<add>(f.rest) && e.is_equal(1) && sum.is_zero()) {
+      sum = f.rest;
+    } else if (is_exactly<symbol>(f.rest) && e.is_pos_integer()) {
+      monomial *= pow(f.rest, e);
+    } else {
+      return std::nullopt;
+    }
+  }
+  if (sum.is_zero() || sum.nops() <= min_terms || !expanded_polynomial(sum) || !primitive_sum(sum) ||
+      !low_degrees(sum).empty())
+    return std::nullopt;
+  return Content{monomial, k.is_negative() ? ex(-sum) : sum};
+}
+
+ex common_monomial(const std::vector<ex>& terms) {
+  std::map<ex, int, ex_is_less> low;
+  bool first = true;
+  for (const ex& t : terms) {
+    if (t.is_zero()) continue;
+    std::map<ex, int, ex_is_less> p;
+    add_symbol_powers(t, p);
+    if (first) {
+      low = std::move(p);
+      first = false;
+    } else {
+      keep_least(low, p);
+    }
+    std::erase_if(low, [](const auto& x) { return x.second == 0; });
+    if (low.empty()) return 1;
+  }
+  ex out = 1;
+  for (const auto& [x, k] : low) out *= pow(x, k);
+  return out;
 }
 
 // Remembered per thread (the last 1024 polynomials): a chain's closed forms share one

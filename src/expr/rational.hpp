@@ -64,6 +64,9 @@ Value remembered(ExMemory<Value>& memory, const GiNaC::ex& key, std::size_t limi
   return v;
 }
 [[nodiscard]] RationalAt rational_at(const GiNaC::ex& e, const RationalPoint& point);
+/// The same with the values given as an exmap (a symbol whose value is not a number is not
+/// given); for a few values looked up once, without making a point.
+[[nodiscard]] RationalAt rational_at(const GiNaC::ex& e, const GiNaC::exmap& values);
 
 /// The value drawn for a symbol of this name with this seed: an integer from 1 to 2^40 made
 /// from the name (the same in every run and for every expression), so that no pass over an
@@ -155,6 +158,24 @@ struct Content {
   GiNaC::ex content, rest;
 };
 [[nodiscard]] Content content_of(const GiNaC::ex& expanded);
+
+/// A sum of more terms than this is not given to factor(): factoring it takes long and
+/// rarely shortens it (see canonical_factors); only its content is taken out.
+inline constexpr std::size_t factor_term_limit = 16;
+
+/// content_of(p.expand()) without expanding p, when p is a product of an integer, whole
+/// powers of symbols and one expanded sum S of more than `min_terms` terms with integer
+/// coefficients, no common factor (the first one positive, as evaluation leaves a sum in a
+/// product) and no symbol in every term: the content is |k| x^a y^b ..., the rest S (-S for
+/// k < 0). A chain's numerators F*(m_2 + ... + m_256): expanding them and taking F out
+/// again was a sixth of solving a chain of 256. Nothing for any other p.
+[[nodiscard]] std::optional<Content> content_of_product(const GiNaC::ex& p, std::size_t min_terms);
+
+/// The monomial every one of `terms` holds as a factor, each term read as a product without
+/// expanding it: the least whole power of each symbol that is a factor of every term (F in
+/// F*(m_1 + m_2) and -m_3*F). Terms that are 0 are skipped; 1 when there is none (a term
+/// that is a sum holds no symbol as a factor).
+[[nodiscard]] GiNaC::ex common_monomial(const std::vector<GiNaC::ex>& terms);
 
 /// An expanded polynomial of degree 1 in some symbol x that it is not divisible by, whose
 /// coefficients of x^1 and x^0 have no common factor: it is irreducible (a factor would be

@@ -189,6 +189,20 @@ bool may_divide(const ex& p, const ex& g) {
   return at.kind != RationalAt::Kind::value || at.value == 0;
 }
 
+// monomial * sum, expanded; or as a product when it is a monomial times a long primitive
+// sum (see content_of_product), the form simplest() factors it into: a chain's tensions
+// F*(m_2 + ... + m_256), whose expansion (F*m_2 + ... + F*m_256) simplest() took F out of
+// again, a sixth of solving a chain of 256.
+ex numerator_of(const ex& monomial, const ex& sum) {
+  if (is_exactly<add>(sum) && sum.nops() > factor_term_limit) {
+    const Content c = content_of(sum);
+    const ex p = monomial * c.content * c.rest;
+    if (content_of_product(p, factor_term_limit)) return p;
+  }
+  const ex p = monomial * sum;
+  return expanded_polynomial(p) ? p : p.expand();
+}
+
 // (b - sum of v x) / pivot in normal form without a gcd, in the common case of a chain or a
 // cascade: b and each v polynomials, the pivot a number or a product of irreducible
 // polynomials, and every x a polynomial or a fraction whose denominator is such a product
@@ -236,21 +250,29 @@ std::optional<ex> quick_quotient(const ex& b, const std::vector<std::pair<ex, ex
       if (!holds(have, g)) e *= g;
     return e;
   };
-  ex num = over_common(b, {});
-  for (const auto& p : parts) num -= over_common(p.numerator, p.factors);
-  if (c != 1) num = num / c;
-  if (!expanded_polynomial(num)) num = num.expand();
+  std::vector<ex> pieces{over_common(b, {})};  // the numerator is their sum
+  for (const auto& p : parts) pieces.push_back(-over_common(p.numerator, p.factors));
+  // A monomial held by every piece (a chain's F: each tension is F times a sum of masses) is
+  // kept out of the expansion: the numerator is that monomial times the rest expanded, and
+  // stays so when the rest is a long sum (see content_of_product), as simplest() would
+  // factor it. Otherwise the numerator is expanded whole.
+  ex monomial = common_monomial(pieces) / c, num = 0;
+  for (const ex& p : pieces) num += p;
+  num = (num / (monomial * c)).expand();
   if (num.is_zero()) return ex(0);
   std::vector<ex> den = common;
   den.insert(den.end(), pivot_factors.begin(), pivot_factors.end());
   ex kept = 1;  // the factors that do not divide the numerator
   for (const ex& g : den) {
     ex q;
-    if (may_divide(num, g) && divide(num, g, q))
+    if (is_exactly<symbol>(g) && monomial.degree(g) > 0)
+      monomial /= g;
+    else if (may_divide(num, g) && divide(num, g, q))
       num = q.expand();
     else
       kept *= g;
   }
+  num = numerator_of(monomial, num);
   // Made without evaluating where GiNaC's evaluation would leave it as it is (a chain's
   // values over m_1 + ... + m_256: the sum's integer content, taken at each evaluation).
   const auto held = evaluated_quotient(num, kept);

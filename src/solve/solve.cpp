@@ -126,7 +126,6 @@ ex content_only(const ex& expanded) {
   return c.content * c.rest;
 }
 
-constexpr std::size_t factor_term_limit = 16;
 // And a sum of more than 8 terms in more than 8 symbols (functions standing in as symbols
 // count): one such sum of 12 terms in 11 symbols took factor() 70 ms of a 95 ms run (a
 // damped, driven block's response), for no shorter form.
@@ -152,7 +151,12 @@ bool too_wide(const ex& expanded) {
 
 namespace {
 
-std::vector<ex> canonical_factors_uncached(const ex& polynomial) {
+// The factors of a polynomial: a number, powers of symbols and sums, as factor() or (for
+// long or wide sums) content_only() finds them.
+ex factors_found(const ex& polynomial) {
+  // A long primitive sum times a monomial (the back substitution's numerators): the content
+  // content_only() finds in its expansion, without expanding it.
+  if (const auto c = content_of_product(polynomial, factor_term_limit)) return c->content * c->rest;
   // sin(theta) and the like stand in as symbols while factoring (factor() leaves a sum with
   // them unfactored), and are put back in each factor.
   exmap repl;
@@ -160,7 +164,11 @@ std::vector<ex> canonical_factors_uncached(const ex& polynomial) {
   const ex expanded = p.expand();
   const bool plain = (is_a<add>(expanded) && expanded.nops() > factor_term_limit) || too_wide(expanded) ||
                      linear_and_primitive(expanded);
-  const ex f = substituted(plain ? content_only(expanded) : factor(p), repl);
+  return substituted(plain ? content_only(expanded) : factor(p), repl);
+}
+
+std::vector<ex> canonical_factors_uncached(const ex& polynomial) {
+  const ex f = factors_found(polynomial);
   std::vector<ex> raw;
   if (is_a<mul>(f))
     for (std::size_t i = 0; i < f.nops(); ++i) raw.push_back(f.op(i));
@@ -616,10 +624,14 @@ namespace {
 // The rate or position level: the constraints' equations at that level, solved for the
 // rates (coordinates) of the bodies that are not given. Only when a question needs it.
 std::optional<Solution> solve_level(const Model& model, const std::vector<Equation>& equations, SymbolRole role) {
-  bool asked = false;
+  // The symbols of the questions gathered once (has() of each symbol in each question was
+  // quadratic: a chain of 256 asks 511 questions of 768 symbols).
+  std::unordered_set<ex, ExHash, ex_is_equal> in_questions;
   for (const auto& w : model.wanted)
-    for (const auto& sym : model.symbols->all())
-      if (sym->role == role && w.expr.has(sym->sym)) asked = true;
+    for (const ex& x : distinct_symbols(w.expr)) in_questions.insert(x);
+  bool asked = false;
+  for (const auto& sym : model.symbols->all())
+    if (sym->role == role && in_questions.count(sym->sym) != 0) asked = true;
   if (!asked || equations.empty()) return std::nullopt;
   std::vector<ex> unknowns;
   for (const auto& b : model.bodies) {

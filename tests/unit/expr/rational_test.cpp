@@ -89,6 +89,14 @@ TEST_CASE("Rational at: exact values and poles", "[rational]") {
   CHECK(r.value == numeric(19, 2));
   RationalPoint zero{{a, numeric(2)}, {b, numeric(2)}};
   CHECK(rational_at(1 / (a - b), zero).kind == RationalAt::Kind::pole);
+  // The same from an exmap; a value that is not a number is not given.
+  const exmap values{{a, numeric(1, 3)}, {b, numeric(2)}};
+  const RationalAt m = rational_at(pow(a, -2) + b / 4, values);
+  REQUIRE(m.kind == RationalAt::Kind::value);
+  CHECK(m.value == numeric(19, 2));
+  CHECK(rational_at(1 / (a - b), exmap{{a, numeric(2)}, {b, numeric(2)}}).kind == RationalAt::Kind::pole);
+  CHECK(rational_at(a + b, exmap{{a, numeric(1)}, {b, a}}).kind == RationalAt::Kind::other);
+  CHECK(rational_at(a + b, exmap{{a, numeric(1)}}).kind == RationalAt::Kind::other);
 }
 
 TEST_CASE("Trig: sin and cos and their powers found by structure", "[rational]") {
@@ -185,6 +193,53 @@ TEST_CASE("Content: the integer and monomial content, and the rest term by term 
   const Content big = content_of(sum);
   CHECK(big.content.is_equal(F));
   CHECK(big.rest.is_equal(masses));
+}
+
+TEST_CASE("Content of a product: a monomial times a long primitive sum, as content_of() of its expansion", "[rational]") {
+  const symbol F("F"), x("x"), s("s");
+  ex masses = 0;
+  for (int i = 1; i <= 20; ++i) masses += symbol("m_" + std::to_string(i));
+  const ex wide = masses + 3 * s * x - 2;  // integer coefficients without a common factor
+  // Worked by hand: |k| x^a ..., and the sum (negated for k < 0).
+  struct Case {
+    ex p, content, rest;
+  };
+  const std::vector<Case> cases{
+      {F * masses, F, masses},
+      {-3 * pow(F, 2) * x * wide, 3 * pow(F, 2) * x, -wide},
+      {7 * x * wide, 7 * x, wide},
+  };
+  for (const auto& c : cases) {
+    const auto got = content_of_product(c.p, factor_term_limit);
+    REQUIRE(got);
+    CHECK(got->content.is_equal(c.content));
+    CHECK(got->rest.is_equal(c.rest));
+    // The same as the expansion's content.
+    const Content expanded = content_of(c.p.expand());
+    CHECK(got->content.is_equal(expanded.content));
+    CHECK(got->rest.is_equal(expanded.rest));
+  }
+  // Not that shape: nothing.
+  ex short_sum = 0;
+  for (int i = 1; i <= 16; ++i) short_sum += symbol("n_" + std::to_string(i));
+  CHECK_FALSE(content_of_product(F * short_sum, factor_term_limit));            // 16 terms, not more
+  CHECK_FALSE(content_of_product(F * (x * masses).expand(), factor_term_limit));  // x in every term
+  CHECK_FALSE(content_of_product(F * masses * wide, factor_term_limit));        // two sums
+  CHECK_FALSE(content_of_product(sin(x) * masses, factor_term_limit));          // a function
+  CHECK_FALSE(content_of_product(masses / 3 * F, factor_term_limit));           // not an integer
+  CHECK_FALSE(content_of_product(masses, factor_term_limit));                   // not a product
+  CHECK_FALSE(content_of_product(pow(F, -1) * masses, factor_term_limit));      // a negative power
+}
+
+TEST_CASE("Common monomial: the least power of each symbol that is a factor of every term", "[rational]") {
+  const symbol F("F"), x("x"), a("a"), b("b"), m3("m_3");
+  CHECK(common_monomial({F * (a + b), -m3 * F, 0}).is_equal(F));
+  CHECK(common_monomial({pow(F, 2) * x, F * pow(x, 3) * (a + b)}).is_equal(F * x));
+  CHECK(common_monomial({2 * pow(x, 2), -x}).is_equal(x));
+  CHECK(common_monomial({a + b, F}).is_equal(1));  // a sum holds no symbol as a factor
+  CHECK(common_monomial({F, x}).is_equal(1));
+  CHECK(common_monomial({}).is_equal(1));
+  CHECK(common_monomial({0, 0}).is_equal(1));
 }
 
 TEST_CASE("Modular: integers and exponents past 62 bits and negative ones, as CLN's modular ring gives them",
