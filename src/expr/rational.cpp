@@ -134,8 +134,8 @@ namespace {
 // (each a new heap object with its own hash), and classes told apart by their class-info
 // address (is_a<> is a dynamic_cast that compares type names across libraries).
 // `value_of(symbol)` is the symbol's number, or null.
-template <class ValueOf>
-RationalAt::Kind rational_in(const ex& e, const ValueOf& value_of, cln::cl_RA& out);
+template <class ValueOf, class Sums>
+RationalAt::Kind rational_in(const ex& e, const ValueOf& value_of, cln::cl_RA& out, const Sums& sums);
 
 // b^x for an integer x; a pole for 0 to a negative power.
 RationalAt::Kind power_in(const cln::cl_RA& b, const numeric& exponent, cln::cl_RA& out) {
@@ -145,8 +145,28 @@ RationalAt::Kind power_in(const cln::cl_RA& b, const numeric& exponent, cln::cl_
   return RationalAt::Kind::value;
 }
 
-template <class ValueOf>
-RationalAt::Kind rational_in(const ex& e, const ValueOf& value_of, cln::cl_RA& out) {
+// No memory of sums' values (see SumValues).
+struct NoSums {
+  const numeric* find(const ex&) const { return nullptr; }
+  void remember(const ex&, const cln::cl_RA&) const {}
+};
+
+// Long sums' values looked up in and added to a SumValues (its mutex held by the caller).
+struct SumMemory {
+  SumValues& sums;
+  static bool long_sum(const ex& e) { return Pairs::of(e).size() > 16; }
+  const numeric* find(const ex& e) const {
+    if (!long_sum(e)) return nullptr;
+    const auto it = sums.values.find(e);
+    return it == sums.values.end() ? nullptr : &it->second;
+  }
+  void remember(const ex& e, const cln::cl_RA& v) const {
+    if (long_sum(e)) sums.values.emplace(e, numeric(v));
+  }
+};
+
+template <class ValueOf, class Sums>
+RationalAt::Kind rational_in(const ex& e, const ValueOf& value_of, cln::cl_RA& out, const Sums& sums) {
   using Kind = RationalAt::Kind;
   if (is_exactly<numeric>(e) || is_exactly<symbol>(e)) {
     const numeric* c = is_exactly<numeric>(e) ? &ex_to<numeric>(e) : value_of(e);
@@ -155,6 +175,11 @@ RationalAt::Kind rational_in(const ex& e, const ValueOf& value_of, cln::cl_RA& o
     return Kind::value;
   }
   const bool sum = is_exactly<add>(e);
+  if (sum)
+    if (const numeric* known = sums.find(e)) {
+      out = cln::the<cln::cl_RA>(known->to_cl_N());
+      return Kind::value;
+    }
   if (sum || is_exactly<mul>(e)) {
     // By the stored pairs (see pairs.hpp): a term rest*coeff, a factor rest^coeff.
     const numeric& overall = Pairs::overall(e);
@@ -163,7 +188,7 @@ RationalAt::Kind rational_in(const ex& e, const ValueOf& value_of, cln::cl_RA& o
     for (const auto& p : Pairs::of(e)) {
       const numeric& k = ex_to<numeric>(p.coeff);
       if (sum ? !k.is_rational() : !k.is_integer()) return Kind::other;
-      if (const Kind r = rational_in(p.rest, value_of, t); r != Kind::value) return r;
+      if (const Kind r = rational_in(p.rest, value_of, t, sums); r != Kind::value) return r;
       if (sum) {
         acc = acc + t * cln::the<cln::cl_RA>(k.to_cl_N());
       } else {
@@ -172,11 +197,12 @@ RationalAt::Kind rational_in(const ex& e, const ValueOf& value_of, cln::cl_RA& o
       }
     }
     out = acc;
+    if (sum) sums.remember(e, acc);
     return Kind::value;
   }
   if (is_exactly<power>(e) && is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer()) {
     cln::cl_RA b;
-    if (const Kind k = rational_in(e.op(0), value_of, b); k != Kind::value) return k;
+    if (const Kind k = rational_in(e.op(0), value_of, b, sums); k != Kind::value) return k;
     return power_in(b, ex_to<numeric>(e.op(1)), out);
   }
   return Kind::other;
@@ -186,21 +212,30 @@ RationalAt::Kind rational_in(const ex& e, const ValueOf& value_of, cln::cl_RA& o
 
 namespace {
 
-template <class ValueOf>
-RationalAt rational_at_with(const ex& e, const ValueOf& value_of) {
+template <class ValueOf, class Sums = NoSums>
+RationalAt rational_at_with(const ex& e, const ValueOf& value_of, const Sums& sums = {}) {
   cln::cl_RA v;
-  const RationalAt::Kind k = rational_in(e, value_of, v);
+  const RationalAt::Kind k = rational_in(e, value_of, v, sums);
   if (k == RationalAt::Kind::value) return {k, numeric(v)};
   return {k, 0};
 }
 
 }  // namespace
 
-RationalAt rational_at(const ex& e, const RationalPoint& point) {
-  return rational_at_with(e, [&](const ex& x) -> const numeric* {
+// A symbol's number in a point, or null.
+struct InPoint {
+  const RationalPoint& point;
+  const numeric* operator()(const ex& x) const {
     const auto it = point.find(x);
     return it == point.end() ? nullptr : &it->second;
-  });
+  }
+};
+
+RationalAt rational_at(const ex& e, const RationalPoint& point) { return rational_at_with(e, InPoint{point}); }
+
+RationalAt rational_at(const ex& e, const RationalPoint& point, SumValues& sums) {
+  const std::lock_guard<std::mutex> lock(sums.mutex);
+  return rational_at_with(e, InPoint{point}, SumMemory{sums});
 }
 
 RationalAt rational_at(const ex& e, const exmap& values) {

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <random>
 #include <set>
@@ -64,6 +65,16 @@ Value remembered(ExMemory<Value>& memory, const GiNaC::ex& key, std::size_t limi
   return v;
 }
 [[nodiscard]] RationalAt rational_at(const GiNaC::ex& e, const RationalPoint& point);
+/// The values of long sums (more than 16 terms) at one point, remembered by whoever evaluates
+/// many expressions at that point (a chain's 511 closed forms share m_1 + ... + m_256): a
+/// sum's value is its value at the point, so the memory changes no result. Guarded by its
+/// own mutex; it belongs to one point and must be dropped with it.
+struct SumValues {
+  std::mutex mutex;
+  std::unordered_map<GiNaC::ex, GiNaC::numeric, ExHash, GiNaC::ex_is_equal> values;
+};
+/// rational_at() with the long sums' values looked up in and added to `sums`.
+[[nodiscard]] RationalAt rational_at(const GiNaC::ex& e, const RationalPoint& point, SumValues& sums);
 /// The same with the values given as an exmap (a symbol whose value is not a number is not
 /// given); for a few values looked up once, without making a point.
 [[nodiscard]] RationalAt rational_at(const GiNaC::ex& e, const GiNaC::exmap& values);

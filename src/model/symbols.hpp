@@ -85,6 +85,7 @@ class SymbolTable : public NameResolver, public DimensionLookup {
   struct ValueSet {
     GiNaC::exmap map;
     RationalPoint rational;
+    mutable SumValues sums;  // long sums' values at `rational`, remembered by evaluate()
   };
   [[nodiscard]] std::shared_ptr<const ValueSet> value_set() const;
   /// Substitution map of every defined parameter to its expression; the geometric lengths

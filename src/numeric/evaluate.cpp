@@ -99,12 +99,14 @@ std::string decimal_string(const numeric& v, int digits) {
 
 namespace {
 
-// value_at with the rational values already made into a point.
-std::optional<ex> value_at(const ex& e, const exmap& values, const RationalPoint& point) {
+// value_at with the rational values already made into a point (and the long sums' values
+// there remembered, when given).
+std::optional<ex> value_at(const ex& e, const exmap& values, const RationalPoint& point, SumValues* sums = nullptr) {
   // A rational function at rational numbers: computed as a number, without a normal form
   // (normal() of a closed form over 128 bodies' masses is most of a report's time). A pole
   // there may be removable, and roots or functions need more: those go through NormalForm.
-  if (const RationalAt r = rational_at(e, point); r.kind == RationalAt::Kind::value) return ex(r.value);
+  const RationalAt r = sums ? rational_at(e, point, *sums) : rational_at(e, point);
+  if (r.kind == RationalAt::Kind::value) return ex(r.value);
   return NormalForm(e).at(values);
 }
 
@@ -115,12 +117,12 @@ RationalPoint rational_values(const exmap& values) {
   return point;
 }
 
-std::optional<NumericValue> evaluate_at(const ex& e, const exmap& values, const RationalPoint& point,
+std::optional<NumericValue> evaluate_at(const ex& e, const exmap& values, const RationalPoint& point, SumValues* sums,
                                         std::optional<Dimension> dimension, int digits, const std::optional<Unit>& unit) {
   // A closed form may be undefined at the given numbers (a denominator c - e with c = e):
   // no number then. The denominator is checked first, so that GiNaC does not throw from
   // inside a new object (found by fuzzing: exit 3 for a description with c = e).
-  const auto at = value_at(e, values, point);
+  const auto at = value_at(e, values, point, sums);
   if (!at) return std::nullopt;
   const ex v = *at;
   for (const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
@@ -153,13 +155,13 @@ std::optional<ex> value_at(const ex& e, const exmap& values) { return value_at(e
 
 std::optional<NumericValue> evaluate_with(const ex& e, const exmap& values, std::optional<Dimension> dimension,
                                           int digits, const std::optional<Unit>& unit) {
-  return evaluate_at(e, values, rational_values(values), dimension, digits, unit);
+  return evaluate_at(e, values, rational_values(values), nullptr, dimension, digits, unit);
 }
 
 std::optional<NumericValue> evaluate(const ex& e, const SymbolTable& symbols, std::optional<Dimension> dimension,
                                      int digits, const std::optional<Unit>& unit) {
   const auto set = symbols.value_set();
-  return evaluate_at(e, set->map, set->rational, dimension, digits, unit);
+  return evaluate_at(e, set->map, set->rational, &set->sums, dimension, digits, unit);
 }
 
 }  // namespace tackle

@@ -99,6 +99,32 @@ TEST_CASE("Rational at: exact values and poles", "[rational]") {
   CHECK(rational_at(a + b, exmap{{a, numeric(1)}}).kind == RationalAt::Kind::other);
 }
 
+TEST_CASE("Rational at: long sums' values remembered at a point give the same values", "[rational]") {
+  const symbol F("F");
+  RationalPoint point{{F, numeric(10)}};
+  ex M = 0, S = 0;
+  for (int i = 1; i <= 20; ++i) {
+    const symbol m("m_" + std::to_string(i));
+    point.emplace(m, numeric(i, 2));  // m_i = i/2: M = 105, S = m_2 + ... + m_20 = 104.5
+    M += m;
+    if (i > 1) S += m;
+  }
+  SumValues sums;
+  for (const ex& e : {F / M, F * S / M, F * S / M, ex(M)}) {
+    const RationalAt plain = rational_at(e, point), kept = rational_at(e, point, sums);
+    REQUIRE(kept.kind == RationalAt::Kind::value);
+    CHECK(kept.value == plain.value);
+  }
+  CHECK(rational_at(F * S / M, point, sums).value == numeric(209, 21));  // 10 * 104.5 / 105
+  // The two long sums are remembered; nothing shorter than 17 terms.
+  CHECK(sums.values.size() == 2);
+  CHECK(sums.values.at(M) == numeric(105));
+  CHECK(rational_at(F * M + F, point, sums).value == numeric(1060));
+  CHECK(sums.values.size() == 2);
+  CHECK(rational_at(F + M, point, sums).value == numeric(115));  // one sum of 21 terms
+  CHECK(sums.values.size() == 3);
+}
+
 TEST_CASE("Trig: sin and cos and their powers found by structure", "[rational]") {
   const symbol t("theta"), m("m");
   CHECK(has_trig(m * cos(t) + 1));
