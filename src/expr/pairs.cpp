@@ -104,10 +104,13 @@ bool expanded_polynomial(const ex& e) {
   return true;
 }
 
-std::optional<ex> evaluated_quotient(const ex& num, const ex& den) {
+namespace {
+
+// a^sign_a * b^sign_b made without evaluating it, when evaluation would leave it as it is.
+std::optional<ex> evaluated_product(const ex& a, int sign_a, const ex& b, int sign_b) {
   epvector pairs;
   numeric c = 1;
-  if (!gather(num, 1, pairs, c) || !gather(den, -1, pairs, c)) return std::nullopt;
+  if (!gather(a, sign_a, pairs, c) || !gather(b, sign_b, pairs, c)) return std::nullopt;
   // Every base once (GiNaC would combine two), and at least two of them: a product of one
   // factor is evaluated to the factor, and a number times a sum to a sum.
   if (pairs.size() < 2) return std::nullopt;
@@ -116,6 +119,15 @@ std::optional<ex> evaluated_quotient(const ex& num, const ex& den) {
       if (pairs[i].rest.is_equal(pairs[j].rest)) return std::nullopt;
   // The constructor puts the pairs in GiNaC's order; evaluation would change nothing more.
   return dynallocate<mul>(std::move(pairs), c).setflag(status_flags::evaluated);
+}
+
+}  // namespace
+
+std::optional<ex> evaluated_quotient(const ex& num, const ex& den) { return evaluated_product(num, 1, den, -1); }
+
+ex times(const ex& a, const ex& b) {
+  if (auto p = evaluated_product(a, 1, b, 1)) return *p;
+  return a * b;
 }
 
 }  // namespace tackle

@@ -35,6 +35,10 @@ struct Pairs : GiNaC::expairseq {
 /// (see primitive_sum), to a whole power, every base once. Nothing otherwise (the caller
 /// divides as usual).
 [[nodiscard]] std::optional<GiNaC::ex> evaluated_quotient(const GiNaC::ex& num, const GiNaC::ex& den);
+/// a*b, made as evaluated_quotient() makes a quotient when it can (F times m_1 + ... + m_256:
+/// evaluating the product takes the sum's integer content, a gcd and an lcm per term); a*b
+/// as GiNaC makes it otherwise. Equal to a*b either way.
+[[nodiscard]] GiNaC::ex times(const GiNaC::ex& a, const GiNaC::ex& b);
 
 /// e.info(info_flags::rational_polynomial), read from the stored pairs: GiNaC decides it by
 /// making every term and factor anew (a tenth of a chain's elimination went there).

@@ -102,15 +102,15 @@ ex numer_denom_of_normal(const ex& n) {
     if (is_a<numeric>(f)) {
       const numeric& c = ex_to<numeric>(f);
       if (c.is_rational()) {
-        num *= c.numer();
-        den *= c.denom();
+        num = times(num, c.numer());
+        den = times(den, c.denom());
         return;
       }
     } else if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_negative()) {
-      den *= pow(f.op(0), -f.op(1));
+      den = times(den, pow(f.op(0), -f.op(1)));
       return;
     }
-    num *= f;
+    num = times(num, f);
   };
   if (is_exactly<mul>(n)) {
     // By its pairs: op(i) would make each power of a sum again (see pairs.hpp).
@@ -118,9 +118,9 @@ ex numer_denom_of_normal(const ex& n) {
     for (const auto& p : Pairs::of(n)) {
       const numeric& k = ex_to<numeric>(p.coeff);
       if (k.is_negative())
-        den *= pow(p.rest, -k);
+        den = times(den, pow(p.rest, -k));
       else
-        num *= k.is_equal(1) ? p.rest : pow(p.rest, k);
+        num = times(num, k.is_equal(1) ? p.rest : pow(p.rest, k));
     }
   } else {
     take(n);

@@ -196,7 +196,7 @@ bool may_divide(const ex& p, const ex& g) {
 ex numerator_of(const ex& monomial, const ex& sum) {
   if (is_exactly<add>(sum) && sum.nops() > factor_term_limit) {
     const Content c = content_of(sum);
-    const ex p = monomial * c.content * c.rest;
+    const ex p = times(monomial * c.content, c.rest);
     if (content_of_product(p, factor_term_limit)) return p;
   }
   const ex p = monomial * sum;
@@ -217,7 +217,7 @@ std::optional<ex> quick_quotient(const ex& b, const std::vector<std::pair<ex, ex
   };
   std::vector<ex> common;  // the distinct factors of the x's denominators
   struct Part {
-    ex numerator;             // v times x's numerator, over x's numeric coefficient
+    ex numerator;             // -v times x's numerator, over x's numeric coefficient
     std::vector<ex> factors;  // x's denominator's factors
   };
   std::vector<Part> parts;
@@ -229,7 +229,7 @@ std::optional<ex> quick_quotient(const ex& b, const std::vector<std::pair<ex, ex
     if (!f) return std::nullopt;
     for (const ex& g : f->second)
       if (!holds(common, g)) common.push_back(g);
-    parts.push_back({f->first == 1 ? v * nd.op(0) : v * nd.op(0) / f->first, f->second});
+    parts.push_back({times(f->first == 1 ? ex(-v) : -v / f->first, nd.op(0)), f->second});
   }
   numeric c = 1;
   std::vector<ex> pivot_factors;
@@ -247,11 +247,11 @@ std::optional<ex> quick_quotient(const ex& b, const std::vector<std::pair<ex, ex
   if (common.size() + pivot_factors.size() > 8) return std::nullopt;
   auto over_common = [&](ex e, const std::vector<ex>& have) {
     for (const ex& g : common)
-      if (!holds(have, g)) e *= g;
+      if (!holds(have, g)) e = times(e, g);
     return e;
   };
   std::vector<ex> pieces{over_common(b, {})};  // the numerator is their sum
-  for (const auto& p : parts) pieces.push_back(-over_common(p.numerator, p.factors));
+  for (const auto& p : parts) pieces.push_back(over_common(p.numerator, p.factors));
   // A monomial held by every piece (a chain's F: each tension is F times a sum of masses) is
   // kept out of the expansion: the numerator is that monomial times the rest expanded, and
   // stays so when the rest is a long sum (see content_of_product), as simplest() would

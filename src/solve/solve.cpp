@@ -156,7 +156,7 @@ namespace {
 ex factors_found(const ex& polynomial) {
   // A long primitive sum times a monomial (the back substitution's numerators): the content
   // content_only() finds in its expansion, without expanding it.
-  if (const auto c = content_of_product(polynomial, factor_term_limit)) return c->content * c->rest;
+  if (const auto c = content_of_product(polynomial, factor_term_limit)) return times(c->content, c->rest);
   // sin(theta) and the like stand in as symbols while factoring (factor() leaves a sum with
   // them unfactored), and are put back in each factor.
   exmap repl;
@@ -223,7 +223,7 @@ ex factored(const ex& polynomial) {
   thread_local ExMemory<ex> memory;
   return remembered(memory, polynomial, 4096, [&] {
     ex out = 1;
-    for (const ex& x : canonical_factors(polynomial)) out *= x;
+    for (const ex& x : canonical_factors(polynomial)) out = times(out, x);
     return out;
   });
 }

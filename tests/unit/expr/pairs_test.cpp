@@ -64,6 +64,30 @@ TEST_CASE("Quotient: made unevaluated only where GiNaC's evaluation would leave 
   CHECK(held >= 6);
 }
 
+TEST_CASE("Product: times() is a*b, made unevaluated where GiNaC's evaluation would leave it as it is", "[pairs]") {
+  const symbol F("F"), x("x");
+  ex total = 0;
+  for (int i = 1; i <= 20; ++i) total += symbol("m_" + std::to_string(i));
+  const std::vector<std::pair<ex, ex>> cases = {
+      {F, total},                   // a chain's tension numerator: made unevaluated
+      {3 * F * pow(x, 2), total},   // a monomial with a number
+      {numeric(2), total},          // a number times a sum: GiNaC distributes it
+      {F, -total},                  // the first coefficient negative: GiNaC takes the sign out
+      {F * total, total},           // a base twice: a square
+      {x, x},
+      {numeric(1), F},
+      {F, ex(0)},
+      {sin(x), total},              // a function
+  };
+  for (const auto& [a, b] : cases) {
+    INFO(to_text(a) << " times " << to_text(b));
+    const ex usual = a * b, made = times(a, b);
+    CHECK(made.is_equal(usual));
+    CHECK(made.gethash() == usual.gethash());
+    CHECK(to_text(made) == to_text(usual));
+  }
+}
+
 TEST_CASE("Quotient: a sum is primitive when its integer coefficients have no common factor and the first is positive", "[pairs]") {
   const symbol a("a"), b("b"), c("c");
   CHECK(primitive_sum(a + b + c));
