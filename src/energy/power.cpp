@@ -23,8 +23,10 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
   for (std::size_t i = 0; i < m.bodies.size(); ++i) {
     const Body& b = m.bodies[i];
     if (!b.coord.is_zero()) {
-      for (int k = 0; k < 3; ++k) velocity[i][k] = time_derivative(b.cm[k], m.bodies, m.lengths, m.time);
-      if (m.dims() == 1) velocity[i] = {b.rate, 0, 0};
+      if (m.dims() == 1)
+        velocity[i] = {b.rate, 0, 0};
+      else
+        for (int k = 0; k < 3; ++k) velocity[i][k] = time_derivative(b.cm[k], m.bodies, m.lengths, m.time);
       moving = true;
     } else if (!is_zero_vec(b.acceleration)) {
       // Straight-line motion: the velocity is along the acceleration, a signed speed v_B
@@ -43,10 +45,15 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
     c.reason = "every body is at rest";
     return c;
   }
+  // Each sum made once from its terms (adding term by term copies the sum each time: a
+  // chain of 256 has 256 of them).
+  exvector kinetic, power;
   for (std::size_t i = 0; i < m.bodies.size(); ++i)
-    if (m.bodies[i].has_mass) c.kinetic_rate += m.bodies[i].mass * inner(velocity[i], m.bodies[i].acceleration);
+    if (m.bodies[i].has_mass) kinetic.push_back(m.bodies[i].mass * inner(velocity[i], m.bodies[i].acceleration));
   for (const auto& l : m.loads)
-    if (l.body >= 0) c.power += inner(l.force, velocity[l.body]);
+    if (l.body >= 0) power.push_back(inner(l.force, velocity[l.body]));
+  c.kinetic_rate = add(kinetic);
+  c.power = add(power);
   // sin^2 + cos^2 = 1 where that leaves fewer terms (a block on an incline: m v a, not
   // m v a cos^2 + m v a sin^2).
   c.kinetic_rate = fewer_trig_terms(c.kinetic_rate.expand());

@@ -243,6 +243,7 @@ bool shorter(const ex& a, const ex& b, bool large) {
 // having the normal form n.
 ex shorter_form(const ex& f, const ex& n, bool large) {
   remember_normal(f, n);
+  if (f.is_equal(n)) return n;  // one form (a chain's F*(m_2 + ... + m_256)/M): nothing to count
   return shorter(f, n, large) ? f : n;
 }
 
