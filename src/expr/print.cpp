@@ -11,6 +11,7 @@
 #include <tuple>
 #include <unordered_map>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 namespace tackle {
@@ -343,9 +344,11 @@ struct NameTerm {
   const symbol* name;
   // The name as a base and the number ending it (m_12: "m_", 12), when it ends in digits
   // without a leading zero, at most nine: names of one base are ordered by their numbers
-  // (as natural_less() orders them, without comparing strings); -1 when there is none.
+  // (as natural_less() orders them, without comparing strings); -1 when there is none. The
+  // bases are numbered in print_names() (equal bases, equal numbers).
   std::size_t base = 0;
   long index = -1;
+  std::size_t base_id = 0;
 };
 
 NameTerm name_term(const symbol& x) {
@@ -355,17 +358,12 @@ NameTerm name_term(const symbol& x) {
   while (b > 0 && std::isdigit(static_cast<unsigned char>(k[b - 1]))) --b;
   if (b < k.size() && k.size() - b <= 9 && k[b] != '0') {
     t.base = b;
-    t.index = std::stol(k.substr(b));
+    t.index = 0;
+    for (std::size_t i = b; i < k.size(); ++i) t.index = 10 * t.index + (k[i] - '0');
   }
   return t;
 }
 
-// natural_less() of the two keys.
-bool name_less(const NameTerm& a, const NameTerm& b) {
-  if (a.index >= 0 && b.index >= 0 && a.base == b.base && a.key.compare(0, a.base, b.key, 0, b.base) == 0)
-    return a.index < b.index;
-  return natural_less(a.key, b.key);
-}
 bool names_only(const add& s) {
   const ex e(s);
   if (!Pairs::overall(e).is_zero()) return false;
@@ -379,27 +377,48 @@ bool names_only(const add& s) {
 
 void print_names(const add& s, const print_context& c) {
   const bool latex = latex_ctx(c);
-  auto text = [&](const NameTerm& t) { return latex ? t.name->get_TeX_name() : t.key; };
+  std::ostream& os = c.s;
+  auto put = [&](const NameTerm& t) {
+    if (latex)
+      os << t.name->get_TeX_name();
+    else
+      os << t.key;
+  };
   std::vector<NameTerm> pos, neg;
   const ex e(s);
   for (const auto& p : Pairs::of(e))
     (ex_to<numeric>(p.coeff).is_negative() ? neg : pos).push_back(name_term(ex_to<symbol>(p.rest)));
-  // By key, then by the text printed (two names alike: the general path's tie-break).
+  // Equal bases get equal numbers (a sum has one or a few).
+  std::vector<std::string_view> bases;
+  for (auto* terms : {&pos, &neg})
+    for (NameTerm& t : *terms) {
+      if (t.index < 0) continue;
+      const std::string_view b(t.key.data(), t.base);
+      t.base_id = std::find(bases.begin(), bases.end(), b) - bases.begin();
+      if (t.base_id == bases.size()) bases.push_back(b);
+    }
+  // As natural_less() orders the keys: names of one base by their numbers; then by the text
+  // printed (two names alike: the general path's tie-break).
   auto by_key = [&](const NameTerm& a, const NameTerm& b) {
-    if (a.key != b.key) return name_less(a, b);
-    return text(a) < text(b);
+    if (a.index >= 0 && b.index >= 0 && a.base_id == b.base_id) {
+      if (a.index != b.index) return a.index < b.index;
+    } else if (a.key != b.key) {
+      return natural_less(a.key, b.key);
+    }
+    return (latex ? a.name->get_TeX_name() : a.key) < (latex ? b.name->get_TeX_name() : b.key);
   };
   sort_by_index(pos, by_key);
   sort_by_index(neg, by_key);
-  std::ostream& os = c.s;
   bool first = true;
   auto print_terms = [&](const std::vector<NameTerm>& terms, const char* sign) {
     for (std::size_t i = 0; i < terms.size();) {
       const std::size_t run = latex ? index_run(terms, i, [](const NameTerm&, const NameTerm&) { return true; }) : 1;
-      os << (first ? (sign[1] == '-' ? "-" : "") : sign) << text(terms[i]);
+      os << (first ? (sign[1] == '-' ? "-" : "") : sign);
+      put(terms[i]);
       first = false;
       if (run >= 5) {
-        os << sign << "\\dots" << sign << text(terms[i + run - 1]);
+        os << sign << "\\dots" << sign;
+        put(terms[i + run - 1]);
         i += run;
       } else {
         ++i;
