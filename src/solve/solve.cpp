@@ -36,6 +36,24 @@ std::optional<int> sign_of_power(std::optional<int> b, const ex& expo) {
   return std::nullopt;
 }
 
+// The sign of a sum: the common sign of its nonzero terms.
+std::optional<int> sign_of_sum(const ex& e) {
+  int s = 0;  // the common sign of the nonzero terms so far
+  auto take = [&](std::optional<int> t) {
+    if (!t) return false;
+    if (*t == 0) return true;
+    if (s != 0 && *t != s) return false;
+    s = *t;
+    return true;
+  };
+  for (const auto& p : Pairs::of(e)) {
+    const auto r = sign_of(p.rest), c = sign_of(p.coeff);
+    if (!take(r && c ? std::optional<int>(*r * *c) : std::nullopt)) return std::nullopt;
+  }
+  if (!take(sign_of(Pairs::overall(e)))) return std::nullopt;
+  return s == 0 ? std::nullopt : std::optional<int>(s);  // an all-zero sum is not left unevaluated
+}
+
 }  // namespace
 
 // The sign of an expression when the domains of its symbols decide it: +1, -1, 0 (zero) or
@@ -52,22 +70,12 @@ std::optional<int> sign_of(const ex& e) {
     return std::nullopt;
   }
   // Sums and products by their stored pairs: a term is rest times a number, a factor rest to
-  // a number.
+  // a number. A long sum's sign is remembered per thread (a chain's 255 conditions share the
+  // sum of its 256 masses).
   if (is_exactly<add>(e)) {
-    int s = 0;  // the common sign of the nonzero terms so far
-    auto take = [&](std::optional<int> t) {
-      if (!t) return false;
-      if (*t == 0) return true;
-      if (s != 0 && *t != s) return false;
-      s = *t;
-      return true;
-    };
-    for (const auto& p : Pairs::of(e)) {
-      const auto r = sign_of(p.rest), c = sign_of(p.coeff);
-      if (!take(r && c ? std::optional<int>(*r * *c) : std::nullopt)) return std::nullopt;
-    }
-    if (!take(sign_of(Pairs::overall(e)))) return std::nullopt;
-    return s == 0 ? std::nullopt : std::optional<int>(s);  // an all-zero sum is not left unevaluated
+    if (Pairs::of(e).size() <= 16) return sign_of_sum(e);
+    thread_local ExMemory<std::optional<int>> memory;
+    return remembered(memory, e, 1024, [&] { return sign_of_sum(e); });
   }
   if (is_exactly<mul>(e)) {
     int s = 1;
