@@ -13,6 +13,13 @@ namespace tackle {
 
 using namespace GiNaC;
 
+std::unordered_set<ex, ExHash, ex_is_equal> symbols_asked(const std::vector<Wanted>& wanted) {
+  std::unordered_set<ex, ExHash, ex_is_equal> out;
+  for (const auto& w : wanted)
+    for (const ex& x : distinct_symbols(w.expr)) out.insert(x);
+  return out;
+}
+
 ex time_derivative(const ex& e, const std::vector<Body>& bodies, const std::vector<TurningLength>& lengths, const ex& time) {
   ex d = is_a<symbol>(time) ? e.diff(ex_to<symbol>(time)) : ex(0);
   // Only the coordinates and rates `e` holds (a string of two bodies among 256: two, not 512

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -191,6 +192,10 @@ struct Model {
   // Numbers for drawing: every parameter's value (SI) and the layout's coordinates.
   GiNaC::exmap layout;
 };
+
+/// The symbols the questions (`wanted`) hold, gathered once: asking has() of each symbol in
+/// each question is quadratic (a chain of 256 asks 511 questions about 768 symbols).
+[[nodiscard]] std::unordered_set<GiNaC::ex, ExHash, GiNaC::ex_is_equal> symbols_asked(const std::vector<Wanted>& wanted);
 
 /// d/dt of an expression in the bodies' coordinates and rates, the turning lengths and time
 /// itself (the chain rule; `time` is t, or 0 when nothing depends on time explicitly).

@@ -633,11 +633,7 @@ namespace {
 // The rate or position level: the constraints' equations at that level, solved for the
 // rates (coordinates) of the bodies that are not given. Only when a question needs it.
 std::optional<Solution> solve_level(const Model& model, const std::vector<Equation>& equations, SymbolRole role) {
-  // The symbols of the questions gathered once (has() of each symbol in each question was
-  // quadratic: a chain of 256 asks 511 questions of 768 symbols).
-  std::unordered_set<ex, ExHash, ex_is_equal> in_questions;
-  for (const auto& w : model.wanted)
-    for (const ex& x : distinct_symbols(w.expr)) in_questions.insert(x);
+  const auto in_questions = symbols_asked(model.wanted);
   bool asked = false;
   for (const auto& sym : model.symbols->all())
     if (sym->role == role && in_questions.count(sym->sym) != 0) asked = true;

@@ -125,10 +125,10 @@ void given_and_find(BuildContext& ctx) {
 // the value it has; the layout only tells directions, so the constant is a symbol,
 // `C_s` for string s, as a person writes "x_S = 2 x + const").
 void constraint_constants(BuildContext& ctx) {
-  bool asked = false;
-  for (const auto& w : ctx.m.wanted)
-    for (const auto& b : ctx.m.bodies)
-      if (!b.coord.is_zero() && w.expr.has(b.coord)) asked = true;
+  const auto in_questions = symbols_asked(ctx.m.wanted);
+  const bool asked = std::any_of(ctx.m.bodies.begin(), ctx.m.bodies.end(), [&](const Body& b) {
+    return !b.coord.is_zero() && in_questions.count(b.coord) != 0;
+  });
   if (!asked) return;
   for (auto& c : ctx.m.constraints) {
     const std::string base = c.connection.empty() ? c.label : c.connection;
