@@ -46,10 +46,17 @@ struct Work {
   std::vector<bool> active;
   bool track = false;
 
-  // row k -= f * row r, in A, b and the tracking; entries that cancel are removed.
-  void subtract(std::size_t k, const ex& f, std::size_t r) {
+  // row k -= f * row r, in A, b and the tracking; entries that cancel are removed. The entry
+  // in the pivot's column cancels by the choice of f (a[k][pivot] / a[r][pivot]): it is
+  // removed without being computed (a chain's is a sum of up to 256 masses).
+  void subtract(std::size_t k, const ex& f, std::size_t r, std::size_t pivot_column) {
     for (const auto& [c, v] : a[r]) {
       auto it = a[k].find(c);
+      if (c == pivot_column) {
+        if (it != a[k].end()) a[k].erase(it);
+        rows_of[c].erase(k);
+        continue;
+      }
       const ex n = reduced(it == a[k].end() ? -f * v : it->second - f * v);
       if (n.is_zero()) {
         if (it != a[k].end()) a[k].erase(it);
@@ -306,7 +313,7 @@ std::pair<Elimination, std::vector<Pivot>> eliminate_symbolically(const SparseSy
     for (const auto& [cc, v] : w.a[r]) w.rows_of[cc].erase(r);
     const ex pivot = w.a[r].at(c);
     const std::vector<std::size_t> others(w.rows_of[c].begin(), w.rows_of[c].end());
-    for (const std::size_t k : others) w.subtract(k, reduced(w.a[k].at(c) / pivot), r);
+    for (const std::size_t k : others) w.subtract(k, reduced(w.a[k].at(c) / pivot), r, c);
     eliminated[c] = true;
     order.push_back(*p);
   }
