@@ -46,10 +46,23 @@ struct Work {
   std::vector<bool> active;
   bool track = false;
 
-  // row k -= f * row r, in A, b and the tracking; entries that cancel are removed. The entry
-  // in the pivot's column cancels by the choice of f (a[k][pivot] / a[r][pivot]): it is
-  // removed without being computed (a chain's is a sum of up to 256 masses).
-  void subtract(std::size_t k, const ex& f, std::size_t r, std::size_t pivot_column) {
+  // row k -= f * row r, in A, b and the tracking, with f = a[k][pivot] / a[r][pivot];
+  // entries that cancel are removed. The entry in the pivot's column cancels by the choice of
+  // f: it is removed without being computed (a chain's is a sum of up to 256 masses). f is
+  // made only when needed: with a number for pivot, a polynomial a[k][pivot] times a number
+  // v of row r is a[k][pivot] times v / pivot, one product where f * v takes two.
+  void subtract(std::size_t k, std::size_t r, std::size_t pivot_column) {
+    const ex a_kc = a[k].at(pivot_column), pivot = a[r].at(pivot_column);
+    std::optional<ex> f_made;
+    auto f = [&]() -> const ex& {
+      if (!f_made) f_made = reduced(a_kc / pivot);
+      return *f_made;
+    };
+    const bool scaled = is_exactly<numeric>(pivot) && rational_polynomial(a_kc);
+    auto minus_f_times = [&](const ex& v) -> ex {
+      if (scaled && is_exactly<numeric>(v)) return a_kc * (-ex_to<numeric>(v) / ex_to<numeric>(pivot));
+      return -f() * v;
+    };
     for (const auto& [c, v] : a[r]) {
       auto it = a[k].find(c);
       if (c == pivot_column) {
@@ -57,7 +70,7 @@ struct Work {
         rows_of[c].erase(k);
         continue;
       }
-      const ex n = reduced(it == a[k].end() ? -f * v : it->second - f * v);
+      const ex n = reduced(it == a[k].end() ? minus_f_times(v) : it->second + minus_f_times(v));
       if (n.is_zero()) {
         if (it != a[k].end()) a[k].erase(it);
         rows_of[c].erase(k);
@@ -66,11 +79,11 @@ struct Work {
         rows_of[c].insert(k);
       }
     }
-    if (!b[r].is_zero()) b[k] = reduced(b[k] - f * b[r]);
+    if (!b[r].is_zero()) b[k] = reduced(b[k] + minus_f_times(b[r]));
     if (track)
       for (const auto& [c, v] : t[r]) {
         auto it = t[k].find(c);
-        const ex n = reduced(it == t[k].end() ? -f * v : it->second - f * v);
+        const ex n = reduced(it == t[k].end() ? minus_f_times(v) : it->second + minus_f_times(v));
         if (n.is_zero()) {
           if (it != t[k].end()) t[k].erase(it);
         } else {
@@ -349,9 +362,8 @@ std::pair<Elimination, std::vector<Pivot>> eliminate_symbolically(const SparseSy
     const std::size_t r = p->row, c = p->column;
     w.active[r] = false;
     for (const auto& [cc, v] : w.a[r]) w.rows_of[cc].erase(r);
-    const ex pivot = w.a[r].at(c);
     const std::vector<std::size_t> others(w.rows_of[c].begin(), w.rows_of[c].end());
-    for (const std::size_t k : others) w.subtract(k, reduced(w.a[k].at(c) / pivot), r, c);
+    for (const std::size_t k : others) w.subtract(k, r, c);
     eliminated[c] = true;
     order.push_back(*p);
   }
