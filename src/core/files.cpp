@@ -1,5 +1,6 @@
 #include "core/files.hpp"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -14,15 +15,33 @@
 
 namespace tackle {
 
+// Read with the system calls themselves: a stream costs more to set up than a rule file
+// costs to read, and every run reads the description and each of the rules.
 std::string read_text_file(const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError({{{path, 0, 0}, "is a directory (expected a file)"}});
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError({{{path, 0, 0}, "cannot read the file"}});
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw InputError({{{path, 0, 0}, "cannot read the file"}});
-  return ss.str();
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw InputError({{{path, 0, 0}, "cannot read the file"}});
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) throw InputError({{{path, 0, 0}, "cannot read the file"}});
+  if (S_ISDIR(st.st_mode)) throw InputError({{{path, 0, 0}, "is a directory (expected a file)"}});
+  std::string text;
+  text.resize(S_ISREG(st.st_mode) && st.st_size > 0 ? static_cast<std::size_t>(st.st_size) + 1 : 4096);
+  std::size_t used = 0;
+  for (;;) {
+    if (used == text.size()) text.resize(2 * text.size());
+    const ssize_t n = ::read(fd, text.data() + used, text.size() - used);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      throw InputError({{{path, 0, 0}, "cannot read the file"}});
+    }
+    if (n == 0) break;
+    used += static_cast<std::size_t>(n);
+  }
+  text.resize(used);
+  return text;
 }
 
 AtomicOutput::AtomicOutput(std::string path) : path_(std::move(path)) {

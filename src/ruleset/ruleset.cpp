@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "description/yaml_reader.hpp"
+#include "core/files.hpp"
 #include "core/placeholders.hpp"
 #include "expr/parse.hpp"
 
@@ -517,12 +518,9 @@ RuleSet load_rules(const std::string& dir, RuleLoading how, std::span<const Buil
   std::vector<Diagnostic> all;
   std::map<std::string, std::string> defined_in;
   for (const auto& f : files) {
-    std::ifstream in(f);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    std::string text = ss.str();
-    const std::string type = how == RuleLoading::when_used ? plain_type(text) : "";
     try {
+      std::string text = read_text_file(f.string());
+      const std::string type = how == RuleLoading::when_used ? plain_type(text) : "";
       if (!type.empty()) {
         if (auto it = defined_in.find(type); it != defined_in.end()) {
           all.push_back({{f.string(), 1, 1}, "rule type '" + type + "' is defined twice (also in " + it->second + ")"});
