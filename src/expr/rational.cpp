@@ -161,7 +161,9 @@ struct SumMemory {
     return it == sums.values.end() ? nullptr : &it->second;
   }
   void remember(const ex& e, const cln::cl_RA& v) const {
-    if (long_sum(e)) sums.values.emplace(e, numeric(v));
+    if (!long_sum(e)) return;
+    if (sums.values.size() >= 16384) sums.values.clear();  // forgets everything past its limit
+    sums.values.emplace(e, numeric(v));
   }
 };
 

@@ -67,8 +67,9 @@ Value remembered(ExMemory<Value>& memory, const GiNaC::ex& key, std::size_t limi
 [[nodiscard]] RationalAt rational_at(const GiNaC::ex& e, const RationalPoint& point);
 /// The values of long sums (more than 16 terms) at one point, remembered by whoever evaluates
 /// many expressions at that point (a chain's 511 closed forms share m_1 + ... + m_256): a
-/// sum's value is its value at the point, so the memory changes no result. Guarded by its
-/// own mutex; it belongs to one point and must be dropped with it.
+/// sum's value is its value at the point, so the memory changes no result (it forgets
+/// everything past 16384 sums). Guarded by its own mutex; it belongs to one point and must
+/// be dropped with it.
 struct SumValues {
   std::mutex mutex;
   std::unordered_map<GiNaC::ex, GiNaC::numeric, ExHash, GiNaC::ex_is_equal> values;

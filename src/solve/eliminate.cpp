@@ -178,48 +178,49 @@ std::optional<std::pair<numeric, std::vector<ex>>> irreducible_factors(const ex&
   return std::make_pair(c, out);
 }
 
-// False when the polynomial g (of degree 1 in some symbol x) certainly does not divide p: at
-// integers drawn from the other symbols' names, p is not zero at g's root in x. (divide()
-// takes long to say no for a sum over 256 masses.) True when that does not decide it. The
-// symbol and the root are found once per g (a chain's values share one denominator); the
-// values drawn by name are the same for g's coefficients and for p.
 // The total degree of an expanded polynomial (the highest of its terms' degrees), or -1 when
-// it is not one.
-int total_degree(const ex& p) {
-  auto of_monomial = [](const ex& t) -> int {
+// it is not one (or an exponent is past a million: no decision from degrees then).
+long total_degree(const ex& p) {
+  auto of_monomial = [](const ex& t) -> long {
     if (is_exactly<numeric>(t)) return 0;
     if (is_exactly<symbol>(t)) return 1;
-    auto power_of = [](const ex& base, const ex& expo) {
-      return is_exactly<symbol>(base) && ex_to<numeric>(expo).is_pos_integer() ? ex_to<numeric>(expo).to_int() : -1;
+    auto power_of = [](const ex& base, const ex& expo) -> long {
+      const numeric& k = ex_to<numeric>(expo);
+      return is_exactly<symbol>(base) && k.is_pos_integer() && k <= 1000000 ? k.to_long() : -1;
     };
     if (is_exactly<power>(t)) return is_exactly<numeric>(t.op(1)) ? power_of(t.op(0), t.op(1)) : -1;
     if (!is_exactly<mul>(t)) return -1;
-    int d = 0;
+    long d = 0;
     for (const auto& f : Pairs::of(t)) {
-      const int k = power_of(f.rest, f.coeff);
+      const long k = power_of(f.rest, f.coeff);
       if (k < 0) return -1;
       d += k;
     }
     return d;
   };
   if (!is_exactly<add>(p)) return of_monomial(p);
-  int d = 0;
+  long d = 0;
   for (const auto& t : Pairs::of(p)) {
-    const int k = of_monomial(t.rest);
+    const long k = of_monomial(t.rest);
     if (k < 0) return -1;
     d = std::max(d, k);
   }
   return d;
 }
 
+// False when the polynomial g (of degree 1 in some symbol x) certainly does not divide p: at
+// integers drawn from the other symbols' names, p is not zero at g's root in x. (divide()
+// takes long to say no for a sum over 256 masses.) True when that does not decide it. The
+// symbol and the root are found once per g (a chain's values share one denominator); the
+// values drawn by name are the same for g's coefficients and for p.
 bool may_divide(const ex& p, const ex& g) {
   if (is_a<symbol>(g)) return p.ldegree(g) > 0 || p.is_zero();
   // By degree first: g (a sum) divides p only if p's total degree is at least g's, and when
   // the two are equal, only if p is a number times g, term for term (a chain's partial sums
   // of masses against the sum of all of them).
-  thread_local ExMemory<int> degrees;
-  const int dg = remembered(degrees, g, 1024, [&] { return total_degree(g); });
-  if (const int dp = total_degree(p); dp >= 0 && dg >= 0 && !p.is_zero()) {
+  thread_local ExMemory<long> degrees;
+  const long dg = remembered(degrees, g, 1024, [&] { return total_degree(g); });
+  if (const long dp = total_degree(p); dp >= 0 && dg >= 0 && !p.is_zero()) {
     if (dp < dg) return false;
     if (dp == dg && is_exactly<add>(g) && (!is_exactly<add>(p) || p.nops() != g.nops())) return false;
   }
