@@ -552,17 +552,27 @@ Fraction split_uncached(const ex& e) {
           x = flipped;
         }
       }
+  // The sum it moves into is the one whose text comes first (above the line before below
+  // it), not the first in GiNaC's order: that order follows hashes seeded with addresses,
+  // which change from run to run (found by running a fuzz regression ten times: two
+  // balanced sums below the line took the sign in turns).
   if (f.negative) {
-    bool moved = false;
     for (auto* side : {&f.num, &f.den}) {
+      ex* chosen = nullptr;
+      std::string chosen_key;
       for (auto& x : *side)
         if (is_exactly<add>(x) && balance_of(x) == 0) {
-          x = negated_sum(x);
-          f.negative = false;
-          moved = true;
-          break;
+          std::string k = key_of(x);
+          if (!chosen || natural_less(k, chosen_key)) {
+            chosen = &x;
+            chosen_key = std::move(k);
+          }
         }
-      if (moved) break;
+      if (chosen) {
+        *chosen = negated_sum(*chosen);
+        f.negative = false;
+        break;
+      }
     }
   }
   // Factors: plain names first (m_A), then rates and accelerations (ddot(x_A)), then the rest.
