@@ -3,6 +3,7 @@
 
   python3 bench/scale.py [--kinds chain,cascade,tackle,carts] [--sizes chain=16,32,64,128,256 ...]
                          [--peers ginac,sympy,maxima,giac] [--timeout 60] [--repeat 3] [--files F,...]
+                         [--instructions]
 
 For each kind (bench/generate.py) and size n it writes the description, then times, whole
 process and best of --repeat runs:
@@ -17,6 +18,9 @@ the peers:
 Each peer's time includes its start-up, printed once on its own (a 1-unknown system). A run
 past --timeout is shown as "> T". The growth exponent between the two largest sizes that
 finished is printed for each column. Timings are for reading; nothing here passes or fails.
+With --instructions, the instructions `tackle solve` executes are counted too (valgrind's
+callgrind, one run each): a count does not move with the machine's load, as times do by a
+tenth or more from run to run.
 """
 import argparse
 import json
@@ -137,6 +141,29 @@ def _has_sympy():
         return False
 
 
+COLLECTED = re.compile(r"Collected : (\d+)")
+
+
+def instructions(cmd, timeout):
+    """Instructions executed by one run (callgrind's count, which does not move with the
+    machine's load as times do), or None when valgrind is missing or the run fails."""
+    if shutil.which("valgrind") is None:
+        return None
+    try:
+        p = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null"] + cmd,
+                           capture_output=True, text=True, timeout=timeout * 20)
+    except subprocess.TimeoutExpired:
+        return None
+    m = COLLECTED.search(p.stderr)
+    return int(m.group(1)) if p.returncode == 0 and m else None
+
+
+def show_count(n):
+    if n is None:
+        return "-"
+    return f"{n / 1e9:.2f} G" if n >= 1e9 else f"{n / 1e6:.1f} M"
+
+
 def exponent(rows, column, sizes):
     done = [(n, rows[n][column]) for n in sizes if rows[n].get(column)]
     if len(done) < 2:
@@ -162,7 +189,11 @@ def main():
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--files", default="examples/sample-12.8-sign-board.yaml,examples/atwood-machine.yaml",
                     help="descriptions timed as they are, next to the peers on their equations")
+    ap.add_argument("--instructions", action="store_true",
+                    help="also count the instructions of tackle solve (valgrind's callgrind, one run each)")
     args = ap.parse_args()
+    if args.instructions and shutil.which("valgrind") is None:
+        sys.stderr.write("--instructions: valgrind is not installed; the column shows '-'\n")
     sizes = dict(DEFAULT_SIZES)
     for s in args.sizes:
         k, v = s.split("=")
@@ -192,6 +223,8 @@ def main():
             row = {}
             row["solve"], row["peak"], _ = best([TACKLE, "solve", path], args.timeout, args.repeat)
             row["derive"], _, _ = best([TACKLE, "derive", path], args.timeout, args.repeat)
+            if args.instructions:
+                row["instructions"] = instructions([TACKLE, "solve", path], args.timeout)
             if peers:
                 unknowns, eqs = equations_of(path)
                 row["unknowns"] = len(unknowns)
@@ -201,21 +234,26 @@ def main():
             rows[n] = row
             print(f"  {kind} n={n} done", file=sys.stderr)
         cols = ["solve", "derive"] + peers
+        counted = ["instructions"] if args.instructions else []
         print(f"\n{kind}")
-        print("| n | unknowns | tackle solve | peak | tackle derive | " + " | ".join(cols[2:]) + " |")
-        print("|---" * (5 + len(peers)) + "|")
+        print("| n | unknowns | tackle solve | peak | " + "".join("solve instructions | " for _ in counted) + "tackle derive | "
+              + " | ".join(cols[2:]) + " |")
+        print("|---" * (5 + len(counted) + len(peers)) + "|")
         for n in sizes[kind]:
             r = rows[n]
             peak = f"{r['peak'] / 1024:.0f} MB" if r.get("peak") else "-"
-            print(f"| {n} | {r.get('unknowns', '-')} | {show(r['solve'], args.timeout)} | {peak} | {show(r['derive'], args.timeout)} | "
+            print(f"| {n} | {r.get('unknowns', '-')} | {show(r['solve'], args.timeout)} | {peak} | "
+                  + "".join(f"{show_count(r.get(c))} | " for c in counted) + f"{show(r['derive'], args.timeout)} | "
                   + " | ".join(show(r.get(p), args.timeout) for p in peers) + " |")
-        print("| growth exponent | | " + " | ".join([exponent(rows, "solve", sizes[kind]), "", exponent(rows, "derive", sizes[kind])]
+        print("| growth exponent | | " + " | ".join([exponent(rows, "solve", sizes[kind]), ""] + [exponent(rows, c, sizes[kind]) for c in counted]
+                                                    + [exponent(rows, "derive", sizes[kind])]
                                                     + [exponent(rows, p, sizes[kind]) for p in peers]) + " |")
     files = [f for f in args.files.split(",") if f]
     if files:
         print("\nsingle problems")
-        print("| file | unknowns | tackle solve | tackle derive | " + " | ".join(peers) + " |")
-        print("|---" * (4 + len(peers)) + "|")
+        print("| file | unknowns | tackle solve | " + ("solve instructions | " if args.instructions else "")
+              + "tackle derive | " + " | ".join(peers) + " |")
+        print("|---" * (4 + (1 if args.instructions else 0) + len(peers)) + "|")
         for f in files:
             path = f if os.path.isabs(f) else os.path.join(ROOT, f)
             solve_t, _, _ = best([TACKLE, "solve", path], args.timeout, max(args.repeat, 10))
@@ -226,7 +264,8 @@ def main():
                 cmd, stdin = peer_command(p, unknowns, eqs, work)
                 t, _, _ = best(cmd, args.timeout, max(args.repeat, 10), stdin)
                 cells.append(show(t, args.timeout))
-            print(f"| {os.path.basename(f)} | {len(unknowns)} | {show(solve_t, args.timeout)} | {show(derive_t, args.timeout)} | "
+            count = f"{show_count(instructions([TACKLE, 'solve', path], args.timeout))} | " if args.instructions else ""
+            print(f"| {os.path.basename(f)} | {len(unknowns)} | {show(solve_t, args.timeout)} | {count}{show(derive_t, args.timeout)} | "
                   + " | ".join(cells) + " |")
     shutil.rmtree(work, ignore_errors=True)
 
