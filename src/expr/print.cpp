@@ -2,6 +2,7 @@
 
 #include "core/kind.hpp"
 #include "expr/pairs.hpp"
+#include "expr/rational.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -287,7 +288,6 @@ thread_local const FactorRank* person_rank = nullptr;
 // 16 MB of text): a chain's m_1 + ... + m_256 is in every one of its 511 closed forms, and
 // sorting its terms each time was most of printing them. Not in LaTeX under a person order
 // (the order of factors depends on it).
-constexpr std::size_t long_sum_terms = 16;
 struct LongSums {
   std::unordered_map<ex, std::string, std::hash<ex>, ex_is_equal> text[2];
   std::size_t bytes = 0;

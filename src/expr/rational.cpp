@@ -154,7 +154,7 @@ struct NoSums {
 // Long sums' values looked up in and added to a SumValues (its mutex held by the caller).
 struct SumMemory {
   SumValues& sums;
-  static bool long_sum(const ex& e) { return Pairs::of(e).size() > 16; }
+  static bool long_sum(const ex& e) { return Pairs::of(e).size() > long_sum_terms; }
   const numeric* find(const ex& e) const {
     if (!long_sum(e)) return nullptr;
     const auto it = sums.values.find(e);
@@ -240,13 +240,16 @@ RationalAt rational_at(const ex& e, const RationalPoint& point, SumValues& sums)
   return rational_at_with(e, InPoint{point}, SumMemory{sums});
 }
 
-RationalAt rational_at(const ex& e, const exmap& values) {
-  return rational_at_with(e, [&](const ex& x) -> const numeric* {
+// A symbol's number in a substitution map, or null (also when its value is not a number).
+struct InMap {
+  const exmap& values;
+  const numeric* operator()(const ex& x) const {
     const auto it = values.find(x);
-    if (it == values.end() || !is_exactly<numeric>(it->second)) return nullptr;
-    return &ex_to<numeric>(it->second);
-  });
-}
+    return it == values.end() || !is_exactly<numeric>(it->second) ? nullptr : &ex_to<numeric>(it->second);
+  }
+};
+
+RationalAt rational_at(const ex& e, const exmap& values) { return rational_at_with(e, InMap{values}); }
 
 numeric drawn_value(const std::string& name, std::uint64_t seed) {
   // FNV-1a of the name, mixed with the seed by splitmix64's finalizer.

@@ -65,7 +65,11 @@ Value remembered(ExMemory<Value>& memory, const GiNaC::ex& key, std::size_t limi
   return v;
 }
 [[nodiscard]] RationalAt rational_at(const GiNaC::ex& e, const RationalPoint& point);
-/// The values of long sums (more than 16 terms) at one point, remembered by whoever evaluates
+/// A sum of more terms than this is long: its value at a point, its sign and its printed
+/// terms are worth remembering (a chain's closed forms share m_1 + ... + m_256).
+inline constexpr std::size_t long_sum_terms = 16;
+
+/// The values of long sums (more than long_sum_terms terms) at one point, remembered by whoever evaluates
 /// many expressions at that point (a chain's 511 closed forms share m_1 + ... + m_256): a
 /// sum's value is its value at the point, so the memory changes no result (it forgets
 /// everything past 16384 sums). Guarded by its own mutex; it belongs to one point and must

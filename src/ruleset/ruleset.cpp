@@ -5,9 +5,7 @@
 #include <string_view>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "description/yaml_reader.hpp"
 #include "core/files.hpp"

@@ -315,9 +315,10 @@ std::optional<ex> quick_quotient(const ex& b, const std::vector<std::pair<ex, ex
   // kept out of the expansion: the numerator is that monomial times the rest expanded, and
   // stays so when the rest is a long sum (see content_of_product), as simplest() would
   // factor it. Otherwise the numerator is expanded whole.
-  ex monomial = common_monomial(pieces) / c, num = 0;
+  const ex shared = common_monomial(pieces);
+  ex monomial = shared / c, num = 0;
   for (const ex& p : pieces) num += p;
-  num = (num / (monomial * c)).expand();
+  num = (num / shared).expand();
   if (num.is_zero()) return ex(0);
   std::vector<ex> den = common;
   den.insert(den.end(), pivot_factors.begin(), pivot_factors.end());

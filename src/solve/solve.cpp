@@ -73,7 +73,7 @@ std::optional<int> sign_of(const ex& e) {
   // a number. A long sum's sign is remembered per thread (a chain's 255 conditions share the
   // sum of its 256 masses).
   if (is_exactly<add>(e)) {
-    if (Pairs::of(e).size() <= 16) return sign_of_sum(e);
+    if (Pairs::of(e).size() <= long_sum_terms) return sign_of_sum(e);
     thread_local ExMemory<std::optional<int>> memory;
     return remembered(memory, e, 1024, [&] { return sign_of_sum(e); });
   }
