@@ -7,7 +7,7 @@
 
 For each kind (bench/generate.py) and size n it writes the description, then times, whole
 process and best of --repeat runs:
-  tackle solve    `build/tackle solve FILE`  (peak memory from /usr/bin/time)
+  tackle solve    `build/tackle solve FILE`  (peak memory: the process's own maximum resident size)
   tackle derive   `build/tackle derive FILE`
 and, on the equations tackle writes (`derive --format json`: `equations` and `solved_for`),
 the peers:
@@ -32,6 +32,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -43,43 +44,75 @@ DEFAULT_SIZES = {"chain": [16, 32, 64, 128, 256], "cascade": [2, 4, 6, 8, 10], "
 
 
 def run(cmd, timeout, stdin=None):
-    """(seconds, peak KB or None, completed) of one whole-process run. A run past the timeout
-    is killed with everything it started (its own process group), so that it cannot go on
-    taking a core from the runs after it."""
-    timed = ["/usr/bin/time", "-f", "%M"] + cmd if os.path.exists("/usr/bin/time") else cmd
-    start = time.perf_counter()
-    proc = subprocess.Popen(timed, stdin=subprocess.PIPE if stdin else subprocess.DEVNULL, stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, start_new_session=True)
-    try:
-        out, err = proc.communicate(input=stdin, timeout=timeout)
-    except subprocess.TimeoutExpired:
-        os.killpg(proc.pid, signal.SIGKILL)
-        proc.communicate()
-        return None, None, None
-    seconds = time.perf_counter() - start
-    p = subprocess.CompletedProcess(timed, proc.returncode, out, err)
-    peak = None
-    if timed is not cmd:
-        last = p.stderr.strip().splitlines()[-1:] or [""]
-        peak = int(last[0]) if last[0].isdigit() else None
+    """(seconds, completed) of one whole-process run: from starting the process to reaping it,
+    with no wrapper program timed along (`/usr/bin/time` took 0.7 to 0.9 ms of its own, a
+    quarter of a small problem's time; the peak memory is measured in a run of its own,
+    `peak_of`). Input and output go through files, so that the parent does nothing
+    while the process runs. A run past the timeout is killed with everything it started (its
+    own process group), so that it cannot go on taking a core from the runs after it."""
+    with tempfile.TemporaryFile() as fin, tempfile.TemporaryFile() as fout, tempfile.TemporaryFile() as ferr:
+        if stdin:
+            fin.write(stdin.encode())
+            fin.seek(0)
+        timed_out = threading.Event()
+        started = []
+
+        def kill():
+            timed_out.set()
+            try:
+                os.killpg(started[0].pid, signal.SIGKILL)
+            except (IndexError, ProcessLookupError):
+                pass
+
+        timer = threading.Timer(timeout, kill)  # started before the clock: its thread is not timed
+        timer.start()
+        start = time.perf_counter()
+        proc = subprocess.Popen(cmd, stdin=fin if stdin else subprocess.DEVNULL, stdout=fout, stderr=ferr,
+                                start_new_session=True)
+        started.append(proc)
+        _, status = os.waitpid(proc.pid, 0)
+        seconds = time.perf_counter() - start
+        timer.cancel()
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        if timed_out.is_set():
+            return None, None
+        fout.seek(0)
+        ferr.seek(0)
+        p = subprocess.CompletedProcess(cmd, proc.returncode, fout.read().decode(errors="replace"),
+                                        ferr.read().decode(errors="replace"))
     if p.returncode != 0:
         sys.stderr.write(f"failed ({p.returncode}): {' '.join(cmd)}\n{p.stderr[-2000:]}\n")
-        return None, None, p
-    return seconds, peak, p
+        return None, p
+    return seconds, p
+
+
+def peak_of(cmd, timeout):
+    """Peak resident memory (KB) of one run, from /usr/bin/time (the resource usage of a child
+    that Python starts counts Python's own memory, which the child had before its exec), or
+    None."""
+    if not os.path.exists("/usr/bin/time"):
+        return None
+    try:
+        p = subprocess.run(["/usr/bin/time", "-f", "%M"] + cmd, stdin=subprocess.DEVNULL, capture_output=True,
+                           text=True, timeout=timeout, start_new_session=True)
+    except subprocess.TimeoutExpired:
+        return None
+    last = p.stderr.strip().splitlines()[-1:] or [""]
+    return int(last[0]) if p.returncode == 0 and last[0].isdigit() else None
 
 
 def best(cmd, timeout, repeat, stdin=None):
-    times, peak, out = [], None, None
+    """(best time, completed) of up to `repeat` runs."""
+    times, out = [], None
     for _ in range(repeat):
-        t, m, p = run(cmd, timeout, stdin)
+        t, p = run(cmd, timeout, stdin)
         if t is None:
-            return None, None, None
+            return None, None
         times.append(t)
-        peak = max(peak or 0, m or 0) or None
         out = p
         if t > 5:  # one run of a slow case is enough
             break
-    return min(times), peak, out
+    return min(times), out
 
 
 NAME = re.compile(r"\b(ddot|dot)\(([A-Za-z_][A-Za-z_0-9]*)\)")
@@ -210,19 +243,20 @@ def main():
     startup = {}
     for p in peers:
         cmd, stdin = peer_command(p, ["x"], [("2*x", "1")], work)
-        startup[p], _, _ = best(cmd, args.timeout, args.repeat, stdin)
-    t, _, _ = best([TACKLE, "--version"], args.timeout, args.repeat)
+        startup[p], _ = best(cmd, args.timeout, args.repeat, stdin)
+    t, _ = best([TACKLE, "--version"], args.timeout, args.repeat)
     print(f"start-up: tackle {show(t, args.timeout)}, " + ", ".join(f"{p} {show(startup[p], args.timeout)}" for p in peers))
 
-    for kind in args.kinds.split(","):
+    for kind in [k for k in args.kinds.split(",") if k]:
         rows = {}
         for n in sizes[kind]:
             path = os.path.join(work, f"{kind}-{n}.yaml")
             with open(path, "w") as o:
                 o.write(subprocess.run([sys.executable, generate, kind, str(n)], capture_output=True, text=True, check=True).stdout)
             row = {}
-            row["solve"], row["peak"], _ = best([TACKLE, "solve", path], args.timeout, args.repeat)
-            row["derive"], _, _ = best([TACKLE, "derive", path], args.timeout, args.repeat)
+            row["solve"], _ = best([TACKLE, "solve", path], args.timeout, args.repeat)
+            row["peak"] = peak_of([TACKLE, "solve", path], args.timeout) if row["solve"] is not None else None
+            row["derive"], _ = best([TACKLE, "derive", path], args.timeout, args.repeat)
             if args.instructions:
                 row["instructions"] = instructions([TACKLE, "solve", path], args.timeout)
             if peers:
@@ -230,7 +264,7 @@ def main():
                 row["unknowns"] = len(unknowns)
                 for p in peers:
                     cmd, stdin = peer_command(p, unknowns, eqs, work)
-                    row[p], _, _ = best(cmd, args.timeout, args.repeat, stdin)
+                    row[p], _ = best(cmd, args.timeout, args.repeat, stdin)
             rows[n] = row
             print(f"  {kind} n={n} done", file=sys.stderr)
         cols = ["solve", "derive"] + peers
@@ -256,13 +290,13 @@ def main():
         print("|---" * (4 + (1 if args.instructions else 0) + len(peers)) + "|")
         for f in files:
             path = f if os.path.isabs(f) else os.path.join(ROOT, f)
-            solve_t, _, _ = best([TACKLE, "solve", path], args.timeout, max(args.repeat, 10))
-            derive_t, _, _ = best([TACKLE, "derive", path], args.timeout, max(args.repeat, 10))
+            solve_t, _ = best([TACKLE, "solve", path], args.timeout, max(args.repeat, 10))
+            derive_t, _ = best([TACKLE, "derive", path], args.timeout, max(args.repeat, 10))
             unknowns, eqs = equations_of(path)
             cells = []
             for p in peers:
                 cmd, stdin = peer_command(p, unknowns, eqs, work)
-                t, _, _ = best(cmd, args.timeout, max(args.repeat, 10), stdin)
+                t, _ = best(cmd, args.timeout, max(args.repeat, 10), stdin)
                 cells.append(show(t, args.timeout))
             count = f"{show_count(instructions([TACKLE, 'solve', path], args.timeout))} | " if args.instructions else ""
             print(f"| {os.path.basename(f)} | {len(unknowns)} | {show(solve_t, args.timeout)} | {count}{show(derive_t, args.timeout)} | "
