@@ -28,16 +28,16 @@ struct Reader {
   Diagnostics& diags;
   Description& d;
 
-  std::optional<Text> opt_scalar(const YAML::Node& map, const char* key, const std::string& what) {
-    const YAML::Node n = map[key];
+  std::optional<Text> opt_scalar(const yaml::Node& map, const char* key, const std::string& what) {
+    const yaml::Node n = map[key];
     if (!n) return std::nullopt;
     return scalar(n, "'" + std::string(key) + "' of " + what, file, diags);
   }
 
-  Text key_text(const YAML::Node& key) { return {key.Scalar(), where(key, file)}; }
+  Text key_text(const yaml::Node& key) { return {key.Scalar(), where(key, file)}; }
 
   // A scalar (one item) or a list of scalars.
-  std::optional<VectorDesc> vector(const YAML::Node& n, const std::string& what) {
+  std::optional<VectorDesc> vector(const yaml::Node& n, const std::string& what) {
     VectorDesc v;
     v.at = where(n, file);
     if (n.IsScalar()) {
@@ -58,14 +58,14 @@ struct Reader {
     }
     return v;
   }
-  std::optional<VectorDesc> opt_vector(const YAML::Node& map, const char* key, const std::string& what) {
-    const YAML::Node n = map[key];
+  std::optional<VectorDesc> opt_vector(const yaml::Node& map, const char* key, const std::string& what) {
+    const yaml::Node n = map[key];
     if (!n) return std::nullopt;
     return vector(n, "'" + std::string(key) + "' of " + what);
   }
 
   // A section that maps names to entries (parameters, bodies, points).
-  bool name_map(const YAML::Node& n, const std::string& section) {
+  bool name_map(const yaml::Node& n, const std::string& section) {
     if (!n.IsMap()) {
       diags.error(where(n, file), "'" + section + "' is " + yaml::kind_name(n) + " (expected a mapping of names)");
       return false;
@@ -74,7 +74,7 @@ struct Reader {
     return true;
   }
 
-  void read_parameters(const YAML::Node& n) {
+  void read_parameters(const yaml::Node& n) {
     if (!name_map(n, "parameters")) return;
     std::set<std::string> seen;
     for (const auto& kv : n) {
@@ -82,14 +82,14 @@ struct Reader {
       ParameterDesc p;
       p.name = key_text(kv.first);
       const std::string what = "parameter '" + p.name.text + "'";
-      const YAML::Node v = kv.second;
+      const yaml::Node v = kv.second;
       if (v.IsNull()) {
         // symbolic only
       } else if (v.IsScalar()) {
         p.value = Text{v.Scalar(), where(v, file)};
       } else if (check_map(v, {"value", "unit", "dimension", "tex", "positive", "description", "define", "range", "round"},
                            what, file, diags)) {
-        if (const YAML::Node r = v["range"]) {
+        if (const yaml::Node r = v["range"]) {
           if (auto items = scalar_list(r, "'range' of " + what, file, diags)) {
             if (items->size() != 2 || !r.IsSequence())
               diags.error(where(r, file), "'range' of " + what + " has " + std::to_string(items->size()) +
@@ -121,7 +121,7 @@ struct Reader {
 
   // `given`: a list of names, or a mapping from names to their values at the instant
   // (null, a number, or {value, unit}).
-  void read_given(const YAML::Node& n) {
+  void read_given(const yaml::Node& n) {
     if (!n.IsMap()) {
       if (auto items = scalar_list(n, "'given'", file, diags))
         for (const auto& t : *items) d.given.push_back({t, std::nullopt, std::nullopt});
@@ -132,7 +132,7 @@ struct Reader {
       if (!seen.insert(kv.first.Scalar()).second) continue;  // reported as a duplicate key
       GivenDesc g{key_text(kv.first), std::nullopt, std::nullopt};
       const std::string what = "'given' value of '" + g.name.text + "'";
-      const YAML::Node v = kv.second;
+      const yaml::Node v = kv.second;
       if (v.IsNull()) {
         // known, without a value
       } else if (v.IsScalar()) {
@@ -146,7 +146,7 @@ struct Reader {
     }
   }
 
-  void read_bodies(const YAML::Node& n) {
+  void read_bodies(const yaml::Node& n) {
     if (!name_map(n, "bodies")) return;
     std::set<std::string> seen;
     for (const auto& kv : n) {
@@ -159,7 +159,7 @@ struct Reader {
         b.mass = opt_scalar(kv.second, "mass", what);
         b.position = opt_scalar(kv.second, "position", what);
         b.center_of_mass = opt_vector(kv.second, "center_of_mass", what);
-        if (const YAML::Node acc = kv.second["acceleration"]) {
+        if (const yaml::Node acc = kv.second["acceleration"]) {
           if (acc.IsMap()) {
             if (check_map(acc, {"along", "name"}, "'acceleration' of " + what, file, diags)) {
               b.accel_along = opt_vector(acc, "along", "'acceleration' of " + what);
@@ -171,7 +171,7 @@ struct Reader {
             b.acceleration = vector(acc, "'acceleration' of " + what);
           }
         }
-        if (const YAML::Node dr = kv.second["draw"]) {
+        if (const yaml::Node dr = kv.second["draw"]) {
           if (!dr.IsMap())
             diags.error(where(dr, file), "'draw' of " + what + " is not a mapping (expected {shape: rectangle, size: [w, h]} or {shape: circle, size: [d]})");
           else if (check_map(dr, {"shape", "size"}, "'draw' of " + what, file, diags)) {
@@ -185,7 +185,7 @@ struct Reader {
     }
   }
 
-  void read_points(const YAML::Node& n) {
+  void read_points(const yaml::Node& n) {
     if (!name_map(n, "points")) return;
     std::set<std::string> seen;
     for (const auto& kv : n) {
@@ -212,7 +212,7 @@ struct Reader {
 
   // A connection entry: `type` (given, or implied by the section), optional `name`, and
   // arguments the rule checks later.
-  void read_connection(const YAML::Node& n, const std::optional<std::string>& implied_type,
+  void read_connection(const yaml::Node& n, const std::optional<std::string>& implied_type,
                        const std::string& section) {
     if (!n.IsMap()) {
       diags.error(where(n, file), "an entry of '" + section + "' is " + yaml::kind_name(n) + " (expected a mapping)");
@@ -252,7 +252,7 @@ struct Reader {
     d.connections.push_back(std::move(c));
   }
 
-  void read_list(const YAML::Node& n, const std::string& section, const std::optional<std::string>& implied) {
+  void read_list(const yaml::Node& n, const std::string& section, const std::optional<std::string>& implied) {
     if (!n.IsSequence()) {
       diags.error(where(n, file), "'" + section + "' is " + yaml::kind_name(n) + " (expected a list)");
       return;
@@ -260,7 +260,7 @@ struct Reader {
     for (const auto& item : n) read_connection(item, implied, section);
   }
 
-  void read_layout(const YAML::Node& n) {
+  void read_layout(const yaml::Node& n) {
     if (!n.IsMap()) {
       diags.error(where(n, file), "'layout' is " + yaml::kind_name(n) + " (expected a mapping of coordinates to numbers)");
       return;
@@ -271,7 +271,7 @@ struct Reader {
         d.layout.emplace_back(key_text(kv.first), *v);
   }
 
-  void read_find(const YAML::Node& n) {
+  void read_find(const yaml::Node& n) {
     if (!n.IsSequence()) {
       diags.error(where(n, file), "'find' is " + yaml::kind_name(n) + " (expected a list of unknowns)");
       return;
@@ -297,7 +297,7 @@ struct Reader {
     }
   }
 
-  void read_motion(const YAML::Node& n) {
+  void read_motion(const yaml::Node& n) {
     if (!check_map(n, {"coordinates", "initial", "until", "plot", "speed_at"}, "'motion'", file, diags)) return;
     MotionDesc mo;
     mo.at = where(n, file);
@@ -343,7 +343,7 @@ struct Reader {
   }
 
   // A mapping of names to expressions (`{dot(x): v_1}`), into `out`.
-  void read_values(const YAML::Node& n, const std::string& what, std::vector<std::pair<Text, Text>>& out,
+  void read_values(const yaml::Node& n, const std::string& what, std::vector<std::pair<Text, Text>>& out,
                    const std::string& expected = "a mapping of rates to values, e.g. {dot(x): v_1}") {
     if (!n.IsMap()) {
       diags.error(where(n, file), what + " is " + yaml::kind_name(n) + " (expected " + expected + ")");
@@ -358,7 +358,7 @@ struct Reader {
     }
   }
 
-  void read_interval(const YAML::Node& n) {
+  void read_interval(const yaml::Node& n) {
     if (!check_map(n, {"duration", "distance", "from", "to"}, "'interval'", file, diags)) return;
     IntervalDesc iv;
     iv.at = where(n, file);
@@ -372,7 +372,7 @@ struct Reader {
     d.interval = std::move(iv);
   }
 
-  void read_impact(const YAML::Node& n) {
+  void read_impact(const yaml::Node& n) {
     if (!check_map(n, {"from", "plastic", "restitution"}, "'impact'", file, diags)) return;
     ImpactDesc im;
     im.at = where(n, file);
@@ -390,7 +390,7 @@ struct Reader {
 
   // The phases, each read as a description of its own from the same document (locations
   // stay those of the file); the shared parameters come first in each.
-  void read_phases(const YAML::Node& n) {
+  void read_phases(const yaml::Node& n) {
     if (!n.IsSequence() || n.size() == 0) {
       diags.error(where(n, file), "'phases' is " + (n.IsSequence() ? std::string("an empty list") : yaml::kind_name(n)) +
                                       " (expected a list of phases, each a mapping with a name, its bodies, ...)");
@@ -424,7 +424,7 @@ struct Reader {
     }
   }
 
-  void read_root(const YAML::Node& root, bool phase) {
+  void read_root(const yaml::Node& root, bool phase) {
     std::vector<std::string> keys{"axes", "parameters", "gravity", "bodies", "points", "connections", "loads",
                "strings", "layout", "given", "find", "derive", "expected", "expected_combinations", "expected_conditions", "expected_free", "expected_power",
                "notes", "sweep", "motion", "expected_motion", "interval", "impact"};
@@ -491,7 +491,7 @@ struct Reader {
     if (auto im = root["impact"]) read_impact(im);
   }
 
-  void read_derive(const YAML::Node& n) {
+  void read_derive(const yaml::Node& n) {
     if (!n.IsSequence()) {
       diags.error(where(n, file), "'derive' is " + yaml::kind_name(n) + " (expected a list of balances)");
       return;
@@ -500,7 +500,7 @@ struct Reader {
       if (!check_map(item, {"lmb", "amb", "constraint", "about", "axis"}, "an entry of 'derive'", file, diags)) continue;
       DeriveDesc dd;
       int kinds = 0;
-      YAML::Node value;
+      yaml::Node value;
       for (const char* k : {"lmb", "amb", "constraint"})
         if (item[k]) {
           ++kinds;
@@ -537,7 +537,8 @@ DescriptionRead read_description_text(const std::string& text, const std::string
   DescriptionRead out;
   Description& d = out.description;
   d.file = file;
-  const YAML::Node root = yaml::load(text, file, diags);
+  const yaml::Document doc = yaml::load(text, file, diags);
+  const yaml::Node root = doc.root();
   if (diags.empty() && !root.IsMap())
     diags.error({file, 1, 1}, "the description is " + yaml::kind_name(root) + " (expected a mapping with title, bodies, ...)");
   if (!diags.empty()) {

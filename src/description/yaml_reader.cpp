@@ -2,6 +2,11 @@
 
 #include <algorithm>
 #include <set>
+#include <optional>
+#include <string_view>
+#include <unordered_map>
+
+#include <yaml.h>
 
 #include <fmt/format.h>
 
@@ -9,48 +14,238 @@
 
 namespace tackle::yaml {
 
-Location where(const YAML::Node& n, const std::string& file) {
-  const YAML::Mark m = n.Mark();
-  if (m.line < 0) return {file, 0, 0};
-  // A quoted scalar's mark is its opening quote (yaml-cpp tags quoted scalars "!"); columns
-  // inside it count from the first character after the quote.
-  const int quote = (n.IsScalar() && n.Tag() == "!") ? 1 : 0;
-  return {file, m.line + 1, m.column + 1 + quote};
+namespace {
+const std::string empty_text;
+
+// Line and column (0-based) of a byte offset.
+Mark mark_at(const std::string& text, std::size_t offset) {
+  offset = std::min(offset, text.size());
+  const auto begin = text.begin();
+  const int line = static_cast<int>(std::count(begin, begin + static_cast<std::ptrdiff_t>(offset), '\n'));
+  const auto line_start = offset == 0 ? std::string::npos : text.rfind('\n', offset - 1);
+  const std::size_t column = line_start == std::string::npos ? offset : offset - line_start - 1;
+  return {line, static_cast<int>(column)};
 }
 
-YAML::Node load(const std::string& text, const std::string& file, Diagnostics& diags) {
+bool null_text(std::string_view s) { return s.empty() || s == "~" || s == "null" || s == "Null" || s == "NULL"; }
+}  // namespace
+
+const std::string& Node::Scalar() const { return d_ && d_->type == NodeType::Scalar ? d_->scalar : empty_text; }
+
+std::size_t Node::size() const {
+  if (!d_) return 0;
+  if (d_->type == NodeType::Sequence) return d_->items.size();
+  if (d_->type == NodeType::Map) return d_->items.size() / 2;
+  return 0;
+}
+
+Node Node::operator[](std::string_view key) const {
+  if (!d_ || d_->type != NodeType::Map) return {};
+  for (std::size_t i = 0; i + 1 < d_->items.size(); i += 2)
+    if (d_->items[i]->type == NodeType::Scalar && d_->items[i]->scalar == key) return Node(d_->items[i + 1]);
+  return {};
+}
+
+Node Node::operator[](std::size_t i) const {
+  if (!d_ || d_->type != NodeType::Sequence || i >= d_->items.size()) return {};
+  return Node(d_->items[i]);
+}
+
+Node::iterator Node::begin() const { return {d_, 0}; }
+Node::iterator Node::end() const {
+  return {d_, d_ && (d_->type == NodeType::Sequence || d_->type == NodeType::Map) ? d_->items.size() : 0};
+}
+
+Entry Node::iterator::operator*() const {
+  Entry e;
+  if (d_->type == NodeType::Map) {
+    e.first = Node(d_->items[i_]);
+    e.second = Node(d_->items[i_ + 1]);
+    static_cast<Node&>(e) = e.second;
+  } else {
+    static_cast<Node&>(e) = Node(d_->items[i_]);
+  }
+  return e;
+}
+
+Location where(const Node& n, const std::string& file) {
+  const Mark m = n.mark();
+  if (m.line < 0) return {file, 0, 0};
+  // A quoted scalar's mark is its opening quote; columns inside it count from the first
+  // character after the quote.
+  return {file, m.line + 1, m.column + 1 + (n.IsScalar() && n.quoted() ? 1 : 0)};
+}
+
+// Builds a Document from libyaml's events of the first document (later ones are not read).
+class Loader {
+ public:
+  Loader(const std::string& text, const std::string& file, Diagnostics& diags)
+      : text_(text), file_(file), diags_(diags) {
+    yaml_parser_initialize(&parser_);
+    yaml_parser_set_input_string(&parser_, reinterpret_cast<const unsigned char*>(text.data()), text.size());
+    yaml_parser_set_encoding(&parser_, YAML_UTF8_ENCODING);
+  }
+  ~Loader() { yaml_parser_delete(&parser_); }
+  Loader(const Loader&) = delete;
+  Loader& operator=(const Loader&) = delete;
+
+  Document run() {
+    Document doc;
+    for (;;) {
+      yaml_event_t ev;
+      if (!yaml_parser_parse(&parser_, &ev)) {
+        report_parser_error();
+        doc.root_ = nullptr;
+        return doc;
+      }
+      const bool done = handle(ev, doc);
+      yaml_event_delete(&ev);
+      if (failed_) {
+        doc.root_ = nullptr;
+        return doc;
+      }
+      if (done) break;
+    }
+    if (!doc.root_) {  // no document at all: an empty (or comment-only) text
+      doc.nodes_->emplace_back();
+      doc.root_ = &doc.nodes_->back();
+    }
+    return doc;
+  }
+
+ private:
+  static std::string_view text_of(const yaml_char_t* s) {
+    return s ? std::string_view(reinterpret_cast<const char*>(s)) : std::string_view();
+  }
+
+  NodeData* make(Document& doc, NodeType type, const yaml_mark_t& m) {
+    NodeData& d = doc.nodes_->emplace_back();
+    d.type = type;
+    d.mark = {static_cast<int>(m.line), static_cast<int>(m.column)};
+    return &d;
+  }
+
+  void attach(Document& doc, const NodeData* d) {
+    if (open_.empty())
+      doc.root_ = d;
+    else
+      open_.back()->items.push_back(d);
+  }
+
+  void remember(const yaml_char_t* anchor, const NodeData* d) {
+    if (anchor) anchors_[std::string(text_of(anchor))] = d;
+  }
+
+  // True when the first document has ended.
+  bool handle(const yaml_event_t& ev, Document& doc) {
+    switch (ev.type) {
+      case YAML_DOCUMENT_END_EVENT:
+      case YAML_STREAM_END_EVENT: return true;
+      case YAML_SCALAR_EVENT: {
+        const auto& s = ev.data.scalar;
+        const std::string_view tag = text_of(s.tag);
+        const bool plain = s.style == YAML_PLAIN_SCALAR_STYLE || s.style == YAML_ANY_SCALAR_STYLE;
+        const std::string_view value(reinterpret_cast<const char*>(s.value), s.length);
+        NodeData* d = make(doc, plain && !s.tag && null_text(value) ? NodeType::Null : NodeType::Scalar, ev.start_mark);
+        if (d->type == NodeType::Scalar) d->scalar.assign(value);
+        d->quoted = !plain && (tag.empty() || tag == "!");
+        attach(doc, d);
+        remember(s.anchor, d);
+        return false;
+      }
+      case YAML_ALIAS_EVENT: {
+        const auto it = anchors_.find(std::string(text_of(ev.data.alias.anchor)));
+        if (it == anchors_.end()) {
+          const Mark m{static_cast<int>(ev.start_mark.line), static_cast<int>(ev.start_mark.column)};
+          diags_.error({file_, m.line + 1, m.column + 1},
+                       "invalid YAML: the alias *" + std::string(text_of(ev.data.alias.anchor)) +
+                           " names no anchor before it (expected &" + std::string(text_of(ev.data.alias.anchor)) +
+                           " on a complete node earlier in the file)");
+          failed_ = true;
+          return true;
+        }
+        attach(doc, it->second);
+        return false;
+      }
+      case YAML_SEQUENCE_START_EVENT:
+      case YAML_MAPPING_START_EVENT: {
+        const bool map = ev.type == YAML_MAPPING_START_EVENT;
+        NodeData* d = make(doc, map ? NodeType::Map : NodeType::Sequence, ev.start_mark);
+        attach(doc, d);
+        open_.push_back(d);
+        const yaml_char_t* anchor = map ? ev.data.mapping_start.anchor : ev.data.sequence_start.anchor;
+        open_anchors_.push_back(anchor ? std::optional<std::string>(text_of(anchor)) : std::nullopt);
+        return false;
+      }
+      case YAML_SEQUENCE_END_EVENT:
+      case YAML_MAPPING_END_EVENT: {
+        const NodeData* d = open_.back();
+        if (open_anchors_.back()) anchors_[*open_anchors_.back()] = d;  // complete: an alias may name it now
+        open_.pop_back();
+        open_anchors_.pop_back();
+        return false;
+      }
+      default: return false;
+    }
+  }
+
+  void report_parser_error() {
+    failed_ = true;
+    if (parser_.error == YAML_MEMORY_ERROR) {
+      diags_.error({file_, 0, 0}, "invalid YAML: the document is too large to read (expected a smaller file)");
+      return;
+    }
+    const std::string problem = parser_.problem ? parser_.problem : "unreadable text";
+    Mark at;
+    if (parser_.error == YAML_READER_ERROR)
+      at = mark_at(text_, parser_.problem_offset);
+    else
+      at = {static_cast<int>(parser_.problem_mark.line), static_cast<int>(parser_.problem_mark.column)};
+    std::string msg = "invalid YAML: " + problem;
+    if (parser_.context)
+      msg += fmt::format(" ({} started at line {}, column {})", parser_.context, parser_.context_mark.line + 1,
+                         parser_.context_mark.column + 1);
+    diags_.error({file_, at.line + 1, at.column + 1}, msg);
+  }
+
+  const std::string& text_;
+  const std::string& file_;
+  Diagnostics& diags_;
+  yaml_parser_t parser_{};
+  std::vector<NodeData*> open_;
+  std::vector<std::optional<std::string>> open_anchors_;
+  std::unordered_map<std::string, const NodeData*> anchors_;
+  bool failed_ = false;
+};
+
+Document load(const std::string& text, const std::string& file, Diagnostics& diags) {
   if (const auto bad = invalid_utf8_at(text)) {
     const auto line_start = text.rfind('\n', *bad == 0 ? 0 : *bad - 1);
     const std::size_t col = line_start == std::string::npos || *bad == 0 ? *bad + 1 : *bad - line_start;
     const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(*bad), '\n'));
     diags.error({file, line, static_cast<int>(col)},
                 fmt::format("invalid UTF-8 byte 0x{:02X} (expected UTF-8 text)", static_cast<unsigned char>(text[*bad])));
-    return YAML::Node();
+    return Document();
   }
-  try {
-    return YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    diags.error({file, e.mark.line + 1, e.mark.column + 1}, "invalid YAML: " + e.msg);
-  }
-  return YAML::Node();
+  return Loader(text, file, diags).run();
 }
 
-std::string kind_name(const YAML::Node& n) {
+std::string kind_name(const Node& n) {
   switch (n.Type()) {
-    case YAML::NodeType::Map: return "a mapping";
-    case YAML::NodeType::Sequence: return "a list";
-    case YAML::NodeType::Scalar: return "a scalar";
+    case NodeType::Map: return "a mapping";
+    case NodeType::Sequence: return "a list";
+    case NodeType::Scalar: return "a scalar";
     default: return "nothing";
   }
 }
 
-bool is_list(const YAML::Node& n, const std::string& what, const std::string& file, Diagnostics& diags) {
+bool is_list(const Node& n, const std::string& what, const std::string& file, Diagnostics& diags) {
   if (n.IsSequence()) return true;
   diags.error(where(n, file), what + " is " + kind_name(n) + " (expected a list)");
   return false;
 }
 
-bool check_map(const YAML::Node& map, const std::vector<std::string>& allowed, const std::string& what,
+bool check_map(const Node& map, const std::vector<std::string>& allowed, const std::string& what,
                const std::string& file, Diagnostics& diags) {
   if (!map.IsMap()) {
     diags.error(where(map, file), what + " is " + kind_name(map) + " (expected a mapping)");
@@ -81,14 +276,14 @@ bool check_map(const YAML::Node& map, const std::vector<std::string>& allowed, c
   return true;
 }
 
-void check_unique_keys(const YAML::Node& map, const std::string& what, const std::string& file, Diagnostics& diags) {
+void check_unique_keys(const Node& map, const std::string& what, const std::string& file, Diagnostics& diags) {
   std::set<std::string> seen;
   for (const auto& kv : map)
     if (kv.first.IsScalar() && !seen.insert(kv.first.Scalar()).second)
       diags.error(where(kv.first, file), "duplicate key '" + kv.first.Scalar() + "' in " + what);
 }
 
-std::optional<Text> scalar(const YAML::Node& n, const std::string& what, const std::string& file,
+std::optional<Text> scalar(const Node& n, const std::string& what, const std::string& file,
                            Diagnostics& diags) {
   if (!n.IsScalar()) {
     diags.error(where(n, file), what + " is " + kind_name(n) + " (expected a scalar)");
@@ -97,7 +292,7 @@ std::optional<Text> scalar(const YAML::Node& n, const std::string& what, const s
   return Text{n.Scalar(), where(n, file)};
 }
 
-std::optional<std::vector<Text>> scalar_list(const YAML::Node& n, const std::string& what,
+std::optional<std::vector<Text>> scalar_list(const Node& n, const std::string& what,
                                              const std::string& file, Diagnostics& diags) {
   std::vector<Text> out;
   if (n.IsScalar()) {

@@ -161,7 +161,7 @@ struct RuleReader {
     return std::nullopt;
   }
 
-  void read_args(const YAML::Node& n, bool required, Rule& r) {
+  void read_args(const yaml::Node& n, bool required, Rule& r) {
     if (!n.IsMap()) {
       diags.error(where(n, file), "'" + std::string(required ? "needs" : "optional") + "' is " +
                                       yaml::kind_name(n) + " (expected a mapping of argument names to kinds)");
@@ -196,8 +196,8 @@ struct RuleReader {
     }
   }
 
-  std::string need_scalar(const YAML::Node& map, const char* key, const std::string& what) {
-    const YAML::Node n = map[key];
+  std::string need_scalar(const yaml::Node& map, const char* key, const std::string& what) {
+    const yaml::Node n = map[key];
     if (!n) {
       diags.error(where(map, file), what + " has no '" + key + "'");
       return {};
@@ -207,7 +207,7 @@ struct RuleReader {
   }
 
   // Which single key of `kinds` the map uses, e.g. `on` or `along` for a load.
-  std::optional<std::string> which(const YAML::Node& item, const std::vector<std::string>& kinds,
+  std::optional<std::string> which(const yaml::Node& item, const std::vector<std::string>& kinds,
                                    const std::string& what) {
     std::optional<std::string> found;
     for (const auto& k : kinds)
@@ -235,7 +235,7 @@ struct RuleReader {
                           " but the rule declares it as " + names[static_cast<int>(a->kind)]);
   }
 
-  Rule read(const YAML::Node& root) {
+  Rule read(const yaml::Node& root) {
     Rule r;
     r.at = where(root, file);
     if (!check_map(root, {"type", "summary", "needs", "optional", "one_of", "unknowns", "loads", "constraints",
@@ -467,7 +467,8 @@ struct RuleReader {
 
 Rule parse_rule(const std::string& text, const std::string& file) {
   Diagnostics diags;
-  const YAML::Node root = yaml::load(text, file, diags);
+  const yaml::Document doc = yaml::load(text, file, diags);
+  const yaml::Node root = doc.root();
   Rule r;
   if (diags.empty()) r = RuleReader{file, diags}.read(root);
   diags.throw_if_any();

@@ -39,7 +39,8 @@ TEST_CASE("Description: the unbroken problem is accepted", "[errors]") { CHECK(e
 
 TEST_CASE("Description: bad YAML is located", "[errors]") {
   CHECK(errors_of(with(good, "layout: {x_A: -1, x_B: 1}", "layout: {x_A: -1, x_B: 1")) ==
-        Messages{"t.yaml:15:12: invalid YAML: end of map flow not found"});
+        Messages{"t.yaml:15:12: invalid YAML: did not find expected ',' or '}' (while parsing a flow mapping "
+                 "started at line 14, column 9)"});
 }
 
 TEST_CASE("Description: an unknown key suggests the nearest valid key", "[errors]") {
