@@ -132,8 +132,9 @@ class Loader {
       open_.back()->items.push_back(d);
   }
 
-  void remember(const yaml_char_t* anchor, const NodeData* d) {
-    if (anchor) anchors_[std::string(text_of(anchor))] = d;
+  // Counts nodes a reader walks into the collection being read.
+  void walked(std::size_t nodes) {
+    if (!open_walked_.empty()) open_walked_.back() += nodes;
   }
 
   // True when the first document has ended.
@@ -150,7 +151,8 @@ class Loader {
         if (d->type == NodeType::Scalar) d->scalar.assign(value);
         d->quoted = !plain && (tag.empty() || tag == "!");
         attach(doc, d);
-        remember(s.anchor, d);
+        walked(1);
+        if (s.anchor) anchors_[std::string(text_of(s.anchor))] = {d, 1};
         return false;
       }
       case YAML_ALIAS_EVENT: {
@@ -164,7 +166,19 @@ class Loader {
           failed_ = true;
           return true;
         }
-        attach(doc, it->second);
+        // Aliases share their node, so a reader walks it once per alias: a few aliases of
+        // aliases would have it walk (and report on) billions of nodes from a small file.
+        repeated_ += it->second.second;
+        if (repeated_ > std::max(repeat_limit, doc.nodes_->size())) {
+          diags_.error({file_, static_cast<int>(ev.start_mark.line) + 1, static_cast<int>(ev.start_mark.column) + 1},
+                       fmt::format("invalid YAML: with the alias *{}, aliases repeat {} nodes (expected at most {}, or "
+                                   "as many as the file itself has)",
+                                   text_of(ev.data.alias.anchor), repeated_, std::max(repeat_limit, doc.nodes_->size())));
+          failed_ = true;
+          return true;
+        }
+        attach(doc, it->second.first);
+        walked(it->second.second);
         return false;
       }
       case YAML_SEQUENCE_START_EVENT:
@@ -175,14 +189,18 @@ class Loader {
         open_.push_back(d);
         const yaml_char_t* anchor = map ? ev.data.mapping_start.anchor : ev.data.sequence_start.anchor;
         open_anchors_.push_back(anchor ? std::optional<std::string>(text_of(anchor)) : std::nullopt);
+        open_walked_.push_back(1);
         return false;
       }
       case YAML_SEQUENCE_END_EVENT:
       case YAML_MAPPING_END_EVENT: {
         const NodeData* d = open_.back();
-        if (open_anchors_.back()) anchors_[*open_anchors_.back()] = d;  // complete: an alias may name it now
+        const std::size_t nodes = open_walked_.back();
+        if (open_anchors_.back()) anchors_[*open_anchors_.back()] = {d, nodes};  // complete: an alias may name it now
         open_.pop_back();
         open_anchors_.pop_back();
+        open_walked_.pop_back();
+        walked(nodes);
         return false;
       }
       default: return false;
@@ -214,7 +232,11 @@ class Loader {
   yaml_parser_t parser_{};
   std::vector<NodeData*> open_;
   std::vector<std::optional<std::string>> open_anchors_;
-  std::unordered_map<std::string, const NodeData*> anchors_;
+  std::vector<std::size_t> open_walked_;  // nodes walked in each open collection, aliases counted out
+  // Each anchor's node and the nodes a reader walks in it.
+  std::unordered_map<std::string, std::pair<const NodeData*, std::size_t>> anchors_;
+  std::size_t repeated_ = 0;  // nodes that aliases repeat
+  static constexpr std::size_t repeat_limit = 10000;
   bool failed_ = false;
 };
 

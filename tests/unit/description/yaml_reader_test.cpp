@@ -145,3 +145,23 @@ TEST_CASE("YAML: deep nesting is loaded without recursion", "[yaml]") {
   CHECK(n.IsSequence());
   CHECK(n.size() == 0);
 }
+
+TEST_CASE("YAML: aliases may not repeat more nodes than the file has, or 10000", "[yaml]") {
+  // Each alias is the node it names, so a reader walks that node once per alias: four
+  // levels of ten aliases each are 10^4 walks of a ten-item list from a 200-byte file.
+  std::string text = "a: &a [x, x, x, x, x, x, x, x, x, x]\n";
+  for (const char* level : {"b", "c", "d", "e"}) {
+    const char below = static_cast<char>(level[0] - 1);
+    text += std::string(level) + ": &" + level + " [";
+    for (int i = 0; i < 10; ++i) text += std::string(i ? ", *" : "*") + below;
+    text += "]\n";
+  }
+  CHECK(load(text).errors ==
+        std::vector<std::string>{"t.yaml:4:36: invalid YAML: with the alias *c, aliases repeat 10108 nodes "
+                                 "(expected at most 10000, or as many as the file itself has)"});
+  // The same aliases, fewer of them: 10 + 10 * 11 + ... stays under the limit and is read.
+  const auto small = load("a: &a [x, x, x, x, x, x, x, x, x, x]\nb: &b [*a, *a, *a, *a, *a, *a, *a, *a, *a, *a]\n"
+                          "c: [*b, *b, *b, *b, *b, *b, *b, *b, *b, *b]\n");
+  REQUIRE(small.errors.empty());
+  CHECK(small.doc.root()["c"][9][9][9].Scalar() == "x");
+}
