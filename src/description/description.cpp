@@ -34,17 +34,17 @@ struct Reader {
     return scalar(n, "'" + std::string(key) + "' of " + what, file, diags);
   }
 
-  Text key_text(const yaml::Node& key) { return {key.Scalar(), where(key, file)}; }
+  Text key_text(const yaml::Node& key) { return {key.text(), where(key, file)}; }
 
   // A scalar (one item) or a list of scalars.
   std::optional<VectorDesc> vector(const yaml::Node& n, const std::string& what) {
     VectorDesc v;
     v.at = where(n, file);
-    if (n.IsScalar()) {
-      v.items.push_back({n.Scalar(), where(n, file)});
+    if (n.is_scalar()) {
+      v.items.push_back({n.text(), where(n, file)});
       return v;
     }
-    if (!n.IsSequence()) {
+    if (!n.is_sequence()) {
       diags.error(where(n, file), what + " is " + yaml::kind_name(n) + " (expected an expression or a list of them)");
       return std::nullopt;
     }
@@ -66,7 +66,7 @@ struct Reader {
 
   // A section that maps names to entries (parameters, bodies, points).
   bool name_map(const yaml::Node& n, const std::string& section) {
-    if (!n.IsMap()) {
+    if (!n.is_map()) {
       diags.error(where(n, file), "'" + section + "' is " + yaml::kind_name(n) + " (expected a mapping of names)");
       return false;
     }
@@ -78,20 +78,20 @@ struct Reader {
     if (!name_map(n, "parameters")) return;
     std::set<std::string> seen;
     for (const auto& kv : n) {
-      if (!seen.insert(kv.first.Scalar()).second) continue;  // reported as a duplicate key
+      if (!seen.insert(kv.first.text()).second) continue;  // reported as a duplicate key
       ParameterDesc p;
       p.name = key_text(kv.first);
       const std::string what = "parameter '" + p.name.text + "'";
       const yaml::Node v = kv.second;
-      if (v.IsNull()) {
+      if (v.is_null()) {
         // symbolic only
-      } else if (v.IsScalar()) {
-        p.value = Text{v.Scalar(), where(v, file)};
+      } else if (v.is_scalar()) {
+        p.value = Text{v.text(), where(v, file)};
       } else if (check_map(v, {"value", "unit", "dimension", "tex", "positive", "description", "define", "range", "round"},
                            what, file, diags)) {
         if (const yaml::Node r = v["range"]) {
           if (auto items = scalar_list(r, "'range' of " + what, file, diags)) {
-            if (items->size() != 2 || !r.IsSequence())
+            if (items->size() != 2 || !r.is_sequence())
               diags.error(where(r, file), "'range' of " + what + " has " + std::to_string(items->size()) +
                                               " entries (expected [low, high])");
             else
@@ -122,21 +122,21 @@ struct Reader {
   // `given`: a list of names, or a mapping from names to their values at the instant
   // (null, a number, or {value, unit}).
   void read_given(const yaml::Node& n) {
-    if (!n.IsMap()) {
+    if (!n.is_map()) {
       if (auto items = scalar_list(n, "'given'", file, diags))
         for (const auto& t : *items) d.given.push_back({t, std::nullopt, std::nullopt});
       return;
     }
     std::set<std::string> seen;
     for (const auto& kv : n) {
-      if (!seen.insert(kv.first.Scalar()).second) continue;  // reported as a duplicate key
+      if (!seen.insert(kv.first.text()).second) continue;  // reported as a duplicate key
       GivenDesc g{key_text(kv.first), std::nullopt, std::nullopt};
       const std::string what = "'given' value of '" + g.name.text + "'";
       const yaml::Node v = kv.second;
-      if (v.IsNull()) {
+      if (v.is_null()) {
         // known, without a value
-      } else if (v.IsScalar()) {
-        g.value = Text{v.Scalar(), where(v, file)};
+      } else if (v.is_scalar()) {
+        g.value = Text{v.text(), where(v, file)};
       } else if (check_map(v, {"value", "unit"}, what, file, diags)) {
         g.value = opt_scalar(v, "value", what);
         g.unit = opt_scalar(v, "unit", what);
@@ -150,7 +150,7 @@ struct Reader {
     if (!name_map(n, "bodies")) return;
     std::set<std::string> seen;
     for (const auto& kv : n) {
-      if (!seen.insert(kv.first.Scalar()).second) continue;
+      if (!seen.insert(kv.first.text()).second) continue;
       BodyDesc b;
       b.name = key_text(kv.first);
       b.at = where(kv.second, file);
@@ -160,7 +160,7 @@ struct Reader {
         b.position = opt_scalar(kv.second, "position", what);
         b.center_of_mass = opt_vector(kv.second, "center_of_mass", what);
         if (const yaml::Node acc = kv.second["acceleration"]) {
-          if (acc.IsMap()) {
+          if (acc.is_map()) {
             if (check_map(acc, {"along", "name"}, "'acceleration' of " + what, file, diags)) {
               b.accel_along = opt_vector(acc, "along", "'acceleration' of " + what);
               b.accel_name = opt_scalar(acc, "name", "'acceleration' of " + what);
@@ -172,7 +172,7 @@ struct Reader {
           }
         }
         if (const yaml::Node dr = kv.second["draw"]) {
-          if (!dr.IsMap())
+          if (!dr.is_map())
             diags.error(where(dr, file), "'draw' of " + what + " is not a mapping (expected {shape: rectangle, size: [w, h]} or {shape: circle, size: [d]})");
           else if (check_map(dr, {"shape", "size"}, "'draw' of " + what, file, diags)) {
             b.draw_shape = opt_scalar(dr, "shape", "'draw' of " + what);
@@ -189,11 +189,11 @@ struct Reader {
     if (!name_map(n, "points")) return;
     std::set<std::string> seen;
     for (const auto& kv : n) {
-      if (!seen.insert(kv.first.Scalar()).second) continue;
+      if (!seen.insert(kv.first.text()).second) continue;
       PointDesc p;
       p.name = key_text(kv.first);
       const std::string what = "point '" + p.name.text + "'";
-      if (kv.second.IsScalar() || kv.second.IsSequence()) {
+      if (kv.second.is_scalar() || kv.second.is_sequence()) {
         p.at = vector(kv.second, what);
       } else if (check_map(kv.second, {"at", "on", "offset"}, what, file, diags)) {
         p.at = opt_vector(kv.second, "at", what);
@@ -214,7 +214,7 @@ struct Reader {
   // arguments the rule checks later.
   void read_connection(const yaml::Node& n, const std::optional<std::string>& implied_type,
                        const std::string& section) {
-    if (!n.IsMap()) {
+    if (!n.is_map()) {
       diags.error(where(n, file), "an entry of '" + section + "' is " + yaml::kind_name(n) + " (expected a mapping)");
       return;
     }
@@ -222,11 +222,11 @@ struct Reader {
     c.at = where(n, file);
     std::set<std::string> seen;
     for (const auto& kv : n) {
-      if (!kv.first.IsScalar()) {
+      if (!kv.first.is_scalar()) {
         diags.error(where(kv.first, file), "a key in an entry of '" + section + "' is not a name");
         continue;
       }
-      const std::string key = kv.first.Scalar();
+      const std::string key = kv.first.text();
       if (!seen.insert(key).second) {
         diags.error(where(kv.first, file), "duplicate key '" + key + "' in an entry of '" + section + "'");
         continue;
@@ -238,7 +238,7 @@ struct Reader {
       } else {
         ArgDesc a;
         a.key = key_text(kv.first);
-        a.is_list = kv.second.IsSequence();
+        a.is_list = kv.second.is_sequence();
         if (auto items = scalar_list(kv.second, "'" + key + "'", file, diags)) a.items = *items;
         c.args.push_back(std::move(a));
       }
@@ -253,7 +253,7 @@ struct Reader {
   }
 
   void read_list(const yaml::Node& n, const std::string& section, const std::optional<std::string>& implied) {
-    if (!n.IsSequence()) {
+    if (!n.is_sequence()) {
       diags.error(where(n, file), "'" + section + "' is " + yaml::kind_name(n) + " (expected a list)");
       return;
     }
@@ -261,25 +261,25 @@ struct Reader {
   }
 
   void read_layout(const yaml::Node& n) {
-    if (!n.IsMap()) {
+    if (!n.is_map()) {
       diags.error(where(n, file), "'layout' is " + yaml::kind_name(n) + " (expected a mapping of coordinates to numbers)");
       return;
     }
     yaml::check_unique_keys(n, "'layout'", file, diags);
     for (const auto& kv : n)
-      if (auto v = scalar(kv.second, "layout value of '" + kv.first.Scalar() + "'", file, diags))
+      if (auto v = scalar(kv.second, "layout value of '" + kv.first.text() + "'", file, diags))
         d.layout.emplace_back(key_text(kv.first), *v);
   }
 
   void read_find(const yaml::Node& n) {
-    if (!n.IsSequence()) {
+    if (!n.is_sequence()) {
       diags.error(where(n, file), "'find' is " + yaml::kind_name(n) + " (expected a list of unknowns)");
       return;
     }
     for (const auto& item : n) {
       FindDesc f;
-      if (item.IsScalar()) {
-        f.name = Text{item.Scalar(), where(item, file)};
+      if (item.is_scalar()) {
+        f.name = Text{item.text(), where(item, file)};
       } else if (check_map(item, {"name", "expr", "tex", "unit"}, "an entry of 'find'", file, diags)) {
         if (auto nm = opt_scalar(item, "name", "an entry of 'find'"))
           f.name = *nm;
@@ -304,15 +304,15 @@ struct Reader {
     if (auto c = n["coordinates"])
       if (auto items = scalar_list(c, "'coordinates' of 'motion'", file, diags)) mo.coordinates = *items;
     if (auto init = n["initial"]) {
-      if (!init.IsMap()) {
+      if (!init.is_map()) {
         diags.error(where(init, file), "'initial' of 'motion' is " + yaml::kind_name(init) +
                                            " (expected a mapping of coordinates and rates to values, e.g. {y: y_0, dot(y): 0})");
       } else {
         yaml::check_unique_keys(init, "'initial' of 'motion'", file, diags);
         std::set<std::string> seen;
         for (const auto& kv : init) {
-          if (!seen.insert(kv.first.Scalar()).second) continue;
-          if (auto v = scalar(kv.second, "initial value of '" + kv.first.Scalar() + "'", file, diags))
+          if (!seen.insert(kv.first.text()).second) continue;
+          if (auto v = scalar(kv.second, "initial value of '" + kv.first.text() + "'", file, diags))
             mo.initial.emplace_back(key_text(kv.first), *v);
         }
       }
@@ -320,7 +320,7 @@ struct Reader {
       diags.error(mo.at, "'motion' has no 'initial' (expected the coordinates' values and rates at t = 0, e.g. {y: y_0, dot(y): 0})");
     }
     if (auto u = n["until"]) {
-      if (u.IsMap()) {
+      if (u.is_map()) {
         if (check_map(u, {"value", "unit"}, "'until' of 'motion'", file, diags)) {
           mo.until = opt_scalar(u, "value", "'until' of 'motion'");
           mo.until_unit = opt_scalar(u, "unit", "'until' of 'motion'");
@@ -336,7 +336,7 @@ struct Reader {
       std::vector<std::pair<Text, Text>> values;
       read_values(sa, "'speed_at' of 'motion'", values);
       if (values.size() == 1) mo.speed_at = values.front();
-      else if (sa.IsMap()) diags.error(where(sa, file), "'speed_at' of 'motion' names " + std::to_string(values.size()) +
+      else if (sa.is_map()) diags.error(where(sa, file), "'speed_at' of 'motion' names " + std::to_string(values.size()) +
                                                             " coordinates (expected one, e.g. {x: 0})");
     }
     d.motion = std::move(mo);
@@ -345,15 +345,15 @@ struct Reader {
   // A mapping of names to expressions (`{dot(x): v_1}`), into `out`.
   void read_values(const yaml::Node& n, const std::string& what, std::vector<std::pair<Text, Text>>& out,
                    const std::string& expected = "a mapping of rates to values, e.g. {dot(x): v_1}") {
-    if (!n.IsMap()) {
+    if (!n.is_map()) {
       diags.error(where(n, file), what + " is " + yaml::kind_name(n) + " (expected " + expected + ")");
       return;
     }
     yaml::check_unique_keys(n, what, file, diags);
     std::set<std::string> seen;
     for (const auto& kv : n) {
-      if (!seen.insert(kv.first.Scalar()).second) continue;
-      if (auto v = scalar(kv.second, "value of '" + kv.first.Scalar() + "' in " + what, file, diags))
+      if (!seen.insert(kv.first.text()).second) continue;
+      if (auto v = scalar(kv.second, "value of '" + kv.first.text() + "' in " + what, file, diags))
         out.emplace_back(key_text(kv.first), *v);
     }
   }
@@ -391,14 +391,14 @@ struct Reader {
   // The phases, each read as a description of its own from the same document (locations
   // stay those of the file); the shared parameters come first in each.
   void read_phases(const yaml::Node& n) {
-    if (!n.IsSequence() || n.size() == 0) {
-      diags.error(where(n, file), "'phases' is " + (n.IsSequence() ? std::string("an empty list") : yaml::kind_name(n)) +
+    if (!n.is_sequence() || n.size() == 0) {
+      diags.error(where(n, file), "'phases' is " + (n.is_sequence() ? std::string("an empty list") : yaml::kind_name(n)) +
                                       " (expected a list of phases, each a mapping with a name, its bodies, ...)");
       return;
     }
     std::set<std::string> names;
     for (const auto& item : n) {
-      if (!item.IsMap()) {
+      if (!item.is_map()) {
         diags.error(where(item, file), "a phase is " + yaml::kind_name(item) + " (expected a mapping with a name, its bodies, ...)");
         continue;
       }
@@ -447,7 +447,7 @@ struct Reader {
     }
     if (auto p = root["parameters"]) read_parameters(p);
     if (auto g = root["gravity"]) {
-      if (g.IsMap()) {
+      if (g.is_map()) {
         if (check_map(g, {"magnitude", "tilt"}, "'gravity'", file, diags)) {
           d.gravity_magnitude = opt_scalar(g, "magnitude", "'gravity'");
           d.gravity_tilt = opt_scalar(g, "tilt", "'gravity'");
@@ -492,7 +492,7 @@ struct Reader {
   }
 
   void read_derive(const yaml::Node& n) {
-    if (!n.IsSequence()) {
+    if (!n.is_sequence()) {
       diags.error(where(n, file), "'derive' is " + yaml::kind_name(n) + " (expected a list of balances)");
       return;
     }
@@ -506,14 +506,14 @@ struct Reader {
           ++kinds;
           value = item[k];
           for (const auto& kv : item)
-            if (kv.first.Scalar() == k) dd.kind = key_text(kv.first);
+            if (kv.first.text() == k) dd.kind = key_text(kv.first);
         }
       if (kinds != 1) {
         diags.error(where(item, file), "an entry of 'derive' names " + std::to_string(kinds) +
                                            " balances (expected one of: lmb, amb, constraint)");
         continue;
       }
-      dd.is_list = value.IsSequence();
+      dd.is_list = value.is_sequence();
       if (auto items = scalar_list(value, "'" + dd.kind.text + "'", file, diags)) dd.items = *items;
       dd.about = opt_scalar(item, "about", "an entry of 'derive'");
       dd.axis = opt_vector(item, "axis", "an entry of 'derive'");
@@ -539,7 +539,7 @@ DescriptionRead read_description_text(const std::string& text, const std::string
   d.file = file;
   const yaml::Document doc = yaml::load(text, file, diags);
   const yaml::Node root = doc.root();
-  if (diags.empty() && !root.IsMap())
+  if (diags.empty() && !root.is_map())
     diags.error({file, 1, 1}, "the description is " + yaml::kind_name(root) + " (expected a mapping with title, bodies, ...)");
   if (!diags.empty()) {
     out.problems = diags.items();

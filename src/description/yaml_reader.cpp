@@ -1,8 +1,8 @@
 #include "description/yaml_reader.hpp"
 
 #include <algorithm>
-#include <set>
 #include <optional>
+#include <set>
 #include <string_view>
 #include <unordered_map>
 
@@ -30,7 +30,7 @@ Mark mark_at(const std::string& text, std::size_t offset) {
 bool null_text(std::string_view s) { return s.empty() || s == "~" || s == "null" || s == "Null" || s == "NULL"; }
 }  // namespace
 
-const std::string& Node::Scalar() const { return d_ && d_->type == NodeType::Scalar ? d_->scalar : empty_text; }
+const std::string& Node::text() const { return d_ && d_->type == NodeType::Scalar ? d_->scalar : empty_text; }
 
 std::size_t Node::size() const {
   if (!d_) return 0;
@@ -73,7 +73,7 @@ Location where(const Node& n, const std::string& file) {
   if (m.line < 0) return {file, 0, 0};
   // A quoted scalar's mark is its opening quote; columns inside it count from the first
   // character after the quote.
-  return {file, m.line + 1, m.column + 1 + (n.IsScalar() && n.quoted() ? 1 : 0)};
+  return {file, m.line + 1, m.column + 1 + (n.is_scalar() && n.quoted() ? 1 : 0)};
 }
 
 // Builds a Document from libyaml's events of the first document (later ones are not read).
@@ -242,10 +242,8 @@ class Loader {
 
 Document load(const std::string& text, const std::string& file, Diagnostics& diags) {
   if (const auto bad = invalid_utf8_at(text)) {
-    const auto line_start = text.rfind('\n', *bad == 0 ? 0 : *bad - 1);
-    const std::size_t col = line_start == std::string::npos || *bad == 0 ? *bad + 1 : *bad - line_start;
-    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(*bad), '\n'));
-    diags.error({file, line, static_cast<int>(col)},
+    const Mark m = mark_at(text, *bad);
+    diags.error({file, m.line + 1, m.column + 1},
                 fmt::format("invalid UTF-8 byte 0x{:02X} (expected UTF-8 text)", static_cast<unsigned char>(text[*bad])));
     return Document();
   }
@@ -253,7 +251,7 @@ Document load(const std::string& text, const std::string& file, Diagnostics& dia
 }
 
 std::string kind_name(const Node& n) {
-  switch (n.Type()) {
+  switch (n.type()) {
     case NodeType::Map: return "a mapping";
     case NodeType::Sequence: return "a list";
     case NodeType::Scalar: return "a scalar";
@@ -262,24 +260,24 @@ std::string kind_name(const Node& n) {
 }
 
 bool is_list(const Node& n, const std::string& what, const std::string& file, Diagnostics& diags) {
-  if (n.IsSequence()) return true;
+  if (n.is_sequence()) return true;
   diags.error(where(n, file), what + " is " + kind_name(n) + " (expected a list)");
   return false;
 }
 
 bool check_map(const Node& map, const std::vector<std::string>& allowed, const std::string& what,
                const std::string& file, Diagnostics& diags) {
-  if (!map.IsMap()) {
+  if (!map.is_map()) {
     diags.error(where(map, file), what + " is " + kind_name(map) + " (expected a mapping)");
     return false;
   }
   std::set<std::string> seen;
   for (const auto& kv : map) {
-    if (!kv.first.IsScalar()) {
+    if (!kv.first.is_scalar()) {
       diags.error(where(kv.first, file), "a key in " + what + " is " + kind_name(kv.first) + " (expected a name)");
       continue;
     }
-    const std::string key = kv.first.Scalar();
+    const std::string key = kv.first.text();
     if (!seen.insert(key).second) {
       diags.error(where(kv.first, file), "duplicate key '" + key + "' in " + what);
       continue;
@@ -301,27 +299,27 @@ bool check_map(const Node& map, const std::vector<std::string>& allowed, const s
 void check_unique_keys(const Node& map, const std::string& what, const std::string& file, Diagnostics& diags) {
   std::set<std::string> seen;
   for (const auto& kv : map)
-    if (kv.first.IsScalar() && !seen.insert(kv.first.Scalar()).second)
-      diags.error(where(kv.first, file), "duplicate key '" + kv.first.Scalar() + "' in " + what);
+    if (kv.first.is_scalar() && !seen.insert(kv.first.text()).second)
+      diags.error(where(kv.first, file), "duplicate key '" + kv.first.text() + "' in " + what);
 }
 
 std::optional<Text> scalar(const Node& n, const std::string& what, const std::string& file,
                            Diagnostics& diags) {
-  if (!n.IsScalar()) {
+  if (!n.is_scalar()) {
     diags.error(where(n, file), what + " is " + kind_name(n) + " (expected a scalar)");
     return std::nullopt;
   }
-  return Text{n.Scalar(), where(n, file)};
+  return Text{n.text(), where(n, file)};
 }
 
 std::optional<std::vector<Text>> scalar_list(const Node& n, const std::string& what,
                                              const std::string& file, Diagnostics& diags) {
   std::vector<Text> out;
-  if (n.IsScalar()) {
-    out.push_back({n.Scalar(), where(n, file)});
+  if (n.is_scalar()) {
+    out.push_back({n.text(), where(n, file)});
     return out;
   }
-  if (!n.IsSequence()) {
+  if (!n.is_sequence()) {
     diags.error(where(n, file), what + " is " + kind_name(n) + " (expected a list of names)");
     return std::nullopt;
   }

@@ -31,10 +31,6 @@ struct NodeData {
   std::vector<const NodeData*> items;  // a list's items; a mapping's keys and values, alternating
 };
 
-class Node;
-
-/// An entry met when walking a node: the item itself for a list; for a mapping, the key as
-/// `first` and the value as `second` (and the entry itself is the value).
 struct Entry;
 
 /// A read-only view of a node of a Document (which must outlive it). A default-made Node, or
@@ -45,16 +41,16 @@ class Node {
   Node() = default;
   explicit Node(const NodeData* d) : d_(d) {}
 
-  NodeType Type() const { return d_ ? d_->type : NodeType::Undefined; }
-  bool IsDefined() const { return d_ != nullptr; }
-  bool IsNull() const { return Type() == NodeType::Null; }
-  bool IsScalar() const { return Type() == NodeType::Scalar; }
-  bool IsSequence() const { return Type() == NodeType::Sequence; }
-  bool IsMap() const { return Type() == NodeType::Map; }
-  explicit operator bool() const { return IsDefined(); }
+  NodeType type() const { return d_ ? d_->type : NodeType::Undefined; }
+  bool defined() const { return d_ != nullptr; }
+  bool is_null() const { return type() == NodeType::Null; }
+  bool is_scalar() const { return type() == NodeType::Scalar; }
+  bool is_sequence() const { return type() == NodeType::Sequence; }
+  bool is_map() const { return type() == NodeType::Map; }
+  explicit operator bool() const { return defined(); }
 
   /// A scalar's text ("" for anything else).
-  const std::string& Scalar() const;
+  const std::string& text() const;
   /// A quoted or block scalar (its mark is the quote or the indicator).
   bool quoted() const { return d_ && d_->quoted; }
   Mark mark() const { return d_ ? d_->mark : Mark{}; }
@@ -76,6 +72,8 @@ class Node {
   const NodeData* d_ = nullptr;
 };
 
+/// An entry met when walking a node: the item itself for a list; for a mapping, the key as
+/// `first` and the value as `second` (and the entry itself is the value).
 struct Entry : Node {
   Node first;
   Node second;
@@ -123,11 +121,11 @@ Location where(const Node& n, const std::string& file);
 /// null.
 Document load(const std::string& text, const std::string& file, Diagnostics& diags);
 
-/// Checks the keys of a map: unknown keys (with the nearest allowed key suggested) and
-/// duplicate keys are reported. Returns false when the node is not a map.
 /// True for a sequence; otherwise reports "WHAT is a mapping (expected a list)".
 bool is_list(const Node& n, const std::string& what, const std::string& file, Diagnostics& diags);
 
+/// Checks the keys of a map: unknown keys (with the nearest allowed key suggested) and
+/// duplicate keys are reported. Returns false when the node is not a map.
 bool check_map(const Node& map, const std::vector<std::string>& allowed, const std::string& what,
                const std::string& file, Diagnostics& diags);
 

@@ -162,17 +162,17 @@ struct RuleReader {
   }
 
   void read_args(const yaml::Node& n, bool required, Rule& r) {
-    if (!n.IsMap()) {
+    if (!n.is_map()) {
       diags.error(where(n, file), "'" + std::string(required ? "needs" : "optional") + "' is " +
                                       yaml::kind_name(n) + " (expected a mapping of argument names to kinds)");
       return;
     }
     for (const auto& kv : n) {
       ArgSpec a;
-      a.key = kv.first.Scalar();
+      a.key = kv.first.text();
       a.required = required;
-      if (kv.second.IsScalar()) {
-        if (auto k = kind_of({kv.second.Scalar(), where(kv.second, file)}))
+      if (kv.second.is_scalar()) {
+        if (auto k = kind_of({kv.second.text(), where(kv.second, file)}))
           a.kind = *k;
         else
           a.kind_known = false;
@@ -244,7 +244,7 @@ struct RuleReader {
       return r;
     r.type = need_scalar(root, "type", "the rule");
     if (auto s = root["summary"]) {
-      if (s.IsMap()) {
+      if (s.is_map()) {
         // One text per number of axes.
         if (check_map(s, {"1-D", "2-D", "3-D"}, "'summary'", file, diags))
           for (int k = 1; k <= 3; ++k)
@@ -273,7 +273,7 @@ struct RuleReader {
         if (!is_list(group, "a group of 'one_of'", file, diags)) continue;
         std::vector<std::string> g;
         for (const auto& k : group) {
-          g.push_back(k.Scalar());
+          g.push_back(k.text());
           if (!r.arg(g.back())) diags.error(where(k, file), "'one_of' names argument '" + g.back() + "', which the rule does not declare");
         }
         r.one_of.push_back(g);
@@ -282,7 +282,7 @@ struct RuleReader {
     if (auto n = root["dimensions"]; n && is_list(n, "'dimensions'", file, diags)) {
       r.dimensions.clear();
       for (const auto& k : n) {
-        const std::string v = k.Scalar();
+        const std::string v = k.text();
         if (v == "1" || v == "2" || v == "3")
           r.dimensions.push_back(std::stoi(v));
         else
@@ -302,7 +302,7 @@ struct RuleReader {
         s.local = need_scalar(u, "local", "an unknown");
         s.name_template = need_scalar(u, "name", "an unknown");
         if (auto rn = u["rename"]) {
-          s.rename_arg = rn.Scalar();
+          s.rename_arg = rn.text();
           if (!r.arg(*s.rename_arg)) diags.error(where(rn, file), "'rename' names argument '" + *s.rename_arg + "', which the rule does not declare");
         }
         const std::string dim = need_scalar(u, "dimension", "an unknown");
@@ -343,9 +343,9 @@ struct RuleReader {
         if (!kind) continue;
         LoadSpec s;
         s.at = where(l, file);
-        s.arg = l[*kind].Scalar();
+        s.arg = l[*kind].text();
         if (l["when"]) {
-          s.when = l["when"].Scalar();
+          s.when = l["when"].text();
           if (!r.arg(s.when)) diags.error(s.at, "'when' names argument '" + s.when + "', which the rule does not declare");
         }
         if (*kind == "on") {
@@ -357,7 +357,7 @@ struct RuleReader {
           }
           if (!l["force"] && !l["couple"]) diags.error(s.at, "a load has neither 'force' nor 'couple'");
           if (l["at"]) {
-            s.at_arg = l["at"].Scalar();
+            s.at_arg = l["at"].text();
             check_arg_ref(r, s.at_arg, ArgKind::point, s.at, "a load");
           }
           check_arg_ref(r, s.arg, ArgKind::body, s.at, "a load");
@@ -385,7 +385,7 @@ struct RuleReader {
         if (!kind) continue;
         ConstraintSpec s;
         s.at = where(c, file);
-        s.arg = c[*kind].Scalar();
+        s.arg = c[*kind].text();
         if (*kind == "length") {
           s.kind = ConstraintSpec::Kind::length;
           check_arg_ref(r, s.arg, ArgKind::points, s.at, "a constraint");
@@ -394,7 +394,7 @@ struct RuleReader {
           check_arg_ref(r, s.arg, ArgKind::expr, s.at, "a constraint");
         } else if (*kind == "together") {
           s.kind = ConstraintSpec::Kind::together;
-          s.with = c["with"] ? c["with"].Scalar() : "";
+          s.with = c["with"] ? c["with"].text() : "";
           if (s.with.empty()) diags.error(s.at, "a 'together' constraint needs 'with' (the second body)");
           check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
           if (!s.with.empty()) check_arg_ref(r, s.with, ArgKind::body, s.at, "a constraint");
@@ -411,7 +411,7 @@ struct RuleReader {
         ValiditySpec s;
         s.at = where(v, file);
         if (v["when"]) {
-          s.when = v["when"].Scalar();
+          s.when = v["when"].text();
           if (!r.arg(s.when)) diags.error(s.at, "'when' names argument '" + s.when + "', which the rule does not declare");
         }
         s.holds = need_scalar(v, "holds", "a validity condition");
@@ -433,10 +433,10 @@ struct RuleReader {
         const CheckSpec::Kind k = *kind == "passes_over" ? CheckSpec::Kind::passes_over
                                   : *kind == "positive"  ? CheckSpec::Kind::positive
                                                          : CheckSpec::Kind::steady_at;
-        CheckSpec s{k, c[*kind].Scalar(), where(c, file), {}};
+        CheckSpec s{k, c[*kind].text(), where(c, file), {}};
         check_arg_ref(r, s.arg, k == CheckSpec::Kind::positive ? ArgKind::expr : ArgKind::point, s.at, "a check");
         if (c["when"]) {
-          s.when = c["when"].Scalar();
+          s.when = c["when"].text();
           if (!r.arg(s.when)) diags.error(s.at, "'when' names argument '" + s.when + "', which the rule does not declare");
         }
         r.checks.push_back(std::move(s));
@@ -445,11 +445,11 @@ struct RuleReader {
     if (auto n = root["assumptions"]; n && is_list(n, "'assumptions'", file, diags)) {
       for (const auto& a : n) {
         // A sentence, or {text, when: ARG} for one that holds only when ARG is given.
-        if (a.IsMap()) {
+        if (a.is_map()) {
           if (!check_map(a, {"text", "when"}, "an assumption", file, diags)) continue;
           Assumption as{need_scalar(a, "text", "an assumption"), ""};
           if (a["when"]) {
-            as.when = a["when"].Scalar();
+            as.when = a["when"].text();
             if (!r.arg(as.when))
               diags.error(where(a, file), "'when' names argument '" + as.when + "', which the rule does not declare");
           }

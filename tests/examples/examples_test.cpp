@@ -30,8 +30,8 @@ yaml::Document load_yaml(const std::string& file) {
 }
 
 std::string yaml_text(const yaml::Node& n) {
-  REQUIRE(n.IsScalar());
-  return n.Scalar();
+  REQUIRE(n.is_scalar());
+  return n.text();
 }
 
 double yaml_number(const yaml::Node& n) {
@@ -96,7 +96,7 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
       // Each phase of a phased example states its own expectations.
       auto check = [&](const yaml::Node& root, const Analysis& an) {
     const yaml::Node expected = root["expected"];
-    REQUIRE(expected.IsMap());
+    REQUIRE(expected.is_map());
     const Analysis* analysis = &an;
     const Derivation d = explain(*analysis);
     const SymbolTable& table = *analysis->model.symbols;
@@ -116,7 +116,7 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
     for (const auto& answer : d.answers) {
       INFO("answer " << answer.name);
       const yaml::Node want = expected[answer.name];
-      REQUIRE(want.IsMap());
+      REQUIRE(want.is_map());
       REQUIRE(answer.closed_form);
       const auto parsed = parse_expression(yaml_text(want["closed_form"]), table);
       REQUIRE(parsed.value);

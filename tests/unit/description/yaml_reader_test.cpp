@@ -36,15 +36,15 @@ TEST_CASE("YAML: empty values and the null words are null; quoted ones are text"
   const yaml::Node r = l.doc.root();
   for (const char* k : {"a", "b", "c", "d", "e"}) {
     INFO(k);
-    CHECK(r[k].IsNull());
-    CHECK(r[k].IsDefined());
+    CHECK(r[k].is_null());
+    CHECK(r[k].defined());
   }
-  CHECK(r["f"].IsScalar());
-  CHECK(r["f"].Scalar().empty());
-  CHECK(r["g"].Scalar() == "null");
-  CHECK(r["h"].Scalar() == "nil");
+  CHECK(r["f"].is_scalar());
+  CHECK(r["f"].text().empty());
+  CHECK(r["g"].text() == "null");
+  CHECK(r["h"].text() == "nil");
   CHECK(!r["z"]);
-  CHECK(r["z"].Type() == yaml::NodeType::Undefined);
+  CHECK(r["z"].type() == yaml::NodeType::Undefined);
 }
 
 TEST_CASE("YAML: a quoted scalar is located at its first character, a plain one at its start", "[yaml]") {
@@ -67,9 +67,9 @@ TEST_CASE("YAML: a mapping keeps its entries in order, a repeated key too", "[ya
   const yaml::Node r = l.doc.root();
   REQUIRE(r.size() == 3);
   std::vector<std::string> seen;
-  for (const auto& kv : r) seen.push_back(kv.first.Scalar() + "=" + kv.second.Scalar());
+  for (const auto& kv : r) seen.push_back(kv.first.text() + "=" + kv.second.text());
   CHECK(seen == std::vector<std::string>{"b=1", "a=2", "b=3"});
-  CHECK(r["b"].Scalar() == "1");  // the first one
+  CHECK(r["b"].text() == "1");  // the first one
   Diagnostics diags;
   yaml::check_unique_keys(r, "the map", "t.yaml", diags);
   REQUIRE(diags.items().size() == 1);
@@ -80,24 +80,24 @@ TEST_CASE("YAML: a list is walked item by item; asking a list for a key gives no
   const auto l = load("[1, [2, 3], {k: v}]");
   REQUIRE(l.errors.empty());
   const yaml::Node r = l.doc.root();
-  REQUIRE(r.IsSequence());
+  REQUIRE(r.is_sequence());
   REQUIRE(r.size() == 3);
   std::vector<yaml::NodeType> types;
-  for (const auto& item : r) types.push_back(item.Type());
+  for (const auto& item : r) types.push_back(item.type());
   CHECK(types == std::vector<yaml::NodeType>{yaml::NodeType::Scalar, yaml::NodeType::Sequence, yaml::NodeType::Map});
   CHECK(!r["k"]);
   CHECK(!r[3]);
   CHECK(!r[0]["k"]);
   CHECK(!r[0][0]);
-  CHECK(r[2]["k"].Scalar() == "v");
-  CHECK(r[1].Scalar().empty());
+  CHECK(r[2]["k"].text() == "v");
+  CHECK(r[1].text().empty());
 }
 
 TEST_CASE("YAML: an alias is the node its anchor names", "[yaml]") {
   const auto l = load("a: &p [1, 2]\nb: *p\n");
   REQUIRE(l.errors.empty());
   const yaml::Node b = l.doc.root()["b"];
-  REQUIRE(b.IsSequence());
+  REQUIRE(b.is_sequence());
   CHECK(b.size() == 2);
   CHECK(at(b) == "1:4");  // where the anchored node is written, its anchor first
 }
@@ -124,11 +124,11 @@ TEST_CASE("YAML: a syntax error is located, with what libyaml was reading", "[ya
 TEST_CASE("YAML: an empty text is null; only the first document is read", "[yaml]") {
   const auto empty = load("# nothing but a comment\n");
   REQUIRE(empty.errors.empty());
-  CHECK(empty.doc.root().IsNull());
+  CHECK(empty.doc.root().is_null());
   CHECK(at(empty.doc.root()) == "0:0");
   const auto two = load("a: 1\n---\n[not read\n");
   REQUIRE(two.errors.empty());
-  CHECK(two.doc.root()["a"].Scalar() == "1");
+  CHECK(two.doc.root()["a"].text() == "1");
 }
 
 TEST_CASE("YAML: deep nesting is loaded without recursion", "[yaml]") {
@@ -137,12 +137,12 @@ TEST_CASE("YAML: deep nesting is loaded without recursion", "[yaml]") {
   REQUIRE(l.errors.empty());
   yaml::Node n = l.doc.root();
   int levels = 0;
-  while (n.IsSequence() && n.size() == 1) {
+  while (n.is_sequence() && n.size() == 1) {
     n = n[0];
     ++levels;
   }
   CHECK(levels == depth - 1);
-  CHECK(n.IsSequence());
+  CHECK(n.is_sequence());
   CHECK(n.size() == 0);
 }
 
@@ -163,5 +163,5 @@ TEST_CASE("YAML: aliases may not repeat more nodes than the file has, or 10000",
   const auto small = load("a: &a [x, x, x, x, x, x, x, x, x, x]\nb: &b [*a, *a, *a, *a, *a, *a, *a, *a, *a, *a]\n"
                           "c: [*b, *b, *b, *b, *b, *b, *b, *b, *b, *b]\n");
   REQUIRE(small.errors.empty());
-  CHECK(small.doc.root()["c"][9][9][9].Scalar() == "x");
+  CHECK(small.doc.root()["c"][9][9][9].text() == "x");
 }
