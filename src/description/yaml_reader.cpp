@@ -118,23 +118,26 @@ class Loader {
     return s ? std::string_view(reinterpret_cast<const char*>(s)) : std::string_view();
   }
 
+  static Mark mark_of(const yaml_mark_t& m) { return {static_cast<int>(m.line), static_cast<int>(m.column)}; }
+
+  Location location(const yaml_mark_t& m) const { return {file_, static_cast<int>(m.line) + 1, static_cast<int>(m.column) + 1}; }
+
   NodeData* make(Document& doc, NodeType type, const yaml_mark_t& m) {
     NodeData& d = doc.nodes_->emplace_back();
     d.type = type;
-    d.mark = {static_cast<int>(m.line), static_cast<int>(m.column)};
+    d.mark = mark_of(m);
     return &d;
   }
 
-  void attach(Document& doc, const NodeData* d) {
-    if (open_.empty())
+  // Puts a complete node into the collection being read (or makes it the root), counting the
+  // nodes a reader walks in it.
+  void attach(Document& doc, const NodeData* d, std::size_t walked) {
+    if (open_.empty()) {
       doc.root_ = d;
-    else
-      open_.back()->items.push_back(d);
-  }
-
-  // Counts nodes a reader walks into the collection being read.
-  void walked(std::size_t nodes) {
-    if (!open_walked_.empty()) open_walked_.back() += nodes;
+      return;
+    }
+    open_.back().node->items.push_back(d);
+    open_.back().walked += walked;
   }
 
   // True when the first document has ended.
@@ -150,57 +153,48 @@ class Loader {
         NodeData* d = make(doc, plain && !s.tag && null_text(value) ? NodeType::Null : NodeType::Scalar, ev.start_mark);
         if (d->type == NodeType::Scalar) d->scalar.assign(value);
         d->quoted = !plain && (tag.empty() || tag == "!");
-        attach(doc, d);
-        walked(1);
+        attach(doc, d, 1);
         if (s.anchor) anchors_[std::string(text_of(s.anchor))] = {d, 1};
         return false;
       }
       case YAML_ALIAS_EVENT: {
-        const auto it = anchors_.find(std::string(text_of(ev.data.alias.anchor)));
+        const std::string name(text_of(ev.data.alias.anchor));
+        const auto it = anchors_.find(name);
         if (it == anchors_.end()) {
-          const Mark m{static_cast<int>(ev.start_mark.line), static_cast<int>(ev.start_mark.column)};
-          diags_.error({file_, m.line + 1, m.column + 1},
-                       "invalid YAML: the alias *" + std::string(text_of(ev.data.alias.anchor)) +
-                           " names no anchor before it (expected &" + std::string(text_of(ev.data.alias.anchor)) +
-                           " on a complete node earlier in the file)");
+          diags_.error(location(ev.start_mark), "invalid YAML: the alias *" + name + " names no anchor before it (expected &" +
+                                                    name + " on a complete node earlier in the file)");
           failed_ = true;
           return true;
         }
         // Aliases share their node, so a reader walks it once per alias: a few aliases of
         // aliases would have it walk (and report on) billions of nodes from a small file.
-        repeated_ += it->second.second;
-        if (repeated_ > std::max(repeat_limit, doc.nodes_->size())) {
-          diags_.error({file_, static_cast<int>(ev.start_mark.line) + 1, static_cast<int>(ev.start_mark.column) + 1},
+        const auto& [node, walked] = it->second;
+        repeated_ += walked;
+        if (const std::size_t limit = std::max(repeat_limit, doc.nodes_->size()); repeated_ > limit) {
+          diags_.error(location(ev.start_mark),
                        fmt::format("invalid YAML: with the alias *{}, aliases repeat {} nodes (expected at most {}, or "
                                    "as many as the file itself has)",
-                                   text_of(ev.data.alias.anchor), repeated_, std::max(repeat_limit, doc.nodes_->size())));
+                                   name, repeated_, limit));
           failed_ = true;
           return true;
         }
-        attach(doc, it->second.first);
-        walked(it->second.second);
+        attach(doc, node, walked);
         return false;
       }
       case YAML_SEQUENCE_START_EVENT:
       case YAML_MAPPING_START_EVENT: {
         const bool map = ev.type == YAML_MAPPING_START_EVENT;
-        NodeData* d = make(doc, map ? NodeType::Map : NodeType::Sequence, ev.start_mark);
-        attach(doc, d);
-        open_.push_back(d);
         const yaml_char_t* anchor = map ? ev.data.mapping_start.anchor : ev.data.sequence_start.anchor;
-        open_anchors_.push_back(anchor ? std::optional<std::string>(text_of(anchor)) : std::nullopt);
-        open_walked_.push_back(1);
+        open_.push_back({make(doc, map ? NodeType::Map : NodeType::Sequence, ev.start_mark),
+                         anchor ? std::optional<std::string>(text_of(anchor)) : std::nullopt, 1});
         return false;
       }
       case YAML_SEQUENCE_END_EVENT:
       case YAML_MAPPING_END_EVENT: {
-        const NodeData* d = open_.back();
-        const std::size_t nodes = open_walked_.back();
-        if (open_anchors_.back()) anchors_[*open_anchors_.back()] = {d, nodes};  // complete: an alias may name it now
+        const Open done = std::move(open_.back());
         open_.pop_back();
-        open_anchors_.pop_back();
-        open_walked_.pop_back();
-        walked(nodes);
+        if (done.anchor) anchors_[*done.anchor] = {done.node, done.walked};  // complete: an alias may name it now
+        attach(doc, done.node, done.walked);
         return false;
       }
       default: return false;
@@ -218,7 +212,7 @@ class Loader {
     if (parser_.error == YAML_READER_ERROR)
       at = mark_at(text_, parser_.problem_offset);
     else
-      at = {static_cast<int>(parser_.problem_mark.line), static_cast<int>(parser_.problem_mark.column)};
+      at = mark_of(parser_.problem_mark);
     std::string msg = "invalid YAML: " + problem;
     if (parser_.context)
       msg += fmt::format(" ({} started at line {}, column {})", parser_.context, parser_.context_mark.line + 1,
@@ -230,9 +224,14 @@ class Loader {
   const std::string& file_;
   Diagnostics& diags_;
   yaml_parser_t parser_{};
-  std::vector<NodeData*> open_;
-  std::vector<std::optional<std::string>> open_anchors_;
-  std::vector<std::size_t> open_walked_;  // nodes walked in each open collection, aliases counted out
+  // A collection being read: its anchor, and the nodes a reader walks in it so far (aliases
+  // counted out).
+  struct Open {
+    NodeData* node;
+    std::optional<std::string> anchor;
+    std::size_t walked;
+  };
+  std::vector<Open> open_;
   // Each anchor's node and the nodes a reader walks in it.
   std::unordered_map<std::string, std::pair<const NodeData*, std::size_t>> anchors_;
   std::size_t repeated_ = 0;  // nodes that aliases repeat
