@@ -202,6 +202,18 @@ EquationSystem build_equations(const Model& m) {
                                       : std::any_of(residuals.begin(), residuals.end(), [&](const ex& r) { return r.has(u); });
     if (held) s.unknowns.push_back(u);
   }
+  // A massless body that no constraint ties: its balance fixes its coordinate (linearly, or
+  // the problem is refused: a balance through a turning strand is not solved for it).
+  for (const auto& q : balance_coordinates(m)) {
+    const auto body = std::find_if(m.bodies.begin(), m.bodies.end(), [&](const Body& b) { return b.coord.is_equal(q); });
+    for (const auto& r : residuals)
+      if (m.symbols->hidden_in_lengths(r, q))
+        throw InputError({{body->at, "body '" + body->name + "' has no mass and no constraint ties " + to_text(q) +
+                                         " to the other coordinates, so its balance fixes it; but a strand that turns with it "
+                                         "makes that balance nonlinear in " + to_text(q) +
+                                         " (expected a string or a joint that ties it, or a mass)"}});
+    if (present.count(q) != 0) s.unknowns.push_back(q);
+  }
   return s;
 }
 

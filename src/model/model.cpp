@@ -20,6 +20,18 @@ std::unordered_set<ex, ExHash, ex_is_equal> symbols_asked(const std::vector<Want
   return out;
 }
 
+std::vector<ex> balance_coordinates(const Model& m) {
+  std::vector<ex> out;
+  for (const auto& b : m.bodies) {
+    if (!b.has_mass || !b.mass.is_zero() || b.coord.is_zero() || contains(m.given, b.coord)) continue;
+    const bool tied = std::any_of(m.constraints.begin(), m.constraints.end(), [&](const Constraint& c) {
+      return c.quantity.has(b.coord) || m.symbols->hidden_in_lengths(c.quantity, b.coord);
+    });
+    if (!tied) out.push_back(b.coord);
+  }
+  return out;
+}
+
 ex time_derivative(const ex& e, const std::vector<Body>& bodies, const std::vector<TurningLength>& lengths, const ex& time) {
   ex d = is_a<symbol>(time) ? e.diff(ex_to<symbol>(time)) : ex(0);
   // Only the coordinates and rates `e` holds (a string of two bodies among 256: two, not 512

@@ -207,6 +207,13 @@ struct Model {
 /// stands for. Zero tests of closed forms through turning strands go through this.
 [[nodiscard]] GiNaC::ex reduced_on_lengths(const GiNaC::ex& e, const Model& m);
 
+/// The coordinates of massless bodies that no constraint ties to the others (the joint of two
+/// springs in series): nothing moves them but the forces, which sum to zero, so the body's
+/// balance fixes each one at every instant. They are unknowns of the instant and not degrees
+/// of freedom of the motion. (A massless ring on a string is tied by the string's length: its
+/// balance gives the tension instead.) Given coordinates are left out.
+[[nodiscard]] std::vector<GiNaC::ex> balance_coordinates(const Model& m);
+
 /// Builds the model; every problem in the description is reported at once (InputError).
 [[nodiscard]] Model build_model(const Description& d, const RuleSet& rules);
 

@@ -45,12 +45,28 @@ struct Dependents {
   std::string problem;
 };
 
-Dependents dependents(const Model& m, const EquationSystem& s, const MotionSpec& spec, const ex& needed) {
+// A massless body's coordinate that its balance fixes: its value from the solve, in the
+// state, and its rate by the chain rule.
+void add_balance_coordinates(Dependents& d, const Model& m, const Solution& sol) {
+  for (const auto& q : balance_coordinates(m)) {
+    const auto v = sol.value_of(q);
+    if (!v) continue;  // the solve did not give it: what needs it says so
+    const ex value = d.coords.empty() ? *v : substituted(*v, d.coords);
+    d.coords[q] = value;
+    const auto body = std::find_if(m.bodies.begin(), m.bodies.end(), [&](const Body& b) { return b.coord.is_equal(q); });
+    ex rate = time_derivative(value, m.bodies, m.lengths, m.time);
+    if (!d.rates.empty()) rate = substituted(rate, d.rates);
+    d.rates[body->rate] = rate;
+  }
+}
+
+Dependents dependents(const Model& m, const EquationSystem& s, const Solution& sol, const MotionSpec& spec, const ex& needed) {
   Dependents d;
   d.definitions = m.symbols->definitions();
+  const std::vector<ex> by_balance = balance_coordinates(m);
   std::vector<ex> dep_rates, dep_coords;
   for (const auto& b : m.bodies) {
-    if (b.coord.is_zero()) continue;
+    if (b.coord.is_zero() || contains(by_balance, b.coord)) continue;
     if (contains(spec.coordinates, b.coord)) continue;
     dep_rates.push_back(b.rate);
     dep_coords.push_back(b.coord);
@@ -66,7 +82,10 @@ Dependents dependents(const Model& m, const EquationSystem& s, const MotionSpec&
     coords_needed = coords_needed || needed.has(c);
     for (const auto& l : m.lengths) coords_needed = coords_needed || (needed.has(l.symbol) && l.squared.has(c));
   }
-  if (!coords_needed) return d;
+  if (!coords_needed) {
+    add_balance_coordinates(d, m, sol);
+    return d;
+  }
   // quantity(q) = quantity(q at t = 0) for each constraint.
   std::vector<Equation> eqs;
   for (const auto& c : m.constraints) {
@@ -86,6 +105,7 @@ Dependents dependents(const Model& m, const EquationSystem& s, const MotionSpec&
   }
   const Solution r = solve_equations(m.file, eqs, dep_coords);
   for (const auto& v : r.values) d.coords[v.unknown] = v.value;
+  add_balance_coordinates(d, m, sol);
   return d;
 }
 
@@ -339,7 +359,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   for (const auto& w : m.wanted) all += substituted(w.expr, sol.general);
   for (const auto& c : sol.conditions)
     if (!c.depends_on_free) all += c.expr;
-  const Dependents dep = dependents(m, s, spec, all);
+  const Dependents dep = dependents(m, s, sol, spec, all);
   if (!dep.problem.empty()) {
     out.problem = dep.problem;
     return out;
@@ -545,7 +565,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
       // The forced part.
       ex qp = 0;
       const ex F0 = forcing->constant;
-      if (!zero(F0)) qp += !unsprung ? F0 / K : (!undamped ? F0 * t / C : F0 * pow(t, 2) / (2 * M));
+      if (!zero(F0)) qp += simplest(!unsprung ? F0 / K : (!undamped ? F0 * t / C : F0 * pow(t, 2) / (2 * M)));
       bool resonant = false;
       if (!zero(forcing->a) || !zero(forcing->b)) {
         const ex w = forcing->w;

@@ -71,9 +71,11 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
   // are written in: known symbols, as a person keeps x in `k (D - x - l_0)/m`. They are
   // unknowns only where a question asks for one of their kind (then the constraints, solved
   // at that level, give them or leave them free, and an answer never is itself).
+  // (A massless body's coordinate that its balance fixes is an unknown of the instant.)
   bool positions_asked = static_cast<bool>(sol.positions), rates_asked = static_cast<bool>(sol.rates);
-  for (const auto& w : wanted)
-    if (const SymbolInfo* info = w.defined ? nullptr : table.find(w.expr)) {
+  const std::vector<ex> by_balance = balance_coordinates(m);
+  for (const auto& w : m.wanted)
+    if (const SymbolInfo* info = w.defined || contains(by_balance, w.expr) ? nullptr : table.find(w.expr)) {
       positions_asked = positions_asked || info->role == SymbolRole::coordinate;
       rates_asked = rates_asked || info->role == SymbolRole::rate;
     }

@@ -52,9 +52,12 @@ void motion(BuildContext& ctx) {
   MotionSpec spec;
   spec.at = md.at;
   // The moving coordinates, in body order.
+  // (A massless body's coordinate that its balance fixes is no degree of freedom.)
+  const std::vector<ex> by_balance = balance_coordinates(m);
   std::vector<int> moving;
   for (std::size_t i = 0; i < m.bodies.size(); ++i) {
     const Body& b = m.bodies[i];
+    if (contains(by_balance, b.coord)) continue;
     if (!b.coord.is_zero()) moving.push_back(static_cast<int>(i));
     else if (b.has_mass && !is_zero_vec(b.acceleration)) {
       // Straight-line motion without a coordinate: nothing to integrate.
@@ -142,8 +145,12 @@ void motion(BuildContext& ctx) {
     }
   }
   if (dof == 0) {
+    std::vector<std::string> massless;
+    for (const auto& q : by_balance) massless.push_back(to_text(q));
     ctx.diags.error(md.at, "the motion has no degree of freedom: the constraints fix every coordinate" +
-                               std::string(n == 0 ? " (no body has a 'position')" : ""));
+                               std::string(!massless.empty() ? " (the balances of massless bodies fix " + join(massless) + ")"
+                                           : n == 0        ? " (no body has a 'position')"
+                                                           : ""));
     usable = false;
   }
   for (auto j : chosen) {
@@ -168,6 +175,17 @@ void motion(BuildContext& ctx) {
     if (s)
       for (int i : moving)
         if (m.bodies[i].coord.is_equal(s->sym) || m.bodies[i].rate.is_equal(s->sym)) body = i;
+    if (body < 0 && s) {
+      const auto fixed = std::find_if(m.bodies.begin(), m.bodies.end(), [&](const Body& b) {
+        return contains(by_balance, b.coord) && (b.coord.is_equal(s->sym) || b.rate.is_equal(s->sym));
+      });
+      if (fixed != m.bodies.end()) {
+        ctx.diags.error(key.at, "initial value of '" + key.text + "': body '" + fixed->name +
+                                    "' has no mass, so its balance gives it at every instant (expected initial values of the "
+                                    "motion's coordinates only)");
+        continue;
+      }
+    }
     if (body < 0) {
       std::vector<std::string> known;
       for (int i : moving) known.push_back(to_text(m.bodies[i].coord)), known.push_back(to_text(m.bodies[i].rate));
@@ -179,8 +197,9 @@ void motion(BuildContext& ctx) {
     if (is_rate && !independent) {
       std::vector<std::string> rates;
       for (const auto& r : spec.rates) rates.push_back(to_text(r));
-      ctx.diags.error(key.at, "initial value of '" + key.text + "': the constraints give it from the motion's rates (expected " +
-                                  "initial rates of the motion's coordinates only: " + join(rates) + ")");
+      if (!rates.empty())  // (no rates at all: the missing degree of freedom is reported)
+        ctx.diags.error(key.at, "initial value of '" + key.text + "': the constraints give it from the motion's rates (expected " +
+                                    "initial rates of the motion's coordinates only: " + join(rates) + ")");
       continue;
     }
     auto v = ctx.parse(value, *ctx.table, "initial value of '" + key.text + "'");

@@ -186,3 +186,97 @@ motion:
   CHECK(number(a->motion->quantities[0].of_t, t, {{a->model.time, numeric(0)}, {a->model.motion->lambda, numeric(20)}}) ==
         Approx(F / 2 + amp).epsilon(1e-9));
 }
+
+namespace {
+
+// Block A (m) on a spring k_1 (rest l_1) from the massless joint S, which hangs on a spring
+// k_2 (rest l_2) from the wall W at 0: two springs in series. No constraint ties x_S.
+const std::string in_series = R"(title: two springs in series through a massless joint
+axes: [x]
+parameters:
+  m: {value: 2, unit: kg}
+  k_1: {value: 100, unit: N/m}
+  k_2: {value: 300, unit: N/m}
+  l_1: {value: 0.5, unit: m}
+  l_2: {value: 0.5, unit: m}
+bodies:
+  A: {mass: m, position: x}
+  S: {mass: 0, position: x_S}
+points:
+  W: 0
+connections:
+  - {type: spring, name: sp2, path: [W, S], k: k_2, rest_length: l_2}
+  - {type: spring, name: sp1, path: [S, A], k: k_1, rest_length: l_1}
+layout: {x: 1.2, x_S: 0.6}
+)";
+
+}  // namespace
+
+TEST_CASE("Springs in series: the massless joint's coordinate follows from its balance", "[motion][massless][trust]") {
+  // By hand: S's balance, k_1 (x - x_S - l_1) = k_2 (x_S - l_2), gives x_S; A's,
+  // m x'' = -k_1 (x - x_S - l_1) = -k (x - l_1 - l_2) with the in_series stiffness
+  // k = k_1 k_2/(k_1 + k_2). (Before, the balance of S was called inconsistent.)
+  const auto a = run_text(in_series + "find: [x_S, ddot(x)]\n");
+  const Derivation d = explain(*a);
+  REQUIRE(d.answers.size() == 2);
+  REQUIRE(d.answers[0].closed_form);
+  REQUIRE(d.answers[1].closed_form);
+  const SymbolTable& t = *a->model.symbols;
+  const ex m = t.find("m")->sym, k_1 = t.find("k_1")->sym, k_2 = t.find("k_2")->sym, l_1 = t.find("l_1")->sym,
+           l_2 = t.find("l_2")->sym, x = t.find("x")->sym;
+  CHECK(normal(*d.answers[0].closed_form - (k_1 * (x - l_1) + k_2 * l_2) / (k_1 + k_2)).is_zero());
+  CHECK(normal(*d.answers[1].closed_form + k_1 * k_2 / (k_1 + k_2) * (x - l_1 - l_2) / m).is_zero());
+  CHECK(d.status == "determined");
+}
+
+TEST_CASE("Springs in series: the motion has one degree of freedom with the in_series stiffness", "[motion][massless][trust]") {
+  // m x'' + k x = k (l_1 + l_2), k = k_1 k_2/(k_1 + k_2) = 75 N/m: lambda = sqrt(37.5) rad/s, and
+  // from rest at x = 1.2 m, x(t) = 1 + 0.2 cos(lambda t).
+  const auto a = run_text(in_series + "motion:\n  initial: {x: 1.2, dot(x): 0}\n  until: 1\n");
+  REQUIRE(a->motion);
+  REQUIRE(a->motion->problem.empty());
+  const EquationsOfMotion& eom = a->motion->eom;
+  CHECK(eom.dof == 1);
+  REQUIRE(eom.linear);
+  const SymbolTable& t = *a->model.symbols;
+  CHECK(number(eom.K(0, 0), t) == Approx(75).epsilon(1e-12));
+  CHECK(number(eom.M(0, 0), t) == Approx(2).epsilon(1e-12));
+  REQUIRE(a->motion->response);
+  for (const double time : {0.0, 0.3, 0.71}) {
+    const exmap at{{a->model.time, numeric(time)}, {a->model.motion->lambda, sqrt(numeric(75, 2))}};
+    CHECK(number(a->motion->response->q, t, at) == Approx(1 + 0.2 * std::cos(std::sqrt(37.5) * time)).epsilon(1e-12));
+  }
+  const Simulation s = simulate(*a, SimulationSpec{0.71, {"x", "x_S"}, 2}, Location{"t.yaml", 1, 1});
+  REQUIRE(s.complete);
+  const double x = 1 + 0.2 * std::cos(std::sqrt(37.5) * 0.71);
+  CHECK(*s.table.y[0].back() == Approx(x).epsilon(1e-8));
+  CHECK(*s.table.y[1].back() == Approx((100 * (x - 0.5) + 300 * 0.5) / 400).epsilon(1e-8));
+}
+
+TEST_CASE("Springs in series: a massless body's starting place is not asked for, and a turning strand is refused", "[motion][massless][errors]") {
+  CHECK(errors_of(in_series + "motion:\n  initial: {x: 1.2, dot(x): 0, x_S: 0.6}\n") ==
+        std::vector<std::string>{"t.yaml:19:32: initial value of 'x_S': body 'S' has no mass, so its balance gives it at every "
+                                 "instant (expected initial values of the motion's coordinates only)"});
+  // A massless ring in a vertical slot pulled down by a load and up by a spring at an angle:
+  // its balance is not linear in y_R.
+  CHECK(errors_of(R"(title: ring on a spring at an angle
+axes: [x, y]
+parameters:
+  F: {value: 10, unit: N}
+  k: {value: 100, unit: N/m}
+  l_0: {value: 0.5, unit: m}
+  L: {value: 1, unit: m}
+bodies:
+  R: {mass: 0, position: y_R, center_of_mass: [0, y_R]}
+points:
+  G: [L, 0]
+loads:
+  - {on: R, at: R, force: [0, -F]}
+connections:
+  - {type: roller, body: R, at: R, normal: [1, 0]}
+  - {type: spring, name: sp, path: [R, G], k: k, rest_length: l_0}
+layout: {y_R: -0.5}
+)") == std::vector<std::string>{"t.yaml:9:3: body 'R' has no mass and no constraint ties y_R to the other coordinates, so its "
+                                 "balance fixes it; but a strand that turns with it makes that balance nonlinear in y_R "
+                                 "(expected a string or a joint that ties it, or a mass)"});
+}
