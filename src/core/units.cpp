@@ -184,6 +184,7 @@ const std::vector<Named>& named_dimensions() {
       {Dimension::force() * Dimension::length(), "moment (or energy)", "moment", "N*m"},
       {Dimension::force() * Dimension::length(), "energy", "energy", "J"},
       {Dimension::force() * Dimension::length() / Dimension::time(), "power", "power", "W"},
+      {Dimension::force() * Dimension::time(), "impulse (or momentum)", "impulse", "N*s"},
   };
   return table;
 }
@@ -220,6 +221,15 @@ std::string si_unit_name(const Dimension& d) {
     if (n.dimension == d) return n.si_unit;
   static const char* const base[] = {"kg", "m", "s"};
   return compose(d, base, "*");
+}
+
+const Unit& joule() {
+  static const Unit j = [] {
+    std::string error;
+    int column = 0;
+    return *parse_unit("J", error, column);
+  }();
+  return j;
 }
 
 std::string unit_latex(std::string_view unit_text) {

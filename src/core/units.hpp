@@ -58,6 +58,10 @@ std::optional<Unit> parse_unit(std::string_view text, std::string& error, int& e
 /// product of base units.
 [[nodiscard]] std::string si_unit_name(const Dimension& d);
 
+/// Joules, for a quantity that is an energy or a work (a moment has the same dimension and
+/// is printed in N*m).
+[[nodiscard]] const Unit& joule();
+
 /// The same unit as LaTeX (`\mathrm{m/s^{2}}`).
 [[nodiscard]] std::string unit_latex(std::string_view unit_text);
 

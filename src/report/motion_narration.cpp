@@ -97,7 +97,8 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
       text("No work-energy answer: " + e.not_possible + ".");
     } else {
       if (!e.numeric_only) {
-        equation("work of the forces", symbol("W", "W"), e.work);
+        Step* w = equation("work of the forces", symbol("W", "W"), e.work);
+        w->note = with_unit(evaluate(e.work, table, Dimension::force() * Dimension::length(), options.digits, joule()));
         Step* st = equation("work-energy", pow(v_there, 2), *e.rate_squared);
         st->boxed = true;
       } else {

@@ -16,14 +16,15 @@ namespace {
 
 // An answer for a quantity of a phase's end (a rate, an impulse, the energy lost), boxed.
 void answer(Derivation& d, Narrator& n, const SymbolTable& table, const ex& symbol, const ex& value, const Dimension& dim,
-            const ReportOptions& options, const std::string& label) {
+            const ReportOptions& options, const std::string& label, const std::optional<Unit>& unit = std::nullopt) {
   Answer a;
   const SymbolInfo* info = table.find(symbol);
   a.name = info ? info->name : to_text(symbol);
   a.tex = info ? info->tex : a.name;
   a.symbol = symbol;
   a.closed_form = fold_definitions(value, table);
-  a.value = evaluate(value, table, dim, options.digits);
+  a.unit = unit;
+  a.value = evaluate(value, table, dim, options.digits, unit);
   Step* st = n.equation(label, symbol, *a.closed_form);
   st->boxed = true;
   st->note = with_unit(a.value);
@@ -93,10 +94,11 @@ void narrate_impact(Derivation& d, const Model& m, const ImpactResult& r, const 
            "impulse on " + m.bodies[a.body].name);
   n.text("The kinetic energy before and after the impact, and what the impact takes:");
   Step* before = n.equation("kinetic energy just before", symbol("E_before", "E_{\\mathrm{before}}"), r.energy_before);
-  before->note = with_unit(evaluate(r.energy_before, table, Dimension::force() * Dimension::length(), options.digits));
+  before->note = with_unit(evaluate(r.energy_before, table, Dimension::force() * Dimension::length(), options.digits, joule()));
   Step* after = n.equation("kinetic energy just after", symbol("E_after", "E_{\\mathrm{after}}"), r.energy_after);
-  after->note = with_unit(evaluate(r.energy_after, table, Dimension::force() * Dimension::length(), options.digits));
-  answer(d, n, table, r.energy_lost_symbol, r.energy_lost, Dimension::force() * Dimension::length(), options, "energy lost");
+  after->note = with_unit(evaluate(r.energy_after, table, Dimension::force() * Dimension::length(), options.digits, joule()));
+  answer(d, n, table, r.energy_lost_symbol, r.energy_lost, Dimension::force() * Dimension::length(), options, "energy lost",
+         joule());
   n.section("Check: energy");
   const auto sign = sign_of(r.energy_lost);
   const auto number = evaluate(r.energy_lost, table, Dimension::force() * Dimension::length(), options.digits);

@@ -59,3 +59,15 @@ TEST_CASE("Units: US customary units convert exactly", "[units]") {
   CHECK_FALSE(parse_unit("klbf", err, col));  // no prefixes on US units
   CHECK(err == "unknown unit 'klbf'");
 }
+
+TEST_CASE("Units: an impulse is in N*s, an energy or a work in J (issue 30)", "[units][trust]") {
+  // A force times a time: N*s (the same as kg*m/s, the unit of momentum).
+  CHECK(tackle::si_unit_name(tackle::Dimension::force() * tackle::Dimension::time()) == "N*s");
+  CHECK(tackle::si_unit_name(tackle::Dimension::mass() * tackle::Dimension::velocity()) == "N*s");
+  // A moment and an energy share a dimension: N*m by default, J where the quantity is an energy.
+  CHECK(tackle::si_unit_name(tackle::Dimension::force() * tackle::Dimension::length()) == "N*m");
+  CHECK(tackle::joule().text == "J");
+  CHECK(tackle::joule().dimension == tackle::Dimension::force() * tackle::Dimension::length());
+  CHECK(GiNaC::ex(tackle::joule().to_si).is_equal(1));
+  CHECK(tackle::si_unit_name(tackle::Dimension::force() * tackle::Dimension::velocity()) == "W");
+}
