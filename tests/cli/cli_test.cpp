@@ -522,10 +522,12 @@ TEST_CASE("CLI: a sheet shows the mechanism's sketch, and the free body diagrams
 
 namespace {
 
-// The command's exit code and standard error, standard output sent to `out` (a device here).
-Run run_tackle_to(const std::string& args, const std::string& out) {
+// The command's exit code (128 + the signal's number when one killed it) and standard error, standard output sent
+// to `out` (a device here); `before` is shell run first (a ulimit).
+Run run_tackle_to(const std::string& args, const std::string& out, const std::string& before = "") {
   const fs::path err = fs::temp_directory_path() / ("tackle-cli-err-" + std::to_string(::getpid()));
-  const std::string cmd = std::string(TACKLE_BINARY) + " " + args + " >" + out + " 2>" + err.string() + " </dev/null";
+  // The group's own stderr takes the shell's "Segmentation fault" of a process a limit killed.
+  const std::string cmd = "{ (" + before + std::string(TACKLE_BINARY) + " " + args + ") >" + out + " 2>" + err.string() + " </dev/null; } 2>/dev/null";
   const int status = std::system(cmd.c_str());
   Run r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, "", slurp(err)};
   fs::remove(err);
@@ -686,7 +688,41 @@ TEST_CASE("CLI: text from the description reaches Markdown and HTML escaped: no 
   const Run html = run_tackle("sheet --format html " + file);
   REQUIRE(html.code == 0);
   CHECK(html.out.find("<script>alert") == std::string::npos);
-  CHECK(html.out.find("<img") == std::string::npos);
+  CHECK(html.out.find("<img src=x") == std::string::npos);  // KaTeX's own script has "<img "
+  CHECK(html.out.find("A force <span class=\"math\">10\\,\\mathrm{N}</span> &lt;img src=x onerror=alert(1)&gt; pulls A; "
+                      "<span class=\"math\">a&lt;b</span> &amp; so on.") != std::string::npos);
   CHECK(html.out.find("Pulled &lt;script&gt;alert(1)&lt;/script&gt;") != std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("CLI: out of memory is exit 3 with a message, and leaves no temporary file", "[cli][errors][files]") {
+  // Under each address-space limit from 8 to 40 MB, tackle either finishes, or says it ran
+  // out of memory (exit 3) with its output's temporary file removed; or the limit is too
+  // small for the program to start at all (then --version dies too, before any of tackle's
+  // code). A limit between those is an out-of-memory in the middle of the derivation.
+  const fs::path dir = fs::temp_directory_path() / ("tackle-oom-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string out = (dir / "report.txt").string();
+  const Run whole = run_tackle("derive " + examples + "hoist-two-masts-3d.yaml");
+  REQUIRE(whole.code == 0);
+  int out_of_memory = 0;
+  for (int kb = 8 * 1024; kb <= 40 * 1024; kb += 256) {
+    INFO("ulimit -v " << kb);
+    const std::string limit = "ulimit -v " + std::to_string(kb) + "; exec ";
+    const Run r = run_tackle_to("derive " + examples + "hoist-two-masts-3d.yaml -o " + out, "/dev/null", limit);
+    if (r.code > 128) {
+      CHECK(run_tackle_to("--version", "/dev/null", limit).code > 128);
+    } else if (r.code == 3) {
+      CHECK(r.err == "tackle: out of memory\n");
+      CHECK_FALSE(fs::exists(out));
+      ++out_of_memory;
+    } else {
+      CHECK(r.code == 0);
+      CHECK(slurp(out) == whole.out);
+      fs::remove(out);
+    }
+    CHECK(temporaries_in(dir) == 0);
+  }
+  CHECK(out_of_memory > 0);
   fs::remove_all(dir);
 }
