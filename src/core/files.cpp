@@ -161,8 +161,10 @@ void unregister_temporary(int slot) {
   if (slot >= 0) temporaries[slot].state.store(0);
 }
 
+// /dev and /proc hold devices and the process's own descriptors (/dev/stdout, /dev/fd/1,
+// /proc/self/fd/1), not files to make or replace; /dev/shm is an ordinary directory of files.
 bool under_system_directory(const std::string& path) {
-  return path.rfind("/dev/", 0) == 0 || path.rfind("/proc/", 0) == 0;
+  return (path.rfind("/dev/", 0) == 0 && path.rfind("/dev/shm/", 0) != 0) || path.rfind("/proc/", 0) == 0;
 }
 
 // `path` with its symbolic links followed, as far as they lead (a link to a file that does

@@ -526,8 +526,9 @@ namespace {
 // to `out` (a device here); `before` is shell run first (a ulimit).
 Run run_tackle_to(const std::string& args, const std::string& out, const std::string& before = "") {
   const fs::path err = fs::temp_directory_path() / ("tackle-cli-err-" + std::to_string(::getpid()));
-  // The group's own stderr takes the shell's "Segmentation fault" of a process a limit killed.
-  const std::string cmd = "{ (" + before + std::string(TACKLE_BINARY) + " " + args + ") >" + out + " 2>" + err.string() + " </dev/null; } 2>/dev/null";
+  // The shell's own stderr, where it reports "Segmentation fault" of a process a limit killed,
+  // goes nowhere.
+  const std::string cmd = "exec 2>/dev/null; (" + before + std::string(TACKLE_BINARY) + " " + args + ") >" + out + " 2>" + err.string() + " </dev/null";
   const int status = std::system(cmd.c_str());
   Run r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, "", slurp(err)};
   fs::remove(err);
@@ -692,6 +693,11 @@ TEST_CASE("CLI: text from the description reaches Markdown and HTML escaped: no 
   CHECK(html.out.find("A force <span class=\"math\">10\\,\\mathrm{N}</span> &lt;img src=x onerror=alert(1)&gt; pulls A; "
                       "<span class=\"math\">a&lt;b</span> &amp; so on.") != std::string::npos);
   CHECK(html.out.find("Pulled &lt;script&gt;alert(1)&lt;/script&gt;") != std::string::npos);
+  // A sweep's SVG plot is titled with it, escaped as well.
+  const fs::path svg = dir / "sweep.svg";
+  const Run sweep = run_tackle("sweep " + file + " --vary F=1:2:3 --plot 'ddot(x)' --svg " + svg.string());
+  REQUIRE(sweep.code == 0);
+  CHECK(slurp(svg).find(">Pulled &lt;script&gt;alert(1)&lt;/script&gt;</text>") != std::string::npos);
   fs::remove_all(dir);
 }
 

@@ -141,6 +141,19 @@ TEST_CASE("Files: -o /dev/null writes to the device and leaves it a character de
   CHECK_FALSE(std::filesystem::exists("/dev/tackle-no-such-device"));
 }
 
+TEST_CASE("Files: /dev/shm holds ordinary files: one is replaced whole, as anywhere else", "[files]") {
+  if (!std::filesystem::is_directory("/dev/shm")) {
+    WARN("no /dev/shm on this machine");
+    return;
+  }
+  const std::string path = "/dev/shm/tackle-files-test-" + std::to_string(::getpid());
+  std::string error;
+  REQUIRE(write_file_atomically(path, "a longer first version\n", error));
+  REQUIRE(write_file_atomically(path, "second\n", error));
+  CHECK(slurp(path) == "second\n");  // replaced, not appended to nor written over in place
+  std::filesystem::remove(path);
+}
+
 TEST_CASE("Files: a write that fails (/dev/full) is an error that says why", "[files]") {
   struct stat st {};
   if (::stat("/dev/full", &st) != 0 || !S_ISCHR(st.st_mode)) {
