@@ -1,13 +1,13 @@
-// The tackle command: a thin shell over the library. Exit codes: 0 ok, 1 input error,
-// 2 usage error, 3 internal error.
+// The tackle command: a thin shell over the library. Exit codes: 0 ok, 1 input error or an
+// output that cannot be written, 2 usage error, 3 internal error or out of memory.
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <optional>
-#include <sstream>
 
 #include <CLI/CLI.hpp>
 
@@ -368,10 +368,6 @@ std::string asked_subcommand(int argc, char** argv) {
   return {};
 }
 
-}  // namespace
-
-namespace {
-
 int run(int argc, char** argv) {
   Options o;
   CLI::App app{"tackle: free-body-diagram equations for constrained straight-line motion, solved in closed form"};
@@ -536,7 +532,7 @@ int run(int argc, char** argv) {
     std::cerr << "tackle: " << e.what() << "\n";
     return 3;
   } catch (const std::bad_alloc&) {
-    // Rethrown to main, past the destructors of the outputs, which remove their temporary files.
+    // To main, which says so; the outputs unwound on the way have removed their temporary files.
     throw;
   } catch (const std::exception& e) {
     std::cerr << "tackle: internal error: " << e.what() << "\n";
