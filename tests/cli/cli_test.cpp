@@ -732,3 +732,32 @@ TEST_CASE("CLI: out of memory is exit 3 with a message, and leaves no temporary 
   CHECK(out_of_memory > 0);
   fs::remove_all(dir);
 }
+
+TEST_CASE("CLI: a batch whose outputs are larger than the memory tackle may use is graded whole", "[cli][batch][limits]") {
+  // 100,000 lines that are not JSON: about 29 MB of results and 14 MB of results file, under
+  // a 24 MB address-space limit (tackle itself needs about 11 MB of it): only a batch read,
+  // graded and written a line at a time fits.
+  const fs::path dir = fs::temp_directory_path() / ("tackle-stream-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string batch = (dir / "b.jsonl").string(), out = (dir / "out.jsonl").string(), results = (dir / "r.json").string();
+  {
+    std::ofstream b(batch);
+    for (int i = 1; i <= 100000; ++i) b << "not json " << i << "\n";
+  }
+  const Run r = run_tackle_to("check " + examples + "sample-12.8-sign-board.yaml --batch " + batch + " -o " + out + " --results " +
+                                  results + " --results-format prairielearn",
+                              "/dev/null", "ulimit -v 24576; exec ");
+  REQUIRE(r.code == 0);
+  CHECK(r.err.empty());
+  std::ifstream lines(out);
+  std::size_t n = 0;
+  for (std::string l; std::getline(lines, l);) ++n;
+  CHECK(n == 100000);
+  CHECK(fs::file_size(out) + fs::file_size(results) > 24576 * 1024);
+  const auto j = nlohmann::json::parse(slurp(results));
+  CHECK(j["tests"].size() == 100000);
+  REQUIRE(j["format_errors"].size() == 101);
+  CHECK(j["format_errors"][0] == "line 1: line 1: not a JSON object with id, unknown and answer");
+  CHECK(j["format_errors"][100] == "and 99900 more");
+  fs::remove_all(dir);
+}
