@@ -572,9 +572,10 @@ bool forbidden_environment(const std::string& name) {
 // Where `needle` is first written in the file at or after `from` (a byte offset), as a
 // location; `fallback` when it is not there as typed (a quoted scalar's escapes spell it).
 Location locate_in_source(const std::string& source, std::size_t& from, const std::string& needle, const Location& fallback) {
-  const std::size_t at = source.find(needle, from);
+  std::size_t at = source.find(needle, from);
   if (at == std::string::npos) return fallback;
   from = at + needle.size();
+  if (at > 0 && source[at - 1] == '\\') --at;  // "\\input" in a double-quoted scalar: its first backslash
   const std::size_t line_start = source.rfind('\n', at) == std::string::npos ? 0 : source.rfind('\n', at) + 1;
   int line = 1, column = 1;
   for (std::size_t i = 0; i < line_start; ++i) line += source[i] == '\n';
