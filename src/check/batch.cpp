@@ -1,6 +1,11 @@
 #include "check/batch.hpp"
 
+#include <sstream>
+
 #include <nlohmann/json.hpp>
+
+#include "core/diagnostics.hpp"
+#include "core/limits.hpp"
 
 namespace tackle {
 
@@ -41,13 +46,45 @@ std::string result_text(const CheckResult& r) {
   return out;
 }
 
-BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream& out, const GradeOptions& options) {
+namespace {
+
+// One line of `in` into `line` (without its newline); false at the end of the input. A line
+// past max_batch_line_bytes is an input error as soon as that many bytes were read: a line
+// that never ends (`/dev/zero`) must not be read for ever, nor into memory.
+bool read_line(std::istream& in, std::string& line, std::size_t number, const std::string& source) {
+  line.clear();
+  std::streambuf* buffer = in.rdbuf();
+  using traits = std::char_traits<char>;
+  for (;;) {
+    const traits::int_type c = buffer->sbumpc();
+    if (traits::eq_int_type(c, traits::eof())) {
+      in.setstate(std::ios::eofbit);
+      return !line.empty();
+    }
+    if (c == '\n') return true;
+    if (line.size() == max_batch_line_bytes)
+      throw InputError({{{source, static_cast<int>(number), 0},
+                         "the line is longer than " + std::to_string(max_batch_line_bytes >> 20) +
+                             " MiB (expected JSON Lines: one object with id, unknown and answer per line)"}});
+    line.push_back(traits::to_char_type(c));
+  }
+}
+
+}  // namespace
+
+BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream& out, std::ostream& results,
+                         const GradeOptions& options) {
   using J = nlohmann::ordered_json;
+  const auto dump = [](const J& j) { return j.dump(-1, ' ', false, J::error_handler_t::replace); };
   BatchSummary s;
-  J tests = J::array(), jsonl = J::array();
-  std::vector<std::string> format_errors;
+  // The results file is written as the lines are graded; its totals come last (JSON does
+  // not order the fields of an object).
+  const bool platform = options.format != ResultsFormat::jsonl;
+  if (platform) results << "{\n  \"tests\": [";
+  std::vector<std::string> format_errors;  // the first max_format_errors
   std::string line;
-  while (std::getline(in, line)) {
+  std::size_t physical = 0;  // the line's number in the file, blank lines counted
+  while (out && read_line(in, line, ++physical, options.source)) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     ++s.lines;
     std::string id = "line " + std::to_string(s.lines), unknown, answer;
@@ -75,6 +112,8 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
                                                                     : it.value().dump(-1, ' ', false, J::error_handler_t::replace));
           }
         }
+      } catch (const std::bad_alloc&) {
+        throw;  // out of memory is the process's (exit 3), not this line's
       } catch (const std::exception&) {
         problem = "not a JSON object with id, unknown and answer";
       }
@@ -98,47 +137,55 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
     const std::string feedback = verdict_name(r.verdict) + ": " + r.summary;
     if (r.verdict == Verdict::invalid) {
       ++s.invalid;
-      format_errors.push_back(name + ": " + r.summary);
+      if (format_errors.size() < max_format_errors) format_errors.push_back(name + ": " + r.summary);
     }
     const auto own = options.points_for.find(unknown);
     const double max_points = own != options.points_for.end() ? own->second : options.points;
     const double points = r.score * max_points;
     s.points += points;
     s.max_points += max_points;
-    const J result = to_json(r, answer, id);
-    out << result.dump(-1, ' ', false, J::error_handler_t::replace) << "\n";
-    if (options.format == ResultsFormat::jsonl) jsonl.push_back(result);
+    const std::string result = dump(to_json(r, answer, id));
+    out << result << "\n";
+    if (options.format == ResultsFormat::jsonl) results << result << "\n";
+    if (platform) results << (s.lines == 1 ? "\n    " : ",\n    ");
     if (options.format == ResultsFormat::gradescope)
-      tests.push_back({{"name", name}, {"score", points}, {"max_score", max_points},
+      results << dump({{"name", name}, {"score", points}, {"max_score", max_points},
                        {"status", r.verdict == Verdict::correct ? "passed" : "failed"}, {"output", feedback}, {"visibility", "visible"}});
     if (options.format == ResultsFormat::prairielearn)
-      tests.push_back({{"name", name}, {"points", points}, {"max_points", max_points}, {"message", feedback}});
+      results << dump({{"name", name}, {"points", points}, {"max_points", max_points}, {"message", feedback}});
   }
+  if (!platform) return s;
+  results << (s.lines == 0 ? "],\n" : "\n  ],\n");
   const std::string said = std::to_string(s.correct) + " of " + std::to_string(s.lines) + " answers correct";
-  J results;
-  switch (options.format) {
-    case ResultsFormat::gradescope: {
-      if (options.top_level_score) results["score"] = s.points;
-      results["output"] = said;
-      results["tests"] = tests;
-      break;
+  J totals;
+  if (options.format == ResultsFormat::gradescope) {
+    if (options.top_level_score) totals["score"] = s.points;
+    totals["output"] = said;
+  } else {
+    // An answer that cannot be graded as typed: not gradable, so no attempt is charged.
+    totals["gradable"] = s.invalid == 0;
+    if (s.invalid == 0) {
+      totals["score"] = s.max_points > 0 ? s.points / s.max_points : 0.0;
+    } else {
+      if (s.invalid > format_errors.size())
+        format_errors.push_back("and " + std::to_string(s.invalid - format_errors.size()) + " more");
+      totals["format_errors"] = format_errors;
     }
-    case ResultsFormat::prairielearn: {
-      // An answer that cannot be graded as typed: not gradable, so no attempt is charged.
-      results["gradable"] = s.invalid == 0;
-      if (s.invalid == 0) results["score"] = s.max_points > 0 ? s.points / s.max_points : 0.0;
-      else results["format_errors"] = format_errors;
-      results["message"] = s.invalid == 0 ? said : std::to_string(s.invalid) + " of " + std::to_string(s.lines) +
-                                                       " answers cannot be graded as typed: fix them and submit again";
-      results["tests"] = tests;
-      break;
-    }
-    case ResultsFormat::jsonl: {
-      for (const auto& x : jsonl) s.results += x.dump(-1, ' ', false, J::error_handler_t::replace) + "\n";
-      return s;
-    }
+    totals["message"] = s.invalid == 0 ? said : std::to_string(s.invalid) + " of " + std::to_string(s.lines) +
+                                                   " answers cannot be graded as typed: fix them and submit again";
   }
-  s.results = results.dump(2, ' ', false, J::error_handler_t::replace) + "\n";
+  // The totals' fields, indented as the rest, after the tests.
+  std::size_t k = 0;
+  for (auto it = totals.begin(); it != totals.end(); ++it, ++k)
+    results << "  " << dump(it.key()) << ": " << dump(it.value()) << (k + 1 < totals.size() ? ",\n" : "\n");
+  results << "}\n";
+  return s;
+}
+
+BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream& out, const GradeOptions& options) {
+  std::ostringstream results;
+  BatchSummary s = check_batch(checker, in, out, results, options);
+  s.results = results.str();
   return s;
 }
 

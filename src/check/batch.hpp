@@ -30,20 +30,31 @@ struct GradeOptions {
   // Values for every line (`--set F=120`), in each parameter's stated unit; a line's own
   // `params` object adds to them.
   std::vector<std::pair<std::string, std::string>> set;
+  std::string source = "-";  // the batch's name in its errors ("-": standard input)
 };
+
+/// At most this many of PrairieLearn's `format_errors` are listed (then how many more): the
+/// results file is written as the batch is graded, and only totals are kept in memory.
+inline constexpr std::size_t max_format_errors = 100;
 
 struct BatchSummary {
   std::size_t lines = 0;
   std::size_t correct = 0;
   std::size_t invalid = 0;
   double points = 0, max_points = 0;
-  std::string results;  // the results file in the asked format
+  std::string results;  // the results file in the asked format (the overload without a stream)
 };
 
-/// Checks every line of `in`, writes one JSON result per line to `out`. A line is an object
-/// with `id`, `unknown`, `answer` and optionally `params` (`{"F": 120}`: the student's own
-/// numbers, in the parameters' stated units). A line that is not such an object gets an
-/// `invalid` result that says why; nothing stops the batch.
+/// Checks every line of `in`, writes one JSON result per line to `out` as it goes, and the
+/// platform's results file to `results`, also as it goes: memory stays bounded whatever the
+/// size of the batch. A line is an object with `id`, `unknown`, `answer` and optionally
+/// `params` (`{"F": 120}`: the student's own numbers, in the parameters' stated units). A line
+/// that is not such an object gets an `invalid` result that says why, and the batch goes on;
+/// only a line longer than `max_batch_line_bytes` stops it (InputError at that line, since
+/// the line may never end), or a failed write to `out` (the caller finds `out` failed).
+BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream& out, std::ostream& results,
+                         const GradeOptions& options = {});
+/// The same, with the results file returned in `results` of the summary.
 BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream& out, const GradeOptions& options = {});
 
 /// One result as a JSON object (the single-answer `--format json` output).

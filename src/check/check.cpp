@@ -339,6 +339,8 @@ std::optional<numeric> Checker::Exact::operator()(const Point& point) const {
     std::size_t at = 0;
     Value v;
     if (run(at, point, v)) return numeric(v.real());
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory is the process's (exit 3), not this number's
   } catch (const std::exception&) {
   }
   return std::nullopt;
@@ -910,6 +912,8 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
                !over_budget()) {
       try {
         proved = normal(expanded - ref.closed_form).is_zero();
+      } catch (const std::bad_alloc&) {
+        throw;  // out of memory is the process's (exit 3), not this answer's
       } catch (const std::exception&) {
         proved = false;
       }

@@ -1,10 +1,13 @@
-// The tackle command: a thin shell over the library. Exit codes: 0 ok, 1 input error,
-// 2 usage error, 3 internal error.
+// The tackle command: a thin shell over the library. Exit codes: 0 ok, 1 input error or an
+// output that cannot be written, 2 usage error, 3 internal error or out of memory.
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <optional>
-#include <sstream>
 
 #include <CLI/CLI.hpp>
 
@@ -30,11 +33,28 @@ int report_input_error(const tackle::InputError& e) {
   return 1;
 }
 
+// Whether everything written to standard output so far reached it; when not, says so once
+// (`tackle derive FILE > /dev/full` must not exit 0). errno is read right after the flush
+// that failed; a write that failed earlier (output past stdio's buffer) may have left no
+// reason behind, and then none is given.
+bool standard_output_written() {
+  static bool said = false;
+  errno = 0;
+  std::cout.flush();
+  const bool flushed = std::fflush(stdout) == 0;
+  const int err = errno;
+  if (flushed && std::cout && !std::ferror(stdout)) return true;
+  if (!said)
+    std::cerr << "tackle: cannot write to standard output" << (err != 0 ? std::string(" (") + std::strerror(err) + ")" : "") << "\n";
+  said = true;
+  return false;
+}
+
 // To standard output, or to the file atomically (a failed run leaves no partial output).
 int emit(const std::string& text, const std::string& out) {
   if (out.empty() || out == "-") {
     std::cout << text;
-    return 0;
+    return standard_output_written() ? 0 : 1;
   }
   std::string error;
   if (tackle::write_file_atomically(out, text, error)) return 0;
@@ -298,8 +318,12 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
       if (eq == std::string::npos) grade.points = v;
       else grade.points_for[p.substr(0, eq)] = v;
     }
-    std::istringstream batch_text;
-    if (o.batch != "-") batch_text.str(tackle::read_text_file(o.batch));
+    grade.source = o.batch;
+    // Read and graded line by line, each result written as it goes: memory stays bounded
+    // whatever the size of the batch.
+    std::unique_ptr<std::istream> batch_file;
+    if (o.batch != "-") batch_file = tackle::open_text_file(o.batch);
+    std::istream& batch = batch_file ? *batch_file : std::cin;
     // Both outputs go through temporary files and are renamed into place only when the
     // whole batch was graded.
     std::optional<tackle::AtomicOutput> out_file, results_file;
@@ -312,8 +336,12 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
       }
     }
     std::ostream& sink = out_file ? out_file->stream() : std::cout;
-    const auto summary = tackle::check_batch(checker, o.batch == "-" ? std::cin : batch_text, sink, grade);
-    if (results_file) results_file->stream() << summary.results;
+    std::ostream null_results(nullptr);  // no --results: nothing is kept (badbit: every write dropped)
+    std::ostream& results = results_file ? results_file->stream() : null_results;
+    (void)tackle::check_batch(checker, batch, sink, results, grade);
+    // Standard output failed part of the way: the batch stopped there, and a results file of
+    // part of the batch is not written.
+    if (!out_file && !standard_output_written()) return 1;
     for (auto* file : {&out_file, &results_file})
       if (*file && !(*file)->commit()) {
         std::cerr << (*file)->error() << "\n";
@@ -340,9 +368,7 @@ std::string asked_subcommand(int argc, char** argv) {
   return {};
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   Options o;
   CLI::App app{"tackle: free-body-diagram equations for constrained straight-line motion, solved in closed form"};
   app.require_subcommand(1);
@@ -505,8 +531,27 @@ int main(int argc, char** argv) {
   } catch (const tackle::SetupError& e) {
     std::cerr << "tackle: " << e.what() << "\n";
     return 3;
+  } catch (const std::bad_alloc&) {
+    // To main, which says so; the outputs unwound on the way have removed their temporary files.
+    throw;
   } catch (const std::exception& e) {
     std::cerr << "tackle: internal error: " << e.what() << "\n";
     return 3;
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int code = 0;
+  try {
+    code = run(argc, argv);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "tackle: out of memory\n";
+    code = 3;
+  }
+  // Help, version and usage messages go to standard output too: a failed write there is an
+  // error whatever the command (exit 1 unless the run had failed already).
+  if (!standard_output_written() && code == 0) code = 1;
+  return code;
 }

@@ -426,6 +426,8 @@ ParseResult parse_expression(std::string_view text, const NameResolver& names, c
     return {p.parse_all(), {}};
   } catch (const Failure& f) {
     return {std::nullopt, {f.problem}};
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory is the process's (exit 3), not the expression's
   } catch (const std::exception& e) {
     // GiNaC arithmetic errors (for example 0^0) are input problems too.
     return {std::nullopt, {{0, std::string("cannot evaluate: ") + e.what()}}};
@@ -447,6 +449,8 @@ RelationResult parse_relation(std::string_view text, const NameResolver& names, 
     return {ParsedRelation{lhs, rhs, op.text == "==" ? "=" : op.text}, {}};
   } catch (const Failure& f) {
     return {std::nullopt, {f.problem}};
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory is the process's (exit 3), not the expression's
   } catch (const std::exception& e) {
     return {std::nullopt, {{0, std::string("cannot evaluate: ") + e.what()}}};
   }

@@ -8,6 +8,7 @@
 
 #include "expr/parse.hpp"
 #include "expr/print.hpp"
+#include "report/html.hpp"
 #include "solve/solve.hpp"
 
 namespace tackle {
@@ -287,7 +288,7 @@ std::string sweep_svg(const SweepResult& r) {
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" viewBox=\"0 0 {} {}\" "
       "font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
       W, H, W, H);
-  out += fmt::format("<text x=\"{}\" y=\"22\" font-size=\"14\">{}</text>\n", left, r.title);
+  out += fmt::format("<text x=\"{}\" y=\"22\" font-size=\"14\">{}</text>\n", left, html_escape(r.title));
   out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"black\"/>\n", left, top, pw, ph);
   // Ticks at multiples of 1, 2 or 5 times a power of ten, about five per axis.
   auto ticks = [](double lo, double hi) {

@@ -1,13 +1,20 @@
 // The tackle command as a user runs it: outputs, golden reports, exit codes.
 #include <catch2/catch.hpp>
 
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -511,4 +518,246 @@ TEST_CASE("CLI: a sheet shows the mechanism's sketch, and the free body diagrams
   CHECK(count(all.out, "<figcaption>Free body diagram") == 2);
   // The sketch comes before what is asked.
   CHECK(all.out.find("Sketch of the mechanism") < all.out.find("Find $T$"));
+}
+
+namespace {
+
+// The command's exit code (128 + the signal's number when one killed it) and standard error, standard output sent
+// to `out` (a device here); `before` is shell run first (a ulimit).
+Run run_tackle_to(const std::string& args, const std::string& out, const std::string& before = "") {
+  const fs::path err = fs::temp_directory_path() / ("tackle-cli-err-" + std::to_string(::getpid()));
+  // The shell's own stderr, where it reports "Segmentation fault" of a process a limit killed,
+  // goes nowhere.
+  const std::string cmd = "exec 2>/dev/null; (" + before + std::string(TACKLE_BINARY) + " " + args + ") >" + out + " 2>" + err.string() + " </dev/null";
+  const int status = std::system(cmd.c_str());
+  Run r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, "", slurp(err)};
+  fs::remove(err);
+  return r;
+}
+
+bool character_device(const char* path) {
+  struct stat st {};
+  return ::stat(path, &st) == 0 && S_ISCHR(st.st_mode);
+}
+
+std::size_t temporaries_in(const fs::path& dir) {
+  std::size_t n = 0;
+  for (const auto& e : fs::directory_iterator(dir)) n += e.path().filename().string().find(".tackle-") != std::string::npos;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("CLI: a write that fails is an error, exit 1: standard output or -o full", "[cli][errors][files]") {
+  if (!character_device("/dev/full")) {
+    WARN("no /dev/full on this machine");
+    return;
+  }
+  // A short report (all of it in stdio's buffer until the end) and a long one (past it).
+  for (const char* command : {"solve", "derive"}) {
+    INFO(command);
+    const Run r = run_tackle_to(std::string(command) + " " + examples + "sample-12.8-sign-board.yaml", "/dev/full");
+    CHECK(r.code == 1);
+    CHECK(r.err == "tackle: cannot write to standard output (No space left on device)\n");
+  }
+  // A batch to standard output stops, and writes no results file of part of the batch.
+  const fs::path dir = fs::temp_directory_path() / ("tackle-full-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string batch = (dir / "b.jsonl").string();
+  std::ofstream(batch) << R"x({"id": "s1", "unknown": "T_HI", "answer": "m*a*l/(2*d)"})x" << "\n";
+  const Run b = run_tackle_to("check " + examples + "sample-12.8-sign-board.yaml --batch " + batch + " --results " +
+                                  (dir / "r.json").string(), "/dev/full");
+  CHECK(b.code == 1);
+  CHECK(b.err == "tackle: cannot write to standard output (No space left on device)\n");
+  CHECK_FALSE(fs::exists(dir / "r.json"));
+  CHECK(temporaries_in(dir) == 0);
+  // -o to the device: written into (never replaced), and its failure said.
+  const Run o = run_tackle("solve " + examples + "sample-12.8-sign-board.yaml -o /dev/full");
+  CHECK(o.code == 1);
+  CHECK(o.err == "/dev/full: cannot write the file (No space left on device)\n");
+  CHECK(character_device("/dev/full"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("CLI: -o and --results to /dev/null and to a FIFO write into them, never replace them", "[cli][files]") {
+  const fs::path dir = fs::temp_directory_path() / ("tackle-devices-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string batch = (dir / "b.jsonl").string();
+  std::ofstream(batch) << R"x({"id": "s1", "unknown": "T_HI", "answer": "m*a*l/(2*d)"})x" << "\n";
+  const Run r = run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + batch + " -o /dev/null --results /dev/null");
+  CHECK(r.code == 0);
+  CHECK(r.err.empty());
+  CHECK(character_device("/dev/null"));
+  // A FIFO with a reader: the report arrives through it, and the FIFO stays a FIFO.
+  const fs::path fifo = dir / "pipe";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  std::string read;
+  std::thread reader([&] { read = slurp(fifo); });
+  const Run s = run_tackle("solve " + examples + "sample-12.3-two-mass-pulley.yaml -o " + fifo.string());
+  reader.join();
+  CHECK(s.code == 0);
+  CHECK(read.rfind("T = 2*F*m_B/(9*m_A + 4*m_B)", 0) == 0);
+  struct stat st {};
+  REQUIRE(::stat(fifo.c_str(), &st) == 0);
+  CHECK(S_ISFIFO(st.st_mode));
+  CHECK(temporaries_in(dir) == 0);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("CLI: stopped by SIGINT or SIGTERM while grading, tackle leaves no temporary file", "[cli][files]") {
+  const fs::path dir = fs::temp_directory_path() / ("tackle-signal-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path fifo = dir / "in.jsonl";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  for (const int sig : {SIGINT, SIGTERM}) {
+    INFO("signal " << sig);
+    // tackle reads the batch from a FIFO that is kept open: it has made its two temporary
+    // files and waits for the next line when the signal comes.
+    const std::string board = examples + "sample-12.8-sign-board.yaml", out = (dir / "out.jsonl").string(),
+                      results = (dir / "r.json").string();
+    std::vector<std::string> args{TACKLE_BINARY, "check", board, "--batch", fifo.string(), "-o", out, "--results", results};
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    posix_spawnattr_t attr;
+    posix_spawnattr_init(&attr);
+    sigset_t defaults;
+    sigemptyset(&defaults);
+    sigaddset(&defaults, SIGINT);  // a test run in the background may ignore SIGINT
+    sigaddset(&defaults, SIGTERM);
+    posix_spawnattr_setsigdefault(&attr, &defaults);
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF);
+    pid_t pid = 0;
+    REQUIRE(::posix_spawn(&pid, TACKLE_BINARY, nullptr, &attr, argv.data(), environ) == 0);
+    posix_spawnattr_destroy(&attr);
+    const int writer = ::open(fifo.c_str(), O_WRONLY);  // waits for tackle to open it
+    REQUIRE(writer >= 0);
+    const std::string line = R"x({"id": "s1", "unknown": "T_HI", "answer": "m*a*l/(2*d)"})x" "\n";
+    REQUIRE(::write(writer, line.data(), line.size()) == static_cast<ssize_t>(line.size()));
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (temporaries_in(dir) < 2 && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    CHECK(temporaries_in(dir) == 2);
+    ::kill(pid, sig);
+    int status = 0;
+    REQUIRE(::waitpid(pid, &status, 0) == pid);
+    ::close(writer);
+    CHECK(WIFSIGNALED(status));
+    CHECK(WTERMSIG(status) == sig);
+    CHECK(temporaries_in(dir) == 0);
+    CHECK_FALSE(fs::exists(out));
+    CHECK_FALSE(fs::exists(results));
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("CLI: /dev/zero as a description, a rule file or a batch stops at the input limit, exit 1", "[cli][errors][limits]") {
+  const Run d = run_tackle("derive /dev/zero");
+  CHECK(d.code == 1);
+  CHECK(d.err == "/dev/zero: is longer than 16 MiB (expected a description or rule file of at most 16 MiB)\n");
+  const fs::path rules = fs::temp_directory_path() / ("tackle-zero-rules-" + std::to_string(::getpid()));
+  fs::create_directories(rules);
+  fs::create_symlink("/dev/zero", rules / "zero.yaml");
+  const Run r = run_tackle("--rules " + rules.string() + " solve " + examples + "atwood-machine.yaml");
+  CHECK(r.code == 1);
+  CHECK(r.err == (rules / "zero.yaml").string() + ": is longer than 16 MiB (expected a description or rule file of at most 16 MiB)\n");
+  fs::remove_all(rules);
+  const Run b = run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch /dev/zero");
+  CHECK(b.code == 1);
+  CHECK(b.err == "/dev/zero:1: the line is longer than 1 MiB (expected JSON Lines: one object with id, unknown and answer per line)\n");
+}
+
+TEST_CASE("CLI: text from the description reaches Markdown and HTML escaped: no tag of its own", "[cli][sheet]") {
+  const fs::path dir = fs::temp_directory_path() / ("tackle-escape-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string file = (dir / "p.yaml").string();
+  std::ofstream(file) << "title: 'Pulled <script>alert(1)</script>'\n"
+                         "statement: 'A force {F} <img src=x onerror=alert(1)> pulls A; $a<b$ & so on.'\n"
+                         "parameters:\n  F: {value: 10, unit: N}\n  m: {value: 2, unit: kg}\n"
+                         "bodies:\n  A: {mass: m, position: x}\nloads:\n  - {on: A, force: F}\nfind: [ddot(x)]\n";
+  // Markdown readers pass HTML through: entities outside math, \lt inside it.
+  const Run md = run_tackle("sheet --format markdown " + file);
+  REQUIRE(md.code == 0);
+  CHECK(md.out.find("## Problem 1: Pulled &lt;script&gt;alert(1)&lt;/script&gt;\n") != std::string::npos);
+  CHECK(md.out.find("A force 10 N &lt;img src=x onerror=alert(1)&gt; pulls A; $a\\lt b$ &amp; so on.\n") != std::string::npos);
+  CHECK(md.out.find("<script") == std::string::npos);  // the sketch of the mechanism is the only HTML
+  CHECK(md.out.find("<img") == std::string::npos);
+  const Run derived = run_tackle("derive --format markdown " + file);
+  REQUIRE(derived.code == 0);
+  CHECK(derived.out.rfind("# Pulled &lt;script&gt;alert(1)&lt;/script&gt;\n", 0) == 0);
+  // HTML escapes it too (the page's own <script> elements are KaTeX's).
+  const Run html = run_tackle("sheet --format html " + file);
+  REQUIRE(html.code == 0);
+  CHECK(html.out.find("<script>alert") == std::string::npos);
+  CHECK(html.out.find("<img src=x") == std::string::npos);  // KaTeX's own script has "<img "
+  CHECK(html.out.find("A force <span class=\"math\">10\\,\\mathrm{N}</span> &lt;img src=x onerror=alert(1)&gt; pulls A; "
+                      "<span class=\"math\">a&lt;b</span> &amp; so on.") != std::string::npos);
+  CHECK(html.out.find("Pulled &lt;script&gt;alert(1)&lt;/script&gt;") != std::string::npos);
+  // A sweep's SVG plot is titled with it, escaped as well.
+  const fs::path svg = dir / "sweep.svg";
+  const Run sweep = run_tackle("sweep " + file + " --vary F=1:2:3 --plot 'ddot(x)' --svg " + svg.string());
+  REQUIRE(sweep.code == 0);
+  CHECK(slurp(svg).find(">Pulled &lt;script&gt;alert(1)&lt;/script&gt;</text>") != std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("CLI: out of memory is exit 3 with a message, and leaves no temporary file", "[cli][errors][files]") {
+  // Under each address-space limit from 8 to 40 MB, tackle either finishes, or says it ran
+  // out of memory (exit 3) with its output's temporary file removed; or the limit is too
+  // small for the program to start at all (then --version dies too, before any of tackle's
+  // code). A limit between those is an out-of-memory in the middle of the derivation.
+  const fs::path dir = fs::temp_directory_path() / ("tackle-oom-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string out = (dir / "report.txt").string();
+  const Run whole = run_tackle("derive " + examples + "hoist-two-masts-3d.yaml");
+  REQUIRE(whole.code == 0);
+  int out_of_memory = 0;
+  for (int kb = 8 * 1024; kb <= 40 * 1024; kb += 256) {
+    INFO("ulimit -v " << kb);
+    const std::string limit = "ulimit -v " + std::to_string(kb) + "; exec ";
+    const Run r = run_tackle_to("derive " + examples + "hoist-two-masts-3d.yaml -o " + out, "/dev/null", limit);
+    if (r.code > 128) {
+      CHECK(run_tackle_to("--version", "/dev/null", limit).code > 128);
+    } else if (r.code == 3) {
+      CHECK(r.err == "tackle: out of memory\n");
+      CHECK_FALSE(fs::exists(out));
+      ++out_of_memory;
+    } else {
+      CHECK(r.code == 0);
+      CHECK(slurp(out) == whole.out);
+      fs::remove(out);
+    }
+    CHECK(temporaries_in(dir) == 0);
+  }
+  CHECK(out_of_memory > 0);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("CLI: a batch whose outputs are larger than the memory tackle may use is graded whole", "[cli][batch][limits]") {
+  // 100,000 lines that are not JSON: about 29 MB of results and 14 MB of results file, under
+  // a 24 MB address-space limit (tackle itself needs about 11 MB of it): only a batch read,
+  // graded and written a line at a time fits.
+  const fs::path dir = fs::temp_directory_path() / ("tackle-stream-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string batch = (dir / "b.jsonl").string(), out = (dir / "out.jsonl").string(), results = (dir / "r.json").string();
+  {
+    std::ofstream b(batch);
+    for (int i = 1; i <= 100000; ++i) b << "not json " << i << "\n";
+  }
+  const Run r = run_tackle_to("check " + examples + "sample-12.8-sign-board.yaml --batch " + batch + " -o " + out + " --results " +
+                                  results + " --results-format prairielearn",
+                              "/dev/null", "ulimit -v 24576; exec ");
+  REQUIRE(r.code == 0);
+  CHECK(r.err.empty());
+  std::ifstream lines(out);
+  std::size_t n = 0;
+  for (std::string l; std::getline(lines, l);) ++n;
+  CHECK(n == 100000);
+  CHECK(fs::file_size(out) + fs::file_size(results) > 24576 * 1024);
+  const auto j = nlohmann::json::parse(slurp(results));
+  CHECK(j["tests"].size() == 100000);
+  REQUIRE(j["format_errors"].size() == 101);
+  CHECK(j["format_errors"][0] == "line 1: line 1: not a JSON object with id, unknown and answer");
+  CHECK(j["format_errors"][100] == "and 99900 more");
+  fs::remove_all(dir);
 }

@@ -55,13 +55,40 @@ std::string prose(const Step& st, Format f) {
     return s;
   };
   auto plain = [&](const std::string& s) {
-    return f == Format::latex ? dashed(tex_escape(s), " -- ") : f == Format::html ? dashed(html_escape(s), " &ndash; ") : s;
+    return f == Format::latex      ? dashed(tex_escape(s), " -- ")
+           : f == Format::html     ? dashed(html_escape(s), " &ndash; ")
+           : f == Format::markdown ? markdown_text(s)
+                                   : s;
   };
   for (std::size_t at; (at = st.text.find("{}", from)) != std::string::npos && k < st.math.size(); from = at + 2, ++k) {
     out += plain(st.text.substr(from, at - from));
     out += f == Format::text ? to_text(st.math[k]) : f == Format::html ? html_math(to_latex(st.math[k])) : "$" + to_latex(st.math[k]) + "$";
   }
   return out + plain(st.text.substr(from));
+}
+
+std::string markdown_text(const std::string& s) {
+  std::string out;
+  bool math = false;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    if (c == '\\' && i + 1 < s.size() && s[i + 1] == '$') {
+      out += "\\$";  // an escaped dollar opens no math
+      ++i;
+    } else if (c == '$') {
+      math = !math;
+      out += c;
+    } else if (c == '<') {
+      out += math ? "\\lt " : "&lt;";
+    } else if (c == '>') {
+      out += math ? "\\gt " : "&gt;";
+    } else if (c == '&' && !math) {
+      out += "&amp;";
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 std::string heading(const Derivation& d) {

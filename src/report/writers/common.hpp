@@ -21,6 +21,10 @@ namespace tackle::writers {
 /// A step's text with its "{}" placeholders filled from its expressions, in format `f`
 /// (text: as text; LaTeX: escaped prose, $math$; Markdown: $math$; HTML: escaped, KaTeX spans).
 [[nodiscard]] std::string prose(const Step& st, Format f);
+/// Text from the description (a title, a statement) for Markdown, whose readers pass HTML
+/// through: `<`, `>` and `&` as entities outside $math$, `<` and `>` as \lt and \gt inside
+/// it (where an entity would be shown as typed), so that no tag reaches the page.
+[[nodiscard]] std::string markdown_text(const std::string& s);
 /// The title of a derivation, with its phase when it is one of a phased description's.
 [[nodiscard]] std::string heading(const Derivation& d);
 /// The closed forms as boxed equations with their numbers (`solve`'s report).

@@ -15,11 +15,11 @@ namespace {
 
 // A drawn figure as raw HTML (CommonMark passes it through).
 std::string markdown_figure(const Step& st) {
-  return "<figure>\n" + to_svg(*st.figure) + "<figcaption>" + st.text + "</figcaption>\n</figure>\n\n";
+  return "<figure>\n" + to_svg(*st.figure) + "<figcaption>" + markdown_text(st.text) + "</figcaption>\n</figure>\n\n";
 }
 
 std::string markdown_document(const Derivation& d, bool full) {
-  std::string out = "# " + heading(d) + "\n\n";
+  std::string out = "# " + markdown_text(heading(d)) + "\n\n";
   auto eq = [](const Step& st) {
     std::string body = st.equals_constant ? to_latex(st.lhs) + " = \\text{const}"
                                           : to_latex(st.lhs) + " " + tex_relation(st.relation) + " " + to_latex(st.rhs);
@@ -37,7 +37,7 @@ std::string markdown_document(const Derivation& d, bool full) {
       in_list = listed;
       in_table = table;
       switch (st.kind) {
-        case Step::Kind::section: out += "## " + st.text + "\n\n"; break;
+        case Step::Kind::section: out += "## " + markdown_text(st.text) + "\n\n"; break;
         case Step::Kind::text: out += prose(st, Format::markdown) + "\n\n"; break;
         case Step::Kind::bullet: out += "- " + prose(st, Format::markdown) + "\n"; break;
         case Step::Kind::given:
@@ -51,7 +51,7 @@ std::string markdown_document(const Derivation& d, bool full) {
     if (d.sweep_plot) out += "## Sweep\n\n<figure>\n" + sweep_svg(*d.sweep_plot) + "</figure>\n\n";
     if (d.motion_plot) {
       out += "## Motion, integrated numerically\n\n";
-      for (const auto& e : d.motion_events) out += e + "\n\n";
+      for (const auto& e : d.motion_events) out += markdown_text(e) + "\n\n";
       out += "<figure>\n" + sweep_svg(*d.motion_plot) + "</figure>\n\n";
     }
   } else {
@@ -79,7 +79,7 @@ class MarkdownWriter final : public Writer {
       const Derivation& d = *e.derivation;
       std::vector<std::string> asked;
       for (const auto& a : d.answers) asked.push_back("$" + to_latex(a.symbol) + "$");
-      out += "\n## " + d.title + "\n\nFind " + join(asked) + ".\n\n";
+      out += "\n## " + markdown_text(d.title) + "\n\nFind " + join(asked) + ".\n\n";
       for (const auto& a : d.answers) {
         if (a.closed_form) {
           out += "- $" + to_latex(a.symbol) + " = " + to_latex(*a.closed_form) + "$";
@@ -113,8 +113,8 @@ class MarkdownWriter final : public Writer {
       std::vector<std::string> asked;
       for (const auto& a : p.derivation->answers) asked.push_back("$" + a.tex + "$");
       const std::string statement = statement_of(p, false);
-      out += "## Problem " + std::to_string(p.number) + ": " + p.title + "\n\n";
-      if (!statement.empty()) out += statement + "\n\n";
+      out += "## Problem " + std::to_string(p.number) + ": " + markdown_text(p.title) + "\n\n";
+      if (!statement.empty()) out += markdown_text(statement) + "\n\n";
       for (const Step* st : figures_of(*p.derivation, figures)) out += markdown_figure(*st);
       out += "Find " + join(asked) + ".\n\n";
     }

@@ -323,6 +323,54 @@ TEST_CASE("Grading: PrairieLearn's results.json, where an answer that cannot be 
   CHECK(bad["message"] == "1 of 3 answers cannot be graded as typed: fix them and submit again");
 }
 
+TEST_CASE("Grading: PrairieLearn lists the first 100 answers that cannot be graded, then how many more", "[check][batch][platform]") {
+  // The results file is written as the batch goes; only the first 100 format errors are kept.
+  GradeOptions options;
+  options.format = ResultsFormat::prairielearn;
+  std::string lines;
+  for (int i = 1; i <= 150; ++i) lines += "{\"id\": \"s" + std::to_string(i) + "\", \"unknown\": \"T_HI\", \"answer\": \"m*a*\"}\n";
+  const BatchSummary s = grade(lines, options);
+  CHECK(s.invalid == 150);
+  const auto j = nlohmann::json::parse(s.results);
+  same_shape(j, fixture("prairielearn-results.json"), "");
+  CHECK(j["gradable"] == false);
+  CHECK(j["tests"].size() == 150);
+  REQUIRE(j["format_errors"].size() == 101);
+  CHECK(j["format_errors"][99].get<std::string>().rfind("s100: T_HI: ", 0) == 0);
+  CHECK(j["format_errors"][100] == "and 50 more");
+  CHECK(j["message"] == "150 of 150 answers cannot be graded as typed: fix them and submit again");
+}
+
+TEST_CASE("Grading: a line longer than 1 MiB stops the batch at that line; a long line under it is invalid", "[check][batch][limits]") {
+  // Exactly 1 MiB (1048576 bytes) is read, and is an invalid answer (past the checker's bound).
+  GradeOptions options;
+  options.source = "batch.jsonl";
+  const std::string good = "{\"id\": \"a\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/(2*d)\"}\n";
+  BatchSummary s = grade(good + std::string(1048576, 'x') + "\n" + good, options);
+  CHECK(s.lines == 3);
+  CHECK(s.correct == 2);
+  CHECK(s.invalid == 1);
+  // One byte more, even with no newline after it (/dev/zero has none), stops the batch there.
+  try {
+    (void)grade(good + "\n" + std::string(1048577, 'x'), options);
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK(format(e.diagnostics().at(0)) ==
+          "batch.jsonl:3: the line is longer than 1 MiB (expected JSON Lines: one object with id, unknown and answer per line)");
+  }
+}
+
+TEST_CASE("Grading: a batch whose output fails stops reading, and its results file is still whole JSON", "[check][batch]") {
+  std::istringstream in("{\"id\": \"a\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/(2*d)\"}\n");
+  std::ostringstream out, results;
+  out.setstate(std::ios::badbit);  // as a full disk leaves it
+  const BatchSummary s = check_batch(board(), in, out, results, {});
+  CHECK(s.lines == 0);
+  const auto j = nlohmann::json::parse(results.str());
+  CHECK(j["tests"].empty());
+  CHECK(j["output"] == "0 of 0 answers correct");
+}
+
 TEST_CASE("Check: a kinematic answer may use a given acceleration without its coordinate", "[check]") {
   const Checker& k = checker("sample-12.2-pulley-kinematics.yaml");
   CHECK(k.check("ddot(y_A)", "-ddot(y_B)/2").verdict == Verdict::correct);

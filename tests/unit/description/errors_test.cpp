@@ -2,6 +2,9 @@
 // problem in a file is reported at once.
 #include <catch2/catch.hpp>
 
+#include <fstream>
+#include <sstream>
+
 #include "../../support/helpers.hpp"
 
 using tackle::test::errors_of;
@@ -320,4 +323,39 @@ TEST_CASE("Answers: a defined quantity that divides by an unknown equal to zero 
         std::string::npos);
   CHECK(tackle::write(d, tackle::Format::text, true).find("m_eff is not determined: its definition divides by zero (ddot(x_B) = 0 here).") !=
         std::string::npos);
+}
+
+TEST_CASE("Description: LaTeX that reads or writes files is refused in a statement or a tex name, at the command", "[errors][latex]") {
+  const std::string why = " is not allowed (expected LaTeX that reads and writes no files: no \\input, \\include, \\openin, "
+                          "\\write, \\read, \\catcode, \\def, \\usepackage, ^^, ...; see docs/grading.md)";
+  // An environment that writes a file; columns count from the first character after the quote.
+  CHECK(errors_of(with(good, "title: ok\n", "title: ok\nstatement: 'Pulled by $F$; \\begin{filecontents}'\n")) ==
+        Messages{"t.yaml:2:28: \\begin{filecontents} in 'statement'" + why});
+  // In a double-quoted scalar the backslash is written twice; the error is at the first.
+  CHECK(errors_of(with(good, "title: ok\n", "title: ok\nstatement: \"A \\\\immediate\\\\write18{rm x}\"\n")) ==
+        Messages{"t.yaml:2:15: \\immediate in 'statement'" + why});
+  // In a block scalar, on the line where it is.
+  CHECK(errors_of(with(good, "title: ok\n", "title: ok\nstatement: |\n  First line.\n  Then \\openout here.\n")) ==
+        Messages{"t.yaml:4:8: \\openout in 'statement'" + why});
+  CHECK(errors_of(with(good, "F: {value: 130, unit: N}", "F: {value: 130, unit: N, tex: '\\def\\F{x}'}")) ==
+        Messages{"t.yaml:3:34: \\def in 'tex' of parameter 'F'" + why});
+  // < and > would reach Markdown through the math; \lt and \gt say the same.
+  CHECK(errors_of(with(good, "F: {value: 130, unit: N}", "F: {value: 130, unit: N, tex: 'F_{<}'}")) ==
+        Messages{"t.yaml:3:34: 'tex' of parameter 'F' has '<', '>' or a line break (expected one line of LaTeX math; "
+                 "\\lt and \\gt for < and >)"});
+  // What statements use: math, text commands, a line break (\\ is not \input below), \$.
+  CHECK(errors_of(with(good, "title: ok\n",
+                       "title: ok\nstatement: 'A force $F$ on $\\mu_{k}$, \\textbf{half} ($\\tfrac12$) \\\\input \\$5.'\n"))
+            .empty());
+}
+
+TEST_CASE("Description: a title or a phase's name is one line", "[errors][latex]") {
+  // A blank line inside \section*{...} ends the paragraph there and breaks the document.
+  CHECK(errors_of(with(good, "title: ok", "title: \"two\\n\\nlines\"")) ==
+        Messages{"t.yaml:1:9: 'title' has a line break (expected a one-line title)"});
+  std::ifstream in(TACKLE_SOURCE_DIR "/examples/sample-12.5-pile-driver.yaml");
+  std::stringstream pile;
+  pile << in.rdbuf();
+  CHECK(errors_of(with(pile.str(), "  - name: fall", "  - name: \"fall\\n\\nfree\"")) ==
+        Messages{"t.yaml:26:12: 'name' of a phase has a line break (expected one line: it is part of the phase's title)"});
 }
