@@ -98,7 +98,10 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
     const std::string feedback = verdict_name(r.verdict) + ": " + r.summary;
     if (r.verdict == Verdict::invalid) {
       ++s.invalid;
-      format_errors.push_back(name + ": " + r.summary);
+      // A line without an id is named by its place, which its problem already says: once.
+      const std::string place = "line " + std::to_string(s.lines) + ": ";
+      const bool named_by_place = id + ": " == place;
+      format_errors.push_back(name + ": " + (named_by_place && r.summary.rfind(place, 0) == 0 ? r.summary.substr(place.size()) : r.summary));
     }
     const auto own = options.points_for.find(unknown);
     const double max_points = own != options.points_for.end() ? own->second : options.points;
@@ -130,7 +133,9 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
       else results["format_errors"] = format_errors;
       results["message"] = s.invalid == 0 ? said : std::to_string(s.invalid) + " of " + std::to_string(s.lines) +
                                                        " answers cannot be graded as typed: fix them and submit again";
-      results["tests"] = tests;
+      // Not gradable, no attempt charged: the tests would tell which of the other answers are
+      // right, and the student could submit again with only the wrong ones changed.
+      if (s.invalid == 0) results["tests"] = tests;
       break;
     }
     case ResultsFormat::jsonl: {
