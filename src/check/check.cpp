@@ -536,7 +536,7 @@ bool rational_function(const ex& e, const exmap& lengths) {
   return false;
 }
 
-constexpr std::size_t max_kinks = 4;
+constexpr std::size_t max_kinks = 4;  // arguments up to their sign: 16 combinations of signs
 
 }  // namespace
 
@@ -644,17 +644,32 @@ Checker::Decision Checker::decide(const Reference& ref, const ex& answer, const 
   // there; not found (a side no positive values reach, or too narrow a one), undecided.
   const Decision refused{Verdict::undecided, "", "abs",
                          "the answer uses abs(), and tackle could not decide it for every sign of its argument: write it without abs()"};
+  // The kinks' arguments, each once up to its sign (abs(h - l) and abs(l - h) have one kink).
+  std::vector<ex> args;
+  std::vector<std::pair<std::size_t, bool>> arg_of;  // per kink: its argument, and whether negated
   for (const auto& k : kinks) {
     std::vector<ex> inner;
     kinks_of(k.op(0), inner);
-    if (!inner.empty() || kinks.size() > max_kinks) return refused;
+    if (!inner.empty()) return refused;
+    std::size_t j = 0;
+    bool negated = false;
+    for (; j < args.size(); ++j) {
+      if (args[j].is_equal(k.op(0))) break;
+      if ((args[j] + k.op(0)).expand().is_zero()) {
+        negated = true;
+        break;
+      }
+    }
+    if (j == args.size()) args.push_back(k.op(0));
+    arg_of.emplace_back(j, negated);
   }
-  std::vector<std::size_t> differing;  // the signs (bit i set: kink i's argument negative)
+  if (args.size() > max_kinks) return refused;
+  std::vector<std::size_t> differing;  // the signs (bit j set: argument j negative)
   bool all_proved = true, all_exact = true;
-  for (std::size_t signs = 0; signs < (std::size_t{1} << kinks.size()); ++signs) {
+  for (std::size_t signs = 0; signs < (std::size_t{1} << args.size()); ++signs) {
     exmap side;
     for (std::size_t i = 0; i < kinks.size(); ++i) {
-      const bool negative = (signs >> i) & 1;
+      const bool negative = (((signs >> arg_of[i].first) & 1) != 0) != arg_of[i].second;
       const ex& arg = kinks[i].op(0);
       const unsigned serial = ex_to<function>(kinks[i]).get_serial();
       side[kinks[i]] = serial == abs_SERIAL::serial ? (negative ? -arg : arg)
@@ -678,9 +693,9 @@ Checker::Decision Checker::decide(const Reference& ref, const ex& answer, const 
   // 3 * 2^63 times the point's, so both sides of a kink within them are met.
   std::vector<Exact> args_at;
   std::set<ex, ex_is_less> used;
-  for (const auto& k : kinks) {
-    args_at.push_back(program(k.op(0)));
-    for (const auto& s : symbols_in(substituted(k.op(0), lengths_))) used.insert(s);
+  for (const auto& arg : args) {
+    args_at.push_back(program(arg));
+    for (const auto& s : symbols_in(substituted(arg, lengths_))) used.insert(s);
   }
   const Exact answer_at = program(answer);
   for (const Point& base : points_)

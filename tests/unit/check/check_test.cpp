@@ -451,6 +451,13 @@ TEST_CASE("Check: an answer correct only on one side of an abs() kink is incorre
   const CheckResult both = suitcase().check("N_A", n_a + " + m*g*(abs(mu - 1/10) + mu - 1/10)*(abs(mu - 1/10) - mu + 1/10)");
   CHECK(both.verdict == Verdict::correct);
   CHECK(both.echo_text.find("abs(") != std::string::npos);
+  // |l - h| = |h - l| whatever the signs: one kink, not two. Five arguments up to their sign
+  // would be 32 combinations, more than are tried.
+  CHECK(suitcase().check("N_A", n_a + " + m*g*(abs(l - h) - abs(h - l))/l").verdict == Verdict::correct);
+  const std::string three = " + m*g*(abs(mu - 1/3) - abs(1/3 - mu)) + m*g*(abs(l - h) - abs(h - l) + abs(l - 2*h) - abs(2*h - l))/l";
+  CHECK(suitcase().check("N_A", n_a + three + " + m*g*(abs(l - 3*h) - abs(3*h - l))/l").verdict == Verdict::correct);
+  CHECK(suitcase().check("N_A", n_a + three + " + m*g*(abs(l - 3*h) - abs(3*h - l) + abs(l - 4*h) - abs(4*h - l))/l").summary ==
+        "the answer uses abs(), and tackle could not decide it for every sign of its argument: write it without abs()");
   // A side too narrow to find (|mu - 1/10| < 10^-15): undecided, never correct.
   const CheckResult narrow = suitcase().check("N_A", n_a + " + m*g*(abs((mu - 1/10)^2 - 10^(-30)) - ((mu - 1/10)^2 - 10^(-30)))");
   CHECK(narrow.verdict == Verdict::undecided);
