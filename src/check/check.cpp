@@ -536,6 +536,21 @@ bool rational_function(const ex& e, const exmap& lengths) {
   return false;
 }
 
+// (x^2)^(1/2) is |x| and not x: an even power under a fractional one is a kink, and is
+// written as one (|x|^(n r) for (x^n)^r, n even) so that both its sides are looked at.
+struct EvenRootsAsAbs : map_function {
+  ex operator()(const ex& e) override {
+    const ex m = e.map(*this);
+    if (is_exactly<power>(m) && is_exactly<power>(m.op(0)) && is_exactly<numeric>(m.op(1)) &&
+        is_exactly<numeric>(m.op(0).op(1))) {
+      const numeric& r = ex_to<numeric>(m.op(1));
+      const numeric& n = ex_to<numeric>(m.op(0).op(1));
+      if (n.is_even() && r.is_rational() && !r.is_integer()) return pow(abs(m.op(0).op(0)), n * r);
+    }
+    return m;
+  }
+};
+
 constexpr std::size_t max_kinks = 4;  // arguments up to their sign: 16 combinations of signs
 
 }  // namespace
@@ -610,8 +625,10 @@ Checker::Agreement Checker::compare(const ex& answer, const ex& reference, const
   return Agreement::agrees;
 }
 
-Checker::Decision Checker::decide(const Reference& ref, const ex& answer, const std::function<bool()>& over_budget) const {
+Checker::Decision Checker::decide(const Reference& ref, const ex& typed, const std::function<bool()>& over_budget) const {
   FreshPoints fresh(*this, ref);
+  EvenRootsAsAbs as_abs;
+  const ex answer = as_abs(typed);
   const std::string count = std::to_string(points_.size() + static_cast<std::size_t>(options_.points));
   const Decision wrong{Verdict::incorrect, "", "value", "the answer agrees with the correct one only for some values of the parameters"};
   const Decision budget{Verdict::undecided, "", "budget", "the answer took too long to check"};
@@ -644,7 +661,8 @@ Checker::Decision Checker::decide(const Reference& ref, const ex& answer, const 
   // there; not found (a side no positive values reach, or too narrow a one), undecided.
   const Decision refused{Verdict::undecided, "", "abs",
                          "the answer uses abs(), and tackle could not decide it for every sign of its argument: write it without abs()"};
-  // The kinks' arguments, each once up to its sign (abs(h - l) and abs(l - h) have one kink).
+  // The kinks' arguments, each once up to a constant factor (abs(h - l) and abs(l - h), or
+  // abs(mu - 1/10) and abs(10*mu - 1), have one kink).
   std::vector<ex> args;
   std::vector<std::pair<std::size_t, bool>> arg_of;  // per kink: its argument, and whether negated
   for (const auto& k : kinks) {
@@ -655,8 +673,8 @@ Checker::Decision Checker::decide(const Reference& ref, const ex& answer, const 
     bool negated = false;
     for (; j < args.size(); ++j) {
       if (args[j].is_equal(k.op(0))) break;
-      if ((args[j] + k.op(0)).expand().is_zero()) {
-        negated = true;
+      if (const ex ratio = normal(k.op(0) / args[j]); is_exactly<numeric>(ratio) && ex_to<numeric>(ratio).is_real()) {
+        negated = ex_to<numeric>(ratio).is_negative();
         break;
       }
     }

@@ -368,10 +368,12 @@ TEST_CASE("Check: answers as people type them: Unicode, degrees, roots, superscr
   // The incline (examples/incline-and-hanging-block.yaml): N_A = m_A g cos(theta), theta = 30 deg.
   const Checker& c = checker("incline-and-hanging-block.yaml");
   for (const char* a : {"m_A\u00b7g\u00b7cos(\u03b8)", "N_A = m_A\u00d7g\u00d7cos(\u03b8)", "m_A*g*cos(\u03b8)\u00b9",
-                        "\u2212(\u2212m_A*g*cos(theta))", "m_A*g*\u221a(cos(\u03b8)\u00b2)"}) {
+                        "\u2212(\u2212m_A*g*cos(theta))", "m_A*g*\u221a(cos(\u03b8))\u00b2"}) {
     INFO(a);
     CHECK(c.check("N_A", a).verdict == Verdict::correct);
   }
+  // The root of the square is |cos(theta)|, not cos(theta): they differ past 90 degrees.
+  CHECK(c.check("N_A", "m_A*g*\u221a(cos(\u03b8)\u00b2)").verdict == Verdict::incorrect);
   // 30 deg inside an expression is pi/6 (a number: the closed form is in theta).
   const CheckResult deg = c.check("N_A", "m_A*g*cos(30 deg)");
   CHECK(deg.echo_text == "g*m_A*sqrt(3)/2");
@@ -444,6 +446,10 @@ TEST_CASE("Check: an answer correct only on one side of an abs() kink is incorre
   const CheckResult one_side = suitcase().check("N_A", n_a + " + m*g*(abs(mu - 1/10) - (mu - 1/10))");
   CHECK(one_side.verdict == Verdict::incorrect);
   CHECK(one_side.summary == "the answer agrees with the correct one only for some values of the parameters");
+  // sqrt(x^2) is |x|: the same kink.
+  CHECK(suitcase().check("N_A", n_a + " + m*g*(sqrt((mu - 1/10)^2) - (mu - 1/10))").summary ==
+        "the answer agrees with the correct one only for some values of the parameters");
+  CHECK(suitcase().check("N_A", n_a + " + m*g*(((mu - 1/10)^4)^(1/4) - abs(mu - 1/10))").verdict == Verdict::correct);
   // abs() of the correct answer: N_A < 0 once mu h/l > 1/2 (the suitcase would tip), where
   // the two differ.
   CHECK(suitcase().check("N_A", "abs(" + n_a + ")").verdict == Verdict::incorrect);
