@@ -127,6 +127,37 @@ double expanded_size(const ex& e) {
   return 1;
 }
 
+// abs(), csgn() and step(): an expression in them may be correct on one side of a kink (where
+// the argument changes sign) and not on the other, so agreeing near the parameters' values
+// says nothing about the far side.
+bool is_kink(const ex& e) {
+  if (!is_exactly<function>(e)) return false;
+  const unsigned serial = ex_to<function>(e).get_serial();
+  return serial == abs_SERIAL::serial || serial == csgn_SERIAL::serial || serial == step_SERIAL::serial;
+}
+
+// The kinks of `e` (each once, in the order met) added to `out`.
+void kinks_of(const ex& e, std::vector<ex>& out) {
+  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+    if (is_kink(*it) && std::none_of(out.begin(), out.end(), [&](const ex& k) { return k.is_equal(*it); }))
+      out.push_back(*it);
+}
+
+// A rational function of independent symbols with rational coefficients: normal() of one is
+// zero exactly when it is zero everywhere. A turning strand's length is not independent
+// (its square is a polynomial in the others).
+bool rational_function(const ex& e, const exmap& lengths) {
+  if (is_exactly<numeric>(e)) return ex_to<numeric>(e).is_rational();
+  if (is_exactly<symbol>(e)) return !lengths.count(e);
+  if (is_exactly<add>(e) || is_exactly<mul>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i)
+      if (!rational_function(e.op(i), lengths)) return false;
+    return true;
+  }
+  if (is_exactly<power>(e))
+    return is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer() && rational_function(e.op(0), lengths);
+  return false;
+}
 
 // "6.8 N" -> ("6.8", "N"); "6.8" -> ("6.8", ""); nullopt when the text is not a number,
 // optionally followed by something that starts like a unit (a letter).
@@ -202,7 +233,9 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   // References: every determined unknown, and the defined quantities of `find`.
   auto add_reference = [&](const std::string& name, const ex& closed_form, std::optional<Dimension> dim) {
     const ex closed = substituted(closed_form, definitions_);
-    Reference ref{name, closed, program(closed), dim, std::nullopt, {}, to_text(closed_form).size()};
+    Reference ref{name, closed, program(closed), dim, std::nullopt, {}, to_text(closed_form).size(),
+                  {rational_function(closed, lengths_), expanded_size(closed)}, {}};
+    kinks_of(closed, ref.kinks);
     if (auto v = evaluate(closed, *symbols_, dim); v && is_a<numeric>(evalf(v->exact)))
       ref.value = ex_to<numeric>(evalf(v->exact));
     bool ok = true;
@@ -504,50 +537,53 @@ bool Checker::Exact::run(std::size_t& at, const Point& point, Value& out) const 
 
 namespace {
 
-// abs(), csgn() and step(): an expression in them may be correct on one side of a kink (where
-// the argument changes sign) and not on the other, so agreeing near the parameters' values
-// says nothing about the far side.
-bool is_kink(const ex& e) {
-  if (!is_exactly<function>(e)) return false;
-  const unsigned serial = ex_to<function>(e).get_serial();
-  return serial == abs_SERIAL::serial || serial == csgn_SERIAL::serial || serial == step_SERIAL::serial;
-}
-
-// The kinks of `e` (each once, in the order met) added to `out`.
-void kinks_of(const ex& e, std::vector<ex>& out) {
-  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
-    if (is_kink(*it) && std::none_of(out.begin(), out.end(), [&](const ex& k) { return k.is_equal(*it); }))
-      out.push_back(*it);
-}
-
-// A rational function of independent symbols with rational coefficients: normal() of one is
-// zero exactly when it is zero everywhere. A turning strand's length is not independent
-// (its square is a polynomial in the others).
-bool rational_function(const ex& e, const exmap& lengths) {
-  if (is_exactly<numeric>(e)) return ex_to<numeric>(e).is_rational();
-  if (is_exactly<symbol>(e)) return !lengths.count(e);
+// A rational function (rational_function() holds) as a numerator and a denominator,
+// polynomials, made without the gcds normal() takes (most of its time): two are equal
+// exactly when n1 d2 - n2 d1 expands to zero.
+std::pair<ex, ex> as_fraction(const ex& e) {
+  if (is_exactly<numeric>(e)) return {ex_to<numeric>(e).numer(), ex_to<numeric>(e).denom()};
   if (is_exactly<add>(e) || is_exactly<mul>(e)) {
-    for (std::size_t i = 0; i < e.nops(); ++i)
-      if (!rational_function(e.op(i), lengths)) return false;
-    return true;
+    const bool sum = is_exactly<add>(e);
+    ex n = sum ? 0 : 1, d = 1;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      const auto [ni, di] = as_fraction(e.op(i));
+      if (sum && di.is_equal(d)) {
+        n = n + ni;
+      } else {
+        n = sum ? n * di + ni * d : n * ni;
+        d = d * di;
+      }
+    }
+    return {n, d};
   }
-  if (is_exactly<power>(e))
-    return is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer() && rational_function(e.op(0), lengths);
-  return false;
+  if (is_exactly<power>(e)) {
+    const auto [n, d] = as_fraction(e.op(0));
+    const numeric& k = ex_to<numeric>(e.op(1));
+    return k.is_negative() ? std::pair<ex, ex>{pow(d, -k), pow(n, -k)} : std::pair<ex, ex>{pow(n, k), pow(d, k)};
+  }
+  return {e, 1};
 }
 
 // (x^2)^(1/2) is |x| and not x: an even power under a fractional one is a kink, and is
 // written as one (|x|^(n r) for (x^n)^r, n even) so that both its sides are looked at.
 struct EvenRootsAsAbs : map_function {
+  static bool even_root(const ex& e) {
+    if (!is_exactly<power>(e) || !is_exactly<power>(e.op(0)) || !is_exactly<numeric>(e.op(1)) ||
+        !is_exactly<numeric>(e.op(0).op(1)))
+      return false;
+    const numeric& r = ex_to<numeric>(e.op(1));
+    return ex_to<numeric>(e.op(0).op(1)).is_even() && r.is_rational() && !r.is_integer();
+  }
   ex operator()(const ex& e) override {
     const ex m = e.map(*this);
-    if (is_exactly<power>(m) && is_exactly<power>(m.op(0)) && is_exactly<numeric>(m.op(1)) &&
-        is_exactly<numeric>(m.op(0).op(1))) {
-      const numeric& r = ex_to<numeric>(m.op(1));
-      const numeric& n = ex_to<numeric>(m.op(0).op(1));
-      if (n.is_even() && r.is_rational() && !r.is_integer()) return pow(abs(m.op(0).op(0)), n * r);
-    }
+    if (even_root(m)) return pow(abs(m.op(0).op(0)), ex_to<numeric>(m.op(0).op(1)) * ex_to<numeric>(m.op(1)));
     return m;
+  }
+  // `e` with its even roots as abs(); `e` itself (not rebuilt) when it has none.
+  ex rewrite(const ex& e) {
+    for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+      if (even_root(*it)) return (*this)(e);
+    return e;
   }
 };
 
@@ -597,17 +633,26 @@ const std::vector<Checker::Point>& Checker::FreshPoints::get() {
   return *points_;
 }
 
-Checker::Agreement Checker::compare(const ex& answer, const ex& reference, const Exact& reference_at, FreshPoints& fresh,
-                                    const std::function<bool()>& over_budget, bool& exact_values) const {
+Checker::Agreement Checker::compare(const ex& answer, const ex& reference, const Exact& reference_at, const Shape& shape,
+                                    FreshPoints& fresh, const std::function<bool()>& over_budget, bool& exact_values) const {
   exact_values = false;
   if (answer.is_equal(reference)) return Agreement::proved;  // the closed form as GiNaC writes it
-  const bool rational = rational_function(answer, lengths_) && rational_function(reference, lengths_);
-  if (expanded_size(answer) + expanded_size(reference) <= static_cast<double>(options_.exact_size_budget) && !over_budget()) {
+  const double budget = static_cast<double>(options_.exact_size_budget);
+  const double size = expanded_size(answer) + shape.size;
+  if (shape.rational && rational_function(answer, lengths_)) {
+    // Equal as rational functions or not: certain either way. Most equal answers expand to
+    // the closed form's own terms over the same denominators; the others are put over one.
+    if (size <= budget && (answer - reference).expand().is_zero()) return Agreement::proved;
+    const auto [n1, d1] = as_fraction(answer);
+    const auto [n2, d2] = as_fraction(reference);
+    const ex cross = n1 * d2 - n2 * d1;
+    if (expanded_size(cross) <= budget && !over_budget())
+      return cross.expand().is_zero() ? Agreement::proved : Agreement::refuted;
+  } else if (size <= budget && !over_budget()) {
+    // Zero is a proof; not zero may still be zero by an identity normal() does not know
+    // (sin^2 + cos^2 = 1).
     try {
       if (normal(answer - reference).is_zero()) return Agreement::proved;
-      // Not zero: certain for a rational function; anything else may still be zero by an
-      // identity normal() does not know (sin^2 + cos^2 = 1).
-      if (rational) return Agreement::refuted;
     } catch (const std::exception&) {
     }
   }
@@ -628,7 +673,7 @@ Checker::Agreement Checker::compare(const ex& answer, const ex& reference, const
 Checker::Decision Checker::decide(const Reference& ref, const ex& typed, const std::function<bool()>& over_budget) const {
   FreshPoints fresh(*this, ref);
   EvenRootsAsAbs as_abs;
-  const ex answer = as_abs(typed);
+  const ex answer = as_abs.rewrite(typed);
   const std::string count = std::to_string(points_.size() + static_cast<std::size_t>(options_.points));
   const Decision wrong{Verdict::incorrect, "", "value", "the answer agrees with the correct one only for some values of the parameters"};
   const Decision budget{Verdict::undecided, "", "budget", "the answer took too long to check"};
@@ -641,10 +686,11 @@ Checker::Decision Checker::decide(const Reference& ref, const ex& typed, const s
   };
   std::vector<ex> kinks;
   kinks_of(answer, kinks);
-  kinks_of(ref.closed_form, kinks);
+  for (const auto& k : ref.kinks)
+    if (std::none_of(kinks.begin(), kinks.end(), [&](const ex& x) { return x.is_equal(k); })) kinks.push_back(k);
   if (kinks.empty()) {
     bool exact_values = false;
-    switch (compare(answer, ref.closed_form, ref.program, fresh, over_budget, exact_values)) {
+    switch (compare(answer, ref.closed_form, ref.program, ref.shape, fresh, over_budget, exact_values)) {
       case Agreement::proved: return correct(true, false);
       case Agreement::agrees: return correct(false, exact_values);
       case Agreement::refuted: return Decision{wrong.verdict, "exact", wrong.code, wrong.message};
@@ -696,7 +742,7 @@ Checker::Decision Checker::decide(const Reference& ref, const ex& typed, const s
     }
     const ex a = answer.subs(side), b = ref.closed_form.subs(side);
     bool exact_values = false;
-    switch (compare(a, b, program(b), fresh, over_budget, exact_values)) {
+    switch (compare(a, b, program(b), Shape{rational_function(b, lengths_), expanded_size(b)}, fresh, over_budget, exact_values)) {
       case Agreement::proved: break;
       case Agreement::agrees:
         all_proved = false;

@@ -119,6 +119,11 @@ class Checker {
     void emit(const GiNaC::ex& e, const Point& layout, const GiNaC::exmap& definitions, int depth);
     bool run(std::size_t& at, const Point& point, Value& out) const;
   };
+  // What deciding an equality with an expression needs to know of it.
+  struct Shape {
+    bool rational = false;  // a rational function of independent symbols
+    double size = 0;        // an upper bound on its expansion's terms
+  };
   struct Reference {
     std::string name;
     GiNaC::ex closed_form;
@@ -127,6 +132,8 @@ class Checker {
     std::optional<GiNaC::numeric> value;     // SI, when every parameter has a value
     std::vector<GiNaC::numeric> at_points;   // the closed form at each random point
     std::size_t text_size = 0;               // length of its printed closed form
+    Shape shape;
+    std::vector<GiNaC::ex> kinks;            // its abs() and csgn()
   };
   struct Parameter {
     std::string name;
@@ -167,7 +174,7 @@ class Checker {
   /// for abs(), on each side of every kink).
   [[nodiscard]] Decision decide(const Reference& ref, const GiNaC::ex& answer, const std::function<bool()>& over_budget) const;
   [[nodiscard]] Agreement compare(const GiNaC::ex& answer, const GiNaC::ex& reference, const Exact& reference_at,
-                                  FreshPoints& fresh, const std::function<bool()>& over_budget, bool& exact_values) const;
+                                  const Shape& shape, FreshPoints& fresh, const std::function<bool()>& over_budget, bool& exact_values) const;
   /// A point near the parameters' values drawn from `rng`, finer than the fixed points.
   [[nodiscard]] Point draw_point(std::mt19937& rng) const;
   /// `e` made into code for the points, every defined parameter put in (the turning strands'
