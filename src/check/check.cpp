@@ -143,9 +143,10 @@ void kinks_of(const ex& e, std::vector<ex>& out) {
       out.push_back(*it);
 }
 
-// A rational function of independent symbols with rational coefficients: normal() of one is
-// zero exactly when it is zero everywhere. A turning strand's length is not independent
-// (its square is a polynomial in the others).
+// A rational function of independent symbols with rational coefficients: one is zero exactly
+// when its numerator over a common denominator expands to zero (as_fraction()), so equality
+// with one is decided without any point. A turning strand's length is not independent (its
+// square is a polynomial in the others).
 bool rational_function(const ex& e, const exmap& lengths) {
   if (is_exactly<numeric>(e)) return ex_to<numeric>(e).is_rational();
   if (is_exactly<symbol>(e)) return !lengths.count(e);
@@ -234,7 +235,9 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   auto add_reference = [&](const std::string& name, const ex& closed_form, std::optional<Dimension> dim) {
     const ex closed = substituted(closed_form, definitions_);
     Reference ref{name, closed, program(closed), dim, std::nullopt, {}, to_text(closed_form).size(),
-                  {rational_function(closed, lengths_), expanded_size(closed)}, {}};
+                  {rational_function(closed, lengths_), expanded_size(closed), std::nullopt}, {}};
+    if (ref.shape.rational && ref.shape.size <= static_cast<double>(options_.exact_size_budget))
+      ref.shape.expanded = closed.expand();
     kinks_of(closed, ref.kinks);
     if (auto v = evaluate(closed, *symbols_, dim); v && is_a<numeric>(evalf(v->exact)))
       ref.value = ex_to<numeric>(evalf(v->exact));
@@ -642,7 +645,8 @@ Checker::Agreement Checker::compare(const ex& answer, const ex& reference, const
   if (shape.rational && rational_function(answer, lengths_)) {
     // Equal as rational functions or not: certain either way. Most equal answers expand to
     // the closed form's own terms over the same denominators; the others are put over one.
-    if (size <= budget && (answer - reference).expand().is_zero()) return Agreement::proved;
+    if (size <= budget && (answer.expand() - (shape.expanded ? *shape.expanded : reference.expand())).is_zero())
+      return Agreement::proved;
     const auto [n1, d1] = as_fraction(answer);
     const auto [n2, d2] = as_fraction(reference);
     const ex cross = n1 * d2 - n2 * d1;
@@ -742,7 +746,7 @@ Checker::Decision Checker::decide(const Reference& ref, const ex& typed, const s
     }
     const ex a = answer.subs(side), b = ref.closed_form.subs(side);
     bool exact_values = false;
-    switch (compare(a, b, program(b), Shape{rational_function(b, lengths_), expanded_size(b)}, fresh, over_budget, exact_values)) {
+    switch (compare(a, b, program(b), Shape{rational_function(b, lengths_), expanded_size(b), std::nullopt}, fresh, over_budget, exact_values)) {
       case Agreement::proved: break;
       case Agreement::agrees:
         all_proved = false;

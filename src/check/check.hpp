@@ -123,6 +123,7 @@ class Checker {
   struct Shape {
     bool rational = false;  // a rational function of independent symbols
     double size = 0;        // an upper bound on its expansion's terms
+    std::optional<GiNaC::ex> expanded;  // a rational one's expansion, made once
   };
   struct Reference {
     std::string name;
