@@ -662,7 +662,8 @@ Checker::Agreement Checker::compare(const ex& answer, const ex& reference, const
   }
   const Exact answer_at = program(answer);
   const auto& points = fresh.get();
-  if (points.size() < static_cast<std::size_t>(options_.points)) return Agreement::unevaluable;
+  // (No points, or fewer than asked where the reference is defined: nothing to go on.)
+  if (points.empty() || points.size() < static_cast<std::size_t>(options_.points)) return Agreement::unevaluable;
   exact_values = true;
   for (const Point& p : points) {
     if (over_budget()) return Agreement::budget;

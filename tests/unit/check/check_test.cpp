@@ -481,6 +481,14 @@ TEST_CASE("Check: the points a numeric verdict rests on are drawn for each check
     CHECK(r.method == "numeric");
     CHECK(r.summary == "equal to the closed form at 8 random points, to 32 digits");
   }
+  // With no points to draw (a library caller's choice), an answer only points could decide
+  // is never correct; a rational one is still proved.
+  CheckOptions none;
+  none.points = 0;
+  const Checker pointless(*a, none);
+  CHECK(pointless.check("N_A", "g*m_A*sin(theta + pi/2)").verdict == Verdict::undecided);
+  const auto pulley = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.3-two-mass-pulley.yaml", test::rules());
+  CHECK(Checker(*pulley, none).check("T", "F*m_B/(4.5*m_A + 2*m_B)").summary == "equal to the closed form");
   // Without a seed: unpredictable points, the same verdict.
   const Checker unseeded(*a);
   CHECK(unseeded.check("N_A", "g*m_A*sin(theta + pi/2)").verdict == Verdict::correct);
