@@ -1,10 +1,13 @@
 #include "check/batch.hpp"
 
+#include <cstdio>
+#include <memory>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "core/diagnostics.hpp"
+#include "core/files.hpp"
 #include "core/limits.hpp"
 
 namespace tackle {
@@ -80,7 +83,17 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
   // The results file is written as the lines are graded; its totals come last (JSON does
   // not order the fields of an object).
   const bool platform = options.format != ResultsFormat::jsonl;
-  if (platform) results << "{\n  \"tests\": [";
+  // PrairieLearn's tests wait in a temporary file (memory stays bounded): a result that is
+  // not gradable must not tell which of the other answers were right, and that is known only
+  // at the end.
+  const bool spooled = options.format == ResultsFormat::prairielearn;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> spool(spooled ? std::tmpfile() : nullptr, &std::fclose);
+  if (spooled && !spool) throw InternalError("cannot make a temporary file for the PrairieLearn tests");
+  std::unique_ptr<FdBuffer> spool_buffer(spooled ? new FdBuffer(fileno(spool.get())) : nullptr);
+  std::ostream spool_stream(spool_buffer.get());
+  std::ostream& tests = spooled ? spool_stream : results;
+  if (platform) results << "{\n";
+  if (platform && !spooled) results << "  \"tests\": [";
   std::vector<std::string> format_errors;  // the first max_format_errors
   std::string line;
   std::size_t physical = 0;  // the line's number in the file, blank lines counted
@@ -137,7 +150,11 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
     const std::string feedback = verdict_name(r.verdict) + ": " + r.summary;
     if (r.verdict == Verdict::invalid) {
       ++s.invalid;
-      if (format_errors.size() < max_format_errors) format_errors.push_back(name + ": " + r.summary);
+      // A line without an id is named by its place, which its problem already says: once.
+      const std::string place = "line " + std::to_string(s.lines) + ": ";
+      const bool named_by_place = id + ": " == place;
+      if (format_errors.size() < max_format_errors)
+        format_errors.push_back(name + ": " + (named_by_place && r.summary.rfind(place, 0) == 0 ? r.summary.substr(place.size()) : r.summary));
     }
     const auto own = options.points_for.find(unknown);
     const double max_points = own != options.points_for.end() ? own->second : options.points;
@@ -147,15 +164,24 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
     const std::string result = dump(to_json(r, answer, id));
     out << result << "\n";
     if (options.format == ResultsFormat::jsonl) results << result << "\n";
-    if (platform) results << (s.lines == 1 ? "\n    " : ",\n    ");
+    if (platform) tests << (s.lines == 1 ? "\n    " : ",\n    ");
     if (options.format == ResultsFormat::gradescope)
-      results << dump({{"name", name}, {"score", points}, {"max_score", max_points},
+      tests << dump({{"name", name}, {"score", points}, {"max_score", max_points},
                        {"status", r.verdict == Verdict::correct ? "passed" : "failed"}, {"output", feedback}, {"visibility", "visible"}});
     if (options.format == ResultsFormat::prairielearn)
-      results << dump({{"name", name}, {"points", points}, {"max_points", max_points}, {"message", feedback}});
+      tests << dump({{"name", name}, {"points", points}, {"max_points", max_points}, {"message", feedback}});
   }
   if (!platform) return s;
-  results << (s.lines == 0 ? "],\n" : "\n  ],\n");
+  if (spooled && s.invalid == 0) {
+    // Gradable: the tests, copied from the temporary file.
+    tests.flush();
+    if (spool_buffer->error() != 0 || std::fseek(spool.get(), 0, SEEK_SET) != 0)
+      throw InternalError("cannot read back the temporary file of the PrairieLearn tests");
+    results << "  \"tests\": [";
+    char chunk[1 << 16];
+    for (std::size_t n; (n = std::fread(chunk, 1, sizeof chunk, spool.get())) > 0;) results.write(chunk, static_cast<std::streamsize>(n));
+  }
+  if (!spooled || s.invalid == 0) results << (s.lines == 0 ? "],\n" : "\n  ],\n");
   const std::string said = std::to_string(s.correct) + " of " + std::to_string(s.lines) + " answers correct";
   J totals;
   if (options.format == ResultsFormat::gradescope) {

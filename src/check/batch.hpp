@@ -18,7 +18,7 @@ namespace tackle {
 /// - prairielearn: PrairieLearn's external grader results.json: `gradable`, `score` (0-1),
 ///   `message`, `tests` (`name`, `points`, `max_points`, `message`); a submission with an answer
 ///   that cannot be graded as typed is `gradable: false` with `format_errors` (no attempt is
-///   charged) and no score.
+///   charged), and no score or tests (which would tell which other answers are right).
 /// - jsonl: the per-line results again.
 enum class ResultsFormat { gradescope, prairielearn, jsonl };
 

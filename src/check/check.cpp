@@ -59,7 +59,8 @@ class AnswerNames : public NameResolver {
   explicit AnswerNames(const std::map<std::string, ex, std::less<>>& names) : names_(names) {}
   std::optional<ex> resolve(std::string_view name) const override {
     if (auto it = names_.find(name); it != names_.end()) return it->second;
-    missing_.emplace_back(name);
+    // (The parser reads pi itself when the problem has no name pi: not a missing name.)
+    if (name != "pi") missing_.emplace_back(name);
     return std::nullopt;
   }
   std::vector<std::string> known_names() const override {
@@ -126,6 +127,38 @@ double expanded_size(const ex& e) {
   return 1;
 }
 
+// abs(), csgn() and step(): an expression in them may be correct on one side of a kink (where
+// the argument changes sign) and not on the other, so agreeing near the parameters' values
+// says nothing about the far side.
+bool is_kink(const ex& e) {
+  if (!is_exactly<function>(e)) return false;
+  const unsigned serial = ex_to<function>(e).get_serial();
+  return serial == abs_SERIAL::serial || serial == csgn_SERIAL::serial || serial == step_SERIAL::serial;
+}
+
+// The kinks of `e` (each once, in the order met) added to `out`.
+void kinks_of(const ex& e, std::vector<ex>& out) {
+  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+    if (is_kink(*it) && std::none_of(out.begin(), out.end(), [&](const ex& k) { return k.is_equal(*it); }))
+      out.push_back(*it);
+}
+
+// A rational function of independent symbols with rational coefficients: one is zero exactly
+// when its numerator over a common denominator expands to zero (as_fraction()), so equality
+// with one is decided without any point. A turning strand's length is not independent (its
+// square is a polynomial in the others).
+bool rational_function(const ex& e, const exmap& lengths) {
+  if (is_exactly<numeric>(e)) return ex_to<numeric>(e).is_rational();
+  if (is_exactly<symbol>(e)) return !lengths.count(e);
+  if (is_exactly<add>(e) || is_exactly<mul>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i)
+      if (!rational_function(e.op(i), lengths)) return false;
+    return true;
+  }
+  if (is_exactly<power>(e))
+    return is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer() && rational_function(e.op(0), lengths);
+  return false;
+}
 
 // "6.8 N" -> ("6.8", "N"); "6.8" -> ("6.8", ""); nullopt when the text is not a number,
 // optionally followed by something that starts like a unit (a letter).
@@ -174,30 +207,38 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   for (const auto& p : parameters_) answer_names_.emplace(p.name, p.symbol);
   definitions_ = symbols_->definitions();
   lengths_ = symbols_->definitions(true);
-  // Random points: exact positive rationals near each parameter's value (between half and
-  // twice it), or in [1, 10] when it has none. A fixed seed keeps verdicts reproducible.
+  // Fixed random points: exact positive rationals near each parameter's value (between half
+  // and twice it), or in [1, 10] when it has none. A fixed seed keeps the first comparison
+  // (which settles every answer that differs at one of them) and the diagnoses the same in
+  // every run; since anyone can find these points, an answer that agrees at all of them is
+  // decided by decide(), never by them.
   std::mt19937 rng(12);
   std::uniform_int_distribution<int> spread(500, 2000), whole(10, 100);
+  for (const auto& p : parameters_) {
+    const SymbolInfo* s = symbols_->find(p.symbol);
+    if (s->definition) continue;  // follows from the others
+    if (s->value && is_a<numeric>(*s->value) && !s->value->is_zero() && ex_to<numeric>(*s->value).is_rational())
+      bases_.emplace_back(p.symbol, ex_to<numeric>(*s->value));
+    else if (const ex f = s->value ? evalf(*s->value) : ex(0); is_a<numeric>(f) && !f.is_zero())
+      // An irrational value (pi/6 for 30 deg): a rational near it.
+      bases_.emplace_back(p.symbol, numeric(std::llround(ex_to<numeric>(f).to_double() * 1e6), 1000000));
+    else
+      bases_.emplace_back(p.symbol, std::nullopt);
+  }
   for (int k = 0; k < options_.points; ++k) {
     Point point;
-    for (const auto& p : parameters_) {
-      const SymbolInfo* s = symbols_->find(p.symbol);
-      if (s->definition) continue;  // follows from the others
-      if (s->value && is_a<numeric>(*s->value) && !s->value->is_zero() && ex_to<numeric>(*s->value).is_rational())
-        point.emplace_back(p.symbol, ex_to<numeric>(*s->value) * numeric(spread(rng), 1000));
-      else if (const ex f = s->value ? evalf(*s->value) : ex(0); is_a<numeric>(f) && !f.is_zero())
-        // An irrational value (pi/6 for 30 deg): a rational near it, spread the same way.
-        point.emplace_back(p.symbol, numeric(std::llround(ex_to<numeric>(f).to_double() * 1e6), 1000000) *
-                                         numeric(spread(rng), 1000));
-      else
-        point.emplace_back(p.symbol, numeric(whole(rng), 10) + numeric(1, 7 + k));
-    }
+    for (const auto& [symbol, base] : bases_)
+      point.emplace_back(symbol, base ? *base * numeric(spread(rng), 1000) : numeric(whole(rng), 10) + numeric(1, 7 + k));
     points_.push_back(point);
   }
   // References: every determined unknown, and the defined quantities of `find`.
   auto add_reference = [&](const std::string& name, const ex& closed_form, std::optional<Dimension> dim) {
     const ex closed = substituted(closed_form, definitions_);
-    Reference ref{name, closed, program(closed), dim, std::nullopt, {}, to_text(closed_form).size()};
+    Reference ref{name, closed, program(closed), dim, std::nullopt, {}, to_text(closed_form).size(),
+                  {rational_function(closed, lengths_), expanded_size(closed), std::nullopt}, {}};
+    if (ref.shape.rational && ref.shape.size <= static_cast<double>(options_.exact_size_budget))
+      ref.shape.expanded = closed.expand();
+    kinks_of(closed, ref.kinks);
     if (auto v = evaluate(closed, *symbols_, dim); v && is_a<numeric>(evalf(v->exact)))
       ref.value = ex_to<numeric>(evalf(v->exact));
     bool ok = true;
@@ -261,6 +302,15 @@ void Checker::Exact::emit(const ex& e, const Point& layout, const exmap& definit
   if (is_exactly<numeric>(e)) {
     if (const auto v = real_of(ex_to<numeric>(e))) nodes_.push_back({Op::number, *v});
     else nodes_.push_back({Op::nothing, 0});
+    return;
+  }
+  if (is_exactly<constant>(e)) {  // pi in an answer: a float at the current Digits
+    if (const ex v = evalf(e); is_exactly<numeric>(v))
+      if (const auto r = real_of(ex_to<numeric>(v))) {
+        nodes_.push_back({Op::number, *r});
+        return;
+      }
+    nodes_.push_back({Op::nothing, 0});
     return;
   }
   if (is_exactly<symbol>(e)) {
@@ -463,6 +513,19 @@ bool Checker::Exact::run(std::size_t& at, const Point& point, Value& out) const 
     case Op::function: {
       Value a;
       if (!run(at, point, a)) return false;
+      // abs and csgn of a value: exact, and for any size (10^-30 in an argument is not too
+      // large to take a sign of).
+      if (node.serial == abs_SERIAL::serial || node.serial == csgn_SERIAL::serial) {
+        const bool negative = a.exact ? cln::minusp(a.n) : cln::minusp(a.f);
+        if (node.serial == csgn_SERIAL::serial) {
+          out.set(cln::cl_I(negative ? -1 : (a.exact ? cln::zerop(a.n) : cln::zerop(a.f)) ? 0 : 1));
+        } else {
+          out = a;
+          if (negative && out.exact) out.n = -out.n;
+          if (negative && !out.exact) out.f = -out.f;
+        }
+        return true;
+      }
       const cln::cl_R arg = a.real();
       if (bits_of(arg) > 62) return false;  // sin(10^30) says nothing; exp of it is huge
       if (node.serial == exp_SERIAL::serial && std::fabs(cln::double_approx(arg)) > 5000) return false;
@@ -475,6 +538,260 @@ bool Checker::Exact::run(std::size_t& at, const Point& point, Value& out) const 
     }
   }
   return false;
+}
+
+namespace {
+
+// A rational function (rational_function() holds) as a numerator and a denominator,
+// polynomials, made without the gcds normal() takes (most of its time): two are equal
+// exactly when n1 d2 - n2 d1 expands to zero.
+std::pair<ex, ex> as_fraction(const ex& e) {
+  if (is_exactly<numeric>(e)) return {ex_to<numeric>(e).numer(), ex_to<numeric>(e).denom()};
+  if (is_exactly<add>(e) || is_exactly<mul>(e)) {
+    const bool sum = is_exactly<add>(e);
+    ex n = sum ? 0 : 1, d = 1;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+      const auto [ni, di] = as_fraction(e.op(i));
+      if (sum && di.is_equal(d)) {
+        n = n + ni;
+      } else {
+        n = sum ? n * di + ni * d : n * ni;
+        d = d * di;
+      }
+    }
+    return {n, d};
+  }
+  if (is_exactly<power>(e)) {
+    const auto [n, d] = as_fraction(e.op(0));
+    const numeric& k = ex_to<numeric>(e.op(1));
+    return k.is_negative() ? std::pair<ex, ex>{pow(d, -k), pow(n, -k)} : std::pair<ex, ex>{pow(n, k), pow(d, k)};
+  }
+  return {e, 1};
+}
+
+// (x^2)^(1/2) is |x| and not x: an even power under a fractional one is a kink, and is
+// written as one (|x|^(n r) for (x^n)^r, n even) so that both its sides are looked at.
+struct EvenRootsAsAbs : map_function {
+  static bool even_root(const ex& e) {
+    if (!is_exactly<power>(e) || !is_exactly<power>(e.op(0)) || !is_exactly<numeric>(e.op(1)) ||
+        !is_exactly<numeric>(e.op(0).op(1)))
+      return false;
+    const numeric& r = ex_to<numeric>(e.op(1));
+    return ex_to<numeric>(e.op(0).op(1)).is_even() && r.is_rational() && !r.is_integer();
+  }
+  ex operator()(const ex& e) override {
+    const ex m = e.map(*this);
+    if (even_root(m)) return pow(abs(m.op(0).op(0)), ex_to<numeric>(m.op(0).op(1)) * ex_to<numeric>(m.op(1)));
+    return m;
+  }
+  // `e` with its even roots as abs(); `e` itself (not rebuilt) when it has none.
+  ex rewrite(const ex& e) {
+    for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
+      if (even_root(*it)) return (*this)(e);
+    return e;
+  }
+};
+
+constexpr std::size_t max_kinks = 4;  // arguments up to their sign: 16 combinations of signs
+
+}  // namespace
+
+Checker::Point Checker::draw_point(std::mt19937& rng) const {
+  // Finer than the fixed points (1.5 million values between half and twice each value): an
+  // answer built to vanish at some values meets one of them by a chance of its degree over
+  // that.
+  std::uniform_int_distribution<long> spread(500000, 2000000), whole(1000000, 10000000);
+  Point p;
+  for (const auto& [symbol, base] : bases_)
+    p.emplace_back(symbol, base ? *base * numeric(spread(rng), 1000000) : numeric(whole(rng), 1000000));
+  return p;
+}
+
+const std::vector<Checker::Point>& Checker::FreshPoints::get() {
+  if (points_) return *points_;
+  points_.emplace();
+  std::mt19937 rng;
+  if (checker_.options_.seed) {
+    const std::uint64_t seed = *checker_.options_.seed;
+    std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)};
+    rng.seed(seq);
+  } else {
+    try {
+      std::random_device device;
+      std::seed_seq seq{device(), device(), device(), device()};
+      rng.seed(seq);
+    } catch (const std::exception&) {  // no entropy source: the clock, still not the student's to know
+      const auto now = static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count());
+      std::seed_seq seq{static_cast<std::uint32_t>(now), static_cast<std::uint32_t>(now >> 32)};
+      rng.seed(seq);
+    }
+  }
+  // Where the reference is defined (a point on a pole is drawn again).
+  for (int k = 0; k < checker_.options_.points; ++k)
+    for (int attempt = 0; attempt < 16; ++attempt) {
+      Point p = checker_.draw_point(rng);
+      if (ref_.program(p)) {
+        points_->push_back(std::move(p));
+        break;
+      }
+    }
+  return *points_;
+}
+
+Checker::Agreement Checker::compare(const ex& answer, const ex& reference, const Exact& reference_at, const Shape& shape,
+                                    FreshPoints& fresh, const std::function<bool()>& over_budget, bool& exact_values) const {
+  exact_values = false;
+  if (answer.is_equal(reference)) return Agreement::proved;  // the closed form as GiNaC writes it
+  const double budget = static_cast<double>(options_.exact_size_budget);
+  const double size = expanded_size(answer) + shape.size;
+  if (shape.rational && rational_function(answer, lengths_)) {
+    // Equal as rational functions or not: certain either way. Most equal answers expand to
+    // the closed form's own terms over the same denominators; the others are put over one.
+    if (size <= budget && (answer.expand() - (shape.expanded ? *shape.expanded : reference.expand())).is_zero())
+      return Agreement::proved;
+    const auto [n1, d1] = as_fraction(answer);
+    const auto [n2, d2] = as_fraction(reference);
+    const ex cross = n1 * d2 - n2 * d1;
+    if (expanded_size(cross) <= budget && !over_budget())
+      return cross.expand().is_zero() ? Agreement::proved : Agreement::refuted;
+  } else if (size <= budget && !over_budget()) {
+    // Zero is a proof; not zero may still be zero by an identity normal() does not know
+    // (sin^2 + cos^2 = 1).
+    try {
+      if (normal(answer - reference).is_zero()) return Agreement::proved;
+    } catch (const std::bad_alloc&) {
+      throw;  // out of memory is the process's (exit 3), not this answer's
+    } catch (const std::exception&) {
+    }
+  }
+  const Exact answer_at = program(answer);
+  const auto& points = fresh.get();
+  // (No points, or fewer than asked where the reference is defined: nothing to go on.)
+  if (points.empty() || points.size() < static_cast<std::size_t>(options_.points)) return Agreement::unevaluable;
+  exact_values = true;
+  for (const Point& p : points) {
+    if (over_budget()) return Agreement::budget;
+    const auto a = answer_at(p), b = reference_at(p);
+    if (!a || !b) return Agreement::unevaluable;
+    if (!same(*a, *b)) return Agreement::differs;
+    exact_values = exact_values && a->is_rational() && b->is_rational();
+  }
+  return Agreement::agrees;
+}
+
+Checker::Decision Checker::decide(const Reference& ref, const ex& typed, const std::function<bool()>& over_budget) const {
+  FreshPoints fresh(*this, ref);
+  EvenRootsAsAbs as_abs;
+  const ex answer = as_abs.rewrite(typed);
+  const std::string count = std::to_string(points_.size() + static_cast<std::size_t>(options_.points));
+  const Decision wrong{Verdict::incorrect, "", "value", "the answer agrees with the correct one only for some values of the parameters"};
+  const Decision budget{Verdict::undecided, "", "budget", "the answer took too long to check"};
+  const auto correct = [&](bool proved, bool exact_values) {
+    if (proved) return Decision{Verdict::correct, "exact", "", "equal to the closed form"};
+    if (exact_values)
+      return Decision{Verdict::correct, "exact rationals", "", "equal to the closed form (in exact arithmetic at " + count + " random points)"};
+    return Decision{Verdict::correct, "numeric", "", "equal to the closed form at " + count + " random points, to " +
+                                                         std::to_string(options_.digits - 8) + " digits"};
+  };
+  std::vector<ex> kinks;
+  kinks_of(answer, kinks);
+  for (const auto& k : ref.kinks)
+    if (std::none_of(kinks.begin(), kinks.end(), [&](const ex& x) { return x.is_equal(k); })) kinks.push_back(k);
+  if (kinks.empty()) {
+    bool exact_values = false;
+    switch (compare(answer, ref.closed_form, ref.program, ref.shape, fresh, over_budget, exact_values)) {
+      case Agreement::proved: return correct(true, false);
+      case Agreement::agrees: return correct(false, exact_values);
+      case Agreement::refuted: return Decision{wrong.verdict, "exact", wrong.code, wrong.message};
+      case Agreement::differs: return Decision{wrong.verdict, "numeric", wrong.code, wrong.message};
+      case Agreement::unevaluable:
+        return Decision{Verdict::undecided, "numeric", "evaluation",
+                        "the answer could not be evaluated at the test values (a division by zero, a negative square root, or a number too large to work with?)"};
+      case Agreement::budget: return budget;
+    }
+  }
+  // Kinks: each sign of their arguments in turn (abs(x) -> x or -x). Where the answer and the
+  // reference agree for every sign, the answer is correct on both sides of every kink. A sign
+  // for which they differ is looked for in the parameters: found, the answer is incorrect
+  // there; not found (a side no positive values reach, or too narrow a one), undecided.
+  const Decision refused{Verdict::undecided, "", "abs",
+                         "the answer uses abs(), and tackle could not decide it for every sign of its argument: write it without abs()"};
+  // The kinks' arguments, each once up to a constant factor (abs(h - l) and abs(l - h), or
+  // abs(mu - 1/10) and abs(10*mu - 1), have one kink).
+  std::vector<ex> args;
+  std::vector<std::pair<std::size_t, bool>> arg_of;  // per kink: its argument, and whether negated
+  for (const auto& k : kinks) {
+    std::vector<ex> inner;
+    kinks_of(k.op(0), inner);
+    if (!inner.empty()) return refused;
+    std::size_t j = 0;
+    bool negated = false;
+    for (; j < args.size(); ++j) {
+      if (args[j].is_equal(k.op(0))) break;
+      if (const ex ratio = normal(k.op(0) / args[j]); is_exactly<numeric>(ratio) && ex_to<numeric>(ratio).is_real()) {
+        negated = ex_to<numeric>(ratio).is_negative();
+        break;
+      }
+    }
+    if (j == args.size()) args.push_back(k.op(0));
+    arg_of.emplace_back(j, negated);
+  }
+  if (args.size() > max_kinks) return refused;
+  std::vector<std::size_t> differing;  // the signs (bit j set: argument j negative)
+  bool all_proved = true, all_exact = true;
+  for (std::size_t signs = 0; signs < (std::size_t{1} << args.size()); ++signs) {
+    exmap side;
+    for (std::size_t i = 0; i < kinks.size(); ++i) {
+      const bool negative = (((signs >> arg_of[i].first) & 1) != 0) != arg_of[i].second;
+      const ex& arg = kinks[i].op(0);
+      const unsigned serial = ex_to<function>(kinks[i]).get_serial();
+      side[kinks[i]] = serial == abs_SERIAL::serial ? (negative ? -arg : arg)
+                       : serial == csgn_SERIAL::serial ? ex(negative ? -1 : 1)
+                                                       : ex(negative ? 0 : 1);
+    }
+    const ex a = answer.subs(side), b = ref.closed_form.subs(side);
+    bool exact_values = false;
+    switch (compare(a, b, program(b), Shape{rational_function(b, lengths_), expanded_size(b), std::nullopt}, fresh, over_budget, exact_values)) {
+      case Agreement::proved: break;
+      case Agreement::agrees:
+        all_proved = false;
+        all_exact = all_exact && exact_values;
+        break;
+      case Agreement::budget: return budget;
+      default: differing.push_back(signs);
+    }
+  }
+  if (differing.empty()) return correct(all_proved, all_exact);
+  // Along each parameter of the kinks' arguments, from each fixed point: values from 2^-64 to
+  // 3 * 2^63 times the point's, so both sides of a kink within them are met.
+  std::vector<Exact> args_at;
+  std::set<ex, ex_is_less> used;
+  for (const auto& arg : args) {
+    args_at.push_back(program(arg));
+    for (const auto& s : symbols_in(substituted(arg, lengths_))) used.insert(s);
+  }
+  const Exact answer_at = program(answer);
+  for (const Point& base : points_)
+    for (std::size_t i = 0; i < base.size(); ++i) {
+      if (!used.count(base[i].first)) continue;
+      for (int e = -64; e <= 64; ++e)
+        for (const numeric& f : {numeric(2).power(e), numeric(3, 2) * numeric(2).power(e)}) {
+          if (over_budget()) return budget;
+          Point p = base;
+          p[i].second = base[i].second * f;
+          std::size_t signs = 0;
+          bool clear = true;
+          for (std::size_t k = 0; k < args_at.size() && clear; ++k) {
+            const auto v = args_at[k](p);
+            clear = v && !v->is_zero();
+            if (clear && v->is_negative()) signs |= std::size_t{1} << k;
+          }
+          if (!clear || std::find(differing.begin(), differing.end(), signs) == differing.end()) continue;
+          const auto a = answer_at(p), b = ref.program(p);
+          if (a && b && !same(*a, *b)) return Decision{wrong.verdict, "numeric", wrong.code, wrong.message};
+        }
+    }
+  return refused;
 }
 
 Checker::Exact Checker::program(const ex& e) const {
@@ -625,7 +942,9 @@ std::string Checker::describe(const ex& parameter) const {
   return "for " + name + " = 0";
 }
 
-std::optional<exmap> Checker::values_for(const std::vector<std::pair<std::string, std::string>>& set, std::string& problem) const {
+std::optional<exmap> Checker::values_for(const std::vector<std::pair<std::string, std::string>>& set, std::string& problem,
+                                         bool* out_of_domain) const {
+  if (out_of_domain) *out_of_domain = false;
   exmap values = symbols_->values();
   for (const auto& [name, text] : set) {
     const SymbolInfo* s = symbols_->find(name);
@@ -633,13 +952,21 @@ std::optional<exmap> Checker::values_for(const std::vector<std::pair<std::string
       std::vector<std::string> settable;
       for (const auto& x : symbols_->all())
         if (x->role == SymbolRole::parameter && !x->definition && x->value) settable.push_back(x->name);
-      problem = "'" + name + "' is not a parameter with a value (expected one of: " + join(settable) + ")";
+      problem = "'" + printable(name) + "' is not a parameter with a value (expected one of: " + join(settable) + ")";
       return std::nullopt;
     }
     const auto parsed = parse_expression(text, numbers_only(), answer_limits());
     const ex v = parsed.value ? evalf(*parsed.value) : ex(0);
     if (!parsed.value || !is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) {
-      problem = "the value of '" + name + "' is '" + text + "' (expected a number in " + (s->unit.empty() ? "SI" : s->unit) + ")";
+      problem = "the value of '" + name + "' is '" + printable(text) + "' (expected a number in " + (s->unit.empty() ? "SI" : s->unit) + ")";
+      return std::nullopt;
+    }
+    // A mass, a length, a stiffness... is a positive symbol: every closed form was simplified
+    // with that, so a value it does not hold for would be graded against a wrong answer.
+    if (s->positive && !ex_to<numeric>(v).is_positive()) {
+      problem = "the value of '" + name + "' is " + printable(trim(text)) + (s->unit.empty() ? "" : " " + s->unit) + ", but '" + name +
+                "' is assumed positive" + (s->dimension && !(*s->dimension == Dimension::none()) ? " (" + with_article(s->dimension->describe()) + ")" : "");
+      if (out_of_domain) *out_of_domain = true;
       return std::nullopt;
     }
     values[s->sym] = (is_a<numeric>(*parsed.value) ? *parsed.value : v) * s->unit_to_si;
@@ -664,7 +991,7 @@ CheckResult Checker::check(const std::string& unknown, std::string_view answer, 
   };
   const auto ref_it = references_.find(unknown);
   if (ref_it == references_.end()) {
-    std::string msg = "'" + unknown + "' is not an unknown tackle can check for this problem";
+    std::string msg = "'" + printable(unknown) + "' is not an unknown tackle can check for this problem";
     const auto known = unknowns();
     if (auto near = nearest(unknown, known); !near.empty()) msg += " (did you mean '" + near + "'?)";
     else msg += " (checkable: " + join(known) + ")";
@@ -692,7 +1019,7 @@ CheckResult Checker::check(const std::string& unknown, std::string_view answer, 
       if (std::find(problem_unknowns_.begin(), problem_unknowns_.end(), lhs) != problem_unknowns_.end() ||
           references_.count(lhs))
         return invalid("wrong_unknown", "this is an answer for " + lhs + ", but " + unknown + " was asked for");
-      return invalid("not_an_answer", "write '" + unknown + " = ...' or just the expression (found '" + lhs + " = ')");
+      return invalid("not_an_answer", "write '" + unknown + " = ...' or just the expression (found '" + printable(lhs) + " = ')");
     }
     offset = i + 1;
     while (offset < text.size() && std::isspace(static_cast<unsigned char>(text[offset]))) ++offset;
@@ -894,38 +1221,17 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
                     "the answer could not be evaluated at the test values (a division by zero, a negative square root, or a number too large to work with?)");
     values.push_back(*v);
   }
-  bool equal = true, exact_values = true;
-  for (std::size_t k = 0; k < values.size(); ++k) {
-    equal = equal && same(values[k], ref.at_points[k]);
-    exact_values = exact_values && values[k].is_rational() && ref.at_points[k].is_rational();
-  }
+  bool equal = true;
+  for (std::size_t k = 0; k < values.size(); ++k) equal = equal && same(values[k], ref.at_points[k]);
   if (equal) {
-    // Exact rationals that agree at random points prove a rational identity with
-    // overwhelming probability; with square roots and the like, try to prove it with normal()
-    // when the expansion stays within the budget.
-    bool proved = false;
-    const ex expanded = exact_values ? answer : substituted(answer, definitions_);
-    // The closed form itself, as GiNaC writes it: equal by structure, nothing to expand.
-    if (!exact_values && expanded.is_equal(ref.closed_form)) {
-      proved = true;
-    } else if (!exact_values && expanded_size(expanded) <= static_cast<double>(options_.exact_size_budget) &&
-               !over_budget()) {
-      try {
-        proved = normal(expanded - ref.closed_form).is_zero();
-      } catch (const std::bad_alloc&) {
-        throw;  // out of memory is the process's (exit 3), not this answer's
-      } catch (const std::exception&) {
-        proved = false;
-      }
-    }
-    r.method = exact_values ? "exact rationals" : proved ? "exact" : "numeric";
+    // The fixed points prove nothing: anyone can find them and build an answer that vanishes
+    // there. A proof decides, or points drawn for this check.
+    const Decision d = decide(ref, substituted(answer, definitions_), over_budget);
+    r.method = d.method;
+    if (d.verdict != Verdict::correct) return finish(d.verdict, d.code, d.message);
     r.verdict = Verdict::correct;
     r.score = 1.0;
-    r.summary = exact_values ? "equal to the closed form (in exact arithmetic at " + std::to_string(points_.size()) +
-                                   " random points)"
-                : proved     ? "equal to the closed form"
-                             : "equal to the closed form at " + std::to_string(points_.size()) + " random points, to " +
-                                   std::to_string(options_.digits - 8) + " digits";
+    r.summary = d.message;
     // Simplified? Only a typed answer much longer than its canonical form can be.
     std::string typed;
     for (char c : text)

@@ -6,9 +6,11 @@
 #pragma once
 
 #include <chrono>
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <optional>
+#include <random>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,7 +33,11 @@ struct CheckOptions {
   bool require_simplified = false;             // a correct but unsimplified answer is incorrect
   std::size_t exact_size_budget = 2000;        // largest expanded size normal() is given
   std::chrono::milliseconds time_budget{250};  // per answer
-  int points = 4;                              // random points for the numeric comparison
+  int points = 4;                              // fixed random points: the first comparison and the diagnoses
+  // Points a verdict of `correct` rests on when no proof decides it are drawn afresh for each
+  // check from std::random_device, so that no answer can be built to vanish at them; a seed
+  // makes them reproducible (tests, `tackle check --seed`), and must never be used to grade.
+  std::optional<std::uint64_t> seed;
   int digits = 40;                             // precision of the numeric comparison (CLN)
   bool echo_latex = true;                      // echo the answer as read in LaTeX too
   // Feedback names the correct value ("expected 35.316 N within 1 %") only when asked: a
@@ -74,9 +80,11 @@ class Checker {
                                   const GiNaC::exmap* values = nullptr) const;
   /// The parameters' values (SI) with `set` (name -> number in the parameter's stated unit)
   /// put in, the defined parameters following; nothing, and `problem` says why, for a name
-  /// that is not a parameter with a value or a text that is not a number.
+  /// that is not a parameter with a value or a text that is not a number (a usage error), or
+  /// for a value a positive parameter (a mass, a length...) cannot have (`out_of_domain` set:
+  /// an input error).
   [[nodiscard]] std::optional<GiNaC::exmap> values_for(const std::vector<std::pair<std::string, std::string>>& set,
-                                                       std::string& problem) const;
+                                                       std::string& problem, bool* out_of_domain = nullptr) const;
   /// The names that can be checked (determined unknowns and defined quantities).
   [[nodiscard]] std::vector<std::string> unknowns() const;
   [[nodiscard]] const CheckOptions& options() const { return options_; }
@@ -111,6 +119,12 @@ class Checker {
     void emit(const GiNaC::ex& e, const Point& layout, const GiNaC::exmap& definitions, int depth);
     bool run(std::size_t& at, const Point& point, Value& out) const;
   };
+  // What deciding an equality with an expression needs to know of it.
+  struct Shape {
+    bool rational = false;  // a rational function of independent symbols
+    double size = 0;        // an upper bound on its expansion's terms
+    std::optional<GiNaC::ex> expanded;  // a rational one's expansion, made once
+  };
   struct Reference {
     std::string name;
     GiNaC::ex closed_form;
@@ -119,11 +133,35 @@ class Checker {
     std::optional<GiNaC::numeric> value;     // SI, when every parameter has a value
     std::vector<GiNaC::numeric> at_points;   // the closed form at each random point
     std::size_t text_size = 0;               // length of its printed closed form
+    Shape shape;
+    std::vector<GiNaC::ex> kinks;            // its abs() and csgn()
   };
   struct Parameter {
     std::string name;
     GiNaC::ex symbol;
     std::optional<Dimension> dimension;
+  };
+
+  // What a comparison beyond the fixed points found: a proof either way (normal()), the same
+  // or different values at the points drawn for this check, or nothing to go on.
+  enum class Agreement { proved, refuted, agrees, differs, unevaluable, budget };
+  // The points drawn for one check (unpredictable unless options_.seed is set), where the
+  // reference is defined; drawn when first wanted.
+  class FreshPoints {
+   public:
+    explicit FreshPoints(const Checker& checker, const Reference& ref) : checker_(checker), ref_(ref) {}
+    const std::vector<Point>& get();
+
+   private:
+    const Checker& checker_;
+    const Reference& ref_;
+    std::optional<std::vector<Point>> points_;
+  };
+  // A verdict reached beyond the fixed points.
+  struct Decision {
+    Verdict verdict = Verdict::undecided;
+    std::string method;
+    std::string code, message;  // the finding (or the summary of a correct answer)
   };
 
   CheckResult check_number(const Reference& ref, std::string_view number, std::string_view unit_text,
@@ -132,6 +170,14 @@ class Checker {
                                std::chrono::steady_clock::time_point start, const std::function<int(int)>& column) const;
   void diagnose(const Reference& ref, const GiNaC::ex& answer, const std::vector<GiNaC::numeric>& values,
                 CheckResult& r) const;
+  /// The answer (its definitions put in), which agrees with the reference at every fixed
+  /// point, decided: proved or refuted by normal() where GiNaC can, else at fresh points (and
+  /// for abs(), on each side of every kink).
+  [[nodiscard]] Decision decide(const Reference& ref, const GiNaC::ex& answer, const std::function<bool()>& over_budget) const;
+  [[nodiscard]] Agreement compare(const GiNaC::ex& answer, const GiNaC::ex& reference, const Exact& reference_at,
+                                  const Shape& shape, FreshPoints& fresh, const std::function<bool()>& over_budget, bool& exact_values) const;
+  /// A point near the parameters' values drawn from `rng`, finer than the fixed points.
+  [[nodiscard]] Point draw_point(std::mt19937& rng) const;
   /// `e` made into code for the points, every defined parameter put in (the turning strands'
   /// lengths too).
   [[nodiscard]] Exact program(const GiNaC::ex& e) const;
@@ -146,6 +192,9 @@ class Checker {
   GiNaC::exmap definitions_;                // defined parameters, expanded before comparing
   GiNaC::exmap lengths_;                    // the turning strands' lengths too: for numbers only
   std::vector<Point> points_;
+  // Each parameter of a point (in the points' order) and the value points are drawn near
+  // (nothing: drawn from 1 to 10).
+  std::vector<std::pair<GiNaC::ex, std::optional<GiNaC::numeric>>> bases_;
   GiNaC::numeric tolerance_;                // relative, for values that are not exact: 10^-(digits - 8)
   std::map<std::string, Reference, std::less<>> references_;
 };

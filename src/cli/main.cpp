@@ -4,6 +4,9 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -12,6 +15,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/diagnostics.hpp"
+#include "core/utf8.hpp"
 #include "check/batch.hpp"
 #include "expr/parse.hpp"
 #include "expr/rational.hpp"
@@ -74,6 +78,27 @@ std::vector<std::string> split_commas(const std::string& list) {
 }
 
 
+// CLI11's ranges let NaN through (every comparison with it is false), and its conversion of
+// an unsigned number wraps -1 and saturates past 2^64 - 1: these check the text first.
+const CLI::Validator finite_number(
+    [](std::string& text) -> std::string {
+      char* end = nullptr;
+      const double v = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end != '\0' || !std::isfinite(v)) return "'" + tackle::printable(text) + "' is not a finite number";
+      return {};
+    },
+    "NUMBER");
+const CLI::Validator seed_number(
+    [](std::string& text) -> std::string {
+      const std::string max = std::to_string(std::numeric_limits<std::uint64_t>::max());
+      const bool digits = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+      const std::string significant = text.substr(std::min(text.find_first_not_of('0'), text.size()));
+      if (!digits || significant.size() > max.size() || (significant.size() == max.size() && significant > max))
+        return "'" + tackle::printable(text) + "' is not a seed (expected a whole number from 0 to " + max + ")";
+      return {};
+    },
+    "SEED");
+
 // Every option of every command; each command reads its own.
 struct Options {
   std::string rules_dir = tackle::default_rules_dir();
@@ -88,6 +113,7 @@ struct Options {
   std::string key_format = "markdown";
   int variants = 0;
   unsigned long long seed = 1;
+  bool seeded = false;  // check: --seed given
   // sweep and simulate
   std::string vary, plot, csv_out, svg_out, pgf_out, sim_plot;
   std::vector<std::string> fixes;
@@ -280,12 +306,13 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
   options.require_simplified = o.require_simplified;
   options.echo_latex = !o.no_latex;
   options.reveal = o.reveal;
+  if (o.seeded) options.seed = o.seed;
   const tackle::Checker checker(*analysis, options);
   std::vector<std::pair<std::string, std::string>> set;
   for (const auto& v : o.set_values) {
     const auto eq = v.find('=');
     if (eq == std::string::npos || eq == 0) {
-      std::cerr << "tackle check: --set " << v << ": expected NAME=VALUE\n";
+      std::cerr << "tackle check: --set " << tackle::printable(v) << ": expected NAME=VALUE\n";
       return 2;
     }
     set.emplace_back(v.substr(0, eq), v.substr(eq + 1));
@@ -293,10 +320,11 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
   std::optional<GiNaC::exmap> values;
   if (!set.empty()) {
     std::string problem;
-    values = checker.values_for(set, problem);
+    bool out_of_domain = false;
+    values = checker.values_for(set, problem, &out_of_domain);
     if (!values) {
       std::cerr << "tackle check: --set: " << problem << "\n";
-      return 2;
+      return out_of_domain ? 1 : 2;  // a value the problem does not allow is bad input
     }
   }
   if (!o.batch.empty()) {
@@ -417,7 +445,9 @@ int run(int argc, char** argv) {
         ->capture_default_str();
     key->add_option("--variants", o.variants, "Numeric variants per problem, drawn from the parameters' 'range'")
         ->check(CLI::Range(0, 10000));
-    key->add_option("--seed", o.seed, "Seed for the variants (the same seed gives the same variants)")->capture_default_str();
+    key->add_option("--seed", o.seed, "Seed for the variants (the same seed gives the same variants)")
+        ->check(seed_number)
+        ->capture_default_str();
     key->add_option("--digits", o.digits, "Significant digits of the numbers")->check(CLI::Range(1, 1000));
     key->add_option("-o,--output", o.out, "Write to this file instead of standard output");
   });
@@ -430,7 +460,7 @@ int run(int argc, char** argv) {
     sheet->add_flag("--figures", o.figures, "Also draw each problem's free body diagrams under its statement (a 1-D mechanism's sketch is always drawn)");
     sheet->add_option("--variants", o.variants, "Numeric variants per problem, drawn from the parameters' 'range'")
         ->check(CLI::Range(0, 10000));
-    sheet->add_option("--seed", o.seed, "Seed for the variants (as for key)")->capture_default_str();
+    sheet->add_option("--seed", o.seed, "Seed for the variants (as for key)")->check(seed_number)->capture_default_str();
     sheet->add_option("--digits", o.digits, "Significant digits of the numbers")->check(CLI::Range(1, 1000));
     sheet->add_option("-o,--output", o.out, "Write to this file instead of standard output");
   });
@@ -451,7 +481,9 @@ int run(int argc, char** argv) {
                                    "a contact lost, a body turning): a table, CSV, SVG, pgfplots",
                        [&](CLI::App* simulate) {
     simulate->add_option("file", o.file, "Problem description (YAML) with a 'motion' section")->required();
-    simulate->add_option("--until", o.until, "End time in seconds (default: the description's 'until')")->check(CLI::PositiveNumber);
+    simulate->add_option("--until", o.until, "End time in seconds (default: the description's 'until')")
+        ->check(finite_number)
+        ->check(CLI::PositiveNumber);
     simulate->add_option("--plot", o.sim_plot, "Comma-separated expressions in the answers, coordinates, rates, parameters and t, e.g. y,N");
     simulate->add_option("--samples", o.samples, "Rows of the table, evenly spaced in time")->check(CLI::Range(2, 100000))->capture_default_str();
     simulate->add_option("--csv", o.csv_out, "Write the table as CSV here");
@@ -482,10 +514,15 @@ int run(int argc, char** argv) {
                                              "a student's own variant");
     check->add_flag("--reveal", o.reveal, "Name the correct value in the feedback (never, without it)");
     check->add_option("--tolerance", o.tolerance, "Relative tolerance for numbers with units")
+        ->check(finite_number)
         ->check(CLI::Range(0.0, 1.0))
         ->capture_default_str();
     check->add_option("--sig-figs", o.sig_figs, "Instead of the tolerance: numbers must match to this many significant figures")
         ->check(CLI::Range(1, 15));
+    check->add_option("--seed", o.seed, "Draw the check's own random points from this seed (reproducible tests only: "
+                                        "a student who knows the points can build a wrong answer that passes)")
+        ->check(seed_number)
+        ->each([&](const std::string&) { o.seeded = true; });
     check->add_flag("--require-simplified", o.require_simplified, "A correct answer that is not simplified is incorrect");
     check->add_flag("--no-latex", o.no_latex, "Do not echo answers in LaTeX (faster batches)");
     check->add_option("--format", o.format, "Output format (single answers)")->check(CLI::IsMember({"text", "json"}))->capture_default_str();

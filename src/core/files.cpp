@@ -227,7 +227,17 @@ AtomicOutput::AtomicOutput(std::string path) : path_(std::move(path)) {
       fail(errno);
       return;
     }
-    temp_ = name.data();
+    // Out of memory from here to the end of the constructor would skip the destructor: the
+    // file just made is removed before the exception goes on.
+    try {
+      temp_ = name.data();
+      buffer_ = std::make_unique<FdBuffer>(fd_);
+    } catch (...) {
+      ::unlink(name.data());
+      ::close(fd_);
+      fd_ = -1;
+      throw;
+    }
     slot_ = register_temporary(temp_);
     // mkstemp makes the file private; give it the old file's mode and owner (a 0600 file
     // stays 0600; the owner can only be kept by root), or the mode a new file would have had.
@@ -240,7 +250,7 @@ AtomicOutput::AtomicOutput(std::string path) : path_(std::move(path)) {
       (void)::fchmod(fd_, 0666 & ~mask);
     }
   }
-  buffer_ = std::make_unique<FdBuffer>(fd_);
+  if (!buffer_) buffer_ = std::make_unique<FdBuffer>(fd_);
   stream_.rdbuf(buffer_.get());
 }
 

@@ -1,6 +1,7 @@
 #include "core/units.hpp"
 
 #include "core/kind.hpp"
+#include "core/utf8.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -111,7 +112,7 @@ std::optional<Unit> parse_unit(std::string_view text, std::string& error, int& e
       const std::string_view name = text.substr(start, i - start);
       auto atom = find_atom(name);
       if (!atom) {
-        error = "unknown unit '" + std::string(name) + "'";
+        error = "unknown unit '" + printable(name) + "'";
         error_column = static_cast<int>(start);
         return std::nullopt;
       }
@@ -143,7 +144,7 @@ std::optional<Unit> parse_unit(std::string_view text, std::string& error, int& e
       } else if (text[i] == '/') {
         sign = -1;
       } else {
-        error = std::string("unexpected '") + text[i] + "' in unit";
+        error = "unexpected '" + printable(utf8_char_at(text, i)) + "' in unit";
         error_column = static_cast<int>(i);
         return std::nullopt;
       }

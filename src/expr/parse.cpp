@@ -4,6 +4,7 @@
 
 #include "core/diagnostics.hpp"
 #include "core/kind.hpp"
+#include "core/utf8.hpp"
 #include "expr/trig.hpp"
 
 namespace tackle {
@@ -102,7 +103,8 @@ class Parser {
         case ',': push(Tok::comma, ",", col); ++i; continue;
         default: break;
       }
-      fail(col, std::string("unexpected character '") + c + "'");
+      // The whole character (not one byte of it), and a control character escaped.
+      fail(col, "unexpected character '" + printable(utf8_char_at(text_, i)) + "'");
     }
     tokens_.push_back({Tok::end, "end of expression", static_cast<int>(text_.size())});
   }

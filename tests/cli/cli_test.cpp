@@ -286,7 +286,14 @@ TEST_CASE("CLI: check a batch into JSON Lines and a grader results file", "[cli]
   CHECK(pl.code == 0);
   const auto prairie = nlohmann::json::parse(slurp(dir / "pl.json"));
   CHECK(prairie["gradable"] == false);
-  CHECK(prairie["tests"][0]["points"] == 3);
+  CHECK_FALSE(prairie.contains("tests"));  // they would tell that the first answer is right
+  // The first answer alone is gradable, with its 3 points.
+  std::ofstream(dir / "first.jsonl") << "{\"id\": \"a\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/(2*d)\"}\n";
+  CHECK(run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + (dir / "first.jsonl").string() +
+                   " --results " + (dir / "pl.json").string() + " --results-format prairielearn --points T_HI=3").code == 0);
+  const auto gradable = nlohmann::json::parse(slurp(dir / "pl.json"));
+  CHECK(gradable["gradable"] == true);
+  CHECK(gradable["tests"][0]["points"] == 3);
   CHECK(run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + (dir / "subs.jsonl").string() +
                    " --points lots").code == 2);
   CHECK(run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch /no/such.jsonl").code == 1);
@@ -755,9 +762,76 @@ TEST_CASE("CLI: a batch whose outputs are larger than the memory tackle may use 
   CHECK(n == 100000);
   CHECK(fs::file_size(out) + fs::file_size(results) > 24576 * 1024);
   const auto j = nlohmann::json::parse(slurp(results));
-  CHECK(j["tests"].size() == 100000);
+  // Not gradable: no tests (they would tell which other answers are right).
+  CHECK(!j.contains("tests"));
+  CHECK(j["gradable"] == false);
   REQUIRE(j["format_errors"].size() == 101);
-  CHECK(j["format_errors"][0] == "line 1: line 1: not a JSON object with id, unknown and answer");
+  CHECK(j["format_errors"][0] == "line 1: not a JSON object with id, unknown and answer");
   CHECK(j["format_errors"][100] == "and 99900 more");
   fs::remove_all(dir);
+}
+
+TEST_CASE("CLI: NaN tolerances and end times, and seeds outside 0..2^64-1, are usage errors", "[cli][check]") {
+  const std::string pulley = examples + "sample-12.3-two-mass-pulley.yaml";
+  const Run tolerance = run_tackle("check " + pulley + " --unknown T --answer '20 N' --tolerance nan");
+  CHECK(tolerance.code == 2);
+  CHECK(tolerance.err.find("'nan' is not a finite number") != std::string::npos);
+  CHECK(run_tackle("check " + pulley + " --unknown T --answer '20 N' --tolerance inf").code == 2);
+  const Run until = run_tackle("simulate " + examples + "sample-12.4-stacked-blocks-on-spring.yaml --until nan");
+  CHECK(until.code == 2);
+  CHECK(until.err.find("'nan' is not a finite number") != std::string::npos);
+  // -1 wrapped to 2^64 - 1, and 2^64 and 10^23 were cut down to it: three spellings, one key.
+  for (const char* seed : {"-1", "18446744073709551616", "100000000000000000000000", "1e3", "0x10"}) {
+    INFO(seed);
+    const Run r = run_tackle("key " + pulley + " --variants 1 --seed " + seed);
+    CHECK(r.code == 2);
+    CHECK(r.err.find("is not a seed (expected a whole number from 0 to 18446744073709551615)") != std::string::npos);
+  }
+  const Run largest = run_tackle("key " + pulley + " --variants 1 --seed 18446744073709551615");
+  const Run smallest = run_tackle("key " + pulley + " --variants 1 --seed 0");
+  CHECK(largest.code == 0);
+  CHECK(smallest.code == 0);
+  CHECK(largest.out != smallest.out);
+  CHECK(run_tackle("sheet " + pulley + " --variants 1 --seed -1").code == 2);
+  CHECK(run_tackle("check " + pulley + " --unknown T --answer '2*F*m_B/(9*m_A + 4*m_B)' --seed -1").code == 2);
+  CHECK(run_tackle("check " + pulley + " --unknown T --answer '2*F*m_B/(9*m_A + 4*m_B)' --seed 7").code == 0);
+}
+
+TEST_CASE("CLI: --set of a negative mass is an input error", "[cli][check]") {
+  const std::string pulley = examples + "sample-12.3-two-mass-pulley.yaml";
+  const Run negative = run_tackle("check " + pulley + " --unknown T --answer '20 N' --set m_A=-40");
+  CHECK(negative.code == 1);
+  CHECK(negative.out.empty());
+  CHECK(negative.err == "tackle check: --set: the value of 'm_A' is -40 kg, but 'm_A' is assumed positive (a mass)\n");
+  // A name that is not a parameter stays a usage error.
+  CHECK(run_tackle("check " + pulley + " --unknown T --answer '20 N' --set G=1").code == 2);
+}
+
+TEST_CASE("CLI: the Gradescope example grades each asked unknown once", "[cli][check][platform]") {
+  // Sample 12.3 asks for T (10 points). ddot(x_A) is another unknown of the problem, answered
+  // right: no points for it; T answered twice: the first answer is graded, once.
+  const fs::path root = fs::temp_directory_path() / ("tackle-gradescope-" + std::to_string(::getpid()));
+  fs::create_directories(root / "submission");
+  const std::string script = TACKLE_SOURCE_DIR "/examples/gradescope/pulley-tension/run_autograder";
+  auto grade = [&](const std::string& answers) {
+    std::ofstream(root / "submission/answers.json") << answers;
+    const std::string cmd = "AUTOGRADER='" + root.string() + "' TACKLE='" + TACKLE_BINARY + "' '" + script + "' >/dev/null 2>&1";
+    REQUIRE(std::system(cmd.c_str()) == 0);
+    return nlohmann::json::parse(slurp(root / "results/results.json"));
+  };
+  const auto extra = grade("{\"T\": \"2*F*m_B/(9*m_A + 4*m_B)\", \"ddot(x_A)\": \"-9*F/(9*m_A + 4*m_B)\"}");
+  REQUIRE(extra["tests"].size() == 1);
+  CHECK(extra["tests"][0]["name"] == "answers.json: T");
+  CHECK(extra["tests"][0]["score"] == 10);
+  CHECK(extra["output"] == "1 of 1 answers correct\n\"ddot(x_A)\" was not asked for and is not graded");
+  const auto twice = grade("{\"T\": \"30 N\", \"T\": \"2*F*m_B/(9*m_A + 4*m_B)\"}");
+  REQUIRE(twice["tests"].size() == 1);
+  CHECK(twice["tests"][0]["score"] == 0);
+  CHECK(twice["output"] == "0 of 1 answers correct\nT is answered more than once: only the first answer is graded");
+  // Nothing for T: graded as empty, no points.
+  const auto none = grade("{\"t\": \"20 N\"}");
+  REQUIRE(none["tests"].size() == 1);
+  CHECK(none["tests"][0]["score"] == 0);
+  CHECK(none["tests"][0]["output"] == "invalid: the answer is empty");
+  fs::remove_all(root);
 }

@@ -77,6 +77,12 @@ class GradescopeTest(unittest.TestCase):
         self.assertEqual(wrong["tests"][0]["score"], 0)
         self.assertNotIn("20 N", wrong["tests"][0]["output"])
         self.assertEqual(self.run_autograder(None)["tests"], [])
+        # Only T is asked: a right answer for another unknown of the problem, or T twice,
+        # earns nothing more than the one test of T.
+        extra = self.run_autograder('{"T": "2*F*m_B/(9*m_A + 4*m_B)", "ddot(x_A)": "-9*F/(9*m_A + 4*m_B)", '
+                                    '"T": "2*F*m_B/(9*m_A + 4*m_B)"}')
+        self.assertEqual([t["name"] for t in extra["tests"]], ["answers.json: T"])
+        self.assertEqual(sum(t["score"] for t in extra["tests"]), 10)
 
 
 class ScaleOutTest(unittest.TestCase):

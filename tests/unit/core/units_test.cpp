@@ -37,6 +37,19 @@ TEST_CASE("Units: an unknown unit is located within the text", "[units]") {
   CHECK(err == "unit ends after an operator");
 }
 
+TEST_CASE("Units: a unit's error echoes whole characters and escapes control ones", "[units]") {
+  std::string err;
+  int col = 0;
+  CHECK_FALSE(parse_unit("N\x07", err, col));
+  CHECK(err == "unexpected '\\x07' in unit");
+  CHECK(col == 1);
+  // U+202E (right-to-left override) would reorder the rest of the message.
+  CHECK_FALSE(parse_unit("k\u202e", err, col));
+  CHECK(err == "unknown unit 'k\\u202E'");
+  CHECK_FALSE(parse_unit("k\u00e9", err, col));
+  CHECK(err == "unknown unit 'k\u00e9'");
+}
+
 TEST_CASE("Units: dimensions are named and given SI units", "[units]") {
   CHECK(Dimension::force().describe() == "force");
   CHECK((Dimension::force() / Dimension::length()).describe() == "stiffness (force per length)");
