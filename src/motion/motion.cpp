@@ -323,6 +323,59 @@ void steady_state(ConditionInTime& ct, const CheckedCondition& c, const Response
   ct.band = band;
 }
 
+// How long the response holds when a rule assumes the direction of motion: until the rate
+// first vanishes. From rest an oscillation turns after half a period (pi/lambda, pi/omega_d);
+// otherwise the rate is followed with the numbers (a scan, then bisection).
+void sliding_interval(Motion& out, const Model& m, const MotionSpec& spec) {
+  const Response& r = *out.response;
+  out.direction_assumed_by = m.direction_assumed_by;
+  const bool from_rest = zero(spec.initial.at(out.eom.dq[0]));
+  if (from_rest && r.regime == Response::Regime::undamped) out.direction_until = Pi / spec.lambda;
+  if (from_rest && r.regime == Response::Regime::underdamped) out.direction_until = Pi / spec.omega_d;
+  exmap values = m.symbols->values();
+  for (const auto& [sym, def] : out.definitions) values[sym] = substituted(substituted(def, values), values);
+  auto rate_at = [&](double time) -> std::optional<double> {
+    exmap at = values;
+    at[m.time] = numeric(time);
+    return NormalForm(r.rate).approx_at(at);
+  };
+  if (out.direction_until) {
+    if (auto v = NormalForm(*out.direction_until).approx_at(values)) out.direction_until_s = *v;
+    else out.direction_unknown = true;
+    return;
+  }
+  // The first sign change within the run's end (or 100 s), on a grid of 4000 steps.
+  const double horizon = spec.until ? ex_to<numeric>(evalf(*spec.until)).to_double() : 100.0;
+  const int steps = 4000;
+  std::optional<double> previous = rate_at(0);
+  if (!previous) {
+    out.direction_unknown = true;
+    return;
+  }
+  double start_sign = *previous;
+  for (int i = 1; i <= steps; ++i) {
+    const double t1 = horizon * i / steps;
+    const auto v = rate_at(t1);
+    if (!v) {
+      out.direction_unknown = true;
+      return;
+    }
+    if (start_sign == 0) start_sign = *v;  // from rest: the sign it takes
+    else if ((*v > 0) != (start_sign > 0) || *v == 0) {
+      double lo = horizon * (i - 1) / steps, hi = t1;
+      for (int k = 0; k < 60; ++k) {
+        const double mid = (lo + hi) / 2;
+        const auto w = rate_at(mid);
+        if (!w) break;
+        ((*w > 0) == (start_sign > 0) && *w != 0 ? lo : hi) = mid;
+      }
+      out.direction_until_s = hi;
+      return;
+    }
+  }
+  out.direction_kept = true;
+}
+
 }  // namespace
 
 std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, const Solution& sol) {
@@ -641,6 +694,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
         ok = ok && checked > 0;
         r.verified = ok;
         out.response = std::move(r);
+        if (!m.direction_assumed_by.empty()) sliding_interval(out, m, spec);
       }
     }
   } else if (!eom.linear) {

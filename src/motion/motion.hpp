@@ -119,6 +119,16 @@ struct Motion {
   std::vector<std::pair<GiNaC::ex, GiNaC::ex>> in_state;  // symbol -> expression
   std::vector<std::pair<const CheckedCondition*, GiNaC::ex>> conditions_in_state;
   std::string problem;       // the motion could not be followed at all: why (an input error)
+  // A rule assumes the direction of motion (sliding friction opposes it): the closed-form
+  // response holds only while the rate keeps the sign it starts with, up to the first t > 0
+  // where it vanishes (the body stops; friction would reverse). Said for every response of
+  // such a model: `direction_until` when the rate vanishes (in closed form where it can be,
+  // `direction_until_s` with the numbers), neither when it keeps its sign.
+  std::vector<std::string> direction_assumed_by;
+  std::optional<GiNaC::ex> direction_until;
+  std::optional<double> direction_until_s;
+  bool direction_kept = false;  // the rate keeps its sign for every t > 0 (with the numbers)
+  bool direction_unknown = false;  // no numbers to tell
 };
 
 /// The equations of motion and, where possible, their closed-form solution and the validity

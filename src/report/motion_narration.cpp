@@ -153,6 +153,26 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
   }
   text(r.verified ? "Checked: put back into the equation of motion, at random parameter values and times, it holds."
                   : "WARNING: put back into the equation of motion it does NOT hold (an error in tackle; please report it).");
+  if (!mo.direction_assumed_by.empty()) {
+    const std::string rate = to_text(eom.dq[0]);
+    const std::string who = join(mo.direction_assumed_by);
+    text(who + " assumes the direction of motion (friction opposes it): this response holds only while " + rate +
+         " keeps its sign.");
+    if (mo.direction_until) {
+      Step* st = equation("end of the interval", symbol("t_1", "t_{1}"), *mo.direction_until);
+      if (mo.direction_until_s) st->note = decimal_string(numeric(*mo.direction_until_s), options.digits) + " s";
+      text("At t_1 the body stops and friction would reverse: past it the closed form no longer describes the motion "
+           "(simulate it, or write the next phase).");
+    } else if (mo.direction_until_s) {
+      text(rate + " first vanishes at t_1 = " + decimal_string(numeric(*mo.direction_until_s), options.digits) +
+           " s (with the given numbers): past it the closed form no longer describes the motion.");
+    } else if (mo.direction_kept) {
+      text("With the given numbers " + rate + " keeps its sign" +
+           (m.motion && m.motion->until ? std::string(" until the end of the run") : std::string(" for 100 s")) + ".");
+    } else {
+      text("Without numbers the end of that interval is not found: it is where " + rate + " first vanishes.");
+    }
+  }
   for (const auto& q : mo.quantities) {
     Step* st = equation(q.name + " in time", symbol(q.name + "(t)", q.tex + "(t)"), q.of_t);
     st->boxed = true;

@@ -57,6 +57,14 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
       resp["assumptions"].push_back(to_text(a.lhs) + " " + a.op + " " + to_text(a.rhs) + " (" + a.why + ")");
     for (const auto& [sym, def] : r.definitions) resp["definitions"].push_back({{"name", to_text(sym)}, {"definition", expr(def)}});
     j["response"] = resp;
+    if (!mo.direction_assumed_by.empty()) {
+      // The interval on which the response holds: while the rate keeps its sign.
+      J dir{{"assumed_by", mo.direction_assumed_by}};
+      dir["until"] = mo.direction_until ? expr(*mo.direction_until) : J(nullptr);
+      dir["until_value"] = mo.direction_until_s ? J(*mo.direction_until_s) : J(nullptr);
+      dir["kept"] = mo.direction_kept;
+      j["direction"] = dir;
+    }
   } else {
     j["response"] = J(nullptr);
     j["no_response"] = mo.no_response;

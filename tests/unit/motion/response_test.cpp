@@ -2,6 +2,9 @@
 #include <catch2/catch.hpp>
 
 #include "expr/parse.hpp"
+#include "motion/simulate.hpp"
+
+#include <cmath>
 #include "../../support/helpers.hpp"
 
 using namespace tackle;
@@ -46,4 +49,63 @@ motion:
   ex difference = r.q - *want.value;
   for (int depth = 0; depth < 4; ++depth) difference = difference.subs(defs);
   CHECK(normal(difference).is_zero());
+}
+
+namespace {
+
+// A block on a rough incline (theta = 30 deg, mu = 0.2) held by a spring (k = 200 N/m, rest
+// l_0 = 0.5 m) from Q up the incline at D = 1.5 m; it slides down, so friction acts up.
+std::string rough_incline(const std::string& initial) {
+  return R"y(title: block on a rough incline and a spring
+axes: [x, y]
+parameters:
+  m: {value: 2, unit: kg}
+  g: {value: 9.81, unit: m/s^2}
+  theta: {value: 30, unit: deg}
+  mu: 0.2
+  k: {value: 200, unit: N/m}
+  l_0: {value: 0.5, unit: m}
+  D: {value: 1.5, unit: m}
+gravity: [0, -g]
+bodies:
+  block: {mass: m, position: s, center_of_mass: ["s*cos(theta)", "s*sin(theta)"]}
+points:
+  Q: ["D*cos(theta)", "D*sin(theta)"]
+connections:
+  - {type: sliding, body: block, at: block, normal: ["-sin(theta)", "cos(theta)"], sliding: ["-cos(theta)", "-sin(theta)"], mu: mu}
+  - {type: spring, name: sp, path: [block, Q], k: k, rest_length: l_0}
+layout: {s: 0.8}
+motion:
+  initial: )y" + initial + "\n  until: 1\n";
+}
+
+}  // namespace
+
+TEST_CASE("Response: sliding friction - the closed form holds until the block stops (issue 30)", "[motion][trust]") {
+  // By hand: m s'' = k (D - s - l_0) - m g sin(theta) + mu m g cos(theta): an oscillation about
+  // s_eq with lambda = sqrt(k/m) = 10 rad/s. From rest it stops after half a period, pi/lambda,
+  // where friction would reverse.
+  const auto a = run_text(rough_incline("{s: 1.2, dot(s): 0}"));
+  REQUIRE(a->motion);
+  REQUIRE(a->motion->response);
+  const Motion& mo = *a->motion;
+  REQUIRE(mo.direction_assumed_by == std::vector<std::string>{"sliding at block"});
+  REQUIRE(mo.direction_until);
+  CHECK((*mo.direction_until - Pi / a->model.motion->lambda).is_zero());
+  REQUIRE(mo.direction_until_s);
+  CHECK(*mo.direction_until_s == Approx(M_PI / 10).epsilon(1e-12));
+  // Moving down at 0.5 m/s: s = s_eq + A cos(lambda t) + B sin(lambda t), A = s_0 - s_eq,
+  // B = v_0/lambda; the rate lambda (B cos - A sin) first vanishes where tan(lambda t) = B/A.
+  const auto b = run_text(rough_incline("{s: 1.2, dot(s): -0.5}"));
+  REQUIRE(b->motion);
+  const double s_eq = (1.5 * 200 + 2 * 9.81 * 0.2 * std::cos(M_PI / 6) - 2 * 9.81 * 0.5 - 200 * 0.5) / 200;
+  const double A = 1.2 - s_eq, B = -0.5 / 10, phase = std::atan(B / A);
+  const double t_1 = (phase > 0 ? phase : phase + M_PI) / 10;
+  CHECK(!b->motion->direction_until);
+  REQUIRE(b->motion->direction_until_s);
+  CHECK(*b->motion->direction_until_s == Approx(t_1).epsilon(1e-9));
+  // simulate stops at the same instant.
+  const Simulation s = simulate(*a, SimulationSpec{}, Location{"t.yaml", 1, 1});
+  REQUIRE(!s.events.empty());
+  CHECK(s.events.back().t == Approx(M_PI / 10).epsilon(1e-8));
 }
