@@ -164,6 +164,10 @@ struct Model {
   std::vector<TurningLength> lengths;
   std::vector<std::string> assumptions;
   std::vector<std::string> direction_assumed_by;  // connections whose rule assumes the direction of motion
+  // Each strand of a path that changes length and does not turn, with its name ("strand A-P
+  // of string s"): its length must stay positive, or a body has reached the point at its end
+  // (a block pulled into its pulley) and the model no longer holds. Followed in time.
+  std::vector<std::pair<GiNaC::ex, std::string>> strand_lengths;
   struct ConnectionNote {
     std::string label;    // "sliding at A", "string s"
     std::string summary;  // the rule's, for the problem's number of axes, with a {} per term

@@ -726,6 +726,15 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   }
   for (const auto& c : sol.conditions)
     if (!c.depends_on_free) out.conditions_in_state.emplace_back(&c, put_in(c.expr, dep));
+  for (const auto& [length, what] : m.strand_lengths) {
+    // (A strand through a dependent coordinate whose starting value is not given cannot be
+    // followed: it is left out, as before strands were followed.)
+    const ex in_state = put_in(length, dep);
+    const bool followed = std::none_of(m.bodies.begin(), m.bodies.end(), [&](const Body& b) {
+      return !b.coord.is_zero() && in_state.has(b.coord) && !contains(state, b.coord);
+    });
+    if (followed && (depends_on_state(in_state, state, m) || in_state.has(m.time))) out.strands_in_state.emplace_back(what, in_state);
+  }
   if (!out.response) return out;
 
   // The quantities asked for, along the response.

@@ -118,6 +118,8 @@ struct Motion {
   // each validity condition (`expr op 0`), as expressions in q, dot(q), t and the parameters.
   std::vector<std::pair<GiNaC::ex, GiNaC::ex>> in_state;  // symbol -> expression
   std::vector<std::pair<const CheckedCondition*, GiNaC::ex>> conditions_in_state;
+  // Each strand's length in the state (it must stay positive), with the strand's name.
+  std::vector<std::pair<std::string, GiNaC::ex>> strands_in_state;
   std::string problem;       // the motion could not be followed at all: why (an input error)
   // A rule assumes the direction of motion (sliding friction opposes it): the closed-form
   // response holds only while the rate keeps the sign it starts with, up to the first t > 0

@@ -86,6 +86,9 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
   for (const auto& [c, e] : mo.conditions_in_state)
     if (auto g = compile(e, c->condition->source))
       conditions.push_back({*g, c->condition->op, c->condition->source + ": " + c->condition->otherwise});
+  for (const auto& [what, e] : mo.strands_in_state)
+    if (auto g = compile(e, what))
+      conditions.push_back({*g, ">", what + ": its length reaches zero (a body reaches the point at its end)"});
   // What to tabulate: as asked, else the description's plot, else the coordinates.
   std::vector<std::string> plot = spec.plot;
   if (plot.empty())

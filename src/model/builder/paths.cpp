@@ -49,6 +49,19 @@ const Path* path_of(BuildContext& ctx, Instance& in, const std::string& key) {
                                    "points that move apart)");
       cached->second.reset();
     }
+    // The strands whose length changes and stays a polynomial (a turning strand's root never
+    // reaches zero short of the two points meeting), each once.
+    if (cached->second)
+      for (const auto& seg : cached->second->segments) {
+        if (seg.constant) continue;
+        const bool turning = std::any_of(ctx.m.lengths.begin(), ctx.m.lengths.end(),
+                                         [&](const TurningLength& l) { return seg.length.has(l.symbol); });
+        const bool known = std::any_of(ctx.m.strand_lengths.begin(), ctx.m.strand_lengths.end(),
+                                       [&](const auto& s) { return (s.first - seg.length).expand().is_zero(); });
+        if (!turning && !known)
+          ctx.m.strand_lengths.emplace_back(seg.length, "strand " + ctx.m.points[seg.from].name + "-" +
+                                                            ctx.m.points[seg.to].name + " of " + in.label);
+      }
   }
   return cached->second ? &*cached->second : nullptr;
 }

@@ -280,3 +280,38 @@ layout: {y_R: -0.5}
                                  "balance fixes it; but a strand that turns with it makes that balance nonlinear in y_R "
                                  "(expected a string or a joint that ties it, or a mass)"});
 }
+
+TEST_CASE("Strands: a block pulled into its pulley ends the motion with an event (issue 30)", "[motion][trust]") {
+  // Block A (m_A) on a smooth table from x = 0, pulled over the pulley P at x = L = 1 m by the
+  // hanging block B (m_B): a = m_B g/(m_A + m_B) = 9.81/3 m/s^2 from rest, so A reaches the
+  // pulley when a t^2/2 = L: t = sqrt(2 L/a). The strand A-P then has no length left.
+  const auto a = run_text(R"(title: block pulled into its pulley
+axes: [x, y]
+parameters:
+  m_A: {value: 2, unit: kg}
+  m_B: {value: 1, unit: kg}
+  g: {value: 9.81, unit: m/s^2}
+  L: {value: 1, unit: m}
+gravity: [0, -g]
+bodies:
+  A: {mass: m_A, position: x, center_of_mass: [x, 0]}
+  B: {mass: m_B, position: y, center_of_mass: [L, y]}
+points:
+  P: [L, 0]
+connections:
+  - {type: pulley, at: P}
+  - {type: roller, body: A, at: A, normal: [0, 1]}
+strings:
+  - {name: s, path: [A, P, B], tension: T}
+layout: {x: 0, y: -0.5}
+motion:
+  initial: {x: 0, dot(x): 0, y: -0.5}
+  until: 2
+)");
+  REQUIRE(a->motion);
+  const Simulation s = simulate(*a, SimulationSpec{}, Location{"t.yaml", 1, 1});
+  REQUIRE(!s.complete);
+  REQUIRE(s.events.size() == 1);
+  CHECK(s.events[0].what == "strand A-P of string s: its length reaches zero (a body reaches the point at its end)");
+  CHECK(s.events[0].t == Approx(std::sqrt(2 / (9.81 / 3))).epsilon(1e-8));
+}
