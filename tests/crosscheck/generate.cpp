@@ -313,9 +313,10 @@ std::string ring_1d(Gen& g) {
   Doc d;
   d.title = "Generated: a block over a pulley, the string's end on a massless ring held by a spring";
   d.param("g", 9.81, "m/s^2");
-  d.param("m_B", g.nice(1, 5), "kg");
-  d.param("k", g.nice(20, 200), "N/m");
-  d.param("l_0", g.nice(0.5, 2), "m");
+  const double mb = g.nice(1, 5), k = g.nice(20, 200), l0 = g.nice(0.5, 2);
+  d.param("m_B", mb, "kg");
+  d.param("k", k, "N/m");
+  d.param("l_0", l0, "m");
   d.gravity = "-g";
   d.bodies.push_back("B: {mass: m_B, position: y_B}");
   d.bodies.push_back("R: {mass: 0, position: y_R}");
@@ -331,7 +332,9 @@ std::string ring_1d(Gen& g) {
   }
   const double yb = -g.nice(1, 3);
   d.layout.push_back(fmt::format("y_B: {}", num(yb)));
-  d.layout.push_back(fmt::format("y_R: {}", num(-g.nice(2, 5))));
+  // the ring near where the spring holds the block's weight
+  const double y_r = -10 + l0 + mb * 9.81 / k + g.nice(-0.25, 0.25);
+  d.layout.push_back(fmt::format("y_R: {}", num(y_r)));
   motion_for(d, g, {{"y_B", yb}});
   return d.text();
 }

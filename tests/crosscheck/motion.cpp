@@ -41,8 +41,9 @@ Outcome compare_motion(const tackle::Analysis& a, const Model& m, const tackle::
   tackle::SimulationSpec spec;
   spec.until = 1.0;
   spec.samples = 11;
-  const auto c0 = m.coordinates_at(*start);
-  for (const auto& [k, v] : c0) spec.plot.push_back(k);
+  // (simulate tabulates the motion's own coordinates)
+  for (const auto& q : a.model.motion->coordinates)
+    if (const auto* info = a.model.symbols->find(q)) spec.plot.push_back(info->name);
   tackle::Simulation sim;
   try {
     sim = tackle::simulate(a, spec, tackle::Location{});
@@ -91,8 +92,8 @@ Outcome compare_motion(const tackle::Analysis& a, const Model& m, const tackle::
     }
     if (crossed >= 0 && target > crossed) {
       out.motion_note = fmt::format(
-          "a strand goes through zero length between t = {:g} s and {:g} s (a block through its pulley or anchor): "
-          "compared up to there; tackle's simulate goes on without an event", crossed, stepper.current_time());
+          "a strand goes through zero length at t = {:.4g} s (a block through its pulley or anchor): "
+          "compared up to there; tackle's simulate goes on without an event", crossed);
       return out;
     }
     if (failed) {
