@@ -1,6 +1,8 @@
 #include "crosscheck/compare.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <random>
 #include <sstream>
 
@@ -81,7 +83,7 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
   std::mt19937_64 rng(o.seed);
   std::optional<Model> model;
   try {
-    model.emplace(d, rng);
+    model.emplace(d, rng, o.perturb);
   } catch (const Unsupported& e) {
     out.kind = Outcome::Kind::skipped;
     out.reason = e.what();
@@ -112,6 +114,7 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
     if (auto s = model->random_state(rng, 0.0)) b = *s;
   }
 
+  std::optional<std::string> model_balanced;  // tackle: inconsistent; the model: balanced at every state
   for (const State& s : states) {
     const auto vals = model->values_at(s);
     GiNaC::exmap at;
@@ -125,6 +128,12 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
     }
     const Instant inst = model->solve(s);
     ++out.states;
+    if (std::getenv("CROSSCHECK_DEBUG")) {
+      std::fprintf(stderr, "state (residual %g, rank deficiency %d):\n", inst.residual, inst.rank_deficiency);
+      for (const auto& q : inst.quantities)
+        std::fprintf(stderr, "  %s = %.17g%s (tackle: %s)\n", q.name.c_str(), q.value, q.determined ? "" : " (free)",
+                     tk.count(q.name) ? fmt::format("{:.17g}", tk[q.name]).c_str() : "-");
+    }
     // Scales for values near 0: the largest acceleration (at least g, or 1 m/s^2) and the
     // largest force (at least the largest mass times that acceleration).
     double force_scale = 0, accel_scale = std::max(1.0, model->gravity_magnitude());
@@ -143,11 +152,16 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
         if (q.name.rfind("guide", 0) == 0 && q.determined &&
             std::abs(q.value) > 1e-8 * (q.force ? force_scale : accel_scale))
           guides_zero = false;
-      if (inst.residual < 1e-8 && inst.rank_deficiency == 0 && guides_zero)
-        out.disagreements.push_back({"consistency (tackle: inconsistent; the model solves the balances)", 1, 0, where});
-      else
-        out.reason += " (so does the model: no state lets the balances hold without a force the description does not have)";
-      break;
+      // (tackle decides for every state at once: one state where the model finds no balance
+      // either is agreement)
+      if (inst.residual < 1e-8 && inst.rank_deficiency == 0 && guides_zero) {
+        if (!model_balanced) model_balanced = where;
+      } else {
+        model_balanced.reset();
+        out.reason += " (so does the model: at a state where the balances cannot hold without a force the description does not have)";
+        break;
+      }
+      continue;
     }
     if (inst.residual > 1e-8) {
       out.disagreements.push_back({"consistency (the model's balances cannot hold at this state)", 0, inst.residual, where});
@@ -169,6 +183,8 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
         out.disagreements.push_back({q.name, expect, q.value, where});
     }
   }
+  if (model_balanced)
+    out.disagreements.push_back({"consistency (tackle: inconsistent; the model solves the balances at every state)", 1, 0, *model_balanced});
   if (out.kind != Outcome::Kind::tackle_refused) {
     out.kind = out.disagreements.empty() ? Outcome::Kind::agree : Outcome::Kind::disagree;
     if (o.motion && a->motion && out.kind == Outcome::Kind::agree) {

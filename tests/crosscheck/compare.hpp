@@ -36,6 +36,7 @@ struct Options {
   double motion_tolerance = 1e-6;
   bool motion = true;
   std::uint64_t seed = 1;
+  double perturb = 0;             // the model's masses times 1 + perturb (a deliberately wrong model)
 };
 
 /// Compares one description (YAML text; `file` names it).

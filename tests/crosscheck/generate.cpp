@@ -15,6 +15,14 @@
 //   joints-2d     blocks on rollers joined by pin joints, pulled, sometimes held by a spring
 //   hoist-3d      a collar on a vertical rod hoisted by one or two cables over pulleys on masts
 //                 to hanging counterweights
+//   ring-2d       a hanging block, the string over two pulleys to a massless ring that moves
+//                 along a line at an angle, held by a spring (and a damper) along that line
+//   slope-2d      tilted axes: a block on a slope (roller or sliding) with a spring, a damper,
+//                 an elastic cord to a support moving in time, a force
+//   lengths-1d    strings given by their length sums (integer combinations of coordinates)
+//   carts-3d      carts on rollers joined by ball joints, pulled over a raised pulley by a
+//                 hanging block (a strand that turns)
+//   welds-2d      a block carried on another by a slider joint (with a spring) or a weld
 #include <random>
 #include <sstream>
 
@@ -413,6 +421,26 @@ std::string turning_2d(Gen& g) {
   return d.text();
 }
 
+// Blocks A, B, ... on rollers along x, each joined to the one before by a pin joint (2-D) or a
+// ball joint (3-D) at a point behind it; the first at x = first, each next `step` further.
+void carts_on_joints(Doc& d, Gen& g, int nb, bool three_d, double first, double step) {
+  const std::string zeros = three_d ? "0, 0" : "0";
+  for (int i = 0; i < nb; ++i) {
+    const std::string b = std::string(1, static_cast<char>('A' + i));
+    d.param("m_" + b, g.nice(0.5, 5), "kg");
+    d.bodies.push_back(fmt::format("{}: {{mass: m_{}, position: x_{}, center_of_mass: [x_{}, {}]}}", b, b, b, b, zeros));
+    d.connections.push_back(fmt::format("{{type: roller, body: {}, at: {}, normal: [{}]}}", b, b, three_d ? "0, 0, 1" : "0, 1"));
+    d.layout.push_back(fmt::format("x_{}: {}", b, num(first + step * i)));
+    if (i == 0) continue;
+    // (same_motion asks for no force: the bodies' own balances would contradict it, and
+    // tackle says so; it needs a system balance, as in examples/box-in-a-truck-system.yaml)
+    const std::string a = std::string(1, static_cast<char>('A' + i - 1));
+    d.param(fmt::format("b_{}", i), g.nice(0.5, 1.5), "m");
+    d.points.push_back(fmt::format("H{}: {{on: {}, offset: [\"-b_{}\", {}]}}", i, a, i, zeros));
+    d.connections.push_back(fmt::format("{{type: {}, body: {}, other: {}, at: H{}}}", three_d ? "ball_joint" : "pin_joint", a, b, i));
+  }
+}
+
 std::string joints_2d(Gen& g) {
   Doc d;
   d.title = "Generated: blocks on rollers joined by pins, pulled";
@@ -420,21 +448,7 @@ std::string joints_2d(Gen& g) {
   d.param("g", 9.81, "m/s^2");
   d.gravity = "[0, -g]";
   const int nb = g.integer(2, 3);
-  for (int i = 0; i < nb; ++i) {
-    const std::string b = std::string(1, static_cast<char>('A' + i));
-    d.param("m_" + b, g.nice(0.5, 5), "kg");
-    d.bodies.push_back(fmt::format("{}: {{mass: m_{}, position: x_{}, center_of_mass: [x_{}, 0]}}", b, b, b, b));
-    d.connections.push_back(fmt::format("{{type: roller, body: {}, at: {}, normal: [0, 1]}}", b, b));
-    d.layout.push_back(fmt::format("x_{}: {}", b, num(2.0 * (nb - i))));
-    if (i > 0) {
-      const std::string a = std::string(1, static_cast<char>('A' + i - 1));
-      // (same_motion asks for no force: the bodies' own balances would contradict it, and
-      // tackle says so; it needs a system balance, as in examples/box-in-a-truck-system.yaml)
-      d.param(fmt::format("b_{}", i), g.nice(0.5, 1.5), "m");
-      d.points.push_back(fmt::format("H{}: {{on: {}, offset: [\"-b_{}\", 0]}}", i, a, i));
-      d.connections.push_back(fmt::format("{{type: pin_joint, body: {}, other: {}, at: H{}}}", a, b, i));
-    }
-  }
+  carts_on_joints(d, g, nb, false, 2.0 * nb, -2.0);
   d.param("F", g.nice(1, 20), "N");
   d.connections.push_back("{type: force, on: A, at: A, force: [F, 0]}");
   if (g.chance(0.5)) {
@@ -478,13 +492,196 @@ std::string hoist_3d(Gen& g) {
   return d.text();
 }
 
+
+// The 2-D ring, balanced: block B hangs under pulley P; the string runs over P and P2 to a
+// massless ring R that moves along a line through P2 at an angle, held by a spring along
+// that same line (so the ring can balance).
+std::string ring_2d(Gen& g) {
+  Doc d;
+  d.title = "Generated: a hanging block, the string over two pulleys to a massless ring held by a spring along its line";
+  d.axes = "[x, y]";
+  const double mb = g.nice(1, 5), k = g.nice(50, 300), l0 = g.nice(0.5, 1.5);
+  const int phi = -g.integer(20, 160);
+  d.param("g", 9.81, "m/s^2");
+  d.param("m_B", mb, "kg");
+  d.param("k", k, "N/m");
+  d.param("l_0", l0, "m");
+  d.param("c", g.nice(2, 4), "m");
+  d.param("phi", phi, "deg");
+  const double D = 2 + l0 + mb * 9.81 / k + 1;
+  d.param("D", D, "m");
+  d.gravity = "[0, -g]";
+  d.bodies.push_back("B: {mass: m_B, position: y_B, center_of_mass: [0, y_B]}");
+  d.bodies.push_back("R: {mass: 0, position: u, center_of_mass: [\"c + u*cos(phi)\", \"u*sin(phi)\"]}");
+  d.points.push_back("P: [0, 0]");
+  d.points.push_back("P2: [c, 0]");
+  d.points.push_back("Q: [\"c + D*cos(phi)\", \"D*sin(phi)\"]");
+  d.connections.push_back("{type: pulley, at: P}");
+  d.connections.push_back("{type: pulley, at: P2}");
+  d.strings.push_back("{name: s, path: [B, P, P2, R], tension: T}");
+  d.connections.push_back("{type: spring, path: [R, Q], k: k, rest_length: l_0}");
+  if (g.chance(0.5)) {
+    d.param("b", g.nice(1, 10), "N*s/m");
+    d.connections.push_back("{type: damper, path: [R, Q], c: b}");
+  }
+  const double yb = -g.nice(1, 3);
+  d.layout.push_back(fmt::format("y_B: {}", num(yb)));
+  d.layout.push_back(fmt::format("u: {}", num(D - l0 - mb * 9.81 / k + g.nice(-0.25, 0.25))));
+  motion_for(d, g, {{"y_B", yb}}, 0.5);
+  return d.text();
+}
+
+// 2-D on tilted axes (x up the slope, y across it): a block on the slope on a roller or
+// sliding, held by a spring and a damper to a point up the slope, an elastic cord to a
+// support that moves in time, pulled along the slope.
+std::string slope_2d(Gen& g) {
+  Doc d;
+  d.title = "Generated: a block on a slope (tilted axes), springs, a damper and a driven cord";
+  d.axes = "[x, y]";
+  d.param("g", 9.81, "m/s^2");
+  d.param("theta", g.integer(5, 45), "deg");
+  d.param("m", g.nice(1, 5), "kg");
+  d.param("k", g.nice(50, 200), "N/m");
+  d.param("l_0", g.nice(0.5, 1.5), "m");
+  d.param("D", g.nice(3, 4), "m");
+  d.gravity = "{magnitude: g, tilt: theta}";
+  d.bodies.push_back("A: {mass: m, position: s, center_of_mass: [s, 0]}");
+  d.points.push_back("Q: [D, 0]");
+  if (g.chance(0.5)) {
+    d.param("mu", g.nice(0.05, 0.3), "");
+    d.connections.push_back(fmt::format("{{type: sliding, body: A, at: A, normal: [0, 1], sliding: [{}, 0], mu: mu}}",
+                                        g.chance(0.5) ? "-1" : "1"));
+  } else {
+    d.connections.push_back("{type: roller, body: A, at: A, normal: [0, 1]}");
+  }
+  d.connections.push_back("{type: spring, path: [A, Q], k: k, rest_length: l_0}");
+  if (g.chance(0.5)) {
+    d.param("c", g.nice(1, 10), "N*s/m");
+    d.connections.push_back("{type: damper, path: [A, Q], c: c}");
+  }
+  if (g.chance(0.5)) {
+    d.param("a", g.nice(0.05, 0.3), "m");
+    d.param("w", g.nice(1, 8), "rad/s");
+    d.param("k_2", g.nice(20, 100), "N/m");
+    d.param("l_2", g.nice(0.5, 1), "m");
+    d.points.push_back("S: [\"-1 + a*cos(w*t)\", 0]");
+    d.param("one", 1, "m");
+    d.points.back() = "S: [\"-one + a*cos(w*t)\", 0]";
+    d.connections.push_back("{type: elastic_cord, name: cord, path: [S, A], k: k_2, rest_length: l_2}");
+  }
+  if (g.chance(0.5)) {
+    d.param("F", g.nice(-10, 10), "N");
+    d.connections.push_back("{type: force, on: A, at: A, force: [F, 0]}");
+  }
+  const double s0 = g.nice(1, 2);
+  d.layout.push_back(fmt::format("s: {}", num(s0)));
+  motion_for(d, g, {{"s", s0}}, 0.5);
+  return d.text();
+}
+
+// 1-D strings given by their length sums (the book's way): each string's length is an
+// integer combination of the blocks' coordinates.
+std::string lengths_1d(Gen& g) {
+  Doc d;
+  d.title = "Generated: strings given by their length sums";
+  d.param("g", 9.81, "m/s^2");
+  d.gravity = "-g";
+  const int nb = g.integer(2, 4);
+  std::vector<std::string> names;
+  for (int i = 0; i < nb; ++i) {
+    const std::string b = fmt::format("B{}", i + 1);
+    names.push_back(b);
+    d.param("m_" + b, g.nice(1, 10), "kg");
+    d.bodies.push_back(fmt::format("{}: {{mass: m_{}, position: y_{}}}", b, b, b));
+    d.layout.push_back(fmt::format("y_{}: {}", b, num(-1.0 - i)));
+  }
+  const int strings = g.integer(1, nb - 1);
+  for (int k = 0; k < strings; ++k) {
+    // string k holds block k and some later ones: its length sum has a nonzero coefficient
+    // for block k, so the strings are independent
+    std::string sum;
+    for (int i = k; i < nb; ++i) {
+      int c = i == k ? g.integer(1, 3) : g.integer(-3, 3);
+      if (c == 0) continue;
+      sum += fmt::format("{}{}*y_{}", sum.empty() ? (c < 0 ? "-" : "") : (c < 0 ? " - " : " + "), std::abs(c), names[static_cast<std::size_t>(i)]);
+    }
+    d.strings.push_back(fmt::format("{{name: s{}, length: \"{}\", tension: T_{}}}", k + 1, sum, k + 1));
+  }
+  if (g.chance(0.5)) {
+    d.param("F", g.nice(-30, 30), "N");
+    d.connections.push_back(fmt::format("{{type: force, on: {}, force: F}}", names.back()));
+  }
+  return d.text();
+}
+
+// 3-D carts on rollers joined by ball joints, one pulled by a string over a pulley up and to
+// the side to a hanging block (a strand that turns in 3-D).
+std::string carts_3d(Gen& g) {
+  Doc d;
+  d.title = "Generated: carts on ball joints pulled over a pulley by a hanging block (3-D)";
+  d.axes = "[x, y, z]";
+  d.param("g", 9.81, "m/s^2");
+  d.gravity = "[0, 0, -g]";
+  carts_on_joints(d, g, g.integer(1, 3), true, -2.0, -2.0);
+  // the pulley straight ahead of the first cart, up: the strand stays in the x-z plane (a
+  // strand with a y component would pull the carts sideways, which nothing holds)
+  d.param("m_W", g.nice(0.5, 5), "kg");
+  d.param("h", g.nice(1, 3), "m");
+  d.bodies.push_back("W: {mass: m_W, position: z_W, center_of_mass: [0, 0, z_W]}");
+  d.points.push_back("P: [0, 0, h]");
+  d.connections.push_back("{type: pulley, at: P}");
+  d.strings.push_back("{name: s, path: [A, P, W], tension: T}");
+  d.layout.push_back("z_W: -1");
+  motion_for(d, g, {{"x_A", -2.0}}, 0.5);
+  return d.text();
+}
+
+// 2-D welded and sliding joints: block A on a roller carries block B on a slider joint
+// (B moves along A's top) or welded to it, B pulled, springs along the slide.
+std::string welds_2d(Gen& g) {
+  Doc d;
+  d.title = "Generated: a block carrying another on a slider or a weld";
+  d.axes = "[x, y]";
+  d.param("g", 9.81, "m/s^2");
+  d.gravity = "[0, -g]";
+  d.param("m_A", g.nice(2, 10), "kg");
+  d.param("m_B", g.nice(0.5, 3), "kg");
+  d.param("h", g.nice(0.5, 1), "m");
+  d.bodies.push_back("A: {mass: m_A, position: x_A, center_of_mass: [x_A, 0]}");
+  const bool weld = g.chance(0.4);
+  d.bodies.push_back("B: {mass: m_B, position: x_B, center_of_mass: [x_B, h]}");
+  // two rollers under A, so that it can take a moment without tipping
+  d.param("w", g.nice(0.5, 1.5), "m");
+  d.points.push_back("E1: {on: A, offset: [\"-w\", 0]}");
+  d.points.push_back("E2: {on: A, offset: [w, 0]}");
+  d.connections.push_back("{type: roller, body: A, at: E1, normal: [0, 1]}");
+  d.connections.push_back("{type: roller, body: A, at: E2, normal: [0, 1]}");
+  d.points.push_back("S: {on: B, offset: [0, 0]}");
+  if (weld) d.connections.push_back("{type: weld_joint, body: B, other: A, at: S}");
+  else d.connections.push_back("{type: slider_joint, body: B, other: A, at: S, normal: [0, 1]}");
+  d.param("F", g.nice(1, 20), "N");
+  d.connections.push_back("{type: force, on: B, at: B, force: [F, 0]}");
+  if (!weld && g.chance(0.7)) {
+    d.param("k", g.nice(10, 100), "N/m");
+    d.param("l_0", g.nice(0.5, 1.5), "m");
+    d.points.push_back("E: {on: A, offset: [\"-l_0\", h]}");  // (a force on A above its rollers)
+    d.connections.push_back("{type: spring, path: [E, B], k: k, rest_length: l_0}");
+  }
+  d.layout.push_back("x_A: 0");
+  d.layout.push_back(fmt::format("x_B: {}", num(g.nice(-0.25, 0.25))));
+  if (weld) motion_for(d, g, {{"x_A", 0.0}}, 0.5);
+  return d.text();
+}
+
 }  // namespace
 
 std::string generate(std::uint64_t seed, std::string* kind) {
   Gen g(seed);
   static const std::pair<const char*, std::string (*)(Gen&)> families[] = {
       {"pulleys-1d", pulleys_1d}, {"strands-1d", strands_1d}, {"chain-1d", chain_1d},   {"ring-1d", ring_1d},
-      {"incline-2d", incline_2d}, {"turning-2d", turning_2d}, {"joints-2d", joints_2d}, {"hoist-3d", hoist_3d}};
+      {"incline-2d", incline_2d}, {"turning-2d", turning_2d}, {"joints-2d", joints_2d}, {"hoist-3d", hoist_3d},
+      {"ring-2d", ring_2d},       {"slope-2d", slope_2d},     {"lengths-1d", lengths_1d}, {"carts-3d", carts_3d},
+      {"welds-2d", welds_2d}};
   const auto& f = families[seed % (sizeof(families) / sizeof(families[0]))];
   if (kind) *kind = f.first;
   return f.second(g);

@@ -1,7 +1,8 @@
 // tackle_crosscheck: the independent numeric model against tackle's closed forms.
 //   tackle_crosscheck examples DIR              every DIR/*.yaml (skipped ones with the reason)
-//   tackle_crosscheck generated N [SEED] [--motion-every K] [--quiet]
-//                                               N random mechanisms from SEED
+//   tackle_crosscheck generated N [SEED] [--motion-every K] [--quiet] [--perturb-masses X]
+//                                               N random mechanisms from SEED (X: the model's
+//                                               masses times 1 + X, which must disagree)
 //   tackle_crosscheck files FILE...             description files (the regressions); a file
 //                                               named expected-disagreement-* must disagree
 //   tackle_crosscheck print SEED                the mechanism SEED generates, as YAML
@@ -37,7 +38,7 @@ void print_disagreements(const crosscheck::Outcome& o, std::size_t limit = 4) {
 }
 
 int usage() {
-  std::cerr << "usage: tackle_crosscheck examples DIR | generated N [SEED] [--motion-every K] [--quiet] | files FILE... | print SEED\n";
+  std::cerr << "usage: tackle_crosscheck examples DIR | generated N [SEED] [--motion-every K] [--quiet] [--perturb-masses X] | files FILE... | print SEED\n";
   return 2;
 }
 
@@ -98,9 +99,11 @@ int main(int argc, char** argv) {
     std::uint64_t seed = 1;
     int motion_every = 1;
     bool quiet = false;
+    double perturb = 0;
     for (int i = 3; i < argc; ++i) {
       const std::string a = argv[i];
       if (a == "--motion-every" && i + 1 < argc) motion_every = std::stoi(argv[++i]);
+      else if (a == "--perturb-masses" && i + 1 < argc) perturb = std::stod(argv[++i]);
       else if (a == "--quiet") quiet = true;
       else seed = std::stoull(a);
     }
@@ -114,6 +117,7 @@ int main(int argc, char** argv) {
       crosscheck::Options o;
       o.seed = s;
       o.states = 3;
+      o.perturb = perturb;
       o.motion = motion_every > 0 && i % motion_every == 0;
       // (without the motion compared, its section goes: tackle's motion stage is not needed)
       if (!o.motion && text.find("\nmotion:\n") != std::string::npos) text.erase(text.find("\nmotion:\n") + 1);

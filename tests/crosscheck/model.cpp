@@ -76,7 +76,7 @@ double Model::number(const tackle::Text& t) const {
   return e.eval(vars);
 }
 
-Model::Model(const tackle::Description& d, std::mt19937_64& rng) {
+Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb) {
   if (!d.phases.empty()) throw Unsupported("phases (each phase is a problem of its own)");
   if (d.impact) throw Unsupported("an impact (momentum balance over an instant, no forces)");
   if (d.interval) throw Unsupported("an interval of constant acceleration (averaged forces)");
@@ -144,7 +144,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng) {
     Body b;
     b.name = bd.name.text;
     if (!bd.mass) throw Unsupported("body '" + b.name + "' has no mass (kinematics only: no balance is written for it)");
-    b.mass = number(*bd.mass);
+    b.mass = number(*bd.mass) * (1 + perturb);
     b.massive = b.mass != 0;
     if (b.mass < 0) throw Unsupported("a negative mass");
     if (n == 1) {
@@ -439,7 +439,15 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng) {
         cons_.push_back(k);
       };
       if (type == "slider_joint") {
-        relative("N_" + at, unit_vec(c, "normal"));
+        // across the slide, which turns with `other`; the point slides along it, so the
+        // reaction on `other` acts where the point is now, not at a point of `other`
+        Constraint k;
+        k.kind = Constraint::slide;
+        k.name = "N_" + at;
+        k.points = {pa};
+        k.other = o;
+        k.dir = unit_vec(c, "normal");
+        cons_.push_back(k);
       } else {
         for (int i = 0; i < n; ++i) relative(type == "same_motion" ? "" : at + "_" + xyz[i], Eigen::VectorXd::Unit(n, i));
       }
@@ -618,6 +626,22 @@ S Model::value(const Constraint& c, const std::vector<S>& q, const S& t) const {
       const auto a = position(c.points[0], q, vars, t), b = position(c.points[1], q, vars, t);
       S out(0.0);
       for (int i = 0; i < dims_; ++i) out = out + (a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>(i)]) * S(c.dir(i));
+      return out;
+    }
+    case Constraint::slide: {
+      const auto vars = variables(q, Eigen::VectorXd(), t);
+      const auto p = position(c.points[0], q, vars, t);
+      const Body& o = bodies_[static_cast<std::size_t>(c.other)];
+      std::vector<S> n(static_cast<std::size_t>(dims_));
+      for (int i = 0; i < dims_; ++i) n[static_cast<std::size_t>(i)] = S(c.dir(i));
+      if (o.r0 >= 0 && dims_ == 2) {
+        const S th = q[static_cast<std::size_t>(o.r0)];
+        n[0] = S(c.dir(0)) - th * S(c.dir(1));
+        n[1] = S(c.dir(1)) + th * S(c.dir(0));
+      }
+      S out(0.0);
+      for (int i = 0; i < dims_; ++i)
+        out = out + n[static_cast<std::size_t>(i)] * (p[static_cast<std::size_t>(i)] - q[static_cast<std::size_t>(o.q0 + i)]);
       return out;
     }
     case Constraint::rotation: {

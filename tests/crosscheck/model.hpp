@@ -55,8 +55,9 @@ struct Instant {
 class Model {
  public:
   /// Builds the model from a description (throws Unsupported, with the reason, for what it
-  /// cannot express). `rng` draws values for parameters that have none.
-  Model(const tackle::Description& d, std::mt19937_64& rng);
+  /// cannot express). `rng` draws values for parameters that have none. `perturb` scales
+  /// every mass by 1 + perturb (the test that the comparison catches a wrong model).
+  Model(const tackle::Description& d, std::mt19937_64& rng, double perturb = 0);
 
   [[nodiscard]] int dims() const { return dims_; }
   [[nodiscard]] int dofs() const { return ndof_; }
@@ -115,11 +116,12 @@ class Model {
   struct Constraint {
     std::string name;                // tackle's unknown, "" when it has none, "guide ..." for guides
     bool guide = false;
-    enum Kind { path, length_expr, project, relative, rotation, guide_line } kind = path;
-    std::vector<PointRef> points;    // path: in order; project: one; relative: two
+    enum Kind { path, length_expr, project, relative, slide, rotation, guide_line } kind = path;
+    std::vector<PointRef> points;    // path: in order; project: one; relative: two; slide: the point on `body`
     Expr length;                     // length_expr
     Eigen::VectorXd dir;             // project/relative/guide: the unit direction (rotation: axis index in dir[0])
-    int body = -1, other = -1;       // rotation: the bodies (other -1: the ground); guide: the body
+    int body = -1, other = -1;       // rotation: the bodies (other -1: the ground); guide: the body;
+                                     // slide: `other` carries the slide (dir turns with it)
     double g_sign = 1;               // G = g_sign J^T, unless friction is set
     double mu = 0;                   // sliding: friction -mu N along `sliding`
     Eigen::VectorXd sliding;
