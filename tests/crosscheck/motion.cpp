@@ -48,7 +48,8 @@ Outcome compare_motion(const tackle::Analysis& a, const Model& m, const tackle::
   try {
     sim = tackle::simulate(a, spec, tackle::Location{});
   } catch (const std::exception& e) {
-    out.motion_note = std::string("tackle simulate: ") + e.what();
+    // tackle solved the instant but cannot follow it in time, where the model can
+    out.disagreements.push_back({std::string("motion: tackle's simulate refuses it: ") + e.what(), 0, 0, "from the initial values"});
     return out;
   }
   // The model's motion: positions and rates of every coordinate, Dormand-Prince 5(4) at a
