@@ -59,8 +59,13 @@ Dependents dependents(const Model& m, const EquationSystem& s, const MotionSpec&
     const Solution r = solve_equations(m.file, s.rate_equations, dep_rates);
     for (const auto& v : r.values) d.rates[v.unknown] = v.value;
   }
+  // A dependent coordinate is needed where it appears, also inside a strand's length that
+  // turns with it (l_RG = sqrt(L^2 + (H + y_R)^2) in a force on a massless ring).
   bool coords_needed = false;
-  for (const auto& c : dep_coords) coords_needed = coords_needed || needed.has(c);
+  for (const auto& c : dep_coords) {
+    coords_needed = coords_needed || needed.has(c);
+    for (const auto& l : m.lengths) coords_needed = coords_needed || (needed.has(l.symbol) && l.squared.has(c));
+  }
   if (!coords_needed) return d;
   // quantity(q) = quantity(q at t = 0) for each constraint.
   std::vector<Equation> eqs;
@@ -328,6 +333,12 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     eom.acceleration.push_back(*v);
     all += *v;
   }
+  // The dependent coordinates are needed wherever the motion follows something: the
+  // accelerations, the quantities asked for and the validity conditions (a string's T >= 0
+  // in the spring end x_S = 2 x + C of a string over a movable pulley).
+  for (const auto& w : m.wanted) all += substituted(w.expr, sol.general);
+  for (const auto& c : sol.conditions)
+    if (!c.depends_on_free) all += c.expr;
   const Dependents dep = dependents(m, s, spec, all);
   if (!dep.problem.empty()) {
     out.problem = dep.problem;
@@ -632,6 +643,13 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
       if (value.has(c)) known = false;
     if (known) out.in_state.emplace_back(si->sym, value);
   }
+  // Every other unknown the solve determines (a tension to plot that `find` does not list).
+  for (const auto& u : s.unknowns) {
+    if (std::any_of(out.in_state.begin(), out.in_state.end(), [&](const auto& p) { return p.first.is_equal(u); })) continue;
+    const ex value = put_in(substituted(u, sol.general), dep);
+    if (std::none_of(m.candidates.begin(), m.candidates.end(), [&](const ex& c) { return value.has(c); }))
+      out.in_state.emplace_back(u, value);
+  }
   for (const auto& c : sol.conditions)
     if (!c.depends_on_free) out.conditions_in_state.emplace_back(&c, put_in(c.expr, dep));
   if (!out.response) return out;
@@ -678,10 +696,12 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   const auto params = parameters_of(table);
   const exmap values = table.values();
   for (const auto& c : sol.conditions) {
-    if (c.depends_on_free || (!c.expr.has(eom.q[0]) && !c.expr.has(eom.dq[0]))) continue;
+    if (c.depends_on_free) continue;
+    const ex in_state = put_in(c.expr, dep);
+    if (!in_state.has(eom.q[0]) && !in_state.has(eom.dq[0]) && !in_state.has(t)) continue;  // constant in time
     ConditionInTime ct;
     ct.condition = *c.condition;
-    const ex g = substituted(put_in(c.expr, dep), along);
+    const ex g = substituted(in_state, along);
     ct.of_t = in_lambda(g);
     const std::string& op = c.condition->op;
     if (r.regime == Response::Regime::undamped) {

@@ -20,11 +20,13 @@ namespace {
 using State = std::vector<double>;
 
 // An expression in the state, the parameters put in (definitions, geometric lengths and
-// values), ready to compile.
-ex in_numbers(const ex& e, const SymbolTable& table, const exmap& values) {
+// values), ready to compile. A turning length's definition may bring in a dependent
+// coordinate (the massless ring's y_R in l_RG): `dependent` gives it in the state.
+ex in_numbers(const ex& e, const SymbolTable& table, const exmap& values, const exmap& dependent = {}) {
   ex out = e;
   const exmap defs = table.definitions(true);
   for (int depth = 0; depth < 8; ++depth) out = substituted(out, defs);
+  if (!dependent.empty()) out = substituted(out, dependent);
   return substituted(out, values);
 }
 
@@ -58,12 +60,17 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
   exmap values = table.values();
   for (const auto& x : inputs) values.erase(x);  // a coordinate given a value at the instant varies now
   exmap state_of;  // quantities asked for, dependent coordinates and rates -> their expressions in the state
-  for (const auto& [sym, e] : mo.in_state) state_of[sym] = e;
+  exmap dependent;  // the dependent coordinates and rates alone
+  for (const auto& [sym, e] : mo.in_state) {
+    state_of[sym] = e;
+    const SymbolInfo* info = table.find(sym);
+    if (info && (info->role == SymbolRole::coordinate || info->role == SymbolRole::rate)) dependent[sym] = e;
+  }
 
   std::vector<Diagnostic> problems;
   auto compile = [&](const ex& e, const std::string& what) -> std::optional<Compiled> {
     std::string problem;
-    auto c = Compiled::compile(in_numbers(e, table, values), inputs, problem);
+    auto c = Compiled::compile(in_numbers(e, table, values, dependent), inputs, problem);
     if (!c) problems.push_back({where, what + ": " + problem});
     return c;
   };

@@ -273,7 +273,18 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     text(group.size() == 1 ? "Redundant: " + group[0] + " holds identically (it reads 0 = 0)."
                            : "Redundant: " + join(group, ", ") + " are linearly dependent (one follows from the others).");
   switch (sol.status) {
-    case Solution::Status::determined: d.status = "determined"; text("Every unknown is determined."); break;
+    case Solution::Status::determined: {
+      d.status = "determined";
+      // The status of each quantity is said once: where an answer asked for still needs a
+      // quantity no equation gives, the line does not claim more than the solve found.
+      const bool every_answer = std::none_of(ans.answers.begin(), ans.answers.end(), [](const Answer& a) {
+        return a.status == Answer::Status::undetermined || a.status == Answer::Status::not_in_equations;
+      });
+      text(every_answer ? "Every unknown is determined."
+                        : "Every unknown of these equations is determined; an answer below that needs a quantity they do not "
+                          "give says which.");
+      break;
+    }
     case Solution::Status::underdetermined:
       d.status = "underdetermined";
       {

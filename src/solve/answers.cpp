@@ -67,12 +67,23 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
       wanted.push_back({info->name, info->tex, u, false, info->dimension, std::nullopt});
     }
   // What a closed form may not contain: anything but parameters, defined quantities, time
-  // and what is given.
+  // and what is given. At one instant the positions and velocities are the state the balances
+  // are written in: known symbols, as a person keeps x in `k (D - x - l_0)/m`. They are
+  // unknowns only where a question asks for one of their kind (then the constraints, solved
+  // at that level, give them or leave them free, and an answer never is itself).
+  bool positions_asked = static_cast<bool>(sol.positions), rates_asked = static_cast<bool>(sol.rates);
+  for (const auto& w : wanted)
+    if (const SymbolInfo* info = w.defined ? nullptr : table.find(w.expr)) {
+      positions_asked = positions_asked || info->role == SymbolRole::coordinate;
+      rates_asked = rates_asked || info->role == SymbolRole::rate;
+    }
   std::unordered_set<ex, ExHash, ex_is_equal> not_known;
-  for (const auto& sym : table.all())
-    if (!(sym->role == SymbolRole::parameter || sym->role == SymbolRole::defined || sym->role == SymbolRole::time ||
+  for (const auto& sym : table.all()) {
+    const bool state = (sym->role == SymbolRole::coordinate && !positions_asked) || (sym->role == SymbolRole::rate && !rates_asked);
+    if (!(sym->role == SymbolRole::parameter || sym->role == SymbolRole::defined || sym->role == SymbolRole::time || state ||
           contains(m.given, sym->sym)))
       not_known.insert(sym->sym);
+  }
   for (const auto& w : wanted) {
     Answer a;
     a.name = w.name;

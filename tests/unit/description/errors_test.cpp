@@ -275,12 +275,31 @@ TEST_CASE("Description: a force element whose path never changes length is an er
                  "fixed; expected a path between points that move apart)"});
 }
 
-TEST_CASE("Spring: an answer that needs the position says to give it", "[spring]") {
+TEST_CASE("Spring: at one instant the position and velocity are known symbols of the answer (issue 30)", "[spring][trust]") {
+  // Without `given`, the answer keeps x and dot(x) as a person writes it (a regression had made
+  // it "not determined: it depends on x, dot(x)").
   const auto a = tackle::test::run_text(spring_block + "find: [ddot(x)]\n");
   const tackle::Derivation d = tackle::explain(*a);
   REQUIRE(d.answers.size() == 1);
+  CHECK(d.answers[0].status == tackle::Answer::Status::determined);
+  REQUIRE(d.answers[0].closed_form);
+  // By hand: m ddot(x) = -k (x - l_0) - c dot(x).
+  const auto& t = a->model.symbols;
+  const GiNaC::ex k = t->find("k")->sym, c = t->find("c")->sym, m = t->find("m")->sym, x = t->find("x")->sym,
+                  v = t->find("dot(x)")->sym, l_0 = t->find("l_0")->sym;
+  CHECK(GiNaC::normal(*d.answers[0].closed_form - (-k * (x - l_0) - c * v) / m).is_zero());
+  CHECK(d.status == "determined");
+}
+
+TEST_CASE("Spring: a position asked for that the equations cannot give says what is missing", "[spring][trust]") {
+  // A position question makes positions unknowns: the spring's x is not given by any
+  // constraint, and the answer is never x itself.
+  const auto a = tackle::test::run_text(spring_block + "find: [x, ddot(x)]\n");
+  const tackle::Derivation d = tackle::explain(*a);
+  REQUIRE(d.answers.size() == 2);
   CHECK(d.answers[0].status == tackle::Answer::Status::undetermined);
-  CHECK(d.answers[0].reason == "it depends on x, dot(x) (give them in 'given' for the answer at any instant)");
+  CHECK(d.answers[1].status == tackle::Answer::Status::undetermined);
+  CHECK(d.answers[1].reason == "it depends on x (give it in 'given' for the answer at any instant)");
 }
 
 TEST_CASE("Description: an argument that is not a name is reported once, not used (found by fuzzing)", "[errors][fuzz]") {
