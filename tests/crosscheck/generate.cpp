@@ -23,6 +23,8 @@
 //   carts-3d      carts on rollers joined by ball joints, pulled over a raised pulley by a
 //                 hanging block (a strand that turns)
 //   welds-2d      a block carried on another by a slider joint (with a spring) or a weld
+//   pulley-block-2d  a movable pulley block (massless or not) on two turning strands, over a
+//                 fixed pulley to a hanging block, sometimes a block on a spring under it
 #include <random>
 #include <sstream>
 
@@ -673,6 +675,57 @@ std::string welds_2d(Gen& g) {
   return d.text();
 }
 
+// A movable pulley block in 2-D: the string runs from the anchor A1 at (-b, e) down around
+// the block Q (in a vertical slot at x = 0, which pushes across it) and up over the fixed
+// pulley P at (a, h), then down to the hanging block W; the strands at Q turn as Q moves. Q
+// has a mass or none; a block B may hang from Q on a spring. (Without the slot, and with
+// mirror-image strands, tackle finds the balances inconsistent: see
+// regressions/expected-disagreement-pulley-block-on-equal-turning-strands.yaml.)
+std::string pulley_block_2d(Gen& g) {
+  Doc d;
+  d.title = "Generated: a movable pulley block on two turning strands, over a fixed pulley to a hanging block";
+  d.axes = "[x, y]";
+  d.param("g", 9.81, "m/s^2");
+  d.gravity = "[0, -g]";
+  d.param("a", g.nice(0.5, 2), "m");
+  d.param("h", g.nice(0.5, 1), "m");
+  d.param("m_W", g.nice(1, 5), "kg");
+  const bool massless = g.chance(0.5);
+  if (massless) {
+    d.bodies.push_back("Q: {mass: 0, position: y_Q, center_of_mass: [0, y_Q]}");
+  } else {
+    d.param("m_Q", g.nice(1, 8), "kg");
+    d.bodies.push_back("Q: {mass: m_Q, position: y_Q, center_of_mass: [0, y_Q]}");
+  }
+  d.bodies.push_back("W: {mass: m_W, position: y_W, center_of_mass: [a, y_W]}");
+  d.param("b", g.nice(0.5, 2), "m");
+  d.param("e", g.nice(0.5, 1.5), "m");
+  d.points.push_back("A1: [\"-b\", e]");
+  d.connections.push_back("{type: roller, body: Q, at: Q, normal: [1, 0]}");
+  d.points.push_back("P: [a, h]");
+  d.connections.push_back("{type: pulley, at: P}");
+  d.strings.push_back("{name: s, path: [A1, Q, P, W], tension: T}");
+  const double yq = -g.nice(1, 2), yw = -g.nice(1, 2);
+  d.layout.push_back(fmt::format("y_Q: {}", num(yq)));
+  d.layout.push_back(fmt::format("y_W: {}", num(yw)));
+  std::vector<std::pair<std::string, double>> independent = {{"y_Q", yq}};
+  if (massless || g.chance(0.5)) {
+    // a block on a spring under Q (a massless Q then has a load to carry)
+    d.param("m_B", g.nice(1, 5), "kg");
+    d.param("k", g.nice(50, 300), "N/m");
+    d.param("l_0", g.nice(0.5, 1), "m");
+    d.bodies.push_back("B: {mass: m_B, position: y_B, center_of_mass: [0, y_B]}");
+    d.connections.push_back("{type: spring, path: [Q, B], k: k, rest_length: l_0}");
+    const double yb = yq - 1 - g.nice(0, 0.5);
+    d.layout.push_back(fmt::format("y_B: {}", num(yb)));
+    independent.emplace_back("y_B", yb);
+  }
+  // (y_Q is the motion's coordinate: y_W follows from the string, while y_Q inside a turning
+  // strand's length would not follow from y_W)
+  motion_for(d, g, independent, 0.25);
+  return d.text();
+}
+
 }  // namespace
 
 std::string generate(std::uint64_t seed, std::string* kind) {
@@ -681,7 +734,7 @@ std::string generate(std::uint64_t seed, std::string* kind) {
       {"pulleys-1d", pulleys_1d}, {"strands-1d", strands_1d}, {"chain-1d", chain_1d},   {"ring-1d", ring_1d},
       {"incline-2d", incline_2d}, {"turning-2d", turning_2d}, {"joints-2d", joints_2d}, {"hoist-3d", hoist_3d},
       {"ring-2d", ring_2d},       {"slope-2d", slope_2d},     {"lengths-1d", lengths_1d}, {"carts-3d", carts_3d},
-      {"welds-2d", welds_2d}};
+      {"welds-2d", welds_2d},     {"pulley-block-2d", pulley_block_2d}};
   const auto& f = families[seed % (sizeof(families) / sizeof(families[0]))];
   if (kind) *kind = f.first;
   return f.second(g);
