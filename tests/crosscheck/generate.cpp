@@ -25,6 +25,7 @@
 //   welds-2d      a block carried on another by a slider joint (with a spring) or a weld
 //   pulley-block-2d  a movable pulley block (massless or not) on two turning strands, over a
 //                 fixed pulley to a hanging block, sometimes a block on a spring under it
+#include <cmath>
 #include <random>
 #include <sstream>
 
@@ -687,8 +688,9 @@ std::string pulley_block_2d(Gen& g) {
   d.axes = "[x, y]";
   d.param("g", 9.81, "m/s^2");
   d.gravity = "[0, -g]";
-  d.param("a", g.nice(0.5, 2), "m");
-  d.param("h", g.nice(0.5, 1), "m");
+  const double a = g.nice(0.5, 2), h = g.nice(0.5, 1);
+  d.param("a", a, "m");
+  d.param("h", h, "m");
   d.param("m_W", g.nice(1, 5), "kg");
   const bool massless = g.chance(0.5);
   if (massless) {
@@ -698,14 +700,17 @@ std::string pulley_block_2d(Gen& g) {
     d.bodies.push_back("Q: {mass: m_Q, position: y_Q, center_of_mass: [0, y_Q]}");
   }
   d.bodies.push_back("W: {mass: m_W, position: y_W, center_of_mass: [a, y_W]}");
-  d.param("b", g.nice(0.5, 2), "m");
-  d.param("e", g.nice(0.5, 1.5), "m");
+  const double bx = g.nice(0.5, 2), e = g.nice(0.5, 1.5);
+  d.param("b", bx, "m");
+  d.param("e", e, "m");
   d.points.push_back("A1: [\"-b\", e]");
-  d.connections.push_back("{type: roller, body: Q, at: Q, normal: [1, 0]}");
   d.points.push_back("P: [a, h]");
   d.connections.push_back("{type: pulley, at: P}");
   d.strings.push_back("{name: s, path: [A1, Q, P, W], tension: T}");
   const double yq = -g.nice(1, 2), yw = -g.nice(1, 2);
+  // the slot pushes against the strands' pull across it (a roller pushes one way only)
+  const double pull = -bx / std::hypot(bx, e - yq) + a / std::hypot(a, h - yq);
+  d.connections.push_back(fmt::format("{{type: roller, body: Q, at: Q, normal: [{}, 0]}}", pull > 0 ? -1 : 1));
   d.layout.push_back(fmt::format("y_Q: {}", num(yq)));
   d.layout.push_back(fmt::format("y_W: {}", num(yw)));
   std::vector<std::pair<std::string, double>> independent = {{"y_Q", yq}};
