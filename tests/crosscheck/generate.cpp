@@ -25,6 +25,8 @@
 //   welds-2d      a block carried on another by a slider joint (with a spring) or a weld
 //   pulley-block-2d  a movable pulley block (massless or not) on two turning strands, over a
 //                 fixed pulley to a hanging block, sometimes a block on a spring under it
+//   incline-3d    a block on a plane rising along any horizontal direction (smooth or sliding),
+//                 over a pulley at the top to a hanging block, sometimes a spring
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -731,6 +733,48 @@ std::string pulley_block_2d(Gen& g) {
   return d.text();
 }
 
+// 3-D: a block on a plane that rises at theta along the horizontal direction psi (smooth or
+// sliding), tied over a pulley at the top edge to a hanging block, sometimes a spring down
+// the slope.
+std::string incline_3d(Gen& g) {
+  Doc d;
+  d.title = "Generated: a block on an inclined plane in 3-D over a pulley to a hanging block";
+  d.axes = "[x, y, z]";
+  d.param("g", 9.81, "m/s^2");
+  d.param("m_A", g.nice(1, 10), "kg");
+  d.param("m_B", g.nice(1, 10), "kg");
+  d.param("theta", g.integer(10, 60), "deg");
+  d.param("psi", g.integer(0, 359), "deg");
+  d.param("L", g.nice(3, 5), "m");
+  d.gravity = "[0, 0, -g]";
+  const std::string u = "\"cos(theta)*cos(psi)\", \"cos(theta)*sin(psi)\", \"sin(theta)\"";
+  const std::string n = "\"-sin(theta)*cos(psi)\", \"-sin(theta)*sin(psi)\", \"cos(theta)\"";
+  d.bodies.push_back("A: {mass: m_A, position: s, center_of_mass: [\"s*cos(theta)*cos(psi)\", \"s*cos(theta)*sin(psi)\", \"s*sin(theta)\"]}");
+  d.bodies.push_back("B: {mass: m_B, position: z_B, center_of_mass: [\"L*cos(theta)*cos(psi)\", \"L*cos(theta)*sin(psi)\", z_B]}");
+  d.points.push_back("P: [\"L*cos(theta)*cos(psi)\", \"L*cos(theta)*sin(psi)\", \"L*sin(theta)\"]");
+  d.connections.push_back("{type: pulley, at: P}");
+  if (g.chance(0.5)) {
+    d.param("mu", g.nice(0.05, 0.4), "");
+    const bool down = g.chance(0.5);
+    d.connections.push_back(fmt::format("{{type: sliding, body: A, at: A, normal: [{}], sliding: [{}], mu: mu}}", n,
+                                        down ? "\"-cos(theta)*cos(psi)\", \"-cos(theta)*sin(psi)\", \"-sin(theta)\"" : u));
+  } else {
+    d.connections.push_back(fmt::format("{{type: roller, body: A, at: A, normal: [{}]}}", n));
+  }
+  d.strings.push_back("{name: s, path: [A, P, B], tension: T}");
+  if (g.chance(0.5)) {
+    d.points.push_back("O: [0, 0, 0]");
+    d.param("k", g.nice(10, 100), "N/m");
+    d.param("l_0", g.nice(0.2, 1), "m");
+    d.connections.push_back("{type: spring, path: [O, A], k: k, rest_length: l_0}");
+  }
+  const double s0 = g.nice(1, 2);
+  d.layout.push_back(fmt::format("s: {}", num(s0)));
+  d.layout.push_back("z_B: 0");
+  motion_for(d, g, {{"s", s0}});
+  return d.text();
+}
+
 }  // namespace
 
 std::string generate(std::uint64_t seed, std::string* kind) {
@@ -739,7 +783,7 @@ std::string generate(std::uint64_t seed, std::string* kind) {
       {"pulleys-1d", pulleys_1d}, {"strands-1d", strands_1d}, {"chain-1d", chain_1d},   {"ring-1d", ring_1d},
       {"incline-2d", incline_2d}, {"turning-2d", turning_2d}, {"joints-2d", joints_2d}, {"hoist-3d", hoist_3d},
       {"ring-2d", ring_2d},       {"slope-2d", slope_2d},     {"lengths-1d", lengths_1d}, {"carts-3d", carts_3d},
-      {"welds-2d", welds_2d},     {"pulley-block-2d", pulley_block_2d}};
+      {"welds-2d", welds_2d},     {"pulley-block-2d", pulley_block_2d}, {"incline-3d", incline_3d}};
   const auto& f = families[seed % (sizeof(families) / sizeof(families[0]))];
   if (kind) *kind = f.first;
   return f.second(g);
