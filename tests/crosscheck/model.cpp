@@ -394,6 +394,13 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
         k->mu = number(need(c, "mu").items[0]);
         k->sliding = unit_vec(c, "sliding");
       }
+    } else if (type == "driven_wheel" && bodies_[static_cast<std::size_t>(body_of(c, "body"))].kind == Body::driven) {
+      // the traction is what makes the body follow its given acceleration: its point keeps
+      // up with the body's frame along the rolling direction
+      const int b = body_of(c, "body");
+      const std::string at = need_text(c, "at");
+      add_project("N_" + at, material(at, b), b, unit_vec(c, "normal"));
+      add_project("F_" + at, material(at, b), b, unit_vec(c, "rolling"));
     } else if (type == "sticking") {
       const int b = body_of(c, "body");
       const std::string at = need_text(c, "at");
@@ -454,7 +461,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
       if (type == "weld_joint" || type == "slider_joint") add_rotation("M_" + at, b, o, 0);
     } else {
       throw Unsupported("connection type '" + type + "' (" +
-                        (type == "unknown_force" || type == "driven_wheel" ? "an unknown force that no constraint determines"
+                        (type == "unknown_force" || type == "driven_wheel" ? "an unknown force that no constraint determines, "
+                                                                             "on a body whose acceleration is not given"
                                                                            : "not in the model") + ")");
     }
   }
