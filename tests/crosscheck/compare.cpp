@@ -154,7 +154,8 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
           guides_zero = false;
       // (tackle decides for every state at once: one state where the model finds no balance
       // either is agreement)
-      if (inst.residual < 1e-8 && inst.rank_deficiency == 0 && guides_zero) {
+      // (a system the balances leave underdetermined still balances)
+      if (inst.residual < 1e-8 && guides_zero) {
         if (!model_balanced) model_balanced = where;
       } else {
         model_balanced.reset();
