@@ -120,11 +120,18 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
     const double v = number(*g.value) * (g.unit ? unit_factor(g.unit->text) : 1.0);
     const std::string& nm = g.name.text;
     if (nm.rfind("dot(", 0) == 0) base_rate_[nm] = v;
-    else if (nm.rfind("ddot(", 0) == 0) throw Unsupported("a given acceleration value");
+    else if (nm.rfind("ddot(", 0) == 0) given_accel_[nm] = v;
     else base_coord_[nm] = v;
   }
-  for (const auto& g : d.given)
-    if (g.name.text.rfind("ddot(", 0) == 0) throw Unsupported("a given acceleration (" + g.name.text + ")");
+  // A problem of kinematics only: no body has a mass, so no balance is written, and the
+  // constraints alone give the accelerations from the given ones.
+  kinematic_ = !d.bodies.empty();
+  for (const auto& bd : d.bodies) kinematic_ = kinematic_ && !bd.mass;
+  for (const auto& g : d.given) {
+    if (g.name.text.rfind("ddot(", 0) != 0) continue;
+    if (!kinematic_) throw Unsupported("a given acceleration (" + g.name.text + ") of a body with a balance");
+    if (!given_accel_.count(g.name.text)) given_accel_[g.name.text] = draw(rng) - 1.25;
+  }
 
   // Bodies.
   auto eval_vec = [&](const std::vector<Expr>& es, const std::vector<double>& vars) {
@@ -143,8 +150,9 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
   for (const auto& bd : d.bodies) {
     Body b;
     b.name = bd.name.text;
-    if (!bd.mass) throw Unsupported("body '" + b.name + "' has no mass (kinematics only: no balance is written for it)");
-    b.mass = number(*bd.mass) * (1 + perturb);
+    if (!bd.mass && !kinematic_)
+      throw Unsupported("body '" + b.name + "' has no mass (kinematics only: no balance is written for it) beside bodies that have one");
+    b.mass = bd.mass ? number(*bd.mass) * (1 + perturb) : 0.0;
     b.massive = b.mass != 0;
     if (b.mass < 0) throw Unsupported("a negative mass");
     if (n == 1) {
@@ -808,7 +816,47 @@ Model::Kkt Model::system(const State& s) const {
   return out;
 }
 
+Instant Model::solve_kinematics(const State& s) const {
+  // J a = -gamma with the given accelerations put in: the others by least squares, each
+  // compared where the constraints determine it.
+  const Kkt k = system(s);
+  const int n = ndof_, m = static_cast<int>(k.kept.size());
+  Eigen::MatrixXd J = k.K.bottomLeftCorner(m, n);
+  Eigen::VectorXd rhs = k.rhs.tail(m);
+  std::vector<bool> given(static_cast<std::size_t>(n), false);
+  for (const auto& b : bodies_) {
+    if (b.kind != Body::line) continue;
+    auto it = given_accel_.find("ddot(" + b.coord + ")");
+    if (it == given_accel_.end()) continue;
+    // the body's acceleration along its line is given, and the guides hold it across
+    for (int i = 0; i < dims_; ++i) {
+      const double ai = b.b(i) * it->second;
+      rhs -= J.col(b.q0 + i) * ai;
+      J.col(b.q0 + i).setZero();
+      given[static_cast<std::size_t>(b.q0 + i)] = true;
+    }
+  }
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  svd.setThreshold(1e-11);
+  const Eigen::VectorXd x = svd.solve(rhs);
+  Instant out;
+  out.residual = (J * x - rhs).norm() / std::max(1.0, rhs.norm());
+  const int rank = static_cast<int>(svd.rank());
+  const Eigen::MatrixXd nulls = svd.matrixV().rightCols(n - rank);
+  for (const auto& b : bodies_) {
+    if (b.kind != Body::line || given_accel_.count("ddot(" + b.coord + ")")) continue;
+    Quantity qn;
+    qn.name = "ddot(" + b.coord + ")";
+    qn.value = b.b.dot(x.segment(b.q0, dims_)) / b.b.squaredNorm();
+    for (int i = 0; i < dims_; ++i)
+      qn.determined = qn.determined && (b.b(i) == 0 || nulls.cols() == 0 || nulls.row(b.q0 + i).norm() < 1e-7);
+    out.quantities.push_back(qn);
+  }
+  return out;
+}
+
 Instant Model::solve(const State& s) const {
+  if (kinematic_) return solve_kinematics(s);
   const Kkt k = system(s);
   const int n = ndof_;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(k.K, Eigen::ComputeFullU | Eigen::ComputeFullV);
@@ -1062,6 +1110,7 @@ std::map<std::string, double> Model::values_at(const State& s) const {
     out["dot(" + b.coord + ")"] = b.b.dot(s.v.segment(b.q0, dims_)) / bb;
   }
   out["t"] = s.t;
+  for (const auto& [name, v] : given_accel_) out[name] = v;
   return out;
 }
 

@@ -157,6 +157,9 @@ class Model {
   std::vector<Load> loads_;
   Eigen::VectorXd gravity_;
   std::map<std::string, double> base_coord_, base_rate_;
+  std::map<std::string, double> given_accel_;  // kinematics: ddot(q) -> its value
+  bool kinematic_ = false;                     // no body has a mass: the constraints alone
+  [[nodiscard]] Instant solve_kinematics(const State& s) const;
 
   int slot(const std::string& name) const;
   Expr compile(const tackle::Text& t) const;
