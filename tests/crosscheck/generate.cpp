@@ -569,9 +569,8 @@ std::string slope_2d(Gen& g) {
     d.param("w", g.nice(1, 8), "rad/s");
     d.param("k_2", g.nice(20, 100), "N/m");
     d.param("l_2", g.nice(0.5, 1), "m");
-    d.points.push_back("S: [\"-1 + a*cos(w*t)\", 0]");
-    d.param("one", 1, "m");
-    d.points.back() = "S: [\"-one + a*cos(w*t)\", 0]";
+    d.param("b", 1, "m");  // (a length, not a plain number: see docs/crosscheck.md)
+    d.points.push_back("S: [\"-b + a*cos(w*t)\", 0]");
     d.connections.push_back("{type: elastic_cord, name: cord, path: [S, A], k: k_2, rest_length: l_2}");
   }
   if (g.chance(0.5)) {

@@ -362,9 +362,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
       }
       cons_.push_back(s);
     } else if (type == "pulley") {
-      if (c.arg("radius") && dims_ > 1) {
-        // the wrapped length is constant (tackle checks that no strand at it turns)
-      }
+      // a point the strings bend at; with a radius, the wrapped length is constant (tackle
+      // checks that no strand at it turns), so it adds nothing to the length
     } else if (type == "spring" || type == "elastic_cord") {
       Element e;
       e.kind = Element::spring;
@@ -528,8 +527,6 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
       c.constant = value(c, q, D2(0.0)).a.a;
     }
   }
-  for (const auto& e : elements_)
-    for (const auto& p : e.points) (void)p;
 }
 
 Model::PointRef Model::point(const std::string& name, int) const {

@@ -76,7 +76,7 @@ Outcome compare_motion(const tackle::Analysis& a, const Model& m, const tackle::
   };
   namespace ode = boost::numeric::odeint;
   auto stepper = ode::make_dense_output(1e-11, 1e-11, ode::runge_kutta_dopri5<Vec>());
-  double t = 0, crossed = -1;
+  double crossed = -1;
   std::size_t row = 0;
   const auto& table = sim.table;
   stepper.initialize(x, 0.0, 1e-3);
@@ -120,9 +120,7 @@ Outcome compare_motion(const tackle::Analysis& a, const Model& m, const tackle::
                                      "from the initial values"});
     }
     ++row;
-    t = target;
   }
-  (void)t;
   if (!sim.complete && out.motion_note.empty()) out.motion_note = fmt::format("tackle's run ends at t = {:g} s ({})", sim.reached, sim.stopped);
   return out;
 }
