@@ -27,6 +27,9 @@
 //                 fixed pulley to a hanging block, sometimes a block on a spring under it
 //   incline-3d    a block on a plane rising along any horizontal direction (smooth or sliding),
 //                 over a pulley at the top to a hanging block, sometimes a spring
+//   pulley-block-3d  a pulley block (massless or not) in a collar on a vertical rod, on two
+//                 turning strands in 3-D, over a pulley to a hanging block, sometimes a block
+//                 on a spring under it
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -683,52 +686,55 @@ std::string welds_2d(Gen& g) {
 // has a mass or none; a block B may hang from Q on a spring. (Without the slot, and with
 // mirror-image strands, tackle finds the balances inconsistent: see
 // regressions/expected-disagreement-pulley-block-on-equal-turning-strands.yaml.)
+// The pulley block Q on the vertical line through the origin (its coordinate `up`, the axis
+// the line runs along: y in 2-D, z in 3-D), with a mass or none; a massless one always, a
+// massive one sometimes, carries a block B on a spring under it. Returns the motion's
+// coordinates (Q's, and B's when there is one): the hanging block's follows from the string.
+std::vector<std::pair<std::string, double>> pulley_block(Doc& d, Gen& g, const std::string& up, double at) {
+  const std::string zeros = up == "z" ? "0, 0" : "0";
+  const bool massless = g.chance(0.5);
+  if (!massless) d.param("m_Q", g.nice(1, 8), "kg");
+  d.bodies.push_back(fmt::format("Q: {{mass: {}, position: {}_Q, center_of_mass: [{}, {}_Q]}}", massless ? "0" : "m_Q", up, zeros, up));
+  d.layout.push_back(fmt::format("{}_Q: {}", up, num(at)));
+  std::vector<std::pair<std::string, double>> independent = {{up + "_Q", at}};
+  if (massless || g.chance(0.5)) {
+    d.param("m_B", g.nice(1, 5), "kg");
+    d.param("k", g.nice(50, 300), "N/m");
+    d.param("l_0", g.nice(0.5, 1), "m");
+    d.bodies.push_back(fmt::format("B: {{mass: m_B, position: {}_B, center_of_mass: [{}, {}_B]}}", up, zeros, up));
+    d.connections.push_back("{type: spring, path: [Q, B], k: k, rest_length: l_0}");
+    const double below = at - 1 - g.nice(0, 0.5);
+    d.layout.push_back(fmt::format("{}_B: {}", up, num(below)));
+    independent.emplace_back(up + "_B", below);
+  }
+  // (Q's coordinate is the motion's: the hanging block's follows from the string, while Q's
+  // inside a turning strand's length would not follow from the hanging block's)
+  return independent;
+}
+
 std::string pulley_block_2d(Gen& g) {
   Doc d;
   d.title = "Generated: a movable pulley block on two turning strands, over a fixed pulley to a hanging block";
   d.axes = "[x, y]";
   d.param("g", 9.81, "m/s^2");
   d.gravity = "[0, -g]";
-  const double a = g.nice(0.5, 2), h = g.nice(0.5, 1);
+  const double a = g.nice(0.5, 2), h = g.nice(0.5, 1), bx = g.nice(0.5, 2), e = g.nice(0.5, 1.5);
   d.param("a", a, "m");
   d.param("h", h, "m");
-  d.param("m_W", g.nice(1, 5), "kg");
-  const bool massless = g.chance(0.5);
-  if (massless) {
-    d.bodies.push_back("Q: {mass: 0, position: y_Q, center_of_mass: [0, y_Q]}");
-  } else {
-    d.param("m_Q", g.nice(1, 8), "kg");
-    d.bodies.push_back("Q: {mass: m_Q, position: y_Q, center_of_mass: [0, y_Q]}");
-  }
-  d.bodies.push_back("W: {mass: m_W, position: y_W, center_of_mass: [a, y_W]}");
-  const double bx = g.nice(0.5, 2), e = g.nice(0.5, 1.5);
   d.param("b", bx, "m");
   d.param("e", e, "m");
+  d.param("m_W", g.nice(1, 5), "kg");
+  d.bodies.push_back("W: {mass: m_W, position: y_W, center_of_mass: [a, y_W]}");
   d.points.push_back("A1: [\"-b\", e]");
   d.points.push_back("P: [a, h]");
   d.connections.push_back("{type: pulley, at: P}");
   d.strings.push_back("{name: s, path: [A1, Q, P, W], tension: T}");
-  const double yq = -g.nice(1, 2), yw = -g.nice(1, 2);
+  d.layout.push_back(fmt::format("y_W: {}", num(-g.nice(1, 2))));
+  const double yq = -g.nice(1, 2);
   // the slot pushes against the strands' pull across it (a roller pushes one way only)
   const double pull = -bx / std::hypot(bx, e - yq) + a / std::hypot(a, h - yq);
   d.connections.push_back(fmt::format("{{type: roller, body: Q, at: Q, normal: [{}, 0]}}", pull > 0 ? -1 : 1));
-  d.layout.push_back(fmt::format("y_Q: {}", num(yq)));
-  d.layout.push_back(fmt::format("y_W: {}", num(yw)));
-  std::vector<std::pair<std::string, double>> independent = {{"y_Q", yq}};
-  if (massless || g.chance(0.5)) {
-    // a block on a spring under Q (a massless Q then has a load to carry)
-    d.param("m_B", g.nice(1, 5), "kg");
-    d.param("k", g.nice(50, 300), "N/m");
-    d.param("l_0", g.nice(0.5, 1), "m");
-    d.bodies.push_back("B: {mass: m_B, position: y_B, center_of_mass: [0, y_B]}");
-    d.connections.push_back("{type: spring, path: [Q, B], k: k, rest_length: l_0}");
-    const double yb = yq - 1 - g.nice(0, 0.5);
-    d.layout.push_back(fmt::format("y_B: {}", num(yb)));
-    independent.emplace_back("y_B", yb);
-  }
-  // (y_Q is the motion's coordinate: y_W follows from the string, while y_Q inside a turning
-  // strand's length would not follow from y_W)
-  motion_for(d, g, independent, 0.25);
+  motion_for(d, g, pulley_block(d, g, "y", yq), 0.25);
   return d.text();
 }
 
@@ -774,6 +780,30 @@ std::string incline_3d(Gen& g) {
   return d.text();
 }
 
+// 3-D: a pulley block Q in a collar on a vertical rod (which pushes across it either way), on
+// two strands that turn: from the anchor A1 down around Q and up over the pulley P, down to
+// the hanging block W; Q massless or not, sometimes a block on a spring under it.
+std::string pulley_block_3d(Gen& g) {
+  Doc d;
+  d.title = "Generated: a pulley block in a collar on two turning strands, over a pulley to a hanging block (3-D)";
+  d.axes = "[x, y, z]";
+  d.param("g", 9.81, "m/s^2");
+  d.gravity = "[0, 0, -g]";
+  for (const char* p : {"x_1", "y_1", "x_2", "y_2"}) d.param(p, g.nice(-2, 2), "m");
+  d.param("h_1", g.nice(0.5, 1.5), "m");
+  d.param("h_2", g.nice(0.5, 1.5), "m");
+  d.param("m_W", g.nice(1, 5), "kg");
+  d.bodies.push_back("W: {mass: m_W, position: z_W, center_of_mass: [x_2, y_2, z_W]}");
+  d.points.push_back("A1: [x_1, y_1, h_1]");
+  d.points.push_back("P: [x_2, y_2, h_2]");
+  d.connections.push_back("{type: pulley, at: P}");
+  d.connections.push_back("{type: collar, body: Q, at: Q, across: [1, 0, 0], across_too: [0, 1, 0]}");
+  d.strings.push_back("{name: s, path: [A1, Q, P, W], tension: T}");
+  d.layout.push_back(fmt::format("z_W: {}", num(-g.nice(1, 2))));
+  motion_for(d, g, pulley_block(d, g, "z", -g.nice(1, 2)), 0.25);
+  return d.text();
+}
+
 }  // namespace
 
 std::string generate(std::uint64_t seed, std::string* kind) {
@@ -782,7 +812,8 @@ std::string generate(std::uint64_t seed, std::string* kind) {
       {"pulleys-1d", pulleys_1d}, {"strands-1d", strands_1d}, {"chain-1d", chain_1d},   {"ring-1d", ring_1d},
       {"incline-2d", incline_2d}, {"turning-2d", turning_2d}, {"joints-2d", joints_2d}, {"hoist-3d", hoist_3d},
       {"ring-2d", ring_2d},       {"slope-2d", slope_2d},     {"lengths-1d", lengths_1d}, {"carts-3d", carts_3d},
-      {"welds-2d", welds_2d},     {"pulley-block-2d", pulley_block_2d}, {"incline-3d", incline_3d}};
+      {"welds-2d", welds_2d},     {"pulley-block-2d", pulley_block_2d}, {"incline-3d", incline_3d},
+      {"pulley-block-3d", pulley_block_3d}};
   const auto& f = families[seed % (sizeof(families) / sizeof(families[0]))];
   if (kind) *kind = f.first;
   return f.second(g);
