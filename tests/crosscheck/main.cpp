@@ -170,6 +170,7 @@ int main(int argc, char** argv) {
                                                      : " (expected a disagreement: rename the file once tackle is fixed)")
                                         : "");
       if (disagrees) print_disagreements(out);
+      if (!out.motion_note.empty()) std::cout << "      motion: " << out.motion_note << "\n";
     }
     return failures ? 1 : 0;
   }
