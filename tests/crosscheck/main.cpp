@@ -1,0 +1,178 @@
+// tackle_crosscheck: the independent numeric model against tackle's closed forms.
+//   tackle_crosscheck examples DIR              every DIR/*.yaml (skipped ones with the reason)
+//   tackle_crosscheck generated N [SEED] [--motion-every K] [--quiet] [--perturb-masses X]
+//                                               N random mechanisms from SEED (X: the model's
+//                                               masses times 1 + X, which must disagree)
+//   tackle_crosscheck files FILE...             description files (the regressions); a file
+//                                               named expected-disagreement-* must disagree
+//   tackle_crosscheck print SEED                the mechanism SEED generates, as YAML
+// Exit status 1 when anything disagrees (beyond 1e-9 relative) or tackle refuses a
+// generated mechanism.
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "crosscheck/compare.hpp"
+#include "ruleset/ruleset.hpp"
+
+namespace {
+
+std::string read(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void print_disagreements(const crosscheck::Outcome& o, std::size_t limit = 4) {
+  for (std::size_t i = 0; i < o.disagreements.size() && i < limit; ++i) {
+    const auto& d = o.disagreements[i];
+    std::cout << fmt::format("    {}: tackle {:.15g}, model {:.15g}  at {}\n", d.quantity, d.tackle, d.model, d.state);
+  }
+  if (o.disagreements.size() > limit) std::cout << fmt::format("    ... and {} more\n", o.disagreements.size() - limit);
+}
+
+int usage() {
+  std::cerr << "usage: tackle_crosscheck examples DIR | generated N [SEED] [--motion-every K] [--quiet] [--perturb-masses X] | files FILE... | print SEED\n";
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) return usage();
+  const std::string mode = argv[1];
+  const tackle::RuleSet rules = tackle::load_rules(tackle::default_rules_dir());
+  const auto started = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
+
+  if (mode == "print" && argc == 3) {
+    std::cout << crosscheck::generate(std::stoull(argv[2]));
+    return 0;
+  }
+  if (mode == "examples" && argc == 3) {
+    std::vector<std::filesystem::path> files;
+    for (const auto& e : std::filesystem::directory_iterator(argv[2]))
+      if (e.path().extension() == ".yaml") files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    int agree = 0, skipped = 0, refused = 0, disagree = 0, compared = 0;
+    for (const auto& f : files) {
+      crosscheck::Options o;
+      o.states = 6;
+      const auto out = crosscheck::compare(read(f), f.filename().string(), rules, o);
+      const std::string name = f.filename().string();
+      switch (out.kind) {
+        case crosscheck::Outcome::Kind::agree:
+          ++agree;
+          compared += out.compared;
+          std::cout << fmt::format("agree     {} ({} states, {} values{}{})\n", name, out.states, out.compared,
+                                   out.not_determined ? fmt::format(", {} left free by the model", out.not_determined) : "",
+                                   out.motion_points ? fmt::format(", motion: {} points, max error {:.2g}", out.motion_points, out.motion_error) : "");
+          if (!out.motion_note.empty()) std::cout << "          motion: " << out.motion_note << "\n";
+          break;
+        case crosscheck::Outcome::Kind::skipped:
+          ++skipped;
+          std::cout << fmt::format("skipped   {}: {}\n", name, out.reason);
+          break;
+        case crosscheck::Outcome::Kind::tackle_refused:
+          ++refused;
+          std::cout << fmt::format("refused   {}: {}\n", name, out.reason);
+          break;
+        case crosscheck::Outcome::Kind::disagree:
+          ++disagree;
+          std::cout << fmt::format("DISAGREE  {}\n", name);
+          print_disagreements(out);
+          break;
+      }
+    }
+    std::cout << fmt::format("{} examples: {} agree ({} values compared), {} skipped, {} not solved by tackle, {} disagree ({:.1f} s)\n",
+                             files.size(), agree, compared, skipped, refused, disagree, elapsed());
+    return disagree ? 1 : 0;
+  }
+  if (mode == "generated" && argc >= 3) {
+    const long n = std::stol(argv[2]);
+    std::uint64_t seed = 1;
+    int motion_every = 1;
+    bool quiet = false;
+    double perturb = 0;
+    for (int i = 3; i < argc; ++i) {
+      const std::string a = argv[i];
+      if (a == "--motion-every" && i + 1 < argc) motion_every = std::stoi(argv[++i]);
+      else if (a == "--perturb-masses" && i + 1 < argc) perturb = std::stod(argv[++i]);
+      else if (a == "--quiet") quiet = true;
+      else seed = std::stoull(a);
+    }
+    long disagree = 0, refused = 0, skipped = 0, compared = 0, motions = 0, free_values = 0;
+    std::map<std::string, long> kinds;
+    for (long i = 0; i < n; ++i) {
+      const std::uint64_t s = seed * 1000003ULL + static_cast<std::uint64_t>(i);
+      std::string kind;
+      std::string text = crosscheck::generate(s, &kind);
+      ++kinds[kind];
+      crosscheck::Options o;
+      o.seed = s;
+      o.states = 3;
+      o.perturb = perturb;
+      o.motion = motion_every > 0 && i % motion_every == 0;
+      // (without the motion compared, its section goes: tackle's motion stage is not needed)
+      if (!o.motion && text.find("\nmotion:\n") != std::string::npos) text.erase(text.find("\nmotion:\n") + 1);
+      const double before = elapsed();
+      const auto out = crosscheck::compare(text, fmt::format("generated-{}.yaml", s), rules, o);
+      if (elapsed() - before > 1.0)
+        std::cout << fmt::format("slow      mechanism {} ({}): {:.1f} s\n", s, kind, elapsed() - before);
+      compared += out.compared;
+      free_values += out.not_determined;
+      if (out.motion_points) ++motions;
+      if (out.kind == crosscheck::Outcome::Kind::disagree) {
+        ++disagree;
+        std::cout << fmt::format("DISAGREE  mechanism {} ({}); tackle_crosscheck print {} shows it\n", s, kind, s);
+        print_disagreements(out);
+      } else if (out.kind == crosscheck::Outcome::Kind::tackle_refused) {
+        ++refused;
+        std::cout << fmt::format("REFUSED   mechanism {} ({}): {}\n", s, kind, out.reason);
+      } else if (out.kind == crosscheck::Outcome::Kind::skipped) {
+        ++skipped;
+        std::cout << fmt::format("SKIPPED   mechanism {} ({}): {}\n", s, kind, out.reason);
+      } else if (!quiet) {
+        std::cout << fmt::format("agree     mechanism {} ({}): {} values{}{}\n", s, kind, out.compared,
+                                 out.motion_points ? fmt::format(", motion max error {:.2g}", out.motion_error) : "",
+                                 out.motion_note.empty() ? "" : "; motion: " + out.motion_note);
+      }
+    }
+    std::string families;
+    for (const auto& [k, c] : kinds) families += fmt::format("{}{} {}", families.empty() ? "" : ", ", c, k);
+    std::cout << fmt::format("families: {}\n", families);
+    std::cout << fmt::format("{} values compared, {} left free by the model, {} motions compared over 1 s, {} refused by tackle, {} skipped ({:.1f} s)\n",
+                             compared, free_values, motions, refused, skipped, elapsed());
+    std::cout << fmt::format("{} mechanisms, {} disagreements\n", n, disagree);
+    return disagree || refused || skipped ? 1 : 0;
+  }
+  if (mode == "files" && argc >= 3) {
+    int failures = 0;
+    for (int i = 2; i < argc; ++i) {
+      const std::filesystem::path f = argv[i];
+      const bool expected = f.filename().string().rfind("expected-disagreement-", 0) == 0;
+      crosscheck::Options o;
+      o.states = 6;
+      const auto out = crosscheck::compare(read(f), f.filename().string(), rules, o);
+      const bool disagrees = out.kind == crosscheck::Outcome::Kind::disagree;
+      const bool ok = expected ? disagrees : out.kind == crosscheck::Outcome::Kind::agree;
+      if (!ok) ++failures;
+      std::cout << fmt::format("{}  {}: {}{}\n", ok ? "ok  " : "FAIL", f.filename().string(),
+                               disagrees ? "disagrees" : out.kind == crosscheck::Outcome::Kind::agree ? "agrees" + (out.reason.empty() ? "" : ": " + out.reason)
+                                                                                                     : "not compared: " + out.reason,
+                               expected ? (disagrees ? " (a known disagreement: tackle's bug, still there)"
+                                                     : " (expected a disagreement: rename the file once tackle is fixed)")
+                                        : "");
+      if (disagrees) print_disagreements(out);
+      if (!out.motion_note.empty()) std::cout << "      motion: " << out.motion_note << "\n";
+    }
+    return failures ? 1 : 0;
+  }
+  return usage();
+}

@@ -1,0 +1,1114 @@
+#include "crosscheck/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/units.hpp"  // input reading only: each unit's factor to SI
+
+namespace crosscheck {
+
+namespace {
+
+double unit_factor(const std::string& text) {
+  std::string error;
+  int column = 0;
+  auto u = tackle::parse_unit(text, error, column);
+  if (!u) throw Unsupported("unit '" + text + "': " + error);
+  const GiNaC::ex x = u->to_si.evalf();
+  if (!GiNaC::is_a<GiNaC::numeric>(x)) throw Unsupported("unit '" + text + "' has no numeric factor");
+  return GiNaC::ex_to<GiNaC::numeric>(x).to_double();
+}
+
+const tackle::ArgDesc& need(const tackle::ConnectionDesc& c, const std::string& key) {
+  const tackle::ArgDesc* a = c.arg(key);
+  if (!a || a->items.empty()) throw Unsupported("a '" + c.type.text + "' connection without '" + key + "'");
+  return *a;
+}
+std::string need_text(const tackle::ConnectionDesc& c, const std::string& key) { return need(c, key).items[0].text; }
+std::optional<std::string> opt_text(const tackle::ConnectionDesc& c, const std::string& key) {
+  const tackle::ArgDesc* a = c.arg(key);
+  if (!a || a->items.empty()) return std::nullopt;
+  return a->items[0].text;
+}
+
+D2 seed(double x, double first, double second_dir) { return D2(D1(x, first), D1(second_dir, 0.0)); }
+
+Eigen::MatrixXd pinv_solve_matrix(const Eigen::MatrixXd& A) {
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(A);
+  cod.setThreshold(1e-12);
+  return cod.pseudoInverse();
+}
+
+int rank_of(const Eigen::MatrixXd& A) {
+  if (A.rows() == 0) return 0;
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(A);
+  const auto& s = svd.singularValues();
+  if (s.size() == 0 || s(0) == 0) return 0;
+  int r = 0;
+  for (int i = 0; i < s.size(); ++i)
+    if (s(i) > 1e-9 * s(0)) ++r;
+  return r;
+}
+
+}  // namespace
+
+int Model::slot(const std::string& name) const {
+  auto it = slots_.find(name);
+  return it == slots_.end() ? -1 : it->second;
+}
+
+Expr Model::compile(const tackle::Text& t) const {
+  try {
+    Expr e = Expr::compile(t.text, [this](const std::string& n) { return slot(n); });
+    return e;
+  } catch (const std::runtime_error& e) {
+    throw Unsupported(e.what());
+  }
+}
+
+double Model::number(const tackle::Text& t) const {
+  Expr e = compile(t);
+  std::vector<double> vars(slot_names_.size(), 0.0);
+  for (const auto& [n, v] : params_) vars[static_cast<std::size_t>(slot(n))] = v;
+  for (const auto& [n, v] : base_coord_)
+    if (slot(n) >= 0) vars[static_cast<std::size_t>(slot(n))] = v;
+  return e.eval(vars);
+}
+
+Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb) {
+  if (!d.phases.empty()) throw Unsupported("phases (each phase is a problem of its own)");
+  if (d.impact) throw Unsupported("an impact (momentum balance over an instant, no forces)");
+  if (d.interval) throw Unsupported("an interval of constant acceleration (averaged forces)");
+  dims_ = d.axes.empty() ? 1 : static_cast<int>(d.axes.size());
+  const int n = dims_;
+
+  // Parameters, in SI: values times their unit's factor; defined ones from their expression;
+  // those without a value drawn at random (the same values go into tackle's closed forms).
+  std::uniform_real_distribution<double> draw(0.5, 2.0);
+  for (const auto& p : d.parameters) {
+    double v = 0;
+    if (p.define) {
+      v = number(*p.define);
+    } else if (p.value) {
+      v = number(*p.value) * (p.unit ? unit_factor(p.unit->text) : 1.0);
+    } else {
+      v = draw(rng);
+      if (p.unit && unit_factor(p.unit->text) != 1.0 && p.unit->text == "deg") v = v * 0.4;
+    }
+    params_[p.name.text] = v;
+    slots_[p.name.text] = static_cast<int>(slot_names_.size());
+    slot_names_.push_back(p.name.text);
+  }
+  first_coord_slot_ = static_cast<int>(slot_names_.size());
+  for (const auto& b : d.bodies) {
+    if (!b.position) continue;
+    for (const std::string& s : {b.position->text, "dot(" + b.position->text + ")"}) {
+      slots_[s] = static_cast<int>(slot_names_.size());
+      slot_names_.push_back(s);
+    }
+  }
+  if (!slots_.count("t")) {
+    slots_["t"] = static_cast<int>(slot_names_.size());
+    slot_names_.push_back("t");
+  }
+
+  // The layout: given values first, then the layout's.
+  for (const auto& [name, value] : d.layout) base_coord_[name.text] = number(value);
+  for (const auto& g : d.given) {
+    if (!g.value) continue;
+    const double v = number(*g.value) * (g.unit ? unit_factor(g.unit->text) : 1.0);
+    const std::string& nm = g.name.text;
+    if (nm.rfind("dot(", 0) == 0) base_rate_[nm] = v;
+    else if (nm.rfind("ddot(", 0) == 0) given_accel_[nm] = v;
+    else base_coord_[nm] = v;
+  }
+  // A problem of kinematics only: no body has a mass, so no balance is written, and the
+  // constraints alone give the accelerations from the given ones.
+  kinematic_ = !d.bodies.empty();
+  for (const auto& bd : d.bodies) kinematic_ = kinematic_ && !bd.mass;
+  for (const auto& g : d.given) {
+    if (g.name.text.rfind("ddot(", 0) != 0) continue;
+    if (!kinematic_) throw Unsupported("a given acceleration (" + g.name.text + ") of a body with a balance");
+    if (!given_accel_.count(g.name.text)) given_accel_[g.name.text] = draw(rng) - 1.25;
+  }
+
+  // Bodies.
+  auto eval_vec = [&](const std::vector<Expr>& es, const std::vector<double>& vars) {
+    Eigen::VectorXd r(n);
+    for (int i = 0; i < n; ++i) r(i) = es[static_cast<std::size_t>(i)].eval(vars);
+    return r;
+  };
+  auto base_vars = [&]() {
+    std::vector<double> vars(slot_names_.size(), 0.0);
+    for (const auto& [nm, v] : params_) vars[static_cast<std::size_t>(slot(nm))] = v;
+    for (const auto& [nm, v] : base_coord_)
+      if (slot(nm) >= 0) vars[static_cast<std::size_t>(slot(nm))] = v;
+    return vars;
+  };
+  const int t_slot = slot("t");
+  for (const auto& bd : d.bodies) {
+    Body b;
+    b.name = bd.name.text;
+    if (!bd.mass && !kinematic_)
+      throw Unsupported("body '" + b.name + "' has no mass (kinematics only: no balance is written for it) beside bodies that have one");
+    b.mass = bd.mass ? number(*bd.mass) * (1 + perturb) : 0.0;
+    b.massive = b.mass != 0;
+    if (b.mass < 0) throw Unsupported("a negative mass");
+    if (n == 1) {
+      b.kind = Body::line;
+      b.coord = bd.position->text;
+      b.a = Eigen::VectorXd::Zero(1);
+      b.b = Eigen::VectorXd::Ones(1);
+    } else if (bd.position) {
+      if (!bd.center_of_mass) throw Unsupported("a body with a position and no center of mass");
+      b.kind = Body::line;
+      b.coord = bd.position->text;
+      std::vector<Expr> cm;
+      for (const auto& it : bd.center_of_mass->items) cm.push_back(compile(it));
+      const int own = slot(b.coord);
+      for (const auto& e : cm) {
+        for (int s = first_coord_slot_; s < static_cast<int>(slot_names_.size()); ++s)
+          if (s != own && e.uses(s))
+            throw Unsupported("the center of mass of '" + b.name + "' depends on '" + slot_names_[static_cast<std::size_t>(s)] + "'");
+      }
+      auto at = [&](double s) {
+        auto vars = base_vars();
+        vars[static_cast<std::size_t>(own)] = s;
+        return eval_vec(cm, vars);
+      };
+      b.a = at(0);
+      b.b = at(1) - at(0);
+      const Eigen::VectorXd bend = at(2.3) - b.a - 2.3 * b.b;
+      if (bend.norm() > 1e-12 * (1 + b.a.norm() + b.b.norm()))
+        throw Unsupported("the center of mass of '" + b.name + "' moves on a curve, not a line");
+    } else {
+      if (!bd.center_of_mass) throw Unsupported("body '" + b.name + "' has no center of mass");
+      std::vector<Expr> cm;
+      for (const auto& it : bd.center_of_mass->items) cm.push_back(compile(it));
+      b.cm0 = eval_vec(cm, base_vars());
+      if (bd.acceleration) {
+        b.kind = Body::driven;
+        std::vector<Expr> acc;
+        for (const auto& it : bd.acceleration->items) {
+          acc.push_back(compile(it));
+          if (acc.back().uses(t_slot)) throw Unsupported("a given acceleration that changes in time");
+        }
+        b.frame_accel = eval_vec(acc, base_vars());
+      } else if (bd.accel_along) {
+        b.kind = Body::along;
+        std::vector<Expr> dir;
+        for (const auto& it : bd.accel_along->items) dir.push_back(compile(it));
+        b.b = eval_vec(dir, base_vars()).normalized();
+        b.a = b.cm0;
+        b.coord = bd.accel_name ? bd.accel_name->text : "a_" + b.name;
+      } else {
+        b.kind = Body::still;
+      }
+    }
+    if (b.kind == Body::line) {
+      auto it = base_coord_.find(b.coord);
+      const double s0 = it == base_coord_.end() ? 0.0 : it->second;
+      base_coord_[b.coord] = s0;
+      b.cm0 = b.a + s0 * b.b;
+    }
+    if (b.kind != Body::driven) b.frame_accel = Eigen::VectorXd::Zero(n);
+    has_massless_ = has_massless_ || !b.massive;
+    bodies_.push_back(b);
+  }
+  int next = 0;
+  for (auto& b : bodies_) { b.q0 = next; next += n; }
+  for (auto& b : bodies_) {
+    if (b.massive && n > 1) {
+      b.nr = n == 2 ? 1 : 3;
+      b.r0 = next;
+      next += b.nr;
+    }
+  }
+  ndof_ = next;
+  std::map<std::string, int> body_index;
+  for (std::size_t i = 0; i < bodies_.size(); ++i) body_index[bodies_[i].name] = static_cast<int>(i);
+
+  // Points: a body is a point (its center); a point on a body at its offset; a fixed point.
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    PointRef p;
+    p.body = static_cast<int>(i);
+    p.offset = Eigen::VectorXd::Zero(n);
+    points_[bodies_[i].name] = p;
+  }
+  for (const auto& pd : d.points) {
+    PointRef p;
+    if (pd.on) {
+      auto it = body_index.find(pd.on->text);
+      if (it == body_index.end()) throw Unsupported("point on an unknown body");
+      p.body = it->second;
+      p.offset = Eigen::VectorXd::Zero(n);
+      if (pd.offset) {
+        std::vector<Expr> off;
+        for (const auto& t : pd.offset->items) off.push_back(compile(t));
+        p.offset = eval_vec(off, base_vars());
+      }
+    } else if (pd.at) {
+      for (const auto& t : pd.at->items) {
+        p.ground.push_back(compile(t));
+        if (p.ground.back().uses(t_slot)) uses_time_ = true;
+        for (int s = first_coord_slot_; s < t_slot; ++s)
+          if (p.ground.back().uses(s)) throw Unsupported("a fixed point that depends on a coordinate");
+      }
+      p.frame_accel = Eigen::VectorXd::Zero(n);
+    } else {
+      throw Unsupported("a point with neither a position nor a body");
+    }
+    points_[pd.name.text] = p;
+  }
+
+  // Gravity.
+  gravity_ = Eigen::VectorXd::Zero(n);
+  if (d.gravity) {
+    std::vector<Expr> g;
+    for (const auto& t : d.gravity->items) g.push_back(compile(t));
+    gravity_ = eval_vec(g, base_vars());
+  } else if (d.gravity_magnitude) {
+    const double g = number(*d.gravity_magnitude);
+    const double tilt = d.gravity_tilt ? number(*d.gravity_tilt) : 0.0;
+    gravity_(0) = -g * std::sin(tilt);
+    if (n > 1) gravity_(1) = -g * std::cos(tilt);
+  }
+
+  // Connections.
+  auto unit_vec = [&](const tackle::ConnectionDesc& c, const std::string& key) {
+    const auto& a = need(c, key);
+    std::vector<Expr> es;
+    for (const auto& t : a.items) es.push_back(compile(t));
+    if (static_cast<int>(es.size()) != n) throw Unsupported("a vector of the wrong size");
+    Eigen::VectorXd v = eval_vec(es, base_vars());
+    if (v.norm() == 0) throw Unsupported("a zero direction");
+    return Eigen::VectorXd(v.normalized());
+  };
+  auto body_of = [&](const tackle::ConnectionDesc& c, const std::string& key) {
+    auto it = body_index.find(need_text(c, key));
+    if (it == body_index.end()) throw Unsupported("unknown body");
+    return it->second;
+  };
+  auto path_of = [&](const tackle::ConnectionDesc& c, const std::string& key) {
+    std::vector<PointRef> pts;
+    for (const auto& t : need(c, key).items) pts.push_back(point(t.text, -1));
+    return pts;
+  };
+  auto ground_copy = [&](const PointRef& material_point, int body) {
+    // The ground point where a material point of `body` is at the layout (moving with the
+    // body's frame when its acceleration is given).
+    PointRef g;
+    const Eigen::VectorXd p0 = bodies_[static_cast<std::size_t>(body)].cm0 + material_point.offset;
+    for (int i = 0; i < n; ++i) g.ground.push_back(Expr::constant(p0(i)));
+    g.frame_accel = bodies_[static_cast<std::size_t>(body)].frame_accel;
+    return g;
+  };
+  auto add_project = [&](const std::string& name, const PointRef& p, int body, const Eigen::VectorXd& dir) {
+    Constraint c;
+    c.kind = Constraint::project;
+    c.name = name;
+    c.points = {p, ground_copy(p, body)};
+    c.dir = dir;
+    cons_.push_back(c);
+    return &cons_.back();
+  };
+  const char* xyz[] = {"x", "y", "z"};
+  auto add_pin = [&](const std::string& at, const PointRef& p, int body) {
+    for (int i = 0; i < n; ++i) add_project(at + "_" + xyz[i], p, body, Eigen::VectorXd::Unit(n, i));
+  };
+  auto add_rotation = [&](const std::string& name, int body, int other, int axis) {
+    const Body& b = bodies_[static_cast<std::size_t>(body)];
+    if (b.r0 < 0) throw Unsupported("a couple on a massless body");
+    Constraint c;
+    c.kind = Constraint::rotation;
+    c.name = name;
+    c.body = body;
+    c.other = other;
+    c.dir = Eigen::VectorXd::Constant(1, axis);
+    cons_.push_back(c);
+  };
+  for (const auto& c : d.connections) {
+    const std::string& type = c.type.text;
+    const std::string cname = c.name ? c.name->text : "";
+    if (type == "force") {
+      Load l;
+      l.body = body_of(c, "on");
+      l.at = opt_text(c, "at") ? material(*opt_text(c, "at"), l.body) : material(need_text(c, "on"), l.body);
+      for (const auto& t : need(c, "force").items) {
+        l.force.push_back(compile(t));
+        if (l.force.back().uses(t_slot)) uses_time_ = true;
+      }
+      if (static_cast<int>(l.force.size()) != n) throw Unsupported("a force of the wrong size");
+      loads_.push_back(l);
+    } else if (type == "couple") {
+      Load l;
+      l.body = body_of(c, "on");
+      l.at = material(need_text(c, "on"), l.body);
+      for (int i = 0; i < n; ++i) l.force.push_back(Expr::constant(0));
+      for (const auto& t : need(c, "moment").items) l.couple.push_back(compile(t));
+      if (bodies_[static_cast<std::size_t>(l.body)].r0 < 0) throw Unsupported("a couple on a massless body");
+      loads_.push_back(l);
+    } else if (type == "string") {
+      Constraint s;
+      s.name = opt_text(c, "tension") ? *opt_text(c, "tension") : "T_" + cname;
+      s.g_sign = -1;
+      if (c.arg("path")) {
+        s.kind = Constraint::path;
+        s.points = path_of(c, "path");
+      } else {
+        s.kind = Constraint::length_expr;
+        s.length = compile(need(c, "length").items[0]);
+      }
+      cons_.push_back(s);
+    } else if (type == "pulley") {
+      // a point the strings bend at; with a radius, the wrapped length is constant (tackle
+      // checks that no strand at it turns), so it adds nothing to the length
+    } else if (type == "spring" || type == "elastic_cord") {
+      Element e;
+      e.kind = Element::spring;
+      e.points = path_of(c, "path");
+      e.k = number(need(c, "k").items[0]);
+      if (c.arg("rest_length")) {
+        e.rest = number(need(c, "rest_length").items[0]);
+      } else {
+        e.stretch = true;
+        e.stretch_value = number(need(c, "stretch").items[0]);
+      }
+      elements_.push_back(e);
+    } else if (type == "damper") {
+      Element e;
+      e.kind = Element::damper;
+      e.points = path_of(c, "path");
+      e.c = number(need(c, "c").items[0]);
+      elements_.push_back(e);
+    } else if (type == "contact" || type == "link") {
+      Constraint s;
+      s.kind = Constraint::path;
+      s.points = path_of(c, "between");
+      const bool contact = type == "contact";
+      s.name = opt_text(c, "force") ? *opt_text(c, "force") : (contact ? "N_" : "T_") + cname;
+      s.g_sign = contact ? 1 : -1;
+      cons_.push_back(s);
+    } else if (type == "fixed") {
+      const int b = body_of(c, "body");
+      add_project("R_" + need_text(c, "body"), material(need_text(c, "body"), b), b, Eigen::VectorXd::Ones(1));
+    } else if (type == "roller" || type == "free_wheel" || type == "sliding" || type == "skidding_wheel") {
+      const int b = body_of(c, "body");
+      const std::string at = need_text(c, "at");
+      Constraint* k = add_project("N_" + at, material(at, b), b, unit_vec(c, "normal"));
+      if (type == "sliding" || type == "skidding_wheel") {
+        k->mu = number(need(c, "mu").items[0]);
+        k->sliding = unit_vec(c, "sliding");
+      }
+    } else if (type == "driven_wheel" && bodies_[static_cast<std::size_t>(body_of(c, "body"))].kind == Body::driven) {
+      // the traction is what makes the body follow its given acceleration: its point keeps
+      // up with the body's frame along the rolling direction
+      const int b = body_of(c, "body");
+      const std::string at = need_text(c, "at");
+      add_project("N_" + at, material(at, b), b, unit_vec(c, "normal"));
+      add_project("F_" + at, material(at, b), b, unit_vec(c, "rolling"));
+    } else if (type == "sticking") {
+      const int b = body_of(c, "body");
+      const std::string at = need_text(c, "at");
+      add_project("N_" + at, material(at, b), b, unit_vec(c, "normal"));
+      add_project("F_" + at, material(at, b), b, unit_vec(c, "tangent"));
+    } else if (type == "collar") {
+      const int b = body_of(c, "body");
+      const std::string at = need_text(c, "at");
+      add_project(opt_text(c, "force") ? *opt_text(c, "force") : "P_" + at, material(at, b), b, unit_vec(c, "across"));
+      add_project(opt_text(c, "force_too") ? *opt_text(c, "force_too") : "Q_" + at, material(at, b), b,
+                  unit_vec(c, "across_too"));
+    } else if (type == "pin" || type == "ball_and_socket" || type == "hinge" || type == "fixed_support" || type == "weld") {
+      const int b = body_of(c, "body");
+      const std::string at = need_text(c, "at");
+      add_pin(at, material(at, b), b);
+      if (type == "fixed_support") add_rotation("M_" + at, b, -1, 0);
+      if (type == "weld")
+        for (int i = 0; i < 3; ++i) add_rotation("M_" + at + xyz[i], b, -1, i);
+    } else if (type == "rod" || type == "cable") {
+      const int b = body_of(c, "body");
+      const std::string from = need_text(c, "from"), to = need_text(c, "to");
+      Constraint s;
+      s.kind = Constraint::path;
+      s.name = "T_" + from + to;
+      s.g_sign = -1;
+      const PointRef pf = material(from, b);
+      PointRef pt = point(to, -1);
+      if (pt.body >= 0) throw Unsupported("a rod or cable to a moving point");
+      pt.frame_accel = bodies_[static_cast<std::size_t>(b)].frame_accel;
+      s.points = {pf, pt};
+      cons_.push_back(s);
+    } else if (type == "pin_joint" || type == "ball_joint" || type == "weld_joint" || type == "slider_joint" ||
+               type == "same_motion") {
+      const int b = body_of(c, "body"), o = body_of(c, "other");
+      const std::string at = type == "same_motion" ? need_text(c, "body") : need_text(c, "at");
+      const PointRef pa = material(at, b), pb = material(at, o);
+      auto relative = [&](const std::string& name, const Eigen::VectorXd& dir) {
+        Constraint k;
+        k.kind = Constraint::relative;
+        k.name = name;
+        k.points = {pa, pb};
+        k.dir = dir;
+        cons_.push_back(k);
+      };
+      if (type == "slider_joint") {
+        // across the slide, which turns with `other`; the point slides along it, so the
+        // reaction on `other` acts where the point is now, not at a point of `other`
+        Constraint k;
+        k.kind = Constraint::slide;
+        k.name = "N_" + at;
+        k.points = {pa};
+        k.other = o;
+        k.dir = unit_vec(c, "normal");
+        cons_.push_back(k);
+      } else {
+        for (int i = 0; i < n; ++i) relative(type == "same_motion" ? "" : at + "_" + xyz[i], Eigen::VectorXd::Unit(n, i));
+      }
+      if (type == "weld_joint" || type == "slider_joint") add_rotation("M_" + at, b, o, 0);
+    } else {
+      throw Unsupported("connection type '" + type + "' (" +
+                        (type == "unknown_force" || type == "driven_wheel" ? "an unknown force that no constraint determines, "
+                                                                             "on a body whose acceleration is not given"
+                                                                           : "not in the model") + ")");
+    }
+  }
+
+  // Guides: what tackle's bodies do without a connection saying so. A body with a
+  // coordinate moves on its line, an accelerating one along its direction, a driven one
+  // with its given acceleration, any other one stays still; no body with a mass rotates.
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const Body& b = bodies_[i];
+    std::vector<Eigen::VectorXd> across;
+    if (b.kind == Body::line || b.kind == Body::along) {
+      Eigen::MatrixXd basis = Eigen::MatrixXd::Identity(n, n);
+      const Eigen::VectorXd u = b.b.normalized();
+      for (int k = 0; k < n; ++k) {
+        Eigen::VectorXd e = basis.col(k) - u * u.dot(basis.col(k));
+        for (const auto& a : across) e -= a * a.dot(e);
+        if (e.norm() > 1e-6) across.push_back(e.normalized());
+      }
+    } else {
+      for (int k = 0; k < n; ++k) across.push_back(Eigen::VectorXd::Unit(n, k));
+    }
+    for (std::size_t k = 0; k < across.size(); ++k) {
+      Constraint c;
+      c.kind = Constraint::guide_line;
+      c.guide = true;
+      c.name = "guide on " + b.name + " across its motion (" + std::to_string(k + 1) + ")";
+      c.body = static_cast<int>(i);
+      c.dir = across[k];
+      cons_.push_back(c);
+    }
+    for (int k = 0; k < b.nr; ++k) {
+      Constraint c;
+      c.kind = Constraint::rotation;
+      c.guide = true;
+      c.name = "guide couple on " + b.name + " (" + xyz[b.nr == 1 ? 2 : k] + ")";
+      c.body = static_cast<int>(i);
+      c.other = -1;
+      c.dir = Eigen::VectorXd::Constant(1, k);
+      cons_.push_back(c);
+    }
+  }
+
+  // Each constraint's value at the layout is the constant it keeps.
+  State s0;
+  s0.q = Eigen::VectorXd::Zero(ndof_);
+  s0.v = Eigen::VectorXd::Zero(ndof_);
+  for (const auto& b : bodies_) s0.q.segment(b.q0, n) = b.cm0;
+  std::vector<D2> q(static_cast<std::size_t>(ndof_));
+  for (int i = 0; i < ndof_; ++i) q[static_cast<std::size_t>(i)] = D2(s0.q(i));
+  for (auto& c : cons_) {
+    if (c.kind == Constraint::guide_line) {
+      const Body& b = bodies_[static_cast<std::size_t>(c.body)];
+      c.constant = c.dir.dot(b.kind == Body::line ? b.a : b.cm0);
+    } else {
+      c.constant = value(c, q, D2(0.0)).a.a;
+    }
+  }
+}
+
+Model::PointRef Model::point(const std::string& name, int) const {
+  auto it = points_.find(name);
+  if (it == points_.end()) throw Unsupported("unknown point '" + name + "'");
+  return it->second;
+}
+
+Model::PointRef Model::material(const std::string& name, int body) const {
+  // The material point of `body` at the point's place at the layout.
+  PointRef p = point(name, body);
+  if (p.body == body) return p;
+  const int n = dims_;
+  Eigen::VectorXd p0(n);
+  if (p.body >= 0) {
+    p0 = bodies_[static_cast<std::size_t>(p.body)].cm0 + p.offset;
+  } else {
+    std::vector<double> vars(slot_names_.size(), 0.0);
+    for (const auto& [nm, v] : params_) vars[static_cast<std::size_t>(slot(nm))] = v;
+    for (const auto& [nm, v] : base_coord_)
+      if (slot(nm) >= 0) vars[static_cast<std::size_t>(slot(nm))] = v;
+    for (int i = 0; i < n; ++i) p0(i) = p.ground[static_cast<std::size_t>(i)].eval(vars);
+  }
+  PointRef m;
+  m.body = body;
+  m.offset = p0 - bodies_[static_cast<std::size_t>(body)].cm0;
+  return m;
+}
+
+template <class S>
+std::vector<S> Model::variables(const std::vector<S>& q, const Eigen::VectorXd& v, const S& t) const {
+  std::vector<S> vars(slot_names_.size(), S(0.0));
+  for (const auto& [nm, val] : params_) vars[static_cast<std::size_t>(slot(nm))] = S(val);
+  for (const auto& b : bodies_) {
+    if (b.kind != Body::line) continue;
+    const double bb = b.b.squaredNorm();
+    S s(0.0);
+    double rate = 0;
+    for (int i = 0; i < dims_; ++i) {
+      s = s + (q[static_cast<std::size_t>(b.q0 + i)] - S(b.a(i))) * S(b.b(i) / bb);
+      if (v.size() > 0) rate += v(b.q0 + i) * b.b(i) / bb;
+    }
+    vars[static_cast<std::size_t>(slot(b.coord))] = s;
+    vars[static_cast<std::size_t>(slot("dot(" + b.coord + ")"))] = S(rate);
+  }
+  vars[static_cast<std::size_t>(slot("t"))] = t;
+  return vars;
+}
+
+template <class S>
+std::vector<S> Model::position(const PointRef& p, const std::vector<S>& q, const std::vector<S>& vars, const S& t) const {
+  const int n = dims_;
+  std::vector<S> r(static_cast<std::size_t>(n), S(0.0));
+  if (p.body >= 0) {
+    const Body& b = bodies_[static_cast<std::size_t>(p.body)];
+    for (int i = 0; i < n; ++i) r[static_cast<std::size_t>(i)] = q[static_cast<std::size_t>(b.q0 + i)] + S(p.offset(i));
+    if (b.r0 >= 0) {
+      // Small rotations about the center (exact at rotation 0 with no angular velocity, the
+      // only states tackle describes): r += phi x offset.
+      if (n == 2) {
+        const S th = q[static_cast<std::size_t>(b.r0)];
+        r[0] = r[0] - th * S(p.offset(1));
+        r[1] = r[1] + th * S(p.offset(0));
+      } else {
+        const S a = q[static_cast<std::size_t>(b.r0)], bq = q[static_cast<std::size_t>(b.r0 + 1)],
+                c = q[static_cast<std::size_t>(b.r0 + 2)];
+        r[0] = r[0] + bq * S(p.offset(2)) - c * S(p.offset(1));
+        r[1] = r[1] + c * S(p.offset(0)) - a * S(p.offset(2));
+        r[2] = r[2] + a * S(p.offset(1)) - bq * S(p.offset(0));
+      }
+    }
+  } else {
+    for (int i = 0; i < n; ++i) {
+      r[static_cast<std::size_t>(i)] = p.ground[static_cast<std::size_t>(i)].eval(vars);
+      if (p.frame_accel.size() > 0 && p.frame_accel(i) != 0) r[static_cast<std::size_t>(i)] = r[static_cast<std::size_t>(i)] + S(0.5 * p.frame_accel(i)) * t * t;
+    }
+  }
+  return r;
+}
+
+template <class S>
+S Model::path_length(const std::vector<PointRef>& pts, const std::vector<S>& q, const S& t) const {
+  const auto vars = variables(q, Eigen::VectorXd(), t);
+  S total(0.0);
+  std::vector<S> prev = position(pts[0], q, vars, t);
+  for (std::size_t k = 1; k < pts.size(); ++k) {
+    std::vector<S> cur = position(pts[k], q, vars, t);
+    using std::sqrt;
+    using std::abs;
+    if (dims_ == 1) {
+      total = total + abs(cur[0] - prev[0]);
+    } else {
+      S sq(0.0);
+      for (int i = 0; i < dims_; ++i) sq = sq + (cur[static_cast<std::size_t>(i)] - prev[static_cast<std::size_t>(i)]) * (cur[static_cast<std::size_t>(i)] - prev[static_cast<std::size_t>(i)]);
+      total = total + sqrt(sq);
+    }
+    prev = cur;
+  }
+  return total;
+}
+
+template <class S>
+S Model::value(const Constraint& c, const std::vector<S>& q, const S& t) const {
+  switch (c.kind) {
+    case Constraint::path: return path_length(c.points, q, t);
+    case Constraint::length_expr: return c.length.eval(variables(q, Eigen::VectorXd(), t));
+    case Constraint::project:
+    case Constraint::relative: {
+      const auto vars = variables(q, Eigen::VectorXd(), t);
+      const auto a = position(c.points[0], q, vars, t), b = position(c.points[1], q, vars, t);
+      S out(0.0);
+      for (int i = 0; i < dims_; ++i) out = out + (a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>(i)]) * S(c.dir(i));
+      return out;
+    }
+    case Constraint::slide: {
+      const auto vars = variables(q, Eigen::VectorXd(), t);
+      const auto p = position(c.points[0], q, vars, t);
+      const Body& o = bodies_[static_cast<std::size_t>(c.other)];
+      std::vector<S> n(static_cast<std::size_t>(dims_));
+      for (int i = 0; i < dims_; ++i) n[static_cast<std::size_t>(i)] = S(c.dir(i));
+      if (o.r0 >= 0 && dims_ == 2) {
+        const S th = q[static_cast<std::size_t>(o.r0)];
+        n[0] = S(c.dir(0)) - th * S(c.dir(1));
+        n[1] = S(c.dir(1)) + th * S(c.dir(0));
+      }
+      S out(0.0);
+      for (int i = 0; i < dims_; ++i)
+        out = out + n[static_cast<std::size_t>(i)] * (p[static_cast<std::size_t>(i)] - q[static_cast<std::size_t>(o.q0 + i)]);
+      return out;
+    }
+    case Constraint::rotation: {
+      const int axis = static_cast<int>(c.dir(0));
+      S out = q[static_cast<std::size_t>(bodies_[static_cast<std::size_t>(c.body)].r0 + axis)];
+      if (c.other >= 0) {
+        const Body& o = bodies_[static_cast<std::size_t>(c.other)];
+        if (o.r0 < 0) throw Unsupported("a couple on a massless body");
+        out = out - q[static_cast<std::size_t>(o.r0 + axis)];
+      }
+      return out;
+    }
+    case Constraint::guide_line: {
+      const Body& b = bodies_[static_cast<std::size_t>(c.body)];
+      S out(0.0);
+      for (int i = 0; i < dims_; ++i) {
+        S target(0.0);
+        if (b.kind == Body::driven) target = S(0.5 * b.frame_accel(i)) * t * t;
+        out = out + (q[static_cast<std::size_t>(b.q0 + i)] - target) * S(c.dir(i));
+      }
+      return out;
+    }
+  }
+  throw std::logic_error("constraint kind");
+}
+
+template <class F>
+Model::Derivs Model::derivs(const F& f, const State& s) const {
+  Derivs d;
+  const std::size_t n = static_cast<std::size_t>(ndof_);
+  std::vector<D2> q(n);
+  d.grad = Eigen::VectorXd::Zero(ndof_);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = 0; j < n; ++j) q[j] = D2(s.q(static_cast<Eigen::Index>(j)));
+    q[i] = seed(s.q(static_cast<Eigen::Index>(i)), 1.0, 0.0);
+    d.grad(static_cast<Eigen::Index>(i)) = f(q, D2(s.t)).a.b;
+  }
+  for (std::size_t j = 0; j < n; ++j) q[j] = D2(s.q(static_cast<Eigen::Index>(j)));
+  d.dt = f(q, seed(s.t, 1.0, 0.0)).a.b;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double vj = s.v(static_cast<Eigen::Index>(j));
+    q[j] = D2(D1(s.q(static_cast<Eigen::Index>(j)), vj), D1(vj, 0.0));
+  }
+  const D2 r = f(q, D2(D1(s.t, 1.0), D1(1.0, 0.0)));
+  d.value = r.a.a;
+  d.dd = r.b.b;
+  return d;
+}
+
+Eigen::VectorXd Model::generalized(const PointRef& p, const Eigen::VectorXd& force) const {
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(ndof_);
+  if (p.body < 0) return g;
+  const Body& b = bodies_[static_cast<std::size_t>(p.body)];
+  g.segment(b.q0, dims_) = force;
+  if (b.r0 >= 0) {
+    const Eigen::VectorXd& o = p.offset;
+    if (dims_ == 2) {
+      g(b.r0) = o(0) * force(1) - o(1) * force(0);
+    } else {
+      g(b.r0) = o(1) * force(2) - o(2) * force(1);
+      g(b.r0 + 1) = o(2) * force(0) - o(0) * force(2);
+      g(b.r0 + 2) = o(0) * force(1) - o(1) * force(0);
+    }
+  }
+  return g;
+}
+
+Model::Kkt Model::system(const State& s) const {
+  const int n = ndof_;
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd mass = Eigen::VectorXd::Zero(n);
+  for (const auto& b : bodies_) {
+    for (int i = 0; i < dims_; ++i) {
+      mass(b.q0 + i) = b.mass;
+      f(b.q0 + i) += b.mass * gravity_(i);
+    }
+    for (int k = 0; k < b.nr; ++k) mass(b.r0 + k) = b.mass;  // any positive inertia: no body turns
+  }
+  std::vector<double> vars(slot_names_.size());
+  {
+    std::vector<double> qd(s.q.data(), s.q.data() + s.q.size());
+    vars = variables(qd, s.v, s.t);
+  }
+  for (const auto& l : loads_) {
+    Eigen::VectorXd F(dims_);
+    for (int i = 0; i < dims_; ++i) F(i) = l.force[static_cast<std::size_t>(i)].eval(vars);
+    f += generalized(l.at, F);
+    if (!l.couple.empty()) {
+      const Body& b = bodies_[static_cast<std::size_t>(l.body)];
+      for (int k = 0; k < b.nr; ++k) f(b.r0 + k) += l.couple[static_cast<std::size_t>(b.nr == 1 ? 0 : k)].eval(vars);
+    }
+  }
+  for (const auto& e : elements_) {
+    const auto L = derivs([&](const std::vector<D2>& q, const D2& t) { return path_length(e.points, q, t); }, s);
+    double tension = 0;
+    if (e.kind == Element::damper) {
+      tension = e.c * (L.grad.dot(s.v) + L.dt);
+    } else {
+      double rest = e.rest;
+      if (e.stretch) {
+        // origin length: every coordinate of tackle's at 0
+        std::vector<D2> q0(static_cast<std::size_t>(ndof_), D2(0.0));
+        for (const auto& b : bodies_) {
+          const Eigen::VectorXd c = b.kind == Body::line ? b.a : b.cm0;
+          for (int i = 0; i < dims_; ++i) q0[static_cast<std::size_t>(b.q0 + i)] = D2(c(i));
+        }
+        rest = path_length(e.points, q0, D2(s.t)).a.a - e.stretch_value;
+      }
+      tension = e.k * (L.value - rest);
+    }
+    f -= tension * L.grad;
+  }
+
+  // Constraints: every rule's; a guide only where the rules leave that motion free.
+  std::vector<Derivs> rows;
+  std::vector<int> kept;
+  Eigen::MatrixXd J(0, n);
+  int rank = 0;
+  for (std::size_t k = 0; k < cons_.size(); ++k) {
+    const Constraint& c = cons_[k];
+    Derivs dv = derivs([&](const std::vector<D2>& q, const D2& t) { return value(c, q, t); }, s);
+    if (c.guide) {
+      Eigen::MatrixXd J2(J.rows() + 1, n);
+      J2 << J, dv.grad.transpose();
+      const int r2 = rank_of(J2);
+      if (r2 == rank) continue;
+      rank = r2;
+      J = J2;
+    } else {
+      Eigen::MatrixXd J2(J.rows() + 1, n);
+      J2 << J, dv.grad.transpose();
+      J = J2;
+      rank = rank_of(J);
+    }
+    rows.push_back(dv);
+    kept.push_back(static_cast<int>(k));
+  }
+  const int m = static_cast<int>(kept.size());
+  Kkt out;
+  out.K = Eigen::MatrixXd::Zero(n + m, n + m);
+  out.rhs = Eigen::VectorXd::Zero(n + m);
+  out.K.topLeftCorner(n, n) = mass.asDiagonal();
+  out.rhs.head(n) = f;
+  for (int j = 0; j < m; ++j) {
+    const Constraint& c = cons_[static_cast<std::size_t>(kept[static_cast<std::size_t>(j)])];
+    Eigen::VectorXd g = c.g_sign * rows[static_cast<std::size_t>(j)].grad;
+    if (c.mu != 0) {
+      // sliding: the contact's force is N (n - mu s) at its point
+      g += generalized(c.points[0], -c.mu * c.sliding);
+    }
+    out.K.block(0, n + j, n, 1) = -g;
+    out.K.block(n + j, 0, 1, n) = rows[static_cast<std::size_t>(j)].grad.transpose();
+    out.rhs(n + j) = -rows[static_cast<std::size_t>(j)].dd;
+  }
+  out.kept = kept;
+  return out;
+}
+
+Instant Model::solve_kinematics(const State& s) const {
+  // J a = -gamma with the given accelerations put in: the others by least squares, each
+  // compared where the constraints determine it.
+  const Kkt k = system(s);
+  const int n = ndof_, m = static_cast<int>(k.kept.size());
+  Eigen::MatrixXd J = k.K.bottomLeftCorner(m, n);
+  Eigen::VectorXd rhs = k.rhs.tail(m);
+  std::vector<bool> given(static_cast<std::size_t>(n), false);
+  for (const auto& b : bodies_) {
+    if (b.kind != Body::line) continue;
+    auto it = given_accel_.find("ddot(" + b.coord + ")");
+    if (it == given_accel_.end()) continue;
+    // the body's acceleration along its line is given, and the guides hold it across
+    for (int i = 0; i < dims_; ++i) {
+      const double ai = b.b(i) * it->second;
+      rhs -= J.col(b.q0 + i) * ai;
+      J.col(b.q0 + i).setZero();
+      given[static_cast<std::size_t>(b.q0 + i)] = true;
+    }
+  }
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  svd.setThreshold(1e-11);
+  const Eigen::VectorXd x = svd.solve(rhs);
+  Instant out;
+  out.residual = (J * x - rhs).norm() / std::max(1.0, rhs.norm());
+  const int rank = static_cast<int>(svd.rank());
+  const Eigen::MatrixXd nulls = svd.matrixV().rightCols(n - rank);
+  for (const auto& b : bodies_) {
+    if (b.kind != Body::line || given_accel_.count("ddot(" + b.coord + ")")) continue;
+    Quantity qn;
+    qn.name = "ddot(" + b.coord + ")";
+    qn.value = b.b.dot(x.segment(b.q0, dims_)) / b.b.squaredNorm();
+    for (int i = 0; i < dims_; ++i)
+      qn.determined = qn.determined && (b.b(i) == 0 || nulls.cols() == 0 || nulls.row(b.q0 + i).norm() < 1e-7);
+    out.quantities.push_back(qn);
+  }
+  return out;
+}
+
+Instant Model::solve(const State& s) const {
+  if (kinematic_) return solve_kinematics(s);
+  const Kkt k = system(s);
+  const int n = ndof_;
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(k.K, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const auto& sv = svd.singularValues();
+  const double smax = sv.size() ? sv(0) : 0.0;
+  int rank = 0;
+  for (int i = 0; i < sv.size(); ++i)
+    if (sv(i) > 1e-11 * smax) ++rank;
+  svd.setThreshold(1e-11);
+  const Eigen::VectorXd x = svd.solve(k.rhs);
+  Instant out;
+  const double scale = std::max(1.0, k.rhs.norm());
+  out.residual = (k.K * x - k.rhs).norm() / scale;
+  out.rank_deficiency = static_cast<int>(k.K.rows()) - rank;
+  const Eigen::MatrixXd nulls = svd.matrixV().rightCols(k.K.cols() - rank);
+  auto determined = [&](int i) { return nulls.rows() == 0 || nulls.cols() == 0 || nulls.row(i).norm() < 1e-7; };
+  for (const auto& b : bodies_) {
+    if (b.kind != Body::line && b.kind != Body::along) continue;
+    const double bb = b.kind == Body::line ? b.b.squaredNorm() : 1.0;
+    Quantity qn;
+    qn.name = b.kind == Body::line ? "ddot(" + b.coord + ")" : b.coord;
+    qn.value = b.b.dot(x.segment(b.q0, dims_)) / bb;
+    for (int i = 0; i < dims_; ++i) qn.determined = qn.determined && (b.b(i) == 0 || determined(b.q0 + i));
+    out.quantities.push_back(qn);
+  }
+  for (const auto& b : bodies_) {
+    for (int r = 0; r < b.nr; ++r) {
+      Quantity qn;
+      qn.name = "guide: angular acceleration of " + b.name;
+      qn.value = x(b.r0 + r);
+      qn.determined = determined(b.r0 + r);
+      out.quantities.push_back(qn);
+    }
+  }
+  for (std::size_t j = 0; j < k.kept.size(); ++j) {
+    const Constraint& c = cons_[static_cast<std::size_t>(k.kept[j])];
+    if (c.name.empty()) continue;
+    Quantity qn;
+    qn.name = c.guide ? "guide: " + c.name : c.name;
+    qn.value = x(n + static_cast<int>(j));
+    qn.determined = determined(n + static_cast<int>(j));
+    qn.force = true;
+    out.quantities.push_back(qn);
+  }
+  return out;
+}
+
+std::optional<Eigen::VectorXd> Model::accelerations(const State& s) const {
+  const Kkt k = system(s);
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(k.K);
+  cod.setThreshold(1e-11);
+  if (cod.rank() < k.K.rows()) return std::nullopt;
+  return Eigen::VectorXd(cod.solve(k.rhs).head(ndof_));
+}
+
+void Model::project(State& s, bool rates_only, const std::vector<bool>* frozen_q, const std::vector<bool>* frozen_v) const {
+  const int n = ndof_;
+  auto jac = [&](Eigen::VectorXd& phi, Eigen::VectorXd& phit) {
+    Eigen::MatrixXd J(static_cast<Eigen::Index>(cons_.size()), n);
+    phi.resize(static_cast<Eigen::Index>(cons_.size()));
+    phit.resize(static_cast<Eigen::Index>(cons_.size()));
+    for (std::size_t k = 0; k < cons_.size(); ++k) {
+      const Constraint& c = cons_[k];
+      const Derivs dv = derivs([&](const std::vector<D2>& q, const D2& t) { return value(c, q, t); }, s);
+      J.row(static_cast<Eigen::Index>(k)) = dv.grad.transpose();
+      phi(static_cast<Eigen::Index>(k)) = dv.value - c.constant;
+      phit(static_cast<Eigen::Index>(k)) = dv.dt;
+    }
+    return J;
+  };
+  auto freeze = [&](Eigen::MatrixXd J, const std::vector<bool>* frozen) {
+    if (frozen)
+      for (int i = 0; i < n; ++i)
+        if ((*frozen)[static_cast<std::size_t>(i)]) J.col(i).setZero();
+    return J;
+  };
+  Eigen::VectorXd phi, phit;
+  if (!rates_only) {
+    for (int it = 0; it < 60; ++it) {
+      Eigen::MatrixXd J = jac(phi, phit);
+      if (phi.norm() < 1e-13 * (1 + s.q.norm())) break;
+      s.q -= pinv_solve_matrix(freeze(J, frozen_q)) * phi;
+    }
+  }
+  Eigen::MatrixXd J = jac(phi, phit);
+  s.v -= pinv_solve_matrix(freeze(J, frozen_v)) * (J * s.v + phit);
+}
+
+bool Model::settle_massless(State& s) const {
+  // A massless body's position (and rate) is where its force balance holds: Gauss-Newton on
+  // the massless bodies' coordinates and rates, making the whole system consistent.
+  std::vector<int> idx;
+  for (const auto& b : bodies_)
+    if (!b.massive && b.kind == Body::line)
+      for (int i = 0; i < dims_; ++i) idx.push_back(b.q0 + i);
+  if (idx.empty()) return true;
+  const int u = static_cast<int>(idx.size());
+  auto residual = [&](const State& st) {
+    const Kkt k = system(st);
+    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(k.K);
+    cod.setThreshold(1e-11);
+    const Eigen::VectorXd x = cod.solve(k.rhs);
+    Eigen::VectorXd inconsistency = k.K * x - k.rhs;
+    // and the constraints themselves, positions and rates
+    std::vector<double> extra;
+    for (const auto& c : cons_) {
+      const Derivs dv = derivs([&](const std::vector<D2>& q, const D2& t) { return value(c, q, t); }, st);
+      extra.push_back(dv.value - c.constant);
+      extra.push_back(dv.grad.dot(st.v) + dv.dt);
+    }
+    Eigen::VectorXd r(inconsistency.size() + static_cast<Eigen::Index>(extra.size()));
+    r << inconsistency, Eigen::Map<Eigen::VectorXd>(extra.data(), static_cast<Eigen::Index>(extra.size()));
+    return r;
+  };
+  for (int it = 0; it < 40; ++it) {
+    const Eigen::VectorXd r0 = residual(s);
+    if (r0.norm() < 1e-11 * (1 + s.q.norm() + s.v.norm())) return true;
+    Eigen::MatrixXd Jr(r0.size(), 2 * u);
+    for (int j = 0; j < 2 * u; ++j) {
+      State p = s;
+      const double h = 1e-7;
+      if (j < u) p.q(idx[static_cast<std::size_t>(j)]) += h;
+      else p.v(idx[static_cast<std::size_t>(j - u)]) += h;
+      Jr.col(j) = (residual(p) - r0) / h;
+    }
+    const Eigen::VectorXd step = pinv_solve_matrix(Jr) * r0;
+    for (int j = 0; j < u; ++j) {
+      s.q(idx[static_cast<std::size_t>(j)]) -= step(j);
+      s.v(idx[static_cast<std::size_t>(j)]) -= step(u + j);
+    }
+  }
+  const Eigen::VectorXd r = residual(s);
+  return r.norm() < 1e-9 * (1 + s.q.norm() + s.v.norm());
+}
+
+State Model::base_state() const {
+  State s;
+  s.q = Eigen::VectorXd::Zero(ndof_);
+  s.v = Eigen::VectorXd::Zero(ndof_);
+  for (const auto& b : bodies_) {
+    s.q.segment(b.q0, dims_) = b.cm0;
+    if (b.kind == Body::line) {
+      auto it = base_rate_.find("dot(" + b.coord + ")");
+      if (it != base_rate_.end()) s.v.segment(b.q0, dims_) = b.b * it->second;
+    }
+  }
+  project(s, false);
+  return s;
+}
+
+std::optional<State> Model::random_state(std::mt19937_64& rng, double spread) const {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  State s = base_state();
+  for (const auto& b : bodies_) {
+    if (b.kind != Body::line) continue;
+    s.q.segment(b.q0, dims_) += b.b * (spread * u(rng));
+    s.v.segment(b.q0, dims_) = b.b * u(rng);
+  }
+  if (uses_time_) s.t = 0.5 * (1 + u(rng));
+  project(s, false);
+  if (has_massless_ && !settle_massless(s)) return std::nullopt;
+  // the state must keep every constraint
+  for (const auto& c : cons_) {
+    const Derivs dv = derivs([&](const std::vector<D2>& q, const D2& t) { return value(c, q, t); }, s);
+    if (std::abs(dv.value - c.constant) > 1e-9 * (1 + std::abs(c.constant))) return std::nullopt;
+    if (std::abs(dv.grad.dot(s.v) + dv.dt) > 1e-9 * (1 + s.v.norm())) return std::nullopt;
+  }
+  return s;
+}
+
+std::optional<State> Model::state_from(const std::map<std::string, double>& coords,
+                                       const std::map<std::string, double>& rates, double t) const {
+  State s = base_state();
+  s.t = t;
+  for (const auto& b : bodies_) {
+    if (b.kind != Body::line) continue;
+    auto c = coords.find(b.coord);
+    if (c != coords.end()) s.q.segment(b.q0, dims_) = b.a + b.b * c->second;
+    auto r = rates.find("dot(" + b.coord + ")");
+    s.v.segment(b.q0, dims_) = b.b * (r != rates.end() ? r->second : 0.0);
+  }
+  // project moving only the bodies whose values were not given
+  std::vector<bool> fq(static_cast<std::size_t>(ndof_), false), fv(static_cast<std::size_t>(ndof_), false);
+  for (const auto& b : bodies_) {
+    if (b.kind != Body::line) continue;
+    for (int i = 0; i < dims_; ++i) {
+      // only along the body's line: across it the guides hold it anyway
+      if (coords.count(b.coord)) fq[static_cast<std::size_t>(b.q0 + i)] = b.b(i) != 0;
+      if (rates.count("dot(" + b.coord + ")")) fv[static_cast<std::size_t>(b.q0 + i)] = b.b(i) != 0;
+    }
+  }
+  project(s, false, &fq, &fv);
+  for (const auto& b : bodies_) {
+    if (b.kind != Body::line) continue;
+    const double bb = b.b.squaredNorm();
+    if (coords.count(b.coord)) {
+      const double got = b.b.dot(s.q.segment(b.q0, dims_) - b.a) / bb;
+      if (std::abs(got - coords.at(b.coord)) > 1e-9 * (1 + std::abs(coords.at(b.coord)))) return std::nullopt;
+    }
+    if (rates.count("dot(" + b.coord + ")")) {
+      const double got = b.b.dot(s.v.segment(b.q0, dims_)) / bb;
+      if (std::abs(got - rates.at("dot(" + b.coord + ")")) > 1e-9 * (1 + std::abs(got))) return std::nullopt;
+    }
+  }
+  if (has_massless_ && !settle_massless(s)) return std::nullopt;
+  return s;
+}
+
+bool Model::strands_keep_direction(const State& s, const State& ref) const {
+  // A strand that keeps its direction and now points the other way went through zero length
+  // (a strand that turns may point anywhere).
+  auto check = [&](const std::vector<PointRef>& pts) {
+    const std::vector<double> q(s.q.data(), s.q.data() + s.q.size()), q0(ref.q.data(), ref.q.data() + ref.q.size());
+    const auto vars = variables(q, Eigen::VectorXd(), s.t), vars0 = variables(q0, Eigen::VectorXd(), ref.t);
+    for (std::size_t k = 1; k < pts.size(); ++k) {
+      const auto a = position(pts[k], q, vars, s.t), b = position(pts[k - 1], q, vars, s.t);
+      const auto a0 = position(pts[k], q0, vars0, ref.t), b0 = position(pts[k - 1], q0, vars0, ref.t);
+      Eigen::VectorXd now(dims_), then(dims_);
+      for (int i = 0; i < dims_; ++i) {
+        now(i) = a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>(i)];
+        then(i) = a0[static_cast<std::size_t>(i)] - b0[static_cast<std::size_t>(i)];
+      }
+      const double dot = now.dot(then), norms = now.norm() * then.norm();
+      if (norms == 0) continue;
+      if (dot < 0 && std::abs(std::abs(dot) - norms) < 1e-9 * norms) return false;
+    }
+    return true;
+  };
+  for (const auto& c : cons_)
+    if (c.kind == Constraint::path && !check(c.points)) return false;
+  for (const auto& e : elements_)
+    if (!check(e.points)) return false;
+  return true;
+}
+
+std::map<std::string, double> Model::coordinates_at(const State& s) const {
+  std::map<std::string, double> out;
+  for (const auto& b : bodies_) {
+    if (b.kind != Body::line) continue;
+    out[b.coord] = b.b.dot(s.q.segment(b.q0, dims_) - b.a) / b.b.squaredNorm();
+  }
+  return out;
+}
+
+std::map<std::string, double> Model::values_at(const State& s) const {
+  std::map<std::string, double> out = params_;
+  for (const auto& b : bodies_) {
+    if (b.kind != Body::line) continue;
+    const double bb = b.b.squaredNorm();
+    out[b.coord] = b.b.dot(s.q.segment(b.q0, dims_) - b.a) / bb;
+    out["dot(" + b.coord + ")"] = b.b.dot(s.v.segment(b.q0, dims_)) / bb;
+  }
+  out["t"] = s.t;
+  for (const auto& [name, v] : given_accel_) out[name] = v;
+  return out;
+}
+
+}  // namespace crosscheck

@@ -1,0 +1,200 @@
+// The cross-check's numeric model of a description: every body's center free in the
+// problem's axes (and, for a body with mass in 2-D or 3-D, a rotation), every point's
+// position from the description's geometry, each connection a constraint on those
+// coordinates or a force law. At a state (q, dq/dt, t) it solves
+//   M q'' = f + G lambda,   J q'' = -gamma
+// (J the constraints' Jacobian, gamma their second time derivative at q'' = 0, both exact by
+// dual numbers; G the generalized directions of the constraint forces, J^T for ideal ones).
+// It reads the description (tackle's plain Description structs) and takes the SI factor of
+// each parameter's unit from tackle's unit table (src/core/units: input reading); nothing of
+// tackle's model, equations, solver, energy or motion is used.
+#pragma once
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "crosscheck/expr.hpp"
+#include "description/description.hpp"
+
+namespace crosscheck {
+
+/// A description the model cannot express, with the reason.
+struct Unsupported : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// One state of the mechanism: the coordinates and rates (translations of every body, then
+/// rotations, which stay 0: tackle's bodies translate), and the time.
+struct State {
+  Eigen::VectorXd q, v;
+  double t = 0;
+};
+
+/// What the model gives at a state: the named quantities (tackle's names: ddot(x_A), T_s, N_A,
+/// and `guide ...` for the forces that keep a body on the motion tackle gives it, which must
+/// be 0), each with whether the equations determine it.
+struct Quantity {
+  std::string name;
+  double value = 0;
+  bool determined = true;
+  bool force = false;  // a constraint force (else an acceleration)
+};
+
+struct Instant {
+  std::vector<Quantity> quantities;
+  double residual = 0;  // of the KKT system at its least-squares solution, relative
+  int rank_deficiency = 0;
+};
+
+class Model {
+ public:
+  /// Builds the model from a description (throws Unsupported, with the reason, for what it
+  /// cannot express). `rng` draws values for parameters that have none. `perturb` scales
+  /// every mass by 1 + perturb (the test that the comparison catches a wrong model).
+  Model(const tackle::Description& d, std::mt19937_64& rng, double perturb = 0);
+
+  [[nodiscard]] int dims() const { return dims_; }
+  [[nodiscard]] int dofs() const { return ndof_; }
+  /// The state at the layout (given values, then layout, then 0), projected onto the
+  /// constraints.
+  [[nodiscard]] State base_state() const;
+  /// A random state near the layout, consistent with the constraints (positions and rates).
+  [[nodiscard]] std::optional<State> random_state(std::mt19937_64& rng, double spread) const;
+  /// The accelerations and constraint forces at a state.
+  [[nodiscard]] Instant solve(const State& s) const;
+  /// The values tackle's closed forms are evaluated at: every parameter (SI), every coordinate
+  /// and rate (by tackle's names) and t.
+  [[nodiscard]] std::map<std::string, double> values_at(const State& s) const;
+  /// The accelerations (all of q) at a state, for integration; nullopt when not determined.
+  [[nodiscard]] std::optional<Eigen::VectorXd> accelerations(const State& s) const;
+  /// Each coordinate of tackle's (a body's `position`) at a state.
+  [[nodiscard]] std::map<std::string, double> coordinates_at(const State& s) const;
+  /// The state whose tackle coordinates and rates are the given ones (other coordinates
+  /// projected onto the constraints); for initial values of a motion.
+  [[nodiscard]] std::optional<State> state_from(const std::map<std::string, double>& coords,
+                                                const std::map<std::string, double>& rates, double t) const;
+  /// Whether every strand that keeps its direction (of strings, springs, dampers, contacts) points the way it
+  /// points in `ref` (a strand through zero length, a block through its pulley, is where
+  /// neither this model nor tackle's describes the mechanism any more).
+  [[nodiscard]] bool strands_keep_direction(const State& s, const State& ref) const;
+  /// Whether any expression depends on time.
+  [[nodiscard]] bool uses_time() const { return uses_time_; }
+  [[nodiscard]] const std::map<std::string, double>& parameters() const { return params_; }
+  /// Whether a massless body's position had to be solved for from its force balance.
+  [[nodiscard]] bool has_massless() const { return has_massless_; }
+  /// Scales for "near 0": the largest mass and the magnitude of gravity.
+  [[nodiscard]] double largest_mass() const {
+    double m = 0;
+    for (const auto& b : bodies_) m = std::max(m, b.mass);
+    return m;
+  }
+  [[nodiscard]] double gravity_magnitude() const { return gravity_.norm(); }
+
+  struct Body {
+    std::string name;
+    double mass = 0;
+    bool massive = false;
+    enum Kind { line, still, driven, along } kind = line;
+    std::string coord;               // line: tackle's coordinate (position), along: the acceleration's name
+    Eigen::VectorXd a, b;            // line: cm(s) = a + s b; along: b is the unit direction
+    Eigen::VectorXd cm0;             // at the layout
+    Eigen::VectorXd frame_accel;     // driven: the given acceleration (constant)
+    int q0 = 0, r0 = -1, nr = 0;     // index of its translations; of its rotations (-1: none)
+  };
+  struct PointRef {
+    int body = -1;                   // -1: the ground
+    Eigen::VectorXd offset;          // from the body's center at the layout (material point)
+    std::vector<Expr> ground;        // a ground point's position (parameters, t)
+    Eigen::VectorXd frame_accel;     // a ground point that moves with a driven body's frame
+  };
+  struct Constraint {
+    std::string name;                // tackle's unknown, "" when it has none, "guide ..." for guides
+    bool guide = false;
+    enum Kind { path, length_expr, project, relative, slide, rotation, guide_line } kind = path;
+    std::vector<PointRef> points;    // path: in order; project: one; relative: two; slide: the point on `body`
+    Expr length;                     // length_expr
+    Eigen::VectorXd dir;             // project/relative/guide: the unit direction (rotation: axis index in dir[0])
+    int body = -1, other = -1;       // rotation: the bodies (other -1: the ground); guide: the body;
+                                     // slide: `other` carries the slide (dir turns with it)
+    double g_sign = 1;               // G = g_sign J^T, unless friction is set
+    double mu = 0;                   // sliding: friction -mu N along `sliding`
+    Eigen::VectorXd sliding;
+    double constant = 0;             // its value at the layout
+  };
+  struct Element {                   // a spring, elastic cord or damper on a path
+    enum Kind { spring, damper } kind = spring;
+    std::vector<PointRef> points;
+    double k = 0, rest = 0, c = 0;
+    bool stretch = false;            // rest = origin length - stretch
+    double stretch_value = 0;
+  };
+  struct Load {
+    int body = -1;
+    PointRef at;
+    std::vector<Expr> force;         // one per axis; may use coordinates, rates, t
+    std::vector<Expr> couple;        // 2-D: one, 3-D: three
+  };
+
+ private:
+  int dims_ = 1;
+  int ndof_ = 0;
+  bool uses_time_ = false;
+  bool has_massless_ = false;
+  std::map<std::string, double> params_;
+  std::vector<std::string> slot_names_;
+  std::map<std::string, int> slots_;
+  int first_coord_slot_ = 0;
+  std::vector<Body> bodies_;
+  std::map<std::string, PointRef> points_;
+  std::vector<Constraint> cons_;
+  std::vector<Element> elements_;
+  std::vector<Load> loads_;
+  Eigen::VectorXd gravity_;
+  std::map<std::string, double> base_coord_, base_rate_;
+  std::map<std::string, double> given_accel_;  // kinematics: ddot(q) -> its value
+  bool kinematic_ = false;                     // no body has a mass: the constraints alone
+  [[nodiscard]] Instant solve_kinematics(const State& s) const;
+
+  int slot(const std::string& name) const;
+  Expr compile(const tackle::Text& t) const;
+  double number(const tackle::Text& t) const;
+  PointRef point(const std::string& name, int body_hint) const;
+  PointRef material(const std::string& name, int body) const;
+
+  template <class S>
+  std::vector<S> variables(const std::vector<S>& q, const Eigen::VectorXd& v, const S& t) const;
+  template <class S>
+  std::vector<S> position(const PointRef& p, const std::vector<S>& q, const std::vector<S>& vars, const S& t) const;
+  template <class S>
+  S value(const Constraint& c, const std::vector<S>& q, const S& t) const;
+  template <class S>
+  S path_length(const std::vector<PointRef>& pts, const std::vector<S>& q, const S& t) const;
+
+  /// Value, gradient in q, time derivative and second derivative along (v, 1) of a function
+  /// of (q, t) given in D2.
+  struct Derivs {
+    double value = 0, dt = 0, dd = 0;
+    Eigen::VectorXd grad;
+  };
+  template <class F>
+  Derivs derivs(const F& f, const State& s) const;
+  Eigen::VectorXd generalized(const PointRef& p, const Eigen::VectorXd& force) const;
+  // Onto the constraints (positions, then rates), moving only the coordinates not frozen.
+  void project(State& s, bool rates_only, const std::vector<bool>* frozen_q = nullptr,
+               const std::vector<bool>* frozen_v = nullptr) const;
+  bool settle_massless(State& s) const;
+  struct Kkt {
+    Eigen::MatrixXd K;
+    Eigen::VectorXd rhs;
+    std::vector<int> kept;  // the constraints in the system
+  };
+  Kkt system(const State& s) const;
+};
+
+}  // namespace crosscheck
