@@ -20,12 +20,12 @@ std::unordered_set<ex, ExHash, ex_is_equal> symbols_asked(const std::vector<Want
   return out;
 }
 
-std::vector<ex> balance_coordinates(const Model& m) {
+std::vector<ex> balance_coordinates(const Model& m, const SymbolTable& table) {
   std::vector<ex> out;
   for (const auto& b : m.bodies) {
     if (!b.has_mass || !b.mass.is_zero() || b.coord.is_zero() || contains(m.given, b.coord)) continue;
     const bool tied = std::any_of(m.constraints.begin(), m.constraints.end(), [&](const Constraint& c) {
-      return c.quantity.has(b.coord) || m.symbols->hidden_in_lengths(c.quantity, b.coord);
+      return c.quantity.has(b.coord) || table.hidden_in_lengths(c.quantity, b.coord);
     });
     if (!tied) out.push_back(b.coord);
   }

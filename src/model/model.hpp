@@ -215,8 +215,10 @@ struct Model {
 /// springs in series): nothing moves them but the forces, which sum to zero, so the body's
 /// balance fixes each one at every instant. They are unknowns of the instant and not degrees
 /// of freedom of the motion. (A massless ring on a string is tied by the string's length: its
-/// balance gives the tension instead.) Given coordinates are left out.
-[[nodiscard]] std::vector<GiNaC::ex> balance_coordinates(const Model& m);
+/// balance gives the tension instead.) Given coordinates are left out. `table` is the model's
+/// symbol table (while the model is built, the builder's).
+[[nodiscard]] std::vector<GiNaC::ex> balance_coordinates(const Model& m, const SymbolTable& table);
+[[nodiscard]] inline std::vector<GiNaC::ex> balance_coordinates(const Model& m) { return balance_coordinates(m, *m.symbols); }
 
 /// Builds the model; every problem in the description is reported at once (InputError).
 [[nodiscard]] Model build_model(const Description& d, const RuleSet& rules);

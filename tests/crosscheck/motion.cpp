@@ -104,7 +104,7 @@ Outcome compare_motion(const tackle::Analysis& a, const Model& m, const tackle::
     if (crossed >= 0 && target > crossed) {
       out.motion_note = fmt::format(
           "a strand goes through zero length at t = {:.4g} s (a block through its pulley or anchor): "
-          "compared up to there; tackle's simulate goes on without an event", crossed);
+          "compared up to there", crossed);
       return out;
     }
     if (failed) {

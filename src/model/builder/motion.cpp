@@ -53,7 +53,7 @@ void motion(BuildContext& ctx) {
   spec.at = md.at;
   // The moving coordinates, in body order.
   // (A massless body's coordinate that its balance fixes is no degree of freedom.)
-  const std::vector<ex> by_balance = balance_coordinates(m);
+  const std::vector<ex> by_balance = balance_coordinates(m, *ctx.table);
   std::vector<int> moving;
   for (std::size_t i = 0; i < m.bodies.size(); ++i) {
     const Body& b = m.bodies[i];
