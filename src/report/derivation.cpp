@@ -294,7 +294,9 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       break;
     case Solution::Status::inconsistent:
       d.status = "inconsistent";
-      text("The equations are inconsistent: " + join(sol.conflicts, ", ") + " contradict each other.");
+      text("The equations are inconsistent: " + join(sol.conflicts, ", ") +
+           (sol.conflicts.size() == 1 ? " cannot hold (the other equations give its terms values that contradict it)."
+                                      : " contradict each other."));
       break;
   }
   // Velocity and position questions: the rate (length) equations solved on their own.

@@ -4,6 +4,7 @@
 #include "model/builder/stages.hpp"
 
 #include <algorithm>
+#include <functional>
 
 #include "expr/print.hpp"
 #include "expr/rational.hpp"
@@ -130,13 +131,26 @@ void motion(BuildContext& ctx) {
     }
     if (!ok) usable = false;
   } else {
-    // Given coordinates first, then the others in body order, each when it is independent of
-    // those chosen before it.
+    // Given coordinates first, then those `initial` gives, then those of bodies with mass,
+    // then the others in body order, each when it is independent of those chosen before it
+    // (a massless ring tied to a block by a string is described by the block's coordinate).
     std::vector<std::size_t> order;
-    for (std::size_t j = 0; j < n; ++j)
-      if (contains(m.given, m.bodies[moving[j]].coord)) order.push_back(j);
-    for (std::size_t j = 0; j < n; ++j)
-      if (std::find(order.begin(), order.end(), j) == order.end()) order.push_back(j);
+    auto in_initial = [&](const ex& q) {
+      return std::any_of(md.initial.begin(), md.initial.end(), [&](const auto& kv) {
+        const auto r = parse_expression(kv.first.text, *ctx.table);
+        return r.value && r.value->is_equal(q);
+      });
+    };
+    // (Only the motion's own rates may be given: a rate in `initial` names its coordinate.)
+    const std::vector<std::function<bool(const Body&)>> preferences = {
+        [&](const Body& b) { return contains(m.given, b.coord); },
+        [&](const Body& b) { return in_initial(b.rate); },
+        [&](const Body& b) { return in_initial(b.coord); },
+        [&](const Body& b) { return b.has_mass && !b.mass.is_zero(); },
+        [&](const Body&) { return true; }};
+    for (const auto& preferred : preferences)
+      for (std::size_t j = 0; j < n; ++j)
+        if (std::find(order.begin(), order.end(), j) == order.end() && preferred(m.bodies[moving[j]])) order.push_back(j);
     for (auto j : order) {
       if (chosen.size() == dof) break;
       std::vector<std::size_t> with = chosen;

@@ -315,3 +315,16 @@ motion:
   CHECK(s.events[0].what == "strand A-P of string s: its length reaches zero (a body reaches the point at its end)");
   CHECK(s.events[0].t == Approx(std::sqrt(2 / (9.81 / 3))).epsilon(1e-8));
 }
+
+TEST_CASE("Massless ring: the motion is described by the coordinate 'initial' gives, not the first body's", "[motion][massless]") {
+  // The ring listed first; `initial` gives the block's x and dot(x) (and y_R, which fixes the
+  // string's length): the motion is described by x, and initial values are accepted as given.
+  std::string yaml = ring;
+  const std::string a_line = "  A: {mass: m, position: x, center_of_mass: [x, 0]}\n";
+  const std::string r_line = "  R: {mass: 0, position: y_R, center_of_mass: [L, y_R]}\n";
+  yaml.replace(yaml.find(a_line), a_line.size() + r_line.size(), r_line + a_line);
+  const auto a = run_text(yaml + "motion:\n  initial: {x: 0, dot(x): 0, y_R: -0.5}\n  until: 0.1\n");
+  REQUIRE(a->motion);
+  REQUIRE(a->motion->eom.q.size() == 1);
+  CHECK(to_text(a->motion->eom.q[0]) == "x");
+}
