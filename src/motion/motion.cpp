@@ -407,16 +407,27 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     all += *v;
   }
   // The dependent coordinates are needed wherever the motion follows something: the
-  // accelerations, the quantities asked for and the validity conditions (a string's T >= 0
-  // in the spring end x_S = 2 x + C of a string over a movable pulley).
+  // accelerations (without them there is no motion), then the quantities asked for and the
+  // validity conditions (a string's T >= 0 in the spring end x_S = 2 x + C of a string over a
+  // movable pulley); what cannot be followed is said, never dropped.
+  const Dependents for_accelerations = dependents(m, s, sol, spec, all);
+  if (!for_accelerations.problem.empty()) {
+    out.problem = for_accelerations.problem;
+    return out;
+  }
   for (const auto& w : m.wanted) all += substituted(w.expr, sol.general);
   for (const auto& c : sol.conditions)
     if (!c.depends_on_free) all += c.expr;
-  const Dependents dep = dependents(m, s, sol, spec, all);
-  if (!dep.problem.empty()) {
-    out.problem = dep.problem;
-    return out;
-  }
+  Dependents for_all = dependents(m, s, sol, spec, all);
+  const Dependents& dep = for_all.problem.empty() ? for_all : for_accelerations;
+  // A coordinate (or rate) of a body that is neither the motion's nor given by it.
+  auto unplaced = [&](const ex& e) -> std::optional<ex> {
+    for (const auto& b : m.bodies)
+      if (!b.coord.is_zero() && !contains(state, b.coord) && !dep.coords.count(b.coord) && e.has(b.coord)) return b.coord;
+    for (const auto& b : m.bodies)
+      if (!b.rate.is_zero() && !contains(state, b.rate) && !dep.rates.count(b.rate) && e.has(b.rate)) return b.rate;
+    return std::nullopt;
+  };
   for (auto& a : eom.acceleration) {
     a = normal(put_in(a, dep));
     for (const auto& c : m.candidates)
@@ -712,7 +723,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     const SymbolInfo* si = table.find(w.name);
     if (!si) continue;
     const ex value = put_in(substituted(w.expr, sol.general), dep);
-    bool known = true;
+    bool known = !unplaced(value);
     for (const auto& c : m.candidates)
       if (value.has(c)) known = false;
     if (known) out.in_state.emplace_back(si->sym, value);
@@ -724,8 +735,20 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     if (std::none_of(m.candidates.begin(), m.candidates.end(), [&](const ex& c) { return value.has(c); }))
       out.in_state.emplace_back(u, value);
   }
-  for (const auto& c : sol.conditions)
-    if (!c.depends_on_free) out.conditions_in_state.emplace_back(&c, put_in(c.expr, dep));
+  // A condition through a coordinate the motion cannot place (its starting value not given)
+  // is not followed in time: said, with the reason.
+  for (const auto& c : sol.conditions) {
+    if (c.depends_on_free) continue;
+    const ex in_state = put_in(c.expr, dep);
+    if (const auto q = unplaced(in_state)) {
+      out.not_followed.emplace_back(c.condition->source,
+                                    "it depends on " + to_text(*q) +
+                                        (for_all.problem.empty() ? ", which the motion's coordinates do not give"
+                                                                 : ", whose value at t = 0 'initial' does not give"));
+      continue;
+    }
+    out.conditions_in_state.emplace_back(&c, in_state);
+  }
   for (const auto& [length, what] : m.strand_lengths) {
     // (A strand through a dependent coordinate whose starting value is not given cannot be
     // followed: it is left out, as before strands were followed.)
@@ -762,7 +785,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   for (const auto& w : m.wanted) {
     ex value = w.defined ? substituted(w.expr, sol.general) : substituted(w.expr, sol.general);
     value = put_in(value, dep);
-    bool known = true;
+    bool known = !unplaced(value);
     for (const auto& c : m.candidates)
       if (value.has(c)) known = false;
     if (!known) continue;
@@ -781,6 +804,9 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   for (const auto& c : sol.conditions) {
     if (c.depends_on_free) continue;
     const ex in_state = put_in(c.expr, dep);
+    if (!out.not_followed.empty() && std::any_of(out.not_followed.begin(), out.not_followed.end(),
+                                                 [&](const auto& nf) { return nf.first == c.condition->source; }))
+      continue;
     if (!in_state.has(eom.q[0]) && !in_state.has(eom.dq[0]) && !in_state.has(t)) continue;  // constant in time
     ConditionInTime ct;
     ct.condition = *c.condition;

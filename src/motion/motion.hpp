@@ -118,6 +118,9 @@ struct Motion {
   // each validity condition (`expr op 0`), as expressions in q, dot(q), t and the parameters.
   std::vector<std::pair<GiNaC::ex, GiNaC::ex>> in_state;  // symbol -> expression
   std::vector<std::pair<const CheckedCondition*, GiNaC::ex>> conditions_in_state;
+  // Validity conditions that cannot be followed in time (source, why): a dependent coordinate
+  // whose starting value is not given. Said in the report; simulate does not watch them.
+  std::vector<std::pair<std::string, std::string>> not_followed;
   // Each strand's length in the state (it must stay positive), with the strand's name.
   std::vector<std::pair<std::string, GiNaC::ex>> strands_in_state;
   std::string problem;       // the motion could not be followed at all: why (an input error)

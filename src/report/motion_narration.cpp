@@ -119,6 +119,10 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
       }
     }
   }
+  // Conditions the motion cannot follow are said whether or not there is a response.
+  for (const auto& [source, why] : mo.not_followed)
+    text(source + " is not followed in time: " + why + " (give its value at t = 0 in 'initial'); `tackle simulate` "
+                  "does not watch it.");
   if (!mo.response) {
     text("No closed-form response: " + mo.no_response + ". `tackle simulate` integrates the motion numerically.");
     return;

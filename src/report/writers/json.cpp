@@ -81,6 +81,8 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
   }
   j["quantities"] = J::array();
   for (const auto& q : mo.quantities) j["quantities"].push_back({{"name", q.name}, {"in_time", expr(q.of_t)}});
+  j["not_followed"] = J::array();
+  for (const auto& [source, why] : mo.not_followed) j["not_followed"].push_back({{"source", source}, {"why", why}});
   j["conditions"] = J::array();
   for (const auto& c : mo.conditions) {
     const std::string& op = c.condition.op;
