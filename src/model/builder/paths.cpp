@@ -15,6 +15,15 @@ namespace {
 ex turning_length(BuildContext& ctx, const Point& a, const Point& b, const ex& squared) {
   const auto key = std::minmax(a.name, b.name);
   if (auto it = ctx.turning_lengths.find(key); it != ctx.turning_lengths.end()) return it->second;
+  // Two strands of one length at every position (mirror images about a body's line) are one
+  // symbol: with two, their difference would not cancel (a balance across the line would
+  // read a T (1/l_QP - 1/l_A1Q) = 0 and be called inconsistent).
+  for (const auto& l : ctx.m.lengths)
+    if ((l.squared - squared).expand().is_zero()) {
+      ctx.turning_lengths.emplace(key, l.symbol);
+      for (const Point* p : {&a, &b}) ctx.turning_at.emplace(ctx.point_index.at(p->name), a.name + "-" + b.name);
+      return l.symbol;
+    }
   const bool short_names = a.name.size() == 1 && b.name.size() == 1;
   const std::string base = "l_" + a.name + (short_names ? "" : "_") + b.name;
   std::string name = base;
