@@ -708,7 +708,7 @@ TEST_CASE("CLI: text from the description reaches Markdown and HTML escaped: no 
   fs::remove_all(dir);
 }
 
-TEST_CASE("CLI: out of memory is exit 3 with a message, and leaves no temporary file", "[cli][errors][files]") {
+TEST_CASE("CLI: out of memory is exit 3 with a message, and leaves no temporary file", "[cli][errors][files][address-space]") {
   // Under each address-space limit from 8 to 40 MB, tackle either finishes, or says it ran
   // out of memory (exit 3) with its output's temporary file removed; or the limit is too
   // small for the program to start at all (then --version dies too, before any of tackle's
@@ -742,7 +742,7 @@ TEST_CASE("CLI: out of memory is exit 3 with a message, and leaves no temporary 
   fs::remove_all(dir);
 }
 
-TEST_CASE("CLI: a batch whose outputs are larger than the memory tackle may use is graded whole", "[cli][batch][limits]") {
+TEST_CASE("CLI: a batch whose outputs are larger than the memory tackle may use is graded whole", "[cli][batch][limits][address-space]") {
   // 100,000 lines that are not JSON: about 29 MB of results and 14 MB of results file, under
   // a 24 MB address-space limit (tackle itself needs about 11 MB of it): only a batch read,
   // graded and written a line at a time fits.
