@@ -415,10 +415,12 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     out.problem = for_accelerations.problem;
     return out;
   }
+  const ex accelerations_only = all;
   for (const auto& w : m.wanted) all += substituted(w.expr, sol.general);
   for (const auto& c : sol.conditions)
     if (!c.depends_on_free) all += c.expr;
-  Dependents for_all = dependents(m, s, sol, spec, all);
+  // (Solved again only when the quantities and conditions add something to what is needed.)
+  Dependents for_all = all.is_equal(accelerations_only) ? for_accelerations : dependents(m, s, sol, spec, all);
   const Dependents& dep = for_all.problem.empty() ? for_all : for_accelerations;
   // A coordinate (or rate) of a body that is neither the motion's nor given by it.
   auto unplaced = [&](const ex& e) -> std::optional<ex> {
