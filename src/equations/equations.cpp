@@ -40,9 +40,11 @@ Equation lmb_along(const Model& m, const std::vector<int>& bodies, bool system, 
   ex sum = 0, rhs = 0;
   for (const auto& l : m.loads) {
     if (!in(bodies, l.body)) continue;
-    const ex f = inner(l.force, direction).expand();
+    const ex built = inner(l.force, direction);
+    const ex f = built.expand();
     if (f.is_zero()) continue;
     eq.terms.push_back(f);
+    eq.built.push_back(built);
     eq.sources.push_back(l.source);
     sum += f;
   }
@@ -221,17 +223,37 @@ EquationSystem build_equations(const Model& m) {
 
 namespace tackle {
 
+namespace {
+
+// e with every plain number that is added to something else left out (x + 3 -> x; 3 alone
+// stays): such a number is read in SI, in the unit of what it is added to.
+ex without_plain_summands(const ex& e) {
+  if (is_exactly<numeric>(e) || is_exactly<symbol>(e)) return e;
+  if (is_exactly<add>(e)) {
+    ex kept = 0;
+    bool any = false;
+    for (const auto& part : e)
+      if (!is_exactly<numeric>(part)) kept += without_plain_summands(part), any = true;
+    return any ? kept : e;
+  }
+  return e.map(without_plain_summands);
+}
+
+}  // namespace
+
 std::vector<Diagnostic> check_dimensions(const Model& m, const EquationSystem& s) {
   // Each term of a linear momentum balance is a force. (The other sides and the moment arms
   // may be written as plain numbers, which are read in SI and carry no dimension of their
-  // own, so they are not compared.)
+  // own, so they are not compared: a term is looked at as built, before it is expanded, and
+  // a plain number added to a quantity is taken to be in that quantity's unit, as a point
+  // at 3 on a spring's path is 3 m.)
   std::vector<Diagnostic> out;
   const SymbolTable& table = *m.symbols;
   for (const auto& eq : s.equations) {
     if (eq.kind != Equation::Kind::lmb) continue;
     for (std::size_t i = 0; i < eq.terms.size(); ++i) {
       std::string problem;
-      const auto dim = dimension_of(eq.terms[i], table, problem);
+      const auto dim = dimension_of(without_plain_summands(i < eq.built.size() ? eq.built[i] : eq.terms[i]), table, problem);
       if (!dim) {
         if (!problem.empty())
           out.push_back({{m.file, 0, 0}, "equation '" + eq.label + "': the term from " + eq.sources[i] + " " + problem});

@@ -22,6 +22,7 @@ struct Equation {
   std::string why;                  // amb: what the choice of point or axis eliminates
   std::vector<int> bodies;          // lmb, amb: the body or the system balanced
   bool system = false;
+  std::vector<GiNaC::ex> built;     // lmb: the same terms as built, not expanded (for units)
 };
 
 /// A constraint as the derivation shows it: the constant quantity, its rate, its acceleration.

@@ -86,25 +86,55 @@ Dependents dependents(const Model& m, const EquationSystem& s, const Solution& s
     add_balance_coordinates(d, m, sol);
     return d;
   }
-  // quantity(q) = quantity(q at t = 0) for each constraint.
+  // quantity(q) = quantity(q at t = 0) for each constraint. An initial value 'initial' does
+  // not give stands as a symbol of its own: it often cancels (a fixed pulley's height in the
+  // length of the string over it), and where it does not, that value is what is missing.
+  exmap at_start = spec.initial;
+  std::vector<std::pair<ex, ex>> not_given;  // (symbol standing for q(0), q)
+  for (const auto& b : m.bodies)
+    if (!b.coord.is_zero() && !spec.initial.count(b.coord)) {
+      const symbol q0(to_text(b.coord) + "(0)");
+      at_start[b.coord] = q0;
+      not_given.emplace_back(q0, b.coord);
+    }
   std::vector<Equation> eqs;
   for (const auto& c : m.constraints) {
-    const ex at0 = substituted(c.quantity, spec.initial);
-    for (const auto& b : m.bodies)
-      if (!b.coord.is_zero() && at0.has(b.coord)) {
-        d.problem = "the motion needs the initial value of " + to_text(b.coord) +
-                    " (the constraints fix it only up to a constant; expected it in 'initial')";
-        return d;
-      }
     Equation e;
     e.kind = Equation::Kind::constraint_position;
     e.label = c.label;
     e.lhs = c.quantity;
-    e.rhs = at0;
+    e.rhs = substituted(c.quantity, at_start);
     eqs.push_back(e);
   }
   const Solution r = solve_equations(m.file, eqs, dep_coords);
   for (const auto& v : r.values) d.coords[v.unknown] = v.value;
+  // The dependent coordinates that are needed, and the starting values they still contain.
+  std::vector<std::string> missing;
+  for (const auto& c : dep_coords) {
+    bool used = needed.has(c);
+    for (const auto& l : m.lengths) used = used || (needed.has(l.symbol) && l.squared.has(c));
+    if (!used) continue;
+    const auto it = d.coords.find(c);
+    if (it == d.coords.end()) {  // not solved for: reported where it is used, unless it is missing
+      if (!spec.initial.count(c) && std::find(missing.begin(), missing.end(), to_text(c)) == missing.end()) missing.push_back(to_text(c));
+      continue;
+    }
+    for (const auto& [q0, q] : not_given)
+      if (it->second.has(q0) && std::find(missing.begin(), missing.end(), to_text(q)) == missing.end()) missing.push_back(to_text(q));
+  }
+  if (!missing.empty()) {
+    d.problem = "the motion needs the initial value of " + join(missing, " and ") +
+                " (the constraints fix " + (missing.size() == 1 ? "it" : "them") + " only up to a constant; expected " +
+                (missing.size() == 1 ? "it" : "them") + " in 'initial')";
+    return d;
+  }
+  // A coordinate that is not needed and whose place depends on a starting value not given
+  // is not placed (what uses it later says that it cannot be followed).
+  for (auto it = d.coords.begin(); it != d.coords.end();)
+    if (std::any_of(not_given.begin(), not_given.end(), [&](const auto& p) { return it->second.has(p.first); }))
+      it = d.coords.erase(it);
+    else
+      ++it;
   add_balance_coordinates(d, m, sol);
   return d;
 }
@@ -323,6 +353,44 @@ void steady_state(ConditionInTime& ct, const CheckedCondition& c, const Response
   ct.band = band;
 }
 
+// Whether the motion starts against the direction a rule assumes (sliding friction that
+// opposes the sliding): then the friction's power at t = 0 is positive (it would push along
+// the motion), or, from rest, the power's first change is (the forces start the body the
+// other way). Said in words; empty when the start agrees or the numbers cannot tell.
+std::string against_at_start(const Model& m, const Solution& sol, const Dependents& dep, const MotionSpec& spec) {
+  const exmap values = m.symbols->values();
+  auto number = [&](const ex& e) -> std::optional<double> {
+    ex v = put_in(substituted(e, sol.general), dep);
+    v = substituted(v, spec.initial);
+    for (int depth = 0; depth < 4; ++depth) v = substituted(substituted(v, dep.definitions), values);
+    v = evalf(v);
+    if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
+    return ex_to<numeric>(v).to_double();
+  };
+  for (const auto& l : m.loads) {
+    if (l.body < 0 || std::find(m.direction_assumed_by.begin(), m.direction_assumed_by.end(), l.source) == m.direction_assumed_by.end()) continue;
+    const Body& b = m.bodies[static_cast<std::size_t>(l.body)];
+    double fv = 0, fa = 0, ff = 0, vv = 0, aa = 0;
+    for (int k = 0; k < m.dims(); ++k) {
+      const ex position = m.dims() == 1 ? b.coord : b.cm[k];
+      const auto f = number(l.force[k]);
+      const auto v = number(time_derivative(position, m.bodies, m.lengths, m.time));
+      const auto a = number(b.acceleration[k]);
+      if (!f || !v || !a) return {};
+      fv += *f * *v, fa += *f * *a, ff += *f * *f, vv += *v * *v, aa += *a * *a;
+    }
+    const double tiny = 1e-9;
+    if (ff == 0) continue;
+    if (vv > tiny * tiny && fv > tiny * std::sqrt(ff * vv))
+      return "at t = 0 body '" + b.name + "' moves against the sliding direction that " + l.source +
+             " assumes (its friction would push it along, not hold it back)";
+    if (vv <= tiny * tiny && aa > tiny * tiny && fa > tiny * std::sqrt(ff * aa))
+      return "from rest, the forces start body '" + b.name + "' against the sliding direction that " + l.source +
+             " assumes (its friction would push it along, not hold it back)";
+  }
+  return {};
+}
+
 // How long the response holds when a rule assumes the direction of motion: until the rate
 // first vanishes. From rest an oscillation turns after half a period (pi/lambda, pi/omega_d);
 // otherwise the rate is followed with the numbers (a scan, then bisection).
@@ -413,6 +481,28 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   const Dependents for_accelerations = dependents(m, s, sol, spec, all);
   if (!for_accelerations.problem.empty()) {
     out.problem = for_accelerations.problem;
+    return out;
+  }
+  // A dependent rate that 'initial' gives must be the one the constraints give at t = 0.
+  for (const auto& [sym, where] : spec.initial_at) {
+    const auto r = for_accelerations.rates.find(sym);
+    if (r == for_accelerations.rates.end()) continue;
+    ex expected = r->second;
+    for (int depth = 0; depth < 4; ++depth) expected = substituted(substituted(expected, spec.initial), for_accelerations.definitions);
+    if (depends_on_state(expected, state, m)) continue;  // (not decidable here: followed as given)
+    const ex given = spec.initial.at(sym);
+    const ex difference = normal(given - expected);
+    if (difference.is_zero()) continue;
+    // Not the same expression: the same number at the parameters' values (to 1e-9) will do.
+    const exmap values = table.values();
+    const ex d = evalf(difference.subs(values)), e = evalf(expected.subs(values));
+    if (is_a<numeric>(d) && is_a<numeric>(e) &&
+        std::abs(ex_to<numeric>(d).to_double()) <= 1e-9 * std::max(1.0, std::abs(ex_to<numeric>(e).to_double())))
+      continue;
+    out.problem = "initial value of '" + to_text(sym) + "' is " + to_text(given) + ", but the constraints give " + to_text(sym) +
+                  " = " + to_text(normal(r->second)) + " = " + to_text(normal(expected)) +
+                  " at t = 0 (expected that value, or none: it follows from the motion's rates)";
+    out.problem_at = where;
     return out;
   }
   const ex accelerations_only = all;
@@ -746,20 +836,26 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
       out.not_followed.emplace_back(c.condition->source,
                                     "it depends on " + to_text(*q) +
                                         (for_all.problem.empty() ? ", which the motion's coordinates do not give"
-                                                                 : ", whose value at t = 0 'initial' does not give"));
+                                                                 : ", whose value at t = 0 'initial' does not give (expected it there)"));
       continue;
     }
     out.conditions_in_state.emplace_back(&c, in_state);
   }
   for (const auto& [length, what] : m.strand_lengths) {
-    // (A strand through a dependent coordinate whose starting value is not given cannot be
-    // followed: it is left out, as before strands were followed.)
+    // A strand through a coordinate whose starting value is not given cannot be followed to
+    // the moment it closes (a block running into its pulley): said, as for a condition.
     const ex in_state = put_in(length, dep);
-    const bool followed = std::none_of(m.bodies.begin(), m.bodies.end(), [&](const Body& b) {
-      return !b.coord.is_zero() && in_state.has(b.coord) && !contains(state, b.coord);
-    });
-    if (followed && (depends_on_state(in_state, state, m) || in_state.has(m.time))) out.strands_in_state.emplace_back(what, in_state);
+    // (A strand whose length stays what it was at t = 0, as between bodies in contact, is no
+    // concern even where that length is not known.)
+    if (const auto q = unplaced(in_state)) {
+      if (!zero(put_in(time_derivative(length, m.bodies, m.lengths, m.time), dep)))
+        out.not_followed.emplace_back(what, "its length depends on " + to_text(*q) +
+                                                ", whose value at t = 0 'initial' does not give (expected it there)");
+      continue;
+    }
+    if (depends_on_state(in_state, state, m) || in_state.has(m.time)) out.strands_in_state.emplace_back(what, in_state);
   }
+  if (!m.direction_assumed_by.empty()) out.direction_against = against_at_start(m, sol, dep, spec);
   if (!out.response) return out;
 
   // The quantities asked for, along the response.

@@ -124,6 +124,7 @@ struct Motion {
   // Each strand's length in the state (it must stay positive), with the strand's name.
   std::vector<std::pair<std::string, GiNaC::ex>> strands_in_state;
   std::string problem;       // the motion could not be followed at all: why (an input error)
+  std::optional<Location> problem_at;  // where in the description, when not at 'motion'
   // A rule assumes the direction of motion (sliding friction opposes it): the closed-form
   // response holds only while the rate keeps the sign it starts with, up to the first t > 0
   // where it vanishes (the body stops; friction would reverse). Said for every response of
@@ -134,6 +135,9 @@ struct Motion {
   std::optional<double> direction_until_s;
   bool direction_kept = false;  // the rate keeps its sign for every t > 0 (with the numbers)
   bool direction_unknown = false;  // no numbers to tell
+  // The motion starts against the assumed direction (with the numbers): why, in words. The
+  // closed form then describes no part of the motion, and `simulate` stops at t = 0.
+  std::string direction_against;
 };
 
 /// The equations of motion and, where possible, their closed-form solution and the validity

@@ -170,6 +170,13 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
       return out;
     }
   const bool direction_assumed = !m.direction_assumed_by.empty();
+  if (!mo.direction_against.empty()) {  // the model is wrong from the start
+    out.events.push_back({0, mo.direction_against, true});
+    out.stopped = "the model does not hold at t = 0 (" + mo.direction_against + ")";
+    record(0, x);
+    out.table = std::move(table_out);
+    return out;
+  }
 
   namespace odeint = boost::numeric::odeint;
   auto stepper = odeint::make_dense_output(spec.tolerance, spec.tolerance, odeint::runge_kutta_dopri5<State>());

@@ -18,7 +18,7 @@ namespace {
 // the description's 'motion'.
 void follow_motion(Analysis& a) {
   a.motion = analyze_motion(a.model, a.system, a.solution);
-  if (a.motion && !a.motion->problem.empty()) throw InputError({{a.model.motion->at, a.motion->problem}});
+  if (a.motion && !a.motion->problem.empty()) throw InputError({{a.motion->problem_at.value_or(a.model.motion->at), a.motion->problem}});
 }
 
 }  // namespace

@@ -27,7 +27,7 @@ std::string regime_text(Response::Regime r) {
     case Response::Regime::underdamped: return "an underdamped oscillation (it decays while it oscillates)";
     case Response::Regime::critically_damped: return "critically damped (the fastest return without oscillating)";
     case Response::Regime::overdamped: return "overdamped (a return without oscillating)";
-    case Response::Regime::free_particle: return "no stiffness and no damping: the forcing alone moves it";
+    case Response::Regime::free_particle: return "unresisted (no stiffness and no damping): the forcing alone moves it";
     case Response::Regime::damped_particle: return "damped, with no stiffness: the velocity relaxes";
   }
   return {};
@@ -121,8 +121,7 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
   }
   // Conditions the motion cannot follow are said whether or not there is a response.
   for (const auto& [source, why] : mo.not_followed)
-    text(source + " is not followed in time: " + why + " (give its value at t = 0 in 'initial'); `tackle simulate` "
-                  "does not watch it.");
+    text(source + " is not followed in time: " + why + "; `tackle simulate` does not watch it.");
   if (!mo.response) {
     text("No closed-form response: " + mo.no_response + ". `tackle simulate` integrates the motion numerically.");
     return;
@@ -162,7 +161,10 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
     const std::string who = join(mo.direction_assumed_by);
     text(who + " assumes the direction of motion (friction opposes it): this response holds only while " + rate +
          " keeps its sign.");
-    if (mo.direction_until) {
+    if (!mo.direction_against.empty()) {
+      text("But " + mo.direction_against + ": the closed form describes no part of this motion (reverse the "
+           "sliding direction in the description for this start).");
+    } else if (mo.direction_until) {
       Step* st = equation("end of the interval", symbol("t_1", "t_{1}"), *mo.direction_until);
       if (mo.direction_until_s) st->note = decimal_string(numeric(*mo.direction_until_s), options.digits) + " s";
       text("At t_1 the body stops and friction would reverse: past it the closed form no longer describes the motion "

@@ -14,6 +14,16 @@ inline const RuleSet& rules() {
   return r;
 }
 
+// The number of an expression: the definitions, then `also` (time, lambda), then the
+// parameters' values put in.
+inline double number(const GiNaC::ex& e, const SymbolTable& t, const GiNaC::exmap& also = {}) {
+  GiNaC::ex v = e;
+  const GiNaC::exmap defs = t.definitions(true);
+  for (int depth = 0; depth < 8; ++depth) v = v.subs(defs, GiNaC::subs_options::no_pattern);
+  v = v.subs(also, GiNaC::subs_options::no_pattern).subs(t.values(), GiNaC::subs_options::no_pattern);
+  return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(v)).to_double();
+}
+
 inline std::unique_ptr<const Analysis> run_text(const std::string& yaml, const std::string& file = "t.yaml") {
   return tackle::analyze_text(yaml, file, rules());
 }

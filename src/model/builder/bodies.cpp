@@ -152,7 +152,16 @@ void bodies(BuildContext& ctx) {
     if (auto mass = ctx.parse(*b.mass, *ctx.table, "mass of body '" + body.name + "'")) {
       body.mass = *mass;
       body.has_mass = true;
-      if (!mass->is_zero()) ctx.check_dimension(*mass, Dimension::mass(), b.mass->at, "mass of body '" + body.name + "'");
+      if (!mass->is_zero()) {
+        ctx.check_dimension(*mass, Dimension::mass(), b.mass->at, "mass of body '" + body.name + "'");
+        // A mass that is zero (or negative) at the parameters' values: its balance would be
+        // divided by zero. A massless body is written 'mass: 0', and its balance fixes it.
+        const ex exact = mass->subs(ctx.table->values());
+        const ex at = evalf(exact);
+        if (is_a<numeric>(at) && ex_to<numeric>(at).is_real() && !ex_to<numeric>(at).is_positive())
+          ctx.diags.error(b.mass->at, "mass of body '" + body.name + "' is " + to_text(*mass) + ", which is " +
+                                          to_text(exact) + " at the parameters' values (expected a positive mass; a body without mass is written 'mass: 0')");
+      }
       if (!one_d && !mass->is_zero() && !body.has_cm)
         ctx.diags.error(b.at, "body '" + body.name + "' has no 'center_of_mass' (needed for its weight and its angular momentum balance)");
     }

@@ -207,15 +207,7 @@ void motion(BuildContext& ctx) {
       continue;
     }
     const bool is_rate = s->role == SymbolRole::rate;
-    const bool independent = contains(spec.coordinates, m.bodies[body].coord);
-    if (is_rate && !independent) {
-      std::vector<std::string> rates;
-      for (const auto& r : spec.rates) rates.push_back(to_text(r));
-      if (!rates.empty())  // (no rates at all: the missing degree of freedom is reported)
-        ctx.diags.error(key.at, "initial value of '" + key.text + "': the constraints give it from the motion's rates (expected " +
-                                    "initial rates of the motion's coordinates only: " + join(rates) + ")");
-      continue;
-    }
+    // (A dependent rate is checked against the one the constraints give, in the motion.)
     auto v = ctx.parse(value, *ctx.table, "initial value of '" + key.text + "'");
     if (!v) continue;
     bool in_parameters = true;

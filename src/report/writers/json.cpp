@@ -63,6 +63,7 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
       dir["until"] = mo.direction_until ? expr(*mo.direction_until) : J(nullptr);
       dir["until_value"] = mo.direction_until_s ? J(*mo.direction_until_s) : J(nullptr);
       dir["kept"] = mo.direction_kept;
+      dir["against_at_start"] = mo.direction_against.empty() ? J(nullptr) : J(mo.direction_against);
       j["direction"] = dir;
     }
   } else {

@@ -73,14 +73,6 @@ std::pair<double, double> integrate(double until) {
   return {x, v};
 }
 
-double number(const ex& e, const SymbolTable& t, const exmap& also = {}) {
-  ex v = e;
-  const exmap defs = t.definitions(true);
-  for (int depth = 0; depth < 8; ++depth) v = v.subs(defs, subs_options::no_pattern);
-  v = v.subs(also, subs_options::no_pattern).subs(t.values(), subs_options::no_pattern);
-  return ex_to<numeric>(evalf(v)).to_double();
-}
-
 }  // namespace
 
 TEST_CASE("Massless ring: at one instant the ring's balance gives the tension from the turning spring", "[motion][massless][trust]") {
