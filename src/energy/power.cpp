@@ -5,6 +5,7 @@
 #include "expr/print.hpp"
 #include "expr/rational.hpp"
 #include "expr/trig.hpp"
+#include "model/kinematics.hpp"
 
 namespace tackle {
 
@@ -22,11 +23,8 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
   bool moving = false;
   for (std::size_t i = 0; i < m.bodies.size(); ++i) {
     const Body& b = m.bodies[i];
-    if (!b.coord.is_zero()) {
-      if (m.dims() == 1)
-        velocity[i] = {b.rate, 0, 0};
-      else
-        for (int k = 0; k < 3; ++k) velocity[i][k] = time_derivative(b.cm[k], m.bodies, m.lengths, m.time);
+    if (const auto v = kinematics::velocity(m, b)) {
+      velocity[i] = *v;
       moving = true;
     } else if (!is_zero_vec(b.acceleration)) {
       // Straight-line motion: the velocity is along the acceleration, a signed speed v_B
@@ -49,9 +47,10 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
   // chain of 256 has 256 of them).
   exvector kinetic, power;
   for (std::size_t i = 0; i < m.bodies.size(); ++i)
-    if (m.bodies[i].has_mass) kinetic.push_back(m.bodies[i].mass * inner(velocity[i], m.bodies[i].acceleration));
+    if (m.bodies[i].has_mass)
+      kinetic.push_back(kinematics::kinetic_energy_rate(m, m.bodies[i], velocity[i], kinematics::omega(m, m.bodies[i])));
   for (const auto& l : m.loads)
-    if (l.body >= 0) power.push_back(inner(l.force, velocity[l.body]));
+    if (l.body >= 0) power.push_back(kinematics::power(l, velocity[l.body], kinematics::omega(m, m.bodies[l.body])));
   c.kinetic_rate = add(kinetic);
   c.power = add(power);
   // sin^2 + cos^2 = 1 where that leaves fewer terms (a block on an incline: m v a, not

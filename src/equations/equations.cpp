@@ -5,12 +5,11 @@
 
 #include "expr/print.hpp"
 #include "expr/rational.hpp"
+#include "model/kinematics.hpp"
 
 namespace tackle {
 
 using namespace GiNaC;
-
-ex time_derivative(const ex& e, const Model& m) { return tackle::time_derivative(e, m.bodies, m.lengths, m.time); }
 
 namespace {
 
@@ -77,11 +76,8 @@ Equation amb_along(const Model& m, const std::vector<int>& bodies, bool system, 
     eq.sources.push_back(l.source);
     sum += mz;
   }
-  // Straight-line motion: the rate of change of angular momentum about C is r_cm/C x m a.
-  for (int b : bodies) {
-    const Body& body = m.bodies[b];
-    rhs += inner(cross(body.cm - about, body.mass * body.acceleration), direction);
-  }
+  // The rate of change of angular momentum about C: r_cm/C x m a (+ I alpha).
+  for (int b : bodies) rhs += inner(kinematics::angular_momentum_rate(m, m.bodies[b], about), direction);
   if (!eliminated.empty()) eq.why = "no moment from: " + join(eliminated, "; ");
   eq.lhs = sum;
   eq.rhs = normal(rhs);
@@ -124,11 +120,11 @@ EquationSystem build_equations(const Model& m) {
     eq.sources = {"second time derivative of the " + c.meaning};
     s.equations.push_back(eq);
     Equation rate{Equation::Kind::constraint_rate, c.label + ": rate", steps.rate, 0,
-                  {"first time derivative of the " + c.meaning}, {steps.rate}, "", {}, false};
+                  {"first time derivative of the " + c.meaning}, {steps.rate}, "", {}, false, {}};
     s.rate_equations.push_back(rate);
     if (!c.constant.is_zero())
       s.position_equations.push_back({Equation::Kind::constraint_position, c.label + ": position", varying, c.constant,
-                                      {"the " + c.meaning + " is constant"}, {varying}, "", {}, false});
+                                      {"the " + c.meaning + " is constant"}, {varying}, "", {}, false, {}});
   };
   // One equation per axis; a 2-D moment has only a z component.
   auto add_lmb = [&](const std::vector<int>& bodies, bool system) {

@@ -45,9 +45,6 @@ struct EquationSystem {
   std::vector<Equation> position_equations;
 };
 
-/// d/dt of an expression in the model's coordinates and rates (chain rule).
-[[nodiscard]] GiNaC::ex time_derivative(const GiNaC::ex& e, const Model& m);
-
 [[nodiscard]] EquationSystem build_equations(const Model& m);
 
 /// Every force in a linear momentum balance must be a force: one problem per term that is

@@ -32,7 +32,10 @@ std::vector<ex> balance_coordinates(const Model& m, const SymbolTable& table) {
   return out;
 }
 
-ex time_derivative(const ex& e, const std::vector<Body>& bodies, const std::vector<TurningLength>& lengths, const ex& time) {
+ex time_derivative(const ex& e, const Model& m) { return time_derivative(e, m.coordinates, m.lengths, m.time); }
+
+ex time_derivative(const ex& e, const std::vector<Coordinate>& coordinates, const std::vector<TurningLength>& lengths,
+                   const ex& time) {
   ex d = is_a<symbol>(time) ? e.diff(ex_to<symbol>(time)) : ex(0);
   // Only the coordinates and rates `e` holds (a string of two bodies among 256: two, not 512
   // derivatives).
@@ -46,15 +49,14 @@ ex time_derivative(const ex& e, const std::vector<Body>& bodies, const std::vect
     if (present.size() <= 8 && std::find(hashes.begin(), hashes.end(), x.gethash()) == hashes.end()) return false;
     return present.count(x) != 0;
   };
-  for (const auto& b : bodies) {
-    if (b.coord.is_zero()) continue;
-    if (in_e(b.coord)) d += e.diff(ex_to<symbol>(b.coord)) * b.rate;
-    if (in_e(b.rate)) d += e.diff(ex_to<symbol>(b.rate)) * b.accel;
+  for (const auto& c : coordinates) {
+    if (in_e(c.q)) d += e.diff(ex_to<symbol>(c.q)) * c.rate;
+    if (in_e(c.rate)) d += e.diff(ex_to<symbol>(c.rate)) * c.accel;
   }
   // d l/dt = d(l^2)/dt / (2 l), with l^2 a polynomial in the coordinates.
   for (const auto& l : lengths)
     if (in_e(l.symbol))
-      d += e.diff(ex_to<symbol>(l.symbol)) * time_derivative(l.squared, bodies, {}, time) / (2 * l.symbol);
+      d += e.diff(ex_to<symbol>(l.symbol)) * time_derivative(l.squared, coordinates, {}, time) / (2 * l.symbol);
   return d.expand();
 }
 

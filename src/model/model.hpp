@@ -17,16 +17,30 @@
 
 namespace tackle {
 
+/// A generalized coordinate: its symbol, rate and acceleration, the body it moves and how
+/// (along a line, or turning). Time derivatives walk the model's coordinates.
+struct Coordinate {
+  enum class Kind { translation, rotation };
+  GiNaC::ex q, rate, accel;  // x_A, dot(x_A), ddot(x_A)
+  int body = -1;
+  Kind kind = Kind::translation;
+};
+
+/// A body: its pose (the center of mass, and an angle: 0 for a body that only translates),
+/// its mass and its moment of inertia about its center (about the plane's normal). What
+/// follows from them (velocities, momenta, kinetic energy, power) is in model/kinematics.hpp.
 struct Body {
   std::string name;
   GiNaC::ex mass;      // 0 for an ideal pulley block
   bool has_mass = false;
-  GiNaC::ex coord;     // 1-D: x_A (0 in 2-D and 3-D, where bodies have no coordinate)
-  GiNaC::ex rate;      // 1-D: dot(x_A)
-  GiNaC::ex accel;     // 1-D: ddot(x_A)
+  GiNaC::ex coord;     // its translation coordinate, x_A or s (0 when it has none)
+  GiNaC::ex rate;      // dot(x_A)
+  GiNaC::ex accel;     // ddot(x_A), or the unknown acceleration along a given line
   Vec cm = zero_vec();            // center of mass (1-D: the coordinate)
   bool has_cm = false;
-  Vec acceleration = zero_vec();  // the same for every point of the body
+  GiNaC::ex angle = 0;            // 0: the body only translates
+  GiNaC::ex inertia = 0;          // about the center of mass
+  Vec acceleration = zero_vec();  // of the center of mass (of every point, while it only translates)
   // How the free body diagram draws it (`draw:`): "" (from its points), "rectangle" (size:
   // width, height) or "circle" (size: diameter), centred on its center of mass.
   std::string drawn_shape;
@@ -157,6 +171,7 @@ struct Model {
   [[nodiscard]] int dims() const { return static_cast<int>(axes.size()); }
   std::shared_ptr<const SymbolTable> symbols;
   std::vector<Body> bodies;
+  std::vector<Coordinate> coordinates;  // every body's, in body order
   std::vector<Point> points;
   std::vector<Load> loads;
   std::vector<Constraint> constraints;
@@ -201,10 +216,12 @@ struct Model {
 /// each question is quadratic (a chain of 256 asks 511 questions about 768 symbols).
 [[nodiscard]] std::unordered_set<GiNaC::ex, ExHash, GiNaC::ex_is_equal> symbols_asked(const std::vector<Wanted>& wanted);
 
-/// d/dt of an expression in the bodies' coordinates and rates, the turning lengths and time
+/// d/dt of an expression in the coordinates and their rates, the turning lengths and time
 /// itself (the chain rule; `time` is t, or 0 when nothing depends on time explicitly).
-[[nodiscard]] GiNaC::ex time_derivative(const GiNaC::ex& e, const std::vector<Body>& bodies,
+[[nodiscard]] GiNaC::ex time_derivative(const GiNaC::ex& e, const std::vector<Coordinate>& coordinates,
                                         const std::vector<TurningLength>& lengths, const GiNaC::ex& time = 0);
+/// The same in the model's coordinates, lengths and time.
+[[nodiscard]] GiNaC::ex time_derivative(const GiNaC::ex& e, const Model& m);
 
 /// The numerator of `e` reduced modulo l^2 - squared for each turning length (monic in l, so
 /// the remainder is unique): zero exactly when `e` vanishes wherever every length is what it

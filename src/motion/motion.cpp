@@ -9,6 +9,7 @@
 #include "expr/normal_form.hpp"
 #include "expr/print.hpp"
 #include "expr/rational.hpp"
+#include "model/kinematics.hpp"
 #include "numeric/compiled.hpp"
 
 namespace tackle {
@@ -54,7 +55,7 @@ void add_balance_coordinates(Dependents& d, const Model& m, const Solution& sol)
     const ex value = d.coords.empty() ? *v : substituted(*v, d.coords);
     d.coords[q] = value;
     const auto body = std::find_if(m.bodies.begin(), m.bodies.end(), [&](const Body& b) { return b.coord.is_equal(q); });
-    ex rate = time_derivative(value, m.bodies, m.lengths, m.time);
+    ex rate = time_derivative(value, m);
     if (!d.rates.empty()) rate = substituted(rate, d.rates);
     d.rates[body->rate] = rate;
   }
@@ -370,11 +371,12 @@ std::string against_at_start(const Model& m, const Solution& sol, const Dependen
   for (const auto& l : m.loads) {
     if (l.body < 0 || std::find(m.direction_assumed_by.begin(), m.direction_assumed_by.end(), l.source) == m.direction_assumed_by.end()) continue;
     const Body& b = m.bodies[static_cast<std::size_t>(l.body)];
+    const auto velocity = kinematics::velocity(m, b);
+    if (!velocity) continue;
     double fv = 0, fa = 0, ff = 0, vv = 0, aa = 0;
     for (int k = 0; k < m.dims(); ++k) {
-      const ex position = m.dims() == 1 ? b.coord : b.cm[k];
       const auto f = number(l.force[k]);
-      const auto v = number(time_derivative(position, m.bodies, m.lengths, m.time));
+      const auto v = number((*velocity)[k]);
       const auto a = number(b.acceleration[k]);
       if (!f || !v || !a) return {};
       fv += *f * *v, fa += *f * *a, ff += *f * *f, vv += *v * *v, aa += *a * *a;
@@ -577,16 +579,8 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   bool mass_constant = true;
   {
     ex kinetic = 0;
-    for (const auto& b : m.bodies) {
-      if (!b.has_mass || b.coord.is_zero()) continue;
-      ex v2 = 0;
-      if (m.dims() == 1) {
-        v2 = pow(b.rate, 2);
-      } else {
-        for (int k = 0; k < 3; ++k) v2 += pow(time_derivative(b.cm[k], m.bodies, m.lengths, m.time), 2);
-      }
-      kinetic += b.mass * put_in(v2, dep) / 2;
-    }
+    for (const auto& b : m.bodies)
+      if (b.has_mass) kinetic += kinematics::kinetic_energy(m, b, [&](const ex& e) { return put_in(e, dep); });
     kinetic = kinetic.expand();
     eom.M = matrix(n, n);
     for (std::size_t i = 0; i < n; ++i)
@@ -848,7 +842,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     // (A strand whose length stays what it was at t = 0, as between bodies in contact, is no
     // concern even where that length is not known.)
     if (const auto q = unplaced(in_state)) {
-      if (!zero(put_in(time_derivative(length, m.bodies, m.lengths, m.time), dep)))
+      if (!zero(put_in(time_derivative(length, m), dep)))
         out.not_followed.emplace_back(what, "its length depends on " + to_text(*q) +
                                                 ", whose value at t = 0 'initial' does not give (expected it there)");
       continue;

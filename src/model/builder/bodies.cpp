@@ -105,10 +105,10 @@ void bodies(BuildContext& ctx) {
           ctx.diags.error(b.center_of_mass->at, "'center_of_mass' of body '" + body.name + "' does not depend on its coordinate '" +
                                                     b.position->text + "' (expected it written in " + b.position->text + ")");
         } else {
-          // a = d2(cm)/dt2 = cm'' dot(q)^2 + cm' ddot(q) (no velocity term on a straight line).
-          const symbol& q = ex_to<symbol>(body.coord);
-          for (int i = 0; i < 3; ++i)
-            body.acceleration[i] = (body.cm[i].diff(q) * body.accel + body.cm[i].diff(q, 2) * pow(body.rate, 2)).expand();
+          // a = d2(cm)/dt2 = cm'' dot(q)^2 + cm' ddot(q), by the chain rule on this body's
+          // coordinate (no velocity term on a straight line).
+          const std::vector<Coordinate> own{{body.coord, body.rate, body.accel, -1, Coordinate::Kind::translation}};
+          for (int i = 0; i < 3; ++i) body.acceleration[i] = time_derivative(time_derivative(body.cm[i], own, {}), own, {});
           accelerations.push_back(body.accel);
         }
       }
@@ -137,6 +137,9 @@ void bodies(BuildContext& ctx) {
     self.body = static_cast<int>(ctx.m.bodies.size());
     self.at = body.at;
     ctx.m.points.push_back(self);
+    if (!body.coord.is_zero())
+      ctx.m.coordinates.push_back({body.coord, body.rate, body.accel, static_cast<int>(ctx.m.bodies.size()),
+                                   Coordinate::Kind::translation});
     ctx.m.bodies.push_back(body);
   }
   ctx.m.candidates.insert(ctx.m.candidates.begin(), accelerations.begin(), accelerations.end());

@@ -327,7 +327,7 @@ void add_loads(BuildContext& ctx, Instance& in) {
       if (!path) continue;
       // A force element's tension may use its path's length and lengthening rate.
       in.scope.bind("length", path->length);
-      in.scope.bind("lengthening", time_derivative(path->length, ctx.m.bodies, ctx.m.lengths, ctx.m.time));
+      in.scope.bind("lengthening", time_derivative(path->length, ctx.m));
       // ... and its length where every coordinate is 0 (a spring's stretch is stated there).
       const exmap& coordinates = ctx.coordinates_at_zero();
       exmap lengths;  // the turning strands' lengths there

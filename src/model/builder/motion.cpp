@@ -74,7 +74,7 @@ void motion(BuildContext& ctx) {
   // The constraints' rates, one row per constraint, one column per moving coordinate.
   std::vector<std::vector<ex>> rows;
   for (const auto& c : m.constraints) {
-    const ex rate = time_derivative(c.quantity, m.bodies, m.lengths, m.time);
+    const ex rate = time_derivative(c.quantity, m);
     std::vector<ex> row;
     for (int i : moving) row.push_back(rate.diff(ex_to<symbol>(m.bodies[i].rate)));
     rows.push_back(std::move(row));

@@ -1,0 +1,80 @@
+// The kinematics home (model/kinematics.hpp) on a body that translates along x and turns by
+// theta: each quantity against its textbook formula, written out by hand.
+#include <catch2/catch.hpp>
+
+#include "model/kinematics.hpp"
+
+using namespace tackle;
+using namespace GiNaC;
+
+namespace {
+
+struct Turning {
+  symbol x{"x"}, xd{"dot(x)"}, xdd{"ddot(x)"}, th{"theta"}, thd{"dot(theta)"}, thdd{"ddot(theta)"};
+  symbol M{"M"}, I{"I"}, r{"r"}, h{"h"};
+  Model m;
+  Turning() {
+    m.axes = {"x", "y"};
+    Body b;
+    b.name = "wheel";
+    b.mass = M;
+    b.has_mass = true;
+    b.coord = x, b.rate = xd, b.accel = xdd;
+    b.cm = {x, 0, 0};
+    b.has_cm = true;
+    b.angle = th;
+    b.inertia = I;
+    b.acceleration = {xdd, 0, 0};
+    m.bodies.push_back(b);
+    m.coordinates.push_back({x, xd, xdd, 0, Coordinate::Kind::translation});
+    m.coordinates.push_back({th, thd, thdd, 0, Coordinate::Kind::rotation});
+  }
+  const Body& body() const { return m.bodies[0]; }
+};
+
+bool same(const ex& a, const ex& b) { return normal(a - b).is_zero(); }
+
+}  // namespace
+
+TEST_CASE("Kinematics: a turning body's omega, alpha and the velocity of a point on its rim", "[kinematics]") {
+  const Turning t;
+  CHECK(same(kinematics::omega(t.m, t.body()), t.thd));
+  CHECK(same(kinematics::alpha(t.m, t.body()), t.thdd));
+  // v_P = v_G + omega x r_P/G with r_P/G = (r, 0): (dot(x), r dot(theta)).
+  const auto v = kinematics::point_velocity(t.m, t.body(), {t.r, 0, 0});
+  REQUIRE(v);
+  CHECK(same((*v)[0], t.xd));
+  CHECK(same((*v)[1], t.r * t.thd));
+}
+
+TEST_CASE("Kinematics: the rate of angular momentum about a point is r x m a + I alpha", "[kinematics]") {
+  const Turning t;
+  // About (0, h): r_G = (x, -h), m a = (M ddot(x), 0): r x m a = h M ddot(x) about z.
+  const Vec h = kinematics::angular_momentum_rate(t.m, t.body(), {0, t.h, 0});
+  CHECK(same(h[2], t.h * t.M * t.xdd + t.I * t.thdd));
+  CHECK(same(h[0], 0));
+  CHECK(same(h[1], 0));
+}
+
+TEST_CASE("Kinematics: kinetic energy, its rate and a load's power include the turning", "[kinematics]") {
+  const Turning t;
+  CHECK(same(kinematics::kinetic_energy(t.m, t.body(), [](const ex& e) { return e; }),
+             t.M * pow(t.xd, 2) / 2 + t.I * pow(t.thd, 2) / 2));
+  CHECK(same(kinematics::kinetic_energy_rate(t.m, t.body(), {t.xd, 0, 0}, t.thd), t.M * t.xd * t.xdd + t.I * t.thd * t.thdd));
+  Load l;
+  l.body = 0;
+  const symbol F("F"), C("C");
+  l.force = {F, 0, 0};
+  l.couple = {0, 0, C};
+  CHECK(same(kinematics::power(l, {t.xd, 0, 0}, t.thd), F * t.xd + C * t.thd));
+}
+
+TEST_CASE("Kinematics: a body that only translates has no turning terms", "[kinematics]") {
+  Turning t;
+  t.m.bodies[0].angle = 0;
+  t.m.bodies[0].inertia = 0;
+  t.m.coordinates.pop_back();
+  CHECK(kinematics::omega(t.m, t.body()).is_zero());
+  CHECK(same(kinematics::kinetic_energy(t.m, t.body(), [](const ex& e) { return e; }), t.M * pow(t.xd, 2) / 2));
+  CHECK(same(kinematics::momentum_rate(t.body())[0], t.M * t.xdd));
+}
