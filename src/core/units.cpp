@@ -35,6 +35,7 @@ const std::map<std::string, Atom, std::less<>>& atoms() {
       {"Hz", {1, Dimension::time().pow(-1)}},
       {"rad", {1, Dimension::none()}},
       {"deg", {GiNaC::Pi / 180, Dimension::none()}},
+      {"rpm", {GiNaC::Pi / 30, Dimension::time().pow(-1)}},  // revolutions per minute: 2 pi rad per 60 s
       {"1", {1, Dimension::none()}},
       // US customary, exact by definition (international foot and avoirdupois pound; the
       // pound-force uses standard gravity 9.80665 m/s^2).
@@ -186,6 +187,9 @@ const std::vector<Named>& named_dimensions() {
       {Dimension::force() * Dimension::length(), "energy", "energy", "J"},
       {Dimension::force() * Dimension::length() / Dimension::time(), "power", "power", "W"},
       {Dimension::force() * Dimension::time(), "impulse (or momentum)", "impulse", "N*s"},
+      {Dimension{{0, 0, -1}}, "angular velocity (or frequency)", "angular_velocity", "rad/s"},
+      {Dimension{{0, 0, -2}}, "angular acceleration", "angular_acceleration", "rad/s^2"},
+      {Dimension::mass() * Dimension::length() * Dimension::length(), "moment of inertia", "inertia", "kg*m^2"},
   };
   return table;
 }

@@ -157,9 +157,25 @@ struct Reader {
       b.name = key_text(kv.first);
       b.at = where(kv.second, file);
       const std::string what = "body '" + b.name.text + "'";
-      if (check_map(kv.second, {"mass", "position", "center_of_mass", "acceleration", "draw"}, what, file, diags)) {
+      if (check_map(kv.second, {"mass", "position", "angle", "center_of_mass", "acceleration", "inertia", "shape", "draw"}, what,
+                    file, diags)) {
         b.mass = opt_scalar(kv.second, "mass", what);
         b.position = opt_scalar(kv.second, "position", what);
+        b.angle = opt_scalar(kv.second, "angle", what);
+        b.inertia = opt_scalar(kv.second, "inertia", what);
+        if (const yaml::Node sh = kv.second["shape"]) {
+          const std::string expected = " (expected one of {disk: R}, {ring: R}, {rod: L}, {sphere: R}, {box: [a, b]}, point)";
+          if (sh.is_scalar()) {
+            b.shape_kind = opt_scalar(kv.second, "shape", what);
+          } else if (!sh.is_map() || sh.size() != 1) {
+            diags.error(where(sh, file), "'shape' of " + what + " is not a shape" + expected);
+          } else {
+            for (const auto& skv : sh) {
+              b.shape_kind = key_text(skv.first);
+              b.shape_size = vector(skv.second, "'shape' of " + what);
+            }
+          }
+        }
         b.center_of_mass = opt_vector(kv.second, "center_of_mass", what);
         if (const yaml::Node acc = kv.second["acceleration"]) {
           if (acc.is_map()) {

@@ -48,6 +48,13 @@ struct BodyDesc {
   std::optional<VectorDesc> acceleration;
   std::optional<VectorDesc> accel_along;
   std::optional<Text> accel_name;
+  // Rotation (2-D): the angle coordinate (a new name; the center of mass and the body's points
+  // turn with it), and the moment of inertia about the center of mass, given (`inertia:`) or
+  // from a shape (`shape: {disk: R}`, ring, rod, sphere, box: [a, b], point).
+  std::optional<Text> angle;
+  std::optional<Text> inertia;
+  std::optional<Text> shape_kind;
+  std::optional<VectorDesc> shape_size;
   // How the free body diagram draws it: `draw: {shape: rectangle | circle, size: [w, h] | [d]}`
   std::optional<Text> draw_shape;
   std::optional<VectorDesc> draw_size;

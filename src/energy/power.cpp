@@ -50,7 +50,7 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
     if (m.bodies[i].has_mass)
       kinetic.push_back(kinematics::kinetic_energy_rate(m, m.bodies[i], velocity[i], kinematics::omega(m, m.bodies[i])));
   for (const auto& l : m.loads)
-    if (l.body >= 0) power.push_back(kinematics::power(l, velocity[l.body], kinematics::omega(m, m.bodies[l.body])));
+    if (l.body >= 0) power.push_back(kinematics::power(m.bodies[l.body], l, velocity[l.body], kinematics::omega(m, m.bodies[l.body])));
   c.kinetic_rate = add(kinetic);
   c.power = add(power);
   // sin^2 + cos^2 = 1 where that leaves fewer terms (a block on an incline: m v a, not
@@ -61,8 +61,8 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
   // The velocities obey the constraints: the rate equations solved for as many rates as they
   // fix, in terms of the rest.
   std::vector<ex> rates;
-  for (const auto& b : m.bodies)
-    if (!b.rate.is_zero() && !contains(m.given, b.rate)) rates.push_back(b.rate);
+  for (const auto& c : m.coordinates)
+    if (!contains(m.given, c.rate)) rates.push_back(c.rate);
   exmap rate_values;
   if (!s.rate_equations.empty() && !rates.empty()) {
     const Solution r = solve_equations(m.file, s.rate_equations, rates);

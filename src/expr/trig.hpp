@@ -65,8 +65,10 @@ inline bool has_trig_node(const GiNaC::ex& e, bool power_only) {
 /// (a number when it can): what goes under the root of a length or a norm.
 [[nodiscard]] inline GiNaC::ex fewer_trig_terms(GiNaC::ex e) {
   if (!has_trig(e)) return e;
+  // Counted in terms (a sum's), not operands: m (cos^2 + sin^2) L^2 becomes one product.
+  const auto terms = [](const GiNaC::ex& x) { return tackle::is_exactly<GiNaC::add>(x) ? x.nops() : std::size_t{1}; };
   for (const bool to_cos : {true, false})
-    if (const GiNaC::ex t = pythagoras(e, to_cos); t.nops() < e.nops() || GiNaC::is_a<GiNaC::numeric>(t)) e = t;
+    if (const GiNaC::ex t = pythagoras(e, to_cos); terms(t) < terms(e) || GiNaC::is_a<GiNaC::numeric>(t)) e = t;
   return e;
 }
 

@@ -1,11 +1,18 @@
 #include "model/kinematics.hpp"
 
+#include <algorithm>
+
+#include "expr/trig.hpp"
+
 namespace tackle::kinematics {
 
 using namespace GiNaC;
 
 std::optional<Vec> velocity(const Model& m, const Body& b) {
-  if (b.coord.is_zero()) return std::nullopt;
+  const int index = static_cast<int>(&b - m.bodies.data());
+  const bool moves = !b.coord.is_zero() || std::any_of(m.coordinates.begin(), m.coordinates.end(),
+                                                       [&](const Coordinate& c) { return c.body == index; });
+  if (!moves) return std::nullopt;
   if (m.dims() == 1) return Vec{b.rate, 0, 0};
   Vec v = zero_vec();
   for (int k = 0; k < 3; ++k) v[k] = time_derivative(b.cm[k], m);
@@ -30,7 +37,10 @@ Vec momentum_rate(const Body& b) { return b.mass * b.acceleration; }
 
 Vec angular_momentum_rate(const Model& m, const Body& b, const Vec& about) {
   Vec h = cross(b.cm - about, momentum_rate(b));
-  if (!b.inertia.is_zero()) h[2] += b.inertia * alpha(m, b);
+  if (b.angle.is_zero()) return h;
+  // Turning: I alpha, and sin^2 + cos^2 = 1 where the lever arm turns with the body (a bar
+  // about its pin: m L^2/4 ddot(theta), not m L^2/4 (cos^2 + sin^2) ddot(theta)).
+  h[2] = fewer_trig_terms((h[2] + b.inertia * alpha(m, b)).expand());
   return h;
 }
 
@@ -48,10 +58,11 @@ ex kinetic_energy_rate(const Model& m, const Body& b, const Vec& v, const ex& w)
   return e;
 }
 
-ex power(const Load& l, const Vec& v, const ex& w) {
-  ex p = inner(l.force, v);
-  if (!w.is_zero()) p += l.couple[2] * w;
-  return p;
+ex power(const Body& b, const Load& l, const Vec& v, const ex& w) {
+  if (w.is_zero()) return inner(l.force, v);
+  // The point of application moves at v + w x r (r from the center of mass).
+  const Vec at = l.at ? cross(Vec{0, 0, w}, *l.at - b.cm) : zero_vec();
+  return inner(l.force, v + at) + l.couple[2] * w;
 }
 
 }  // namespace tackle::kinematics

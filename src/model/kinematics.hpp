@@ -14,6 +14,7 @@ namespace tackle::kinematics {
 
 /// The velocity of the body's center of mass in the coordinates' rates (1-D: its rate);
 /// nothing for a body with no coordinate (at rest, or with only its acceleration given).
+/// `b` is one of `m.bodies`.
 [[nodiscard]] std::optional<Vec> velocity(const Model& m, const Body& b);
 
 /// The body's angular velocity and acceleration about the plane's normal (0 while it only
@@ -41,8 +42,8 @@ namespace tackle::kinematics {
 /// velocity): m v.a + I w alpha.
 [[nodiscard]] GiNaC::ex kinetic_energy_rate(const Model& m, const Body& b, const Vec& v, const GiNaC::ex& w);
 
-/// The power of a load on a body moving at `v` (at the load's point) with angular velocity
-/// `w`: F.v + M w.
-[[nodiscard]] GiNaC::ex power(const Load& l, const Vec& v, const GiNaC::ex& w);
+/// The power of a load on body `b`, whose center of mass moves at `v` and which turns at `w`:
+/// F.v_P + M w, with v_P = v + w x r the velocity of the load's point.
+[[nodiscard]] GiNaC::ex power(const Body& b, const Load& l, const Vec& v, const GiNaC::ex& w);
 
 }  // namespace tackle::kinematics

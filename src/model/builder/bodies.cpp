@@ -2,6 +2,9 @@
 // named points; the layout that tells strand directions.
 #include "model/builder/stages.hpp"
 
+#include <algorithm>
+#include <functional>
+
 #include "expr/normal_form.hpp"
 #include "expr/print.hpp"
 
@@ -48,6 +51,65 @@ void draw_override(BuildContext& ctx, const BodyDesc& b, Body& body) {
   body.drawn_size = std::move(size);
 }
 
+// The moment of inertia about the center of mass (about the plane's normal): given, or
+// from a shape and the mass, by the book's formulas. Without either a body is a point.
+void inertia(BuildContext& ctx, const BodyDesc& b, Body& body) {
+  const std::string what = "body '" + body.name + "'";
+  if (!b.inertia && !b.shape_kind) return;
+  const Location at = b.inertia ? b.inertia->at : b.shape_kind->at;
+  if (ctx.m.dims() != 2) {
+    ctx.diags.error(at, what + ": a moment of inertia is for 2-D problems (a body turns in the plane)");
+    return;
+  }
+  if (b.inertia && b.shape_kind) {
+    ctx.diags.error(at, what + " has both 'inertia' and 'shape' (the shape gives the moment of inertia; give one)");
+    return;
+  }
+  const Dimension mass_length_squared = Dimension::mass() * Dimension::length() * Dimension::length();
+  if (b.inertia) {
+    if (auto I = ctx.parse(*b.inertia, *ctx.table, "'inertia' of " + what)) {
+      ctx.check_dimension(*I, mass_length_squared, b.inertia->at, "'inertia' of " + what);
+      body.inertia = *I;
+    }
+    return;
+  }
+  // shape: kind and its sizes, I = k m (sizes)
+  struct Shape {
+    const char* kind;
+    std::size_t sizes;
+    std::function<ex(const std::vector<ex>&)> inertia;  // per unit mass
+  };
+  static const std::vector<Shape> shapes = {
+      {"point", 0, [](const std::vector<ex>&) { return ex(0); }},
+      {"disk", 1, [](const std::vector<ex>& r) { return pow(r[0], 2) / 2; }},
+      {"ring", 1, [](const std::vector<ex>& r) { return pow(r[0], 2); }},
+      {"rod", 1, [](const std::vector<ex>& l) { return pow(l[0], 2) / 12; }},
+      {"sphere", 1, [](const std::vector<ex>& r) { return 2 * pow(r[0], 2) / 5; }},
+      {"box", 2, [](const std::vector<ex>& s) { return (pow(s[0], 2) + pow(s[1], 2)) / 12; }},
+  };
+  const auto shape = std::find_if(shapes.begin(), shapes.end(), [&](const Shape& x) { return b.shape_kind->text == x.kind; });
+  if (shape == shapes.end()) {
+    ctx.diags.error(b.shape_kind->at, "unknown shape '" + b.shape_kind->text + "' of " + what +
+                                          " (expected one of: point, disk, ring, rod, sphere, box)");
+    return;
+  }
+  const std::size_t given = b.shape_size ? b.shape_size->items.size() : 0;
+  if (given != shape->sizes) {
+    ctx.diags.error(b.shape_kind->at, "shape '" + b.shape_kind->text + "' of " + what + " has " + std::to_string(given) +
+                                          (given == 1 ? " size" : " sizes") + " (expected " + std::to_string(shape->sizes) +
+                                          (shape->sizes == 1 ? " length" : " lengths") + ")");
+    return;
+  }
+  std::vector<ex> sizes;
+  for (std::size_t i = 0; i < given; ++i) {
+    auto v = ctx.parse(b.shape_size->items[i], *ctx.table, "size of the shape of " + what);
+    if (!v) return;
+    if (!is_a<numeric>(*v)) ctx.check_dimension(*v, Dimension::length(), b.shape_size->items[i].at, "size of the shape of " + what);
+    sizes.push_back(*v);
+  }
+  body.inertia = body.mass * shape->inertia(sizes);
+}
+
 }  // namespace
 
 void bodies(BuildContext& ctx) {
@@ -65,6 +127,7 @@ void bodies(BuildContext& ctx) {
       for (const auto* v : {&b.center_of_mass, &b.acceleration})
         if (*v) ctx.diags.error((*v)->at, "body '" + body.name + "': 'center_of_mass' and 'acceleration' are for 2-D and 3-D problems (in 1-D, 'position' names the coordinate)");
       if (b.accel_along) ctx.diags.error(b.accel_along->at, "body '" + body.name + "': 'acceleration' is for 2-D and 3-D problems");
+      if (b.angle) ctx.diags.error(b.angle->at, "body '" + body.name + "': 'angle' is for 2-D problems (a body turns in the plane)");
       if (b.position && ctx.claim(*b.position, "coordinate")) {
         const std::string q = b.position->text;
         body.coord = ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::length(), false, b.position->at).sym;
@@ -92,26 +155,50 @@ void bodies(BuildContext& ctx) {
           body.accel = ctx.table->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, Dimension::acceleration(), false, b.position->at).sym;
         }
       }
+      // An angle: the body turns in the plane (its center of mass may be written in the angle
+      // too: a pendulum's bob, a bar pinned at one end).
+      std::vector<Coordinate> own;  // this body's coordinates
+      if (b.angle) {
+        if (ctx.m.dims() != 2) {
+          ctx.diags.error(b.angle->at, "body '" + body.name + "': 'angle' is for 2-D problems (a body turns in the plane)");
+        } else if (b.acceleration || b.accel_along) {
+          ctx.diags.error(b.angle->at, "body '" + body.name + "' has both 'angle' and 'acceleration' (its acceleration follows from its coordinates; give one)");
+        } else if (ctx.claim(*b.angle, "coordinate")) {
+          const std::string q = b.angle->text;
+          const Dimension per_second{{0, 0, -1}}, per_second_squared{{0, 0, -2}};
+          body.angle = ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::none(), false, b.angle->at).sym;
+          const ex rate = ctx.table->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, per_second, false, b.angle->at).sym;
+          const ex accel = ctx.table->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, per_second_squared, false,
+                                          b.angle->at).sym;
+          own.push_back({body.angle, rate, accel, static_cast<int>(ctx.m.bodies.size()), Coordinate::Kind::rotation});
+        }
+      }
       if (b.center_of_mass) {
         if (auto cm = ctx.vector(*b.center_of_mass, *ctx.table, "'center_of_mass' of body '" + body.name + "'", Dimension::length())) {
           body.cm = *cm;
           body.has_cm = true;
         }
+      } else if (!own.empty()) {
+        ctx.diags.error(b.angle->at, "body '" + body.name + "' has an 'angle' but no 'center_of_mass' (expected its center of mass, "
+                                     "fixed or written in its coordinates)");
       }
+      if (!body.coord.is_zero())
+        own.insert(own.begin(), {body.coord, body.rate, body.accel, static_cast<int>(ctx.m.bodies.size()), Coordinate::Kind::translation});
       if (!body.coord.is_zero() && body.has_cm) {
         bool depends = false;
         for (const auto& c : body.cm) depends = depends || c.has(body.coord);
-        if (!depends) {
+        if (!depends)
           ctx.diags.error(b.center_of_mass->at, "'center_of_mass' of body '" + body.name + "' does not depend on its coordinate '" +
                                                     b.position->text + "' (expected it written in " + b.position->text + ")");
-        } else {
-          // a = d2(cm)/dt2 = cm'' dot(q)^2 + cm' ddot(q), by the chain rule on this body's
-          // coordinate (no velocity term on a straight line).
-          const std::vector<Coordinate> own{{body.coord, body.rate, body.accel, -1, Coordinate::Kind::translation}};
-          for (int i = 0; i < 3; ++i) body.acceleration[i] = time_derivative(time_derivative(body.cm[i], own, {}), own, {});
-          accelerations.push_back(body.accel);
-        }
       }
+      if (!own.empty() && body.has_cm) {
+        // a = d2(cm)/dt2 by the chain rule on this body's coordinates (cm'' dot(q)^2 + cm'
+        // ddot(q) on a straight line; with an angle, the centripetal terms too).
+        for (int i = 0; i < 3; ++i) body.acceleration[i] = time_derivative(time_derivative(body.cm[i], own, {}), own, {});
+        for (const auto& c : own) accelerations.push_back(c.accel);
+      }
+      for (const auto& c : own)
+        if (c.kind == Coordinate::Kind::rotation) ctx.m.coordinates.push_back(c);
       // (a position with an acceleration too is reported above; the position wins)
       if (b.acceleration && !b.position) {
         if (auto a = ctx.vector(*b.acceleration, *ctx.table, "'acceleration' of body '" + body.name + "'", Dimension::acceleration()))
@@ -137,9 +224,12 @@ void bodies(BuildContext& ctx) {
     self.body = static_cast<int>(ctx.m.bodies.size());
     self.at = body.at;
     ctx.m.points.push_back(self);
-    if (!body.coord.is_zero())
-      ctx.m.coordinates.push_back({body.coord, body.rate, body.accel, static_cast<int>(ctx.m.bodies.size()),
-                                   Coordinate::Kind::translation});
+    if (!body.coord.is_zero()) {  // (before the body's angle, which the 2-D branch added)
+      const auto first_of_body = std::find_if(ctx.m.coordinates.begin(), ctx.m.coordinates.end(),
+                                              [&](const Coordinate& c) { return c.body == static_cast<int>(ctx.m.bodies.size()); });
+      ctx.m.coordinates.insert(first_of_body, {body.coord, body.rate, body.accel, static_cast<int>(ctx.m.bodies.size()),
+                                               Coordinate::Kind::translation});
+    }
     ctx.m.bodies.push_back(body);
   }
   ctx.m.candidates.insert(ctx.m.candidates.begin(), accelerations.begin(), accelerations.end());
@@ -168,6 +258,7 @@ void bodies(BuildContext& ctx) {
       if (!one_d && !mass->is_zero() && !body.has_cm)
         ctx.diags.error(b.at, "body '" + body.name + "' has no 'center_of_mass' (needed for its weight and its angular momentum balance)");
     }
+    inertia(ctx, b, body);
   }
 }
 
@@ -200,8 +291,13 @@ void points(BuildContext& ctx) {
       pt.body = it->second;
       pt.position = ctx.m.bodies[pt.body].cm;
       if (p.offset) {
-        if (auto off = ctx.vector(*p.offset, *ctx.table, "offset of point '" + pt.name + "'", Dimension::length()))
+        if (auto off = ctx.vector(*p.offset, *ctx.table, "offset of point '" + pt.name + "'", Dimension::length())) {
+          // In the body's frame: it turns with the body's angle (0: as written).
+          const ex& a = ctx.m.bodies[pt.body].angle;
+          if (!a.is_zero())
+            *off = Vec{cos(a) * (*off)[0] - sin(a) * (*off)[1], sin(a) * (*off)[0] + cos(a) * (*off)[1], (*off)[2]};
           for (int i = 0; i < 3; ++i) pt.position[i] += (*off)[i];
+        }
       }
     }
     ctx.point_index[pt.name] = static_cast<int>(ctx.m.points.size());

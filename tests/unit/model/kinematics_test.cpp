@@ -66,7 +66,14 @@ TEST_CASE("Kinematics: kinetic energy, its rate and a load's power include the t
   const symbol F("F"), C("C");
   l.force = {F, 0, 0};
   l.couple = {0, 0, C};
-  CHECK(same(kinematics::power(l, {t.xd, 0, 0}, t.thd), F * t.xd + C * t.thd));
+  CHECK(same(kinematics::power(t.body(), l, {t.xd, 0, 0}, t.thd), F * t.xd + C * t.thd));
+  // At the rim (r, 0) from the center, a vertical force P: P r dot(theta).
+  Load rim;
+  rim.body = 0;
+  const symbol P("P");
+  rim.force = {0, P, 0};
+  rim.at = Vec{t.x + t.r, 0, 0};
+  CHECK(same(kinematics::power(t.body(), rim, {t.xd, 0, 0}, t.thd), P * t.r * t.thd));
 }
 
 TEST_CASE("Kinematics: a body that only translates has no turning terms", "[kinematics]") {
