@@ -66,11 +66,10 @@ Dependents dependents(const Model& m, const EquationSystem& s, const Solution& s
   d.definitions = m.symbols->definitions();
   const std::vector<ex> by_balance = balance_coordinates(m);
   std::vector<ex> dep_rates, dep_coords;
-  for (const auto& b : m.bodies) {
-    if (b.coord.is_zero() || contains(by_balance, b.coord)) continue;
-    if (contains(spec.coordinates, b.coord)) continue;
-    dep_rates.push_back(b.rate);
-    dep_coords.push_back(b.coord);
+  for (const auto& c : m.coordinates) {
+    if (contains(by_balance, c.q) || contains(spec.coordinates, c.q)) continue;
+    dep_rates.push_back(c.rate);
+    dep_coords.push_back(c.q);
   }
   if (!dep_rates.empty() && !s.rate_equations.empty()) {
     const Solution r = solve_equations(m.file, s.rate_equations, dep_rates);
@@ -92,11 +91,11 @@ Dependents dependents(const Model& m, const EquationSystem& s, const Solution& s
   // length of the string over it), and where it does not, that value is what is missing.
   exmap at_start = spec.initial;
   std::vector<std::pair<ex, ex>> not_given;  // (symbol standing for q(0), q)
-  for (const auto& b : m.bodies)
-    if (!b.coord.is_zero() && !spec.initial.count(b.coord)) {
-      const symbol q0(to_text(b.coord) + "(0)");
-      at_start[b.coord] = q0;
-      not_given.emplace_back(q0, b.coord);
+  for (const auto& c : m.coordinates)
+    if (!spec.initial.count(c.q)) {
+      const symbol q0(to_text(c.q) + "(0)");
+      at_start[c.q] = q0;
+      not_given.emplace_back(q0, c.q);
     }
   std::vector<Equation> eqs;
   for (const auto& c : m.constraints) {
@@ -393,6 +392,33 @@ std::string against_at_start(const Model& m, const Solution& sol, const Dependen
   return {};
 }
 
+// Small oscillations of one nonlinear degree of freedom about q0 = 0 where it is at rest
+// (f(0, 0) = 0), when f depends on the coordinate alone: ddot(q) = -lambda^2 q with
+// lambda^2 = -f'(0) (the pendulum's g/l). Nothing when it does not rest there, or is unstable.
+std::optional<EquationsOfMotion::Linearised> linearised(const Model& m, const EquationsOfMotion& eom) {
+  const ex& f = eom.acceleration[0];
+  const ex& q = eom.q[0];
+  if (f.has(eom.dq[0]) || f.has(m.time)) return std::nullopt;
+  for (const auto& l : m.lengths)
+    if (f.has(l.symbol)) return std::nullopt;
+  EquationsOfMotion::Linearised lin;
+  lin.about = 0;
+  try {  // (a force such as -K/x^2 is undefined at 0: no rest there)
+    if (!zero(f.subs(q == 0))) return std::nullopt;
+    lin.stiffness = normal(-f.diff(ex_to<symbol>(q)).subs(q == 0));
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  if (lin.stiffness.is_zero()) return std::nullopt;
+  ex k_defined = lin.stiffness;
+  for (int depth = 0; depth < 8; ++depth) k_defined = substituted(k_defined, m.symbols->definitions());
+  if (const auto k = NormalForm(k_defined).approx_at(m.symbols->values())) {
+    if (*k <= 0) return std::nullopt;  // not a stable rest: no oscillation about it
+    lin.lambda = std::sqrt(*k);
+  }
+  return lin;
+}
+
 // How long the response holds when a rule assumes the direction of motion: until the rate
 // first vanishes. From rest an oscillation turns after half a period (pi/lambda, pi/omega_d);
 // otherwise the rate is followed with the numbers (a scan, then bisection).
@@ -516,10 +542,10 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   const Dependents& dep = for_all.problem.empty() ? for_all : for_accelerations;
   // A coordinate (or rate) of a body that is neither the motion's nor given by it.
   auto unplaced = [&](const ex& e) -> std::optional<ex> {
-    for (const auto& b : m.bodies)
-      if (!b.coord.is_zero() && !contains(state, b.coord) && !dep.coords.count(b.coord) && e.has(b.coord)) return b.coord;
-    for (const auto& b : m.bodies)
-      if (!b.rate.is_zero() && !contains(state, b.rate) && !dep.rates.count(b.rate) && e.has(b.rate)) return b.rate;
+    for (const auto& c : m.coordinates)
+      if (!contains(state, c.q) && !dep.coords.count(c.q) && e.has(c.q)) return c.q;
+    for (const auto& c : m.coordinates)
+      if (!contains(state, c.rate) && !dep.rates.count(c.rate) && e.has(c.rate)) return c.rate;
     return std::nullopt;
   };
   for (auto& a : eom.acceleration) {
@@ -530,11 +556,10 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
                       to_text(c) + ", which no equation gives";
         return out;
       }
-    for (const auto& b : m.bodies)
-      if (!b.coord.is_zero() && (a.has(b.coord) || a.has(b.rate)) &&
-          !contains(state, a.has(b.coord) ? b.coord : b.rate)) {
+    for (const auto& b : m.coordinates)
+      if ((a.has(b.q) || a.has(b.rate)) && !contains(state, a.has(b.q) ? b.q : b.rate)) {
         out.problem = "the acceleration " + to_text(eom.ddq[&a - eom.acceleration.data()]) + " depends on " +
-                      to_text(a.has(b.coord) ? b.coord : b.rate) + ", which the constraints do not give from the motion's coordinates";
+                      to_text(a.has(b.q) ? b.q : b.rate) + ", which the constraints do not give from the motion's coordinates";
         return out;
       }
   }
@@ -796,6 +821,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     }
   } else if (!eom.linear) {
     out.no_response = "the equation of motion is nonlinear (" + eom.nonlinear + "; simulate it)";
+    if (n == 1) eom.linearised = linearised(m, eom);
   } else {
     out.no_response = std::to_string(n) + " degrees of freedom (the modes are numeric; simulate the motion)";
   }

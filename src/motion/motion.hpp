@@ -37,6 +37,15 @@ struct EquationsOfMotion {
   // More than one degree of freedom, linear, with numbers: the undamped natural frequencies
   // (rad/s, ascending), numeric: square roots of the eigenvalues of M^-1 K (Eigen).
   std::vector<double> natural_frequencies;
+  // One nonlinear degree of freedom with no damping or forcing in time, at rest at q = q0
+  // (ddot(q) = 0 there): the small oscillations about it, ddot(q) = -lambda^2 (q - q0), with
+  // lambda^2 = -d f/d q at q0 (the pendulum's g/l), when that is positive with the numbers.
+  struct Linearised {
+    GiNaC::ex about;       // q0
+    GiNaC::ex stiffness;   // lambda^2 = -df/dq at q0 (per unit of the coordinate's inertia)
+    std::optional<double> lambda;  // rad/s, with the numbers
+  };
+  std::optional<Linearised> linearised;
 };
 
 /// The closed-form response of one linear degree of freedom from its initial conditions.

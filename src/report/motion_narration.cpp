@@ -124,6 +124,20 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
     text(source + " is not followed in time: " + why + "; `tackle simulate` does not watch it.");
   if (!mo.response) {
     text("No closed-form response: " + mo.no_response + ". `tackle simulate` integrates the motion numerically.");
+    if (const auto& lin = eom.linearised) {
+      const ex q = eom.q[0];
+      const symbol lambda("lambda", "\\lambda");
+      text("Small oscillations about " + to_text(q) + " = " + to_text(lin->about) + ", where it can rest (the equation of "
+           "motion linearised there):");
+      equation("linearised", eom.ddq[0], -pow(lambda, 2) * (q - lin->about));
+      Step* st = equation("small-oscillation frequency", lambda, sqrt(lin->stiffness));
+      if (lin->lambda) {
+        st->note = decimal_string(numeric(*lin->lambda), options.digits) + " rad/s";
+        Step* p = equation("small-oscillation period", symbol("tau", "\\tau"), 2 * Pi / lambda);
+        p->note = decimal_string(numeric(2 * M_PI / *lin->lambda), options.digits) + " s";
+      }
+      text("The period at a larger amplitude is longer: `tackle simulate` follows the nonlinear equation.");
+    }
     return;
   }
   const Response& r = *mo.response;

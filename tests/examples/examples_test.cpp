@@ -199,6 +199,16 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
         same(mo.eom.K(0, 0), yaml_text(em["stiffness"]));
         same(mo.eom.forcing[0], yaml_text(em["forcing"]));
       }
+      if (em["acceleration"]) {  // a nonlinear equation of motion, ddot(q) = f(q, dot(q), t)
+        REQUIRE(mo.eom.acceleration.size() == 1);
+        same(mo.eom.acceleration[0], yaml_text(em["acceleration"]));
+      }
+      if (const yaml::Node lin = em["linearised"]) {
+        REQUIRE(mo.eom.linearised);
+        same(mo.eom.linearised->stiffness, yaml_text(lin["lambda_squared"]));
+        REQUIRE(mo.eom.linearised->lambda);
+        CHECK(*mo.eom.linearised->lambda == Approx(yaml_number(lin["lambda"])).epsilon(1e-12));
+      }
       if (em["response"]) {
         REQUIRE(mo.response);
         CHECK(mo.response->verified);

@@ -52,15 +52,17 @@ void motion(BuildContext& ctx) {
   bool usable = is_a<symbol>(m.time);
   MotionSpec spec;
   spec.at = md.at;
-  // The moving coordinates, in body order.
+  // The moving coordinates (indices into m.coordinates), in body order.
   // (A massless body's coordinate that its balance fixes is no degree of freedom.)
   const std::vector<ex> by_balance = balance_coordinates(m, *ctx.table);
   std::vector<int> moving;
+  for (std::size_t i = 0; i < m.coordinates.size(); ++i)
+    if (!contains(by_balance, m.coordinates[i].q)) moving.push_back(static_cast<int>(i));
   for (std::size_t i = 0; i < m.bodies.size(); ++i) {
     const Body& b = m.bodies[i];
-    if (contains(by_balance, b.coord)) continue;
-    if (!b.coord.is_zero()) moving.push_back(static_cast<int>(i));
-    else if (b.has_mass && !is_zero_vec(b.acceleration)) {
+    const bool has_coordinate = std::any_of(m.coordinates.begin(), m.coordinates.end(),
+                                            [&](const Coordinate& c) { return c.body == static_cast<int>(i); });
+    if (!has_coordinate && b.has_mass && !is_zero_vec(b.acceleration)) {
       // Straight-line motion without a coordinate: nothing to integrate.
       bool unknown = false;
       for (const auto& c : m.candidates)
@@ -76,18 +78,18 @@ void motion(BuildContext& ctx) {
   for (const auto& c : m.constraints) {
     const ex rate = time_derivative(c.quantity, m);
     std::vector<ex> row;
-    for (int i : moving) row.push_back(rate.diff(ex_to<symbol>(m.bodies[i].rate)));
+    for (int i : moving) row.push_back(rate.diff(ex_to<symbol>(m.coordinates[i].rate)));
     rows.push_back(std::move(row));
   }
   const std::size_t n = moving.size();
   const std::size_t dof = n - rank_with(rows, {}, n);
   auto column_of = [&](const ex& q) -> int {
     for (std::size_t j = 0; j < n; ++j)
-      if (m.bodies[moving[j]].coord.is_equal(q)) return static_cast<int>(j);
+      if (m.coordinates[moving[j]].q.is_equal(q)) return static_cast<int>(j);
     return -1;
   };
   std::vector<std::string> moving_names;
-  for (int i : moving) moving_names.push_back(to_text(m.bodies[i].coord));
+  for (int i : moving) moving_names.push_back(to_text(m.coordinates[i].q));
   std::vector<std::size_t> chosen;
   if (!md.coordinates.empty()) {
     bool ok = true;
@@ -142,15 +144,15 @@ void motion(BuildContext& ctx) {
       });
     };
     // (Only the motion's own rates may be given: a rate in `initial` names its coordinate.)
-    const std::vector<std::function<bool(const Body&)>> preferences = {
-        [&](const Body& b) { return contains(m.given, b.coord); },
-        [&](const Body& b) { return in_initial(b.rate); },
-        [&](const Body& b) { return in_initial(b.coord); },
-        [&](const Body& b) { return b.has_mass && !b.mass.is_zero(); },
-        [&](const Body&) { return true; }};
+    const std::vector<std::function<bool(const Coordinate&)>> preferences = {
+        [&](const Coordinate& c) { return contains(m.given, c.q); },
+        [&](const Coordinate& c) { return in_initial(c.rate); },
+        [&](const Coordinate& c) { return in_initial(c.q); },
+        [&](const Coordinate& c) { return m.bodies[c.body].has_mass && !m.bodies[c.body].mass.is_zero(); },
+        [&](const Coordinate&) { return true; }};
     for (const auto& preferred : preferences)
       for (std::size_t j = 0; j < n; ++j)
-        if (std::find(order.begin(), order.end(), j) == order.end() && preferred(m.bodies[moving[j]])) order.push_back(j);
+        if (std::find(order.begin(), order.end(), j) == order.end() && preferred(m.coordinates[moving[j]])) order.push_back(j);
     for (auto j : order) {
       if (chosen.size() == dof) break;
       std::vector<std::size_t> with = chosen;
@@ -168,11 +170,11 @@ void motion(BuildContext& ctx) {
     usable = false;
   }
   for (auto j : chosen) {
-    const Body& b = m.bodies[moving[j]];
-    spec.coordinates.push_back(b.coord);
+    const Coordinate& b = m.coordinates[moving[j]];
+    spec.coordinates.push_back(b.q);
     spec.rates.push_back(b.rate);
     spec.accelerations.push_back(b.accel);
-    spec.bodies.push_back(moving[j]);
+    spec.bodies.push_back(b.body);
   }
   // The motion's coordinates and rates are known at every instant.
   for (const auto& q : {spec.coordinates, spec.rates})
@@ -188,7 +190,7 @@ void motion(BuildContext& ctx) {
     int body = -1;
     if (s)
       for (int i : moving)
-        if (m.bodies[i].coord.is_equal(s->sym) || m.bodies[i].rate.is_equal(s->sym)) body = i;
+        if (m.coordinates[i].q.is_equal(s->sym) || m.coordinates[i].rate.is_equal(s->sym)) body = m.coordinates[i].body;
     if (body < 0 && s) {
       const auto fixed = std::find_if(m.bodies.begin(), m.bodies.end(), [&](const Body& b) {
         return contains(by_balance, b.coord) && (b.coord.is_equal(s->sym) || b.rate.is_equal(s->sym));
@@ -202,7 +204,7 @@ void motion(BuildContext& ctx) {
     }
     if (body < 0) {
       std::vector<std::string> known;
-      for (int i : moving) known.push_back(to_text(m.bodies[i].coord)), known.push_back(to_text(m.bodies[i].rate));
+      for (int i : moving) known.push_back(to_text(m.coordinates[i].q)), known.push_back(to_text(m.coordinates[i].rate));
       ctx.unknown_name(key, "coordinate or rate of a moving body", known);
       continue;
     }
@@ -217,8 +219,9 @@ void motion(BuildContext& ctx) {
       ctx.diags.error(value.at, "initial value of '" + key.text + "' is not an expression in the parameters");
       continue;
     }
-    if (!is_a<numeric>(*v))
-      ctx.check_dimension(*v, is_rate ? Dimension::velocity() : Dimension::length(), value.at, "initial value of '" + key.text + "'");
+    if (!is_a<numeric>(*v))  // a length or an angle, a velocity or an angular velocity
+      ctx.check_dimension(*v, s->dimension.value_or(is_rate ? Dimension::velocity() : Dimension::length()), value.at,
+                          "initial value of '" + key.text + "'");
     spec.initial[s->sym] = *v;
     spec.initial_at.emplace_back(s->sym, value.at);
   }

@@ -31,6 +31,10 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
   J j{{"degrees_of_freedom", e.dof}, {"coordinates", J::array()}, {"linear", e.linear}};
   for (const auto& q : e.q) j["coordinates"].push_back(to_text(q));
   if (!e.linear) j["nonlinear"] = e.nonlinear;
+  if (e.linearised)
+    j["linearised"] = {{"about", to_text(e.linearised->about)},
+                       {"lambda_squared", expr(e.linearised->stiffness)},
+                       {"lambda", e.linearised->lambda ? J(*e.linearised->lambda) : J(nullptr)}};
   j["accelerations"] = J::array();
   for (std::size_t i = 0; i < e.dof; ++i)
     j["accelerations"].push_back({{"coordinate", to_text(e.q[i])}, {"acceleration", expr(e.acceleration[i])}});

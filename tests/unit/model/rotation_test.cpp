@@ -3,6 +3,9 @@
 // values by hand (see each example's notes).
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
+#include "motion/simulate.hpp"
 #include "../../support/helpers.hpp"
 
 using namespace tackle;
@@ -75,4 +78,28 @@ TEST_CASE("Rotation: an angle is for 2-D problems and needs a center of mass", "
   CHECK(errors_of("title: t\naxes: [x, y]\nbodies:\n  A: {mass: 0, angle: phi}\n") ==
         std::vector<std::string>{"t.yaml:4:23: body 'A' has an 'angle' but no 'center_of_mass' (expected its center of mass, "
                                  "fixed or written in its coordinates)"});
+}
+
+TEST_CASE("Rotation: a pendulum released from 60 deg swings with the elliptic-integral period", "[rotation][motion]") {
+  // By hand: T = 4 K(k)/sqrt(g/l), k = sin(30 deg) = 1/2 (std::comp_ellint_1 is K), longer
+  // than the small-angle 2 pi sqrt(l/g); the string stays taut (T >= m g cos(60 deg) > 0).
+  const auto a = run_text(read_example("rotation-pendulum.yaml"));
+  REQUIRE(a->motion);
+  REQUIRE(a->motion->eom.linearised);
+  SimulationSpec spec;
+  spec.until = 2.5;
+  spec.samples = 5001;
+  spec.plot = {"theta"};
+  const Simulation s = simulate(*a, spec, Location{});
+  CHECK(s.complete);
+  std::vector<double> crossings;
+  const auto& t = s.table.x;
+  const auto& th = s.table.y[0];
+  for (std::size_t i = 1; i < t.size(); ++i)
+    if (th[i - 1] && th[i] && (*th[i - 1] > 0) != (*th[i] > 0))
+      crossings.push_back(t[i - 1] + (t[i] - t[i - 1]) * *th[i - 1] / (*th[i - 1] - *th[i]));
+  REQUIRE(crossings.size() >= 2);
+  const double period = 2 * (crossings[1] - crossings[0]);
+  CHECK(period == Approx(4 * std::comp_ellint_1(0.5) / std::sqrt(9.81)).epsilon(1e-5));
+  CHECK(period > 2 * M_PI / std::sqrt(9.81));
 }
