@@ -330,8 +330,17 @@ struct Reader {
         std::set<std::string> seen;
         for (const auto& kv : init) {
           if (!seen.insert(kv.first.text()).second) continue;
-          if (auto v = scalar(kv.second, "initial value of '" + kv.first.text() + "'", file, diags))
+          const std::string what = "initial value of '" + kv.first.text() + "'";
+          if (kv.second.is_map()) {  // {value: 60, unit: deg}
+            if (check_map(kv.second, {"value", "unit"}, what, file, diags)) {
+              auto v = opt_scalar(kv.second, "value", what);
+              if (!v) diags.error(where(kv.second, file), what + " has no 'value' (expected, e.g., {value: 60, unit: deg})");
+              else mo.initial.emplace_back(key_text(kv.first), *v), mo.initial_units.push_back(opt_scalar(kv.second, "unit", what));
+            }
+          } else if (auto v = scalar(kv.second, what, file, diags)) {
             mo.initial.emplace_back(key_text(kv.first), *v);
+            mo.initial_units.emplace_back();
+          }
         }
       }
     } else {

@@ -120,6 +120,7 @@ struct SweepDesc {
 struct MotionDesc {
   std::vector<Text> coordinates;                 // empty: the given coordinates
   std::vector<std::pair<Text, Text>> initial;    // coordinate or rate -> expression in the parameters (SI)
+  std::vector<std::optional<Text>> initial_units;  // one per entry of `initial`: {value, unit} gave one
   std::optional<Text> until;                     // simulate: the end time (a number in s, or value + unit)
   std::optional<Text> until_unit;
   std::vector<Text> plot;                        // simulate: quantities to tabulate and plot

@@ -184,7 +184,9 @@ void motion(BuildContext& ctx) {
         m.candidates.erase(std::remove(m.candidates.begin(), m.candidates.end(), s), m.candidates.end());
       }
   // Initial values: coordinates and rates of moving bodies, in the parameters.
-  for (const auto& [key, value] : md.initial) {
+  for (std::size_t entry = 0; entry < md.initial.size(); ++entry) {
+    const auto& [key, value] = md.initial[entry];
+    const std::optional<Text>& unit_text = entry < md.initial_units.size() ? md.initial_units[entry] : std::nullopt;
     const auto r = parse_expression(key.text, *ctx.table);
     const SymbolInfo* s = r.value ? ctx.table->find(*r.value) : nullptr;
     int body = -1;
@@ -219,9 +221,23 @@ void motion(BuildContext& ctx) {
       ctx.diags.error(value.at, "initial value of '" + key.text + "' is not an expression in the parameters");
       continue;
     }
-    if (!is_a<numeric>(*v))  // a length or an angle, a velocity or an angular velocity
-      ctx.check_dimension(*v, s->dimension.value_or(is_rate ? Dimension::velocity() : Dimension::length()), value.at,
-                          "initial value of '" + key.text + "'");
+    // A length or an angle, a velocity or an angular velocity.
+    const Dimension expected = s->dimension.value_or(is_rate ? Dimension::velocity() : Dimension::length());
+    if (unit_text) {  // {value: 60, unit: deg}: the value in that unit
+      std::string err;
+      int col = 0;
+      const auto unit = parse_unit(unit_text->text, err, col);
+      // (a wrong unit is reported once: the value is kept, so it is not reported missing too)
+      if (!unit)
+        ctx.diags.error(unit_text->at.shifted(col), "unit of the initial value of '" + key.text + "': " + err);
+      else if (!(unit->dimension == expected))
+        ctx.diags.error(unit_text->at, "initial value of '" + key.text + "' is " + with_article(expected.describe()) + ", but " +
+                                           unit_text->text + " is " + with_article(unit->dimension.describe()));
+      else
+        *v = *v * unit->to_si;
+    } else if (!is_a<numeric>(*v)) {
+      ctx.check_dimension(*v, expected, value.at, "initial value of '" + key.text + "'");
+    }
     spec.initial[s->sym] = *v;
     spec.initial_at.emplace_back(s->sym, value.at);
   }

@@ -103,3 +103,15 @@ TEST_CASE("Rotation: a pendulum released from 60 deg swings with the elliptic-in
   CHECK(period == Approx(4 * std::comp_ellint_1(0.5) / std::sqrt(9.81)).epsilon(1e-5));
   CHECK(period > 2 * M_PI / std::sqrt(9.81));
 }
+
+TEST_CASE("Rotation: an initial angle may be given with its unit", "[rotation][motion]") {
+  std::string text = read_example("rotation-pendulum.yaml");
+  text.replace(text.find("initial: {theta: pi/3, dot(theta): 0}"), 37,
+               "initial: {theta: {value: 60, unit: deg}, dot(theta): {value: 0, unit: rpm}}");
+  const auto a = run_text(text);
+  REQUIRE(a->model.motion);
+  CHECK(same(a->model.motion->initial.at(sym(*a, "theta")), Pi / 3));
+  std::string wrong = text;
+  wrong.replace(wrong.find("{value: 60, unit: deg}"), 22, "{value: 60, unit: m}");
+  CHECK(errors_of(wrong) == std::vector<std::string>{"t.yaml:33:38: initial value of 'theta' is a pure number, but m is a length"});
+}
