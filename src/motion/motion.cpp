@@ -403,12 +403,13 @@ std::optional<EquationsOfMotion::Linearised> linearised(const Model& m, const Eq
     if (f.has(l.symbol)) return std::nullopt;
   EquationsOfMotion::Linearised lin;
   lin.about = 0;
-  try {  // (a force such as -K/x^2 is undefined at 0: no rest there)
-    if (!zero(f.subs(q == 0))) return std::nullopt;
-    lin.stiffness = normal(-f.diff(ex_to<symbol>(q)).subs(q == 0));
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
+  // f = n/d; a force such as -K/x^2 is undefined at 0 (d(0) = 0): no rest there. (Told
+  // before anything is put in: GiNaC's division by zero leaks what it was building.)
+  const ex nd = numer_denom(normal(f));
+  const ex n0 = nd.op(0).subs(q == 0), d0 = nd.op(1).subs(q == 0);
+  if (zero(d0) || !zero(n0)) return std::nullopt;
+  // f'(0) = n'(0)/d(0), as n(0) = 0.
+  lin.stiffness = normal(-nd.op(0).diff(ex_to<symbol>(q)).subs(q == 0) / d0);
   if (lin.stiffness.is_zero()) return std::nullopt;
   ex k_defined = lin.stiffness;
   for (int depth = 0; depth < 8; ++depth) k_defined = substituted(k_defined, m.symbols->definitions());
