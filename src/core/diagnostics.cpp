@@ -55,6 +55,11 @@ static std::size_t distance(std::string_view a, std::string_view b) {
 }
 
 std::string nearest(std::string_view word, const std::vector<std::string>& candidates) {
+  // By kind first: a bare letter that names a kind of quantity, T for the tension T_s, m for
+  // m_A, is meant as the name that letter starts (not t, time, one case away).
+  if (!word.empty() && word.find('_') == std::string_view::npos)
+    for (const auto& c : candidates)
+      if (c.size() > word.size() + 1 && c.compare(0, word.size(), word) == 0 && c[word.size()] == '_') return c;
   std::string best;
   std::size_t best_d = 0;
   for (const auto& c : candidates) {

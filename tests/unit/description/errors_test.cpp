@@ -359,3 +359,22 @@ TEST_CASE("Description: a title or a phase's name is one line", "[errors][latex]
   CHECK(errors_of(with(pile.str(), "  - name: fall", "  - name: \"fall\\n\\nfree\"")) ==
         Messages{"t.yaml:26:12: 'name' of a phase has a line break (expected one line: it is part of the phase's title)"});
 }
+
+TEST_CASE("Description: a bare letter is suggested as the name of its kind, T as the tension T_s, not t", "[errors]") {
+  // Issue 32, item 7: 'find: [T]' used to suggest 't' (time, one case away).
+  CHECK(errors_of(R"(title: t
+axes: [y]
+parameters:
+  m: {value: 1, unit: kg}
+  g: {value: 9.81, unit: m/s^2}
+gravity: -g
+bodies:
+  A: {mass: m, position: y}
+points:
+  C: 0
+strings:
+  - {name: s, path: [C, A]}
+layout: {y: -1}
+find: [T]
+)") == std::vector<std::string>{"t.yaml:14:8: 'find': unknown name 'T' (did you mean 'T_s'?)"});
+}
