@@ -107,6 +107,9 @@ EquationSystem build_equations(const Model& m) {
     } else if (varies(q)) {
       varying = q;
     }
+    // Nothing varies: the coordinates themselves keep it (a pendulum's string, its bob written
+    // in the string's angle), and its derivatives would read 0 = 0.
+    if (varying.is_zero()) return;
     ConstraintSteps steps{c.label, c.meaning, varying, time_derivative(varying, m), 0};
     steps.acceleration = time_derivative(steps.rate, m);
     steps.constant = c.constant;
