@@ -161,22 +161,20 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
     load(t, s);
     return holds(conditions[k].g(in.data()), conditions[k].op);
   };
-  for (std::size_t k = 0; k < conditions.size(); ++k)
-    if (!truth(k, 0, x)) {
-      out.events.push_back({0, conditions[k].what, true});
-      out.stopped = "the model does not hold at t = 0 (" + conditions[k].what + ")";
-      record(0, x);
-      out.table = std::move(table_out);
-      return out;
-    }
-  const bool direction_assumed = !m.direction_assumed_by.empty();
-  if (!mo.direction_against.empty()) {  // the model is wrong from the start
-    out.events.push_back({0, mo.direction_against, true});
-    out.stopped = "the model does not hold at t = 0 (" + mo.direction_against + ")";
+  // A model wrong from the start: a condition that fails at t = 0, or a start against the
+  // direction a rule assumes.
+  std::optional<std::string> wrong_at_start;
+  for (std::size_t k = 0; k < conditions.size() && !wrong_at_start; ++k)
+    if (!truth(k, 0, x)) wrong_at_start = conditions[k].what;
+  if (!wrong_at_start && !mo.direction_against.empty()) wrong_at_start = mo.direction_against;
+  if (wrong_at_start) {
+    out.events.push_back({0, *wrong_at_start, true});
+    out.stopped = "the model does not hold at t = 0 (" + *wrong_at_start + ")";
     record(0, x);
     out.table = std::move(table_out);
     return out;
   }
+  const bool direction_assumed = !m.direction_assumed_by.empty();
 
   namespace odeint = boost::numeric::odeint;
   auto stepper = odeint::make_dense_output(spec.tolerance, spec.tolerance, odeint::runge_kutta_dopri5<State>());

@@ -197,8 +197,7 @@ void bodies(BuildContext& ctx) {
         for (int i = 0; i < 3; ++i) body.acceleration[i] = time_derivative(time_derivative(body.cm[i], own, {}), own, {});
         for (const auto& c : own) accelerations.push_back(c.accel);
       }
-      for (const auto& c : own)
-        if (c.kind == Coordinate::Kind::rotation) ctx.m.coordinates.push_back(c);
+      ctx.m.coordinates.insert(ctx.m.coordinates.end(), own.begin(), own.end());
       // (a position with an acceleration too is reported above; the position wins)
       if (b.acceleration && !b.position) {
         if (auto a = ctx.vector(*b.acceleration, *ctx.table, "'acceleration' of body '" + body.name + "'", Dimension::acceleration()))
@@ -224,12 +223,9 @@ void bodies(BuildContext& ctx) {
     self.body = static_cast<int>(ctx.m.bodies.size());
     self.at = body.at;
     ctx.m.points.push_back(self);
-    if (!body.coord.is_zero()) {  // (before the body's angle, which the 2-D branch added)
-      const auto first_of_body = std::find_if(ctx.m.coordinates.begin(), ctx.m.coordinates.end(),
-                                              [&](const Coordinate& c) { return c.body == static_cast<int>(ctx.m.bodies.size()); });
-      ctx.m.coordinates.insert(first_of_body, {body.coord, body.rate, body.accel, static_cast<int>(ctx.m.bodies.size()),
-                                               Coordinate::Kind::translation});
-    }
+    if (one_d && !body.coord.is_zero())  // (the 2-D branch listed its body's coordinates)
+      ctx.m.coordinates.push_back({body.coord, body.rate, body.accel, static_cast<int>(ctx.m.bodies.size()),
+                                   Coordinate::Kind::translation});
     ctx.m.bodies.push_back(body);
   }
   ctx.m.candidates.insert(ctx.m.candidates.begin(), accelerations.begin(), accelerations.end());
