@@ -213,10 +213,18 @@ struct Reader {
       const std::string what = "point '" + p.name.text + "'";
       if (kv.second.is_scalar() || kv.second.is_sequence()) {
         p.at = vector(kv.second, what);
-      } else if (check_map(kv.second, {"at", "on", "offset"}, what, file, diags)) {
+      } else if (check_map(kv.second, {"at", "on", "offset", "turns"}, what, file, diags)) {
         p.at = opt_vector(kv.second, "at", what);
         p.on = opt_scalar(kv.second, "on", what);
         p.offset = opt_vector(kv.second, "offset", what);
+        if (auto turns = opt_scalar(kv.second, "turns", what)) {
+          p.turns_at = turns->at;
+          if (turns->text == "false")
+            p.turns = false;
+          else if (turns->text != "true")
+            diags.error(turns->at, "'turns' of " + what + " is '" + turns->text + "' (expected true or false)");
+          if (!p.on) diags.error(turns->at, "'turns' of " + what + " needs 'on' (only a point on a body turns with it)");
+        }
         if (p.at && p.on)
           diags.error(where(kv.second, file), what + " has both 'at' and 'on' (expected a fixed point or a point on a body)");
         else if (!p.at && !p.on)

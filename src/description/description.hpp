@@ -67,6 +67,10 @@ struct PointDesc {
   std::optional<Text> on;              // a point on a body
   std::optional<VectorDesc> offset;    // with `on`: constant offset from the body's coordinate
                                        // (1-D) or center of mass (2-D, 3-D)
+  bool turns = true;                   // with `on`: the offset turns with the body (false: it
+                                       // keeps the ground's directions - where a string leaves a
+                                       // drum, where a wheel touches the ground)
+  std::optional<Location> turns_at;    // where `turns` was written
 };
 
 /// An argument of a connection: a scalar or a list of scalars.

@@ -5,6 +5,7 @@
 
 #include "expr/print.hpp"
 #include "expr/rational.hpp"
+#include "expr/trig.hpp"
 #include "model/kinematics.hpp"
 
 namespace tackle {
@@ -67,7 +68,7 @@ Equation amb_along(const Model& m, const std::vector<int>& bodies, bool system, 
     if (!in(bodies, l.body)) continue;
     Vec moment = l.couple;
     if (l.at) moment = moment + cross(*l.at - about, l.force);
-    const ex mz = normal(inner(moment, direction));
+    const ex mz = fewer_trig_terms(normal(inner(moment, direction)));
     if (mz.is_zero()) {
       if (!is_zero_vec(l.force)) eliminated.push_back(l.source);
       continue;
@@ -87,8 +88,7 @@ Equation amb_along(const Model& m, const std::vector<int>& bodies, bool system, 
 EquationSystem build_equations(const Model& m) {
   EquationSystem s;
   exmap still_coordinates;
-  for (const auto& b : m.bodies)
-    if (!b.coord.is_zero()) still_coordinates[b.coord] = 0;
+  for (const auto& c : m.coordinates) still_coordinates[c.q] = 0;
   auto add_constraint = [&](const Constraint& c) {
     // Constant parts (fixed points, offsets, wrap around pulleys) drop out of the derivatives;
     // the book leaves them out of the length sum too.

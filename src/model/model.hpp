@@ -52,6 +52,11 @@ struct Point {
   std::string name;
   Vec position = zero_vec();
   int body = -1;       // 1-D: the body the point moves with; -1: fixed to the ground
+  // A point of a turning body that keeps the ground's directions (`turns: false`): it moves
+  // with the center of mass, at `offset` from it, but does not turn (where a string leaves a
+  // drum, where a wheel touches the ground).
+  bool turns = true;
+  Vec offset = zero_vec();
   Location at;
 };
 

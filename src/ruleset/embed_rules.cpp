@@ -81,7 +81,7 @@ std::string maker(const Rule& r) {
        << location(l.at) << "});\n";
   for (const auto& c : r.constraints)
     os << "  r.constraints.push_back(ConstraintSpec{" << enumerator("ConstraintSpec::Kind", c.kind) << ", " << literal(c.arg)
-       << ", " << literal(c.with) << ", " << location(c.at) << "});\n";
+       << ", " << literal(c.with) << ", " << literal(c.point) << ", " << location(c.at) << "});\n";
   for (const auto& v : r.validity)
     os << "  r.validity.push_back(ValiditySpec{" << literal(v.holds) << ", " << literal(v.meaning) << ", "
        << literal(v.otherwise) << ", " << literal(v.when) << ", " << location(v.at) << "});\n";

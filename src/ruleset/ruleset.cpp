@@ -379,9 +379,9 @@ struct RuleReader {
     }
     if (auto n = root["constraints"]; n && is_list(n, "'constraints'", file, diags)) {
       for (const auto& c : n) {
-        if (!check_map(c, {"length", "length_sum", "still", "together", "with"}, "a constraint of the rule", file, diags))
+        if (!check_map(c, {"length", "length_sum", "still", "together", "with", "rolls", "at", "along"}, "a constraint of the rule", file, diags))
           continue;
-        auto kind = which(c, {"length", "length_sum", "still", "together"}, "a constraint");
+        auto kind = which(c, {"length", "length_sum", "still", "together", "rolls"}, "a constraint");
         if (!kind) continue;
         ConstraintSpec s;
         s.at = where(c, file);
@@ -398,6 +398,14 @@ struct RuleReader {
           if (s.with.empty()) diags.error(s.at, "a 'together' constraint needs 'with' (the second body)");
           check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
           if (!s.with.empty()) check_arg_ref(r, s.with, ArgKind::body, s.at, "a constraint");
+        } else if (*kind == "rolls") {
+          s.kind = ConstraintSpec::Kind::rolls;
+          s.point = c["at"] ? c["at"].text() : "";
+          s.with = c["along"] ? c["along"].text() : "";
+          if (s.point.empty() || s.with.empty()) diags.error(s.at, "a 'rolls' constraint needs 'at' (the contact point) and 'along' (the rolling direction)");
+          check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
+          if (!s.point.empty()) check_arg_ref(r, s.point, ArgKind::point, s.at, "a constraint");
+          if (!s.with.empty()) check_arg_ref(r, s.with, ArgKind::vector, s.at, "a constraint");
         } else {
           s.kind = ConstraintSpec::Kind::still;
           check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");

@@ -55,11 +55,13 @@ struct LoadSpec {
 
 /// Constraints: `length` holds a path's length constant, `length_sum` a hand-written length
 /// sum, `still` a body's acceleration at zero, `together` (with `with`) the position of one
-/// body relative to another (they share a translation).
+/// body relative to another (they share a translation), `rolls` (with `at`, `along`) a body
+/// rolling without slipping at a contact point along a straight surface.
 struct ConstraintSpec {
-  enum class Kind { length, length_sum, still, together } kind;
+  enum class Kind { length, length_sum, still, together, rolls } kind;
   std::string arg;
-  std::string with;  // together: the second body argument
+  std::string with;  // together: the second body argument; rolls: the rolling direction (a vector)
+  std::string point;  // rolls: the contact point
   Location at;
   friend bool operator==(const ConstraintSpec&, const ConstraintSpec&) = default;
 };

@@ -640,9 +640,9 @@ std::optional<Solution> solve_level(const Model& model, const std::vector<Equati
     if (sym->role == role && in_questions.count(sym->sym) != 0) asked = true;
   if (!asked || equations.empty()) return std::nullopt;
   std::vector<ex> unknowns;
-  for (const auto& b : model.bodies) {
-    const ex& q = role == SymbolRole::rate ? b.rate : b.coord;
-    if (q.is_zero() || contains(model.given, q)) continue;
+  for (const auto& c : model.coordinates) {
+    const ex& q = role == SymbolRole::rate ? c.rate : c.q;
+    if (contains(model.given, q)) continue;
     // A coordinate inside a turning strand's length (x in l_CP = sqrt(h^2 + x^2)): the length
     // sum only looks linear in it, so it is not solved for (it stays what it depends on).
     if (std::any_of(equations.begin(), equations.end(),

@@ -80,6 +80,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
   if (!d.phases.empty()) throw Unsupported("phases (each phase is a problem of its own)");
   if (d.impact) throw Unsupported("an impact (momentum balance over an instant, no forces)");
   if (d.interval) throw Unsupported("an interval of constant acceleration (averaged forces)");
+  for (const auto& b : d.bodies)
+    if (b.angle) throw Unsupported("a body that turns (body '" + b.name.text + "' has an 'angle')");
   dims_ = d.axes.empty() ? 1 : static_cast<int>(d.axes.size());
   const int n = dims_;
 

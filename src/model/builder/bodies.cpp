@@ -288,9 +288,15 @@ void points(BuildContext& ctx) {
       pt.position = ctx.m.bodies[pt.body].cm;
       if (p.offset) {
         if (auto off = ctx.vector(*p.offset, *ctx.table, "offset of point '" + pt.name + "'", Dimension::length())) {
-          // In the body's frame: it turns with the body's angle (0: as written).
+          // In the body's frame: it turns with the body's angle (0: as written), unless it
+          // keeps the ground's directions.
           const ex& a = ctx.m.bodies[pt.body].angle;
-          if (!a.is_zero())
+          pt.offset = *off;
+          pt.turns = p.turns;
+          if (!p.turns && a.is_zero())
+            ctx.diags.error(*p.turns_at, "point '" + pt.name + "' has 'turns: false', but body '" + ctx.m.bodies[pt.body].name +
+                                             "' does not turn (expected a body with an 'angle')");
+          if (!a.is_zero() && p.turns)
             *off = Vec{cos(a) * (*off)[0] - sin(a) * (*off)[1], sin(a) * (*off)[0] + cos(a) * (*off)[1], (*off)[2]};
           for (int i = 0; i < 3; ++i) pt.position[i] += (*off)[i];
         }

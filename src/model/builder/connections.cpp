@@ -10,6 +10,7 @@
 
 #include "core/placeholders.hpp"
 #include "expr/print.hpp"
+#include "expr/trig.hpp"
 
 namespace tackle::build {
 
@@ -167,9 +168,10 @@ bool bind_arguments(BuildContext& ctx, Instance& in) {
       }
       case ArgKind::vector: {
         const VectorDesc vd{a->items, a->items.empty() ? a->key.at : a->items[0].at};
-        if (auto v = ctx.vector(vd, *ctx.table, "'" + spec.key + "' of a " + what, spec.dimension))
+        if (auto v = ctx.vector(vd, *ctx.table, "'" + spec.key + "' of a " + what, spec.dimension)) {
           scope.bind(spec.key, make_vector((*v)[0], (*v)[1], (*v)[2]));
-        else
+          in.vector_args[spec.key] = *v;
+        } else
           ok = false;
         break;
       }
@@ -344,20 +346,79 @@ void add_loads(BuildContext& ctx, Instance& in) {
       if (it == expr_args.end()) continue;
       auto tension = rule_expr(ctx, in, l.expr, l.at);
       if (!tension) continue;
-      // Generalized force of a length sum L on coordinate q: -T dL/dq (virtual work).
-      for (std::size_t bi = 0; bi < ctx.m.bodies.size(); ++bi) {
-        const Body& b = ctx.m.bodies[bi];
-        if (b.coord.is_zero()) continue;
-        const ex dl = it->second.first.diff(ex_to<symbol>(b.coord));
+      // Generalized force of a length sum L on coordinate q: -T dL/dq (virtual work). In
+      // 1-D it is a force along the axis; on an angle, a couple; in 2-D and 3-D, a force at
+      // the center of mass along the line the coordinate moves it on (a length sum says how
+      // long the string is, not which way it pulls, so that line must be straight).
+      for (const Coordinate& q : ctx.m.coordinates) {
+        const Body& b = ctx.m.bodies[q.body];
+        const ex dl = it->second.first.diff(ex_to<symbol>(q.q));
         if (dl.is_zero()) continue;
+        const ex generalized = -*tension * dl;
         Load load;
-        load.body = static_cast<int>(bi);
-        load.force = {-*tension * dl, 0, 0};
+        load.body = q.body;
+        if (q.kind == Coordinate::Kind::rotation) {
+          load.couple = {0, 0, generalized};
+        } else if (ctx.m.dims() == 1) {
+          load.force = {generalized, 0, 0};
+        } else {
+          Vec along = zero_vec();
+          for (int i = 0; i < 3; ++i) along[i] = b.cm[i].diff(ex_to<symbol>(q.q));
+          bool straight = !is_zero_vec(along);
+          for (const Coordinate& other : ctx.m.coordinates)
+            for (int i = 0; i < 3; ++i)
+              straight = straight && !along[i].has(other.q) && (other.body != q.body || other.q.is_equal(q.q) || !b.cm[i].has(other.q));
+          if (!straight) {
+            ctx.diags.error(c.at, "the length sum of " + label + " is written in " + to_text(q.q) + ", which does not move body '" +
+                                      b.name + "' along one straight line (expected a coordinate along a line, or the string's 'path')");
+            continue;
+          }
+          load.force = (generalized / inner(along, along).expand()) * along;
+          load.at = b.cm;
+          load.at_name = b.name;
+        }
         load.source = label + " (from its length sum) on " + b.name;
         ctx.m.loads.push_back(load);
       }
     }
   }
+}
+
+// Rolling without slipping on a straight surface along `along`: the body's material point at
+// the contact has no velocity along the surface, v . t + omega (z x r) . t = 0 (r from the
+// center to the contact). With r fixed in the ground's directions (the contact point keeps
+// them: 'turns: false') this integrates: cm . t + angle (z x r) . t is constant (x + r phi
+// for a wheel on level ground).
+void roll(BuildContext& ctx, Instance& in, const ConstraintSpec& k) {
+  const auto b = in.body_args.find(k.arg);
+  const auto p = in.point_args.find(k.point);
+  const auto t = in.vector_args.find(k.with);
+  if (b == in.body_args.end() || p == in.point_args.end() || t == in.vector_args.end()) return;
+  const Body& body = ctx.m.bodies[b->second];
+  const Point& contact = ctx.m.points[p->second];
+  if (body.angle.is_zero()) {
+    ctx.diags.error(in.c.at, "body '" + body.name + "' of a " + in.what +
+                                 " does not turn (expected a body with an 'angle': a wheel rolls by turning)");
+    return;
+  }
+  if (contact.body != b->second || contact.turns) {
+    ctx.diags.error(in.c.at, "the contact point '" + contact.name + "' of a " + in.what +
+                                 " is not a point of body '" + body.name +
+                                 "' that keeps the ground's directions (expected a point written {on: " + body.name +
+                                 ", offset: ..., turns: false}, where the wheel touches the surface)");
+    return;
+  }
+  const Vec along = unit(t->second);
+  const Vec r = contact.offset;
+  if (!normal(inner(r, along)).is_zero()) {
+    ctx.diags.error(in.c.at, "the contact point '" + contact.name + "' of a " + in.what + " is not straight across the surface from the center of body '" +
+                                 body.name + "' (expected its offset " + to_text(r[0]) + ", " + to_text(r[1]) +
+                                 " at right angles to the rolling direction)");
+    return;
+  }
+  const ex lever = fewer_trig_terms(normal(inner(cross(Vec{0, 0, 1}, r), along)));
+  const ex q = (fewer_trig_terms(inner(body.cm, along).expand()) + lever * body.angle).expand();
+  ctx.m.constraints.push_back({in.label, in.c.name ? in.c.name->text : "", q, "travel of " + body.name + " along the surface plus the arc it turns through (it rolls without slipping)"});
 }
 
 void add_constraints(BuildContext& ctx, Instance& in) {
@@ -381,12 +442,14 @@ void add_constraints(BuildContext& ctx, Instance& in) {
       for (int i = 0; i < ctx.m.dims(); ++i) {
         const ex q = (second.cm[i] - first.cm[i]).expand();
         bool moves = false;
-        for (const auto& body : ctx.m.bodies) moves = moves || (!body.coord.is_zero() && q.has(body.coord));
+        for (const auto& coordinate : ctx.m.coordinates) moves = moves || q.has(coordinate.q);
         if (!moves) continue;
         ctx.m.constraints.push_back({label + (ctx.m.dims() > 1 ? " (" + ctx.m.axes[i] + ")" : ""), cname, q,
                                      "position of " + second.name + " relative to " + first.name +
                                          (ctx.m.dims() > 1 ? " along " + ctx.m.axes[i] : "")});
       }
+    } else if (k.kind == ConstraintSpec::Kind::rolls) {
+      roll(ctx, in, k);
     } else if (k.kind == ConstraintSpec::Kind::length_sum) {
       auto it = in.expr_args.find(k.arg);
       if (it == in.expr_args.end()) continue;

@@ -91,11 +91,10 @@ void BuildContext::unknown_name(const Text& t, const std::string& kind, const st
 }
 
 const GiNaC::exmap& BuildContext::coordinates_at_zero() {
-  if (coordinates_at_zero_bodies_ != m.bodies.size() || coordinates_at_zero_.empty()) {
+  if (coordinates_at_zero_bodies_ != m.coordinates.size() || coordinates_at_zero_.empty()) {
     coordinates_at_zero_.clear();
-    for (const auto& b : m.bodies)
-      if (!b.coord.is_zero()) coordinates_at_zero_[b.coord] = 0;
-    coordinates_at_zero_bodies_ = m.bodies.size();
+    for (const auto& c : m.coordinates) coordinates_at_zero_[c.q] = 0;
+    coordinates_at_zero_bodies_ = m.coordinates.size();
   }
   return coordinates_at_zero_;
 }

@@ -60,6 +60,7 @@ struct Instance {
   std::map<std::string, int> body_args;               // body arguments: the body
   std::map<std::string, std::vector<int>> path_args;  // points arguments
   std::map<std::string, std::pair<GiNaC::ex, Location>> expr_args;
+  std::map<std::string, Vec> vector_args;
   std::map<std::string, std::optional<Path>> paths;  // points arguments as paths, made once
 };
 

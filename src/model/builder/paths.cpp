@@ -4,6 +4,9 @@
 
 #include <algorithm>
 
+#include "expr/print.hpp"
+#include "expr/trig.hpp"
+
 namespace tackle::build {
 
 using namespace GiNaC;
@@ -38,6 +41,50 @@ ex turning_length(BuildContext& ctx, const Point& a, const Point& b, const ex& s
   return s.sym;
 }
 
+// A path that ends at a point of a turning body that keeps the ground's directions (`turns:
+// false`) winds on that body there: a drum, a pulley the string grips, a spool. The strand
+// leaves the rim along a tangent, and as the body turns by d(angle) the string winds on or
+// off by r d(angle): the path's length gains s angle, with s = d . (z x r) (d the strand's
+// direction into the rim point, r the point's offset from the center), which is +-|r| for a
+// tangent. Its tension then acts on the body at that point (a moment about its center).
+bool wind(BuildContext& ctx, const Instance& in, Path& path) {
+  bool ok = true;
+  for (const bool last : {false, true}) {
+    const int index = last ? path.points.back() : path.points.front();
+    const Point& p = ctx.m.points[index];
+    if (p.body < 0 || p.turns) continue;
+    const Body& body = ctx.m.bodies[p.body];
+    if (body.angle.is_zero()) continue;
+    PathSegment& seg = last ? path.segments.back() : path.segments.front();
+    const Point& other = ctx.m.points[last ? seg.from : seg.to];
+    const Vec into = last ? seg.direction : -1 * seg.direction;
+    const ex s = fewer_trig_terms(normal(inner(into, cross(Vec{0, 0, 1}, p.offset))));
+    const std::string strand = "the strand " + other.name + "-" + p.name + " of " + in.label;
+    bool moves = false;
+    for (const auto& c : ctx.m.coordinates) moves = moves || s.has(c.q);
+    for (const auto& l : ctx.m.lengths) moves = moves || s.has(l.symbol);
+    if (moves) {
+      ctx.diags.error(in.c.at, strand + " leaves body '" + body.name + "' at '" + p.name +
+                                   "' in a direction that changes as the bodies move (expected a strand that stays along one "
+                                   "line, as from a drum to a hanging or sliding body)");
+      ok = false;
+      continue;
+    }
+    if (!normal(s * s - inner(p.offset, p.offset)).is_zero()) {
+      ctx.diags.error(in.c.at, strand + " does not leave body '" + body.name + "' along a tangent at '" + p.name +
+                                   "' (a string winds on a turning body where it leaves the rim at right angles to the "
+                                   "radius; expected the strand at right angles to the offset " +
+                                   to_text(p.offset[0]) + ", " + to_text(p.offset[1]) + ")");
+      ok = false;
+      continue;
+    }
+    path.length += s * body.angle;
+    path.varying_length += s * body.angle;
+    seg.constant = false;  // its tension turns the body even when the strand's length is fixed
+  }
+  return ok;
+}
+
 }  // namespace
 
 // The path of a points argument, made on first use; nothing when it cannot be made (its
@@ -52,6 +99,7 @@ const Path* path_of(BuildContext& ctx, Instance& in, const std::string& key) {
   if (fresh) {
     cached->second = make_path(it->second, ctx.m.points, ctx.m.dims(), ctx.layout, ctx.diags, in.c.at, in.label,
                                [&ctx](const Point& a, const Point& b, const ex& squared) { return turning_length(ctx, a, b, squared); });
+    if (cached->second && ctx.m.dims() == 2 && !wind(ctx, in, *cached->second)) cached->second.reset();
     if (cached->second && cached->second->varying_length.is_zero()) {
       ctx.diags.error(in.c.at, "the path of a " + in.what +
                                    " never changes length (its ends are on one body, or fixed; expected a path between "

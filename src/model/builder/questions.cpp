@@ -126,9 +126,8 @@ void given_and_find(BuildContext& ctx) {
 // `C_s` for string s, as a person writes "x_S = 2 x + const").
 void constraint_constants(BuildContext& ctx) {
   const auto in_questions = symbols_asked(ctx.m.wanted);
-  const bool asked = std::any_of(ctx.m.bodies.begin(), ctx.m.bodies.end(), [&](const Body& b) {
-    return !b.coord.is_zero() && in_questions.count(b.coord) != 0;
-  });
+  const bool asked = std::any_of(ctx.m.coordinates.begin(), ctx.m.coordinates.end(),
+                                 [&](const Coordinate& c) { return in_questions.count(c.q) != 0; });
   if (!asked) return;
   for (auto& c : ctx.m.constraints) {
     const std::string base = c.connection.empty() ? c.label : c.connection;

@@ -115,3 +115,90 @@ TEST_CASE("Rotation: an initial angle may be given with its unit", "[rotation][m
   wrong.replace(wrong.find("{value: 60, unit: deg}"), 22, "{value: 60, unit: m}");
   CHECK(errors_of(wrong) == std::vector<std::string>{"t.yaml:33:38: initial value of 'theta' is a pure number, but m is a length"});
 }
+
+TEST_CASE("Rotation: a string that grips a pulley winds on by R dphi, and each side pulls with its own tension", "[rotation][string]") {
+  // By hand (the example's notes): y_1 + R phi and y_2 - R phi are constant; AMB of the disk
+  // R T_1 - R T_2 = (M R^2/2) ddot(phi).
+  const auto a = run_text(read_example("rotation-atwood-massive-pulley.yaml"));
+  const ex R = sym(*a, "R"), M = sym(*a, "M"), phi = sym(*a, "phi"), y1 = sym(*a, "y_1"), y2 = sym(*a, "y_2");
+  const ex T1 = sym(*a, "T_1"), T2 = sym(*a, "T_2"), phidd = sym(*a, "ddot(phi)");
+  REQUIRE(a->model.constraints.size() == 2);
+  CHECK(same(a->model.constraints[0].quantity, -y1 - R * phi));
+  CHECK(same(a->model.constraints[1].quantity, -y2 + R * phi));
+  bool amb = false;
+  for (const Equation& e : a->system.equations)
+    if (e.label == "AMB P about its center of mass (z)") {
+      amb = true;
+      CHECK(same(e.lhs - e.rhs, R * T1 - R * T2 - M * pow(R, 2) * phidd / 2));
+    }
+  CHECK(amb);
+  CHECK(a->power.status == PowerCheck::Status::holds);
+}
+
+TEST_CASE("Rotation: a strand that does not leave the rim along a tangent is refused", "[rotation][string][errors]") {
+  std::string text = read_example("rotation-atwood-massive-pulley.yaml");
+  // E at the bottom of the disk, with block 2 straight below it: the strand meets the rim
+  // along the radius.
+  text.replace(text.find("E: {on: P, offset: [R, 0]"), 25, "E: {on: P, offset: [0, \"-R\"]");
+  text.replace(text.find("center_of_mass: [R, y_2]"), 24, "center_of_mass: [0, y_2]");
+  CHECK(errors_of(text) == std::vector<std::string>{
+                               "t.yaml:35:5: the strand block_2-E of string s_2 does not leave body 'P' along a tangent at 'E' (a "
+                               "string winds on a turning body where it leaves the rim at right angles to the radius; expected "
+                               "the strand at right angles to the offset 0, -R)"});
+}
+
+TEST_CASE("Rotation: 'turns: false' is for a point of a body that turns", "[rotation][errors]") {
+  CHECK(errors_of("title: t\naxes: [x, y]\nbodies:\n  A: {mass: 0, position: x, center_of_mass: [x, 0]}\npoints:\n"
+                  "  C: {on: A, offset: [0, 1], turns: false}\n") ==
+        std::vector<std::string>{"t.yaml:6:37: point 'C' has 'turns: false', but body 'A' does not turn (expected a body with an 'angle')"});
+  CHECK(errors_of("title: t\naxes: [x, y]\nbodies:\n  A: {mass: 0, position: x, center_of_mass: [x, 0]}\npoints:\n"
+                  "  C: {at: [0, 1], turns: no}\n") ==
+        std::vector<std::string>{"t.yaml:6:26: 'turns' of point 'C' is 'no' (expected true or false)",
+                                 "t.yaml:6:26: 'turns' of point 'C' needs 'on' (only a point on a body turns with it)"});
+}
+
+TEST_CASE("Rotation: a cylinder rolls down an incline with a = 2/3 g sin(theta), tied by x + r phi", "[rotation][rolling]") {
+  const auto a = run_text(read_example("rotation-cylinder-rolling-down-incline.yaml"));
+  const ex r = sym(*a, "r"), s = sym(*a, "s"), phi = sym(*a, "phi");
+  REQUIRE(a->model.constraints.size() == 1);
+  CHECK(same(a->model.constraints[0].quantity, -s - r * phi));
+  CHECK(a->power.status == PowerCheck::Status::holds);
+}
+
+TEST_CASE("Rotation: rolling needs a turning body and a contact point that keeps the ground's directions", "[rotation][rolling][errors]") {
+  std::string text = read_example("rotation-cylinder-rolling-down-incline.yaml");
+  std::string turning = text;
+  turning.replace(turning.find(", turns: false}"), 15, "}");
+  CHECK(errors_of(turning) == std::vector<std::string>{
+                                  "t.yaml:35:5: the contact point 'C' of a 'rolling' connection is not a point of body 'cylinder' "
+                                  "that keeps the ground's directions (expected a point written {on: cylinder, offset: ..., turns: "
+                                  "false}, where the wheel touches the surface)"});
+  std::string aside = text;
+  const std::string below = "offset: [\"-r*sin(theta)\", \"-r*cos(theta)\"]";
+  aside.replace(aside.find(below), below.size(), "offset: [\"-r*cos(theta)\", \"r*sin(theta)\"]");
+  CHECK(errors_of(aside) == std::vector<std::string>{
+                                "t.yaml:35:5: the contact point 'C' of a 'rolling' connection is not straight across the surface "
+                                "from the center of body 'cylinder' (expected its offset -r*cos(theta), r*sin(theta) at right "
+                                "angles to the rolling direction)"});
+}
+
+TEST_CASE("String: a length sum in a 2-D problem pulls along each coordinate's line (the Atwood machine)", "[string]") {
+  // By hand: as the 1-D Atwood machine, ddot(y_A) = (m_B - m_A) g/(m_A + m_B), T = 2 m_A m_B g/(m_A + m_B).
+  const auto a = run_text(R"(title: t
+axes: [x, y]
+parameters:
+  m_A: {value: 3, unit: kg}
+  m_B: {value: 5, unit: kg}
+  g: {value: 9.81, unit: m/s^2}
+gravity: [0, -g]
+bodies:
+  A: {mass: m_A, position: y_A, center_of_mass: [0, y_A]}
+  B: {mass: m_B, position: y_B, center_of_mass: [1, y_B]}
+strings:
+  - {name: s, length: "-y_A - y_B", tension: T}
+find: [ddot(y_A), T]
+)");
+  const ex mA = sym(*a, "m_A"), mB = sym(*a, "m_B"), g = sym(*a, "g");
+  CHECK(same(*a->solution.value_of(sym(*a, "ddot(y_A)")), (mB - mA) * g / (mA + mB)));
+  CHECK(same(*a->solution.value_of(sym(*a, "T")), 2 * mA * mB * g / (mA + mB)));
+}
