@@ -333,12 +333,19 @@ std::optional<Figure> FigureMaker::draw(const std::vector<int>& bodies, bool sys
     }
     if (!b.drawn_shape.empty()) {
       const double unit = proj.dims == 1 ? particle_side : scale;
+      // Turned by the body's angle where it has one.
+      const double turned = proj.dims == 2 ? num(b.angle).value_or(0) : 0;
+      const V along{std::cos(turned), std::sin(turned)};
       if (b.drawn_shape == "circle") {
         d.outline.shape = FigureOutline::Shape::circle;
         d.outline.centre = fp(d.centre);
         d.outline.radius = unit * num(b.drawn_size[0]).value_or(1) / 2;
+      } else if (b.drawn_shape == "rod") {
+        // A little longer than the rod, so that no force at an end runs along an edge.
+        const double length = unit * num(b.drawn_size[0]).value_or(1);
+        d.outline = rectangle(d.centre, along, length + 0.3, std::min(0.35, 0.12 * length));
       } else {
-        d.outline = rectangle(d.centre, {1, 0}, unit * num(b.drawn_size[0]).value_or(1), unit * num(b.drawn_size[1]).value_or(1));
+        d.outline = rectangle(d.centre, along, unit * num(b.drawn_size[0]).value_or(1), unit * num(b.drawn_size[1]).value_or(1));
       }
       d.outline.name = b.name;
       d.particle = proj.dims == 1 || body_points[i].size() <= 1;  // else forces at their points
@@ -454,6 +461,18 @@ std::optional<Figure> FigureMaker::draw(const std::vector<int>& bodies, bool sys
       if (proj.dims > 1 && b.has_cm) at = point3(b.cm);
       decompose(bi, b.acceleration, at, b.mass, true, true);
     }
+    // I alpha, dashed, counterclockwise (the sense the angle is counted in).
+    if (proj.dims == 2 && !b.angle.is_zero() && !b.inertia.is_zero()) {
+      const auto q = std::find_if(m.coordinates.begin(), m.coordinates.end(), [&](const Coordinate& c) { return c.q.is_equal(b.angle); });
+      if (q != m.coordinates.end()) {
+        FigureCouple c;
+        c.centre = fp(drawn[i].centre);
+        c.radius = 0.8;
+        c.dashed = true;
+        c.label.tex = to_latex(b.inertia * q->accel);
+        f.couples.push_back(c);
+      }
+    }
   }
 
   // Arrows: pushed onto the outline where they press on it, pulling away from it elsewhere;
@@ -560,12 +579,18 @@ std::optional<Figure> FigureMaker::draw(const std::vector<int>& bodies, bool sys
     a.label = lay.place(a.label.tex, {end + reach * out, end + side * n, end - side * n, mid + side * n, mid - side * n,
                                       end + reach * out + side * n, end + reach * out - side * n, end + (reach + 0.4) * out});
   }
-  for (auto& c : f.couples) c.label = lay.place(c.label.tex, {vp(c.centre) + V{0, c.radius + 0.3}, vp(c.centre) + V{c.radius + 0.4, 0}});
+  for (auto& c : f.couples) {
+    std::vector<V> cand{vp(c.centre) + V{0, c.radius + 0.3}, vp(c.centre) + V{c.radius + 0.4, 0}};
+    for (V dir : {V{-1, 0}, V{0, -1}, V{0.7, 0.7}, V{-0.7, 0.7}, V{0.7, -0.7}, V{-0.7, -0.7}})
+      cand.push_back(vp(c.centre) + (c.radius + 0.45) * dir);
+    c.label = lay.place(c.label.tex, cand);
+  }
   for (auto& d : f.dots)
     if (d.label) {
       const V p = vp(d.at);
       std::vector<V> cand;
-      for (V dir : {V{-1, -1}, V{1, -1}, V{-1, 1}, V{1, 1}, V{0, -1}, V{-1, 0}, V{1, 0}, V{0, 1}}) cand.push_back(p + 0.3 * dir);
+      for (const double r : {0.3, 0.55})
+        for (V dir : {V{-1, -1}, V{1, -1}, V{-1, 1}, V{1, 1}, V{0, -1}, V{-1, 0}, V{1, 0}, V{0, 1}}) cand.push_back(p + r * dir);
       d.label = lay.place(d.label->tex, cand);
     }
 

@@ -1,7 +1,7 @@
 // Free body diagrams, drawn: a Figure is a picture in drawing units (about centimetres, y up)
 // made from the model's geometry: each body's outline, the points, every force as an arrow at
-// its point of application with its symbol, couples as arcs, the inertial term m a dashed
-// beside it, and the axes. Writers turn it into TikZ (LaTeX) or SVG (Markdown, HTML).
+// its point of application with its symbol, couples as arcs, the inertial terms m a and
+// I alpha dashed beside them, and the axes. Writers turn it into TikZ (LaTeX) or SVG (Markdown, HTML).
 #pragma once
 
 #include <optional>
@@ -34,6 +34,7 @@ struct FigureCouple {
   FigurePoint centre;
   double radius = 0.5;
   bool counterclockwise = true;
+  bool dashed = false;  // the inertial term I alpha
   FigureLabel label;
 };
 

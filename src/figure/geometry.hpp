@@ -167,6 +167,16 @@ class Layout {
     }
     for (const auto& d : f_.dots)
       if (std::fabs(d.at.x - b.c.x) * 2 < b.w + 0.1 && std::fabs(d.at.y - b.c.y) * 2 < b.h + 0.1) p += 10;
+    // A couple's arc (from -60 to 240 degrees, as it is drawn), in short chords.
+    for (const auto& c : f_.couples)
+      for (int k = 0; k < 10; ++k) {
+        const double a0 = (-60.0 + 30.0 * k) * M_PI / 180, a1 = (-60.0 + 30.0 * (k + 1)) * M_PI / 180;
+        const V centre = vp(c.centre);
+        if (box_hits_segment(b, centre + c.radius * V{std::cos(a0), std::sin(a0)}, centre + c.radius * V{std::cos(a1), std::sin(a1)})) {
+          p += 10;
+          break;
+        }
+      }
     return p;
   }
   Figure& f_;

@@ -78,8 +78,11 @@ class SvgText {
       if (auto g = greek().find(name); g != greek().end()) return g->second;
       if (name == "dot" || name == "ddot") return group() + (name == "dot" ? "\u0307" : "\u0308");
       if (name == "frac") {
+        // a/b, with parentheses only where they are needed (a sum above, a sum or product below).
         const std::string a = group(), b = group();
-        return "(" + a + ")/(" + b + ")";
+        auto sum = [](const std::string& t) { return t.find('+') != std::string::npos || t.find("\u2212") != std::string::npos; };
+        const bool product = b.find("\u2009") != std::string::npos;
+        return (sum(a) ? "(" + a + ")" : a) + "/" + (sum(b) || product ? "(" + b + ")" : b);
       }
       if (name == "sqrt") return "√(" + group() + ")";
       if (name == "mathrm" || name == "text" || name == "operatorname" || name == "mathit")
@@ -163,7 +166,7 @@ std::string to_tikz(const Figure& f) {
   for (const auto& c : f.couples) {
     const double start = c.counterclockwise ? -60 : 240, end = c.counterclockwise ? 240 : -60;
     const double sx = c.centre.x + c.radius * std::cos(start * M_PI / 180), sy = c.centre.y + c.radius * std::sin(start * M_PI / 180);
-    out += "  \\draw[->, very thick] (" + num(sx) + "," + num(sy) + ") arc[start angle=" + num(start) + ", end angle=" + num(end) +
+    out += std::string("  \\draw[->, ") + (c.dashed ? "thick, dashed" : "very thick") + "] (" + num(sx) + "," + num(sy) + ") arc[start angle=" + num(start) + ", end angle=" + num(end) +
            ", radius=" + num(c.radius) + "];\n";
     out += "  \\node[font=\\small, inner sep=1pt] at (" + num(c.label.at.x) + "," + num(c.label.at.y) + ") {$" + c.label.tex + "$};\n";
   }
@@ -215,7 +218,8 @@ std::string to_svg(const Figure& f) {
     const double cx = (c.centre.x - f.min_x) * px, cy = (f.max_y - c.centre.y) * px, r = c.radius * px;
     out += "<path d=\"M " + num(cx + r * std::cos(start)) + " " + num(cy - r * std::sin(start)) + " A " + num(r) + " " + num(r) +
            " 0 1 " + (c.counterclockwise ? "0" : "1") + " " + num(cx + r * std::cos(end)) + " " + num(cy - r * std::sin(end)) +
-           "\" fill=\"none\" stroke=\"black\" stroke-width=\"2\" marker-end=\"url(#" + id + ")\"/>\n";
+           "\" fill=\"none\" stroke=\"black\" stroke-width=\"2\"" + (c.dashed ? " stroke-dasharray=\"6 4\"" : "") +
+           " marker-end=\"url(#" + id + ")\"/>\n";
     out += label(c.label);
   }
   return out + "</svg>\n";

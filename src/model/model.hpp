@@ -41,8 +41,9 @@ struct Body {
   GiNaC::ex angle = 0;            // 0: the body only translates
   GiNaC::ex inertia = 0;          // about the center of mass
   Vec acceleration = zero_vec();  // of the center of mass (of every point, while it only translates)
-  // How the free body diagram draws it (`draw:`): "" (from its points), "rectangle" (size:
-  // width, height) or "circle" (size: diameter), centred on its center of mass.
+  // How the free body diagram draws it (`draw:`, else its `shape`): "" (from its points),
+  // "rectangle" (size: width, height), "circle" (size: diameter) or "rod" (size: length),
+  // centred on its center of mass and turned by its angle.
   std::string drawn_shape;
   std::vector<GiNaC::ex> drawn_size;
   Location at;

@@ -108,6 +108,21 @@ void inertia(BuildContext& ctx, const BodyDesc& b, Body& body) {
     sizes.push_back(*v);
   }
   body.inertia = body.mass * shape->inertia(sizes);
+  // Drawn as it is (unless 'draw' says otherwise): a disk, ring or sphere as a circle, a rod
+  // as a bar along the body, a box as a rectangle; both turn with the body.
+  if (body.drawn_shape.empty()) {
+    const std::string kind = shape->kind;
+    if (kind == "disk" || kind == "ring" || kind == "sphere") {
+      body.drawn_shape = "circle";
+      body.drawn_size = {2 * sizes[0]};
+    } else if (kind == "rod") {
+      body.drawn_shape = "rod";
+      body.drawn_size = {sizes[0]};
+    } else if (kind == "box") {
+      body.drawn_shape = "rectangle";
+      body.drawn_size = sizes;
+    }
+  }
 }
 
 }  // namespace

@@ -146,6 +146,7 @@ TEST_CASE("FBD: in every example no label lies on another and no arrow lies on a
       INFO(file << ": " << f.caption);
       std::vector<FigureLabel> labels = f.texts;
       for (const auto& x : f.arrows) labels.push_back(x.label);
+      for (const auto& c : f.couples) labels.push_back(c.label);
       for (const auto& d : f.dots)
         if (d.label) labels.push_back(*d.label);
       for (std::size_t i = 0; i < labels.size(); ++i)
