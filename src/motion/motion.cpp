@@ -370,13 +370,18 @@ std::string against_at_start(const Model& m, const Solution& sol, const Dependen
   for (const auto& l : m.loads) {
     if (l.body < 0 || std::find(m.direction_assumed_by.begin(), m.direction_assumed_by.end(), l.source) == m.direction_assumed_by.end()) continue;
     const Body& b = m.bodies[static_cast<std::size_t>(l.body)];
-    const auto velocity = kinematics::velocity(m, b);
+    // The velocity of the point the friction acts at: the center's, unless the body turns.
+    const bool turning = !b.angle.is_zero() && l.at;
+    const auto velocity = turning ? kinematics::point_velocity(m, b, *l.at - b.cm) : kinematics::velocity(m, b);
     if (!velocity) continue;
+    Vec acceleration = b.acceleration;
+    if (turning)
+      for (int k = 0; k < 3; ++k) acceleration[k] = time_derivative((*velocity)[k], m);
     double fv = 0, fa = 0, ff = 0, vv = 0, aa = 0;
     for (int k = 0; k < m.dims(); ++k) {
       const auto f = number(l.force[k]);
       const auto v = number((*velocity)[k]);
-      const auto a = number(b.acceleration[k]);
+      const auto a = number(acceleration[k]);
       if (!f || !v || !a) return {};
       fv += *f * *v, fa += *f * *a, ff += *f * *f, vv += *v * *v, aa += *a * *a;
     }
@@ -876,6 +881,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     }
     if (depends_on_state(in_state, state, m) || in_state.has(m.time)) out.strands_in_state.emplace_back(what, in_state);
   }
+  for (const auto& slip : m.slips) out.slips_in_state.emplace_back(slip.source, put_in(slip.speed, dep));
   if (!m.direction_assumed_by.empty()) out.direction_against = against_at_start(m, sol, dep, spec);
   if (!out.response) return out;
 

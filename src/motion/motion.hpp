@@ -132,6 +132,9 @@ struct Motion {
   std::vector<std::pair<std::string, std::string>> not_followed;
   // Each strand's length in the state (it must stay positive), with the strand's name.
   std::vector<std::pair<std::string, GiNaC::ex>> strands_in_state;
+  // Each sliding contact's slip speed on a turning body (Model::slips) in the state (it must
+  // stay positive), with its source.
+  std::vector<std::pair<std::string, GiNaC::ex>> slips_in_state;
   std::string problem;       // the motion could not be followed at all: why (an input error)
   std::optional<Location> problem_at;  // where in the description, when not at 'motion'
   // A rule assumes the direction of motion (sliding friction opposes it): the closed-form

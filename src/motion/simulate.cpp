@@ -89,6 +89,9 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
   for (const auto& [what, e] : mo.strands_in_state)
     if (auto g = compile(e, what))
       conditions.push_back({*g, ">", what + ": its length reaches zero (a body reaches the point at its end)"});
+  for (const auto& [what, e] : mo.slips_in_state)
+    if (auto g = compile(e, what))
+      conditions.push_back({*g, ">", what + ": the contact stops slipping (its friction would change; the body may roll from here)"});
   // What to tabulate: as asked, else the description's plot, else the coordinates.
   std::vector<std::string> plot = spec.plot;
   if (plot.empty())
@@ -175,6 +178,12 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
     return out;
   }
   const bool direction_assumed = !m.direction_assumed_by.empty();
+  // The coordinates of turning bodies when a slip speed is watched: their rates turning is no event.
+  std::vector<bool> slip_watched(n, false);
+  if (!m.slips.empty())
+    for (std::size_t i = 0; i < n; ++i)
+      for (const auto& c : m.coordinates)
+        if (c.q.is_equal(eom.q[i]) && c.body >= 0 && !m.bodies[static_cast<std::size_t>(c.body)].angle.is_zero()) slip_watched[i] = true;
 
   namespace odeint = boost::numeric::odeint;
   auto stepper = odeint::make_dense_output(spec.tolerance, spec.tolerance, odeint::runge_kutta_dopri5<State>());
@@ -230,8 +239,9 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
     for (std::size_t i = 0; i < n; ++i) {
       const int now = x1[n + i] > 0 ? 1 : (x1[n + i] < 0 ? -1 : 0);
       // A turn matters where a rule assumed the direction of motion (sliding friction); an
-      // oscillation's turns are not events.
-      if (direction_assumed && rate_sign[i] != 0 && now != rate_sign[i]) {
+      // oscillation's turns are not events, nor are those of a body whose contact slips at
+      // a speed of its own (watched above).
+      if (direction_assumed && !slip_watched[i] && rate_sign[i] != 0 && now != rate_sign[i]) {
         const int before = rate_sign[i];
         const double te = locate([&](double, const State& s) { return (s[n + i] > 0 ? 1 : -1) != before; });
         if (te < event_t || (te == event_t && !event_ends)) {

@@ -11,6 +11,7 @@
 #include "core/placeholders.hpp"
 #include "expr/print.hpp"
 #include "expr/trig.hpp"
+#include "model/kinematics.hpp"
 
 namespace tackle::build {
 
@@ -507,7 +508,20 @@ void add_conditions(BuildContext& ctx, Instance& in) {
     }
     ctx.m.drawings.push_back(std::move(d));
   }
-  if (rule->assumes_direction) ctx.m.direction_assumed_by.push_back(label);
+  if (rule->assumes_direction) {
+    ctx.m.direction_assumed_by.push_back(label);
+    // At a point of a turning body the contact slips at the material point's velocity, not
+    // the center's (a ball that slides and spins).
+    const auto body = in.body_args.find("body");
+    const auto at = in.point_args.find("at");
+    const auto along = in.vector_args.find("sliding");
+    if (body != in.body_args.end() && at != in.point_args.end() && along != in.vector_args.end()) {
+      const Body& b = ctx.m.bodies[body->second];
+      if (!b.angle.is_zero())
+        if (const auto v = kinematics::point_velocity(ctx.m, b, ctx.m.points[at->second].position - b.cm))
+          ctx.m.slips.push_back({label, fewer_trig_terms(inner(unit(along->second), *v).expand())});
+    }
+  }
   for (const auto& chk : rule->checks) {
     if (!chk.when.empty() && !c.arg(chk.when)) continue;
     if (chk.kind == CheckSpec::Kind::positive) {

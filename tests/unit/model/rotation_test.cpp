@@ -202,3 +202,33 @@ find: [ddot(y_A), T]
   CHECK(same(*a->solution.value_of(sym(*a, "ddot(y_A)")), (mB - mA) * g / (mA + mB)));
   CHECK(same(*a->solution.value_of(sym(*a, "T")), 2 * mA * mB * g / (mA + mB)));
 }
+
+TEST_CASE("Rotation: a ball thrown without spin slides until its contact stops slipping, at t = 2 v_0/(7 mu g)", "[rotation][motion]") {
+  const auto a = run_text(read_example("rotation-ball-slides-then-rolls.yaml"));
+  SimulationSpec spec;
+  spec.until = 2;
+  spec.plot = {"dot(x)"};
+  const Simulation run = simulate(*a, spec, Location{});
+  const double t1 = 2 * 8 / (7 * 0.2 * 9.81);
+  CHECK_FALSE(run.complete);
+  REQUIRE(run.events.size() == 1);
+  CHECK(run.events[0].t == Approx(t1).epsilon(1e-9));
+  CHECK(run.events[0].what == "sliding at C: the contact stops slipping (its friction would change; the body may roll from here)");
+  REQUIRE(run.table.y[0].back());
+  CHECK(*run.table.y[0].back() == Approx(5.0 * 8 / 7).epsilon(1e-9));  // it rolls on at 5 v_0/7
+}
+
+TEST_CASE("Rotation: with backspin the ball stops and comes back while its contact still slides forwards", "[rotation][motion]") {
+  // v_0 = 2 m/s, R omega_0 = 10 m/s of backspin: dot(x) = v_0 - mu g t turns at t = 1.019 s,
+  // but the contact slides forwards, at v_0 + R omega_0 - (7/2) mu g t, until t = 2 (v_0 +
+  // R omega_0)/(7 mu g) = 1.7474 s: the friction keeps its direction until then.
+  std::string text = read_example("rotation-ball-slides-then-rolls.yaml");
+  const std::string start = "initial: {x: 0, dot(x): 8, phi: 0, dot(phi): 0}";
+  text.replace(text.find(start), start.size(), "initial: {x: 0, dot(x): 2, phi: 0, dot(phi): {value: 90.909090909090909, unit: rad/s}}");
+  const auto a = run_text(text);
+  SimulationSpec spec;
+  spec.until = 3;
+  const Simulation run = simulate(*a, spec, Location{});
+  REQUIRE(run.events.size() == 1);
+  CHECK(run.events[0].t == Approx(2 * 12 / (7 * 0.2 * 9.81)).epsilon(1e-9));
+}
