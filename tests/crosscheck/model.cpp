@@ -48,14 +48,14 @@ Eigen::MatrixXd pinv_solve_matrix(const Eigen::MatrixXd& A) {
   return cod.pseudoInverse();
 }
 
-int rank_of(const Eigen::MatrixXd& A) {
+int rank_of(const Eigen::MatrixXd& A, double tolerance = 1e-9) {
   if (A.rows() == 0) return 0;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(A);
   const auto& s = svd.singularValues();
   if (s.size() == 0 || s(0) == 0) return 0;
   int r = 0;
   for (int i = 0; i < s.size(); ++i)
-    if (s(i) > 1e-9 * s(0)) ++r;
+    if (s(i) > tolerance * s(0)) ++r;
   return r;
 }
 
@@ -918,7 +918,7 @@ Eigen::VectorXd Model::generalized(const PointRef& p, const Eigen::VectorXd& for
   return g;
 }
 
-Model::Kkt Model::system(const State& s) const {
+Model::Kkt Model::system(const State& s, const std::vector<int>* only) const {
   const int n = ndof_;
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
   Eigen::VectorXd mass = Eigen::VectorXd::Zero(n);
@@ -973,7 +973,7 @@ Model::Kkt Model::system(const State& s) const {
       Eigen::MatrixXd J2(J.rows() + 1, n);
       J2 << J, dv.grad.transpose();
       const int r2 = rank_of(J2);
-      if (r2 == rank) continue;
+      if (only ? std::find(only->begin(), only->end(), static_cast<int>(k)) == only->end() : r2 == rank) continue;
       rank = r2;
       J = J2;
     } else {
@@ -1110,7 +1110,18 @@ Instant Model::solve(const State& s) const {
 }
 
 std::optional<Eigen::VectorXd> Model::accelerations(const State& s) const {
-  const Kkt k = system(s);
+  // An integrator's intermediate states are off the constraints by a little; a guide that
+  // the rules make redundant on them (a pinned body's center as written in its angle) is
+  // not quite redundant there, and keeping it makes the system singular. The guides are
+  // chosen at the state projected onto the constraints.
+  std::vector<int> kept;
+  const bool curved = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.kind == Body::turning; });
+  if (curved) {
+    State p = s;
+    project(p, false);
+    kept = system(p).kept;
+  }
+  const Kkt k = system(s, curved ? &kept : nullptr);
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(k.K);
   cod.setThreshold(1e-11);
   if (cod.rank() < k.K.rows()) return std::nullopt;

@@ -229,7 +229,8 @@ class Model {
     Eigen::VectorXd rhs;
     std::vector<int> kept;  // the constraints in the system
   };
-  Kkt system(const State& s) const;
+  // (`only`: these constraints, else the rules' and the guides they leave free at s)
+  Kkt system(const State& s, const std::vector<int>* only = nullptr) const;
 };
 
 }  // namespace crosscheck
