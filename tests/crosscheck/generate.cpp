@@ -36,8 +36,7 @@
 //   wheel-2d      a wheel rolling without slip on a slope (either tangent), sometimes pushed at
 //                 its center or at a point of its rim that turns, a couple, a spring along the slope
 //   pivot-2d      a body pinned at a fixed point, its center written in its angle (a bar, a disk,
-//                 a point), sometimes a spring and a damper to a point of it that turns, a force
-//                 there, a couple
+//                 a point), sometimes a spring to a point of it that turns, a force there, a couple
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -954,10 +953,9 @@ std::string pivot_2d(Gen& g) {
       d.param("k", g.nice(5, 50), "N/m");
       d.param("l_0", g.nice(0.5, 1.5), "m");
       d.connections.push_back("{type: spring, path: [W, K], k: k, rest_length: l_0}");
-      if (g.chance(0.5)) {
-        d.param("c", g.nice(0.5, 3), "N*s/m");
-        d.connections.push_back("{type: damper, path: [W, K], c: c}");
-      }
+      // (no damper here: tackle fails on a damper from a fixed point to a point that turns,
+      // `internal error: rem: arguments must be polynomials over the rationals`; see
+      // docs/crosscheck.md)
     }
     if (what >= 1) {
       d.param("F_x", g.nice(-10, 10), "N");
