@@ -86,7 +86,11 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
   std::mt19937_64 rng(o.seed);
   std::optional<Model> model;
   try {
-    model.emplace(d, rng, o.perturb);
+    Perturbation p;
+    p.masses = o.perturb;
+    p.inertia = o.perturb_inertia;
+    p.winding = o.perturb_winding;
+    model.emplace(d, rng, p);
   } catch (const Unsupported& e) {
     out.kind = Outcome::Kind::skipped;
     out.reason = e.what();

@@ -37,6 +37,8 @@ struct Options {
   bool motion = true;
   std::uint64_t seed = 1;
   double perturb = 0;             // the model's masses times 1 + perturb (a deliberately wrong model)
+  double perturb_inertia = 0;     // its moments of inertia times 1 + perturb_inertia
+  bool perturb_winding = false;   // its wound strings winding the other way
 };
 
 /// Compares one description (YAML text; `file` names it).

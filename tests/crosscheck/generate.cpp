@@ -30,6 +30,13 @@
 //   pulley-block-3d  a pulley block (massless or not) in a collar on a vertical rod, on two
 //                 turning strands in 3-D, over a pulley to a hanging block, sometimes a block
 //                 on a spring under it
+//   drum-2d       a drum (disk, ring or given inertia) pinned at its center, strings wound on it
+//                 to hanging blocks (on the rim or an inner step) and to a block on a floor,
+//                 sometimes a couple on it and a spring under a block
+//   wheel-2d      a wheel rolling without slip on a slope (either tangent), sometimes pushed at
+//                 its center or at a point of its rim that turns, a couple, a spring along the slope
+//   pivot-2d      a body pinned at a fixed point, its center written in its angle (a bar, a disk,
+//                 a point), sometimes a spring to a point of it that turns, a force there, a couple
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -804,6 +811,168 @@ std::string pulley_block_3d(Gen& g) {
   return d.text();
 }
 
+// The moment of inertia of a turning body: a shape (of size `size`) or a given value.
+std::string inertia_of(Doc& d, Gen& g, const std::string& mass, const std::string& size, bool point_too) {
+  switch (g.integer(0, point_too ? 4 : 3)) {
+    case 0: return fmt::format("shape: {{disk: {}}}", size);
+    case 1: return fmt::format("shape: {{ring: {}}}", size);
+    case 2: return fmt::format("shape: {{sphere: {}}}", size);
+    case 3: d.param("I_" + mass, g.nice(0.25, 3), "kg*m^2"); return "inertia: I_" + mass;
+    default: return "shape: point";
+  }
+}
+
+std::string drum_2d(Gen& g) {
+  Doc d;
+  d.title = "Generated: a drum pinned at its center with strings wound on it to blocks";
+  d.axes = "[x, y]";
+  d.param("g", 9.81, "m/s^2");
+  d.param("M", g.nice(1, 6), "kg");
+  d.param("R", g.nice(0.5, 1.5), "m");
+  d.gravity = "[0, -g]";
+  d.bodies.push_back("P: {mass: M, angle: phi, center_of_mass: [0, 0], " + inertia_of(d, g, "P", "R", false) + "}");
+  d.points.push_back("O: [0, 0]");
+  d.connections.push_back("{type: pin, body: P, at: O}");
+  d.param("m_A", g.nice(1, 8), "kg");
+  d.bodies.push_back(R"~(A: {mass: m_A, position: y_A, center_of_mass: ["-R", y_A]})~");
+  d.points.push_back(R"~(L: {on: P, offset: ["-R", 0], turns: false})~");
+  d.strings.push_back("{name: a, path: [A, L], tension: T_A}");
+  d.layout.push_back(fmt::format("y_A: {}", num(-g.nice(1.5, 2.5))));
+  if (g.chance(0.6)) {
+    // on the rim or on an inner step, on the other side
+    std::string r = "R";
+    if (g.chance(0.5)) {
+      d.param("r", g.nice(0.25, 0.5), "m");
+      r = "r";
+    }
+    d.param("m_B", g.nice(1, 8), "kg");
+    d.bodies.push_back("B: {mass: m_B, position: y_B, center_of_mass: [" + r + ", y_B]}");
+    d.points.push_back("E: {on: P, offset: [" + r + ", 0], turns: false}");
+    d.strings.push_back(g.chance(0.5) ? "{name: b, path: [B, E], tension: T_B}" : "{name: b, path: [E, B], tension: T_B}");
+    d.layout.push_back(fmt::format("y_B: {}", num(-g.nice(1.5, 2.5))));
+  }
+  if (g.chance(0.4)) {
+    // a block on a floor at the drum's top, pulled along it
+    d.param("m_C", g.nice(1, 8), "kg");
+    d.bodies.push_back("C: {mass: m_C, position: x_C, center_of_mass: [x_C, R]}");
+    d.points.push_back("U: {on: P, offset: [0, R], turns: false}");
+    d.connections.push_back("{type: roller, body: C, at: C, normal: [0, 1]}");
+    d.strings.push_back("{name: c, path: [C, U], tension: T_C}");
+    d.layout.push_back(fmt::format("x_C: {}", num(-g.nice(2, 3))));
+  }
+  if (g.chance(0.4)) {
+    d.param("M_0", g.nice(-10, 10), "N*m");
+    d.connections.push_back("{type: couple, on: P, moment: M_0}");
+  }
+  if (g.chance(0.3)) {
+    d.param("d_W", 4, "m");
+    d.points.push_back(R"~(W: ["-R", "-d_W"])~");
+    d.param("k", g.nice(5, 50), "N/m");
+    d.param("l_0", g.nice(1, 2), "m");
+    d.connections.push_back("{type: spring, path: [W, A], k: k, rest_length: l_0}");
+  }
+  d.layout.push_back("phi: 0");
+  motion_for(d, g, {{"phi", 0.0}});
+  return d.text();
+}
+
+std::string wheel_2d(Gen& g) {
+  Doc d;
+  d.title = "Generated: a wheel rolling without slip on a slope";
+  d.axes = "[x, y]";
+  d.param("g", 9.81, "m/s^2");
+  d.param("m", g.nice(1, 6), "kg");
+  d.param("r", g.nice(0.25, 1), "m");
+  d.param("theta", g.integer(5, 40), "deg");
+  d.param("mu", g.nice(0.5, 1), "");
+  d.gravity = "[0, -g]";
+  // s along t = (cos, -sin) (down the slope), the center s t + r n, n = (sin, cos)
+  d.bodies.push_back(R"~(W: {mass: m, position: s, angle: phi, center_of_mass: ["s*cos(theta) + r*sin(theta)", )~"
+                     R"~("-s*sin(theta) + r*cos(theta)"], )~" + inertia_of(d, g, "W", "r", false) + "}");
+  d.points.push_back(R"~(C: {on: W, offset: ["-r*sin(theta)", "-r*cos(theta)"], turns: false})~");
+  d.connections.push_back(fmt::format(R"~({{type: rolling, body: W, at: C, normal: ["sin(theta)", "cos(theta)"], tangent: {}, mu: mu}})~",
+                                      g.chance(0.5) ? R"~(["-cos(theta)", "sin(theta)"])~" : R"~(["cos(theta)", "-sin(theta)"])~"));
+  if (g.chance(0.4)) {
+    d.param("F", g.nice(-10, 10), "N");
+    d.connections.push_back("{type: force, on: W, at: W, force: [F, 0]}");
+  }
+  if (g.chance(0.4)) {
+    // pushed at a point of the rim, which turns with the wheel
+    d.param("F_H", g.nice(-10, 10), "N");
+    d.points.push_back("H: {on: W, offset: [0, r]}");
+    d.connections.push_back("{type: force, on: W, at: H, force: [F_H, 0]}");
+  }
+  if (g.chance(0.4)) {
+    d.param("M_0", g.nice(-5, 5), "N*m");
+    d.connections.push_back("{type: couple, on: W, moment: M_0}");
+  }
+  if (g.chance(0.4)) {
+    d.param("d_Q", 2, "m");
+    d.points.push_back(R"~(Q: ["-d_Q*cos(theta) + r*sin(theta)", "d_Q*sin(theta) + r*cos(theta)"])~");
+    d.param("k", g.nice(5, 50), "N/m");
+    d.param("l_0", g.nice(1, 2), "m");
+    d.connections.push_back("{type: spring, path: [Q, W], k: k, rest_length: l_0}");
+  }
+  const double s0 = g.nice(0.5, 1.5);
+  d.layout.push_back(fmt::format("s: {}", num(s0)));
+  d.layout.push_back("phi: 0");
+  motion_for(d, g, {{"s", s0}});
+  return d.text();
+}
+
+std::string pivot_2d(Gen& g) {
+  Doc d;
+  d.title = "Generated: a body pinned at a fixed point, its center written in its angle";
+  d.axes = "[x, y]";
+  d.param("g", 9.81, "m/s^2");
+  d.param("m", g.nice(1, 6), "kg");
+  d.param("e", g.nice(0.25, 1.5), "m");  // the center's distance from the pin
+  d.gravity = "[0, -g]";
+  // from the horizontal (x axis) or from the downward vertical; the body's frame at 0 has the
+  // center along u0 from the pin
+  const bool hanging = g.chance(0.5);
+  const std::string cm = hanging ? R"~(["e*sin(theta)", "-e*cos(theta)"])~" : R"~(["e*cos(theta)", "e*sin(theta)"])~";
+  std::string inertia;
+  switch (g.integer(0, 3)) {
+    case 0: d.param("L", g.nice(0.5, 3), "m"); inertia = "shape: {rod: L}"; break;
+    case 1: d.param("a", g.nice(0.25, 1), "m"); d.param("b", g.nice(0.25, 1), "m"); inertia = "shape: {box: [a, b]}"; break;
+    default: inertia = inertia_of(d, g, "B", "e", true);
+  }
+  d.bodies.push_back("B: {mass: m, angle: theta, center_of_mass: " + cm + ", " + inertia + "}");
+  d.points.push_back("O: [0, 0]");
+  d.connections.push_back("{type: pin, body: B, at: O}");
+  if (g.chance(0.6)) {
+    // a point of the body beyond its center, which turns with it
+    d.param("f", g.nice(0.25, 1), "m");
+    d.points.push_back(hanging ? R"~(K: {on: B, offset: [0, "-f"]})~" : "K: {on: B, offset: [f, 0]}");
+    const int what = g.integer(0, 2);
+    if (what == 0 || what == 2) {
+      d.param("x_W", g.nice(-2, 2), "m");
+      d.param("y_W", g.nice(1, 3), "m");
+      d.points.push_back("W: [x_W, y_W]");
+      d.param("k", g.nice(5, 50), "N/m");
+      d.param("l_0", g.nice(0.5, 1.5), "m");
+      d.connections.push_back("{type: spring, path: [W, K], k: k, rest_length: l_0}");
+      // (no damper here: tackle fails on a damper from a fixed point to a point that turns,
+      // `internal error: rem: arguments must be polynomials over the rationals`; see
+      // docs/crosscheck.md)
+    }
+    if (what >= 1) {
+      d.param("F_x", g.nice(-10, 10), "N");
+      d.param("F_y", g.nice(-10, 10), "N");
+      d.connections.push_back("{type: force, on: B, at: K, force: [F_x, F_y]}");
+    }
+  }
+  if (g.chance(0.3)) {
+    d.param("M_0", g.nice(-5, 5), "N*m");
+    d.connections.push_back("{type: couple, on: B, moment: M_0}");
+  }
+  const double th = g.nice(-1, 1);
+  d.layout.push_back(fmt::format("theta: {}", num(th)));
+  motion_for(d, g, {{"theta", th}});
+  return d.text();
+}
+
 }  // namespace
 
 std::string generate(std::uint64_t seed, std::string* kind) {
@@ -813,7 +982,7 @@ std::string generate(std::uint64_t seed, std::string* kind) {
       {"incline-2d", incline_2d}, {"turning-2d", turning_2d}, {"joints-2d", joints_2d}, {"hoist-3d", hoist_3d},
       {"ring-2d", ring_2d},       {"slope-2d", slope_2d},     {"lengths-1d", lengths_1d}, {"carts-3d", carts_3d},
       {"welds-2d", welds_2d},     {"pulley-block-2d", pulley_block_2d}, {"incline-3d", incline_3d},
-      {"pulley-block-3d", pulley_block_3d}};
+      {"pulley-block-3d", pulley_block_3d}, {"drum-2d", drum_2d}, {"wheel-2d", wheel_2d}, {"pivot-2d", pivot_2d}};
   const auto& f = families[seed % (sizeof(families) / sizeof(families[0]))];
   if (kind) *kind = f.first;
   return f.second(g);

@@ -1,8 +1,10 @@
 // tackle_crosscheck: the independent numeric model against tackle's closed forms.
-//   tackle_crosscheck examples DIR              every DIR/*.yaml (skipped ones with the reason)
-//   tackle_crosscheck generated N [SEED] [--motion-every K] [--quiet] [--perturb-masses X]
-//                                               N random mechanisms from SEED (X: the model's
-//                                               masses times 1 + X, which must disagree)
+//   tackle_crosscheck examples DIR [PERTURB]    every DIR/*.yaml (skipped ones with the reason)
+//   tackle_crosscheck generated N [SEED] [--motion-every K] [--quiet] [PERTURB]
+//                                               N random mechanisms from SEED
+//   PERTURB (a deliberately wrong model, which must disagree): --perturb-masses X (the
+//   model's masses times 1 + X), --perturb-inertia X (its moments of inertia times 1 + X),
+//   --perturb-winding (its strings wound on drums wind the other way)
 //   tackle_crosscheck files FILE...             description files (the regressions); a file
 //                                               named expected-disagreement-* must disagree
 //   tackle_crosscheck print SEED                the mechanism SEED generates, as YAML
@@ -38,8 +40,19 @@ void print_disagreements(const crosscheck::Outcome& o, std::size_t limit = 4) {
 }
 
 int usage() {
-  std::cerr << "usage: tackle_crosscheck examples DIR | generated N [SEED] [--motion-every K] [--quiet] [--perturb-masses X] | files FILE... | print SEED\n";
+  std::cerr << "usage: tackle_crosscheck examples DIR [PERTURB] | generated N [SEED] [--motion-every K] [--quiet] [PERTURB] | files FILE... | print SEED\n"
+               "  PERTURB: --perturb-masses X | --perturb-inertia X | --perturb-winding\n";
   return 2;
+}
+
+// Reads a perturbation option at argv[i] (advancing i past its value); false when it is none.
+bool perturbation(int argc, char** argv, int& i, crosscheck::Options& o) {
+  const std::string a = argv[i];
+  if (a == "--perturb-masses" && i + 1 < argc) o.perturb = std::stod(argv[++i]);
+  else if (a == "--perturb-inertia" && i + 1 < argc) o.perturb_inertia = std::stod(argv[++i]);
+  else if (a == "--perturb-winding") o.perturb_winding = true;
+  else return false;
+  return true;
 }
 
 }  // namespace
@@ -55,14 +68,17 @@ int main(int argc, char** argv) {
     std::cout << crosscheck::generate(std::stoull(argv[2]));
     return 0;
   }
-  if (mode == "examples" && argc == 3) {
+  if (mode == "examples" && argc >= 3) {
+    crosscheck::Options base;
+    for (int i = 3; i < argc; ++i)
+      if (!perturbation(argc, argv, i, base)) return usage();
     std::vector<std::filesystem::path> files;
     for (const auto& e : std::filesystem::directory_iterator(argv[2]))
       if (e.path().extension() == ".yaml") files.push_back(e.path());
     std::sort(files.begin(), files.end());
     int agree = 0, skipped = 0, refused = 0, disagree = 0, compared = 0;
     for (const auto& f : files) {
-      crosscheck::Options o;
+      crosscheck::Options o = base;
       o.states = 6;
       const auto out = crosscheck::compare(read(f), f.filename().string(), rules, o);
       const std::string name = f.filename().string();
@@ -99,11 +115,11 @@ int main(int argc, char** argv) {
     std::uint64_t seed = 1;
     int motion_every = 1;
     bool quiet = false;
-    double perturb = 0;
+    crosscheck::Options base;
     for (int i = 3; i < argc; ++i) {
       const std::string a = argv[i];
       if (a == "--motion-every" && i + 1 < argc) motion_every = std::stoi(argv[++i]);
-      else if (a == "--perturb-masses" && i + 1 < argc) perturb = std::stod(argv[++i]);
+      else if (perturbation(argc, argv, i, base)) continue;
       else if (a == "--quiet") quiet = true;
       else seed = std::stoull(a);
     }
@@ -114,10 +130,9 @@ int main(int argc, char** argv) {
       std::string kind;
       std::string text = crosscheck::generate(s, &kind);
       ++kinds[kind];
-      crosscheck::Options o;
+      crosscheck::Options o = base;
       o.seed = s;
       o.states = 3;
-      o.perturb = perturb;
       o.motion = motion_every > 0 && i % motion_every == 0;
       // (without the motion compared, its section goes: tackle's motion stage is not needed)
       if (!o.motion && text.find("\nmotion:\n") != std::string::npos) text.erase(text.find("\nmotion:\n") + 1);

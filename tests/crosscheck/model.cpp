@@ -34,20 +34,28 @@ std::optional<std::string> opt_text(const tackle::ConnectionDesc& c, const std::
 
 D2 seed(double x, double first, double second_dir) { return D2(D1(x, first), D1(second_dir, 0.0)); }
 
+// A vector of the plane turned by `a` (counterclockwise); other dimensions unchanged.
+Eigen::VectorXd rotated(const Eigen::VectorXd& v, double a) {
+  if (v.size() != 2 || a == 0) return v;
+  Eigen::VectorXd r(2);
+  r << std::cos(a) * v(0) - std::sin(a) * v(1), std::sin(a) * v(0) + std::cos(a) * v(1);
+  return r;
+}
+
 Eigen::MatrixXd pinv_solve_matrix(const Eigen::MatrixXd& A) {
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(A);
   cod.setThreshold(1e-12);
   return cod.pseudoInverse();
 }
 
-int rank_of(const Eigen::MatrixXd& A) {
+int rank_of(const Eigen::MatrixXd& A, double tolerance = 1e-9) {
   if (A.rows() == 0) return 0;
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(A);
   const auto& s = svd.singularValues();
   if (s.size() == 0 || s(0) == 0) return 0;
   int r = 0;
   for (int i = 0; i < s.size(); ++i)
-    if (s(i) > 1e-9 * s(0)) ++r;
+    if (s(i) > tolerance * s(0)) ++r;
   return r;
 }
 
@@ -76,13 +84,13 @@ double Model::number(const tackle::Text& t) const {
   return e.eval(vars);
 }
 
-Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb) {
+Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbation& perturb) {
   if (!d.phases.empty()) throw Unsupported("phases (each phase is a problem of its own)");
   if (d.impact) throw Unsupported("an impact (momentum balance over an instant, no forces)");
   if (d.interval) throw Unsupported("an interval of constant acceleration (averaged forces)");
-  for (const auto& b : d.bodies)
-    if (b.angle) throw Unsupported("a body that turns (body '" + b.name.text + "' has an 'angle')");
   dims_ = d.axes.empty() ? 1 : static_cast<int>(d.axes.size());
+  for (const auto& b : d.bodies)
+    if (b.angle && dims_ != 2) throw Unsupported("a body that turns outside the plane (body '" + b.name.text + "')");
   const int n = dims_;
 
   // Parameters, in SI: values times their unit's factor; defined ones from their expression;
@@ -104,10 +112,12 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
   }
   first_coord_slot_ = static_cast<int>(slot_names_.size());
   for (const auto& b : d.bodies) {
-    if (!b.position) continue;
-    for (const std::string& s : {b.position->text, "dot(" + b.position->text + ")"}) {
-      slots_[s] = static_cast<int>(slot_names_.size());
-      slot_names_.push_back(s);
+    for (const auto* c : {&b.position, &b.angle}) {
+      if (!*c) continue;
+      for (const std::string& s : {(*c)->text, "dot(" + (*c)->text + ")"}) {
+        slots_[s] = static_cast<int>(slot_names_.size());
+        slot_names_.push_back(s);
+      }
     }
   }
   if (!slots_.count("t")) {
@@ -154,9 +164,37 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
     b.name = bd.name.text;
     if (!bd.mass && !kinematic_)
       throw Unsupported("body '" + b.name + "' has no mass (kinematics only: no balance is written for it) beside bodies that have one");
-    b.mass = bd.mass ? number(*bd.mass) * (1 + perturb) : 0.0;
+    b.mass = bd.mass ? number(*bd.mass) * (1 + perturb.masses) : 0.0;
     b.massive = b.mass != 0;
     if (b.mass < 0) throw Unsupported("a negative mass");
+    if (bd.angle) {
+      // A turning body: its rotation is tackle's angle; its inertia about the center given or
+      // from its shape and (the model's) mass.
+      b.angle = bd.angle->text;
+      if (!base_coord_.count(b.angle)) base_coord_[b.angle] = 0.0;
+      b.angle0 = base_coord_[b.angle];
+      if (bd.acceleration || bd.accel_along) throw Unsupported("a turning body with a given acceleration");
+      if (bd.inertia) {
+        b.inertia = number(*bd.inertia);
+      } else if (bd.shape_kind) {
+        const std::string k = bd.shape_kind->text;
+        std::vector<double> size;
+        if (bd.shape_size)
+          for (const auto& t : bd.shape_size->items) size.push_back(number(t));
+        auto need_size = [&](std::size_t c) {
+          if (size.size() != c) throw Unsupported("shape '" + k + "' with " + std::to_string(size.size()) + " sizes");
+        };
+        if (k == "disk") { need_size(1); b.inertia = b.mass * size[0] * size[0] / 2; }
+        else if (k == "ring") { need_size(1); b.inertia = b.mass * size[0] * size[0]; }
+        else if (k == "rod") { need_size(1); b.inertia = b.mass * size[0] * size[0] / 12; }
+        else if (k == "sphere") { need_size(1); b.inertia = 2 * b.mass * size[0] * size[0] / 5; }
+        else if (k == "box") { need_size(2); b.inertia = b.mass * (size[0] * size[0] + size[1] * size[1]) / 12; }
+        else if (k == "point") b.inertia = 0;
+        else throw Unsupported("shape '" + k + "'");
+      }
+      b.inertia *= 1 + perturb.inertia;
+      if (b.inertia < 0) throw Unsupported("a negative moment of inertia");
+    }
     if (n == 1) {
       b.kind = Body::line;
       b.coord = bd.position->text;
@@ -188,8 +226,20 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
       if (!bd.center_of_mass) throw Unsupported("body '" + b.name + "' has no center of mass");
       std::vector<Expr> cm;
       for (const auto& it : bd.center_of_mass->items) cm.push_back(compile(it));
+      if (static_cast<int>(cm.size()) != n) throw Unsupported("a center of mass of the wrong size");
       b.cm0 = eval_vec(cm, base_vars());
-      if (bd.acceleration) {
+      if (bd.angle) {
+        // its center where tackle writes it, in its angle (and other coordinates): a guide
+        // holds it there, and its force must come out 0
+        b.kind = Body::turning;
+        for (const auto& e : cm) {
+          for (int s = first_coord_slot_; s < t_slot; ++s)
+            if (e.uses(s) && slot_names_[static_cast<std::size_t>(s)].rfind("dot(", 0) == 0)
+              throw Unsupported("the center of mass of '" + b.name + "' depends on a rate");
+          if (e.uses(t_slot)) uses_time_ = true;
+        }
+        b.cm_expr = cm;
+      } else if (bd.acceleration) {
         b.kind = Body::driven;
         std::vector<Expr> acc;
         for (const auto& it : bd.acceleration->items) {
@@ -221,7 +271,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
   int next = 0;
   for (auto& b : bodies_) { b.q0 = next; next += n; }
   for (auto& b : bodies_) {
-    if (b.massive && n > 1) {
+    if ((b.massive || !b.angle.empty()) && n > 1) {
       b.nr = n == 2 ? 1 : 3;
       b.r0 = next;
       next += b.nr;
@@ -244,6 +294,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
       auto it = body_index.find(pd.on->text);
       if (it == body_index.end()) throw Unsupported("point on an unknown body");
       p.body = it->second;
+      p.turns = pd.turns;
       p.offset = Eigen::VectorXd::Zero(n);
       if (pd.offset) {
         std::vector<Expr> off;
@@ -301,7 +352,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
     // The ground point where a material point of `body` is at the layout (moving with the
     // body's frame when its acceleration is given).
     PointRef g;
-    const Eigen::VectorXd p0 = bodies_[static_cast<std::size_t>(body)].cm0 + material_point.offset;
+    const Eigen::VectorXd p0 = layout_position(material_point);
     for (int i = 0; i < n; ++i) g.ground.push_back(Expr::constant(p0(i)));
     g.frame_accel = bodies_[static_cast<std::size_t>(body)].frame_accel;
     return g;
@@ -358,6 +409,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
       if (c.arg("path")) {
         s.kind = Constraint::path;
         s.points = path_of(c, "path");
+        s.winds = windings(s.points, perturb.winding ? -1.0 : 1.0);
       } else {
         s.kind = Constraint::length_expr;
         s.length = compile(need(c, "length").items[0]);
@@ -370,6 +422,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
       Element e;
       e.kind = Element::spring;
       e.points = path_of(c, "path");
+      e.winds = windings(e.points, perturb.winding ? -1.0 : 1.0);
       e.k = number(need(c, "k").items[0]);
       if (c.arg("rest_length")) {
         e.rest = number(need(c, "rest_length").items[0]);
@@ -382,6 +435,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
       Element e;
       e.kind = Element::damper;
       e.points = path_of(c, "path");
+      e.winds = windings(e.points, perturb.winding ? -1.0 : 1.0);
       e.c = number(need(c, "c").items[0]);
       elements_.push_back(e);
     } else if (type == "contact" || type == "link") {
@@ -410,6 +464,30 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
       const std::string at = need_text(c, "at");
       add_project("N_" + at, material(at, b), b, unit_vec(c, "normal"));
       add_project("F_" + at, material(at, b), b, unit_vec(c, "rolling"));
+    } else if (type == "rolling") {
+      // no slip: the body's material point at the contact C has no velocity along the
+      // tangent, v_cm . t + omega (z x (C - cm)) . t = 0, and the center keeps its distance
+      // along the normal (the same with n); N_C along n and F_C along t act on the body at C
+      const int b = body_of(c, "body");
+      const Body& bb = bodies_[static_cast<std::size_t>(b)];
+      if (bb.r0 < 0 || n != 2) throw Unsupported("rolling of a body that cannot turn");
+      const std::string at = need_text(c, "at");
+      const Eigen::VectorXd arm = layout_position(point(at, b)) - bb.cm0;  // C - cm, the ground's directions
+      PointRef contact;  // the geometric contact point, the center's plus C - cm
+      contact.body = b;
+      contact.offset = arm;
+      contact.turns = false;
+      const std::pair<std::string, std::string> rows[] = {{"N_" + at, "normal"}, {"F_" + at, "tangent"}};
+      for (const auto& [name, key] : rows) {
+        Constraint k;
+        k.kind = Constraint::roll;
+        k.name = name;
+        k.body = b;
+        k.points = {contact};
+        k.dir = unit_vec(c, key);
+        k.arm = -arm(1) * k.dir(0) + arm(0) * k.dir(1);
+        cons_.push_back(k);
+      }
     } else if (type == "sticking") {
       const int b = body_of(c, "body");
       const std::string at = need_text(c, "at");
@@ -482,7 +560,17 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     const Body& b = bodies_[i];
     std::vector<Eigen::VectorXd> across;
-    if (b.kind == Body::line || b.kind == Body::along) {
+    if (b.kind == Body::turning) {
+      for (int k = 0; k < n; ++k) {
+        Constraint c;
+        c.kind = Constraint::guide_curve;
+        c.guide = true;
+        c.name = "guide on " + b.name + " to its center as written (" + xyz[k] + ")";
+        c.body = static_cast<int>(i);
+        c.dir = Eigen::VectorXd::Unit(n, k);
+        cons_.push_back(c);
+      }
+    } else if (b.kind == Body::line || b.kind == Body::along) {
       Eigen::MatrixXd basis = Eigen::MatrixXd::Identity(n, n);
       const Eigen::VectorXd u = b.b.normalized();
       for (int k = 0; k < n; ++k) {
@@ -502,7 +590,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
       c.dir = across[k];
       cons_.push_back(c);
     }
-    for (int k = 0; k < b.nr; ++k) {
+    for (int k = 0; k < (b.angle.empty() ? b.nr : 0); ++k) {
       Constraint c;
       c.kind = Constraint::rotation;
       c.guide = true;
@@ -518,7 +606,10 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
   State s0;
   s0.q = Eigen::VectorXd::Zero(ndof_);
   s0.v = Eigen::VectorXd::Zero(ndof_);
-  for (const auto& b : bodies_) s0.q.segment(b.q0, n) = b.cm0;
+  for (const auto& b : bodies_) {
+    s0.q.segment(b.q0, n) = b.cm0;
+    if (b.r0 >= 0) s0.q(b.r0) = b.angle0;
+  }
   std::vector<D2> q(static_cast<std::size_t>(ndof_));
   for (int i = 0; i < ndof_; ++i) q[static_cast<std::size_t>(i)] = D2(s0.q(i));
   for (auto& c : cons_) {
@@ -529,6 +620,53 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, double perturb)
       c.constant = value(c, q, D2(0.0)).a.a;
     }
   }
+
+  // Every coordinate of tackle's at 0 (a spring's origin length): lines at their `a`, angles
+  // 0, turning bodies' centers where they are written then.
+  origin_q_ = Eigen::VectorXd::Zero(ndof_);
+  {
+    std::vector<double> vars(slot_names_.size(), 0.0);
+    for (const auto& [nm, v] : params_) vars[static_cast<std::size_t>(slot(nm))] = v;
+    for (const auto& b : bodies_) {
+      const Eigen::VectorXd c = b.kind == Body::line ? b.a : b.kind == Body::turning ? eval_vec(b.cm_expr, vars) : b.cm0;
+      origin_q_.segment(b.q0, n) = c;
+    }
+  }
+}
+
+Eigen::VectorXd Model::layout_position(const PointRef& p) const {
+  const int n = dims_;
+  Eigen::VectorXd p0(n);
+  if (p.body >= 0) {
+    const Body& b = bodies_[static_cast<std::size_t>(p.body)];
+    p0 = b.cm0 + (p.turns ? rotated(p.offset, b.angle0) : p.offset);
+  } else {
+    std::vector<double> vars(slot_names_.size(), 0.0);
+    for (const auto& [nm, v] : params_) vars[static_cast<std::size_t>(slot(nm))] = v;
+    for (const auto& [nm, v] : base_coord_)
+      if (slot(nm) >= 0) vars[static_cast<std::size_t>(slot(nm))] = v;
+    for (int i = 0; i < n; ++i) p0(i) = p.ground[static_cast<std::size_t>(i)].eval(vars);
+  }
+  return p0;
+}
+
+std::vector<Model::Constraint::Winding> Model::windings(const std::vector<PointRef>& pts, double sign) const {
+  // A path's end at a point of a turning body that keeps the ground's directions is where
+  // the strand leaves the drum it is wound on.
+  std::vector<Constraint::Winding> out;
+  auto wound = [&](const PointRef& p) { return p.body >= 0 && !p.turns && !bodies_[static_cast<std::size_t>(p.body)].angle.empty(); };
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    if (!wound(pts[k])) continue;
+    if (pts.size() < 2 || (k != 0 && k + 1 != pts.size()))
+      throw Unsupported("a strand over a turning body in the middle of its path");
+    Constraint::Winding w;
+    w.end = k;
+    w.next = k == 0 ? 1 : k - 1;
+    w.body = pts[k].body;
+    w.sign = sign;
+    out.push_back(w);
+  }
+  return out;
 }
 
 Model::PointRef Model::point(const std::string& name, int) const {
@@ -539,22 +677,14 @@ Model::PointRef Model::point(const std::string& name, int) const {
 
 Model::PointRef Model::material(const std::string& name, int body) const {
   // The material point of `body` at the point's place at the layout.
+  // (in the body's frame: its offset at the layout turned back by the body's angle there)
   PointRef p = point(name, body);
   if (p.body == body) return p;
-  const int n = dims_;
-  Eigen::VectorXd p0(n);
-  if (p.body >= 0) {
-    p0 = bodies_[static_cast<std::size_t>(p.body)].cm0 + p.offset;
-  } else {
-    std::vector<double> vars(slot_names_.size(), 0.0);
-    for (const auto& [nm, v] : params_) vars[static_cast<std::size_t>(slot(nm))] = v;
-    for (const auto& [nm, v] : base_coord_)
-      if (slot(nm) >= 0) vars[static_cast<std::size_t>(slot(nm))] = v;
-    for (int i = 0; i < n; ++i) p0(i) = p.ground[static_cast<std::size_t>(i)].eval(vars);
-  }
+  const Eigen::VectorXd p0 = layout_position(p);
+  const Body& b = bodies_[static_cast<std::size_t>(body)];
   PointRef m;
   m.body = body;
-  m.offset = p0 - bodies_[static_cast<std::size_t>(body)].cm0;
+  m.offset = rotated(p0 - b.cm0, -b.angle0);
   return m;
 }
 
@@ -574,6 +704,11 @@ std::vector<S> Model::variables(const std::vector<S>& q, const Eigen::VectorXd& 
     vars[static_cast<std::size_t>(slot(b.coord))] = s;
     vars[static_cast<std::size_t>(slot("dot(" + b.coord + ")"))] = S(rate);
   }
+  for (const auto& b : bodies_) {
+    if (b.angle.empty()) continue;
+    vars[static_cast<std::size_t>(slot(b.angle))] = q[static_cast<std::size_t>(b.r0)];
+    vars[static_cast<std::size_t>(slot("dot(" + b.angle + ")"))] = S(v.size() > 0 ? v(b.r0) : 0.0);
+  }
   vars[static_cast<std::size_t>(slot("t"))] = t;
   return vars;
 }
@@ -585,14 +720,18 @@ std::vector<S> Model::position(const PointRef& p, const std::vector<S>& q, const
   if (p.body >= 0) {
     const Body& b = bodies_[static_cast<std::size_t>(p.body)];
     for (int i = 0; i < n; ++i) r[static_cast<std::size_t>(i)] = q[static_cast<std::size_t>(b.q0 + i)] + S(p.offset(i));
-    if (b.r0 >= 0) {
-      // Small rotations about the center (exact at rotation 0 with no angular velocity, the
-      // only states tackle describes): r += phi x offset.
+    if (b.r0 >= 0 && p.turns) {
       if (n == 2) {
+        // center + Rot(rotation) offset
+        using std::sin;
+        using std::cos;
         const S th = q[static_cast<std::size_t>(b.r0)];
-        r[0] = r[0] - th * S(p.offset(1));
-        r[1] = r[1] + th * S(p.offset(0));
+        const S c = cos(th), sn = sin(th);
+        r[0] = q[static_cast<std::size_t>(b.q0)] + c * S(p.offset(0)) - sn * S(p.offset(1));
+        r[1] = q[static_cast<std::size_t>(b.q0 + 1)] + sn * S(p.offset(0)) + c * S(p.offset(1));
       } else {
+        // Small rotations about the center (exact at rotation 0 with no angular velocity, the
+        // only states tackle describes in 3-D): r += phi x offset.
         const S a = q[static_cast<std::size_t>(b.r0)], bq = q[static_cast<std::size_t>(b.r0 + 1)],
                 c = q[static_cast<std::size_t>(b.r0 + 2)];
         r[0] = r[0] + bq * S(p.offset(2)) - c * S(p.offset(1));
@@ -631,9 +770,61 @@ S Model::path_length(const std::vector<PointRef>& pts, const std::vector<S>& q, 
 }
 
 template <class S>
+S Model::winding_arm(const Constraint::Winding& w, const std::vector<PointRef>& pts, const std::vector<S>& q, const S& t) const {
+  // s = d . (z x offset): d the unit vector from the neighbouring point into the end, offset
+  // the end's (the ground's directions) from the drum's center. The string's material point
+  // at the rim moves with the rim, v_cm + omega z x offset, the end itself with v_cm: the
+  // string runs onto the drum at omega s, and the free length plus what is wound is constant.
+  using std::sqrt;
+  const auto vars = variables(q, Eigen::VectorXd(), t);
+  const auto a = position(pts[w.end], q, vars, t), b = position(pts[w.next], q, vars, t);
+  const S dx = a[0] - b[0], dy = a[1] - b[1];
+  const S len = sqrt(dx * dx + dy * dy);
+  const Eigen::VectorXd& o = pts[w.end].offset;
+  return S(w.sign) * (dx * S(-o(1)) + dy * S(o(0))) / len;
+}
+
+Model::Derivs Model::length_derivs(const std::vector<PointRef>& pts, const std::vector<Constraint::Winding>& winds,
+                                   const State& s) const {
+  Derivs d = derivs([&](const std::vector<D2>& q, const D2& t) { return path_length(pts, q, t); }, s);
+  for (const auto& w : winds) {
+    // the wound length's rate is s omega (s from the strand's direction now): in J, s at
+    // the rotation; in gamma, ds/dt omega
+    const int r = bodies_[static_cast<std::size_t>(w.body)].r0;
+    const Derivs a = derivs([&](const std::vector<D2>& q, const D2& t) { return winding_arm(w, pts, q, t); }, s);
+    d.value += a.value * s.q(r);
+    d.grad(r) += a.value;
+    d.dd += (a.grad.dot(s.v) + a.dt) * s.v(r);
+  }
+  return d;
+}
+
+Model::Derivs Model::cons_derivs(const Constraint& c, const State& s) const {
+  if (c.kind == Constraint::path && !c.winds.empty()) return length_derivs(c.points, c.winds, s);
+  return derivs([&](const std::vector<D2>& q, const D2& t) { return value(c, q, t); }, s);
+}
+
+template <class S>
 S Model::value(const Constraint& c, const std::vector<S>& q, const S& t) const {
   switch (c.kind) {
-    case Constraint::path: return path_length(c.points, q, t);
+    case Constraint::path: {
+      S out = path_length(c.points, q, t);
+      for (const auto& w : c.winds)
+        out = out + winding_arm(w, c.points, q, t) * q[static_cast<std::size_t>(bodies_[static_cast<std::size_t>(w.body)].r0)];
+      return out;
+    }
+    case Constraint::roll: {
+      const Body& b = bodies_[static_cast<std::size_t>(c.body)];
+      S out = S(c.arm) * q[static_cast<std::size_t>(b.r0)];
+      for (int i = 0; i < dims_; ++i) out = out + q[static_cast<std::size_t>(b.q0 + i)] * S(c.dir(i));
+      return out;
+    }
+    case Constraint::guide_curve: {
+      const Body& b = bodies_[static_cast<std::size_t>(c.body)];
+      const int i = c.dir(0) != 0 ? 0 : 1;
+      const auto vars = variables(q, Eigen::VectorXd(), t);
+      return q[static_cast<std::size_t>(b.q0 + i)] - b.cm_expr[static_cast<std::size_t>(i)].eval(vars);
+    }
     case Constraint::length_expr: return c.length.eval(variables(q, Eigen::VectorXd(), t));
     case Constraint::project:
     case Constraint::relative: {
@@ -650,9 +841,11 @@ S Model::value(const Constraint& c, const std::vector<S>& q, const S& t) const {
       std::vector<S> n(static_cast<std::size_t>(dims_));
       for (int i = 0; i < dims_; ++i) n[static_cast<std::size_t>(i)] = S(c.dir(i));
       if (o.r0 >= 0 && dims_ == 2) {
-        const S th = q[static_cast<std::size_t>(o.r0)];
-        n[0] = S(c.dir(0)) - th * S(c.dir(1));
-        n[1] = S(c.dir(1)) + th * S(c.dir(0));
+        using std::sin;
+        using std::cos;
+        const S th = q[static_cast<std::size_t>(o.r0)] - S(o.angle0);
+        n[0] = cos(th) * S(c.dir(0)) - sin(th) * S(c.dir(1));
+        n[1] = sin(th) * S(c.dir(0)) + cos(th) * S(c.dir(1));
       }
       S out(0.0);
       for (int i = 0; i < dims_; ++i)
@@ -706,13 +899,14 @@ Model::Derivs Model::derivs(const F& f, const State& s) const {
   return d;
 }
 
-Eigen::VectorXd Model::generalized(const PointRef& p, const Eigen::VectorXd& force) const {
+Eigen::VectorXd Model::generalized(const PointRef& p, const Eigen::VectorXd& force, const State& s) const {
+  // a force on the body's material point at p: on its center, and its moment about it
   Eigen::VectorXd g = Eigen::VectorXd::Zero(ndof_);
   if (p.body < 0) return g;
   const Body& b = bodies_[static_cast<std::size_t>(p.body)];
   g.segment(b.q0, dims_) = force;
   if (b.r0 >= 0) {
-    const Eigen::VectorXd& o = p.offset;
+    const Eigen::VectorXd o = dims_ == 2 && p.turns ? rotated(p.offset, s.q(b.r0)) : p.offset;
     if (dims_ == 2) {
       g(b.r0) = o(0) * force(1) - o(1) * force(0);
     } else {
@@ -724,7 +918,7 @@ Eigen::VectorXd Model::generalized(const PointRef& p, const Eigen::VectorXd& for
   return g;
 }
 
-Model::Kkt Model::system(const State& s) const {
+Model::Kkt Model::system(const State& s, const std::vector<int>* only) const {
   const int n = ndof_;
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
   Eigen::VectorXd mass = Eigen::VectorXd::Zero(n);
@@ -733,7 +927,7 @@ Model::Kkt Model::system(const State& s) const {
       mass(b.q0 + i) = b.mass;
       f(b.q0 + i) += b.mass * gravity_(i);
     }
-    for (int k = 0; k < b.nr; ++k) mass(b.r0 + k) = b.mass;  // any positive inertia: no body turns
+    for (int k = 0; k < b.nr; ++k) mass(b.r0 + k) = b.angle.empty() ? b.mass : b.inertia;  // (without an angle: any positive inertia, held at 0)
   }
   std::vector<double> vars(slot_names_.size());
   {
@@ -743,26 +937,23 @@ Model::Kkt Model::system(const State& s) const {
   for (const auto& l : loads_) {
     Eigen::VectorXd F(dims_);
     for (int i = 0; i < dims_; ++i) F(i) = l.force[static_cast<std::size_t>(i)].eval(vars);
-    f += generalized(l.at, F);
+    f += generalized(l.at, F, s);
     if (!l.couple.empty()) {
       const Body& b = bodies_[static_cast<std::size_t>(l.body)];
       for (int k = 0; k < b.nr; ++k) f(b.r0 + k) += l.couple[static_cast<std::size_t>(b.nr == 1 ? 0 : k)].eval(vars);
     }
   }
   for (const auto& e : elements_) {
-    const auto L = derivs([&](const std::vector<D2>& q, const D2& t) { return path_length(e.points, q, t); }, s);
+    const auto L = length_derivs(e.points, e.winds, s);
     double tension = 0;
     if (e.kind == Element::damper) {
       tension = e.c * (L.grad.dot(s.v) + L.dt);
     } else {
       double rest = e.rest;
       if (e.stretch) {
-        // origin length: every coordinate of tackle's at 0
+        // origin length: every coordinate of tackle's at 0 (angles too: nothing wound)
         std::vector<D2> q0(static_cast<std::size_t>(ndof_), D2(0.0));
-        for (const auto& b : bodies_) {
-          const Eigen::VectorXd c = b.kind == Body::line ? b.a : b.cm0;
-          for (int i = 0; i < dims_; ++i) q0[static_cast<std::size_t>(b.q0 + i)] = D2(c(i));
-        }
+        for (int i = 0; i < ndof_; ++i) q0[static_cast<std::size_t>(i)] = D2(origin_q_(i));
         rest = path_length(e.points, q0, D2(s.t)).a.a - e.stretch_value;
       }
       tension = e.k * (L.value - rest);
@@ -777,12 +968,12 @@ Model::Kkt Model::system(const State& s) const {
   int rank = 0;
   for (std::size_t k = 0; k < cons_.size(); ++k) {
     const Constraint& c = cons_[k];
-    Derivs dv = derivs([&](const std::vector<D2>& q, const D2& t) { return value(c, q, t); }, s);
+    Derivs dv = cons_derivs(c, s);
     if (c.guide) {
       Eigen::MatrixXd J2(J.rows() + 1, n);
       J2 << J, dv.grad.transpose();
       const int r2 = rank_of(J2);
-      if (r2 == rank) continue;
+      if (only ? std::find(only->begin(), only->end(), static_cast<int>(k)) == only->end() : r2 == rank) continue;
       rank = r2;
       J = J2;
     } else {
@@ -805,7 +996,7 @@ Model::Kkt Model::system(const State& s) const {
     Eigen::VectorXd g = c.g_sign * rows[static_cast<std::size_t>(j)].grad;
     if (c.mu != 0) {
       // sliding: the contact's force is N (n - mu s) at its point
-      g += generalized(c.points[0], -c.mu * c.sliding);
+      g += generalized(c.points[0], -c.mu * c.sliding, s);
     }
     out.K.block(0, n + j, n, 1) = -g;
     out.K.block(n + j, 0, 1, n) = rows[static_cast<std::size_t>(j)].grad.transpose();
@@ -835,6 +1026,13 @@ Instant Model::solve_kinematics(const State& s) const {
       given[static_cast<std::size_t>(b.q0 + i)] = true;
     }
   }
+  for (const auto& b : bodies_) {
+    if (b.angle.empty()) continue;
+    auto it = given_accel_.find("ddot(" + b.angle + ")");
+    if (it == given_accel_.end()) continue;
+    rhs -= J.col(b.r0) * it->second;
+    J.col(b.r0).setZero();
+  }
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
   svd.setThreshold(1e-11);
   const Eigen::VectorXd x = svd.solve(rhs);
@@ -849,6 +1047,14 @@ Instant Model::solve_kinematics(const State& s) const {
     qn.value = b.b.dot(x.segment(b.q0, dims_)) / b.b.squaredNorm();
     for (int i = 0; i < dims_; ++i)
       qn.determined = qn.determined && (b.b(i) == 0 || nulls.cols() == 0 || nulls.row(b.q0 + i).norm() < 1e-7);
+    out.quantities.push_back(qn);
+  }
+  for (const auto& b : bodies_) {
+    if (b.angle.empty() || given_accel_.count("ddot(" + b.angle + ")")) continue;
+    Quantity qn;
+    qn.name = "ddot(" + b.angle + ")";
+    qn.value = x(b.r0);
+    qn.determined = nulls.cols() == 0 || nulls.row(b.r0).norm() < 1e-7;
     out.quantities.push_back(qn);
   }
   return out;
@@ -884,7 +1090,7 @@ Instant Model::solve(const State& s) const {
   for (const auto& b : bodies_) {
     for (int r = 0; r < b.nr; ++r) {
       Quantity qn;
-      qn.name = "guide: angular acceleration of " + b.name;
+      qn.name = b.angle.empty() ? "guide: angular acceleration of " + b.name : "ddot(" + b.angle + ")";
       qn.value = x(b.r0 + r);
       qn.determined = determined(b.r0 + r);
       out.quantities.push_back(qn);
@@ -904,7 +1110,18 @@ Instant Model::solve(const State& s) const {
 }
 
 std::optional<Eigen::VectorXd> Model::accelerations(const State& s) const {
-  const Kkt k = system(s);
+  // An integrator's intermediate states are off the constraints by a little; a guide that
+  // the rules make redundant on them (a pinned body's center as written in its angle) is
+  // not quite redundant there, and keeping it makes the system singular. The guides are
+  // chosen at the state projected onto the constraints.
+  std::vector<int> kept;
+  const bool curved = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.kind == Body::turning; });
+  if (curved) {
+    State p = s;
+    project(p, false);
+    kept = system(p).kept;
+  }
+  const Kkt k = system(s, curved ? &kept : nullptr);
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(k.K);
   cod.setThreshold(1e-11);
   if (cod.rank() < k.K.rows()) return std::nullopt;
@@ -919,7 +1136,7 @@ void Model::project(State& s, bool rates_only, const std::vector<bool>* frozen_q
     phit.resize(static_cast<Eigen::Index>(cons_.size()));
     for (std::size_t k = 0; k < cons_.size(); ++k) {
       const Constraint& c = cons_[k];
-      const Derivs dv = derivs([&](const std::vector<D2>& q, const D2& t) { return value(c, q, t); }, s);
+      const Derivs dv = cons_derivs(c, s);
       J.row(static_cast<Eigen::Index>(k)) = dv.grad.transpose();
       phi(static_cast<Eigen::Index>(k)) = dv.value - c.constant;
       phit(static_cast<Eigen::Index>(k)) = dv.dt;
@@ -962,7 +1179,7 @@ bool Model::settle_massless(State& s) const {
     // and the constraints themselves, positions and rates
     std::vector<double> extra;
     for (const auto& c : cons_) {
-      const Derivs dv = derivs([&](const std::vector<D2>& q, const D2& t) { return value(c, q, t); }, st);
+      const Derivs dv = cons_derivs(c, st);
       extra.push_back(dv.value - c.constant);
       extra.push_back(dv.grad.dot(st.v) + dv.dt);
     }
@@ -1001,9 +1218,30 @@ State Model::base_state() const {
       auto it = base_rate_.find("dot(" + b.coord + ")");
       if (it != base_rate_.end()) s.v.segment(b.q0, dims_) = b.b * it->second;
     }
+    if (!b.angle.empty()) {
+      s.q(b.r0) = b.angle0;
+      auto it = base_rate_.find("dot(" + b.angle + ")");
+      if (it != base_rate_.end()) s.v(b.r0) = it->second;
+    }
   }
+  place_turning(s);
   project(s, false);
   return s;
+}
+
+void Model::place_turning(State& s) const {
+  // each turning body's center (and its rate) where it is written in the coordinates
+  std::vector<D1> q(static_cast<std::size_t>(ndof_));
+  for (int i = 0; i < ndof_; ++i) q[static_cast<std::size_t>(i)] = D1(s.q(i), s.v(i));
+  const auto vars = variables(q, Eigen::VectorXd(), D1(s.t, 1.0));
+  for (const auto& b : bodies_) {
+    if (b.kind != Body::turning) continue;
+    for (int i = 0; i < dims_; ++i) {
+      const D1 c = b.cm_expr[static_cast<std::size_t>(i)].eval(vars);
+      s.q(b.q0 + i) = c.a;
+      s.v(b.q0 + i) = c.b;
+    }
+  }
 }
 
 std::optional<State> Model::random_state(std::mt19937_64& rng, double spread) const {
@@ -1014,12 +1252,18 @@ std::optional<State> Model::random_state(std::mt19937_64& rng, double spread) co
     s.q.segment(b.q0, dims_) += b.b * (spread * u(rng));
     s.v.segment(b.q0, dims_) = b.b * u(rng);
   }
+  for (const auto& b : bodies_) {
+    if (b.angle.empty()) continue;
+    s.q(b.r0) += spread * u(rng);
+    s.v(b.r0) = u(rng);
+  }
   if (uses_time_) s.t = 0.5 * (1 + u(rng));
+  place_turning(s);
   project(s, false);
   if (has_massless_ && !settle_massless(s)) return std::nullopt;
   // the state must keep every constraint
   for (const auto& c : cons_) {
-    const Derivs dv = derivs([&](const std::vector<D2>& q, const D2& t) { return value(c, q, t); }, s);
+    const Derivs dv = cons_derivs(c, s);
     if (std::abs(dv.value - c.constant) > 1e-9 * (1 + std::abs(c.constant))) return std::nullopt;
     if (std::abs(dv.grad.dot(s.v) + dv.dt) > 1e-9 * (1 + s.v.norm())) return std::nullopt;
   }
@@ -1037,6 +1281,14 @@ std::optional<State> Model::state_from(const std::map<std::string, double>& coor
     auto r = rates.find("dot(" + b.coord + ")");
     s.v.segment(b.q0, dims_) = b.b * (r != rates.end() ? r->second : 0.0);
   }
+  for (const auto& b : bodies_) {
+    if (b.angle.empty()) continue;
+    auto c = coords.find(b.angle);
+    if (c != coords.end()) s.q(b.r0) = c->second;
+    auto r = rates.find("dot(" + b.angle + ")");
+    s.v(b.r0) = r != rates.end() ? r->second : 0.0;
+  }
+  place_turning(s);
   // project moving only the bodies whose values were not given
   std::vector<bool> fq(static_cast<std::size_t>(ndof_), false), fv(static_cast<std::size_t>(ndof_), false);
   for (const auto& b : bodies_) {
@@ -1046,6 +1298,11 @@ std::optional<State> Model::state_from(const std::map<std::string, double>& coor
       if (coords.count(b.coord)) fq[static_cast<std::size_t>(b.q0 + i)] = b.b(i) != 0;
       if (rates.count("dot(" + b.coord + ")")) fv[static_cast<std::size_t>(b.q0 + i)] = b.b(i) != 0;
     }
+  }
+  for (const auto& b : bodies_) {
+    if (b.angle.empty()) continue;
+    if (coords.count(b.angle)) fq[static_cast<std::size_t>(b.r0)] = true;
+    if (rates.count("dot(" + b.angle + ")")) fv[static_cast<std::size_t>(b.r0)] = true;
   }
   project(s, false, &fq, &fv);
   for (const auto& b : bodies_) {
@@ -1059,6 +1316,14 @@ std::optional<State> Model::state_from(const std::map<std::string, double>& coor
       const double got = b.b.dot(s.v.segment(b.q0, dims_)) / bb;
       if (std::abs(got - rates.at("dot(" + b.coord + ")")) > 1e-9 * (1 + std::abs(got))) return std::nullopt;
     }
+  }
+  for (const auto& b : bodies_) {
+    if (b.angle.empty()) continue;
+    if (coords.count(b.angle) && std::abs(s.q(b.r0) - coords.at(b.angle)) > 1e-9 * (1 + std::abs(coords.at(b.angle))))
+      return std::nullopt;
+    if (rates.count("dot(" + b.angle + ")") &&
+        std::abs(s.v(b.r0) - rates.at("dot(" + b.angle + ")")) > 1e-9 * (1 + std::abs(s.v(b.r0))))
+      return std::nullopt;
   }
   if (has_massless_ && !settle_massless(s)) return std::nullopt;
   return s;
@@ -1097,6 +1362,8 @@ std::map<std::string, double> Model::coordinates_at(const State& s) const {
     if (b.kind != Body::line) continue;
     out[b.coord] = b.b.dot(s.q.segment(b.q0, dims_) - b.a) / b.b.squaredNorm();
   }
+  for (const auto& b : bodies_)
+    if (!b.angle.empty()) out[b.angle] = s.q(b.r0);
   return out;
 }
 
@@ -1107,6 +1374,11 @@ std::map<std::string, double> Model::values_at(const State& s) const {
     const double bb = b.b.squaredNorm();
     out[b.coord] = b.b.dot(s.q.segment(b.q0, dims_) - b.a) / bb;
     out["dot(" + b.coord + ")"] = b.b.dot(s.v.segment(b.q0, dims_)) / bb;
+  }
+  for (const auto& b : bodies_) {
+    if (b.angle.empty()) continue;
+    out[b.angle] = s.q(b.r0);
+    out["dot(" + b.angle + ")"] = s.v(b.r0);
   }
   out["t"] = s.t;
   for (const auto& [name, v] : given_accel_) out[name] = v;

@@ -1,7 +1,12 @@
 // The cross-check's numeric model of a description: every body's center free in the
-// problem's axes (and, for a body with mass in 2-D or 3-D, a rotation), every point's
-// position from the description's geometry, each connection a constraint on those
-// coordinates or a force law. At a state (q, dq/dt, t) it solves
+// problem's axes (and, for a body with mass in 2-D or 3-D or an `angle` in 2-D, a rotation),
+// every point's position from the description's geometry (center + Rot(rotation) offset, or
+// center + offset for a point that keeps the ground's directions), each connection a
+// constraint on those coordinates or a force law. A body with an `angle` (2-D) turns: its
+// rotation is that angle, its inertia about the center from `inertia`/`shape`, and the
+// model's own physics (pins as constraints on a material point, strings wound on drums,
+// rolling without slip) must reproduce the center tackle writes in the angle; a body without
+// one is held at rotation 0 by a guide couple, which must come out 0. At a state (q, dq/dt, t) it solves
 //   M q'' = f + G lambda,   J q'' = -gamma
 // (J the constraints' Jacobian, gamma their second time derivative at q'' = 0, both exact by
 // dual numbers; G the generalized directions of the constraint forces, J^T for ideal ones).
@@ -30,7 +35,7 @@ struct Unsupported : std::runtime_error {
 };
 
 /// One state of the mechanism: the coordinates and rates (translations of every body, then
-/// rotations, which stay 0: tackle's bodies translate), and the time.
+/// rotations: a turning body's is its angle, any other body's stays 0), and the time.
 struct State {
   Eigen::VectorXd q, v;
   double t = 0;
@@ -52,12 +57,19 @@ struct Instant {
   int rank_deficiency = 0;
 };
 
+/// A deliberately wrong model (the test that the comparison catches one).
+struct Perturbation {
+  double masses = 0;     // every mass times 1 + masses
+  double inertia = 0;    // every turning body's moment of inertia times 1 + inertia
+  bool winding = false;  // a string wound on a drum winds the other way
+};
+
 class Model {
  public:
   /// Builds the model from a description (throws Unsupported, with the reason, for what it
-  /// cannot express). `rng` draws values for parameters that have none. `perturb` scales
-  /// every mass by 1 + perturb (the test that the comparison catches a wrong model).
-  Model(const tackle::Description& d, std::mt19937_64& rng, double perturb = 0);
+  /// cannot express). `rng` draws values for parameters that have none. `perturb` makes the
+  /// model wrong on purpose (the test that the comparison catches a wrong model).
+  Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbation& perturb = {});
 
   [[nodiscard]] int dims() const { return dims_; }
   [[nodiscard]] int dofs() const { return ndof_; }
@@ -100,23 +112,29 @@ class Model {
     std::string name;
     double mass = 0;
     bool massive = false;
-    enum Kind { line, still, driven, along } kind = line;
+    enum Kind { line, still, driven, along, turning } kind = line;
     std::string coord;               // line: tackle's coordinate (position), along: the acceleration's name
     Eigen::VectorXd a, b;            // line: cm(s) = a + s b; along: b is the unit direction
     Eigen::VectorXd cm0;             // at the layout
     Eigen::VectorXd frame_accel;     // driven: the given acceleration (constant)
     int q0 = 0, r0 = -1, nr = 0;     // index of its translations; of its rotations (-1: none)
+    std::string angle;               // 2-D: tackle's angle coordinate, which is the rotation q[r0] ("" : none)
+    double angle0 = 0;               // the rotation at the layout
+    double inertia = 0;              // about the center (a body with an angle)
+    std::vector<Expr> cm_expr;       // turning: the center in tackle's coordinates (its angle, others')
   };
   struct PointRef {
     int body = -1;                   // -1: the ground
-    Eigen::VectorXd offset;          // from the body's center at the layout (material point)
+    Eigen::VectorXd offset;          // from the body's center, in the body's frame (material point)
+    bool turns = true;               // false: the offset keeps the ground's directions (a point where a
+                                     // strand leaves a drum, where a wheel touches the ground)
     std::vector<Expr> ground;        // a ground point's position (parameters, t)
     Eigen::VectorXd frame_accel;     // a ground point that moves with a driven body's frame
   };
   struct Constraint {
     std::string name;                // tackle's unknown, "" when it has none, "guide ..." for guides
     bool guide = false;
-    enum Kind { path, length_expr, project, relative, slide, rotation, guide_line } kind = path;
+    enum Kind { path, length_expr, project, relative, slide, rotation, guide_line, roll, guide_curve } kind = path;
     std::vector<PointRef> points;    // path: in order; project: one; relative: two; slide: the point on `body`
     Expr length;                     // length_expr
     Eigen::VectorXd dir;             // project/relative/guide: the unit direction (rotation: axis index in dir[0])
@@ -126,10 +144,18 @@ class Model {
     double mu = 0;                   // sliding: friction -mu N along `sliding`
     Eigen::VectorXd sliding;
     double constant = 0;             // its value at the layout
+    double arm = 0;                  // roll: the rotation's coefficient, (z x (C - cm)) . dir
+    struct Winding {                 // a path's end wound on a turning body: the length gains s * rotation,
+      std::size_t end = 0, next = 0; // s = d . (z x offset), d the unit vector from point `next` into `end`
+      int body = -1;
+      double sign = 1;               // -1 only in a deliberately wrong model
+    };
+    std::vector<Winding> winds;      // path
   };
   struct Element {                   // a spring, elastic cord or damper on a path
     enum Kind { spring, damper } kind = spring;
     std::vector<PointRef> points;
+    std::vector<Constraint::Winding> winds;
     double k = 0, rest = 0, c = 0;
     bool stretch = false;            // rest = origin length - stretch
     double stretch_value = 0;
@@ -156,6 +182,7 @@ class Model {
   std::vector<Element> elements_;
   std::vector<Load> loads_;
   Eigen::VectorXd gravity_;
+  Eigen::VectorXd origin_q_;                   // every coordinate of tackle's at 0 (a spring's `stretch`)
   std::map<std::string, double> base_coord_, base_rate_;
   std::map<std::string, double> given_accel_;  // kinematics: ddot(q) -> its value
   bool kinematic_ = false;                     // no body has a mass: the constraints alone
@@ -175,6 +202,11 @@ class Model {
   S value(const Constraint& c, const std::vector<S>& q, const S& t) const;
   template <class S>
   S path_length(const std::vector<PointRef>& pts, const std::vector<S>& q, const S& t) const;
+  template <class S>
+  S winding_arm(const Constraint::Winding& w, const std::vector<PointRef>& pts, const std::vector<S>& q, const S& t) const;
+  Eigen::VectorXd layout_position(const PointRef& p) const;
+  std::vector<Constraint::Winding> windings(const std::vector<PointRef>& pts, double sign) const;
+  void place_turning(State& s) const;
 
   /// Value, gradient in q, time derivative and second derivative along (v, 1) of a function
   /// of (q, t) given in D2.
@@ -184,7 +216,10 @@ class Model {
   };
   template <class F>
   Derivs derivs(const F& f, const State& s) const;
-  Eigen::VectorXd generalized(const PointRef& p, const Eigen::VectorXd& force) const;
+  Eigen::VectorXd generalized(const PointRef& p, const Eigen::VectorXd& force, const State& s) const;
+  // A constraint's derivatives (a wound path's in its rate form: J = grad L + s e_rot).
+  Derivs cons_derivs(const Constraint& c, const State& s) const;
+  Derivs length_derivs(const std::vector<PointRef>& pts, const std::vector<Constraint::Winding>& winds, const State& s) const;
   // Onto the constraints (positions, then rates), moving only the coordinates not frozen.
   void project(State& s, bool rates_only, const std::vector<bool>* frozen_q = nullptr,
                const std::vector<bool>* frozen_v = nullptr) const;
@@ -194,7 +229,8 @@ class Model {
     Eigen::VectorXd rhs;
     std::vector<int> kept;  // the constraints in the system
   };
-  Kkt system(const State& s) const;
+  // (`only`: these constraints, else the rules' and the guides they leave free at s)
+  Kkt system(const State& s, const std::vector<int>* only = nullptr) const;
 };
 
 }  // namespace crosscheck
