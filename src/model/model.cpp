@@ -63,8 +63,14 @@ ex time_derivative(const ex& e, const std::vector<Coordinate>& coordinates, cons
 ex reduced_on_lengths(const ex& e, const Model& m) {
   if (m.lengths.empty()) return e;
   ex n = numer_denom_remembered(e).op(0).expand();
-  for (const auto& l : m.lengths) n = rem(n, pow(l.symbol, 2) - l.squared, ex_to<symbol>(l.symbol)).expand();
-  return n;
+  // rem() takes polynomials over the rationals: the parts that are not (sin(theta) of a
+  // turning body, roots) stand as symbols of their own meanwhile, the same in both.
+  exmap stand_ins;
+  for (const auto& l : m.lengths) {
+    const ex divisor = (pow(l.symbol, 2) - l.squared).to_polynomial(stand_ins);
+    n = rem(n.to_polynomial(stand_ins), divisor, ex_to<symbol>(l.symbol)).expand();
+  }
+  return stand_ins.empty() ? n : n.subs(stand_ins).expand();
 }
 
 Model build_model(const Description& d, const RuleSet& rules) {
