@@ -13,6 +13,11 @@ KIND is one of
   carts    a 3-D train of n carts on a smooth floor joined by ball joints, the front one
            pulled along x; every cart's LMB in x, y, z and AMB about its center of mass
            (6n equations, 5n - 3 unknowns, the rest redundant)
+  pendulums  n simple pendulums (bobs of mass m on rods of length l) hanging a distance d
+           apart, neighbours joined by springs (k, rest length d) at a distance a below the
+           pins; the equations of motion (nonlinear: the springs turn), linearised about
+           hanging straight down, and the frequencies of small oscillations:
+           lambda_j^2 = g/l + (4 k a^2/(m l^2)) sin^2(j pi/(2 n)), j = 0 ... n - 1
 """
 import sys
 
@@ -69,6 +74,26 @@ def block_and_tackle(n):
     return "\n".join(out) + "\n"
 
 
+def pendulums(n):
+    out = [f'title: "Benchmark: a chain of {n} pendulums coupled by springs"', "axes: [x, y]", "parameters:",
+           "  m: {value: 1, unit: kg}", "  l: {value: 1, unit: m}", "  a: {value: 0.5, unit: m}",
+           "  d: {value: 0.4, unit: m}", "  k: {value: 10, unit: N/m}", "  g: {value: 9.81, unit: m/s^2}",
+           "gravity: [0, -g]", "bodies:"]
+    out += [f'  b{i}: {{mass: m, angle: theta_{i}, center_of_mass: ["{i - 1}*d + l*sin(theta_{i})", "-l*cos(theta_{i})"]}}'
+            for i in range(1, n + 1)]
+    out.append("points:")
+    out += [f'  O{i}: ["{i - 1}*d", 0]' for i in range(1, n + 1)]
+    out += [f'  K{i}: {{on: b{i}, offset: [0, "l - a"]}}' for i in range(1, n + 1)]
+    out.append("connections:")
+    out += [f"  - {{type: pin, body: b{i}, at: O{i}}}" for i in range(1, n + 1)]
+    out += [f"  - {{type: spring, name: sp{i}, path: [K{i}, K{i + 1}], k: k, rest_length: d}}" for i in range(1, n)]
+    out.append("layout: {" + ", ".join(f"theta_{i}: 0" for i in range(1, n + 1)) + "}")
+    out.append("find: [" + ", ".join(f"ddot(theta_{i})" for i in range(1, n + 1)) + "]")
+    initial = ", ".join([f"theta_{i}: {0.05 if i == 1 else 0}, dot(theta_{i}): 0" for i in range(1, n + 1)])
+    out += ["motion:", f"  initial: {{{initial}}}", "  until: 1"]
+    return "\n".join(out) + "\n"
+
+
 def carts(n):
     out = [f'title: "Benchmark: a 3-D train of {n} carts joined by ball joints"', "axes: [x, y, z]", "parameters:",
            "  F: {value: 8, unit: N}", "  g: {value: 9.81, unit: m/s^2}", "  b: {value: 1, unit: m}"]
@@ -85,7 +110,7 @@ def carts(n):
     return "\n".join(out) + "\n"
 
 
-KINDS = {"chain": chain, "cascade": cascade, "tackle": block_and_tackle, "carts": carts}
+KINDS = {"chain": chain, "cascade": cascade, "tackle": block_and_tackle, "carts": carts, "pendulums": pendulums}
 
 if __name__ == "__main__":
     if len(sys.argv) != 3 or sys.argv[1] not in KINDS:

@@ -397,6 +397,62 @@ std::string against_at_start(const Model& m, const Solution& sol, const Dependen
   return {};
 }
 
+// Small oscillations of several nonlinear degrees of freedom about q = 0 where every one can
+// rest (f(0, 0) = 0, no time, no damping linear in the rates there): ddot(q) = -K q with
+// K_ij = -df_i/dq_j at 0 (a turning strand's length through its root), and the frequencies
+// from K's eigenvalues with the numbers. Nothing when it does not rest there, or is unstable.
+std::optional<EquationsOfMotion::Linearised> linearised_system(const Model& m, const EquationsOfMotion& eom) {
+  const std::size_t n = eom.dof;
+  exmap at_rest, roots;
+  for (std::size_t i = 0; i < n; ++i) at_rest[eom.q[i]] = 0, at_rest[eom.dq[i]] = 0;
+  for (const auto& l : m.lengths) roots[l.symbol] = sqrt(l.squared);
+  EquationsOfMotion::Linearised lin;
+  lin.about = 0;
+  lin.stiffness_matrix = matrix(static_cast<unsigned>(n), static_cast<unsigned>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const ex& f0 = eom.acceleration[i];
+    if (f0.has(m.time)) return std::nullopt;
+    const ex f = roots.empty() ? f0 : f0.subs(roots);
+    auto at_zero = [&](const ex& e) -> std::optional<ex> {
+      const ex nd = numer_denom(normal(e));
+      const ex d0 = nd.op(1).subs(at_rest);
+      if (zero(d0)) return std::nullopt;
+      return normal(nd.op(0).subs(at_rest) / d0);
+    };
+    const auto rest = at_zero(f);
+    if (!rest || !zero(*rest)) return std::nullopt;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (f.has(eom.dq[j])) {
+        const auto c = at_zero(f.diff(ex_to<symbol>(eom.dq[j])));
+        if (!c || !zero(*c)) return std::nullopt;  // damped: not the undamped modes
+      }
+      if (!f.has(eom.q[j])) continue;
+      const auto k = at_zero(-f.diff(ex_to<symbol>(eom.q[j])));
+      if (!k) return std::nullopt;
+      lin.stiffness_matrix(static_cast<unsigned>(i), static_cast<unsigned>(j)) = *k;
+    }
+  }
+  const exmap values = m.symbols->values();
+  Eigen::MatrixXd Kn(n, n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      ex kij = lin.stiffness_matrix(static_cast<unsigned>(i), static_cast<unsigned>(j));
+      for (int depth = 0; depth < 8 && !kij.is_zero(); ++depth) kij = substituted(kij, m.symbols->definitions());
+      const auto v = kij.is_zero() ? std::optional<double>(0) : NormalForm(kij).approx_at(values);
+      if (!v) return lin;  // no numbers: the matrix alone
+      Kn(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = *v;
+    }
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(Kn);
+  if (es.info() != Eigen::Success) return lin;
+  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
+    const auto ev = es.eigenvalues()(i);
+    if (std::abs(ev.imag()) > 1e-9 * (1 + std::abs(ev.real())) || ev.real() <= 0) return std::nullopt;  // not a stable rest
+    lin.frequencies.push_back(std::sqrt(ev.real()));
+  }
+  std::sort(lin.frequencies.begin(), lin.frequencies.end());
+  return lin;
+}
+
 // Small oscillations of one nonlinear degree of freedom about q0 = 0 where it is at rest
 // (f(0, 0) = 0), when f depends on the coordinate alone: ddot(q) = -lambda^2 q with
 // lambda^2 = -f'(0) (the pendulum's g/l). Nothing when it does not rest there, or is unstable.
@@ -827,7 +883,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     }
   } else if (!eom.linear) {
     out.no_response = "the equation of motion is nonlinear (" + eom.nonlinear + "; simulate it)";
-    if (n == 1) eom.linearised = linearised(m, eom);
+    eom.linearised = n == 1 ? linearised(m, eom) : linearised_system(m, eom);
   } else {
     out.no_response = std::to_string(n) + " degrees of freedom (the modes are numeric; simulate the motion)";
   }

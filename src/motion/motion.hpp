@@ -44,6 +44,10 @@ struct EquationsOfMotion {
     GiNaC::ex about;       // q0
     GiNaC::ex stiffness;   // lambda^2 = -df/dq at q0 (per unit of the coordinate's inertia)
     std::optional<double> lambda;  // rad/s, with the numbers
+    // More than one degree of freedom: ddot(q) = -K q about q = 0, K_ij = -df_i/dq_j there,
+    // and the natural frequencies of small oscillations, sqrt of K's eigenvalues (numbers).
+    GiNaC::matrix stiffness_matrix{0, 0};
+    std::vector<double> frequencies;
   };
   std::optional<Linearised> linearised;
 };

@@ -142,7 +142,28 @@ std::optional<NumericValue> evaluate_at(const ex& e, const exmap& values, const 
   GiNaC::Digits = saved;
   if (!is_a<numeric>(f) || !ex_to<numeric>(f).is_real()) return std::nullopt;
   out.approx = ex_to<numeric>(f).to_double();
-  const ex exact_shown = normal(shown);
+  // The exact value in its lowest terms; with functions at numbers (sin(3/10) of an angle)
+  // normal() would treat them as symbols whose order follows GiNaC's hashes, and the form
+  // it chose (1/sqrt(x) or sqrt(1/x)) would too: such a value stays as substituted.
+  bool functions = false;
+  for (const_preorder_iterator it = shown.preorder_begin(); it != shown.preorder_end() && !functions; ++it)
+    functions = is_a<function>(*it);
+  ex exact_shown;
+  if (functions) {
+    // Substituted into the closed form as it is (deterministic), not through a normal form.
+    ex plain = e;
+    for (int depth = 0; depth < 8; ++depth) {
+      const ex next = plain.subs(values);
+      if (next.is_equal(plain)) break;
+      plain = next;
+    }
+    bool symbols = false;
+    for (const_preorder_iterator it = plain.preorder_begin(); it != plain.preorder_end() && !symbols; ++it)
+      symbols = is_a<symbol>(*it);
+    exact_shown = symbols ? shown : (unit ? plain / unit->to_si : plain);
+  } else {
+    exact_shown = normal(shown);
+  }
   out.exact = exact_shown;
   out.decimal = is_a<numeric>(exact_shown) ? decimal_string(ex_to<numeric>(exact_shown), digits)
                                            : decimal_string(ex_to<numeric>(f), digits);

@@ -124,7 +124,26 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
     text(source + " is not followed in time: " + why + "; `tackle simulate` does not watch it.");
   if (!mo.response) {
     text("No closed-form response: " + mo.no_response + ". `tackle simulate` integrates the motion numerically.");
-    if (const auto& lin = eom.linearised) {
+    if (const auto& lin = eom.linearised; lin && eom.dof > 1) {
+      std::string where;
+      for (std::size_t i = 0; i < eom.dof; ++i) where += to_text(eom.q[i]) + " = ";
+      text("Small oscillations about " + where + to_text(lin->about) + ", where it can rest (the equations of motion "
+           "linearised there):");
+      for (std::size_t i = 0; i < eom.dof; ++i) {
+        ex rhs = 0;
+        for (std::size_t j = 0; j < eom.dof; ++j)
+          rhs -= lin->stiffness_matrix(static_cast<unsigned>(i), static_cast<unsigned>(j)) * (eom.q[j] - lin->about);
+        equation("linearised (" + to_text(eom.q[i]) + ")", eom.ddq[i], rhs);
+      }
+      if (!lin->frequencies.empty()) {
+        std::string f;
+        for (std::size_t i = 0; i < lin->frequencies.size(); ++i)
+          f += (i ? ", " : "") + decimal_string(GiNaC::numeric(lin->frequencies[i]), options.digits);
+        text("Natural frequencies of small oscillations (numeric, from the eigenvalues of the linearised stiffness with the "
+             "given values): " + f + " rad/s.");
+      }
+      text("At larger amplitudes the motion is not a sum of these modes: `tackle simulate` follows the nonlinear equations.");
+    } else if (const auto& lin = eom.linearised) {
       const ex q = eom.q[0];
       const symbol lambda("lambda", "\\lambda");
       text("Small oscillations about " + to_text(q) + " = " + to_text(lin->about) + ", where it can rest (the equation of "

@@ -205,9 +205,22 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
       }
       if (const yaml::Node lin = em["linearised"]) {
         REQUIRE(mo.eom.linearised);
-        same(mo.eom.linearised->stiffness, yaml_text(lin["lambda_squared"]));
-        REQUIRE(mo.eom.linearised->lambda);
-        CHECK(*mo.eom.linearised->lambda == Approx(yaml_number(lin["lambda"])).epsilon(1e-12));
+        if (lin["lambda_squared"]) {
+          same(mo.eom.linearised->stiffness, yaml_text(lin["lambda_squared"]));
+          REQUIRE(mo.eom.linearised->lambda);
+          CHECK(*mo.eom.linearised->lambda == Approx(yaml_number(lin["lambda"])).epsilon(1e-12));
+        }
+        if (const yaml::Node k = lin["stiffness"]) {  // several degrees of freedom: K row by row
+          REQUIRE(mo.eom.linearised->stiffness_matrix.rows() == k.size());
+          for (std::size_t i = 0; i < k.size(); ++i)
+            for (std::size_t j = 0; j < k[i].size(); ++j)
+              same(mo.eom.linearised->stiffness_matrix(static_cast<unsigned>(i), static_cast<unsigned>(j)), yaml_text(k[i][j]));
+        }
+        if (const yaml::Node f = lin["frequencies"]) {
+          REQUIRE(mo.eom.linearised->frequencies.size() == f.size());
+          for (std::size_t i = 0; i < f.size(); ++i)
+            CHECK(mo.eom.linearised->frequencies[i] == Approx(yaml_number(f[i])).epsilon(1e-9));
+        }
       }
       if (em["response"]) {
         REQUIRE(mo.response);

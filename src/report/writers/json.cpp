@@ -31,7 +31,11 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
   J j{{"degrees_of_freedom", e.dof}, {"coordinates", J::array()}, {"linear", e.linear}};
   for (const auto& q : e.q) j["coordinates"].push_back(to_text(q));
   if (!e.linear) j["nonlinear"] = e.nonlinear;
-  if (e.linearised)
+  if (e.linearised && e.dof > 1)
+    j["linearised"] = {{"about", to_text(e.linearised->about)},
+                       {"stiffness", mat(e.linearised->stiffness_matrix)},
+                       {"frequencies", e.linearised->frequencies}};
+  else if (e.linearised)
     j["linearised"] = {{"about", to_text(e.linearised->about)},
                        {"lambda_squared", expr(e.linearised->stiffness)},
                        {"lambda", e.linearised->lambda ? J(*e.linearised->lambda) : J(nullptr)}};
