@@ -394,8 +394,11 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
                                         r.simplified.is_equal(r.solved[0].parameter))) {
         text(r.solved.size() == 1 ? "It holds exactly when:" : "It holds exactly when (each form is equivalent):");
         for (const auto& sv : r.solved) {
-          Step* solved = equation("solved for {}", sv.parameter, sv.bound);
+          const bool provided = !sv.provided.is_zero();
+          Step* solved = equation(provided ? "solved for {}, while {} > 0 (as at the given numbers)" : "solved for {}",
+                                  sv.parameter, sv.bound);
           solved->math = {sv.parameter};
+          if (provided) solved->math.push_back(sv.provided);
           solved->relation = sv.op;
         }
       }

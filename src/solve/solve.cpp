@@ -431,17 +431,51 @@ bool relation_holds(const numeric& x, const std::string& op) {
 namespace {
 
 // `rest reduced_op 0` (factors of known sign divided out) solved for each parameter.
-std::vector<SolvedFor> solve_reduced(const ex& rest, const std::string& reduced_op, const std::vector<ex>& parameters) {
+std::vector<SolvedFor> solve_reduced(const ex& rest, const std::string& reduced_op, const std::vector<ex>& parameters,
+                                     const exmap* values = nullptr) {
   std::vector<SolvedFor> out;
   const ex nd = numer_denom_remembered(rest);
   if (!nd.op(1).is_equal(1)) return out;  // a denominator of unknown sign remains
   const ex poly = nd.op(0).expand();
   for (const ex& p : parameters) {
-    if (!poly.has(p) || poly.degree(p) != 1) continue;
-    const ex a = normal(poly.coeff(p, 1)), b = normal(poly.coeff(p, 0));
-    const int sign = known_sign(factored(a));
+    if (!poly.has(p)) continue;
+    const int degree = poly.degree(p);
+    // a p + b, or a p^2 + b for a positive p (a speed v: v^2 <= r g tan(beta) gives v <=
+    // sqrt(r g tan(beta)) where that root is real).
+    const bool square = degree == 2 && poly.coeff(p, 1).is_zero() && p.info(info_flags::positive);
+    if (degree != 1 && !square) continue;
+    const ex a = normal(poly.coeff(p, degree)), b = normal(poly.coeff(p, 0));
+    int sign = known_sign(factored(a));
+    ex provided = 0;
+    if (sign == 0 && values && square) {
+      // Of a sign the parameters leave open: solved where it has the sign it has at the given
+      // numbers, and said so (the top speed on a banked curve exists while cos - mu sin > 0).
+      const ex at = evalf(a.subs(*values).subs(*values));
+      if (is_a<numeric>(at) && ex_to<numeric>(at).is_real() && !ex_to<numeric>(at).is_zero()) {
+        sign = ex_to<numeric>(at).is_positive() ? 1 : -1;
+        provided = simplest(sign > 0 ? a : -a);
+      }
+    }
     if (sign == 0) continue;
-    out.push_back({p, sign > 0 ? reduced_op : flipped(reduced_op), simplest(-b / a)});
+    const ex bound = simplest(-b / a);
+    const std::string op = sign > 0 ? reduced_op : flipped(reduced_op);
+    if (!square) {
+      out.push_back({p, op, bound});
+      continue;
+    }
+    if (op != "<=" && op != "<" && op != ">=" && op != ">") continue;
+    // v op sqrt(bound) where the bound is positive, else the square itself (v^2 >= a negative
+    // number always holds, and the parameters may make it so).
+    if (known_sign(factored(bound)) > 0) {
+      out.push_back({p, op, simplest(sqrt(bound)), provided});
+      continue;
+    }
+    // A lower bound on a square that is negative at the given numbers says nothing there.
+    if (values && (op == ">=" || op == ">")) {
+      const ex at = evalf(bound.subs(*values).subs(*values));
+      if (is_a<numeric>(at) && ex_to<numeric>(at).is_real() && ex_to<numeric>(at).is_negative()) continue;
+    }
+    out.push_back({pow(p, 2), op, bound, provided});
   }
   return out;
 }
@@ -657,12 +691,40 @@ std::optional<Solution> solve_level(const Model& model, const std::vector<Equati
 
 }  // namespace
 
+namespace {
+
+// The parameters that are acute angles: a range (the variants') inside (0, pi/2) in SI.
+// Their sin, cos and tan stand as positive symbols while a condition is solved.
+struct AcuteAngles {
+  exmap stand_ins, back;
+};
+
+AcuteAngles acute_angles(const Model& model) {
+  AcuteAngles out;
+  for (const auto& sym : model.symbols->all()) {
+    if (sym->role != SymbolRole::parameter || !sym->range) continue;
+    const ex low = evalf(sym->range->first * sym->unit_to_si), high = evalf(sym->range->second * sym->unit_to_si);
+    if (!is_a<numeric>(low) || !is_a<numeric>(high)) continue;
+    if (!(ex_to<numeric>(low) > 0) || !(ex_to<numeric>(high) < ex_to<numeric>(evalf(Pi / 2)))) continue;
+    const ex x = sym->sym;
+    for (const ex& f : {sin(x), cos(x), tan(x)}) {
+      const possymbol stand_in(to_text(f));
+      out.stand_ins[f] = stand_in;
+      out.back[stand_in] = f;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 Solution solve(const Model& model, const EquationSystem& s) {
   Solution sol = solve_equations(model.file, s.equations, s.unknowns);
   if (sol.status == Solution::Status::inconsistent) return sol;
   if (auto r = solve_level(model, s.rate_equations, SymbolRole::rate)) sol.rates = std::make_shared<const Solution>(std::move(*r));
   if (auto r = solve_level(model, s.position_equations, SymbolRole::coordinate))
     sol.positions = std::make_shared<const Solution>(std::move(*r));
+  const AcuteAngles acute = acute_angles(model);
   for (const auto& c : model.conditions) {
     CheckedCondition cc;
     cc.condition = &c;
@@ -702,10 +764,24 @@ Solution solve(const Model& model, const EquationSystem& s) {
                          parameters.end());
       if (c.op != "=") {
         // Factors of known sign divided out once: what is left is solved for a parameter, or
-        // is a number, and then the condition always or never holds.
+        // is a number, and then the condition always or never holds. The sine, cosine and
+        // tangent of an acute angle (a parameter whose range lies in (0, 90 deg)) are positive:
+        // they stand as positive symbols meanwhile.
         std::string op = c.op;
-        const ex rest = strip_signed_factors_of(numer_denom_of_normal(normal_form), op);
-        cc.solved = solve_reduced(rest, op, parameters);
+        ex for_solving = normal_form;
+        if (!acute.stand_ins.empty()) {
+          const ex put = normal_form.subs(acute.stand_ins);
+          if (!put.is_equal(normal_form)) for_solving = normal(put);
+        }
+        const ex rest = strip_signed_factors_of(numer_denom_of_normal(for_solving), op);
+        exmap values = model.symbols->values();
+        for (const auto& [stand_in, f] : acute.back) values[stand_in] = f.subs(values);
+        cc.solved = solve_reduced(rest, op, parameters, &values);
+        for (auto& sv : cc.solved)
+          if (!acute.back.empty()) {
+            sv.bound = simplest(sv.bound.subs(acute.back));
+            sv.provided = simplest(sv.provided.subs(acute.back));
+          }
         if (is_a<numeric>(rest)) cc.always = relation_holds(ex_to<numeric>(rest), op);
       }
     }

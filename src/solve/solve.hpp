@@ -33,9 +33,13 @@ struct Combination {
 /// (found when the condition is linear in that parameter with a coefficient of known sign,
 /// once factors of known sign are divided out).
 struct SolvedFor {
-  GiNaC::ex parameter;
+  GiNaC::ex parameter;  // a parameter, or its square (v^2 <= ...) where the root's sign is open
   std::string op;
   GiNaC::ex bound;
+  // 0, or an expression of unknown sign that the solving divided by, positive at the given
+  // numbers: the form holds while it stays positive (`v^2 <= g r .../(cos(beta) - mu sin(beta))`
+  // while cos(beta) - mu sin(beta) > 0).
+  GiNaC::ex provided = 0;
 };
 
 struct CheckedCondition {

@@ -192,10 +192,13 @@ nlohmann::ordered_json json_object(const Derivation& d, bool full) {
     x["holds"] = c.holds ? nlohmann::ordered_json(*c.holds) : nlohmann::ordered_json(nullptr);
     x["always"] = c.always ? nlohmann::ordered_json(*c.always) : nlohmann::ordered_json(nullptr);
     x["solved"] = nlohmann::ordered_json::array();
-    for (const auto& sv : c.solved)
-      x["solved"].push_back({{"parameter", to_text(sv.parameter)},
-                             {"condition", to_text(sv.parameter) + " " + sv.op + " " + to_text(sv.bound)},
-                             {"latex", to_latex(sv.parameter) + " " + tex_relation(sv.op) + " " + to_latex(sv.bound)}});
+    for (const auto& sv : c.solved) {
+      auto y = nlohmann::ordered_json{{"parameter", to_text(sv.parameter)},
+                                      {"condition", to_text(sv.parameter) + " " + sv.op + " " + to_text(sv.bound)},
+                                      {"latex", to_latex(sv.parameter) + " " + tex_relation(sv.op) + " " + to_latex(sv.bound)}};
+      if (!sv.provided.is_zero()) y["while_positive"] = to_text(sv.provided);  // as at the given numbers
+      x["solved"].push_back(y);
+    }
     j["conditions"].push_back(x);
   }
   {

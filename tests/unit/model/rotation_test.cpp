@@ -232,3 +232,29 @@ TEST_CASE("Rotation: with backspin the ball stops and comes back while its conta
   REQUIRE(run.events.size() == 1);
   CHECK(run.events[0].t == Approx(2 * 12 / (7 * 0.2 * 9.81)).epsilon(1e-9));
 }
+
+TEST_CASE("Rotation: a car on a banked curve keeps its line between two speeds, solved for v^2", "[rotation][validity]") {
+  // By hand (the example's notes): v^2 <= g r (sin + mu cos)/(cos - mu sin), while cos > mu
+  // sin; v^2 >= g r (sin - mu cos)/(cos + mu sin).
+  const auto a = run_text(read_example("rotation-car-on-banked-curve.yaml"));
+  const ex g = sym(*a, "g"), r = sym(*a, "r"), mu = sym(*a, "mu"), v = sym(*a, "v"), b = sym(*a, "beta");
+  std::vector<std::pair<std::string, ex>> found;
+  for (const auto& c : a->solution.conditions)
+    for (const auto& sv : c.solved)
+      if (sv.parameter.is_equal(pow(v, 2))) found.emplace_back(sv.op, sv.bound);
+  REQUIRE(found.size() == 2);
+  CHECK(found[0].first == "<=");
+  CHECK(same(found[0].second, g * r * (sin(b) + mu * cos(b)) / (cos(b) - mu * sin(b))));
+  CHECK(found[1].first == ">=");
+  CHECK(same(found[1].second, g * r * (sin(b) - mu * cos(b)) / (cos(b) + mu * sin(b))));
+}
+
+TEST_CASE("Rotation: the rolling condition is solved for mu where the incline's angle is acute", "[rotation][validity]") {
+  const auto a = run_text(read_example("rotation-cylinder-rolling-down-incline.yaml"));
+  const ex mu = sym(*a, "mu"), th = sym(*a, "theta");
+  bool found = false;
+  for (const auto& c : a->solution.conditions)
+    for (const auto& sv : c.solved)
+      if (sv.parameter.is_equal(mu) && sv.op == ">=" && same(sv.bound, sin(th) / (3 * cos(th)))) found = true;
+  CHECK(found);
+}
