@@ -923,14 +923,26 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     }
     out.conditions_in_state.emplace_back(&c, in_state);
   }
+  // The strands' lengths need the dependent coordinates too (a block running into the pulley
+  // over it): placed from 'initial' where it gives their starts, each strand on its own terms.
+  ex with_strands = all;
+  for (const auto& [length, what] : m.strand_lengths) with_strands += length;
+  const Dependents for_strands =
+      m.strand_lengths.empty() || !for_all.problem.empty() ? for_all : dependents(m, s, sol, spec, with_strands);
+  const Dependents& strand_dep = for_strands.problem.empty() ? for_strands : dep;
+  auto strand_unplaced = [&](const ex& e) -> std::optional<ex> {
+    for (const auto& c : m.coordinates)
+      if (!contains(state, c.q) && !strand_dep.coords.count(c.q) && e.has(c.q)) return c.q;
+    return std::nullopt;
+  };
   for (const auto& [length, what] : m.strand_lengths) {
     // A strand through a coordinate whose starting value is not given cannot be followed to
     // the moment it closes (a block running into its pulley): said, as for a condition.
-    const ex in_state = put_in(length, dep);
+    const ex in_state = put_in(length, strand_dep);
     // (A strand whose length stays what it was at t = 0, as between bodies in contact, is no
     // concern even where that length is not known.)
-    if (const auto q = unplaced(in_state)) {
-      if (!zero(put_in(time_derivative(length, m), dep)))
+    if (const auto q = strand_unplaced(in_state)) {
+      if (!zero(put_in(time_derivative(length, m), strand_dep)))
         out.not_followed.emplace_back(what, "its length depends on " + to_text(*q) +
                                                 ", whose value at t = 0 'initial' does not give (expected it there)");
       continue;

@@ -283,6 +283,7 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
     }
   }
   out.reached = out.complete ? until : end;
+  out.not_followed = mo.not_followed;
   out.table = std::move(table_out);
   return out;
 }
@@ -291,7 +292,10 @@ std::string simulation_text(const Simulation& s) {
   std::string out = s.table.title + "\n";
   out += "Simulated to t = " + decimal_string(numeric(s.reached), 6) + " s (" + std::to_string(s.steps) +
          " steps, Dormand-Prince 5(4))";
-  out += s.complete ? "; the model holds throughout.\n" : ".\n";
+  if (s.complete && s.not_followed.empty()) out += "; the model holds throughout.\n";
+  else if (s.complete) out += "; what it follows holds throughout.\n";
+  else out += ".\n";
+  for (const auto& [source, why] : s.not_followed) out += "Not followed: " + source + " (" + why + ").\n";
   if (!s.stopped.empty()) out += "Stopped: " + s.stopped + ".\n";
   for (const auto& e : s.events)
     out += "Event at t = " + decimal_string(numeric(e.t), 6) + " s: " + e.what + (e.ends ? " (the run ends)" : "") + "\n";

@@ -36,6 +36,9 @@ struct Simulation {
   bool complete = false;           // it reached 'until' with the model holding throughout
   std::string stopped;             // why it ended early, in words
   std::size_t steps = 0;           // accepted integration steps
+  // What the run does not watch (source, why): a strand whose length needs a starting value
+  // 'initial' does not give. "The model holds throughout" is said only without these.
+  std::vector<std::pair<std::string, std::string>> not_followed;
 };
 
 /// Runs the motion; problems with the spec (a plot name it does not know, no 'until') are
