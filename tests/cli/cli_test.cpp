@@ -837,3 +837,55 @@ TEST_CASE("CLI: the Gradescope example grades each asked unknown once", "[cli][c
   CHECK(none["tests"][0]["output"] == "invalid: the answer is empty");
   fs::remove_all(root);
 }
+
+TEST_CASE("CLI: the README's first problem gives what the README shows", "[cli][readme]") {
+  // The door must stay true: its YAML blocks, put together, solve, check and simulate as its
+  // console blocks say (the lines shown, in order, each found in the output).
+  const std::string readme = slurp(TACKLE_SOURCE_DIR "/README.md");
+  std::vector<std::string> yaml, console;
+  for (std::size_t at = 0; (at = readme.find("```", at)) != std::string::npos;) {
+    const std::size_t eol = readme.find('\n', at);
+    const std::string kind = readme.substr(at + 3, eol - at - 3);
+    const std::size_t end = readme.find("```", eol);
+    REQUIRE(end != std::string::npos);
+    if (kind == "yaml") yaml.push_back(readme.substr(eol + 1, end - eol - 1));
+    if (kind == "console") console.push_back(readme.substr(eol + 1, end - eol - 1));
+    at = end + 3;
+  }
+  REQUIRE(yaml.size() == 2);
+  const fs::path dir = fs::temp_directory_path() / ("tackle-readme-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "atwood.yaml") << yaml[0] << yaml[1];
+  std::size_t commands = 0;
+  for (const auto& block : console) {
+    std::istringstream lines(block);
+    std::string line, output;
+    std::vector<std::pair<std::string, std::string>> runs;  // command, the output shown
+    while (std::getline(lines, line)) {
+      if (line.rfind("$ build/tackle ", 0) == 0) runs.push_back({line.substr(15), ""});
+      else if (!runs.empty() && line != "...") runs.back().second += line + "\n";
+    }
+    for (const auto& [args, shown] : runs) {
+      INFO(args);
+      const Run r = run_tackle(args, dir.string());
+      CHECK((r.code == 0 || args.rfind("check", 0) == 0));
+      ++commands;
+      // Each shown line appears in the output, in order (a long line may be wrapped in the README).
+      std::istringstream want(shown);
+      std::string w, out = r.out;
+      for (char& c : out) c = c == '\n' ? ' ' : c;
+      std::size_t from = 0;
+      while (std::getline(want, w)) {
+        const std::size_t first = w.find_first_not_of(' ');
+        if (first == std::string::npos) continue;
+        const std::string text = w.substr(first);
+        const std::size_t found = out.find(text, from);
+        INFO("shown: " << text);
+        CHECK(found != std::string::npos);
+        if (found != std::string::npos) from = found + text.size();
+      }
+    }
+  }
+  CHECK(commands == 4);
+  fs::remove_all(dir);
+}
