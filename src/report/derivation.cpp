@@ -269,9 +269,33 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
                   "); rank " + std::to_string(sol.rank) + ".",
               shown);
   }
-  for (const auto& group : sol.redundant)
-    text(group.size() == 1 ? "Redundant: " + group[0] + " holds identically (it reads 0 = 0)."
-                           : "Redundant: " + join(group, ", ") + " are linearly dependent (one follows from the others).");
+  {
+    // The balances that read 0 = 0 (a translating body's AMB about its center, a direction
+    // with no force) are said once, their axes together: "AMB A about its center of mass (x,
+    // y, z)"; the dependent groups one by one.
+    std::vector<std::pair<std::string, std::vector<std::string>>> identical;  // label without its axis, axes
+    for (const auto& group : sol.redundant) {
+      if (group.size() != 1) continue;
+      std::string base = group[0], axis;
+      if (const auto open = base.rfind(" ("); open != std::string::npos && base.back() == ')') {
+        axis = base.substr(open + 2, base.size() - open - 3);
+        base = base.substr(0, open);
+      }
+      auto it = std::find_if(identical.begin(), identical.end(), [&](const auto& x) { return x.first == base; });
+      if (it == identical.end()) identical.push_back({base, {}}), it = identical.end() - 1;
+      if (!axis.empty()) it->second.push_back(axis);
+    }
+    if (!identical.empty()) {
+      std::vector<std::string> items;
+      for (const auto& [base, axes] : identical) items.push_back(axes.empty() ? base : base + " (" + join(axes, ", ") + ")");
+      text(items.size() == 1 && identical[0].second.size() <= 1
+               ? "Redundant: " + items[0] + " holds identically (it reads 0 = 0)."
+               : "Redundant, each holds identically (it reads 0 = 0): " + join(items, "; ") + ".");
+    }
+    for (const auto& group : sol.redundant)
+      if (group.size() > 1)
+        text("Redundant: " + join(group, ", ") + " are linearly dependent (one follows from the others).");
+  }
   switch (sol.status) {
     case Solution::Status::determined: {
       d.status = "determined";
