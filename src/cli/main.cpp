@@ -218,9 +218,17 @@ int run_key(const Options& o, const tackle::RuleSet& rules) {
 int run_sheet(const Options& o, const tackle::RuleSet& rules) {
   const Parts p = analyze_parts(o, rules);
   std::vector<tackle::SheetEntry> entries;
+  std::vector<std::string> generated;
   for (std::size_t i = 0; i < p.derivations.size(); ++i)
-    for (std::size_t k = 0; k < p.derivations[i].size(); ++k)
+    for (std::size_t k = 0; k < p.derivations[i].size(); ++k) {
       entries.push_back({&p.derivations[i][k], &p.phases[i][k]->model, p.variants[i][k]});
+      if (!p.phases[i][k]->model.statement && (generated.empty() || generated.back() != o.key_files[i])) generated.push_back(o.key_files[i]);
+    }
+  // Said once: a sheet whose statements tackle wrote from the descriptions.
+  if (!generated.empty())
+    std::cerr << "tackle: warning: " << (generated.size() == 1 ? generated[0] + " has" : std::to_string(generated.size()) + " files have")
+              << " no 'statement'; the sheet states the problem from the description (its bodies, connections and given "
+                 "values)\n";
   return emit(tackle::write_sheet(entries, formats.at(o.key_format), o.figures), o.out);
 }
 

@@ -509,6 +509,34 @@ TEST_CASE("CLI: a sheet and a key from one seed show the same numbers", "[cli][s
   CHECK(run_tackle("sheet " + file + " --format markdown").out.find("a force $F$ = 130 N") != std::string::npos);
 }
 
+TEST_CASE("CLI: a problem without a statement is stated from its description, with each variant's numbers", "[cli][sheet]") {
+  // The Atwood machine has no 'statement': the sheet names its bodies, connections and given
+  // values, the key's numbers per variant, and says once that it wrote the statement.
+  const std::string file = examples + "atwood-machine.yaml";
+  const Run sheet = run_tackle("sheet " + file + " --format markdown");
+  REQUIRE(sheet.code == 0);
+  CHECK(sheet.out.find("Bodies A (mass $m_{A}$), B (mass $m_{B}$) and C (no mass). Connections: fixed body C: ") != std::string::npos);
+  CHECK(sheet.out.find("Given: $m_{A} = 3\\,\\mathrm{kg}$, $m_{B} = 5\\,\\mathrm{kg}$ and $g = 9.81\\,\\mathrm{m/s^{2}}$.") !=
+        std::string::npos);
+  CHECK(sheet.err == "tackle: warning: " + file +
+                         " has no 'statement'; the sheet states the problem from the description (its bodies, connections and "
+                         "given values)\n");
+  // With variants: each problem gives its own numbers, as the key draws them.
+  const std::string ranged = examples + "sample-12.7-suitcase.yaml";
+  const Run key = run_tackle("key " + ranged + " --variants 2 --seed 4 --format json");
+  const Run two = run_tackle("sheet " + ranged + " --variants 2 --seed 4 --format markdown");
+  REQUIRE(key.code == 0);
+  REQUIRE(two.code == 0);
+  std::size_t at = 0;
+  for (const auto& v : nlohmann::json::parse(key.out)["problems"][0]["variants"])
+    for (const auto& [name, q] : v["parameters"].items()) {
+      INFO(name);
+      CHECK(two.out.find(" = " + q["decimal"].get<std::string>(), at) != std::string::npos);
+    }
+  // A statement the description gives is used as it is, without the warning.
+  CHECK(run_tackle("sheet " + examples + "sample-12.3-two-mass-pulley.yaml --format markdown").err.empty());
+}
+
 TEST_CASE("CLI: a sheet shows the mechanism's sketch, and the free body diagrams only when asked", "[cli][sheet]") {
   const std::string file = examples + "sample-12.3-two-mass-pulley.yaml";
   auto count = [](const std::string& text, const std::string& what) {

@@ -4,6 +4,7 @@
 
 #include "core/placeholders.hpp"
 #include "expr/print.hpp"
+#include "model/symbols.hpp"
 #include "report/html.hpp"
 #include "report/tex.hpp"
 #include "report/writer.hpp"
@@ -138,8 +139,89 @@ std::vector<SheetProblem> sheet_problems(const std::vector<SheetEntry>& entries)
   return out;
 }
 
+namespace {
+
+// "a, b and c"
+std::string listed_in_words(const std::vector<std::string>& items) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) out += (i ? (i + 1 == items.size() ? " and " : ", ") : "") + items[i];
+  return out;
+}
+
+// A problem without a statement, said from its description: the bodies, the connections (the
+// rules' own sentences in this problem's symbols) and the given values, the variant's where it
+// has them, every name and value typeset as $...$ (Markdown renders it too).
+std::string generated_statement(const SheetProblem& p) {
+  const bool math = true;
+  // Words of the description (block_1, s_1) as math, the way LaTeX, KaTeX and Markdown agree
+  // on them: a raw underscore is a subscript in LaTeX and emphasis in Markdown.
+  auto words = [](const std::string& text) {
+    std::string out, word;
+    auto flush = [&] {
+      if (word.find('_') != std::string::npos) out += "$" + default_tex(word) + "$";
+      else out += word;
+      word.clear();
+    };
+    for (char c : text) {
+      if (std::isalnum(static_cast<unsigned char>(c)) || c == '_') {
+        word += c;
+      } else {
+        flush();
+        out += c;
+      }
+    }
+    flush();
+    return out;
+  };
+  const Model& m = *p.model;
+  const Derivation& d = *p.derivation;
+  auto term = [&](const GiNaC::ex& e) { return math ? "$" + to_latex(e) + "$" : to_text(e); };
+  std::vector<std::string> bodies;
+  for (const auto& b : m.bodies) {
+    std::string what = words(b.name);
+    if (b.has_mass && b.mass.is_zero()) what += " (no mass)";
+    else if (b.has_mass) what += " (mass " + term(b.mass) + ")";
+    bodies.push_back(what);
+  }
+  std::string out = (bodies.size() == 1 ? "A body, " : "Bodies ") + listed_in_words(bodies) + ". ";
+  std::vector<std::string> connections;
+  for (const auto& c : m.connections) {
+    std::string summary;
+    std::size_t from = 0, k = 0;
+    for (std::size_t at; (at = c.summary.find("{}", from)) != std::string::npos; from = at + 2)
+      summary += words(c.summary.substr(from, at - from)) + (k < c.terms.size() ? term(c.terms[k++]) : "{}");
+    summary += words(c.summary.substr(from));
+    connections.push_back(words(c.label) + ": " + summary);
+  }
+  if (!connections.empty()) out += "Connections: " + listed_in_words(connections) + ". ";
+  std::vector<std::string> given;
+  for (const auto& q : d.parameters) {
+    if (q.kind != "parameter" && q.kind != "given") continue;
+    const auto it = p.values.find(q.name);
+    std::string number, unit;
+    if (it != p.values.end()) {
+      number = it->second.number;
+      unit = it->second.unit;
+    } else if (const auto& v = q.stated ? q.stated : q.si) {
+      number = v->decimal;
+      unit = v->unit;
+    } else {
+      continue;
+    }
+    given.push_back(math ? "$" + q.tex + " = " + number + (unit.empty() ? "" : "\\," + unit_latex(unit)) + "$"
+                         : q.name + " = " + number + (unit.empty() ? "" : " " + unit));
+  }
+  if (!given.empty()) out += "Given: " + listed_in_words(given) + ".";
+  return out;
+}
+
+}  // namespace
+
+bool has_statement(const SheetProblem& p) { return p.model && p.model->statement; }
+
 std::string statement_of(const SheetProblem& p, bool math) {
-  if (!p.model || !p.model->statement) return "";
+  if (!p.model) return "";
+  if (!p.model->statement) return generated_statement(p);
   const std::string& statement = p.model->statement->text;
   std::string out;
   std::size_t from = 0;

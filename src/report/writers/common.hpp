@@ -41,7 +41,8 @@ struct SheetProblem {
 };
 [[nodiscard]] std::vector<SheetProblem> sheet_problems(const std::vector<SheetEntry>& entries);
 /// The statement with each {name} replaced by its value and unit: `$140\,\mathrm{N}$` for
-/// LaTeX and HTML (`math`), `140 N` for Markdown. Empty when the problem has no statement.
+/// LaTeX and HTML (`math`), `140 N` for Markdown. A problem without a `statement` gets one
+/// generated from its description (its bodies, connections and given values).
 [[nodiscard]] std::string statement_of(const SheetProblem& p, bool math);
 
 /// The drawn figures' steps of a derivation: the mechanism's sketch, and the free body
