@@ -5,6 +5,7 @@
 #include "core/placeholders.hpp"
 #include "expr/print.hpp"
 #include "model/symbols.hpp"
+#include "report/break.hpp"
 #include "report/html.hpp"
 #include "report/tex.hpp"
 #include "report/writer.hpp"
@@ -63,7 +64,7 @@ std::string prose(const Step& st, Format f) {
   };
   for (std::size_t at; (at = st.text.find("{}", from)) != std::string::npos && k < st.math.size(); from = at + 2, ++k) {
     out += plain(st.text.substr(from, at - from));
-    out += f == Format::text ? to_text(st.math[k]) : f == Format::html ? html_math(to_latex(st.math[k])) : "$" + to_latex(st.math[k]) + "$";
+    out += f == Format::text ? to_text(st.math[k]) : f == Format::html ? html_math(to_latex(st.math[k])) : "$" + inline_tex(to_latex(st.math[k])) + "$";
   }
   return out + plain(st.text.substr(from));
 }

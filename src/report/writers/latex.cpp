@@ -6,6 +6,7 @@
 #include "report/tex.hpp"
 #include "report/writer.hpp"
 #include "report/writers/common.hpp"
+#include "report/break.hpp"
 
 namespace tackle {
 
@@ -16,7 +17,9 @@ namespace {
 
 // A drawn figure, centred, with its caption.
 std::string latex_figure(const Step& st) {
-  return "\\begin{center}\n" + to_tikz(*st.figure) + "\\\\[2pt]{\\small " + tex_escape(st.text) + "}\n\\end{center}\n";
+  // Scaled down to the line where it is wider (a wide 2-D diagram), never up.
+  return "\\begin{center}\n\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%\n" + to_tikz(*st.figure) +
+         "}\\\\[2pt]{\\small " + tex_escape(st.text) + "}\n\\end{center}\n";
 }
 
 // One line of an align* block: aligned on its relation (a boxed result is one box, aligned
@@ -25,14 +28,41 @@ std::string latex_line(const Step& st) {
   const std::string lhs = to_latex(st.lhs);
   const std::string rhs = st.equals_constant ? "\\text{const}" : to_latex(st.rhs);
   const std::string rel = st.equals_constant ? "=" : tex_relation(st.relation);
-  std::string body = st.boxed ? "&\\boxed{" + lhs + " " + rel + " " + rhs + "}" : lhs + " &" + rel + " " + rhs;
-  if (!st.note.empty()) body += " \\quad \\left(= " + [&] {
+  const std::string note = st.note.empty() ? "" : " \\quad \\left(= " + [&] {
     // note is "decimal unit"
     const auto sp = st.note.find(' ');
     if (sp == std::string::npos) return st.note;
     return st.note.substr(0, sp) + "\\," + unit_latex(st.note.substr(sp + 1));
   }() + "\\right)";
-  return body + (st.text.empty() ? "" : " \\tag*{" + prose(st, Format::latex) + "}");
+  const std::string tag = st.text.empty() ? "" : " \\tag*{" + prose(st, Format::latex) + "}";
+  // A line too long for the page is broken after the relation and at the sum's + and -, the
+  // rest indented (a broken result is not boxed: a box cannot span lines).
+  const double room = std::max(30.0, 62.0 - tex_width(lhs) - 0.6 * static_cast<double>(st.text.size()) - tex_width(note));
+  // A long left side (a condition's closed form, `... >= 0`) is broken the same way, the
+  // relation at the end of its last line.
+  const double page = 62;
+  if (tex_width(lhs) > 40 && tex_width(lhs) + tex_width(rhs) + tex_width(note) > page) {
+    const std::vector<std::string> left = break_tex(lhs, page - 4);
+    if (left.size() > 1) {
+      std::string body = "&" + left[0];
+      for (std::size_t k = 1; k < left.size(); ++k) body += " \\\\\n  &\\quad " + left[k];
+      const std::string last = rel + " " + rhs;
+      const bool fits = tex_width(left.back() + " " + last) + tex_width(note) < page - 4 - 0.6 * static_cast<double>(st.text.size());
+      if (fits) return body + " " + last + note + tag;
+      const std::vector<std::string> right = break_tex(rhs, page - 8);
+      body += " \\\\\n  &\\qquad " + rel + " " + right[0];
+      for (std::size_t k = 1; k < right.size(); ++k) body += " \\\\\n  &\\qquad " + right[k];
+      return body + note + tag;
+    }
+  }
+  const std::vector<std::string> lines = break_tex(rhs, room);
+  if (lines.size() > 1) {
+    std::string body = lhs + " &" + rel + " " + lines[0];
+    for (std::size_t k = 1; k < lines.size(); ++k) body += " \\\\\n  &\\quad " + lines[k];
+    return body + note + tag;
+  }
+  const std::string body = st.boxed ? "&\\boxed{" + lhs + " " + rel + " " + rhs + "}" : lhs + " &" + rel + " " + rhs;
+  return body + note + tag;
 }
 
 // Equations one after another, in one align* block.
@@ -44,6 +74,7 @@ std::string latex_equations(const std::vector<const Step*>& steps) {
 
 std::string latex_preamble(bool plots) {
   return "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{lmodern}\n\\usepackage{amsmath}\n"
+         "\\allowdisplaybreaks\n\\usepackage{graphicx}\n\\setlength{\\emergencystretch}{3em}\n"
          "\\usepackage[margin=2.5cm]{geometry}\n\\usepackage{tikz}\n\\usepackage{siunitx}\n" +
          std::string(plots ? "\\usepackage{pgfplots}\n\\pgfplotsset{compat=1.16}\n" : "") + "\\begin{document}\n";
 }
@@ -93,11 +124,13 @@ std::string latex_body(const Derivation& d, bool full, const std::string& title)
     flush_given();
     if (in_list) out += "\\end{itemize}\n";
     if (d.sweep_plot)
-      out += "\\subsection*{Sweep}\n\\begin{center}\n" + sweep_pgfplots(*d.sweep_plot) + "\\end{center}\n";
+      out += "\\subsection*{Sweep}\n\\begin{center}\n\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%\n" +
+             sweep_pgfplots(*d.sweep_plot) + "}\n\\end{center}\n";
     if (d.motion_plot) {
       out += "\\subsection*{Motion, integrated numerically}\n";
       for (const auto& e : d.motion_events) out += tex_escape(e) + "\n\n";
-      out += "\\begin{center}\n" + sweep_pgfplots(*d.motion_plot) + "\\end{center}\n";
+      out += "\\begin{center}\n\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%\n" +
+             sweep_pgfplots(*d.motion_plot) + "}\n\\end{center}\n";
     }
   } else {
     const std::vector<Step> results = result_steps(d);
@@ -142,9 +175,17 @@ class LatexWriter final : public Writer {
       out += "\\subsection*{" + tex_escape(d.title) + "}\nFind " + join(asked) + ".\n";
       for (const auto& a : d.answers) {
         if (a.closed_form) {
-          out += "\\begin{equation*}\n  " + to_latex(a.symbol) + " = " + to_latex(*a.closed_form);
-          if (a.value) out += " = " + a.value->decimal + (a.value->unit.empty() ? "" : "\\," + unit_latex(a.value->unit));
-          out += "\n\\end{equation*}\n";
+          const std::string value =
+              a.value ? " = " + a.value->decimal + (a.value->unit.empty() ? "" : "\\," + unit_latex(a.value->unit)) : "";
+          const std::string lhs = to_latex(a.symbol);
+          const auto lines = break_tex(to_latex(*a.closed_form), std::max(30.0, 62.0 - tex_width(lhs) - tex_width(value)));
+          if (lines.size() == 1) {
+            out += "\\begin{equation*}\n  " + lhs + " = " + lines[0] + value + "\n\\end{equation*}\n";
+          } else {  // broken as the derivation breaks it
+            out += "\\begin{align*}\n  " + lhs + " &= " + lines[0];
+            for (std::size_t k = 1; k < lines.size(); ++k) out += " \\\\\n  &\\quad " + lines[k];
+            out += value + "\n\\end{align*}\n";
+          }
         } else if (a.general) {
           out += "\\begin{equation*}\n  " + to_latex(a.symbol) + " = " + to_latex(*a.general) +
                  " \\quad\\text{(not determined alone)}\n\\end{equation*}\n";
