@@ -163,6 +163,39 @@ double tex_width(std::string_view s) {
   return w;
 }
 
+std::string displayed(const std::string& lhs, const std::string& rel, const std::string& rhs, const std::string& tail,
+                      double width) {
+  const std::string whole = lhs + " " + rel + " " + rhs + tail;
+  if (tex_width(whole) <= width) return whole;
+  auto block = [](const std::vector<std::string>& lines) {
+    std::string out = "\\begin{aligned}" + lines.front();
+    for (std::size_t k = 1; k < lines.size(); ++k) out += " \\\\ " + lines[k];
+    return out + "\\end{aligned}";
+  };
+  if (tex_width(lhs) > 0.6 * width) {
+    const auto left = break_tex(lhs, width - 4);
+    if (left.size() > 1) {
+      std::vector<std::string> lines{"&" + left.front()};
+      for (std::size_t k = 1; k < left.size(); ++k) lines.push_back("&\\quad " + left[k]);
+      const auto right = break_tex(rhs, width - 8);
+      if (right.size() == 1 && tex_width(left.back() + " " + rel + " " + rhs + tail) <= width - 4) {
+        lines.back() += " " + rel + " " + rhs + tail;
+      } else {
+        lines.push_back("&\\qquad " + rel + " " + right.front());
+        for (std::size_t k = 1; k < right.size(); ++k) lines.push_back("&\\qquad " + right[k]);
+        lines.back() += tail;
+      }
+      return block(lines);
+    }
+  }
+  const auto right = break_tex(rhs, std::max(30.0, width - tex_width(lhs) - 3 - tex_width(tail)));
+  if (right.size() == 1) return whole;
+  std::vector<std::string> lines{lhs + " &" + rel + " " + right.front()};
+  for (std::size_t k = 1; k < right.size(); ++k) lines.push_back("&\\quad " + right[k]);
+  lines.back() += tail;
+  return block(lines);
+}
+
 std::string inline_tex(const std::string& tex) {
   if (tex_width(tex) <= 40) return tex;
   std::string s = tex, sign;

@@ -20,6 +20,12 @@ namespace tackle {
 /// or "- ...").
 [[nodiscard]] std::vector<std::string> break_tex(const std::string& rhs, double width);
 
+/// `lhs rel rhs tail` as one display formula of about `width` characters a line: as it is
+/// when it fits, else an `aligned` block broken as break_tex breaks (a long left side too,
+/// the relation then after it), `tail` (a number, a unit) at the end of the last line.
+[[nodiscard]] std::string displayed(const std::string& lhs, const std::string& rel, const std::string& rhs,
+                                    const std::string& tail, double width);
+
 /// Math set inline in a paragraph, made breakable where it is long: TeX breaks inline math
 /// after a + or - at its top level only, so a long fraction becomes 1/(denominator) times
 /// its numerator and \\left( \\right) plain parentheses (which make no group).

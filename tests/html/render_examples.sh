@@ -27,8 +27,18 @@ for page in "${pages[@]}"; do
     echo "$page refers to the network:"; grep -Eo '(src|href)="(https?:)?//[^"]*|url\((https?:)?//[^)]*' "$page" | head; exit 1
   fi
   expected=$(occurrences 'class="math' "$page")
-  timeout 60 "$browser" --headless --no-sandbox --disable-gpu --no-first-run --virtual-time-budget=10000 \
-    --dump-dom "file://$page" > "$work/dom.html" 2> "$work/browser.err" || { echo "chromium failed on $page"; tail "$work/browser.err"; exit 1; }
+  # Measured in a copy: after the typesetting, every equation, paragraph and figure must fit
+  # its column in a 1000 px window (the count of those wider, and the worst, in pixels).
+  measured="${page%.html}-measured.html"
+  sed 's|</body>|<script>(function m(){if(document.body.getAttribute("data-math-rendered")!=="true"){setTimeout(m,20);return;}let n=0,w=0,what="";for(const e of document.querySelectorAll(".eq, p, li, figure")){const o=e.scrollWidth-e.clientWidth;if(o>2){n++;if(o>w){w=o;what=e.textContent.slice(0,80);}}}document.body.setAttribute("data-overflow",n+" "+w+" "+what.replace(/[^ -~]/g,"?"));})();</script></body>|' "$page" > "$measured"
+  timeout 60 "$browser" --headless --no-sandbox --disable-gpu --no-first-run --virtual-time-budget=10000 --window-size=1000,800 \
+    --dump-dom "file://$measured" > "$work/dom.html" 2> "$work/browser.err" || { echo "chromium failed on $page"; tail "$work/browser.err"; exit 1; }
+  overflow=$(grep -o 'data-overflow="[^"]*"' "$work/dom.html" | head -1)
+  case "$overflow" in
+    'data-overflow="0 '*) ;;
+    '') echo "$page: the width was not measured"; exit 1 ;;
+    *) echo "$page: wider than its column in a 1000 px window (count, worst in px, the first words): $overflow"; exit 1 ;;
+  esac
   grep -q 'data-math-rendered="true"' "$work/dom.html" || { echo "$page: the typesetting script did not run"; exit 1; }
   errors=$(occurrences 'class="katex-error"' "$work/dom.html")
   if [ "$errors" -ne 0 ]; then

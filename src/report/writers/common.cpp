@@ -64,7 +64,7 @@ std::string prose(const Step& st, Format f) {
   };
   for (std::size_t at; (at = st.text.find("{}", from)) != std::string::npos && k < st.math.size(); from = at + 2, ++k) {
     out += plain(st.text.substr(from, at - from));
-    out += f == Format::text ? to_text(st.math[k]) : f == Format::html ? html_math(to_latex(st.math[k])) : "$" + inline_tex(to_latex(st.math[k])) + "$";
+    out += f == Format::text ? to_text(st.math[k]) : f == Format::html ? html_math(inline_tex(to_latex(st.math[k]))) : "$" + inline_tex(to_latex(st.math[k])) + "$";
   }
   return out + plain(st.text.substr(from));
 }

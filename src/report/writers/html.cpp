@@ -7,6 +7,7 @@
 #include "report/sweep.hpp"
 #include "report/writer.hpp"
 #include "report/writers/common.hpp"
+#include "report/break.hpp"
 
 namespace tackle {
 
@@ -41,14 +42,18 @@ std::string html_statement(const std::string& s) {
 
 // One equation: typeset by KaTeX, its label as a tag, its number as a note.
 std::string html_equation(const Step& st) {
-  std::string body = st.equals_constant ? to_latex(st.lhs) + " = \\text{const}"
-                                        : to_latex(st.lhs) + " " + tex_relation(st.relation) + " " + to_latex(st.rhs);
-  if (st.boxed) body = "\\boxed{" + body + "}";
+  std::string note;
   if (!st.note.empty()) {
     const auto sp = st.note.find(' ');
-    body += " \\quad \\left(= " + (sp == std::string::npos ? st.note : st.note.substr(0, sp) + "\\," + unit_latex(st.note.substr(sp + 1))) +
-            "\\right)";
+    note = " \\quad \\left(= " + (sp == std::string::npos ? st.note : st.note.substr(0, sp) + "\\," + unit_latex(st.note.substr(sp + 1))) +
+           "\\right)";
   }
+  const std::string lhs = to_latex(st.lhs), rel = st.equals_constant ? "=" : tex_relation(st.relation);
+  const std::string rhs = st.equals_constant ? "\\text{const}" : to_latex(st.rhs);
+  // A formula too wide for the column is broken (a broken one is not boxed).
+  const double width = 58 - 0.5 * static_cast<double>(st.text.size());
+  std::string body = displayed(lhs, rel, rhs, note, std::max(30.0, width));
+  if (st.boxed && body.rfind("\\begin{aligned}", 0) != 0) body = "\\boxed{" + lhs + " " + rel + " " + rhs + "}" + note;
   std::string out = "<div class=\"eq\">" + html_math(body, true);
   if (!st.text.empty()) out += "<span class=\"tag\">(" + prose(st, Format::html) + ")</span>";
   return out + "</div>\n";
@@ -116,8 +121,9 @@ class HtmlWriter final : public Writer {
       out += "<h2>" + html_escape(d.title) + "</h2>\n<p>Find " + join(asked) + ".</p>\n";
       for (const auto& a : d.answers) {
         if (a.closed_form) {
-          std::string eq = to_latex(a.symbol) + " = " + to_latex(*a.closed_form);
-          if (a.value) eq += " = " + a.value->decimal + (a.value->unit.empty() ? "" : "\\," + unit_latex(a.value->unit));
+          const std::string value =
+              a.value ? " = " + a.value->decimal + (a.value->unit.empty() ? "" : "\\," + unit_latex(a.value->unit)) : "";
+          const std::string eq = displayed(to_latex(a.symbol), "=", to_latex(*a.closed_form), value, 58);
           out += "<div class=\"eq\">" + html_math(eq, true) + "</div>\n";
         } else if (a.general) {
           out += "<div class=\"eq\">" + html_math(to_latex(a.symbol) + " = " + to_latex(*a.general), true) +
