@@ -1,6 +1,7 @@
 #include "description/yaml_reader.hpp"
 
 #include <algorithm>
+#include <new>
 #include <optional>
 #include <set>
 #include <string_view>
@@ -97,6 +98,12 @@ class Loader {
         report_parser_error();
         doc.root_ = nullptr;
         return doc;
+      }
+      // No event without an error: libyaml ran out of memory on the way (it then answers
+      // every call with an empty event, and this loop would never end).
+      if (ev.type == YAML_NO_EVENT) {
+        yaml_event_delete(&ev);
+        throw std::bad_alloc();
       }
       const bool done = handle(ev, doc);
       yaml_event_delete(&ev);
