@@ -444,10 +444,13 @@ std::optional<EquationsOfMotion::Linearised> linearised_system(const Model& m, c
     }
   const Eigen::EigenSolver<Eigen::MatrixXd> es(Kn);
   if (es.info() != Eigen::Success) return lin;
+  const double scale = Kn.cwiseAbs().maxCoeff();
   for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
     const auto ev = es.eigenvalues()(i);
-    if (std::abs(ev.imag()) > 1e-9 * (1 + std::abs(ev.real())) || ev.real() <= 0) return std::nullopt;  // not a stable rest
-    lin.frequencies.push_back(std::sqrt(ev.real()));
+    // A zero eigenvalue is a free mode (a cart that rolls on with no spring): frequency 0.
+    const double tiny = 1e-12 * (1 + scale);
+    if (std::abs(ev.imag()) > 1e-9 * (1 + std::abs(ev.real())) || ev.real() < -tiny) return std::nullopt;  // not a stable rest
+    lin.frequencies.push_back(ev.real() <= tiny ? 0.0 : std::sqrt(ev.real()));
   }
   std::sort(lin.frequencies.begin(), lin.frequencies.end());
   return lin;

@@ -244,6 +244,23 @@ void bodies(BuildContext& ctx) {
     ctx.m.bodies.push_back(body);
   }
   ctx.m.candidates.insert(ctx.m.candidates.begin(), accelerations.begin(), accelerations.end());
+  // A center of mass written in another body's coordinates too (a pendulum's bob in its
+  // cart's x): its acceleration by the chain rule on every coordinate, not only its own
+  // (made once every body's coordinates exist).
+  if (!one_d)
+    for (std::size_t i = 0; i < ctx.d.bodies.size(); ++i) {
+      const auto& b = ctx.d.bodies[i];
+      const auto it = ctx.body_index.find(b.name.text);
+      if (it == ctx.body_index.end() || b.acceleration || b.accel_along) continue;
+      Body& body = ctx.m.bodies[it->second];
+      if (!body.has_cm) continue;
+      bool others = false;
+      for (const auto& c : ctx.m.coordinates)
+        if (c.body != it->second)
+          for (const auto& x : body.cm) others = others || x.has(c.q);
+      if (!others) continue;
+      for (int k = 0; k < 3; ++k) body.acceleration[k] = time_derivative(time_derivative(body.cm[k], ctx.m.coordinates, {}), ctx.m.coordinates, {});
+    }
   // Masses after every coordinate exists (a mass may not depend on them, but the message
   // for a misused name is clearer this way).
   for (std::size_t i = 0; i < ctx.d.bodies.size(); ++i) {

@@ -422,6 +422,42 @@ void roll(BuildContext& ctx, Instance& in, const ConstraintSpec& k) {
   ctx.m.constraints.push_back({in.label, in.c.name ? in.c.name->text : "", q, "travel of " + body.name + " along the surface plus the arc it turns through (it rolls without slipping)"});
 }
 
+// Two bodies joined at a point P, one of them (or both) turning: for each body, P stays its
+// own point. A body that only translates carries P at a fixed offset from its center; a
+// turning one at a fixed offset in its frame, Rot(angle) r0, with r0 where P sits in the
+// layout. What the coordinates do not already keep so (a pendulum's bob written in the
+// cart's x and its angle keeps its pin) is a constraint, one per axis.
+void pinned_together(BuildContext& ctx, Instance& in, const Body& first, const Body& second, const Point& p) {
+  const std::string cname = in.c.name ? in.c.name->text : "";
+  exmap layout_coordinates;
+  for (const auto& c : ctx.m.coordinates)
+    if (auto it = ctx.layout.find(c.q); it != ctx.layout.end()) layout_coordinates[c.q] = it->second;
+    else layout_coordinates[c.q] = 0;
+  for (const Body* b : {&first, &second}) {
+    const Vec d = p.position - b->cm;
+    Vec q = d;  // must stay constant
+    if (!b->angle.is_zero()) {
+      const ex& a = b->angle;
+      // P's offset in the body's frame, Rot(-a) d; where it sits in the layout, r0.
+      const ex rx = fewer_trig_terms(normal((cos(a) * d[0] + sin(a) * d[1]).expand()));
+      const ex ry = fewer_trig_terms(normal((-sin(a) * d[0] + cos(a) * d[1]).expand()));
+      bool fixed = true;
+      for (const auto& c : ctx.m.coordinates) fixed = fixed && !rx.has(c.q) && !ry.has(c.q);
+      if (fixed) continue;  // the coordinates keep P on this body
+      const ex r0x = rx.subs(layout_coordinates), r0y = ry.subs(layout_coordinates);
+      q = {d[0] - (cos(a) * r0x - sin(a) * r0y), d[1] - (sin(a) * r0x + cos(a) * r0y), 0};
+    }
+    for (int i = 0; i < 2; ++i) {
+      const ex qi = fewer_trig_terms(q[i].expand());
+      bool moves = false;
+      for (const auto& coordinate : ctx.m.coordinates) moves = moves || qi.has(coordinate.q);
+      if (!moves) continue;
+      ctx.m.constraints.push_back({in.label + " (" + ctx.m.axes[i] + ", " + b->name + ")", cname, qi,
+                                   "position of the joint " + p.name + " on " + b->name + " along " + ctx.m.axes[i]});
+    }
+  }
+}
+
 void add_constraints(BuildContext& ctx, Instance& in) {
   const ConnectionDesc& c = in.c;
   const Rule* rule = &in.rule;
@@ -438,6 +474,13 @@ void add_constraints(BuildContext& ctx, Instance& in) {
       const Body& second = ctx.m.bodies[b->second];
       if (a->second == b->second) {
         ctx.diags.error(c.at, "a " + in.what + " joins body '" + first.name + "' to itself (expected two different bodies)");
+        continue;
+      }
+      // With a body that turns, the bodies do not share their translation: each one's own
+      // point at the joint stays at the joint (a pendulum pinned to a cart).
+      const auto at = in.point_args.find("at");
+      if ((!first.angle.is_zero() || !second.angle.is_zero()) && at != in.point_args.end()) {
+        pinned_together(ctx, in, first, second, ctx.m.points[at->second]);
         continue;
       }
       for (int i = 0; i < ctx.m.dims(); ++i) {

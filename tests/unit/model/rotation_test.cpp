@@ -258,3 +258,21 @@ TEST_CASE("Rotation: the rolling condition is solved for mu where the incline's 
       if (sv.parameter.is_equal(mu) && sv.op == ">=" && same(sv.bound, sin(th) / (3 * cos(th)))) found = true;
   CHECK(found);
 }
+
+TEST_CASE("Rotation: a bob written in its cart's coordinate accelerates with the cart (chain rule on every coordinate)", "[rotation]") {
+  // The bob at (x + l sin(theta), -l cos(theta)): its LMB in x carries m ddot(x) too. (It did
+  // not: only the body's own coordinates were differentiated, and the pendulum on a cart
+  // swung as if its pin were fixed.)
+  const auto a = run_text(read_example("rotation-pendulum-on-a-cart.yaml"));
+  const ex m = sym(*a, "m"), l = sym(*a, "l"), x_dd = sym(*a, "ddot(x)"), th = sym(*a, "theta"), th_d = sym(*a, "dot(theta)"),
+           th_dd = sym(*a, "ddot(theta)");
+  bool found = false;
+  for (const Equation& e : a->system.equations)
+    if (e.label == "LMB bob (x)") {
+      found = true;
+      CHECK(same(e.rhs, m * x_dd + m * l * cos(th) * th_dd - m * l * sin(th) * pow(th_d, 2)));
+    }
+  CHECK(found);
+  // The pin joint adds no constraint: the coordinates keep the pin on both bodies.
+  CHECK(a->model.constraints.empty());
+}
