@@ -1,4 +1,5 @@
 // The tackle command as a user runs it: outputs, golden reports, exit codes.
+#include <algorithm>
 #include <catch2/catch.hpp>
 
 #include <fcntl.h>
@@ -18,6 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "description/yaml_reader.hpp"
 #include "expr/parse.hpp"
 #include "expr/print.hpp"
 #include "../support/helpers.hpp"
@@ -916,4 +918,42 @@ TEST_CASE("CLI: the README's first problem gives what the README shows", "[cli][
   }
   CHECK(commands == 4);
   fs::remove_all(dir);
+}
+
+TEST_CASE("Docs: every YAML block in the README and docs/ reads as YAML, and a whole description in one derives", "[docs]") {
+  // Documentation that cannot drift silently: a block that is a whole description (it starts
+  // with a title) is derived; every other block at least reads as YAML.
+  std::vector<fs::path> files{fs::path(TACKLE_SOURCE_DIR) / "README.md"};
+  for (const auto& e : fs::directory_iterator(fs::path(TACKLE_SOURCE_DIR) / "docs"))
+    if (e.path().extension() == ".md") files.push_back(e.path());
+  std::size_t blocks = 0, derived = 0;
+  for (const auto& f : files) {
+    const std::string text = slurp(f);
+    for (std::size_t at = 0; (at = text.find("```yaml\n", at)) != std::string::npos;) {
+      const std::size_t begin = at + 8, close = text.find("```", begin);  // (a closing fence may be indented)
+      REQUIRE(close != std::string::npos);
+      const std::size_t end = text.rfind('\n', close);
+      const std::string block = text.substr(begin, end - begin + 1);
+      const std::size_t line = static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(begin), '\n')) + 1;
+      INFO(f.filename().string() << ":" << line);
+      tackle::Diagnostics diags;
+      (void)tackle::yaml::load(block, f.filename().string(), diags);
+      CHECK(diags.empty());
+      // (A sketch of every key, with "..." in it, is not a problem to derive.)
+      if (block.rfind("title:", 0) == 0 && block.find("...") == std::string::npos) {
+        const fs::path dir = fs::temp_directory_path() / ("tackle-docs-" + std::to_string(::getpid()));
+        fs::create_directories(dir);
+        std::ofstream(dir / "block.yaml") << block;
+        const Run r = run_tackle("derive " + (dir / "block.yaml").string());
+        CHECK(r.code == 0);
+        CHECK(r.err.empty());
+        fs::remove_all(dir);
+        ++derived;
+      }
+      ++blocks;
+      at = close + 3;
+    }
+  }
+  CHECK(blocks >= 10);
+  CHECK(derived >= 1);
 }
