@@ -65,7 +65,8 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
     for (std::size_t i = 0; i < eom.dof; ++i) {
       ex lhs = 0;
       for (std::size_t j = 0; j < eom.dof; ++j) lhs += eom.M(i, j) * eom.ddq[j] + eom.C(i, j) * eom.dq[j] + eom.K(i, j) * eom.q[j];
-      Step* st = equation("equation of motion (" + to_text(eom.q[i]) + ")", lhs, eom.forcing[i]);
+      Step* st = equation("equation of motion ({})", lhs, eom.forcing[i]);
+      st->math = {eom.q[i]};
       st->boxed = true;
     }
     if (eom.equilibrium)
@@ -75,7 +76,7 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
       }
   } else {
     text("Equations of motion, the constraint forces eliminated (nonlinear: " + eom.nonlinear + "):");
-    for (std::size_t i = 0; i < eom.dof; ++i) equation("equation of motion (" + to_text(eom.q[i]) + ")", eom.ddq[i], eom.acceleration[i]);
+    for (std::size_t i = 0; i < eom.dof; ++i) equation("equation of motion ({})", eom.ddq[i], eom.acceleration[i])->math = {eom.q[i]};
   }
   if (!eom.natural_frequencies.empty()) {
     std::string f;
@@ -133,7 +134,7 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
         ex rhs = 0;
         for (std::size_t j = 0; j < eom.dof; ++j)
           rhs -= lin->stiffness_matrix(static_cast<unsigned>(i), static_cast<unsigned>(j)) * (eom.q[j] - lin->about);
-        equation("linearised (" + to_text(eom.q[i]) + ")", eom.ddq[i], rhs);
+        equation("linearised ({})", eom.ddq[i], rhs)->math = {eom.q[i]};
       }
       if (!lin->frequencies.empty()) {
         std::string f;
@@ -213,7 +214,8 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
     }
   }
   for (const auto& q : mo.quantities) {
-    Step* st = equation(q.name + " in time", symbol(q.name + "(t)", q.tex + "(t)"), q.of_t);
+    Step* st = equation("{} in time", symbol(q.name + "(t)", q.tex + "(t)"), q.of_t);
+    st->math = {symbol(q.name, q.tex)};
     st->boxed = true;
   }
   for (const auto& c : mo.conditions) {

@@ -46,7 +46,7 @@ void narrate_interval_end(Derivation& d, const Model& m, const IntervalEnd& end,
     if (m.interval->duration) {
       n.text_with("With {} constant, the rate at the end is the rate at the start plus the acceleration times the duration:",
                   {b.accel});
-      n.equation("end of the interval: " + to_text(b.rate), r.rate, r.from + r.accel * *m.interval->duration);
+      n.equation("end of the interval: {}", r.rate, r.from + r.accel * *m.interval->duration)->math = {b.rate};
       answer(d, n, table, r.rate, r.value, Dimension::velocity(), options, "at the end of the interval");
       if (r.displacement) {
         n.text("Over the duration the body moves by");
@@ -56,7 +56,8 @@ void narrate_interval_end(Derivation& d, const Model& m, const IntervalEnd& end,
       }
     } else {
       n.text_with("With {} constant, the square of the rate changes by twice the acceleration times the distance:", {b.accel});
-      n.equation("end of the interval: " + to_text(b.rate) + "^2", pow(r.rate, 2), pow(r.from, 2) + 2 * r.accel * *m.interval->distance);
+      n.equation("end of the interval: {}", pow(r.rate, 2), pow(r.from, 2) + 2 * r.accel * *m.interval->distance)->math = {
+          pow(b.rate, 2)};
       n.text("The body gets to the end of the interval when {} and {}; the rate there takes the sign of the distance "
              "(the first time the body has moved by it).");
       d.steps.back().math = {r.reaches[0].first >= 0, r.reaches[1].first > 0};
