@@ -331,7 +331,13 @@ std::optional<Figure> FigureMaker::draw(const std::vector<int>& bodies, bool sys
     } else if (!body_points[i].empty()) {
       d.centre = scale * proj(body_points[i].front());
     }
-    if (!b.drawn_shape.empty()) {
+    if (b.drawn_shape.empty() && proj.dims == 2 && !b.angle.is_zero() && b.inertia.is_zero()) {
+      // A turning particle (a pendulum's bob): a small disk at its center, the forces at it.
+      d.outline.shape = FigureOutline::Shape::circle;
+      d.outline.centre = fp(d.centre);
+      d.outline.radius = 0.3;
+      d.particle = true;
+    } else if (!b.drawn_shape.empty()) {
       const double unit = proj.dims == 1 ? particle_side : scale;
       // Turned by the body's angle where it has one.
       const double turned = proj.dims == 2 ? num(b.angle).value_or(0) : 0;
