@@ -118,6 +118,7 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
       table_out.latex.push_back(to_latex(*r.value));
       std::string dim_problem;
       const auto dim = dimension_of(e, table, dim_problem);
+      table_out.units.push_back(dim ? si_unit_name(*dim) : "");
       if (!dim || (common && !(*common == *dim))) same_dimension = false;
       else common = dim;
     }

@@ -18,6 +18,7 @@ struct SweepResult {
   std::vector<std::string> names;   // one per plotted expression, as written
   std::vector<std::string> latex;   // the same in LaTeX
   std::string y_unit;               // when every curve has the same dimension
+  std::vector<std::string> units;   // each curve's SI unit ("" when it has none or it is unknown)
   std::vector<double> x;
   std::vector<std::vector<std::optional<double>>> y;  // [curve][point]
   std::vector<bool> valid;                            // every validity condition holds

@@ -124,6 +124,7 @@ SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec
   for (const auto& c : curves) {
     std::string problem;
     auto dim = dimension_of(c, table, problem);
+    r.units.push_back(dim ? si_unit_name(*dim) : "");
     if (!dim || (common && !(*common == *dim))) same = false;
     else common = dim;
   }
@@ -311,9 +312,15 @@ std::string sweep_svg(const SweepResult& r) {
                        sy(0), left + pw);
   out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", left + pw / 2, H - 15,
                      r.x_name + (r.x_unit.empty() ? "" : " [" + r.x_unit + "]"));
-  if (!r.y_unit.empty())
-    out += fmt::format("<text x=\"18\" y=\"{}\" transform=\"rotate(-90 18 {})\" text-anchor=\"middle\">[{}]</text>\n",
-                       top + ph / 2, top + ph / 2, r.y_unit);
+  {
+    // The y axis says what it shows and in which unit: "y [m]", "N_A, N_B [N]"; curves of
+    // different units say theirs in the legend.
+    std::string names;
+    for (std::size_t c = 0; c < r.names.size(); ++c) names += (c ? ", " : "") + r.names[c];
+    const std::string title = r.y_unit.empty() ? (r.names.size() > 1 ? std::string("(units in the legend)") : names) : names + " [" + r.y_unit + "]";
+    out += fmt::format("<text x=\"18\" y=\"{}\" transform=\"rotate(-90 18 {})\" text-anchor=\"middle\">{}</text>\n",
+                       top + ph / 2, top + ph / 2, title);
+  }
   for (std::size_t c = 0; c < r.y.size(); ++c) {
     const char* colour = colours[c % 6];
     // Runs of points with the same validity: solid where valid, dashed where not.
@@ -326,7 +333,8 @@ std::string sweep_svg(const SweepResult& r) {
     const double ly = top + 10 + 20 * static_cast<double>(c);
     out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"2\"/>"
                        "<text x=\"{}\" y=\"{}\">{}</text>\n",
-                       left + pw + 15, ly, left + pw + 40, ly, colour, left + pw + 45, ly + 4, r.names[c]);
+                       left + pw + 15, ly, left + pw + 40, ly, colour, left + pw + 45, ly + 4,
+                       r.names[c] + (r.y_unit.empty() && c < r.units.size() && !r.units[c].empty() ? " [" + r.units[c] + "]" : ""));
   }
   if (std::find(r.valid.begin(), r.valid.end(), false) != r.valid.end())
     out += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"11\">dashed: a validity</text>"
@@ -339,14 +347,20 @@ std::string sweep_svg(const SweepResult& r) {
 std::string sweep_pgfplots(const SweepResult& r) {
   std::string out = "\\begin{tikzpicture}\n\\begin{axis}[width=0.8\\textwidth, height=0.5\\textwidth, xlabel={$" +
                     r.x_latex + "$" + (r.x_unit.empty() ? "" : " [$" + unit_latex(r.x_unit) + "$]") +
-                    "}, " + (r.y_unit.empty() ? "" : "ylabel={[$" + unit_latex(r.y_unit) + "$]}, ") +
+                    "}, ylabel={" + [&] {
+                      std::string names;
+                      for (std::size_t c = 0; c < r.latex.size(); ++c) names += std::string(c ? ", " : "") + "$" + r.latex[c] + "$";
+                      if (!r.y_unit.empty()) return names + " [$" + unit_latex(r.y_unit) + "$]";
+                      return r.latex.size() > 1 ? std::string("(units in the legend)") : names;
+                    }() + "}, " +
                     "legend pos=outer north east, grid=major, scaled x ticks=false, xticklabel style={/pgf/number format/fixed}]\n";
   // As the SVG: each curve in its colour, solid where every validity condition holds and
   // dashed where one fails (runs of points with the same validity, joined at their ends).
   static const char* const colours[] = {"blue", "red", "brown!70!black", "teal", "violet", "black"};
   for (std::size_t c = 0; c < r.y.size(); ++c) {
     const std::string colour = colours[c % 6];
-    out += "\\addlegendimage{color=" + colour + ", thick}\n\\addlegendentry{$" + r.latex[c] + "$}\n";
+    const std::string unit = r.y_unit.empty() && c < r.units.size() && !r.units[c].empty() ? " [$" + unit_latex(r.units[c]) + "$]" : "";
+    out += "\\addlegendimage{color=" + colour + ", thick}\n\\addlegendentry{$" + r.latex[c] + "$" + unit + "}\n";
     for (const Run& run : validity_runs(r, c)) {
       std::string points;
       for (std::size_t j = run.begin; j < run.end; ++j) points += "(" + num(r.x[j]) + "," + num(*r.y[c][j]) + ") ";

@@ -36,6 +36,9 @@ TEST_CASE("Sweep: figure 12.28, N1, N2 and N1 - N2 against h/l for mg = 1, mu = 
   // As the SVG, the tipped part (h > l/(2 mu) = 1 m, N_A < 0) dashed, joined to the solid part.
   CHECK(pgf.find("\\addplot[color=blue, thick, forget plot, dashed] coordinates {(1.05,-0.025) (1.1,-0.05)") != std::string::npos);
   CHECK(pgf.find("\\addlegendentry{dashed: invalid}") != std::string::npos);
+  // The y axis says what it shows, in its unit (issue 32, item 5).
+  CHECK(svg.find(">N_A, N_B, N_A - N_B [N]</text>") != std::string::npos);
+  CHECK(pgf.find("ylabel={$N_{A}$, $N_{B}$, $N_{A} - N_{B}$ [$\\mathrm{N}$]}") != std::string::npos);
 }
 
 TEST_CASE("Sweep: against h/l, the book's axis, with h's own values beside it", "[sweep]") {
