@@ -530,7 +530,8 @@ TEST_CASE("CLI: a problem without a statement is stated from its description, wi
   REQUIRE(key.code == 0);
   REQUIRE(two.code == 0);
   std::size_t at = 0;
-  for (const auto& v : nlohmann::json::parse(key.out)["problems"][0]["variants"])
+  const auto keyed = nlohmann::json::parse(key.out);  // (kept: a range-for over a temporary's part dangles)
+  for (const auto& v : keyed["problems"][0]["variants"])
     for (const auto& [name, q] : v["parameters"].items()) {
       INFO(name);
       CHECK(two.out.find(" = " + q["decimal"].get<std::string>(), at) != std::string::npos);
