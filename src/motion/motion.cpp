@@ -928,10 +928,15 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   }
   // The strands' lengths need the dependent coordinates too (a block running into the pulley
   // over it): placed from 'initial' where it gives their starts, each strand on its own terms.
+  // (Solved again only when a strand needs a coordinate the quantities and conditions do not.)
   ex with_strands = all;
-  for (const auto& [length, what] : m.strand_lengths) with_strands += length;
+  bool unplaced_strand = false;
+  for (const auto& [length, what] : m.strand_lengths) {
+    with_strands += length;
+    unplaced_strand = unplaced_strand || unplaced(put_in(length, dep)).has_value();
+  }
   const Dependents for_strands =
-      m.strand_lengths.empty() || !for_all.problem.empty() ? for_all : dependents(m, s, sol, spec, with_strands);
+      !unplaced_strand || !for_all.problem.empty() ? for_all : dependents(m, s, sol, spec, with_strands);
   const Dependents& strand_dep = for_strands.problem.empty() ? for_strands : dep;
   auto strand_unplaced = [&](const ex& e) -> std::optional<ex> {
     for (const auto& c : m.coordinates)

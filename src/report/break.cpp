@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 
 namespace tackle {
 
@@ -87,6 +88,16 @@ std::vector<std::string> terms_of(std::string_view s) {
   return out;
 }
 
+// `s` as \frac{num}{den} when it is one fraction as a whole: its numerator and denominator.
+std::optional<std::pair<std::string, std::string>> whole_fraction(const std::string& s) {
+  if (s.rfind("\\frac{", 0) != 0) return std::nullopt;
+  const std::size_t num_close = closing(s, 5);
+  if (num_close == std::string::npos || num_close + 1 >= s.size() || s[num_close + 1] != '{' ||
+      closing(s, num_close + 1) != s.size() - 1)
+    return std::nullopt;
+  return std::make_pair(s.substr(6, num_close - 6), s.substr(num_close + 2, s.size() - num_close - 3));
+}
+
 // Terms packed into lines of about `width`: `head` before the first, `tail` after the last.
 std::vector<std::string> pack(const std::vector<std::string>& terms, double width, const std::string& head, const std::string& tail) {
   std::vector<std::string> lines;
@@ -163,15 +174,10 @@ double tex_width(std::string_view s) {
   return w;
 }
 
-std::string displayed(const std::string& lhs, const std::string& rel, const std::string& rhs, const std::string& tail,
-                      double width) {
+std::vector<std::string> displayed_lines(const std::string& lhs, const std::string& rel, const std::string& rhs,
+                                         const std::string& tail, double width) {
   const std::string whole = lhs + " " + rel + " " + rhs + tail;
-  if (tex_width(whole) <= width) return whole;
-  auto block = [](const std::vector<std::string>& lines) {
-    std::string out = "\\begin{aligned}" + lines.front();
-    for (std::size_t k = 1; k < lines.size(); ++k) out += " \\\\ " + lines[k];
-    return out + "\\end{aligned}";
-  };
+  if (tex_width(whole) <= width) return {whole};
   if (tex_width(lhs) > 0.6 * width) {
     const auto left = break_tex(lhs, width - 4);
     if (left.size() > 1) {
@@ -185,27 +191,33 @@ std::string displayed(const std::string& lhs, const std::string& rel, const std:
         for (std::size_t k = 1; k < right.size(); ++k) lines.push_back("&\\qquad " + right[k]);
         lines.back() += tail;
       }
-      return block(lines);
+      return lines;
     }
   }
   const auto right = break_tex(rhs, std::max(30.0, width - tex_width(lhs) - 3 - tex_width(tail)));
-  if (right.size() == 1) return whole;
+  if (right.size() == 1) return {whole};
   std::vector<std::string> lines{lhs + " &" + rel + " " + right.front()};
   for (std::size_t k = 1; k < right.size(); ++k) lines.push_back("&\\quad " + right[k]);
   lines.back() += tail;
-  return block(lines);
+  return lines;
+}
+
+std::string displayed(const std::string& lhs, const std::string& rel, const std::string& rhs, const std::string& tail,
+                      double width) {
+  const auto lines = displayed_lines(lhs, rel, rhs, tail, width);
+  if (lines.size() == 1) return lines.front();
+  std::string out = "\\begin{aligned}" + lines.front();
+  for (std::size_t k = 1; k < lines.size(); ++k) out += " \\\\ " + lines[k];
+  return out + "\\end{aligned}";
 }
 
 std::string inline_tex(const std::string& tex) {
   if (tex_width(tex) <= 40) return tex;
   std::string s = tex, sign;
   if (!s.empty() && s[0] == '-') sign = "-", s = s.substr(1);
-  if (s.rfind("\\frac{", 0) == 0) {
-    const std::size_t num_close = closing(s, 5);
-    if (num_close != std::string::npos && num_close + 1 < s.size() && s[num_close + 1] == '{' && closing(s, num_close + 1) == s.size() - 1) {
-      const std::string num = s.substr(6, num_close - 6), den = s.substr(num_close + 2, s.size() - num_close - 3);
-      s = "\\frac{1}{" + den + "} " + (terms_of(num).size() > 1 ? "(" + num + ")" : num);
-    }
+  if (const auto f = whole_fraction(s)) {
+    const auto& [num, den] = *f;
+    s = "\\frac{1}{" + den + "} " + (terms_of(num).size() > 1 ? "(" + num + ")" : num);
   }
   s = sign + s;
   for (const auto& [from, to] : {std::pair<std::string, std::string>{"\\left(", "("}, {"\\right)", ")"}})
@@ -276,24 +288,18 @@ std::vector<std::string> break_tex(const std::string& rhs, double width) {
     s = s.substr(1);
     while (!s.empty() && s[0] == ' ') s = s.substr(1);
   }
-  if (s.rfind("\\frac{", 0) == 0) {
-    const std::size_t num_open = 5, num_close = closing(s, num_open);
-    if (num_close != std::string::npos && num_close + 1 < s.size() && s[num_close + 1] == '{' &&
-        closing(s, num_close + 1) == s.size() - 1) {
-      const std::string num = s.substr(num_open + 1, num_close - num_open - 1);
-      const std::string den = s.substr(num_close + 2, s.size() - num_close - 3);
-      // A short denominator goes first, as 1/den; a long one is broken too, after a slash.
-      if (tex_width(den) <= 0.5 * width) {
-        const std::string head = sign + "\\frac{1}{" + den + "} ";
-        auto lines = broken(num, width, head, "", true);
-        if (lines.size() > 1) return lines;
-        return {rhs};
-      }
-      auto lines = broken(num, width, sign, "", true);
-      const auto under = broken(den, width, "\\big/ ", "", true);
-      lines.insert(lines.end(), under.begin(), under.end());
-      return lines;
+  if (const auto f = whole_fraction(s)) {
+    const auto& [num, den] = *f;
+    // A short denominator goes first, as 1/den; a long one is broken too, after a slash.
+    if (tex_width(den) <= 0.5 * width) {
+      auto lines = broken(num, width, sign + "\\frac{1}{" + den + "} ", "", true);
+      if (lines.size() > 1) return lines;
+      return {rhs};
     }
+    auto lines = broken(num, width, sign, "", true);
+    const auto under = broken(den, width, "\\big/ ", "", true);
+    lines.insert(lines.end(), under.begin(), under.end());
+    return lines;
   }
   // A root of a long sum: its power 1/2, broken inside its parentheses.
   if (s.rfind("\\sqrt{", 0) == 0 && closing(s, 5) == s.size() - 1) {

@@ -725,6 +725,9 @@ Solution solve(const Model& model, const EquationSystem& s) {
   if (auto r = solve_level(model, s.position_equations, SymbolRole::coordinate))
     sol.positions = std::make_shared<const Solution>(std::move(*r));
   const AcuteAngles acute = acute_angles(model);
+  // The given numbers (and the acute angles' stand-ins at them), made once for every condition.
+  exmap values = model.symbols->values();
+  for (const auto& [stand_in, f] : acute.back) values[stand_in] = f.subs(values);
   for (const auto& c : model.conditions) {
     CheckedCondition cc;
     cc.condition = &c;
@@ -774,8 +777,6 @@ Solution solve(const Model& model, const EquationSystem& s) {
           if (!put.is_equal(normal_form)) for_solving = normal(put);
         }
         const ex rest = strip_signed_factors_of(numer_denom_of_normal(for_solving), op);
-        exmap values = model.symbols->values();
-        for (const auto& [stand_in, f] : acute.back) values[stand_in] = f.subs(values);
         cc.solved = solve_reduced(rest, op, parameters, &values);
         for (auto& sv : cc.solved)
           if (!acute.back.empty()) {

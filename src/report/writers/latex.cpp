@@ -36,31 +36,9 @@ std::string latex_line(const Step& st) {
   }() + "\\right)";
   const std::string tag = st.text.empty() ? "" : " \\tag*{" + prose(st, Format::latex) + "}";
   // A line too long for the page is broken after the relation and at the sum's + and -, the
-  // rest indented (a broken result is not boxed: a box cannot span lines).
-  const double room = std::max(30.0, 62.0 - tex_width(lhs) - 0.6 * static_cast<double>(st.text.size()) - tex_width(note));
-  // A long left side (a condition's closed form, `... >= 0`) is broken the same way, the
-  // relation at the end of its last line.
-  const double page = 62;
-  if (tex_width(lhs) > 40 && tex_width(lhs) + tex_width(rhs) + tex_width(note) > page) {
-    const std::vector<std::string> left = break_tex(lhs, page - 4);
-    if (left.size() > 1) {
-      std::string body = "&" + left[0];
-      for (std::size_t k = 1; k < left.size(); ++k) body += " \\\\\n  &\\quad " + left[k];
-      const std::string last = rel + " " + rhs;
-      const bool fits = tex_width(left.back() + " " + last) + tex_width(note) < page - 4 - 0.6 * static_cast<double>(st.text.size());
-      if (fits) return body + " " + last + note + tag;
-      const std::vector<std::string> right = break_tex(rhs, page - 8);
-      body += " \\\\\n  &\\qquad " + rel + " " + right[0];
-      for (std::size_t k = 1; k < right.size(); ++k) body += " \\\\\n  &\\qquad " + right[k];
-      return body + note + tag;
-    }
-  }
-  const std::vector<std::string> lines = break_tex(rhs, room);
-  if (lines.size() > 1) {
-    std::string body = lhs + " &" + rel + " " + lines[0];
-    for (std::size_t k = 1; k < lines.size(); ++k) body += " \\\\\n  &\\quad " + lines[k];
-    return body + note + tag;
-  }
+  // rest indented, as the HTML breaks it (a broken result is not boxed: a box cannot span lines).
+  const auto lines = displayed_lines(lhs, rel, rhs, note, std::max(30.0, 62.0 - 0.6 * static_cast<double>(st.text.size())));
+  if (lines.size() > 1) return join(lines, " \\\\\n  ") + tag;
   const std::string body = st.boxed ? "&\\boxed{" + lhs + " " + rel + " " + rhs + "}" : lhs + " &" + rel + " " + rhs;
   return body + note + tag;
 }
@@ -177,15 +155,11 @@ class LatexWriter final : public Writer {
         if (a.closed_form) {
           const std::string value =
               a.value ? " = " + a.value->decimal + (a.value->unit.empty() ? "" : "\\," + unit_latex(a.value->unit)) : "";
-          const std::string lhs = to_latex(a.symbol);
-          const auto lines = break_tex(to_latex(*a.closed_form), std::max(30.0, 62.0 - tex_width(lhs) - tex_width(value)));
-          if (lines.size() == 1) {
-            out += "\\begin{equation*}\n  " + lhs + " = " + lines[0] + value + "\n\\end{equation*}\n";
-          } else {  // broken as the derivation breaks it
-            out += "\\begin{align*}\n  " + lhs + " &= " + lines[0];
-            for (std::size_t k = 1; k < lines.size(); ++k) out += " \\\\\n  &\\quad " + lines[k];
-            out += value + "\n\\end{align*}\n";
-          }
+          const auto lines = displayed_lines(to_latex(a.symbol), "=", to_latex(*a.closed_form), value, 62);
+          if (lines.size() == 1)
+            out += "\\begin{equation*}\n  " + lines[0] + "\n\\end{equation*}\n";
+          else  // broken as the derivation breaks it
+            out += "\\begin{align*}\n  " + join(lines, " \\\\\n  ") + "\n\\end{align*}\n";
         } else if (a.general) {
           out += "\\begin{equation*}\n  " + to_latex(a.symbol) + " = " + to_latex(*a.general) +
                  " \\quad\\text{(not determined alone)}\n\\end{equation*}\n";
