@@ -102,6 +102,7 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
   table_out.title = m.title;
   table_out.x_name = "t";
   table_out.x_unit = "s";
+  table_out.x_latex = "t";
   std::vector<Compiled> columns;
   std::optional<Dimension> common;
   bool same_dimension = true;

@@ -22,6 +22,13 @@ struct SweepResult {
   std::vector<double> x;
   std::vector<std::vector<std::optional<double>>> y;  // [curve][point]
   std::vector<bool> valid;                            // every validity condition holds
+  // Where the validity changes between two samples, the point where the failing condition
+  // reaches its bound: the solid part ends and the dashed part begins there. It is a sample
+  // when the bound falls on one, else a point put in between (not a sample: the CSV leaves it
+  // out). Empty: no such points.
+  std::vector<bool> boundary, inserted;
+  [[nodiscard]] bool is_boundary(std::size_t i) const { return i < boundary.size() && boundary[i]; }
+  [[nodiscard]] bool is_inserted(std::size_t i) const { return i < inserted.size() && inserted[i]; }
 };
 
 }  // namespace tackle

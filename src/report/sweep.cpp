@@ -167,41 +167,82 @@ SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec
   std::vector<NormalForm> curve_forms, condition_forms;
   for (const auto& c : curves) curve_forms.emplace_back(c);
   for (const auto& cond : d.conditions) condition_forms.emplace_back(cond.simplified);
-  for (int i = 0; i < n; ++i) {
-    const numeric xv = *start + (*end - *start) * numeric(i, n - 1);
+  // The values at one point of the varied parameter: the definitions (undefined points, a
+  // denominator that vanishes there, have no value: a gap in the curve).
+  auto values_at = [&](const numeric& xv) {
     exmap values = base;
     values[x->sym] = xv * factor;
-    // Undefined points (a denominator that vanishes there) have no value: a gap in the curve.
     for (const auto& s : table.all())
       if (s->definition)
         if (auto v = value_at(*s->definition, values)) values[s->sym] = *v;
-    if (against) {
-      r.varied.push_back(xv.to_double());
-      r.x.push_back(against->approx_at(values).value_or(std::nan("")));
-    } else {
-      r.x.push_back(xv.to_double());
-    }
-    for (std::size_t c = 0; c < curves.size(); ++c) {
-      r.y[c].push_back(curve_forms[c].approx_at(values));
-    }
-    bool valid = true;
+    return values;
+  };
+  // Every validity condition holds: exact at rational points (N_A is exactly 0 at h/l = 1),
+  // else a high-precision float; undefined there: not valid. With roots in it (a tilted
+  // normal), a double: normal() of radicals is slow and no exact zero test anyway.
+  auto holds = [&](const exmap& values, bool exact) {
     for (std::size_t k = 0; k < d.conditions.size(); ++k) {
       const auto& cond = d.conditions[k];
-      // Exact at rational points (N_A is exactly 0 at h/l = 1), else a high-precision float;
-      // undefined there: not valid.
-      // With roots in it (a tilted normal), a double: normal() of radicals is slow and no
-      // exact zero test anyway.
-      if (!is_rational_number(substituted(condition_forms[k].num, values)) || !is_rational_number(substituted(condition_forms[k].den, values))) {
+      if (!exact || !is_rational_number(substituted(condition_forms[k].num, values)) ||
+          !is_rational_number(substituted(condition_forms[k].den, values))) {
         const auto a = condition_forms[k].approx_at(values);
-        valid = valid && a && relation_holds(numeric(*a), cond.op);
+        if (!a || !relation_holds(numeric(*a), cond.op)) return false;
         continue;
       }
-      const auto exact = condition_forms[k].at(values);
-      ex v = exact ? *exact : ex(0);
+      const auto at = condition_forms[k].at(values);
+      ex v = at ? *at : ex(0);
       if (!is_a<numeric>(v)) v = evalf(v);
-      valid = valid && exact && is_a<numeric>(v) && ex_to<numeric>(v).is_real() && relation_holds(ex_to<numeric>(v), cond.op);
+      if (!at || !is_a<numeric>(v) || !ex_to<numeric>(v).is_real() || !relation_holds(ex_to<numeric>(v), cond.op)) return false;
     }
-    r.valid.push_back(valid);
+    return true;
+  };
+  struct Point {
+    double x, varied;
+    std::vector<std::optional<double>> y;
+    bool valid, boundary = false, inserted = false;
+  };
+  auto point = [&](const numeric& xv, bool exact) {
+    const exmap values = values_at(xv);
+    Point p{against ? against->approx_at(values).value_or(std::nan("")) : xv.to_double(), xv.to_double(), {}, holds(values, exact)};
+    for (const auto& f : curve_forms) p.y.push_back(f.approx_at(values));
+    return p;
+  };
+  auto sample = [&](int i) { return *start + (*end - *start) * numeric(i, n - 1); };
+  std::vector<Point> points;
+  for (int i = 0; i < n; ++i) {
+    Point p = point(sample(i), true);
+    // Where the validity changes, the bound between the two samples, found by bisection: the
+    // dashed part begins where the condition fails, not at the next sample.
+    if (i > 0 && p.valid != points.back().valid) {
+      const bool from = points.back().valid;
+      const double a = sample(i - 1).to_double(), b = sample(i).to_double();
+      double lo = a, hi = b;
+      for (int k = 0; k < 60; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        if (mid == lo || mid == hi) break;
+        (holds(values_at(numeric(mid)), false) == from ? lo : hi) = mid;
+      }
+      const double at = from ? lo : hi;  // on the valid side
+      const double tol = 1e-9 * std::abs(b - a);
+      if (std::abs(at - a) <= tol) {
+        points.back().boundary = true;
+      } else if (std::abs(at - b) <= tol) {
+        p.boundary = true;
+      } else {
+        Point q = point(numeric(at), false);
+        q.valid = q.boundary = q.inserted = true;
+        points.push_back(std::move(q));
+      }
+    }
+    points.push_back(std::move(p));
+  }
+  const bool any_boundary = std::any_of(points.begin(), points.end(), [](const Point& p) { return p.boundary; });
+  for (const Point& p : points) {
+    r.x.push_back(p.x);
+    if (against) r.varied.push_back(p.varied);
+    for (std::size_t c = 0; c < curves.size(); ++c) r.y[c].push_back(p.y[c]);
+    r.valid.push_back(p.valid);
+    if (any_boundary) r.boundary.push_back(p.boundary), r.inserted.push_back(p.inserted);
   }
   // Where the axis' expression is undefined, no curve has a point.
   bool any = false;
@@ -224,6 +265,7 @@ std::string sweep_csv(const SweepResult& r) {
   for (const auto& n : r.names) out += "," + n + (r.y_unit.empty() ? "" : " [" + r.y_unit + "]");
   out += ",valid\n";
   for (std::size_t i = 0; i < r.x.size(); ++i) {
+    if (r.is_inserted(i)) continue;  // the samples only
     if (!r.varied.empty()) out += num(r.varied[i]) + ",";
     out += std::isfinite(r.x[i]) ? num(r.x[i]) : std::string();  // undefined there: empty
     for (const auto& curve : r.y) out += "," + (curve[i] ? num(*curve[i]) : std::string());
@@ -234,8 +276,10 @@ std::string sweep_csv(const SweepResult& r) {
 
 namespace {
 
-// The runs of a curve's points with one validity each: [begin, end) of defined points, the
-// next run's first point included so that runs join (solid where valid, dashed where not).
+// The runs of a curve's points with one validity each: [begin, end) of defined points. A run
+// ends at a boundary point (where the failing condition reaches its bound) and the next one
+// begins there; without one, the next run's first point is included so that runs join (solid
+// where valid, dashed where not).
 struct Run {
   std::size_t begin, end;
   bool valid;
@@ -246,9 +290,15 @@ std::vector<Run> validity_runs(const SweepResult& r, std::size_t c) {
   while (i < r.x.size()) {
     while (i < r.x.size() && !r.y[c][i]) ++i;
     if (i >= r.x.size()) break;
-    const bool valid = r.valid[i];
-    std::size_t j = i;
-    while (j < r.x.size() && r.y[c][j] && r.valid[j] == valid) ++j;
+    // A run starting at a boundary has the validity of the point after it.
+    const bool valid = r.is_boundary(i) && i + 1 < r.x.size() && r.y[c][i + 1] ? r.valid[i + 1] : r.valid[i];
+    std::size_t j = i + 1;
+    while (j < r.x.size() && r.y[c][j] && r.valid[j] == valid && !r.is_boundary(j)) ++j;
+    if (j < r.x.size() && r.y[c][j] && r.is_boundary(j) && r.valid[j] == valid) {
+      out.push_back({i, j + 1, valid});  // up to the boundary, which begins the next run
+      i = j;
+      continue;
+    }
     out.push_back({i, j < r.x.size() && r.y[c][j] ? j + 1 : j, valid});
     i = j;
   }
@@ -257,40 +307,60 @@ std::vector<Run> validity_runs(const SweepResult& r, std::size_t c) {
 
 }  // namespace
 
+namespace {
+
+// The curves in panels, one per unit: metres and newtons are not drawn against one axis. One
+// panel when every curve has the same unit (or there is one curve).
+std::vector<std::vector<std::size_t>> panels_of(const SweepResult& r) {
+  std::vector<std::string> units;
+  std::vector<std::vector<std::size_t>> out;
+  for (std::size_t c = 0; c < r.y.size(); ++c) {
+    const std::string u = r.y_unit.empty() && c < r.units.size() ? r.units[c] : r.y_unit;
+    const auto it = std::find(units.begin(), units.end(), u);
+    if (it == units.end()) {
+      units.push_back(u);
+      out.push_back({c});
+    } else {
+      out[static_cast<std::size_t>(it - units.begin())].push_back(c);
+    }
+  }
+  return out;
+}
+
+// A panel's unit: its curves' (all the same).
+std::string panel_unit(const SweepResult& r, const std::vector<std::size_t>& panel) {
+  if (!r.y_unit.empty()) return r.y_unit;
+  return panel.front() < r.units.size() ? r.units[panel.front()] : "";
+}
+
+bool any_invalid(const SweepResult& r) { return std::find(r.valid.begin(), r.valid.end(), false) != r.valid.end(); }
+
+}  // namespace
+
 std::string sweep_svg(const SweepResult& r) {
   // A plain line chart: axes with ticks, one polyline per curve (dashed where a validity
-  // condition fails), a legend. Written by hand: it is a few dozen lines of SVG.
-  const double W = 640, H = 420, left = 70, right = 170, top = 40, bottom = 60;
-  const double pw = W - left - right, ph = H - top - bottom;
+  // condition fails), a legend; one panel per unit, one above the other, sharing the
+  // horizontal axis. Written by hand: it is a few dozen lines of SVG.
+  const auto panels = panels_of(r);
+  const std::size_t k = panels.size();
+  const double W = 640, left = 70, right = 170, top = 40, bottom = 60, gap = 30;
+  const double pw = W - left - right, ph = k == 1 ? 320 : 200;
+  const double H = top + static_cast<double>(k) * ph + static_cast<double>(k - 1) * gap + bottom;
   // The axis runs over the finite values (an expression against may fall, or be undefined somewhere).
-  double xmin = 1e300, xmax = -1e300, ymin = 0, ymax = 0;
+  double xmin = 1e300, xmax = -1e300;
   for (const double v : r.x)
     if (std::isfinite(v)) {
       xmin = std::min(xmin, v);
       xmax = std::max(xmax, v);
     }
   if (xmax - xmin < 1e-12) xmax = xmin + 1;
-  bool any = false;
-  for (const auto& c : r.y)
-    for (const auto& v : c)
-      if (v) {
-        ymin = any ? std::min(ymin, *v) : *v;
-        ymax = any ? std::max(ymax, *v) : *v;
-        any = true;
-      }
-  if (ymax - ymin < 1e-12) ymax = ymin + 1;
-  const double pad = 0.05 * (ymax - ymin);
-  ymin -= pad;
-  ymax += pad;
   auto sx = [&](double x) { return left + (x - xmin) / (xmax - xmin) * pw; };
-  auto sy = [&](double y) { return top + (ymax - y) / (ymax - ymin) * ph; };
   static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
   std::string out = fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{}\" height=\"{}\" viewBox=\"0 0 {} {}\" "
       "font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
       W, H, W, H);
   out += fmt::format("<text x=\"{}\" y=\"22\" font-size=\"14\">{}</text>\n", left, html_escape(r.title));
-  out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"black\"/>\n", left, top, pw, ph);
   // Ticks at multiples of 1, 2 or 5 times a power of ten, about five per axis.
   auto ticks = [](double lo, double hi) {
     const double raw = (hi - lo) / 5, p = std::pow(10.0, std::floor(std::log10(raw)));
@@ -299,77 +369,105 @@ std::string sweep_svg(const SweepResult& r) {
     for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step) t.push_back(std::abs(v) < 1e-12 ? 0 : v);
     return t;
   };
-  for (const double xv : ticks(xmin, xmax))
-    out += fmt::format("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\" stroke=\"black\"/>"
-                       "<text x=\"{0:.2f}\" y=\"{3:.2f}\" text-anchor=\"middle\">{4}</text>\n",
-                       sx(xv), top + ph, top + ph + 5, top + ph + 20, num(xv));
-  for (const double yv : ticks(ymin, ymax))
-    out += fmt::format("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\" stroke=\"black\"/>"
-                       "<text x=\"{3:.2f}\" y=\"{4:.2f}\" text-anchor=\"end\">{5}</text>\n",
-                       left - 5, sy(yv), left, left - 8, sy(yv) + 4, num(yv));
-  if (ymin < 0 && ymax > 0)
-    out += fmt::format("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\" stroke=\"#999\" stroke-dasharray=\"2,3\"/>\n", left,
-                       sy(0), left + pw);
-  out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", left + pw / 2, H - 15,
-                     r.x_name + (r.x_unit.empty() ? "" : " [" + r.x_unit + "]"));
-  {
-    // The y axis says what it shows and in which unit: "y [m]", "N_A, N_B [N]"; curves of
-    // different units say theirs in the legend.
-    std::string names;
-    for (std::size_t c = 0; c < r.names.size(); ++c) names += (c ? ", " : "") + r.names[c];
-    const std::string title = r.y_unit.empty() ? (r.names.size() > 1 ? std::string("(units in the legend)") : names) : names + " [" + r.y_unit + "]";
-    out += fmt::format("<text x=\"18\" y=\"{}\" transform=\"rotate(-90 18 {})\" text-anchor=\"middle\">{}</text>\n",
-                       top + ph / 2, top + ph / 2, title);
-  }
-  for (std::size_t c = 0; c < r.y.size(); ++c) {
-    const char* colour = colours[c % 6];
-    // Runs of points with the same validity: solid where valid, dashed where not.
-    for (const Run& run : validity_runs(r, c)) {
-      std::string points;
-      for (std::size_t j = run.begin; j < run.end; ++j) points += fmt::format("{:.2f},{:.2f} ", sx(r.x[j]), sy(*r.y[c][j]));
-      out += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"2\"{} points=\"{}\"/>\n", colour,
-                         run.valid ? "" : " stroke-dasharray=\"6,4\"", points);
+  for (std::size_t p = 0; p < k; ++p) {
+    const auto& panel = panels[p];
+    const double ptop = top + static_cast<double>(p) * (ph + gap);
+    double ymin = 0, ymax = 0;
+    bool any = false;
+    for (const std::size_t c : panel)
+      for (const auto& v : r.y[c])
+        if (v) {
+          ymin = any ? std::min(ymin, *v) : *v;
+          ymax = any ? std::max(ymax, *v) : *v;
+          any = true;
+        }
+    if (ymax - ymin < 1e-12) ymax = ymin + 1;
+    const double pad = 0.05 * (ymax - ymin);
+    ymin -= pad;
+    ymax += pad;
+    auto sy = [&](double y) { return ptop + (ymax - y) / (ymax - ymin) * ph; };
+    out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"black\"/>\n", left, ptop, pw, ph);
+    // The horizontal axis' numbers under the lowest panel only.
+    for (const double xv : ticks(xmin, xmax)) {
+      out += fmt::format("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\" stroke=\"black\"/>", sx(xv), ptop + ph, ptop + ph + 5);
+      if (p + 1 == k) out += fmt::format("<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"middle\">{}</text>", sx(xv), ptop + ph + 20, num(xv));
+      out += "\n";
     }
-    const double ly = top + 10 + 20 * static_cast<double>(c);
-    out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"2\"/>"
-                       "<text x=\"{}\" y=\"{}\">{}</text>\n",
-                       left + pw + 15, ly, left + pw + 40, ly, colour, left + pw + 45, ly + 4,
-                       r.names[c] + (r.y_unit.empty() && c < r.units.size() && !r.units[c].empty() ? " [" + r.units[c] + "]" : ""));
+    for (const double yv : ticks(ymin, ymax))
+      out += fmt::format("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\" stroke=\"black\"/>"
+                         "<text x=\"{3:.2f}\" y=\"{4:.2f}\" text-anchor=\"end\">{5}</text>\n",
+                         left - 5, sy(yv), left, left - 8, sy(yv) + 4, num(yv));
+    if (ymin < 0 && ymax > 0)
+      out += fmt::format("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\" stroke=\"#999\" stroke-dasharray=\"2,3\"/>\n", left,
+                         sy(0), left + pw);
+    {
+      // The y axis says what it shows and in which unit: "y [m]", "N_A, N_B [N]"; curves
+      // whose units are unknown say so.
+      std::string names;
+      for (const std::size_t c : panel) names += (names.empty() ? "" : ", ") + r.names[c];
+      const std::string unit = panel_unit(r, panel);
+      const std::string title = unit.empty() ? names : names + " [" + unit + "]";
+      out += fmt::format("<text x=\"18\" y=\"{0}\" transform=\"rotate(-90 18 {0})\" text-anchor=\"middle\">{1}</text>\n",
+                         ptop + ph / 2, html_escape(title));
+    }
+    for (std::size_t n = 0; n < panel.size(); ++n) {
+      const std::size_t c = panel[n];
+      const char* colour = colours[c % 6];
+      // Runs of points with the same validity: solid where valid, dashed where not.
+      for (const Run& run : validity_runs(r, c)) {
+        std::string points;
+        for (std::size_t j = run.begin; j < run.end; ++j) points += fmt::format("{:.2f},{:.2f} ", sx(r.x[j]), sy(*r.y[c][j]));
+        out += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"2\"{} points=\"{}\"/>\n", colour,
+                           run.valid ? "" : " stroke-dasharray=\"6,4\"", points);
+      }
+      const double ly = ptop + 10 + 20 * static_cast<double>(n);
+      out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"2\"/>"
+                         "<text x=\"{}\" y=\"{}\">{}</text>\n",
+                         left + pw + 15, ly, left + pw + 40, ly, colour, left + pw + 45, ly + 4, html_escape(r.names[c]));
+    }
+    if (p + 1 == k && any_invalid(r))
+      out += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"11\">dashed: a validity</text>"
+                         "<text x=\"{}\" y=\"{}\" font-size=\"11\">condition fails</text>\n",
+                         left + pw + 15, ptop + 30 + 20 * static_cast<double>(panel.size()), left + pw + 15,
+                         ptop + 44 + 20 * static_cast<double>(panel.size()));
   }
-  if (std::find(r.valid.begin(), r.valid.end(), false) != r.valid.end())
-    out += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"11\">dashed: a validity</text>"
-                       "<text x=\"{}\" y=\"{}\" font-size=\"11\">condition fails</text>\n",
-                       left + pw + 15, top + 30 + 20 * static_cast<double>(r.y.size()), left + pw + 15,
-                       top + 44 + 20 * static_cast<double>(r.y.size()));
+  out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", left + pw / 2, H - 15,
+                     html_escape(r.x_name + (r.x_unit.empty() ? "" : " [" + r.x_unit + "]")));
   return out + "</svg>\n";
 }
 
 std::string sweep_pgfplots(const SweepResult& r) {
-  std::string out = "\\begin{tikzpicture}\n\\begin{axis}[width=0.8\\textwidth, height=0.5\\textwidth, xlabel={$" +
-                    r.x_latex + "$" + (r.x_unit.empty() ? "" : " [$" + unit_latex(r.x_unit) + "$]") +
-                    "}, ylabel={" + [&] {
-                      std::string names;
-                      for (std::size_t c = 0; c < r.latex.size(); ++c) names += std::string(c ? ", " : "") + "$" + r.latex[c] + "$";
-                      if (!r.y_unit.empty()) return names + " [$" + unit_latex(r.y_unit) + "$]";
-                      return r.latex.size() > 1 ? std::string("(units in the legend)") : names;
-                    }() + "}, " +
-                    "legend pos=outer north east, grid=major, scaled x ticks=false, xticklabel style={/pgf/number format/fixed}]\n";
+  // One axis per unit, one under the other, the horizontal axis' label under the lowest.
+  const auto panels = panels_of(r);
+  const std::size_t k = panels.size();
+  const std::string xlabel = "$" + r.x_latex + "$" + (r.x_unit.empty() ? "" : " [$" + unit_latex(r.x_unit) + "$]");
   // As the SVG: each curve in its colour, solid where every validity condition holds and
   // dashed where one fails (runs of points with the same validity, joined at their ends).
   static const char* const colours[] = {"blue", "red", "brown!70!black", "teal", "violet", "black"};
-  for (std::size_t c = 0; c < r.y.size(); ++c) {
-    const std::string colour = colours[c % 6];
-    const std::string unit = r.y_unit.empty() && c < r.units.size() && !r.units[c].empty() ? " [$" + unit_latex(r.units[c]) + "$]" : "";
-    out += "\\addlegendimage{color=" + colour + ", thick}\n\\addlegendentry{$" + r.latex[c] + "$" + unit + "}\n";
-    for (const Run& run : validity_runs(r, c)) {
-      std::string points;
-      for (std::size_t j = run.begin; j < run.end; ++j) points += "(" + num(r.x[j]) + "," + num(*r.y[c][j]) + ") ";
-      out += "\\addplot[color=" + colour + ", thick, forget plot" + (run.valid ? "" : ", dashed") + "] coordinates {" + points + "};\n";
+  std::string out = "\\begin{tikzpicture}\n";
+  for (std::size_t p = 0; p < k; ++p) {
+    const auto& panel = panels[p];
+    std::string names;
+    for (const std::size_t c : panel) names += std::string(names.empty() ? "" : ", ") + "$" + r.latex[c] + "$";
+    const std::string unit = panel_unit(r, panel);
+    const std::string ylabel = unit.empty() ? names : names + " [$" + unit_latex(unit) + "$]";
+    out += "\\begin{axis}[name=panel" + std::to_string(p) + ", width=0.8\\textwidth, height=" + (k == 1 ? "0.5" : "0.32") + "\\textwidth, " +
+           (p == 0 ? std::string() : "at={(panel" + std::to_string(p - 1) + ".south west)}, anchor=north west, yshift=-0.6cm, ") +
+           (p + 1 == k ? "xlabel={" + xlabel + "}, " : std::string("xticklabels={}, ")) + "ylabel={" + ylabel + "}, " +
+           "legend pos=outer north east, grid=major, scaled x ticks=false, xticklabel style={/pgf/number format/fixed}]\n";
+    for (const std::size_t c : panel) {
+      const std::string colour = colours[c % 6];
+      out += "\\addlegendimage{color=" + colour + ", thick}\n\\addlegendentry{$" + r.latex[c] + "$}\n";
+      for (const Run& run : validity_runs(r, c)) {
+        std::string points;
+        for (std::size_t j = run.begin; j < run.end; ++j) points += "(" + num(r.x[j]) + "," + num(*r.y[c][j]) + ") ";
+        out += "\\addplot[color=" + colour + ", thick, forget plot" + (run.valid ? "" : ", dashed") + "] coordinates {" + points + "};\n";
+      }
     }
+    if (p + 1 == k && any_invalid(r)) out += "\\addlegendimage{empty legend}\n\\addlegendentry{dashed: invalid}\n";
+    out += "\\end{axis}\n";
   }
-  if (std::find(r.valid.begin(), r.valid.end(), false) != r.valid.end())
-    out += "\\addlegendimage{empty legend}\n\\addlegendentry{dashed: invalid}\n";
-  return out + "\\end{axis}\n\\end{tikzpicture}\n";
+  return out + "\\end{tikzpicture}\n";
 }
 
 }  // namespace tackle

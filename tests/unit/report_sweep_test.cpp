@@ -1,4 +1,5 @@
 #include <catch2/catch.hpp>
+#include <algorithm>
 
 #include "report/sweep.hpp"
 #include "support/helpers.hpp"
@@ -33,12 +34,41 @@ TEST_CASE("Sweep: figure 12.28, N1, N2 and N1 - N2 against h/l for mg = 1, mu = 
   CHECK(svg.find("stroke-dasharray=\"6,4\"") != std::string::npos);  // the tipped part
   const std::string pgf = sweep_pgfplots(r);
   CHECK(pgf.find("\\addlegendentry{$N_{A} - N_{B}$}") != std::string::npos);
-  // As the SVG, the tipped part (h > l/(2 mu) = 1 m, N_A < 0) dashed, joined to the solid part.
-  CHECK(pgf.find("\\addplot[color=blue, thick, forget plot, dashed] coordinates {(1.05,-0.025) (1.1,-0.05)") != std::string::npos);
+  // As the SVG, the tipped part (h > l/(2 mu) = 1 m, N_A < 0) dashed from where N_A = 0, the
+  // sample at h = 1 m, where the solid part ends.
+  CHECK(pgf.find("\\addplot[color=blue, thick, forget plot, dashed] coordinates {(1,0) (1.05,-0.025) (1.1,-0.05)") != std::string::npos);
+  CHECK(pgf.find("(0.95,0.025) (1,0) };") != std::string::npos);
   CHECK(pgf.find("\\addlegendentry{dashed: invalid}") != std::string::npos);
   // The y axis says what it shows, in its unit (issue 32, item 5).
   CHECK(svg.find(">N_A, N_B, N_A - N_B [N]</text>") != std::string::npos);
   CHECK(pgf.find("ylabel={$N_{A}$, $N_{B}$, $N_{A} - N_{B}$ [$\\mathrm{N}$]}") != std::string::npos);
+}
+
+TEST_CASE("Sweep: the dashed part begins where the condition fails, between two samples", "[sweep]") {
+  // Samples at h = 0, 2/3, 4/3 and 2 m: the suitcase tips at h = l/(2 mu) = 1 m (N_A = 1/2 - h/2
+  // = 0), between the second and the third. The point h = 1 m is put in: the solid part ends
+  // and the dashed part begins there; the CSV keeps the four samples.
+  const auto r = figure_12_28({"h=0:2:4", {}, {"N_A"}, ""});
+  REQUIRE(r.x.size() == 5);
+  CHECK(r.x[2] == Approx(1.0).epsilon(1e-12));
+  CHECK(*r.y[0][2] == Approx(0.0).margin(1e-12));
+  CHECK(r.is_boundary(2));
+  CHECK(r.is_inserted(2));
+  CHECK(std::count(r.inserted.begin(), r.inserted.end(), true) == 1);
+  CHECK(sweep_csv(r) == "h [m],N_A [N],valid\n0,0.5,true\n0.666667,0.166667,true\n1.33333,-0.166667,false\n2,-0.5,false\n");
+  const std::string pgf = sweep_pgfplots(r);
+  CHECK(pgf.find("\\addplot[color=blue, thick, forget plot] coordinates {(0,0.5) (0.666667,0.166667) (1,") != std::string::npos);
+  CHECK(pgf.find("\\addplot[color=blue, thick, forget plot, dashed] coordinates {(1,") != std::string::npos);
+  CHECK(pgf.find("(1.33333,-0.166667) (2,-0.5) };") != std::string::npos);
+  // Both ways: valid again after invalid (a sweep downwards).
+  const auto down = figure_12_28({"h=2:0:4", {}, {"N_A"}, ""});
+  REQUIRE(down.x.size() == 5);
+  CHECK(down.x[2] == Approx(1.0).epsilon(1e-12));
+  CHECK(!down.valid[1]);
+  CHECK(down.valid[3]);
+  const std::string pgf_down = sweep_pgfplots(down);
+  CHECK(pgf_down.find("\\addplot[color=blue, thick, forget plot, dashed] coordinates {(2,-0.5) (1.33333,-0.166667) (1,") != std::string::npos);
+  CHECK(pgf_down.find("\\addplot[color=blue, thick, forget plot] coordinates {(1,") != std::string::npos);
 }
 
 TEST_CASE("Sweep: against h/l, the book's axis, with h's own values beside it", "[sweep]") {
@@ -111,4 +141,35 @@ TEST_CASE("Sweep: a point where a curve is undefined is a gap, not a crash (foun
       CHECK_FALSE(r.valid[i]);
     }
   CHECK(gaps >= 1);
+}
+
+TEST_CASE("Sweep: curves of different units get a panel each, the time axis labelled under the lowest", "[sweep]") {
+  SweepResult r;
+  r.title = "two units";
+  r.x_name = "t";
+  r.x_unit = "s";
+  r.x_latex = "t";
+  r.names = {"y", "N", "y_B"};
+  r.latex = {"y", "N", "y_{B}"};
+  r.units = {"m", "N", "m"};  // no common unit: r.y_unit stays empty
+  r.x = {0, 1, 2};
+  r.y = {{0.0, 0.5, 1.0}, {10.0, 20.0, 30.0}, {1.0, 1.0, 1.0}};
+  r.valid = {true, true, true};
+  const std::string pgf = sweep_pgfplots(r);
+  // Two axes: metres (y and y_B) above, newtons below it; t [s] only under the lowest.
+  CHECK(pgf.find("\\begin{axis}[name=panel0, width=0.8\\textwidth, height=0.32\\textwidth, xticklabels={}, ylabel={$y$, $y_{B}$ [$\\mathrm{m}$]}") != std::string::npos);
+  CHECK(pgf.find("\\begin{axis}[name=panel1, width=0.8\\textwidth, height=0.32\\textwidth, at={(panel0.south west)}, anchor=north west, yshift=-0.6cm, xlabel={$t$ [$\\mathrm{s}$]}, ylabel={$N$ [$\\mathrm{N}$]}") != std::string::npos);
+  CHECK(pgf.find("\\begin{axis}[name=panel2") == std::string::npos);
+  const std::string svg = sweep_svg(r);
+  CHECK(svg.find(">y, y_B [m]</text>") != std::string::npos);
+  CHECK(svg.find(">N [N]</text>") != std::string::npos);
+  CHECK(svg.find(">t [s]</text>") != std::string::npos);
+  // Two plot frames.
+  std::size_t frames = 0;
+  for (std::size_t p = svg.find("fill=\"none\" stroke=\"black\"/>"); p != std::string::npos; p = svg.find("fill=\"none\" stroke=\"black\"/>", p + 1)) ++frames;
+  CHECK(frames == 2);
+  // One unit: one panel, as before.
+  r.y_unit = "m";
+  r.units = {"m", "m", "m"};
+  CHECK(sweep_pgfplots(r).find("name=panel1") == std::string::npos);
 }
