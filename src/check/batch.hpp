@@ -57,6 +57,8 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
 /// The same, with the results file returned in `results` of the summary.
 BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream& out, const GradeOptions& options = {});
 
+/// One result as one line of JSON, as a batch writes it (no newline).
+[[nodiscard]] std::string result_line(const CheckResult& r, const std::string& answer, const std::string& id = {});
 /// One result as a JSON object (the single-answer `--format json` output).
 [[nodiscard]] std::string result_json(const CheckResult& r, const std::string& answer, const std::string& id = {});
 /// One result as text.

@@ -569,6 +569,78 @@ std::pair<ex, ex> as_fraction(const ex& e) {
   return {e, 1};
 }
 
+// A rational function as c times powers of factors that are pairwise coprime: symbols, and
+// polynomials made primitive (integer content 1, first term positive) that are irreducible
+// because they are of degree one in some symbol with a number before it (l - 2 mu h, in l).
+// Two such factors are coprime unless equal, so a quotient of two of these, its exponents
+// subtracted, is in lowest terms without a gcd. Nothing when a factor is none of these.
+struct Factored {
+  numeric coefficient = 1;
+  std::map<ex, int, ex_is_less> powers;
+  bool put(const ex& e, int times);
+  bool add_polynomial(const ex& p, int times);
+};
+
+bool Factored::add_polynomial(const ex& p, int times) {
+  if (is_exactly<numeric>(p)) {
+    if (p.is_zero()) return false;
+    coefficient *= ex_to<numeric>(p).power(times);
+    return true;
+  }
+  if (!is_exactly<add>(p)) return put(p, times);  // a monomial
+  const numeric content = p.integer_content();
+  ex primitive = (p / content).expand();
+  numeric c = content;
+  // The first term's coefficient positive (the sum's terms are in GiNaC's canonical order).
+  const ex first = primitive.op(0);
+  const ex lead = is_exactly<mul>(first) ? first.op(first.nops() - 1) : first;
+  if (is_exactly<numeric>(lead) && ex_to<numeric>(lead).is_negative()) {
+    primitive = (-primitive).expand();
+    c = -c;
+  }
+  // Irreducible: of degree one in a symbol, with a number before it.
+  bool irreducible = false;
+  for (const ex& x : symbols_in(primitive)) {
+    if (primitive.degree(x) == 1 && is_exactly<numeric>(primitive.coeff(x, 1))) {
+      irreducible = true;
+      break;
+    }
+  }
+  if (!irreducible) return false;
+  coefficient *= c.power(times);
+  powers[primitive] += times;
+  return true;
+}
+
+bool Factored::put(const ex& e, int times) {
+  if (is_exactly<numeric>(e)) {
+    if (e.is_zero() || !ex_to<numeric>(e).is_rational()) return false;
+    coefficient *= ex_to<numeric>(e).power(times);
+    return true;
+  }
+  if (is_exactly<symbol>(e)) {
+    powers[e] += times;
+    return true;
+  }
+  if (is_exactly<power>(e)) {
+    if (!is_exactly<numeric>(e.op(1)) || !ex_to<numeric>(e.op(1)).is_integer()) return false;
+    const numeric k = ex_to<numeric>(e.op(1));
+    if (!k.is_pos_integer() && !(-k).is_pos_integer()) return false;
+    if (abs(k) > 16) return false;
+    return put(e.op(0), times * static_cast<int>(k.to_long()));
+  }
+  if (is_exactly<mul>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i)
+      if (!put(e.op(i), times)) return false;
+    return true;
+  }
+  if (is_exactly<add>(e)) {
+    const auto [n, d] = as_fraction(e);
+    return add_polynomial(n.expand(), times) && add_polynomial(d.expand(), -times);
+  }
+  return false;
+}
+
 // (x^2)^(1/2) is |x| and not x: an even power under a fractional one is a kink, and is
 // written as one (|x|^(n r) for (x^n)^r, n even) so that both its sides are looked at.
 struct EvenRootsAsAbs : map_function {
@@ -1254,13 +1326,113 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
   r.method = "numeric";
   r.verdict = Verdict::incorrect;
   r.score = 0.0;
-  diagnose(ref, answer, values, r);
+  diagnose(ref, answer, answer_at, values, r);
   if (r.findings.empty()) r.findings.push_back({"value", "the answer differs from the correct one"});
   r.summary = r.findings.front().message;
   return r;
 }
 
-void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector<numeric>& values, CheckResult& r) const {
+const Checker::Reference::Diagnosis& Checker::diagnosis(const Reference& ref) const {
+  std::call_once(ref.lazy->made, [&] {
+    Reference::Diagnosis& d = ref.lazy->diagnosis;
+    d.expanded = ref.shape.expanded ? *ref.shape.expanded : ref.closed_form.expand();
+    d.needed = symbols_in(ref.closed_form);
+    if (Factored f; ref.shape.rational && f.put(ref.closed_form, 1)) d.factored.emplace(f.coefficient, f.powers);
+    auto at_points = [&](const Exact& e, const std::function<void(Point&)>& change) {
+      std::vector<std::optional<numeric>> out;
+      for (Point p : points_) {
+        change(p);
+        out.push_back(e(p));
+      }
+      return out;
+    };
+    const auto keep = [](Point&) {};
+    for (std::size_t i = 0; !points_.empty() && i < points_[0].size(); ++i) {
+      Point p = points_[0];
+      p[i].second *= 2;
+      d.doubled.push_back(ref.program(p));
+    }
+    if (is_a<add>(d.expanded) && d.expanded.nops() <= 12)
+      for (std::size_t i = 0; i < d.expanded.nops(); ++i) {
+        d.term_turned.push_back(at_points(program(d.expanded - 2 * d.expanded.op(i)), keep));
+        d.term_left_out.push_back(at_points(program(d.expanded - d.expanded.op(i)), keep));
+      }
+    auto set = [](Point& p, const ex& s, const std::function<numeric(const Point&)>& value) {
+      const numeric v = value(p);
+      for (auto& [sym, x] : p)
+        if (sym.is_equal(s)) x = v;
+    };
+    auto value_of = [](const Point& p, const ex& s) {
+      for (const auto& [sym, x] : p)
+        if (sym.is_equal(s)) return std::optional<numeric>(x);
+      return std::optional<numeric>();
+    };
+    for (std::size_t i = 0; i < parameters_.size(); ++i) {
+      const ex& p = parameters_[i].symbol;
+      if (!ref.closed_form.has(p)) continue;
+      d.zeroed[i] = at_points(ref.program, [&](Point& pt) { set(pt, p, [](const Point&) { return numeric(0); }); });
+    }
+    for (std::size_t i = 0; i < parameters_.size() && i < 16; ++i)
+      for (std::size_t j = i + 1; j < parameters_.size() && j < 16; ++j) {
+        const auto& a = parameters_[i];
+        const auto& b = parameters_[j];
+        if (!(a.dimension == b.dimension) || !ref.closed_form.has(a.symbol) || !ref.closed_form.has(b.symbol)) continue;
+        d.equalled[{i, j}] = at_points(ref.program, [&](Point& pt) {
+          if (const auto x = value_of(pt, a.symbol); x && value_of(pt, b.symbol)) set(pt, b.symbol, [&](const Point&) { return *x; });
+        });
+      }
+  });
+  return ref.lazy->diagnosis;
+}
+
+std::optional<Checker::QuotientShape> Checker::quotient_shape(const Reference& ref, const Exact& answer_at,
+                                                              const std::vector<numeric>& values) const {
+  // At the first point, each parameter doubled in turn: the quotient changes by 2^e for a
+  // power p^e of it, and not at all when it does not depend on it. Exact rationals only.
+  const Reference::Diagnosis& diag = diagnosis(ref);
+  if (values.empty() || ref.at_points.empty() || ref.at_points[0].is_zero() || values[0].is_zero() ||
+      !values[0].is_rational() || !ref.at_points[0].is_rational() || diag.doubled.size() != points_[0].size())
+    return std::nullopt;
+  static const std::vector<std::pair<int, numeric>> powers_of_two{{1, 2}, {-1, numeric(1, 2)}, {2, 4}, {-2, numeric(1, 4)},
+                                                                  {3, 8}, {-3, numeric(1, 8)}, {4, 16}, {-4, numeric(1, 16)}};
+  const Point& p0 = points_[0];
+  const numeric q0 = values[0] / ref.at_points[0];
+  QuotientShape shape;
+  std::vector<int> exponents(p0.size(), 0);
+  bool powers = true;
+  for (std::size_t i = 0; i < p0.size(); ++i) {
+    Point p = p0;
+    p[i].second *= 2;
+    const auto& b = diag.doubled[i];
+    const auto a = answer_at(p);
+    if (!a || !b || b->is_zero() || !a->is_rational() || !b->is_rational()) return std::nullopt;
+    const numeric r = *a / *b / q0;
+    if (r.is_equal(numeric(1))) continue;
+    ++shape.depends_on;
+    for (const auto& [e, two] : powers_of_two)
+      if (r.is_equal(two)) exponents[i] = e;
+    powers = powers && exponents[i] != 0;
+    if (!powers && shape.depends_on > 2) return shape;  // neither kind of simple factor
+  }
+  if (!powers) return shape;
+  // c times the powers, checked at every point.
+  const auto at = [&](const Point& p) {
+    numeric v = 1;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (exponents[i] != 0) v *= p[i].second.power(exponents[i]);
+    return v;
+  };
+  const numeric c = q0 / at(p0);
+  for (std::size_t k = 1; k < values.size() && k < points_.size(); ++k)
+    if (ref.at_points[k].is_zero() || !(values[k] / ref.at_points[k]).is_equal(c * at(points_[k]))) return shape;
+  ex monomial = c;
+  for (std::size_t i = 0; i < p0.size(); ++i)
+    if (exponents[i] != 0) monomial *= GiNaC::pow(p0[i].first, exponents[i]);
+  shape.monomial = monomial;
+  return shape;
+}
+
+void Checker::diagnose(const Reference& ref, const ex& answer, const Exact& answer_at, const std::vector<numeric>& values, CheckResult& r) const {
   const std::size_t n = std::min(values.size(), ref.at_points.size());
   // The sign, or a constant factor (exact when the ratio simplifies to a number).
   bool constant_ratio = n > 0;
@@ -1302,36 +1474,39 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
       r.findings.push_back({"factor", "off by a factor of " + to_text(c) + " (the answer is " + factor_words(c) + ")"});
     return;
   }
-  // Past the sign and a factor: the answer with the definitions put in, and as a program.
+  // Past the sign and a factor: the answer with the definitions put in; the reference's part
+  // made once.
+  const Reference::Diagnosis& diag = diagnosis(ref);
   const ex expanded = substituted(answer, definitions_);
-  const Exact answer_at = program(answer);
-  // Does the answer, at points changed by `change`, equal the reference at the points changed
-  // by `change_ref`? (Swapping two parameters or setting one to zero changes the point, not
-  // the expression.)
-  auto matches_at = [&](const std::function<void(Point&)>& change, const std::function<void(Point&)>& change_ref) {
+  // The symbols in the answer as typed and with the definitions put in (has() walks the
+  // expression for each question: a diagnosis asks dozens).
+  const auto typed_symbols = symbols_in(answer), used = symbols_in(expanded);
+  bool trig = false;
+  for (const_preorder_iterator it = expanded.preorder_begin(); it != expanded.preorder_end() && !trig; ++it)
+    trig = is_ex_the_function(*it, sin) || is_ex_the_function(*it, cos);
+  // Does the answer, at the points changed by `change`, take the reference's values
+  // `reference` (at the same points changed as the diagnosis says)? Swapping two parameters or
+  // setting one to zero changes the point, not the expression.
+  auto matches_at = [&](const std::function<void(Point&)>& change, const std::vector<std::optional<numeric>>& reference) {
     for (std::size_t k = 0; k < points_.size(); ++k) {
-      Point pa = points_[k], pr = points_[k];
+      Point pa = points_[k];
       change(pa);
-      change_ref(pr);
-      auto a = answer_at(pa), b = ref.program(pr);
-      if (!a || !b || !same(*a, *b)) return false;
+      const auto a = answer_at(pa);
+      if (!a || k >= reference.size() || !reference[k] || !same(*a, *reference[k])) return false;
     }
     return true;
   };
+  std::vector<std::optional<numeric>> at_points(ref.at_points.begin(), ref.at_points.end());
   auto value_of = [](Point& p, const ex& s) -> numeric* {
     for (auto& [sym, v] : p)
       if (sym.is_equal(s)) return &v;
     return nullptr;
   };
-  const auto keep = [](Point&) {};
-  // Does the answer equal `other` (an expression in the parameters) at every point?
-  auto equals_at_points = [&](const ex& other) {
+  // Does the answer take these values at the points?
+  auto equals_at_points = [&](const std::vector<std::optional<numeric>>& other) {
     if (n == 0) return false;
-    const Exact other_at = program(other);
-    for (std::size_t k = 0; k < n; ++k) {
-      auto v = other_at(points_[k]);
-      if (!v || !same(values[k], *v)) return false;
-    }
+    for (std::size_t k = 0; k < n; ++k)
+      if (k >= other.size() || !other[k] || !same(values[k], *other[k])) return false;
     return true;
   };
   // The value of another unknown of the problem.
@@ -1342,7 +1517,7 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
     if (all) r.findings.push_back({"other_unknown", "this is the value of " + name + ", not of " + ref.name});
   }
   // sin written for cos, or the reverse.
-  if (expanded.has(sin(wild(0))) || expanded.has(cos(wild(0)))) {
+  if (trig) {
     const ex swapped = expanded.subs(lst{sin(wild(0)) == cos(wild(0)), cos(wild(0)) == sin(wild(0))});
     if (!swapped.is_equal(expanded)) {
       bool all = n > 0;
@@ -1362,15 +1537,44 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
   bool symbolic_exponent = false;
   for (const_preorder_iterator it = answer.preorder_begin(); it != answer.preorder_end(); ++it)
     symbolic_exponent = symbolic_exponent || (is_exactly<power>(*it) && !is_exactly<numeric>(it->op(1)));
-  const ex quotient = symbolic_exponent ? ex(0) : normal(substituted(answer, definitions_) / ref.closed_form);
-  if (!symbolic_exponent && !is_a<numeric>(quotient) && node_count(quotient, 8) <= 7)
-    factor_findings.push_back({"factor", "off by a factor of " + to_text(quotient)});
+  if (!symbolic_exponent) {
+    // The quotient answer/reference, when it can be a factor worth saying (a few symbols):
+    // 1. from the values, a product of powers of the parameters (mu h/l), or that it is
+    //    neither such a product nor a function of at most two parameters (no factor said: a
+    //    sum in three parameters, (l + h) mu, is missed);
+    // 2. else, of rational functions whose factors are coprime at sight (see Factored): in
+    //    lowest terms once equal factors cancel, without a gcd;
+    // 3. else normal(), most of a wrong answer's diagnosis when it runs.
+    std::optional<ex> quotient;
+    bool simple = true;
+    if (const auto shape = quotient_shape(ref, answer_at, values)) {
+      quotient = shape->monomial;
+      simple = shape->monomial || shape->depends_on <= 2;
+    }
+    bool factored = false;
+    if (!quotient && simple && diag.factored && rational_function(expanded, lengths_)) {
+      Factored q;
+      if (q.put(expanded, 1)) {
+        factored = true;
+        q.coefficient /= diag.factored->first;
+        for (const auto& [factor, k] : diag.factored->second) q.powers[factor] -= k;
+        ex made = q.coefficient;
+        for (const auto& [factor, k] : q.powers)
+          if (k != 0) made *= GiNaC::pow(factor, k);
+        // (In normal() for its canonical form only when small: a factor said is small.)
+        if (node_count(made, 10) <= 9) quotient = normal(made);
+      }
+    }
+    if (!quotient && simple && !factored) quotient = normal(expanded / ref.closed_form);
+    if (quotient && !is_a<numeric>(*quotient) && node_count(*quotient, 8) <= 7)
+      factor_findings.push_back({"factor", "off by a factor of " + to_text(*quotient)});
+  }
   // Two parameters swapped.
   std::vector<ex> params;
   for (const auto& p : parameters_) params.push_back(p.symbol);
   for (std::size_t i = 0; i < params.size() && i < 16; ++i)
     for (std::size_t j = i + 1; j < params.size() && j < 16; ++j) {
-      if (!answer.has(params[i]) && !answer.has(params[j])) continue;
+      if (!typed_symbols.count(params[i]) && !typed_symbols.count(params[j])) continue;
       if (definitions_.count(params[i]) || definitions_.count(params[j])) {
         // A defined parameter has no value of its own at the point: swap in the expression.
         const exmap swap{{params[i], params[j]}, {params[j], params[i]}};
@@ -1389,55 +1593,50 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const std::vector
         numeric* y = value_of(p, params[j]);
         if (x && y) std::swap(*x, *y);
       };
-      if (matches_at(swap, keep))
+      if (matches_at(swap, at_points))
         r.findings.push_back({"swapped", to_text(params[i]) + " and " + to_text(params[j]) + " are swapped"});
     }
   // Correct only in a special case: a parameter at zero, or two parameters equal.
-  for (const auto& p : params) {
-    if (!ref.closed_form.has(p) || expanded.has(p)) continue;
-    const auto zero = [&](Point& pt) {
-      if (numeric* x = value_of(pt, p)) *x = 0;
-    };
-    if (matches_at(keep, zero)) r.findings.push_back({"special_case", "this is correct only " + describe(p)});
+  for (std::size_t i = 0; i < params.size(); ++i) {
+    const ex& p = params[i];
+    const auto zeroed = diag.zeroed.find(i);
+    if (zeroed == diag.zeroed.end() || used.count(p)) continue;
+    if (matches_at([](Point&) {}, zeroed->second)) r.findings.push_back({"special_case", "this is correct only " + describe(p)});
   }
-  for (std::size_t i = 0; i < params.size() && i < 16; ++i)
-    for (std::size_t j = i + 1; j < params.size() && j < 16; ++j) {
-      const auto& a = parameters_[i];
-      const auto& b = parameters_[j];
-      if (!(a.dimension == b.dimension) || !ref.closed_form.has(params[i]) || !ref.closed_form.has(params[j])) continue;
-      const auto equal_values = [&](Point& pt) {
-        numeric* x = value_of(pt, params[i]);
-        numeric* y = value_of(pt, params[j]);
-        if (x && y) *y = *x;
-      };
-      if (matches_at(equal_values, equal_values))
-        r.findings.push_back({"special_case", "this is correct only when " + a.name + " = " + b.name});
-    }
+  for (const auto& [pair, reference] : diag.equalled) {
+    const auto [i, j] = pair;
+    const auto equal_values = [&](Point& pt) {
+      numeric* x = value_of(pt, params[i]);
+      numeric* y = value_of(pt, params[j]);
+      if (x && y) *y = *x;
+    };
+    if (matches_at(equal_values, reference))
+      r.findings.push_back({"special_case", "this is correct only when " + parameters_[i].name + " = " + parameters_[j].name});
+  }
   // One term of the correct answer with the wrong sign, or missing (which term is not said:
   // that would give the answer away).
-  if (const ex terms = ref.closed_form.expand(); is_a<add>(terms) && terms.nops() <= 12) {
-    for (std::size_t i = 0; i < terms.nops(); ++i) {
-      if (equals_at_points(terms - 2 * terms.op(i))) {
-        r.findings.push_back({"term_sign", "the sign of one term is wrong"});
-        break;
-      }
-      if (equals_at_points(terms - terms.op(i))) {
-        r.findings.push_back({"missing_term", "one term of the correct answer is missing"});
-        break;
-      }
+  for (std::size_t i = 0; i < diag.term_turned.size(); ++i) {
+    if (equals_at_points(diag.term_turned[i])) {
+      r.findings.push_back({"term_sign", "the sign of one term is wrong"});
+      break;
+    }
+    if (equals_at_points(diag.term_left_out[i])) {
+      r.findings.push_back({"missing_term", "one term of the correct answer is missing"});
+      break;
     }
   }
   // One term too many: the answer is the correct one plus a single term (a product of the
   // parameters), when nothing above explains it.
   if (std::none_of(r.findings.begin(), r.findings.end(), [](const Finding& f) { return f.code == "term_sign" || f.code == "missing_term"; }) &&
-      is_a<add>(ref.closed_form.expand()) && node_count(expanded, 201) <= 200) {
-    const ex extra = (expanded - ref.closed_form).expand();
-    if (!extra.is_zero() && !is_a<add>(extra) && !is_a<numeric>(extra) && is_a<add>(expanded.expand()))
+      is_a<add>(diag.expanded) && node_count(expanded, 201) <= 200) {
+    const ex answer_expanded = expanded.expand();
+    const ex extra = (answer_expanded - diag.expanded).expand();
+    if (!extra.is_zero() && !is_a<add>(extra) && !is_a<numeric>(extra) && is_a<add>(answer_expanded))
       r.findings.push_back({"extra_term", "the answer has one term too many"});
   }
   r.findings.insert(r.findings.end(), factor_findings.begin(), factor_findings.end());
   // Parameters the answer depends on, or misses (named in the problem's order).
-  const auto used = symbols_in(substituted(answer, definitions_)), needed = symbols_in(ref.closed_form);
+  const auto& needed = diag.needed;
   std::vector<std::string> extra, missing;
   for (const auto& p : parameters_) {
     if (used.count(p.symbol) && !needed.count(p.symbol)) extra.push_back(p.name);

@@ -9,6 +9,9 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <memory>
+#include <mutex>
+#include <set>
 #include <optional>
 #include <random>
 #include <string>
@@ -135,6 +138,27 @@ class Checker {
     std::size_t text_size = 0;               // length of its printed closed form
     Shape shape;
     std::vector<GiNaC::ex> kinks;            // its abs() and csgn()
+    // What diagnosing a wrong answer needs of the reference alone, made when first wanted
+    // (once per batch, not per answer).
+    struct Diagnosis {
+      GiNaC::ex expanded;                           // the closed form expanded
+      std::set<GiNaC::ex, GiNaC::ex_is_less> needed;  // its parameters
+      // As c times powers of coprime factors (see Factored in check.cpp), when it is one.
+      std::optional<std::pair<GiNaC::numeric, std::map<GiNaC::ex, int, GiNaC::ex_is_less>>> factored;
+      // At the first point with each of its parameters doubled in turn (in the points' order).
+      std::vector<std::optional<GiNaC::numeric>> doubled;
+      // The closed form with one term's sign turned, or one term left out: at each point.
+      std::vector<std::vector<std::optional<GiNaC::numeric>>> term_turned, term_left_out;
+      // At each point with a parameter at zero (by its place in parameters_), and with two
+      // parameters of one dimension equal.
+      std::map<std::size_t, std::vector<std::optional<GiNaC::numeric>>> zeroed;
+      std::map<std::pair<std::size_t, std::size_t>, std::vector<std::optional<GiNaC::numeric>>> equalled;
+    };
+    struct Lazy {
+      std::once_flag made;
+      Diagnosis diagnosis;
+    };
+    std::shared_ptr<Lazy> lazy = std::make_shared<Lazy>();
   };
   struct Parameter {
     std::string name;
@@ -168,8 +192,19 @@ class Checker {
                            CheckResult r, const GiNaC::exmap* values) const;
   CheckResult check_expression(const Reference& ref, std::string_view text, CheckResult r,
                                std::chrono::steady_clock::time_point start, const std::function<int(int)>& column) const;
-  void diagnose(const Reference& ref, const GiNaC::ex& answer, const std::vector<GiNaC::numeric>& values,
+  void diagnose(const Reference& ref, const GiNaC::ex& answer, const Exact& answer_at, const std::vector<GiNaC::numeric>& values,
                 CheckResult& r) const;
+  // The quotient answer/reference as the values show it: a product of powers of the
+  // parameters (c p^e q^f..., exponents up to 4) when it is one, and how many parameters it
+  // depends on. None when the values are not all exact.
+  struct QuotientShape {
+    std::optional<GiNaC::ex> monomial;
+    int depends_on = 0;
+  };
+  [[nodiscard]] std::optional<QuotientShape> quotient_shape(const Reference& ref, const Exact& answer_at,
+                                                            const std::vector<GiNaC::numeric>& values) const;
+  /// The reference's part of every diagnosis (made once, on first use; safe from threads).
+  [[nodiscard]] const Reference::Diagnosis& diagnosis(const Reference& ref) const;
   /// The answer (its definitions put in), which agrees with the reference at every fixed
   /// point, decided: proved or refuted by normal() where GiNaC can, else at fresh points (and
   /// for abs(), on each side of every kink).

@@ -83,6 +83,20 @@ TEST_CASE("Check: off by a factor of 2, wrong sign, swapped l and d", "[check]")
   CHECK(r.summary == "d and l are swapped");
 }
 
+TEST_CASE("Check: a factor in the parameters is named, whichever way it is found", "[check]") {
+  // A product of powers (found from the values), a sum in two parameters (the factors cancel
+  // at sight), the same with the reference's sum inside a fraction, and a sum in three
+  // parameters, which is not named (the values show it is neither).
+  const Checker& pulley = checker("sample-12.3-two-mass-pulley.yaml");
+  CHECK(suitcase().check("N_A", "m*g*(1/2 - mu*h/l)*mu*h/l").summary == "off by a factor of h*mu/l");
+  CHECK(pulley.check("T", "2*F*(m_A + m_B)/(9*m_A + 4*m_B)").summary == "off by a factor of (m_A + m_B)/m_B");
+  CHECK(pulley.check("T", "2*m_B*F/(9*m_A + 4*m_B)/(m_A + m_B)*m_B").summary == "off by a factor of m_B/(m_A + m_B)");
+  CHECK(suitcase().check("N_A", "m*g*(1/2 - mu*h/l)*(l + h)/l").summary == "off by a factor of (h + l)/l");
+  const auto three = suitcase().check("N_A", "m*g*(1/2 - mu*h/l)*(l + h)*mu/h");
+  CHECK(three.verdict == Verdict::incorrect);
+  CHECK(std::none_of(three.findings.begin(), three.findings.end(), [](const Finding& f) { return f.code == "factor"; }));
+}
+
 TEST_CASE("Check: the suitcase's normal force without friction is correct only for mu = 0", "[check]") {
   const auto r = suitcase().check("N_A", "m*g/2");
   CHECK(r.verdict == Verdict::incorrect);
@@ -612,4 +626,37 @@ TEST_CASE("Grading: a format error names its line once", "[check][batch][platfor
   CHECK(j["format_errors"][0] == "line 1: not a JSON object with id, unknown and answer");
   CHECK(j["format_errors"][1] == "line 2: T_HI: \"params\" is not an object of parameter values");
   CHECK(j["format_errors"][2] == "s3: T_HI: line 3: \"params\" is not an object of parameter values");
+}
+
+TEST_CASE("Grading: a batch line is the JSON library's own dump of the result, byte for byte", "[check][batch]") {
+  // The batch writes its lines itself (a sixth of a check went into building JSON objects);
+  // the library's dump of the same object is the reference.
+  const std::vector<std::string> texts{"", "plain", "quote \" and backslash \\", "tab\tnew\nline\rcr\bbs\fff",
+                                       std::string("nul\0one\x01\x1f", 12), "del \x7f", "UTF-8: \xce\xbc N, \xe2\x89\xa5",
+                                       "not UTF-8: \xe9t\xe9", "cut \xe2\x89", "\xf0\x9f\x98\x80 emoji"};
+  for (const double score : {0.0, 1.0, 0.5, 0.25, 1e-7, 2.0 / 3.0})
+    for (const auto& t : texts) {
+      CheckResult r;
+      r.unknown = t;
+      r.verdict = Verdict::incorrect;
+      r.score = score;
+      r.summary = t + " summary";
+      r.findings = {{"code", t}, {t, "message"}};
+      r.method = "numeric";
+      r.echo_text = t;
+      r.echo_latex = "\\frac{" + t + "}{2}";
+      for (const std::string id : {std::string(), t, std::string("s1")}) {
+        // The single answer's JSON (the library's), without its version: the same fields.
+        auto j = nlohmann::ordered_json::parse(result_json(r, t, id));
+        j.erase("version");
+        CHECK(result_line(r, t, id) == j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
+      }
+    }
+  // No findings: an empty array.
+  CheckResult ok;
+  ok.unknown = "T";
+  ok.verdict = Verdict::correct;
+  ok.score = 1.0;
+  CHECK(result_line(ok, "T = 1", "") ==
+        R"({"unknown":"T","answer":"T = 1","verdict":"correct","score":1.0,"summary":"","findings":[],"method":"","read_as":"","latex":""})");
 }
