@@ -1156,7 +1156,7 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
     value = ex_to<numeric>(is_a<numeric>(si) ? si : evalf(si));
   }
   r.echo_text = std::string(number) + (unit_text.empty() ? "" : " " + std::string(unit_text));
-  r.echo_latex = std::string(number) + (unit_text.empty() ? "" : "\\," + unit_latex(unit_text));
+  if (options_.echo_latex) r.echo_latex = std::string(number) + (unit_text.empty() ? "" : "\\," + unit_latex(unit_text));
   // The student's own numbers, when given: the closed form evaluated there (exactly, then
   // to the comparison's precision).
   std::optional<numeric> at_values = ref.value;

@@ -660,3 +660,16 @@ TEST_CASE("Grading: a batch line is the JSON library's own dump of the result, b
   CHECK(result_line(ok, "T = 1", "") ==
         R"({"unknown":"T","answer":"T = 1","verdict":"correct","score":1.0,"summary":"","findings":[],"method":"","read_as":"","latex":""})");
 }
+
+TEST_CASE("Check: without the LaTeX echo, no answer gets one, a number with a unit neither", "[check]") {
+  auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.7-suitcase.yaml", test::rules());
+  CheckOptions options;
+  options.echo_latex = false;
+  const Checker quiet(*a, options);
+  for (const std::string answer : {"m*g*(1/2 - mu*h/l)", "29.43 N", "m*g"}) {
+    const auto r = quiet.check("N_A", answer);
+    CHECK(r.echo_latex.empty());
+    CHECK(!r.echo_text.empty());  // the text echo stays
+  }
+  CHECK(suitcase().check("N_A", "29.43 N").echo_latex == "29.43\\,\\mathrm{N}");
+}
