@@ -30,6 +30,10 @@ nlohmann::ordered_json to_json(const CheckResult& r, const std::string& answer, 
   j["method"] = r.method;
   j["read_as"] = r.echo_text;
   j["latex"] = r.echo_latex;
+  if (r.equation) {
+    j["identified_as"] = r.identified_as;
+    j["follows_from"] = r.follows_from;
+  }
   return j;
 }
 
@@ -107,6 +111,15 @@ std::string result_line(const CheckResult& r, const std::string& answer, const s
   append_quoted(out, r.echo_text);
   out += ",\"latex\":";
   append_quoted(out, r.echo_latex);
+  if (r.equation)
+    for (const auto& [name, list] : {std::pair{"identified_as", &r.identified_as}, std::pair{"follows_from", &r.follows_from}}) {
+      out += std::string(",\"") + name + "\":[";
+      for (std::size_t k = 0; k < list->size(); ++k) {
+        if (k) out += ',';
+        append_quoted(out, (*list)[k]);
+      }
+      out += ']';
+    }
   out += '}';
   return out;
 }
@@ -125,6 +138,8 @@ std::string result_text(const CheckResult& r) {
   if (!r.echo_text.empty()) out += "  read as: " + r.echo_text + "\n";
   for (const auto& f : r.findings)
     if (f.message != r.summary) out += "  also: " + f.message + "\n";
+  if (r.equation && r.verdict == Verdict::correct && r.follows_from.size() > 1)
+    out += "  follows from: " + join(r.follows_from) + "\n";
   return out;
 }
 
@@ -180,6 +195,7 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     ++s.lines;
     std::string id = "line " + std::to_string(s.lines), unknown, answer;
+    bool equation = false;
     std::vector<std::pair<std::string, std::string>> params = options.set;
     CheckResult r;
     std::string problem;
@@ -191,10 +207,18 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
         const auto j = nlohmann::json::parse(line);
         if (!j.is_object()) throw std::runtime_error("not an object");
         if (j.contains("id")) id = j["id"].is_string() ? j["id"].get<std::string>() : j["id"].dump(-1, ' ', false, J::error_handler_t::replace);
-        if (!j.contains("unknown") || !j["unknown"].is_string()) problem = "no \"unknown\" (a string)";
-        else unknown = j["unknown"].get<std::string>();
-        if (!j.contains("answer")) problem = "no \"answer\"";
-        else answer = j["answer"].is_string() ? j["answer"].get<std::string>() : j["answer"].dump(-1, ' ', false, J::error_handler_t::replace);
+        if (j.contains("equation")) {
+          // A step of a worked solution: an equation, checked against the derivation's.
+          if (!j["equation"].is_string()) problem = "\"equation\" is not a string";
+          else answer = j["equation"].get<std::string>();
+          if (j.contains("answer")) problem = "a line has an \"equation\" or an \"answer\", not both";
+          equation = true;
+        } else {
+          if (!j.contains("unknown") || !j["unknown"].is_string()) problem = "no \"unknown\" (a string)";
+          else unknown = j["unknown"].get<std::string>();
+          if (!j.contains("answer")) problem = "no \"answer\"";
+          else answer = j["answer"].is_string() ? j["answer"].get<std::string>() : j["answer"].dump(-1, ' ', false, J::error_handler_t::replace);
+        }
         if (j.contains("params")) {
           if (!j["params"].is_object()) {
             problem = "\"params\" is not an object of parameter values";
@@ -221,6 +245,8 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
       r.verdict = Verdict::invalid;
       r.summary = "line " + std::to_string(s.lines) + ": " + problem;
       r.findings.push_back({"not_an_answer", r.summary});
+    } else if (equation) {
+      r = checker.check_equation(answer);
     } else {
       r = checker.check(unknown, answer, values ? &*values : nullptr);
     }

@@ -1,4 +1,5 @@
 #include "check/check.hpp"
+#include "check/equation.hpp"
 
 #include "core/utf8.hpp"
 
@@ -104,28 +105,6 @@ std::optional<std::string> split_into_names(const std::string& word, const std::
   return std::nullopt;
 }
 
-// An upper bound on the number of terms normal() might expand an expression into.
-double expanded_size(const ex& e) {
-  if (is_a<add>(e)) {
-    double s = 0;
-    for (std::size_t i = 0; i < e.nops(); ++i) s += expanded_size(e.op(i));
-    return s;
-  }
-  if (is_a<mul>(e)) {
-    double s = 1;
-    for (std::size_t i = 0; i < e.nops(); ++i) s *= expanded_size(e.op(i));
-    return s;
-  }
-  if (is_a<power>(e) && is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer()) {
-    const double k = expanded_size(e.op(0));
-    const double n = std::abs(ex_to<numeric>(e.op(1)).to_double());
-    // Terms of (t_1 + ... + t_k)^n: C(n + k - 1, k - 1).
-    double c = 1;
-    for (int i = 1; i < k && c < 1e12; ++i) c = c * (n + i) / i;
-    return c;
-  }
-  return 1;
-}
 
 // abs(), csgn() and step(): an expression in them may be correct on one side of a kink (where
 // the argument changes sign) and not on the other, so agreeing near the parameters' values
@@ -191,6 +170,28 @@ std::string factor_words(const numeric& c) {
 }
 
 }  // namespace
+
+double expanded_size(const ex& e) {
+  if (is_a<add>(e)) {
+    double s = 0;
+    for (std::size_t i = 0; i < e.nops(); ++i) s += expanded_size(e.op(i));
+    return s;
+  }
+  if (is_a<mul>(e)) {
+    double s = 1;
+    for (std::size_t i = 0; i < e.nops(); ++i) s *= expanded_size(e.op(i));
+    return s;
+  }
+  if (is_a<power>(e) && is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_integer()) {
+    const double k = expanded_size(e.op(0));
+    const double n = std::abs(ex_to<numeric>(e.op(1)).to_double());
+    // Terms of (t_1 + ... + t_k)^n: C(n + k - 1, k - 1).
+    double c = 1;
+    for (int i = 1; i < k && c < 1e12; ++i) c = c * (n + i) / i;
+    return c;
+  }
+  return 1;
+}
 
 Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(options), symbols_(analysis.model.symbols) {
   const Model& m = analysis.model;
@@ -259,7 +260,18 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
     if (std::none_of(analysis.solution.free.begin(), analysis.solution.free.end(), [&](const ex& f) { return general.has(f); }))
       add_reference(w.name, simplest(general), w.dimension);
   }
+  equations_ = std::make_shared<const EquationChecker>(analysis, options_);
 }
+
+CheckResult& CheckResult::conclude(Verdict v, std::string code, std::string message) {
+  verdict = v;
+  summary = message;
+  if (!code.empty()) findings.push_back({std::move(code), std::move(message)});
+  score = v == Verdict::correct ? 1.0 : 0.0;
+  return *this;
+}
+
+CheckResult Checker::check_equation(std::string_view equation) const { return equations_->check(equation); }
 
 std::vector<std::string> Checker::unknowns() const {
   std::vector<std::string> out;
@@ -1226,13 +1238,7 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
                                       std::chrono::steady_clock::time_point start,
                                       const std::function<int(int)>& column) const {
   auto over_budget = [&] { return std::chrono::steady_clock::now() - start > options_.time_budget; };
-  auto finish = [&](Verdict v, std::string code, std::string message) {
-    r.verdict = v;
-    r.summary = message;
-    if (!code.empty()) r.findings.push_back({std::move(code), std::move(message)});
-    r.score = v == Verdict::correct ? 1.0 : 0.0;
-    return r;
-  };
+  auto finish = [&](Verdict v, std::string code, std::string message) { return r.conclude(v, std::move(code), std::move(message)); };
   AnswerNames resolver(answer_names_);
   const ParseResult parsed = parse_expression(text, resolver, options_.limits);
   if (!parsed.value) {

@@ -48,6 +48,9 @@ struct CheckOptions {
   bool reveal = false;
 };
 
+/// An upper bound on the number of terms `e` expands into (normal() or expand()).
+[[nodiscard]] double expanded_size(const GiNaC::ex& e);
+
 enum class Verdict { correct, incorrect, invalid, undecided };
 [[nodiscard]] std::string verdict_name(Verdict v);
 
@@ -70,7 +73,17 @@ struct CheckResult {
   std::string echo_text;   // the answer as tackle read it
   std::string echo_latex;
   double score = 0.0;
+  // An equation checked (check_equation): the derivation's equations it is (up to a non-zero
+  // factor), or that it follows from; a correct one names them.
+  bool equation = false;
+  std::vector<std::string> identified_as, follows_from;
+
+  /// Sets the verdict and its summary, the finding too when there is a code; the score follows
+  /// the verdict (1 when correct, else 0).
+  CheckResult& conclude(Verdict v, std::string code, std::string message);
 };
+
+class EquationChecker;
 
 class Checker {
  public:
@@ -88,6 +101,9 @@ class Checker {
   /// an input error).
   [[nodiscard]] std::optional<GiNaC::exmap> values_for(const std::vector<std::pair<std::string, std::string>>& set,
                                                        std::string& problem, bool* out_of_domain = nullptr) const;
+  /// Checks an equation the student wrote ("2*T - F = m_A*ddot(x_A)"): correct when it is a
+  /// combination of the derivation's equations (see check/equation.hpp).
+  [[nodiscard]] CheckResult check_equation(std::string_view equation) const;
   /// The names that can be checked (determined unknowns and defined quantities).
   [[nodiscard]] std::vector<std::string> unknowns() const;
   [[nodiscard]] const CheckOptions& options() const { return options_; }
@@ -232,6 +248,7 @@ class Checker {
   std::vector<std::pair<GiNaC::ex, std::optional<GiNaC::numeric>>> bases_;
   GiNaC::numeric tolerance_;                // relative, for values that are not exact: 10^-(digits - 8)
   std::map<std::string, Reference, std::less<>> references_;
+  std::shared_ptr<const EquationChecker> equations_;
 };
 
 }  // namespace tackle

@@ -121,7 +121,8 @@ struct Options {
   double until = 0;
   int samples = 201;
   // check
-  std::string unknown, answer, batch, results, results_format = "gradescope";
+  std::string unknown, answer, equation, batch, results, results_format = "gradescope";
+  bool equation_given = false;
   double tolerance = 0.01;
   int sig_figs = 0;
   bool require_simplified = false, no_latex = false, reveal = false, top_level_score = false;
@@ -385,6 +386,10 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
       }
     return 0;
   }
+  if (o.equation_given) {
+    const auto result = checker.check_equation(o.equation);
+    return emit(o.format == "json" ? tackle::result_json(result, o.equation) : tackle::result_text(result), o.out);
+  }
   const auto result = checker.check(o.unknown, o.answer, values ? &*values : nullptr);
   return emit(o.format == "json" ? tackle::result_json(result, o.answer) : tackle::result_text(result), o.out);
 }
@@ -501,12 +506,17 @@ int run(int argc, char** argv) {
     with_phase(simulate);
   });
 
-  CLI::Option *answer_opt = nullptr, *batch_opt = nullptr;
+  CLI::Option *answer_opt = nullptr, *batch_opt = nullptr, *equation_opt = nullptr;
   auto* check = add("check", "Check a student's answer (or a batch of them) against the closed form", [&](CLI::App* check) {
     check->add_option("file", o.file, "Problem description (YAML)")->required();
     auto* unknown_opt = check->add_option("--unknown", o.unknown, "The unknown the answer is for, e.g. T_HI");
     answer_opt = check->add_option("--answer", o.answer, "The answer: an expression, 'T = ...', or a number with a unit");
-    batch_opt = check->add_option("--batch", o.batch, "JSON Lines file of {\"id\", \"unknown\", \"answer\"} (- for standard input)");
+    equation_opt = check->add_option("--equation", o.equation,
+                                     "An equation the student wrote, e.g. '2*T - F = m_A*ddot(x_A)': is it one of the balances and "
+                                     "constraints, or does it follow from them?")
+                       ->each([&](const std::string&) { o.equation_given = true; });
+    batch_opt = check->add_option("--batch", o.batch, "JSON Lines file of {\"id\", \"unknown\", \"answer\"} or {\"id\", \"equation\"} "
+                                                      "(- for standard input)");
     auto* results_opt = check->add_option("--results", o.results, "With --batch: also write a grading platform's results file")
         ->needs(batch_opt);
     check->add_option("--results-format", o.results_format, "The results file's platform")
@@ -539,6 +549,7 @@ int run(int argc, char** argv) {
     answer_opt->needs(unknown_opt);
     unknown_opt->needs(answer_opt);
     batch_opt->excludes(answer_opt);
+    equation_opt->excludes(answer_opt)->excludes(batch_opt)->excludes(unknown_opt);
   });
   const std::string asked = asked_subcommand(argc, argv);
   const bool named = std::any_of(definitions.begin(), definitions.end(), [&](const auto& d) { return d.first->get_name() == asked; });
@@ -551,8 +562,8 @@ int run(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
-  if (check->parsed() && answer_opt->count() == 0 && batch_opt->count() == 0) {
-    std::cerr << "tackle check: give --unknown and --answer, or --batch\n";
+  if (check->parsed() && answer_opt->count() == 0 && batch_opt->count() == 0 && equation_opt->count() == 0) {
+    std::cerr << "tackle check: give --unknown and --answer, --equation, or --batch\n";
     return 2;
   }
   if (isolate->parsed() && o.target.empty() && !o.all) {

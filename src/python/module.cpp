@@ -106,6 +106,19 @@ class Problem {
                     py::arg("read_as") = r.echo_text, py::arg("latex") = r.echo_latex);
   }
 
+  // One equation a student wrote: is it one of the derivation's, or does it follow from them?
+  [[nodiscard]] py::dict check_equation(const std::string& equation) const {
+    const tackle::Checker checker(*analysis_, options(0.01, false));
+    const tackle::CheckResult r = checker.check_equation(equation);
+    py::list findings, identified, follows;
+    for (const auto& f : r.findings) findings.append(py::dict(py::arg("code") = f.code, py::arg("message") = f.message));
+    for (const auto& n : r.identified_as) identified.append(n);
+    for (const auto& n : r.follows_from) follows.append(n);
+    return py::dict(py::arg("verdict") = tackle::verdict_name(r.verdict), py::arg("score") = r.score, py::arg("summary") = r.summary,
+                    py::arg("findings") = findings, py::arg("method") = r.method, py::arg("read_as") = r.echo_text,
+                    py::arg("latex") = r.echo_latex, py::arg("identified_as") = identified, py::arg("follows_from") = follows);
+  }
+
   // JSON Lines in; (the results a line, the platform's results file) out.
   [[nodiscard]] py::tuple check_batch(const std::string& lines, const std::string& results_format, double points,
                                       const py::dict& params, double tolerance, bool reveal) const {
@@ -171,6 +184,8 @@ PYBIND11_MODULE(tackle, m) {
            "Parameters drawn from their ranges and the answers there, or None without ranges")
       .def("check", &Problem::check, py::arg("unknown"), py::arg("answer"), py::arg("params") = py::dict(),
            py::arg("tolerance") = 0.01, py::arg("reveal") = false, "Check one answer: verdict, score, summary, findings")
+      .def("check_equation", &Problem::check_equation, py::arg("equation"),
+           "Check an equation the student wrote: verdict, score, summary, findings, identified_as, follows_from")
       .def("check_batch", &Problem::check_batch, py::arg("lines"), py::arg("results_format") = "gradescope",
            py::arg("points") = 1.0, py::arg("params") = py::dict(), py::arg("tolerance") = 0.01, py::arg("reveal") = false,
            "Check JSON Lines of answers: (results a line, the platform's results file)");

@@ -1,5 +1,6 @@
 // Fuzz target: a student's answer through the strict parser and the checker. The first
-// byte picks the problem, the second the unknown; the rest is the answer as typed. Seeds
+// byte picks the problem, the second the unknown (or an equation, checked against the
+// derivation's equations); the rest is the answer as typed. Seeds
 // and a dictionary of operators, names, numbers and units are in this folder.
 #include "common.hpp"
 
@@ -9,6 +10,8 @@
 #include "check/check.hpp"
 
 namespace {
+
+const std::string equation = "=";  // not an unknown's name: the text is an equation
 
 struct Problem {
   std::unique_ptr<const tackle::Analysis> analysis;
@@ -29,6 +32,7 @@ const std::vector<Problem>& problems() {
       p.checker = std::make_unique<const tackle::Checker>(*p.analysis, options);
       p.unknowns = p.checker->unknowns();
       p.unknowns.push_back("no_such_unknown");
+      p.unknowns.push_back(equation);
       out.push_back(std::move(p));
     }
     return out;
@@ -42,6 +46,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size < 2) return 0;
   const Problem& p = problems()[data[0] % problems().size()];
   const std::string& unknown = p.unknowns[data[1] % p.unknowns.size()];
-  (void)p.checker->check(unknown, tackle::fuzz::text_of(data + 2, size - 2));
+  if (unknown == equation) (void)p.checker->check_equation(tackle::fuzz::text_of(data + 2, size - 2));
+  else (void)p.checker->check(unknown, tackle::fuzz::text_of(data + 2, size - 2));
   return 0;
 }

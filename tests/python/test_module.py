@@ -46,6 +46,15 @@ class ModuleTest(unittest.TestCase):
         with self.assertRaises(ValueError):
             self.p.check("T", "20 N", params={"G": 1})
 
+    def test_check_equation(self):
+        right = self.p.check_equation("2*T - F = m_A*ddot(x_A)")
+        self.assertEqual(right["verdict"], "correct")
+        self.assertEqual(right["identified_as"], ["LMB A (x)"])
+        wrong = self.p.check_equation("T - F = m_A*ddot(x_A)")
+        self.assertEqual(wrong["verdict"], "incorrect")
+        self.assertEqual(wrong["findings"][0]["code"], "missing_force")
+        self.assertEqual(wrong["summary"], "a strand of string s at pA is missing (LMB A (x))")
+
     def test_batch_for_prairielearn(self):
         lines = ('{"id": "a", "unknown": "T", "answer": "2*F*m_B/(9*m_A + 4*m_B)"}\n'
                  '{"id": "b", "unknown": "T", "answer": "3*"}\n')

@@ -1,0 +1,286 @@
+#include "check/equation.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "core/utf8.hpp"
+#include "expr/parse.hpp"
+#include "expr/print.hpp"
+#include "expr/rational.hpp"
+#include "core/units.hpp"
+
+namespace tackle {
+
+using namespace GiNaC;
+
+namespace {
+
+// Larger families are not decided (each rank is a symbolic elimination).
+constexpr std::size_t max_family = 40;
+
+// The source of a term as a student reads it: "a strand of string s at pA", "the weight of A",
+// "the force on A".
+std::string phrase(const std::string& source) {
+  const auto colon = source.find(": strand ");
+  const auto at = source.rfind(" at ");
+  if (colon != std::string::npos && at != std::string::npos && at > colon) {
+    const std::string element = source.substr(0, colon), point = source.substr(at + 4);
+    if (element.rfind("string ", 0) == 0) return "a strand of " + element + " at " + point;
+    return "the force of " + element + " at " + point;
+  }
+  if (source.rfind("gravity on ", 0) == 0) return "the weight of " + source.substr(11);
+  if (source.rfind("force ", 0) == 0) return "the " + source;
+  if (source.rfind("sliding at ", 0) == 0) return "the force of the sliding contact at " + source.substr(11);
+  return "the force of the " + source;
+}
+
+// The balance as a student names it: "the LMB of A (x)".
+std::string balance_name(const Equation& e) { return e.label; }
+
+}  // namespace
+
+EquationChecker::EquationChecker(const Analysis& analysis, const CheckOptions& options)
+    : options_(options),
+      symbols_(analysis.model.symbols),
+      definitions_(analysis.model.symbols->definitions()),
+      equations_(analysis.system.equations),
+      rate_equations_(analysis.system.rate_equations) {
+  auto family = [&](const std::vector<Equation>& eqs, SymbolRole role, Family& f) {
+    std::set<ex, ex_is_less> seen;
+    for (const auto& e : eqs) f.equations.push_back(&e);
+    for (const auto& s : symbols_->all()) {
+      const bool wanted = role == SymbolRole::acceleration
+                              ? (s->role == SymbolRole::acceleration || s->role == SymbolRole::unknown)
+                              : s->role == SymbolRole::rate;
+      if (!wanted) continue;
+      for (const auto& e : eqs)
+        if ((e.lhs - e.rhs).has(s->sym) && seen.insert(s->sym).second) {
+          f.unknowns.push_back(s->sym);
+          break;
+        }
+    }
+    for (const auto& e : eqs) {
+      const auto v = vector_of(substituted(e.lhs - e.rhs, definitions_), f);
+      // (An equation not linear in the unknowns is no column: none is, at these levels.)
+      f.vectors.push_back(v ? *v : std::vector<ex>(f.unknowns.size() + 1, 0));
+    }
+  };
+  family(equations_, SymbolRole::acceleration, acceleration_);
+  family(rate_equations_, SymbolRole::rate, rate_);
+}
+
+std::optional<std::vector<ex>> EquationChecker::vector_of(const ex& residual, const Family& f) const {
+  const ex e = residual.expand();
+  std::vector<ex> v;
+  exmap zero;
+  for (const ex& u : f.unknowns) zero[u] = 0;
+  for (const ex& u : f.unknowns) {
+    if (e.degree(u) > 1 || e.ldegree(u) < 0) return std::nullopt;
+    const ex c = e.coeff(u, 1);
+    for (const ex& w : f.unknowns)
+      if (c.has(w)) return std::nullopt;  // a product of two unknowns
+    v.push_back(c);
+  }
+  const ex rest = e.subs(zero);
+  // Every unknown must appear linearly: what is left must be free of them, and the parts
+  // must make the whole (abs(T) has no part linear in T).
+  for (const ex& w : f.unknowns)
+    if (rest.has(w)) return std::nullopt;
+  ex whole = rest;
+  for (std::size_t i = 0; i < f.unknowns.size(); ++i) whole += v[i] * f.unknowns[i];
+  if (!(e - whole).expand().is_zero()) return std::nullopt;
+  v.push_back(rest);
+  return v;
+}
+
+bool EquationChecker::proportional(const std::vector<ex>& a, const std::vector<ex>& b) {
+  // Every 2x2 minor zero, and neither is zero.
+  bool a_zero = true, b_zero = true;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    a_zero = a_zero && a[i].is_zero();
+    b_zero = b_zero && b[i].is_zero();
+  }
+  if (a_zero || b_zero) return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = i + 1; j < a.size(); ++j)
+      if (!normal(a[i] * b[j] - a[j] * b[i]).is_zero()) return false;
+  return true;
+}
+
+bool EquationChecker::in_span(const std::vector<std::vector<ex>>& columns, const std::vector<ex>& v) const {
+  if (columns.empty()) return std::all_of(v.begin(), v.end(), [](const ex& x) { return x.is_zero(); });
+  const std::size_t rows = v.size();
+  matrix a(rows, columns.size()), b(rows, columns.size() + 1);
+  for (std::size_t i = 0; i < rows; ++i) {
+    for (std::size_t j = 0; j < columns.size(); ++j) {
+      a(i, j) = columns[j][i];
+      b(i, j) = columns[j][i];
+    }
+    b(i, columns.size()) = v[i];
+  }
+  return a.rank() == b.rank();
+}
+
+CheckResult EquationChecker::check(std::string_view text) const {
+  CheckResult r;
+  r.equation = true;
+  auto finish = [&](Verdict v, std::string code, std::string message) { return r.conclude(v, std::move(code), std::move(message)); };
+  if (text.size() > options_.limits.max_length)
+    return finish(Verdict::invalid, "too_large", "the equation is too long (" + std::to_string(text.size()) +
+                                                     " characters; at most " + std::to_string(options_.limits.max_length) + ")");
+  if (const auto bad = invalid_utf8_at(text))
+    return finish(Verdict::invalid, "syntax", "at column " + std::to_string(*bad + 1) + ": the equation is not valid UTF-8 text");
+  // One '=' at the top: "lhs = rhs".
+  std::vector<std::size_t> equals;
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '=') equals.push_back(i);
+  const bool relation = std::any_of(equals.begin(), equals.end(), [&](std::size_t i) {
+    return (i > 0 && (text[i - 1] == '<' || text[i - 1] == '>' || text[i - 1] == '!')) || (i + 1 < text.size() && text[i + 1] == '=');
+  });
+  if (equals.size() != 1 || relation)
+    return finish(Verdict::invalid, "not_an_equation",
+                  equals.empty() ? "this is not an equation (expected one '=' between two sides, e.g. 2*T - F = m_A*ddot(x_A))"
+                                 : "write one '=' between the two sides (found " + std::to_string(equals.size()) + ")");
+  const std::size_t eq = equals.front();
+  const std::string_view sides[2] = {text.substr(0, eq), text.substr(eq + 1)};
+  ex side[2];
+  for (int k = 0; k < 2; ++k) {
+    if (sides[k].find_first_not_of(" \t") == std::string_view::npos)
+      return finish(Verdict::invalid, "not_an_equation", std::string(k == 0 ? "the left" : "the right") + " side is empty");
+    const ParseResult parsed = parse_expression(sides[k], *symbols_, options_.limits);
+    if (!parsed.value) {
+      const ParseProblem& p = parsed.problems.front();
+      const bool limit = p.message.find("too ") != std::string::npos || p.message.find("at most") != std::string::npos;
+      return finish(Verdict::invalid, limit ? "too_large" : "syntax",
+                    "at column " + std::to_string(p.column + 1 + (k == 0 ? 0 : static_cast<int>(eq) + 1)) + ": " + p.message);
+    }
+    if (is_vector(*parsed.value)) return finish(Verdict::invalid, "syntax", "a side is a vector; write one component at a time");
+    side[k] = *parsed.value;
+  }
+  r.echo_text = to_text(side[0]) + " = " + to_text(side[1]);
+  if (options_.echo_latex) r.echo_latex = to_latex(side[0]) + " = " + to_latex(side[1]);
+  // Dimensions: each side consistent, and the same on both.
+  std::optional<Dimension> dim[2];
+  for (int k = 0; k < 2; ++k) {
+    std::string problem;
+    dim[k] = dimension_of(side[k], *symbols_, problem);
+    if (!dim[k] && !problem.empty())
+      return finish(Verdict::incorrect, "dimension", std::string(k == 0 ? "the left" : "the right") +
+                                                         " side is dimensionally inconsistent: it " + problem);
+  }
+  const bool zero_side = side[0].is_zero() || side[1].is_zero();
+  if (dim[0] && dim[1] && !(*dim[0] == *dim[1]) && !zero_side)
+    return finish(Verdict::incorrect, "dimension", "the left side is " + with_article(dim[0]->describe()) + " and the right side " +
+                                                       with_article(dim[1]->describe()));
+  const ex unexpanded = substituted(side[0] - side[1], definitions_);
+  if (expanded_size(unexpanded) > static_cast<double>(options_.exact_size_budget))
+    return finish(Verdict::undecided, "too_large", "the equation expands into too many terms to be checked (at most " +
+                                                       std::to_string(options_.exact_size_budget) + ")");
+  const ex residual = unexpanded.expand();
+  if (residual.is_zero())
+    return finish(Verdict::incorrect, "trivial", "the equation holds whatever the forces and the motion are (it reads 0 = 0 once simplified): it says nothing about this problem");
+  // Which level: the rates' equations when it has rates and no accelerations or forces.
+  bool has_acceleration = false, has_rate = false;
+  for (const ex& u : acceleration_.unknowns) has_acceleration = has_acceleration || residual.has(u);
+  for (const ex& u : rate_.unknowns) has_rate = has_rate || residual.has(u);
+  const Family& f = has_rate && !has_acceleration ? rate_ : acceleration_;
+  if (f.equations.size() > max_family)
+    return finish(Verdict::undecided, "too_large", "this problem has too many equations to decide a combination of them (" +
+                                                       std::to_string(f.equations.size()) + ")");
+  const auto v = vector_of(residual, f);
+  if (!v)
+    return finish(Verdict::incorrect, "not_linear",
+                  "the equation is not linear in the unknowns (forces and accelerations), as every balance and constraint of this problem is");
+  if (in_span(f.vectors, *v)) {
+    r.verdict = Verdict::correct;
+    r.score = 1.0;
+    r.method = "exact";
+    for (std::size_t i = 0; i < f.vectors.size(); ++i)
+      if (proportional(f.vectors[i], *v)) r.identified_as.push_back(f.equations[i]->label);
+    if (!r.identified_as.empty()) {
+      r.follows_from = {r.identified_as.front()};
+      r.summary = "it is " + r.identified_as.front();
+      return r;
+    }
+    // The equations it follows from: all of them, then each left out while the rest still give it.
+    std::vector<std::size_t> used;
+    for (std::size_t i = 0; i < f.vectors.size(); ++i)
+      if (std::any_of(f.vectors[i].begin(), f.vectors[i].end(), [](const ex& x) { return !x.is_zero(); })) used.push_back(i);
+    for (std::size_t k = used.size(); k-- > 0;) {
+      std::vector<std::vector<ex>> rest;
+      for (const std::size_t j : used)
+        if (j != used[k]) rest.push_back(f.vectors[j]);
+      if (in_span(rest, *v)) used.erase(used.begin() + static_cast<std::ptrdiff_t>(k));
+    }
+    for (const std::size_t j : used) r.follows_from.push_back(f.equations[j]->label);
+    r.summary = "it follows from " + (r.follows_from.size() == 1 ? r.follows_from.front()
+                                                   : join(std::vector<std::string>(r.follows_from.begin(), r.follows_from.end() - 1)) +
+                                                         " and " + r.follows_from.back());
+    return r;
+  }
+  r.method = "exact";
+  diagnose(f, *v, r);
+  // A force missing or turned is more specific than the inertial term (N_A + N_B = 0 is the
+  // vertical balance without the weight, and also the horizontal one without m a).
+  const auto rank = [](const Finding& x) { return x.code == "missing_inertia" || x.code == "inertia_sign" ? 1 : 0; };
+  std::stable_sort(r.findings.begin(), r.findings.end(), [&](const Finding& a, const Finding& b) { return rank(a) < rank(b); });
+  if (r.findings.empty())
+    r.findings.push_back({"value", "the equation does not follow from the balances and constraints of this problem"});
+  r.verdict = Verdict::incorrect;
+  r.score = 0.0;
+  r.summary = r.findings.front().message;
+  return r;
+}
+
+void EquationChecker::diagnose(const Family& f, const std::vector<ex>& v, CheckResult& r) const {
+  std::set<std::string> said;
+  auto say = [&](const std::string& code, const std::string& message) {
+    if (said.insert(message).second) r.findings.push_back({code, message});
+  };
+  auto matches = [&](const ex& candidate) {
+    const auto w = vector_of(substituted(candidate, definitions_), f);
+    return w && proportional(*w, v);
+  };
+  // Every term of every balance, for a force that acts on another body.
+  for (const Equation* e : f.equations) {
+    if (e->kind != Equation::Kind::lmb && e->kind != Equation::Kind::amb) continue;
+    const ex whole = e->lhs - e->rhs;
+    for (std::size_t j = 0; j < e->terms.size() && j < e->sources.size(); ++j) {
+      const std::string what = phrase(e->sources[j]);
+      if (matches(whole - e->terms[j])) say("missing_force", what + " is missing (" + balance_name(*e) + ")");
+      else if (matches(whole - 2 * e->terms[j])) say("force_sign", what + " has the wrong sign or direction (" + balance_name(*e) + ")");
+    }
+    if (!e->rhs.is_zero() && matches(e->lhs))
+      say("missing_inertia", e->kind == Equation::Kind::lmb ? "the mass times acceleration term is missing (" + balance_name(*e) + ")"
+                                                            : "the rate of change of angular momentum is missing (" + balance_name(*e) + ")");
+    if (!e->rhs.is_zero() && matches(e->lhs + e->rhs))
+      say("inertia_sign", e->kind == Equation::Kind::lmb ? "the mass times acceleration term has the wrong sign (" + balance_name(*e) + ")"
+                                                         : "the rate of change of angular momentum has the wrong sign (" + balance_name(*e) + ")");
+    // A force from another balance added: it acts on another body.
+    for (const Equation* other : f.equations) {
+      if (other == e || other->kind != e->kind) continue;
+      for (std::size_t j = 0; j < other->terms.size() && j < other->sources.size(); ++j) {
+        const bool own = std::find(e->sources.begin(), e->sources.end(), other->sources[j]) != e->sources.end();
+        if (own) continue;
+        for (const int sign : {1, -1}) {
+          const ex added = sign * other->terms[j];
+          if (!matches(whole + added)) continue;
+          // Taking away one of the balance's own forces is a force missing (said above); the
+          // same force as one of its own is one counted once too often (a strand more); else
+          // a force on another body.
+          std::string again;
+          bool removal = false;
+          for (std::size_t i = 0; i < e->terms.size() && i < e->sources.size(); ++i) {
+            removal = removal || (e->terms[i] + added).is_zero();
+            if (again.empty() && (e->terms[i] - added).is_zero()) again = phrase(e->sources[i]);
+          }
+          if (removal) continue;
+          if (!again.empty()) say("extra_force", "one force too many: " + again + " is counted once too often (" + balance_name(*e) + ")");
+          else say("extra_force", phrase(other->sources[j]) + " does not act on what " + balance_name(*e) + " balances");
+        }
+      }
+    }
+  }
+}
+
+}  // namespace tackle

@@ -1,0 +1,47 @@
+// Checking an equation a student wrote (a balance, a constraint, or one derived from them)
+// against the derivation's own equations: correct when it holds for every motion the model
+// allows (it is a combination of the derivation's equations, with coefficients in the
+// parameters), named when it is one of them up to a factor, and otherwise diagnosed in the
+// words of the free body diagram (a force missing, a force with the wrong sign, the inertial
+// term missing, a force that acts on another body), never showing the correct equation.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "check/check.hpp"
+
+namespace tackle {
+
+class EquationChecker {
+ public:
+  EquationChecker(const Analysis& analysis, const CheckOptions& options);
+  /// The verdict on `text` ("2*T - F = m_A*ddot(x_A)"); invalid when it cannot be read.
+  [[nodiscard]] CheckResult check(std::string_view text) const;
+
+ private:
+  // One family of equations the student's may follow from: those at the acceleration level
+  // (balances and constraints differentiated twice) or at the rate level (differentiated once),
+  // with the unknowns they are linear in.
+  struct Family {
+    std::vector<const Equation*> equations;
+    std::vector<GiNaC::ex> unknowns;
+    std::vector<std::vector<GiNaC::ex>> vectors;  // each equation's coefficients: unknowns, then the rest
+  };
+  [[nodiscard]] std::optional<std::vector<GiNaC::ex>> vector_of(const GiNaC::ex& residual, const Family& f) const;
+  [[nodiscard]] bool in_span(const std::vector<std::vector<GiNaC::ex>>& columns, const std::vector<GiNaC::ex>& v) const;
+  [[nodiscard]] static bool proportional(const std::vector<GiNaC::ex>& a, const std::vector<GiNaC::ex>& b);
+  void diagnose(const Family& f, const std::vector<GiNaC::ex>& v, CheckResult& r) const;
+
+  CheckOptions options_;
+  std::shared_ptr<const SymbolTable> symbols_;
+  GiNaC::exmap definitions_;
+  std::vector<Equation> equations_, rate_equations_;  // copies: a checker may outlive its analysis
+  Family acceleration_, rate_;
+};
+
+}  // namespace tackle
