@@ -78,6 +78,18 @@ void append_number(std::string& out, double v) {
 
 }  // namespace
 
+std::string json_quoted(std::string_view s) {
+  std::string out;
+  append_quoted(out, s);
+  return out;
+}
+
+std::string json_number(double v) {
+  std::string out;
+  append_number(out, v);
+  return out;
+}
+
 std::string result_line(const CheckResult& r, const std::string& answer, const std::string& id) {
   std::string out;
   out.reserve(256 + answer.size() + r.summary.size() + r.echo_text.size() + r.echo_latex.size());

@@ -57,6 +57,9 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
 /// The same, with the results file returned in `results` of the summary.
 BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream& out, const GradeOptions& options = {});
 
+/// A string as JSON writes it (quoted, escaped), and a number (".0" when whole).
+[[nodiscard]] std::string json_quoted(std::string_view s);
+[[nodiscard]] std::string json_number(double v);
 /// One result as one line of JSON, as a batch writes it (no newline).
 [[nodiscard]] std::string result_line(const CheckResult& r, const std::string& answer, const std::string& id = {});
 /// One result as a JSON object (the single-answer `--format json` output).

@@ -261,6 +261,8 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
       add_reference(w.name, simplest(general), w.dimension);
   }
   equations_ = std::make_shared<const EquationChecker>(analysis, options_);
+  for (const auto& w : m.wanted)
+    if (references_.count(w.name)) asked_.push_back(w.name);
 }
 
 CheckResult& CheckResult::conclude(Verdict v, std::string code, std::string message) {
@@ -272,6 +274,15 @@ CheckResult& CheckResult::conclude(Verdict v, std::string code, std::string mess
 }
 
 CheckResult Checker::check_equation(std::string_view equation) const { return equations_->check(equation); }
+
+std::vector<std::string> Checker::needed_for(const std::string& unknown) const {
+  const auto it = references_.find(unknown);
+  const SymbolInfo* s = symbols_->find(unknown);
+  if (it == references_.end() || !s || s->definition) return {};
+  return equations_->needed_for(s->sym, it->second.closed_form);
+}
+
+const Equation* Checker::derivation_equation(const std::string& label) const { return equations_->equation(label); }
 
 std::vector<std::string> Checker::unknowns() const {
   std::vector<std::string> out;
@@ -1610,7 +1621,7 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const Exact& answ
     if (matches_at([](Point&) {}, zeroed->second)) r.findings.push_back({"special_case", "this is correct only " + describe(p)});
   }
   for (const auto& [pair, reference] : diag.equalled) {
-    const auto [i, j] = pair;
+    const std::size_t i = pair.first, j = pair.second;  // (clang 14: a lambda cannot capture a structured binding)
     const auto equal_values = [&](Point& pt) {
       numeric* x = value_of(pt, params[i]);
       numeric* y = value_of(pt, params[j]);

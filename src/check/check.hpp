@@ -104,6 +104,13 @@ class Checker {
   /// Checks an equation the student wrote ("2*T - F = m_A*ddot(x_A)"): correct when it is a
   /// combination of the derivation's equations (see check/equation.hpp).
   [[nodiscard]] CheckResult check_equation(std::string_view equation) const;
+  /// The unknowns the problem asks for (`find`) that can be checked, in its order.
+  [[nodiscard]] const std::vector<std::string>& asked() const { return asked_; }
+  /// The fewest of the derivation's equations that determine `unknown` (see
+  /// EquationChecker::needed_for); empty for a name that is not an unknown of the equations.
+  [[nodiscard]] std::vector<std::string> needed_for(const std::string& unknown) const;
+  /// The derivation's equation with this label, or null.
+  [[nodiscard]] const Equation* derivation_equation(const std::string& label) const;
   /// The names that can be checked (determined unknowns and defined quantities).
   [[nodiscard]] std::vector<std::string> unknowns() const;
   [[nodiscard]] const CheckOptions& options() const { return options_; }
@@ -249,6 +256,7 @@ class Checker {
   GiNaC::numeric tolerance_;                // relative, for values that are not exact: 10^-(digits - 8)
   std::map<std::string, Reference, std::less<>> references_;
   std::shared_ptr<const EquationChecker> equations_;
+  std::vector<std::string> asked_;
 };
 
 }  // namespace tackle

@@ -202,17 +202,7 @@ CheckResult EquationChecker::check(std::string_view text) const {
       r.summary = "it is " + r.identified_as.front();
       return r;
     }
-    // The equations it follows from: all of them, then each left out while the rest still give it.
-    std::vector<std::size_t> used;
-    for (std::size_t i = 0; i < f.vectors.size(); ++i)
-      if (std::any_of(f.vectors[i].begin(), f.vectors[i].end(), [](const ex& x) { return !x.is_zero(); })) used.push_back(i);
-    for (std::size_t k = used.size(); k-- > 0;) {
-      std::vector<std::vector<ex>> rest;
-      for (const std::size_t j : used)
-        if (j != used[k]) rest.push_back(f.vectors[j]);
-      if (in_span(rest, *v)) used.erase(used.begin() + static_cast<std::ptrdiff_t>(k));
-    }
-    for (const std::size_t j : used) r.follows_from.push_back(f.equations[j]->label);
+    r.follows_from = fewest(f, *v);
     r.summary = "it follows from " + (r.follows_from.size() == 1 ? r.follows_from.front()
                                                    : join(std::vector<std::string>(r.follows_from.begin(), r.follows_from.end() - 1)) +
                                                          " and " + r.follows_from.back());
@@ -230,6 +220,37 @@ CheckResult EquationChecker::check(std::string_view text) const {
   r.score = 0.0;
   r.summary = r.findings.front().message;
   return r;
+}
+
+std::vector<std::string> EquationChecker::fewest(const Family& f, const std::vector<ex>& v) const {
+  // All the equations that say something, then each left out while the rest still give it.
+  std::vector<std::size_t> used;
+  for (std::size_t i = 0; i < f.vectors.size(); ++i)
+    if (std::any_of(f.vectors[i].begin(), f.vectors[i].end(), [](const ex& x) { return !x.is_zero(); })) used.push_back(i);
+  for (std::size_t k = used.size(); k-- > 0;) {
+    std::vector<std::vector<ex>> rest;
+    for (const std::size_t j : used)
+      if (j != used[k]) rest.push_back(f.vectors[j]);
+    if (in_span(rest, v)) used.erase(used.begin() + static_cast<std::ptrdiff_t>(k));
+  }
+  std::vector<std::string> out;
+  for (const std::size_t j : used) out.push_back(f.equations[j]->label);
+  return out;
+}
+
+std::vector<std::string> EquationChecker::needed_for(const ex& unknown, const ex& closed_form) const {
+  if (acceleration_.equations.size() > max_family) return {};
+  const auto v = vector_of(substituted(unknown - closed_form, definitions_), acceleration_);
+  if (!v || !in_span(acceleration_.vectors, *v)) return {};
+  return fewest(acceleration_, *v);
+}
+
+const Equation* EquationChecker::equation(const std::string& label) const {
+  for (const auto& e : equations_)
+    if (e.label == label) return &e;
+  for (const auto& e : rate_equations_)
+    if (e.label == label) return &e;
+  return nullptr;
 }
 
 void EquationChecker::diagnose(const Family& f, const std::vector<ex>& v, CheckResult& r) const {

@@ -22,6 +22,11 @@ class EquationChecker {
   EquationChecker(const Analysis& analysis, const CheckOptions& options);
   /// The verdict on `text` ("2*T - F = m_A*ddot(x_A)"); invalid when it cannot be read.
   [[nodiscard]] CheckResult check(std::string_view text) const;
+  /// The fewest of the derivation's equations that give `unknown = closed_form` (their
+  /// labels, in the derivation's order); empty when none do or there are too many to decide.
+  [[nodiscard]] std::vector<std::string> needed_for(const GiNaC::ex& unknown, const GiNaC::ex& closed_form) const;
+  /// The derivation's equation with this label (the rates' too), or null.
+  [[nodiscard]] const Equation* equation(const std::string& label) const;
 
  private:
   // One family of equations the student's may follow from: those at the acceleration level
@@ -35,6 +40,7 @@ class EquationChecker {
   [[nodiscard]] std::optional<std::vector<GiNaC::ex>> vector_of(const GiNaC::ex& residual, const Family& f) const;
   [[nodiscard]] bool in_span(const std::vector<std::vector<GiNaC::ex>>& columns, const std::vector<GiNaC::ex>& v) const;
   [[nodiscard]] static bool proportional(const std::vector<GiNaC::ex>& a, const std::vector<GiNaC::ex>& b);
+  [[nodiscard]] std::vector<std::string> fewest(const Family& f, const std::vector<GiNaC::ex>& v) const;
   void diagnose(const Family& f, const std::vector<GiNaC::ex>& v, CheckResult& r) const;
 
   CheckOptions options_;

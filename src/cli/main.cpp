@@ -17,6 +17,7 @@
 #include "core/diagnostics.hpp"
 #include "core/utf8.hpp"
 #include "check/batch.hpp"
+#include "check/steps.hpp"
 #include "expr/parse.hpp"
 #include "expr/rational.hpp"
 #include "isolate/isolate.hpp"
@@ -121,7 +122,7 @@ struct Options {
   double until = 0;
   int samples = 201;
   // check
-  std::string unknown, answer, equation, batch, results, results_format = "gradescope";
+  std::string unknown, answer, equation, steps, rubric, batch, results, results_format = "gradescope";
   bool equation_given = false;
   double tolerance = 0.01;
   int sig_figs = 0;
@@ -386,6 +387,12 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
       }
     return 0;
   }
+  if (!o.steps.empty()) {
+    const auto solution = tackle::read_solution(tackle::read_text_file(o.steps), o.steps);
+    const tackle::Rubric rubric = o.rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(tackle::read_text_file(o.rubric), o.rubric);
+    const tackle::SolutionGrade grade = tackle::grade_solution(checker, solution, rubric);
+    return emit(o.format == "json" ? tackle::solution_json(grade) : tackle::solution_text(grade), o.out);
+  }
   if (o.equation_given) {
     const auto result = checker.check_equation(o.equation);
     return emit(o.format == "json" ? tackle::result_json(result, o.equation) : tackle::result_text(result), o.out);
@@ -506,7 +513,7 @@ int run(int argc, char** argv) {
     with_phase(simulate);
   });
 
-  CLI::Option *answer_opt = nullptr, *batch_opt = nullptr, *equation_opt = nullptr;
+  CLI::Option *answer_opt = nullptr, *batch_opt = nullptr, *equation_opt = nullptr, *steps_opt = nullptr;
   auto* check = add("check", "Check a student's answer (or a batch of them) against the closed form", [&](CLI::App* check) {
     check->add_option("file", o.file, "Problem description (YAML)")->required();
     auto* unknown_opt = check->add_option("--unknown", o.unknown, "The unknown the answer is for, e.g. T_HI");
@@ -515,6 +522,10 @@ int run(int argc, char** argv) {
                                      "An equation the student wrote, e.g. '2*T - F = m_A*ddot(x_A)': is it one of the balances and "
                                      "constraints, or does it follow from them?")
                        ->each([&](const std::string&) { o.equation_given = true; });
+    steps_opt = check->add_option("--steps", o.steps,
+                                  "A worked solution (YAML: steps: [{equation: ...}, {answer: ..., unknown: T}]) graded as a whole: "
+                                  "each step, the equations used and missing, the first wrong step, a score");
+    check->add_option("--rubric", o.rubric, "With --steps: points for balances, constraints and answers (YAML)")->needs(steps_opt);
     batch_opt = check->add_option("--batch", o.batch, "JSON Lines file of {\"id\", \"unknown\", \"answer\"} or {\"id\", \"equation\"} "
                                                       "(- for standard input)");
     auto* results_opt = check->add_option("--results", o.results, "With --batch: also write a grading platform's results file")
@@ -550,6 +561,7 @@ int run(int argc, char** argv) {
     unknown_opt->needs(answer_opt);
     batch_opt->excludes(answer_opt);
     equation_opt->excludes(answer_opt)->excludes(batch_opt)->excludes(unknown_opt);
+    steps_opt->excludes(answer_opt)->excludes(batch_opt)->excludes(unknown_opt)->excludes(equation_opt);
   });
   const std::string asked = asked_subcommand(argc, argv);
   const bool named = std::any_of(definitions.begin(), definitions.end(), [&](const auto& d) { return d.first->get_name() == asked; });
@@ -562,8 +574,8 @@ int run(int argc, char** argv) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
-  if (check->parsed() && answer_opt->count() == 0 && batch_opt->count() == 0 && equation_opt->count() == 0) {
-    std::cerr << "tackle check: give --unknown and --answer, --equation, or --batch\n";
+  if (check->parsed() && answer_opt->count() == 0 && batch_opt->count() == 0 && equation_opt->count() == 0 && steps_opt->count() == 0) {
+    std::cerr << "tackle check: give --unknown and --answer, --equation, --steps or --batch\n";
     return 2;
   }
   if (isolate->parsed() && o.target.empty() && !o.all) {

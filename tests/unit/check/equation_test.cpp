@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "check/batch.hpp"
+#include "check/steps.hpp"
 #include "../../support/helpers.hpp"
 
 using namespace tackle;
@@ -211,4 +212,67 @@ TEST_CASE("Equations: in a batch, a line with an equation, and the JSON names wh
   // An answer's line keeps its fields: no identified_as.
   const auto s3 = text.find(R"J("id":"s3")J");
   CHECK(text.find("identified_as", s3) > text.find('\n', s3));
+}
+
+TEST_CASE("Steps: a worked solution graded as a whole, with the rubric's points", "[check][steps]") {
+  // Sample 12.3 needs LMB A, LMB B and the string's length sum for T, ddot(x_A) and ddot(x_B)
+  // (by hand: three unknowns, three equations, each used).
+  const Checker& c = checker_for("sample-12.3-two-mass-pulley");
+  const auto partial = read_solution(R"Y(steps:
+  - equation: "2*T - F = m_A*ddot(x_A)"
+  - equation: "-2*T = m_B*ddot(x_B)"
+  - {answer: "2*m_B*F/(9*m_A + 4*m_B)", unknown: T}
+)Y", "partial.yaml");
+  const Rubric rubric = read_rubric("balances: 4\nconstraints: 2\nanswers: 3\n", "rubric.yaml");
+  const SolutionGrade g = grade_solution(c, partial, rubric);
+  REQUIRE(g.steps.size() == 3);
+  CHECK(g.steps[1].result.findings.front().code == "missing_force");
+  CHECK(g.first_wrong == std::optional<std::size_t>(2));
+  CHECK(g.used == std::vector<std::string>{"LMB A (x)"});
+  CHECK(g.missing == std::vector<std::string>{"LMB B (x)", "string s: acceleration"});
+  CHECK(solution_text(g) == "step 1 (equation): correct: it is LMB A (x)\n"
+                            "step 2 (equation): incorrect: a strand of string s at pB is missing (LMB B (x))\n"
+                            "step 3 (answer for T): correct: equal to the closed form\n"
+                            "first wrong step: 2\n"
+                            "used: LMB A (x)\n"
+                            "missing (needed for the unknowns asked): LMB B (x), string s: acceleration\n"
+                            "balances: 2 of 4 (1 of 2)\n"
+                            "constraints: 0 of 2 (0 of 1)\n"
+                            "answers: 1 of 3 (1 of 3)\n"
+                            "score: 3 of 9\n");
+  // The whole solution: every point. A derived equation counts for what it follows from.
+  const auto whole = read_solution(R"Y(steps:
+  - equation: "T = 2*F*m_B/(9*m_A + 4*m_B)"
+  - {answer: "2*m_B*F/(9*m_A + 4*m_B)", unknown: T}
+  - {answer: "-9*F/(9*m_A + 4*m_B)", unknown: ddot(x_A)}
+  - {answer: "-6*F/(9*m_A + 4*m_B)", unknown: ddot(x_B)}
+)Y", "whole.yaml");
+  const SolutionGrade w = grade_solution(c, whole, rubric);
+  CHECK(!w.first_wrong);
+  CHECK(w.missing.empty());
+  CHECK(w.score == Approx(9));
+  const std::string json = solution_json(w);
+  CHECK(json.find(R"J("first_wrong": null)J") != std::string::npos);
+  CHECK(json.find(R"J("score": 9.0,)J") != std::string::npos);
+}
+
+TEST_CASE("Steps: a solution or rubric file with problems says each, located", "[check][steps]") {
+  auto errors = [](auto read, const std::string& text) {
+    std::vector<std::string> out;
+    try {
+      (void)read(text, "f.yaml");
+    } catch (const InputError& e) {
+      for (const auto& d : e.diagnostics()) out.push_back(format(d));
+    }
+    return out;
+  };
+  CHECK(errors(read_solution, "steps:\n  - equation: \"x = 1\"\n    answer: \"1\"\n  - {answer: \"3\"}\n") ==
+        std::vector<std::string>{"f.yaml:2:5: a step is an equation or an answer, not both (expected {equation: ...} or {answer: ..., unknown: ...})",
+                                 "f.yaml:4:5: an answer needs its 'unknown' (e.g. {answer: \"2*m_B*F/(9*m_A + 4*m_B)\", unknown: T})"});
+  CHECK(errors(read_solution, "stepz: []\n") ==
+        std::vector<std::string>{"f.yaml:1:1: unknown key 'stepz' in the solution (did you mean 'steps'?)",
+                                 "f.yaml:1:1: the solution has no 'steps' (expected a list of {equation: ...} and {answer: ..., unknown: ...})"});
+  CHECK(errors(read_rubric, "balances: -1\nanswers: lots\n") ==
+        std::vector<std::string>{"f.yaml:1:11: 'balances' is not a number of points (expected a number from 0 to 1000)",
+                                 "f.yaml:2:10: 'answers' is not a number of points (expected a number from 0 to 1000)"});
 }
