@@ -116,25 +116,31 @@ SolutionGrade grade_solution(const Checker& checker, const std::vector<SolutionS
     if (used.count(l)) g.used.push_back(l);
   for (const auto& l : used)
     if (std::find(g.used.begin(), g.used.end(), l) == g.used.end()) g.used.push_back(l);
-  auto part = [&](const std::string& name, double points, std::size_t done, std::size_t of) {
+  auto part = [&](const std::string& name, double points, std::size_t done, std::size_t of, std::vector<std::string> missing) {
     if (points <= 0) return;
-    SolutionGrade::Part p{name, of == 0 ? points : points * static_cast<double>(done) / static_cast<double>(of), points, done, of};
+    SolutionGrade::Part p{name, of == 0 ? points : points * static_cast<double>(done) / static_cast<double>(of), points, done, of,
+                          std::move(missing)};
     g.parts.push_back(p);
     g.score += p.score;
     g.max_score += p.max;
   };
   std::size_t balances = 0, balances_done = 0, constraints = 0, constraints_done = 0;
+  std::vector<std::string> balances_missing, constraints_missing, answers_missing;
   for (const auto& l : needed) {
     const Equation* e = checker.derivation_equation(l);
     const bool balance = e && is_balance(*e);
     (balance ? balances : constraints) += 1;
     if (used.count(l)) (balance ? balances_done : constraints_done) += 1;
+    else (balance ? balances_missing : constraints_missing).push_back(l);
   }
-  part("balances", rubric.balances, balances_done, balances);
-  part("constraints", rubric.constraints, constraints_done, constraints);
+  part("balances", rubric.balances, balances_done, balances, balances_missing);
+  part("constraints", rubric.constraints, constraints_done, constraints, constraints_missing);
   std::size_t answers_done = 0;
-  for (const auto& u : checker.asked()) answers_done += answered.count(u);
-  part("answers", rubric.answers, answers_done, checker.asked().size());
+  for (const auto& u : checker.asked()) {
+    answers_done += answered.count(u);
+    if (!answered.count(u)) answers_missing.push_back(u);
+  }
+  part("answers", rubric.answers, answers_done, checker.asked().size(), answers_missing);
   return g;
 }
 
@@ -176,6 +182,35 @@ std::string solution_json(const SolutionGrade& g) {
   }
   out += "],\n";
   out += "  \"score\": " + json_number(g.score) + ",\n  \"max_score\": " + json_number(g.max_score) + "\n}\n";
+  return out;
+}
+
+std::string solution_results(const SolutionGrade& g, ResultsFormat format) {
+  // One test per step (feedback, no points of its own) and one per part of the rubric.
+  const bool gradescope = format == ResultsFormat::gradescope;
+  std::string tests;
+  auto test = [&](const std::string& name, double score, double max, bool passed, const std::string& output) {
+    tests += tests.empty() ? "\n    " : ",\n    ";
+    tests += gradescope ? fmt::format("{{\"name\": {}, \"score\": {}, \"max_score\": {}, \"status\": \"{}\", \"output\": {}, \"visibility\": \"visible\"}}",
+                                      json_quoted(name), json_number(score), json_number(max), passed ? "passed" : "failed", json_quoted(output))
+                        : fmt::format("{{\"name\": {}, \"points\": {}, \"max_points\": {}, \"message\": {}}}", json_quoted(name),
+                                      json_number(score), json_number(max), json_quoted(output));
+  };
+  for (std::size_t i = 0; i < g.steps.size(); ++i) {
+    const auto& [step, r] = g.steps[i];
+    test("step " + std::to_string(i + 1) + (step.kind == SolutionStep::Kind::equation ? ": equation" : ": answer for " + step.unknown), 0, 0,
+         r.verdict == Verdict::correct, verdict_name(r.verdict) + ": " + r.summary);
+  }
+  for (const auto& p : g.parts) {
+    std::string output = fmt::format("{} of {}", p.done, p.of);
+    if (!p.missing.empty()) output += (p.name == "answers" ? "; not answered: " : "; missing: ") + join(p.missing);
+    test(p.name, p.score, p.max, p.score >= p.max, output);
+  }
+  std::string out = "{\n  \"tests\": [" + tests + (tests.empty() ? "],\n" : "\n  ],\n");
+  const std::string said = fmt::format("{:g} of {:g} points", g.score, g.max_score);
+  if (gradescope) out += "  \"score\": " + json_number(g.score) + ",\n  \"output\": " + json_quoted(said) + "\n}\n";
+  else out += "  \"gradable\": true,\n  \"score\": " + json_number(g.max_score > 0 ? g.score / g.max_score : 0.0) +
+              ",\n  \"message\": " + json_quoted(said) + "\n}\n";
   return out;
 }
 

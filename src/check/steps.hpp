@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "check/batch.hpp"
 #include "check/check.hpp"
 
 namespace tackle {
@@ -38,6 +39,7 @@ struct SolutionGrade {
     std::string name;  // balances, constraints, answers
     double score = 0, max = 0;
     std::size_t done = 0, of = 0;  // equations (or answers) given, of those wanted
+    std::vector<std::string> missing;  // the needed equations of this part no step gives (unknowns not answered)
   };
   std::vector<Part> parts;
   double score = 0, max_score = 0;
@@ -54,5 +56,8 @@ struct SolutionGrade {
 /// The grade as text (what a student reads) and as JSON.
 [[nodiscard]] std::string solution_text(const SolutionGrade& g);
 [[nodiscard]] std::string solution_json(const SolutionGrade& g);
+/// A grading platform's results file: one test per step (its verdict, no points of its own)
+/// and one per part of the rubric (its points); the total.
+[[nodiscard]] std::string solution_results(const SolutionGrade& g, ResultsFormat format);
 
 }  // namespace tackle

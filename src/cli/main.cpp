@@ -391,6 +391,14 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
     const auto solution = tackle::read_solution(tackle::read_text_file(o.steps), o.steps);
     const tackle::Rubric rubric = o.rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(tackle::read_text_file(o.rubric), o.rubric);
     const tackle::SolutionGrade grade = tackle::grade_solution(checker, solution, rubric);
+    if (!o.results.empty()) {
+      const auto format = o.results_format == "prairielearn" ? tackle::ResultsFormat::prairielearn : tackle::ResultsFormat::gradescope;
+      if (o.results_format == "jsonl") {
+        std::cerr << "tackle check: --steps writes gradescope or prairielearn results, not jsonl (its --format json is the lines' form)\n";
+        return 2;
+      }
+      if (const int rc = emit(tackle::solution_results(grade, format), o.results); rc != 0) return rc;
+    }
     return emit(o.format == "json" ? tackle::solution_json(grade) : tackle::solution_text(grade), o.out);
   }
   if (o.equation_given) {
@@ -528,8 +536,7 @@ int run(int argc, char** argv) {
     check->add_option("--rubric", o.rubric, "With --steps: points for balances, constraints and answers (YAML)")->needs(steps_opt);
     batch_opt = check->add_option("--batch", o.batch, "JSON Lines file of {\"id\", \"unknown\", \"answer\"} or {\"id\", \"equation\"} "
                                                       "(- for standard input)");
-    auto* results_opt = check->add_option("--results", o.results, "With --batch: also write a grading platform's results file")
-        ->needs(batch_opt);
+    auto* results_opt = check->add_option("--results", o.results, "With --batch or --steps: also write a grading platform's results file");
     check->add_option("--results-format", o.results_format, "The results file's platform")
         ->check(CLI::IsMember({"gradescope", "prairielearn", "jsonl"}))
         ->capture_default_str()
@@ -573,6 +580,10 @@ int run(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
+  }
+  if (check->parsed() && !o.results.empty() && batch_opt->count() == 0 && steps_opt->count() == 0) {
+    std::cerr << "tackle check: --results needs --batch or --steps\n";
+    return 2;
   }
   if (check->parsed() && answer_opt->count() == 0 && batch_opt->count() == 0 && equation_opt->count() == 0 && steps_opt->count() == 0) {
     std::cerr << "tackle check: give --unknown and --answer, --equation, --steps or --batch\n";

@@ -8,6 +8,8 @@
 
 #include "check/batch.hpp"
 #include "check/steps.hpp"
+
+#include <nlohmann/json.hpp>
 #include "../../support/helpers.hpp"
 
 using namespace tackle;
@@ -251,6 +253,19 @@ TEST_CASE("Steps: a worked solution graded as a whole, with the rubric's points"
   CHECK(!w.first_wrong);
   CHECK(w.missing.empty());
   CHECK(w.score == Approx(9));
+  // For the platforms: a test per step, one per part of the rubric, the total.
+  const auto results = nlohmann::json::parse(solution_results(g, ResultsFormat::gradescope));
+  REQUIRE(results["tests"].size() == 6);
+  CHECK(results["tests"][1]["status"] == "failed");
+  CHECK(results["tests"][1]["output"] == "incorrect: a strand of string s at pB is missing (LMB B (x))");
+  CHECK(results["tests"][3]["name"] == "balances");
+  CHECK(results["tests"][3]["score"] == 2.0);
+  CHECK(results["tests"][3]["output"] == "1 of 2; missing: LMB B (x)");
+  CHECK(results["tests"][5]["output"] == "1 of 3; not answered: ddot(x_A), ddot(x_B)");
+  CHECK(results["score"] == 3.0);
+  const auto pl = nlohmann::json::parse(solution_results(g, ResultsFormat::prairielearn));
+  CHECK(pl["gradable"] == true);
+  CHECK(pl["score"] == Approx(3.0 / 9.0));
   const std::string json = solution_json(w);
   CHECK(json.find(R"J("first_wrong": null)J") != std::string::npos);
   CHECK(json.find(R"J("score": 9.0,)J") != std::string::npos);
