@@ -58,7 +58,9 @@ enum class Verdict { correct, incorrect, invalid, undecided };
 /// Codes: unknown_name, syntax, too_large, not_an_answer, wrong_unknown, no_unit, unit,
 /// dimension, sign, factor, other_unknown, swapped, special_case, extra_parameter,
 /// missing_parameter, trig_swapped, term_sign, missing_term, extra_term, value, not_simplified, tolerance,
-/// budget, evaluation.
+/// budget, evaluation. Equations (check/equation.hpp) also: not_an_equation, trivial, not_linear,
+/// missing_force, force_sign, extra_force, missing_inertia, inertia_sign, wrong_mass,
+/// wrong_acceleration.
 struct Finding {
   std::string code;
   std::string message;

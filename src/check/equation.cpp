@@ -65,6 +65,7 @@ EquationChecker::EquationChecker(const Analysis& analysis, const CheckOptions& o
       f.vectors.push_back(v ? *v : std::vector<ex>(f.unknowns.size() + 1, 0));
     }
   };
+  for (const auto& b : analysis.model.bodies) bodies_.push_back({b.name, b.has_mass ? b.mass : ex(0), b.accel});
   family(equations_, SymbolRole::acceleration, acceleration_);
   family(rate_equations_, SymbolRole::rate, rate_);
 }
@@ -274,6 +275,19 @@ void EquationChecker::diagnose(const Family& f, const std::vector<ex>& v, CheckR
     if (!e->rhs.is_zero() && matches(e->lhs))
       say("missing_inertia", e->kind == Equation::Kind::lmb ? "the mass times acceleration term is missing (" + balance_name(*e) + ")"
                                                             : "the rate of change of angular momentum is missing (" + balance_name(*e) + ")");
+    // Another body's mass, or another body's acceleration, in the balance of one body.
+    if (e->kind == Equation::Kind::lmb && !e->system && e->bodies.size() == 1 && !e->rhs.is_zero()) {
+      const BodyTerms& own = bodies_[static_cast<std::size_t>(e->bodies.front())];
+      for (const BodyTerms& other : bodies_) {
+        if (&other == &own) continue;
+        if (!own.mass.is_zero() && !other.mass.is_zero() && !other.mass.is_equal(own.mass) &&
+            matches(e->lhs - e->rhs.subs(own.mass == other.mass)))
+          say("wrong_mass", "the mass is " + other.name + "'s, not " + own.name + "'s (" + balance_name(*e) + ")");
+        if (is_a<symbol>(own.accel) && is_a<symbol>(other.accel) && !other.accel.is_equal(own.accel) &&
+            matches(e->lhs - e->rhs.subs(own.accel == other.accel)))
+          say("wrong_acceleration", "the acceleration is " + other.name + "'s, not " + own.name + "'s (" + balance_name(*e) + ")");
+      }
+    }
     if (!e->rhs.is_zero() && matches(e->lhs + e->rhs))
       say("inertia_sign", e->kind == Equation::Kind::lmb ? "the mass times acceleration term has the wrong sign (" + balance_name(*e) + ")"
                                                          : "the rate of change of angular momentum has the wrong sign (" + balance_name(*e) + ")");

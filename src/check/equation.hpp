@@ -47,6 +47,11 @@ class EquationChecker {
   std::shared_ptr<const SymbolTable> symbols_;
   GiNaC::exmap definitions_;
   std::vector<Equation> equations_, rate_equations_;  // copies: a checker may outlive its analysis
+  struct BodyTerms {
+    std::string name;
+    GiNaC::ex mass, accel;  // its mass (0 for a massless one) and its acceleration's symbol
+  };
+  std::vector<BodyTerms> bodies_;
   Family acceleration_, rate_;
 };
 
