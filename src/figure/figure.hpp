@@ -105,6 +105,18 @@ class FigureMaker {
 /// A label's LaTeX as SVG text content (<tspan>s for sub- and superscripts, Greek letters as
 /// characters, dots as combining accents), XML-escaped.
 [[nodiscard]] std::string svg_text(const std::string& tex);
+/// How to_svg writes a label (drawing units, y up): its text centred at x in the box the
+/// layout kept, on a baseline that centres the text's ascent and descent in the box, held to
+/// `width` (textLength): so the text fills [x - width/2, x + width/2] across and
+/// [baseline - svg_descent * font_size, baseline + svg_ascent * font_size] up the page, inside
+/// the label's box.
+struct SvgLabel {
+  double x = 0, baseline = 0, width = 0, font_size = 0;
+};
+constexpr double svg_font_size = 0.35;               // as TikZ's \small (10 pt) in a 1 cm unit
+constexpr double svg_ascent = 0.8, svg_descent = 0.3;  // of the font size: capitals with a dot or a superscript, a subscript
+constexpr double svg_margin = 0.04;                  // between the text and its box's sides
+[[nodiscard]] SvgLabel svg_label(const FigureLabel& l);
 /// The number of characters a label shows (for its width).
 [[nodiscard]] std::size_t shown_length(const std::string& tex);
 

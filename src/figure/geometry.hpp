@@ -31,6 +31,7 @@ constexpr double particle_side = 1.2; // a body drawn around one point
 constexpr double arrow_length = 1.2;
 constexpr double spacing = 0.38;      // between parallel arrows that would overlap
 constexpr double char_width = 0.2, label_height = 0.42, gap = 0.1;
+constexpr double label_spacing = 0.06;  // kept between two labels' boxes
 
 
 inline bool inside(const FigureOutline& o, V p) {
@@ -123,10 +124,14 @@ inline bool box_hits_segment(const Box& b, V p, V q) {
 
 class Layout {
  public:
+  // On an arrow: worse than lying in an outline across its edges.
+  static constexpr double arrow_penalty = 40;
+
   explicit Layout(Figure& f) : f_(f) {}
 
-  // A label near `anchor`, tried at the candidate centres in order; the first that touches
-  // nothing wins, else the one that touches least.
+  // A label tried at the candidate centres in order; the first that touches nothing wins,
+  // else the one that touches least. Where every candidate lies on another label or on an
+  // arrow, rings of places farther out around the first are tried too.
   FigureLabel place(const std::string& tex, const std::vector<V>& candidates) {
     FigureLabel l;
     l.tex = tex;
@@ -134,13 +139,19 @@ class Layout {
     l.height = label_height;
     double best = 1e300;
     V at = candidates.front();
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-      const double p = penalty({candidates[i], l.width, l.height}) + 0.01 * static_cast<double>(i);
+    auto consider = [&](V c, double cost) {
+      const double p = penalty({c, l.width, l.height}) + cost;
       if (p < best) {
         best = p;
-        at = candidates[i];
+        at = c;
       }
-    }
+    };
+    for (std::size_t i = 0; i < candidates.size(); ++i) consider(candidates[i], 0.01 * static_cast<double>(i));
+    for (int ring = 1; ring <= 6 && best >= arrow_penalty; ++ring)
+      for (int k = 0; k < 16; ++k) {
+        const double a = 2 * M_PI * k / 16, r = 0.3 * ring;
+        consider(candidates.front() + V{(r + l.width / 2) * std::cos(a), (r + l.height / 2) * std::sin(a)}, 1 + 0.1 * ring);
+      }
     l.at = fp(at);
     boxes_.push_back({at, l.width, l.height});
     return l;
@@ -149,10 +160,12 @@ class Layout {
  private:
   double penalty(const Box& b) const {
     double p = 0;
+    // Labels a little apart (a subscript close above the next label reads as its own).
+    const Box roomy{b.c, b.w + label_spacing, b.h + label_spacing};
     for (const auto& o : boxes_)
-      if (overlaps(b, o)) p += 100;
+      if (overlaps(roomy, o)) p += 100;
     for (const auto& a : f_.arrows)
-      if (box_hits_segment(b, vp(a.from), vp(a.to))) p += 10;
+      if (box_hits_segment(b, vp(a.from), vp(a.to))) p += arrow_penalty;
     for (const auto& l : f_.lines)
       for (std::size_t i = 1; i < l.points.size(); ++i)
         if (box_hits_segment(b, vp(l.points[i - 1]), vp(l.points[i]))) p += l.thin ? 3 : 10;

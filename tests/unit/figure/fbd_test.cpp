@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <regex>
 #include <set>
 
 #include "figure/figure.hpp"
+#include "figure/geometry.hpp"
 #include "../../support/helpers.hpp"
 
 using namespace tackle;
@@ -50,6 +52,39 @@ FigurePoint dot_named(const Figure& f, const std::string& name) {
     if (d.label && d.label->tex == name) return d.at;
   FAIL("no point " << name);
   return {};
+}
+
+// A label's text as an SVG writes it: the box it fills (pixels, y down).
+struct TextBox {
+  std::string text;
+  double x0, x1, y0, y1;
+  [[nodiscard]] bool overlaps(const TextBox& o) const {
+    constexpr double tol = 0.01;  // the SVG's numbers have three decimals
+    return x0 < o.x1 - tol && o.x0 < x1 - tol && y0 < o.y1 - tol && o.y0 < y1 - tol;
+  }
+  // Whether the segment p-q passes through the box.
+  [[nodiscard]] bool crossed_by(FigurePoint p, FigurePoint q) const {
+    return fig::box_hits_segment({{(x0 + x1) / 2, (y0 + y1) / 2}, x1 - x0, y1 - y0}, fig::vp(p), fig::vp(q));
+  }
+};
+
+struct SvgBoxes {
+  std::vector<TextBox> texts;
+  std::vector<std::pair<FigurePoint, FigurePoint>> shafts;  // the arrows' lines
+};
+
+// The text boxes and arrow shafts of an SVG that to_svg wrote, read back from its numbers.
+SvgBoxes svg_boxes(const std::string& svg) {
+  SvgBoxes out;
+  const std::regex text(R"re(<text x="([-0-9.]+)" y="([-0-9.]+)" textLength="([0-9.]+)"[^>]*font-size="([0-9.]+)">(.*?)</text>)re");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), text); it != std::sregex_iterator(); ++it) {
+    const double x = std::stod((*it)[1]), y = std::stod((*it)[2]), w = std::stod((*it)[3]), size = std::stod((*it)[4]);
+    out.texts.push_back({(*it)[5], x - w / 2, x + w / 2, y - svg_ascent * size, y + svg_descent * size});
+  }
+  const std::regex line(R"re(<line x1="([-0-9.]+)" y1="([-0-9.]+)" x2="([-0-9.]+)" y2="([-0-9.]+)")re");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), line); it != std::sregex_iterator(); ++it)
+    out.shafts.push_back({{std::stod((*it)[1]), std::stod((*it)[2])}, {std::stod((*it)[3]), std::stod((*it)[4])}});
+  return out;
 }
 
 }  // namespace
@@ -133,7 +168,7 @@ TEST_CASE("FBD: two strands under a pulley block sit to either side of its middl
   CHECK(std::fabs(xs[0] - xs[1]) > 0.3);
 }
 
-TEST_CASE("FBD: in every example no label lies on another and no arrow lies on an outline's edge", "[figure]") {
+TEST_CASE("FBD: in every example no label lies on another or on an arrow, in TikZ and in SVG, and no arrow lies on an outline's edge", "[figure]") {
   std::vector<std::string> files;
   for (const auto& e : std::filesystem::directory_iterator(TACKLE_SOURCE_DIR "/examples"))
     if (e.path().extension() == ".yaml") files.push_back(e.path().string());
@@ -156,6 +191,30 @@ TEST_CASE("FBD: in every example no label lies on another and no arrow lies on a
                              std::fabs(labels[i].at.y - labels[k].at.y) * 2 >= labels[i].height + labels[k].height - 1e-9;
           CHECK(apart);
         }
+      // TikZ centres each label in its box: no arrow's shaft passes through a box.
+      for (const auto& l : labels) {
+        const TextBox box{l.tex, l.at.x - l.width / 2, l.at.x + l.width / 2, l.at.y - l.height / 2, l.at.y + l.height / 2};
+        for (const auto& x : f.arrows) {
+          INFO(l.tex << " and the arrow of " << x.label.tex);
+          CHECK(!box.crossed_by(x.from, x.to));
+        }
+      }
+      // The SVG draws each label in its box, as the TikZ does: the text boxes it writes (from
+      // its x, baseline, textLength and font size) lie on no other and on no arrow's shaft.
+      const auto svg = svg_boxes(to_svg(f));
+      CHECK(svg.texts.size() == labels.size());
+      for (std::size_t i = 0; i < svg.texts.size(); ++i) {
+        const TextBox& a = svg.texts[i];
+        INFO("SVG text " << a.text);
+        for (std::size_t k = i + 1; k < svg.texts.size(); ++k) {
+          INFO("and " << svg.texts[k].text);
+          CHECK(!a.overlaps(svg.texts[k]));
+        }
+        for (const auto& [p, q] : svg.shafts) {
+          INFO("shaft " << p.x << "," << p.y << " to " << q.x << "," << q.y);
+          CHECK(!a.crossed_by(p, q));
+        }
+      }
       // An arrow along an edge would hide it: no arrow runs on an edge's line over a length.
       for (const auto& o : f.outlines) {
         if (o.shape != FigureOutline::Shape::polygon) continue;
@@ -183,6 +242,30 @@ TEST_CASE("FBD: labels in SVG keep their subscripts, Greek letters and dots", "[
         "m<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>\u2009x\u0308<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>");
   CHECK(svg_text("a < b & c") == "a\u2009&lt;\u2009b\u2009&amp;\u2009c");
   CHECK(shown_length("m_{A} \\ddot{x}_{A}") == 5);
+}
+
+TEST_CASE("FBD: an SVG label is centred in its box and no wider or higher than it; TikZ scales its label into the box", "[figure]") {
+  FigureLabel l;
+  l.at = {2, 3};
+  l.height = 0.42;
+  l.tex = "m_{A} \\ddot{s}";
+  l.width = 0.2 * static_cast<double>(shown_length(l.tex)) + 0.12;
+  const SvgLabel b = svg_label(l);
+  CHECK(b.x == 2);
+  CHECK(b.width <= l.width - 2 * svg_margin + 1e-12);
+  CHECK(b.width > 0.3);
+  // Its ascent and descent, together no higher than the box, are centred in it.
+  const double top = b.baseline + svg_ascent * b.font_size, bottom = b.baseline - svg_descent * b.font_size;
+  CHECK(top - bottom <= l.height + 1e-12);
+  CHECK(std::fabs((top + bottom) / 2 - 3) < 1e-12);
+  // A long label in a narrow box is held to the box.
+  l.tex = "\\frac{m L^{2} \\ddot{\\theta}}{12}";
+  l.width = 0.5;
+  CHECK(std::fabs(svg_label(l).width - (0.5 - 2 * svg_margin)) < 1e-12);
+  // TikZ: the same centre, the box's size given to \tacklelabel.
+  Figure f;
+  f.texts.push_back(l);
+  CHECK(to_tikz(f).find("at (2,3) {\\tacklelabel{0.5cm}{0.42cm}{$" + l.tex + "$}}") != std::string::npos);
 }
 
 TEST_CASE("FBD: a description draws a body as it says", "[figure]") {
