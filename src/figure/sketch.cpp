@@ -195,15 +195,31 @@ std::optional<Figure> FigureMaker::sketch() const {
       k.lat_lo = mid - name / 2;
       k.lat_hi = mid + name / 2;
     }
+    blocks.push_back(k);
+  }
+  // Bodies in contact touch: the facing sides of two blocks meet halfway between them.
+  for (const auto& d : m.drawings) {
+    if (d.as != "contact" || d.path.size() != 2) continue;
+    auto block = [&](int point) {
+      return std::find_if(blocks.begin(), blocks.end(), [&](const Block& k) { return k.body == m.points[point].body; });
+    };
+    auto a = block(d.path[0]), b = block(d.path[1]);
+    if (a == blocks.end() || b == blocks.end() || a == b) continue;
+    if (a->s_lo + a->s_hi > b->s_lo + b->s_hi) std::swap(a, b);  // a below b along the axis
+    // Each keeps a quarter of a block's length at least.
+    const double lo = a->s_lo + 0.25 * block_length, hi = b->s_hi - 0.25 * block_length;
+    const double mid = lo <= hi ? std::clamp(0.5 * (a->s_hi + b->s_lo), lo, hi) : 0.5 * (lo + hi);
+    a->s_hi = b->s_lo = mid;
+  }
+  for (const auto& k : blocks) {
     for (const auto& t : meetings) {
-      if (m.points[t.point].body != static_cast<int>(b) || (t.s >= k.s_lo - 1e-9 && t.s <= k.s_hi + 1e-9)) continue;
+      if (m.points[t.point].body != k.body || (t.s >= k.s_lo - 1e-9 && t.s <= k.s_hi + 1e-9)) continue;
       const double edge = t.s > k.s_hi ? k.s_hi : k.s_lo, dir = t.s > k.s_hi ? 1 : -1;
       hangers.push_back({at(edge, t.lat), at(t.s - dir * reach(t), t.lat)});
     }
-    blocks.push_back(k);
     FigureOutline o;
     for (auto [s, l] : {std::pair{k.s_lo, k.lat_lo}, {k.s_hi, k.lat_lo}, {k.s_hi, k.lat_hi}, {k.s_lo, k.lat_hi}}) o.corners.push_back(fp(at(s, l)));
-    o.name = body.name;
+    o.name = m.bodies[k.body].name;
     f.outlines.push_back(o);
   }
   auto block_of = [&](int point) -> const Block* {

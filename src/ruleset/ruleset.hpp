@@ -110,7 +110,8 @@ struct Rule {
   bool assumes_direction = false;
   // How a 1-D mechanism's sketch draws it (`sketch:`): "line" (a string along its path),
   // "spring", "damper", "pulley" (a sheave at its point), "support" (its body held by the
-  // ground), "arrow" (a force on its body); "" when it is not drawn.
+  // ground), "arrow" (a force on its body), "contact" (the bodies at its two points drawn
+  // touching); "" when it is not drawn.
   std::string sketch;
   std::vector<ArgSpec> args;
   std::vector<std::vector<std::string>> one_of;  // exactly one argument of each group

@@ -388,3 +388,38 @@ TEST_CASE("Sketch: only 1-D mechanisms with a string, spring or damper are sketc
   CHECK(figs[0].sketch);
   CHECK(!figs[1].sketch);
 }
+
+TEST_CASE("Sketch: bodies in contact touch (sample 12.4's top block rests on the bottom one)", "[figure][sketch]") {
+  const auto f = sketch_of("sample-12.4-stacked-blocks-on-spring.yaml");
+  REQUIRE(f);
+  const auto blocks = outlines_of(*f, FigureOutline::Shape::polygon);
+  REQUIRE(blocks.size() == 2);
+  auto span = [](const FigureOutline& o, bool vertical) {
+    double lo = 1e300, hi = -1e300;
+    for (const auto& c : o.corners) {
+      lo = std::min(lo, vertical ? c.y : c.x);
+      hi = std::max(hi, vertical ? c.y : c.x);
+    }
+    return std::pair{lo, hi};
+  };
+  // y points down (gravity g > 0 along it): top (y_m = -0.1) is drawn above bottom (y = 0).
+  CHECK(blocks[0].name == "top");
+  const auto [top_lo, top_hi] = span(blocks[0], true);
+  const auto [bottom_lo, bottom_hi] = span(blocks[1], true);
+  CHECK(top_lo > bottom_lo);
+  CHECK(std::fabs(top_lo - bottom_hi) < 1e-9);  // the top's lower side on the bottom's upper side
+  CHECK(top_hi - top_lo > 0.2);
+  CHECK(bottom_hi - bottom_lo > 0.2);
+  // Side by side across the axis: one stands on the other.
+  const auto [top_left, top_right] = span(blocks[0], false);
+  const auto [bottom_left, bottom_right] = span(blocks[1], false);
+  CHECK(std::min(top_right, bottom_right) - std::max(top_left, bottom_left) > 0.5);
+  // Farther apart in the layout, they still touch.
+  const std::string apart = test::example_with("sample-12.4-stacked-blocks-on-spring.yaml", "layout: {y_m: -0.1, y: 0}",
+                                               "layout: {y_m: -0.3, y: 0}");
+  const auto g = mechanism_sketch(test::run_text(apart)->model);
+  REQUIRE(g);
+  const auto moved = outlines_of(*g, FigureOutline::Shape::polygon);
+  REQUIRE(moved.size() == 2);
+  CHECK(std::fabs(span(moved[0], true).first - span(moved[1], true).second) < 1e-9);
+}
