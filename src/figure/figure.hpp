@@ -76,10 +76,12 @@ class FigureMaker {
   explicit FigureMaker(const Model& m);
   /// The diagram of one body, or of a system of bodies (see free_body_diagram).
   [[nodiscard]] std::optional<Figure> draw(const std::vector<int>& bodies, bool system) const;
-  /// A 1-D mechanism's sketch (see mechanism_sketch).
+  /// The mechanism's sketch (see mechanism_sketch).
   [[nodiscard]] std::optional<Figure> sketch() const;
 
  private:
+  [[nodiscard]] std::optional<Figure> sketch_line() const;   // 1-D
+  [[nodiscard]] std::optional<Figure> sketch_plane() const;  // 2-D
   [[nodiscard]] std::optional<double> number(const GiNaC::ex& e) const;
   const Model& m_;
   GiNaC::exmap values_;
@@ -91,11 +93,16 @@ class FigureMaker {
 /// as 1). None when the geometry cannot be evaluated (a position undefined there).
 [[nodiscard]] std::optional<Figure> free_body_diagram(const Model& m, const std::vector<int>& bodies, bool system);
 
-/// The sketch of a 1-D mechanism at the layout's positions: its blocks, its strings along
+/// The sketch of a mechanism at the layout's numbers. 1-D: its blocks, its strings along
 /// their paths (strands side by side, wrapped around sheaves where they turn), springs and
-/// dampers, the ground where points are fixed, the applied forces and the axis. None for
-/// 2-D and 3-D problems, for one without a string, spring or damper, and when the layout
-/// cannot be evaluated.
+/// dampers, the ground where points are fixed, the applied forces and the axis; none for one
+/// without a string, spring or damper. 2-D (turned so that gravity points down the page):
+/// each body (its shape, a bar or plate through its points, or a block along the surface it
+/// touches), the ground surfaces bodies touch (hatched, an incline at its angle), pins and
+/// fixed points with their supports, pulleys, strings along their paths (wrapping pulleys
+/// where they turn), cables and rods, springs and dampers, applied forces and couples, the
+/// angles that parameters or coordinates give, the named points and the axes. None for 3-D
+/// problems, and whenever a position cannot be evaluated at the layout's numbers.
 [[nodiscard]] std::optional<Figure> mechanism_sketch(const Model& m);
 
 /// The figure as a tikzpicture (needs \usepackage{tikz}).

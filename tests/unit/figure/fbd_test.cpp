@@ -169,10 +169,7 @@ TEST_CASE("FBD: two strands under a pulley block sit to either side of its middl
 }
 
 TEST_CASE("FBD: in every example no label lies on another or on an arrow, in TikZ and in SVG, and no arrow lies on an outline's edge", "[figure]") {
-  std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(TACKLE_SOURCE_DIR "/examples"))
-    if (e.path().extension() == ".yaml") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
+  const std::vector<std::string> files = test::example_files();
   std::size_t drawn = 0;
   for (const auto& file : files) {
     const auto a = analyze_file(file, test::rules());
@@ -377,8 +374,9 @@ TEST_CASE("Sketch: springs are coiled, a damper is a dashpot, the walls are hatc
   CHECK(std::count_if(f->lines.begin(), f->lines.end(), [](const FigureLine& l) { return l.points.size() == 4; }) == 1);
 }
 
-TEST_CASE("Sketch: only 1-D mechanisms with a string, spring or damper are sketched", "[figure][sketch]") {
-  CHECK(!sketch_of("sample-12.7-suitcase.yaml"));     // 2-D
+TEST_CASE("Sketch: 1-D mechanisms with a string, spring or damper are sketched, 2-D ones all, 3-D ones not", "[figure][sketch]") {
+  CHECK(sketch_of("sample-12.7-suitcase.yaml"));      // 2-D
+  CHECK(!sketch_of("sample-12.8-sign-board.yaml"));   // 3-D
   CHECK(!sketch_of("box-in-a-truck-system.yaml"));   // 1-D, nothing between the bodies to draw
   CHECK(sketch_of("sample-12.1-towing.yaml"));       // a tow rope
   // In a derivation it opens the model, before the free body diagrams.
@@ -422,4 +420,141 @@ TEST_CASE("Sketch: bodies in contact touch (sample 12.4's top block rests on the
   const auto moved = outlines_of(*g, FigureOutline::Shape::polygon);
   REQUIRE(moved.size() == 2);
   CHECK(std::fabs(span(moved[0], true).first - span(moved[1], true).second) < 1e-9);
+}
+
+namespace {
+
+const FigureOutline* outline_named(const Figure& f, const std::string& name) {
+  for (const auto& o : f.outlines)
+    if (o.name == name) return &o;
+  return nullptr;
+}
+
+std::optional<FigurePoint> dot_at(const Figure& f, const std::string& tex) {
+  for (const auto& d : f.dots)
+    if (d.label && d.label->tex == tex) return d.at;
+  return std::nullopt;
+}
+
+// Whether some drawn line (not hatching) ends at p.
+bool a_line_ends_at(const Figure& f, FigurePoint p, double tol = 1e-6) {
+  return std::any_of(f.lines.begin(), f.lines.end(), [&](const FigureLine& l) {
+    return !l.thin && (std::hypot(l.points.front().x - p.x, l.points.front().y - p.y) < tol ||
+                       std::hypot(l.points.back().x - p.x, l.points.back().y - p.y) < tol);
+  });
+}
+
+// Whether some drawn line ends on the outline's edge.
+bool a_line_ends_on(const Figure& f, const FigureOutline& o) {
+  return std::any_of(f.lines.begin(), f.lines.end(), [&](const FigureLine& l) {
+    return !l.thin && (fig::boundary_distance(o, fig::vp(l.points.front())) < 1e-3 || fig::boundary_distance(o, fig::vp(l.points.back())) < 1e-3);
+  });
+}
+
+}  // namespace
+
+TEST_CASE("Sketch: every 2-D example is sketched, of a sensible size, its strings ending at their points", "[figure][sketch]") {
+  const std::vector<std::string> files = test::example_files();
+  std::size_t plane = 0;
+  for (const auto& file : files) {
+    const auto a = analyze_file(file, test::rules());
+    const Model& m = a->model;
+    if (m.dims() != 2) continue;
+    ++plane;
+    INFO(file);
+    const auto f = mechanism_sketch(m);
+    REQUIRE(f);
+    CHECK(f->sketch);
+    CHECK(f->caption == "Sketch of the mechanism");
+    // Finite, and about the size of a figure on a page (drawing units are about centimetres).
+    for (double v : {f->min_x, f->min_y, f->max_x, f->max_y}) CHECK(std::isfinite(v));
+    const double w = f->max_x - f->min_x, h = f->max_y - f->min_y;
+    CHECK(std::max(w, h) > 3);
+    CHECK(std::min(w, h) > 1);
+    CHECK(std::max(w, h) < 16);
+    // Every body with a position is drawn, by its name.
+    for (const auto& b : m.bodies)
+      if (b.has_cm) CHECK(outline_named(*f, b.name));
+    // Each string ends at its end points: at a named point's dot, or on the edge of the body
+    // the point is named after (a string tied to a block's side).
+    for (const auto& d : m.drawings) {
+      if (d.as != "line" || d.path.size() < 2) continue;
+      for (int p : {d.path.front(), d.path.back()}) {
+        const std::string& name = m.points[p].name;
+        INFO(d.label << " at " << name);
+        if (const auto at = dot_at(*f, default_tex(name))) {
+          CHECK(a_line_ends_at(*f, *at));
+        } else {
+          const FigureOutline* o = outline_named(*f, name);
+          REQUIRE(o);
+          CHECK(a_line_ends_on(*f, *o));
+        }
+      }
+    }
+  }
+  CHECK(plane >= 25);
+}
+
+TEST_CASE("Sketch: the incline at its angle, the pulley at its top, the hanging block below it", "[figure][sketch]") {
+  const auto f = sketch_of("incline-and-hanging-block.yaml");
+  REQUIRE(f);
+  // The incline: a line at theta = 30 degrees to the horizontal, hatched, its angle marked.
+  const bool incline = std::any_of(f->lines.begin(), f->lines.end(), [](const FigureLine& l) {
+    if (l.thin || l.points.size() != 2) return false;
+    const double dx = l.points[1].x - l.points[0].x, dy = l.points[1].y - l.points[0].y;
+    return std::hypot(dx, dy) > 3 && std::fabs(std::atan2(std::fabs(dy), std::fabs(dx)) - M_PI / 6) < 1e-9;
+  });
+  CHECK(incline);
+  CHECK(std::any_of(f->texts.begin(), f->texts.end(), [](const FigureLabel& l) { return l.tex == "\\theta"; }));
+  // The pulley P: a circle at the point P, above and to the right of A; B hangs below it.
+  const auto P = dot_at(*f, "P");
+  REQUIRE(P);
+  const auto sheaves = outlines_of(*f, FigureOutline::Shape::circle);
+  REQUIRE(sheaves.size() == 1);
+  CHECK(near(sheaves[0].centre, *P));
+  const FigureOutline* A = outline_named(*f, "A");
+  const FigureOutline* B = outline_named(*f, "B");
+  REQUIRE(A);
+  REQUIRE(B);
+  double bx0 = 1e300, bx1 = -1e300, by1 = -1e300, ay0 = 1e300;
+  for (const auto& c : B->corners) bx0 = std::min(bx0, c.x), bx1 = std::max(bx1, c.x), by1 = std::max(by1, c.y);
+  for (const auto& c : A->corners) ay0 = std::min(ay0, c.y);
+  CHECK(bx0 < P->x);
+  CHECK(P->x < bx1);
+  CHECK(by1 < P->y);
+  CHECK(ay0 < P->y);
+  // The strand from P down to B is vertical, tangent to the pulley's right side.
+  const double x = P->x + sheaves[0].radius;
+  CHECK(std::any_of(f->lines.begin(), f->lines.end(), [&](const FigureLine& l) {
+    return !l.thin && is_vertical(l) && std::fabs(l.points[0].x - x) < 1e-9 && std::fabs(std::max(l.points[0].y, l.points[1].y) - P->y) < 1e-9 &&
+           std::fabs(std::min(l.points[0].y, l.points[1].y) - by1) < 1e-9;
+  }));
+}
+
+TEST_CASE("Sketch: the ladder stands on the floor against the wall, its angle marked", "[figure][sketch]") {
+  const auto f = sketch_of("rotation-ladder-sliding-on-smooth-wall-and-floor.yaml");
+  REQUIRE(f);
+  const auto A = dot_at(*f, "A"), B = dot_at(*f, "B");
+  REQUIRE(A);
+  REQUIRE(B);
+  // theta = 60 degrees: B up and to the right of A, at 60 degrees.
+  CHECK(std::fabs(std::atan2(B->y - A->y, B->x - A->x) - M_PI / 3) < 1e-9);
+  // A floor through the ladder's foot (below A by its half thickness at most) and a wall at B.
+  auto horizontal_below = [&](const FigureLine& l) { return !l.thin && is_horizontal(l) && l.points[0].y <= A->y + 1e-9 && l.points[0].y > A->y - 0.2; };
+  auto vertical_beside = [&](const FigureLine& l) { return !l.thin && is_vertical(l) && l.points[0].x >= B->x - 1e-9 && l.points[0].x < B->x + 0.2; };
+  CHECK(std::count_if(f->lines.begin(), f->lines.end(), horizontal_below) == 1);
+  CHECK(std::count_if(f->lines.begin(), f->lines.end(), vertical_beside) == 1);
+  CHECK(std::any_of(f->texts.begin(), f->texts.end(), [](const FigureLabel& l) { return l.tex == "\\theta"; }));
+}
+
+TEST_CASE("Sketch: a position that cannot be evaluated draws nothing", "[figure][sketch]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.7-suitcase.yaml", test::rules());
+  Model m = a->model;
+  REQUIRE(mechanism_sketch(m));
+  // B moved to l/(h - 0.4): a pole at the layout's numbers (h = 0.4).
+  const GiNaC::ex l = m.symbols->find("l")->sym, h = m.symbols->find("h")->sym;
+  const auto B = std::find_if(m.points.begin(), m.points.end(), [](const Point& p) { return p.name == "B"; });
+  REQUIRE(B != m.points.end());
+  B->position[0] = l / (h - GiNaC::numeric(2, 5));
+  CHECK(!mechanism_sketch(m));
 }
