@@ -275,8 +275,15 @@ std::optional<std::array<double, 3>> point3(const Model& m, const Number& num, c
 // The numbers the geometry is drawn at, made once per model: every parameter's value and the
 // layout's coordinates (a parameter without a value as 1, a coordinate the layout does not
 // place at 0), the defined parameters and turning lengths from them.
-FigureMaker::FigureMaker(const Model& m) : m_(m), values_(m.layout), unknowns_(m.candidates.begin(), m.candidates.end()) {
+FigureMaker::FigureMaker(const Model& m) : FigureMaker(m, {}) {}
+
+FigureMaker::FigureMaker(const Model& m, const exmap& values) : m_(m), values_(m.layout), unknowns_(m.candidates.begin(), m.candidates.end()) {
   const SymbolTable& table = *m.symbols;
+  if (!values.empty()) {
+    for (const auto& [s, v] : values) values_[s] = v;
+    for (const auto& s : table.all())
+      if (s->definition) values_.erase(s->sym);  // made again from the new values below
+  }
   for (const auto& s : table.all()) {
     if (values_.count(s->sym) || s->definition) continue;
     if (s->role == SymbolRole::parameter) values_[s->sym] = 1;
@@ -300,6 +307,8 @@ std::optional<double> FigureMaker::number(const ex& e) const {
   const double d = ex_to<numeric>(x).to_double();
   return std::isfinite(d) ? std::optional<double>(d) : std::nullopt;
 }
+
+std::optional<Figure> FigureMaker::redraw(const Figure& f) const { return f.sketch ? sketch() : draw(f.bodies, f.system); }
 
 std::optional<Figure> free_body_diagram(const Model& m, const std::vector<int>& bodies, bool system) {
   return FigureMaker(m).draw(bodies, system);
@@ -636,6 +645,8 @@ std::optional<Figure> FigureMaker::draw(const std::vector<int>& bodies, bool sys
   std::string list;
   for (std::size_t i = 0; i < names.size(); ++i) list += (i ? (i + 1 == names.size() ? " and " : ", ") : "") + names[i];
   f.caption = std::string("Free body diagram of ") + (system && bodies.size() > 1 ? "the system " : "") + list;
+  f.bodies = bodies;
+  f.system = system;
   return f;
 }
 

@@ -60,6 +60,8 @@ struct FigureLine {
 struct Figure {
   std::string caption;  // "Free body diagram of the suitcase"
   bool sketch = false;  // the mechanism's sketch (a sheet shows it), not a free body diagram
+  std::vector<int> bodies;  // a free body diagram's bodies, and whether as one system (to draw it again)
+  bool system = false;
   std::vector<FigureOutline> outlines;
   std::vector<FigureLine> lines;     // drawn over the outlines
   std::vector<FigureLabel> texts;    // names written on the figure (a block's)
@@ -74,6 +76,12 @@ struct Figure {
 class FigureMaker {
  public:
   explicit FigureMaker(const Model& m);
+  /// At other values of the parameters (SI, by symbol: a variant's): the layout's numbers
+  /// with these over the parameters' own, the defined parameters made again from them.
+  FigureMaker(const Model& m, const GiNaC::exmap& values);
+  /// The same figure (the sketch, or a free body diagram of the same bodies) drawn by this
+  /// maker, at its numbers; none where it cannot be drawn there.
+  [[nodiscard]] std::optional<Figure> redraw(const Figure& f) const;
   /// The diagram of one body, or of a system of bodies (see free_body_diagram).
   [[nodiscard]] std::optional<Figure> draw(const std::vector<int>& bodies, bool system) const;
   /// The mechanism's sketch (see mechanism_sketch).

@@ -202,7 +202,7 @@ class LatexWriter final : public Writer {
       const std::string statement = statement_of(p, true);
       out += "\\section*{Problem " + std::to_string(p.number) + ": " + tex_escape(p.title) + "}\n";
       if (!statement.empty()) out += statement + "\n\n";
-      for (const Step* st : figures_of(*p.derivation, figures)) out += latex_figure(*st);
+      for (const Step& st : sheet_figures(p, figures)) out += latex_figure(st);
       out += "Find " + join(asked) + ".\n";
       if (!p.last_of_entry) out += "\\clearpage\n";
     }

@@ -10,6 +10,8 @@
 
 #include "figure/figure.hpp"
 #include "figure/geometry.hpp"
+#include "report/key.hpp"
+#include "report/writers/common.hpp"
 #include "../../support/helpers.hpp"
 
 using namespace tackle;
@@ -557,4 +559,46 @@ TEST_CASE("Sketch: a position that cannot be evaluated draws nothing", "[figure]
   REQUIRE(B != m.points.end());
   B->position[0] = l / (h - GiNaC::numeric(2, 5));
   CHECK(!mechanism_sketch(m));
+}
+
+TEST_CASE("Sheet: each variant's figures are drawn at its own numbers", "[figure][sheet]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.7-suitcase.yaml", test::rules());
+  const Derivation d = explain(*a);
+  const std::vector<Variant> variants = draw_variants(a->model, d, 2, 1, 6);
+  REQUIRE(variants.size() == 2);
+  auto value = [](const Variant& v, const std::string& name) {
+    for (const auto& q : v.parameters)
+      if (q.name == name) return q.value;
+    FAIL("no " << name);
+    return 0.0;
+  };
+  // The seed draws two suitcases of different proportions (l wide, 2 h high).
+  const double r0 = value(variants[0], "l") / (2 * value(variants[0], "h")), r1 = value(variants[1], "l") / (2 * value(variants[1], "h"));
+  REQUIRE(std::fabs(r0 - r1) > 0.01);
+  const std::vector<SheetEntry> entries{{&d, &a->model, variants}};
+  const auto problems = writers::sheet_problems(entries);
+  REQUIRE(problems.size() == 2);
+  std::vector<std::vector<Step>> figures{writers::sheet_figures(problems[0], true), writers::sheet_figures(problems[1], true)};
+  for (std::size_t k = 0; k < 2; ++k) {
+    INFO("variant " << k + 1);
+    REQUIRE(figures[k].size() == 2);  // the sketch and the free body diagram
+    CHECK(figures[k][0].figure->sketch);
+    CHECK(figures[k][1].text == "Free body diagram of suitcase");
+    // The sketch's suitcase has the variant's proportions.
+    const FigureOutline* o = outline_named(*figures[k][0].figure, "suitcase");
+    REQUIRE(o);
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    for (const auto& c : o->corners) x0 = std::min(x0, c.x), x1 = std::max(x1, c.x), y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
+    CHECK(std::fabs((x1 - x0) / (y1 - y0) - (k == 0 ? r0 : r1)) < 1e-9);
+  }
+  // So the two variants' figures differ, and the sheet shows each one's.
+  CHECK(to_tikz(*figures[0][0].figure) != to_tikz(*figures[1][0].figure));
+  CHECK(to_tikz(*figures[0][1].figure) != to_tikz(*figures[1][1].figure));
+  const std::string tex = write_sheet(entries, Format::latex, true);
+  for (const auto& fs : figures)
+    for (const auto& st : fs) CHECK(tex.find(to_tikz(*st.figure)) != std::string::npos);
+  // Without variants, the derivation's own figures (at the description's numbers).
+  const auto own = writers::sheet_figures(writers::sheet_problems({{&d, &a->model, {}}})[0], true);
+  REQUIRE(own.size() == 2);
+  CHECK(own[0].figure == writers::figures_of(d, true)[0]->figure);
 }
