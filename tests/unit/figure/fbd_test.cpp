@@ -243,7 +243,7 @@ TEST_CASE("FBD: labels in SVG keep their subscripts, Greek letters and dots", "[
   CHECK(shown_length("m_{A} \\ddot{x}_{A}") == 5);
 }
 
-TEST_CASE("FBD: an SVG label is centred in its box and no wider or higher than it; TikZ scales its label into the box", "[figure]") {
+TEST_CASE("FBD: an SVG label is centred in its box and no wider or higher than it, and TikZ scales its label into the box", "[figure]") {
   FigureLabel l;
   l.at = {2, 3};
   l.height = 0.42;
@@ -601,4 +601,46 @@ TEST_CASE("Sheet: each variant's figures are drawn at its own numbers", "[figure
   const auto own = writers::sheet_figures(writers::sheet_problems({{&d, &a->model, {}}})[0], true);
   REQUIRE(own.size() == 2);
   CHECK(own[0].figure == writers::figures_of(d, true)[0]->figure);
+}
+
+namespace {
+
+// What lies between the last `open` before each `picture` in the text and the first `close`
+// after it (empty where either is missing, or where the box before it closes after `open`).
+std::vector<std::string> boxes_around(const std::string& text, const std::string& picture, const std::string& open, const std::string& close) {
+  std::vector<std::string> out;
+  for (std::size_t at = text.find(picture); at != std::string::npos; at = text.find(picture, at + 1)) {
+    const std::size_t from = text.rfind(open, at), to = text.find(close, at), before = text.rfind(close, at);
+    const bool whole = from != std::string::npos && to != std::string::npos && (before == std::string::npos || before < from);
+    out.push_back(whole ? text.substr(from, to - from) : "");
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("Figures: a caption stays with its figure, in latex in one minipage that a page never splits, in html in one figure element", "[figure][sheet]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/incline-and-hanging-block.yaml", test::rules());
+  const Derivation d = explain(*a);
+  const auto captions = writers::figures_of(d, true);
+  REQUIRE(captions.size() == 3);  // the sketch and the two free body diagrams
+  const std::vector<SheetEntry> entries{{&d, &a->model, {}}};
+  // Every figure, in the derivation and on the sheet, is in a minipage with its caption and
+  // nothing else: \begin{minipage}, the picture, \\[2pt]{\small caption}, \end{minipage}.
+  for (const std::string& tex : {write(d, Format::latex, true), write_sheet(entries, Format::latex, true)}) {
+    const auto boxes = boxes_around(tex, "\\begin{tikzpicture}", "\\begin{minipage}", "\\end{minipage}");
+    REQUIRE(boxes.size() == captions.size());
+    for (std::size_t k = 0; k < boxes.size(); ++k) {
+      const std::string caption = "\\end{tikzpicture}\n}\\\\[2pt]{\\small " + captions[k]->text + "}\n";
+      INFO(boxes[k]);
+      CHECK(boxes[k].size() > caption.size());
+      CHECK(boxes[k].rfind(caption) == boxes[k].size() - caption.size());  // the caption ends the box
+    }
+  }
+  // HTML: each drawing and its caption in one <figure>.
+  for (const std::string& html : {write(d, Format::html, true), write_sheet(entries, Format::html, true)}) {
+    const auto boxes = boxes_around(html, "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"fbd\"", "<figure>", "</figure>");
+    REQUIRE(boxes.size() == captions.size());
+    for (std::size_t k = 0; k < boxes.size(); ++k) CHECK(boxes[k].find("<figcaption>" + captions[k]->text + "</figcaption>") != std::string::npos);
+  }
 }
