@@ -485,7 +485,7 @@ int run(int argc, char** argv) {
                     [&](CLI::App* sheet) {
     sheet->add_option("files", o.key_files, "Problem descriptions (YAML)")->required();
     sheet->add_option("--format", o.key_format, "Output format")->check(CLI::IsMember({"latex", "markdown", "html"}))->capture_default_str();
-    sheet->add_flag("--figures", o.figures, "Also draw each problem's free body diagrams under its statement (a 1-D mechanism's sketch is always drawn)");
+    sheet->add_flag("--figures", o.figures, "Also draw each problem's free body diagrams under its statement (a 1-D or 2-D mechanism's sketch is always drawn)");
     sheet->add_option("--variants", o.variants, "Numeric variants per problem, drawn from the parameters' 'range'")
         ->check(CLI::Range(0, 10000));
     sheet->add_option("--seed", o.seed, "Seed for the variants (as for key)")->check(seed_number)->capture_default_str();

@@ -18,23 +18,6 @@ using namespace fig;
 
 namespace {
 
-// Model space to the drawing plane: 1-D along the axis (vertical when gravity acts along
-// it), 2-D as is, 3-D in an oblique view (x towards the viewer, y to the right, z up).
-struct Projection {
-  int dims = 2;
-  V axis1{1, 0};  // 1-D: the axis' direction on paper
-  [[nodiscard]] V operator()(const std::array<double, 3>& p) const {
-    if (dims == 1) return p[0] * axis1;
-    if (dims == 2) return {p[0], p[1]};
-    return {p[1] - 0.5 * p[0], p[2] - 0.35 * p[0]};
-  }
-  [[nodiscard]] V axis(int k) const {
-    std::array<double, 3> e{0, 0, 0};
-    e[k] = 1;
-    return (*this)(e);
-  }
-};
-
 // One force, or one component of it, to draw: where it acts (model units, or none for a 1-D
 // body or a body drawn around one point), its direction on paper, its label.
 struct Pending {
@@ -45,15 +28,6 @@ struct Pending {
   bool dashed = false;
   bool at_cm = false;  // acts at the center of mass: drawn pulling away from it
 };
-
-// A body as drawn: its outline and how forces attach to it.
-struct Drawn {
-  int body = -1;
-  FigureOutline outline;
-  V centre;            // on paper
-  bool particle = false;  // forces start on its outline, along their line through the centre
-};
-
 
 std::string strip_suffix(const std::string& source) {
   // "string s: strand pB-C at pB" and "string s (from its length sum) on A": one key per
@@ -123,7 +97,177 @@ void finish(Figure& f, const std::vector<V>& directions, const std::vector<std::
     grow_label(a.label);
     f.arrows.push_back(a);
   }
+}
 
+Drawn draw_body(const Model& m, int body, const std::vector<std::array<double, 3>>& points, const Projection& proj, double scale,
+                const Number& num, V centre, std::optional<V> along, double side, double overhang) {
+  const Body& b = m.bodies[body];
+  Drawn d;
+  d.body = body;
+  d.outline.name = b.name;
+  d.centre = centre;
+  if (b.drawn_shape.empty() && proj.dims == 2 && !b.angle.is_zero() && b.inertia.is_zero()) {
+    // A turning particle (a pendulum's bob): a small disk at its center, the forces at it.
+    d.outline.shape = FigureOutline::Shape::circle;
+    d.outline.centre = fp(d.centre);
+    d.outline.radius = 0.3;
+    d.particle = true;
+  } else if (!b.drawn_shape.empty()) {
+    const double unit = proj.dims == 1 ? side : scale;
+    // Turned by the body's angle where it has one.
+    const double turned = proj.dims == 2 ? num(b.angle).value_or(0) + proj.turn : 0;
+    const V along{std::cos(turned), std::sin(turned)};
+    if (b.drawn_shape == "circle") {
+      d.outline.shape = FigureOutline::Shape::circle;
+      d.outline.centre = fp(d.centre);
+      d.outline.radius = unit * num(b.drawn_size[0]).value_or(1) / 2;
+    } else if (b.drawn_shape == "rod") {
+      // A little longer than the rod, so that no force at an end runs along an edge.
+      const double length = unit * num(b.drawn_size[0]).value_or(1);
+      d.outline = rectangle(d.centre, along, length + overhang, std::min(0.35, 0.12 * length));
+    } else {
+      d.outline = rectangle(d.centre, along, unit * num(b.drawn_size[0]).value_or(1), unit * num(b.drawn_size[1]).value_or(1));
+    }
+    d.outline.name = b.name;
+    d.particle = proj.dims == 1 || points.size() <= 1;  // else forces at their points
+  } else if (proj.dims == 1 || points.size() <= 1 || [&] {
+               // every point in one place: a particle
+               for (const auto& p : points)
+                 for (int k = 0; k < 3; ++k)
+                   if (std::fabs(p[k] - points[0][k]) > 1e-9 * (1 + std::fabs(p[k]))) return false;
+               return true;
+             }()) {
+    d.particle = true;
+    if (proj.dims == 1 && (!b.has_mass || b.mass.is_zero())) {
+      d.outline.shape = FigureOutline::Shape::circle;  // a pulley block
+      d.outline.centre = fp(d.centre);
+      d.outline.radius = 0.45;
+    } else {
+      // Turned to its line of motion, as a block on an incline is drawn.
+      V way{1, 0};
+      if (along) {
+        way = *along;
+      } else if (proj.dims > 1) {
+        // The direction of its acceleration: the coefficient of the unknown in it, or
+        // the given vector.
+        std::optional<ex> u;
+        for (const ex& c : m.candidates)
+          for (int k = 0; k < m.dims() && !u; ++k)
+            if (b.acceleration[k].has(c)) u = c;
+        std::array<double, 3> a{0, 0, 0};
+        bool ok = true;
+        for (int k = 0; k < m.dims(); ++k) {
+          const ex ak = u ? b.acceleration[k].expand().coeff(*u, 1) : b.acceleration[k];
+          auto v = num(ak);
+          if (!v) ok = false;
+          else a[k] = *v;
+        }
+        if (ok && len(proj(a)) > 1e-9) way = normalized(proj(a));
+        if (way.x < 0) way = -1 * way;
+      }
+      d.outline = rectangle(d.centre, way, side, side * 0.8);
+    }
+    d.outline.name = b.name;
+  } else {
+    // From its points: their bounding box in model space, a bar, a plate or a box.
+    std::array<double, 3> lo = points[0], hi = lo;
+    for (const auto& p : points)
+      for (int k = 0; k < 3; ++k) {
+        lo[k] = std::min(lo[k], p[k]);
+        hi[k] = std::max(hi[k], p[k]);
+      }
+    double longest = 0;
+    for (int k = 0; k < 3; ++k) longest = std::max(longest, hi[k] - lo[k]);
+    // A center of mass on an edge of the box (a suitcase's at the height h of its
+    // middle): the body reaches as far beyond it.
+    if (b.has_cm)
+      if (auto cm = point3(m, num, b.cm))
+        for (int k = 0; k < 3; ++k) {
+          const double span = hi[k] - lo[k];
+          if (span <= 0.08 * longest) continue;
+          if ((*cm)[k] >= hi[k] - 0.02 * span) hi[k] = lo[k] + 2 * span;
+          else if ((*cm)[k] <= lo[k] + 0.02 * span) lo[k] = hi[k] - 2 * span;
+        }
+    int spread = 0;
+    for (int k = 0; k < 3; ++k) spread += hi[k] - lo[k] > 0.08 * longest;
+    if (spread <= 1) {
+      // A bar from the farthest pair of points.
+      V a = scale * proj(points[0]), c = a;
+      double far = -1;
+      for (const auto& p : points)
+        for (const auto& q : points)
+          if (len(proj(p) - proj(q)) > far) {
+            far = len(proj(p) - proj(q));
+            a = scale * proj(p);
+            c = scale * proj(q);
+          }
+      // A little longer than its points, so that no force at an end runs along an edge.
+      d.outline = rectangle(0.5 * (a + c), c - a, len(c - a) + overhang, std::min(1.0, 0.3 * len(c - a)));
+      d.outline.name = b.name;
+    } else {
+      std::vector<V> corners;
+      for (int c = 0; c < 8; ++c) {
+        std::array<double, 3> p{(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2]};
+        corners.push_back(scale * proj(p));
+      }
+      d.outline.corners = convex_hull(corners);
+    }
+    V sum{0, 0};
+    for (const auto& c : d.outline.corners) sum = sum + vp(c);
+    if (!b.has_cm) d.centre = (1.0 / static_cast<double>(d.outline.corners.size())) * sum;
+  }
+  return d;
+}
+
+std::vector<FigurePoint> zigzag(V a, V b, V across) {
+  // Straight leads, then coils.
+  const double l = len(b - a);
+  const V u = normalized(b - a);
+  const double lead = std::min(0.25, 0.2 * l);
+  const int n = std::max(4, static_cast<int>((l - 2 * lead) / 0.22));
+  std::vector<FigurePoint> out{fp(a), fp(a + lead * u)};
+  for (int i = 0; i < n; ++i) {
+    const double t = lead + (i + 0.5) * (l - 2 * lead) / n;
+    out.push_back(fp(a + t * u + ((i % 2 ? -1 : 1) * 0.18) * across));
+  }
+  out.push_back(fp(b - lead * u));
+  out.push_back(fp(b));
+  return out;
+}
+
+void draw_strand(Figure& f, const std::string& as, V p, V q, V across) {
+  if (as == "spring") {
+    f.lines.push_back({zigzag(p, q, across), false});
+  } else if (as == "damper") {
+    // A dashpot: the cylinder open towards the far end, the piston in it.
+    const V u = normalized(q - p);
+    const double l = len(q - p), mid = l / 2, h = 0.22, w = std::min(0.35, 0.3 * l);
+    f.lines.push_back({{fp(p), fp(p + (mid - w) * u)}, false});
+    f.lines.push_back({{fp(p + (mid + w) * u + h * across), fp(p + (mid - w) * u + h * across), fp(p + (mid - w) * u - h * across),
+                        fp(p + (mid + w) * u - h * across)},
+                       false});
+    f.lines.push_back({{fp(p + mid * u + 0.7 * h * across), fp(p + mid * u - 0.7 * h * across)}, false});
+    f.lines.push_back({{fp(p + mid * u), fp(q)}, false});
+  } else {
+    f.lines.push_back({{fp(p), fp(q)}, false});
+  }
+}
+
+void draw_ground(Figure& f, V a, V b, V into) {
+  f.lines.push_back({{fp(a), fp(b)}, false});
+  const double l = len(b - a);
+  const V u = normalized(b - a);
+  for (double s = 0; s <= l + 1e-9; s += hatch_step) f.lines.push_back({{fp(a + s * u), fp(a + s * u + hatch * into + hatch * u)}, true});
+}
+
+std::optional<std::array<double, 3>> point3(const Model& m, const Number& num, const Vec& v) {
+  std::array<double, 3> p{0, 0, 0};
+  for (int k = 0; k < m.dims(); ++k) {
+    auto x = num(v[k]);
+    if (!x) return std::nullopt;
+    p[k] = *x;
+  }
+  return p;
 }
 
 }  // namespace fig
@@ -131,8 +275,15 @@ void finish(Figure& f, const std::vector<V>& directions, const std::vector<std::
 // The numbers the geometry is drawn at, made once per model: every parameter's value and the
 // layout's coordinates (a parameter without a value as 1, a coordinate the layout does not
 // place at 0), the defined parameters and turning lengths from them.
-FigureMaker::FigureMaker(const Model& m) : m_(m), values_(m.layout), unknowns_(m.candidates.begin(), m.candidates.end()) {
+FigureMaker::FigureMaker(const Model& m) : FigureMaker(m, {}) {}
+
+FigureMaker::FigureMaker(const Model& m, const exmap& values) : m_(m), values_(m.layout), unknowns_(m.candidates.begin(), m.candidates.end()) {
   const SymbolTable& table = *m.symbols;
+  if (!values.empty()) {
+    for (const auto& [s, v] : values) values_[s] = v;
+    for (const auto& s : table.all())
+      if (s->definition) values_.erase(s->sym);  // made again from the new values below
+  }
   for (const auto& s : table.all()) {
     if (values_.count(s->sym) || s->definition) continue;
     if (s->role == SymbolRole::parameter) values_[s->sym] = 1;
@@ -157,6 +308,8 @@ std::optional<double> FigureMaker::number(const ex& e) const {
   return std::isfinite(d) ? std::optional<double>(d) : std::nullopt;
 }
 
+std::optional<Figure> FigureMaker::redraw(const Figure& f) const { return f.sketch ? sketch() : draw(f.bodies, f.system); }
+
 std::optional<Figure> free_body_diagram(const Model& m, const std::vector<int>& bodies, bool system) {
   return FigureMaker(m).draw(bodies, system);
 }
@@ -172,15 +325,7 @@ std::optional<Figure> FigureMaker::draw(const std::vector<int>& bodies, bool sys
     if (m.gravity)
       if (auto g = num((*m.gravity)[0]); g && *g != 0) proj.axis1 = {0, *g < 0 ? 1.0 : -1.0};
   }
-  auto point3 = [&](const Vec& v) -> std::optional<std::array<double, 3>> {
-    std::array<double, 3> p{0, 0, 0};
-    for (int k = 0; k < m.dims(); ++k) {
-      auto x = num(v[k]);
-      if (!x) return std::nullopt;
-      p[k] = *x;
-    }
-    return p;
-  };
+  auto point3 = [&](const Vec& v) { return fig::point3(m, num, v); };
   const std::set<ex, ex_is_less>& unknowns = unknowns_;
 
   // Forces from outside the system only: a connection (or strand) whose loads on the
@@ -321,124 +466,15 @@ std::optional<Figure> FigureMaker::draw(const std::vector<int>& bodies, bool sys
   // Outlines.
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const Body& b = m.bodies[bodies[i]];
-    Drawn d;
-    d.body = bodies[i];
-    d.outline.name = b.name;
+    V centre;
     if (proj.dims == 1) {
-      d.centre = (3.0 * static_cast<double>(i)) * (proj.axis1.x != 0 ? V{1, 0} : V{0, -1});
+      centre = (3.0 * static_cast<double>(i)) * (proj.axis1.x != 0 ? V{1, 0} : V{0, -1});
     } else if (b.has_cm) {
-      d.centre = scale * proj(*point3(b.cm));
+      centre = scale * proj(*point3(b.cm));
     } else if (!body_points[i].empty()) {
-      d.centre = scale * proj(body_points[i].front());
+      centre = scale * proj(body_points[i].front());
     }
-    if (b.drawn_shape.empty() && proj.dims == 2 && !b.angle.is_zero() && b.inertia.is_zero()) {
-      // A turning particle (a pendulum's bob): a small disk at its center, the forces at it.
-      d.outline.shape = FigureOutline::Shape::circle;
-      d.outline.centre = fp(d.centre);
-      d.outline.radius = 0.3;
-      d.particle = true;
-    } else if (!b.drawn_shape.empty()) {
-      const double unit = proj.dims == 1 ? particle_side : scale;
-      // Turned by the body's angle where it has one.
-      const double turned = proj.dims == 2 ? num(b.angle).value_or(0) : 0;
-      const V along{std::cos(turned), std::sin(turned)};
-      if (b.drawn_shape == "circle") {
-        d.outline.shape = FigureOutline::Shape::circle;
-        d.outline.centre = fp(d.centre);
-        d.outline.radius = unit * num(b.drawn_size[0]).value_or(1) / 2;
-      } else if (b.drawn_shape == "rod") {
-        // A little longer than the rod, so that no force at an end runs along an edge.
-        const double length = unit * num(b.drawn_size[0]).value_or(1);
-        d.outline = rectangle(d.centre, along, length + 0.3, std::min(0.35, 0.12 * length));
-      } else {
-        d.outline = rectangle(d.centre, along, unit * num(b.drawn_size[0]).value_or(1), unit * num(b.drawn_size[1]).value_or(1));
-      }
-      d.outline.name = b.name;
-      d.particle = proj.dims == 1 || body_points[i].size() <= 1;  // else forces at their points
-    } else if (proj.dims == 1 || body_points[i].size() <= 1 || [&] {
-                 // every point in one place: a particle
-                 for (const auto& p : body_points[i])
-                   for (int k = 0; k < 3; ++k)
-                     if (std::fabs(p[k] - body_points[i][0][k]) > 1e-9 * (1 + std::fabs(p[k]))) return false;
-                 return true;
-               }()) {
-      d.particle = true;
-      if (proj.dims == 1 && (!b.has_mass || b.mass.is_zero())) {
-        d.outline.shape = FigureOutline::Shape::circle;  // a pulley block
-        d.outline.centre = fp(d.centre);
-        d.outline.radius = 0.45;
-      } else {
-        // Turned to its line of motion, as a block on an incline is drawn.
-        V along{1, 0};
-        if (proj.dims > 1) {
-          // The direction of its acceleration: the coefficient of the unknown in it, or
-          // the given vector.
-          std::optional<ex> u;
-          for (const ex& c : m.candidates)
-            for (int k = 0; k < m.dims() && !u; ++k)
-              if (b.acceleration[k].has(c)) u = c;
-          std::array<double, 3> a{0, 0, 0};
-          bool ok = true;
-          for (int k = 0; k < m.dims(); ++k) {
-            const ex ak = u ? b.acceleration[k].expand().coeff(*u, 1) : b.acceleration[k];
-            auto v = num(ak);
-            if (!v) ok = false;
-            else a[k] = *v;
-          }
-          if (ok && len(proj(a)) > 1e-9) along = normalized(proj(a));
-          if (along.x < 0) along = -1 * along;
-        }
-        d.outline = rectangle(d.centre, along, particle_side, particle_side * 0.8);
-      }
-      d.outline.name = b.name;
-    } else {
-      // From its points: their bounding box in model space, a bar, a plate or a box.
-      std::array<double, 3> lo = body_points[i][0], hi = lo;
-      for (const auto& p : body_points[i])
-        for (int k = 0; k < 3; ++k) {
-          lo[k] = std::min(lo[k], p[k]);
-          hi[k] = std::max(hi[k], p[k]);
-        }
-      double longest = 0;
-      for (int k = 0; k < 3; ++k) longest = std::max(longest, hi[k] - lo[k]);
-      // A center of mass on an edge of the box (a suitcase's at the height h of its
-      // middle): the body reaches as far beyond it.
-      if (b.has_cm)
-        if (auto cm = point3(b.cm))
-          for (int k = 0; k < 3; ++k) {
-            const double span = hi[k] - lo[k];
-            if (span <= 0.08 * longest) continue;
-            if ((*cm)[k] >= hi[k] - 0.02 * span) hi[k] = lo[k] + 2 * span;
-            else if ((*cm)[k] <= lo[k] + 0.02 * span) lo[k] = hi[k] - 2 * span;
-          }
-      int spread = 0;
-      for (int k = 0; k < 3; ++k) spread += hi[k] - lo[k] > 0.08 * longest;
-      if (spread <= 1) {
-        // A bar from the farthest pair of points.
-        V a = scale * proj(body_points[i][0]), c = a;
-        double far = -1;
-        for (const auto& p : body_points[i])
-          for (const auto& q : body_points[i])
-            if (len(proj(p) - proj(q)) > far) {
-              far = len(proj(p) - proj(q));
-              a = scale * proj(p);
-              c = scale * proj(q);
-            }
-        // A little longer than its points, so that no force at an end runs along an edge.
-        d.outline = rectangle(0.5 * (a + c), c - a, len(c - a) + 0.3, std::min(1.0, 0.3 * len(c - a)));
-        d.outline.name = b.name;
-      } else {
-        std::vector<V> corners;
-        for (int c = 0; c < 8; ++c) {
-          std::array<double, 3> p{(c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2]};
-          corners.push_back(scale * proj(p));
-        }
-        d.outline.corners = convex_hull(corners);
-      }
-      V sum{0, 0};
-      for (const auto& c : d.outline.corners) sum = sum + vp(c);
-      if (!b.has_cm) d.centre = (1.0 / static_cast<double>(d.outline.corners.size())) * sum;
-    }
+    const Drawn d = draw_body(m, bodies[i], body_points[i], proj, scale, num, centre, std::nullopt, particle_side, 0.3);
     f.outlines.push_back(d.outline);
     drawn.push_back(d);
   }
@@ -609,6 +645,8 @@ std::optional<Figure> FigureMaker::draw(const std::vector<int>& bodies, bool sys
   std::string list;
   for (std::size_t i = 0; i < names.size(); ++i) list += (i ? (i + 1 == names.size() ? " and " : ", ") : "") + names[i];
   f.caption = std::string("Free body diagram of ") + (system && bodies.size() > 1 ? "the system " : "") + list;
+  f.bodies = bodies;
+  f.system = system;
   return f;
 }
 

@@ -60,6 +60,8 @@ struct FigureLine {
 struct Figure {
   std::string caption;  // "Free body diagram of the suitcase"
   bool sketch = false;  // the mechanism's sketch (a sheet shows it), not a free body diagram
+  std::vector<int> bodies;  // a free body diagram's bodies, and whether as one system (to draw it again)
+  bool system = false;
   std::vector<FigureOutline> outlines;
   std::vector<FigureLine> lines;     // drawn over the outlines
   std::vector<FigureLabel> texts;    // names written on the figure (a block's)
@@ -74,12 +76,20 @@ struct Figure {
 class FigureMaker {
  public:
   explicit FigureMaker(const Model& m);
+  /// At other values of the parameters (SI, by symbol: a variant's): the layout's numbers
+  /// with these over the parameters' own, the defined parameters made again from them.
+  FigureMaker(const Model& m, const GiNaC::exmap& values);
+  /// The same figure (the sketch, or a free body diagram of the same bodies) drawn by this
+  /// maker, at its numbers; none where it cannot be drawn there.
+  [[nodiscard]] std::optional<Figure> redraw(const Figure& f) const;
   /// The diagram of one body, or of a system of bodies (see free_body_diagram).
   [[nodiscard]] std::optional<Figure> draw(const std::vector<int>& bodies, bool system) const;
-  /// A 1-D mechanism's sketch (see mechanism_sketch).
+  /// The mechanism's sketch (see mechanism_sketch).
   [[nodiscard]] std::optional<Figure> sketch() const;
 
  private:
+  [[nodiscard]] std::optional<Figure> sketch_line() const;   // 1-D
+  [[nodiscard]] std::optional<Figure> sketch_plane() const;  // 2-D
   [[nodiscard]] std::optional<double> number(const GiNaC::ex& e) const;
   const Model& m_;
   GiNaC::exmap values_;
@@ -91,11 +101,16 @@ class FigureMaker {
 /// as 1). None when the geometry cannot be evaluated (a position undefined there).
 [[nodiscard]] std::optional<Figure> free_body_diagram(const Model& m, const std::vector<int>& bodies, bool system);
 
-/// The sketch of a 1-D mechanism at the layout's positions: its blocks, its strings along
+/// The sketch of a mechanism at the layout's numbers. 1-D: its blocks, its strings along
 /// their paths (strands side by side, wrapped around sheaves where they turn), springs and
-/// dampers, the ground where points are fixed, the applied forces and the axis. None for
-/// 2-D and 3-D problems, for one without a string, spring or damper, and when the layout
-/// cannot be evaluated.
+/// dampers, the ground where points are fixed, the applied forces and the axis; none for one
+/// without a string, spring or damper. 2-D (turned so that gravity points down the page):
+/// each body (its shape, a bar or plate through its points, or a block along the surface it
+/// touches), the ground surfaces bodies touch (hatched, an incline at its angle), pins and
+/// fixed points with their supports, pulleys, strings along their paths (wrapping pulleys
+/// where they turn), cables and rods, springs and dampers, applied forces and couples, the
+/// angles that parameters or coordinates give, the named points and the axes. None for 3-D
+/// problems, and whenever a position cannot be evaluated at the layout's numbers.
 [[nodiscard]] std::optional<Figure> mechanism_sketch(const Model& m);
 
 /// The figure as a tikzpicture (needs \usepackage{tikz}).
@@ -105,6 +120,18 @@ class FigureMaker {
 /// A label's LaTeX as SVG text content (<tspan>s for sub- and superscripts, Greek letters as
 /// characters, dots as combining accents), XML-escaped.
 [[nodiscard]] std::string svg_text(const std::string& tex);
+/// How to_svg writes a label (drawing units, y up): its text centred at x in the box the
+/// layout kept, on a baseline that centres the text's ascent and descent in the box, held to
+/// `width` (textLength): so the text fills [x - width/2, x + width/2] across and
+/// [baseline - svg_descent * font_size, baseline + svg_ascent * font_size] up the page, inside
+/// the label's box.
+struct SvgLabel {
+  double x = 0, baseline = 0, width = 0, font_size = 0;
+};
+constexpr double svg_font_size = 0.35;               // as TikZ's \small (10 pt) in a 1 cm unit
+constexpr double svg_ascent = 0.8, svg_descent = 0.3;  // of the font size: capitals with a dot or a superscript, a subscript
+constexpr double svg_margin = 0.04;                  // between the text and its box's sides
+[[nodiscard]] SvgLabel svg_label(const FigureLabel& l);
 /// The number of characters a label shows (for its width).
 [[nodiscard]] std::size_t shown_length(const std::string& tex);
 

@@ -3,7 +3,11 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "figure/figure.hpp"
@@ -31,6 +35,7 @@ constexpr double particle_side = 1.2; // a body drawn around one point
 constexpr double arrow_length = 1.2;
 constexpr double spacing = 0.38;      // between parallel arrows that would overlap
 constexpr double char_width = 0.2, label_height = 0.42, gap = 0.1;
+constexpr double label_spacing = 0.06;  // kept between two labels' boxes
 
 
 inline bool inside(const FigureOutline& o, V p) {
@@ -123,10 +128,14 @@ inline bool box_hits_segment(const Box& b, V p, V q) {
 
 class Layout {
  public:
+  // On an arrow: worse than lying in an outline across its edges.
+  static constexpr double arrow_penalty = 40;
+
   explicit Layout(Figure& f) : f_(f) {}
 
-  // A label near `anchor`, tried at the candidate centres in order; the first that touches
-  // nothing wins, else the one that touches least.
+  // A label tried at the candidate centres in order; the first that touches nothing wins,
+  // else the one that touches least. Where every candidate lies on another label or on an
+  // arrow, rings of places farther out around the first are tried too.
   FigureLabel place(const std::string& tex, const std::vector<V>& candidates) {
     FigureLabel l;
     l.tex = tex;
@@ -134,13 +143,19 @@ class Layout {
     l.height = label_height;
     double best = 1e300;
     V at = candidates.front();
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-      const double p = penalty({candidates[i], l.width, l.height}) + 0.01 * static_cast<double>(i);
+    auto consider = [&](V c, double cost) {
+      const double p = penalty({c, l.width, l.height}) + cost;
       if (p < best) {
         best = p;
-        at = candidates[i];
+        at = c;
       }
-    }
+    };
+    for (std::size_t i = 0; i < candidates.size(); ++i) consider(candidates[i], 0.01 * static_cast<double>(i));
+    for (int ring = 1; ring <= 6 && best >= arrow_penalty; ++ring)
+      for (int k = 0; k < 16; ++k) {
+        const double a = 2 * M_PI * k / 16, r = 0.3 * ring;
+        consider(candidates.front() + V{(r + l.width / 2) * std::cos(a), (r + l.height / 2) * std::sin(a)}, 1 + 0.1 * ring);
+      }
     l.at = fp(at);
     boxes_.push_back({at, l.width, l.height});
     return l;
@@ -149,10 +164,12 @@ class Layout {
  private:
   double penalty(const Box& b) const {
     double p = 0;
+    // Labels a little apart (a subscript close above the next label reads as its own).
+    const Box roomy{b.c, b.w + label_spacing, b.h + label_spacing};
     for (const auto& o : boxes_)
-      if (overlaps(b, o)) p += 100;
+      if (overlaps(roomy, o)) p += 100;
     for (const auto& a : f_.arrows)
-      if (box_hits_segment(b, vp(a.from), vp(a.to))) p += 10;
+      if (box_hits_segment(b, vp(a.from), vp(a.to))) p += arrow_penalty;
     for (const auto& l : f_.lines)
       for (std::size_t i = 1; i < l.points.size(); ++i)
         if (box_hits_segment(b, vp(l.points[i - 1]), vp(l.points[i]))) p += l.thin ? 3 : 10;
@@ -182,6 +199,67 @@ class Layout {
   Figure& f_;
   std::vector<Box> boxes_;
 };
+
+// Model space to the drawing plane: 1-D along the axis (vertical when gravity acts along
+// it), 2-D as is, 3-D in an oblique view (x towards the viewer, y to the right, z up).
+struct Projection {
+  int dims = 2;
+  V axis1{1, 0};    // 1-D: the axis' direction on paper
+  double turn = 0;  // 2-D: the plane turned by this angle (a sketch turns it so that gravity points down)
+  [[nodiscard]] V operator()(const std::array<double, 3>& p) const {
+    if (dims == 1) return p[0] * axis1;
+    if (dims == 2) return {std::cos(turn) * p[0] - std::sin(turn) * p[1], std::sin(turn) * p[0] + std::cos(turn) * p[1]};
+    return {p[1] - 0.5 * p[0], p[2] - 0.35 * p[0]};
+  }
+  [[nodiscard]] V axis(int k) const {
+    std::array<double, 3> e{0, 0, 0};
+    e[k] = 1;
+    return (*this)(e);
+  }
+};
+
+// A body as drawn: its outline and how forces attach to it.
+struct Drawn {
+  int body = -1;
+  FigureOutline outline;
+  V centre;               // on paper
+  bool particle = false;  // forces start on its outline, along their line through the centre
+};
+
+// A number of the model's geometry at the layout's numbers, or none.
+using Number = std::function<std::optional<double>(const GiNaC::ex&)>;
+
+// A vector of the model's at the layout's numbers (0 beyond its axes), or none.
+[[nodiscard]] std::optional<std::array<double, 3>> point3(const Model& m, const Number& num, const Vec& v);
+
+/// A body's outline, as the free body diagrams and the sketches draw it: its own shape
+/// (`draw:`) turned by its angle, a small disk for a turning particle (a pendulum's bob), a
+/// block `side` wide around a body whose `points` (model units: its center of mass and where
+/// forces act on it) are one (turned `along` its line, else along its acceleration), else
+/// a bar, plate or box through its points. `centre` is where it is on paper; `scale` turns
+/// model units into drawing units; a rod or bar reaches `overhang` beyond its end points in
+/// all (a free body diagram's 0.3: no force at an end runs along an edge; a sketch's 0).
+[[nodiscard]] Drawn draw_body(const Model& m, int body, const std::vector<std::array<double, 3>>& points, const Projection& proj,
+                              double scale, const Number& num, V centre, std::optional<V> along, double side, double overhang);
+
+constexpr double hatch = 0.22, hatch_step = 0.25;  // the ground's hatching: its strokes and their spacing
+
+/// A strand from p to q as a sketch draws it: a spring's coils (across `across`), a damper's
+/// dashpot, else a straight line (a string).
+void draw_strand(Figure& f, const std::string& as, V p, V q, V across);
+/// The ground along a to b: a line, hatched towards `into` (a unit vector).
+void draw_ground(Figure& f, V a, V b, V into);
+
+/// An arrow's label at its free end (its tail where the arrow presses on something, else its
+/// head), else beside its middle.
+inline FigureLabel place_at_end(Layout& lay, const FigureArrow& a, bool pressing) {
+  const V t = vp(a.from), h = vp(a.to), u = normalized(h - t), n = perp(u);
+  const double w = char_width * static_cast<double>(shown_length(a.label.tex)) + 0.12;
+  const double out = 0.5 * (std::fabs(u.x) * w + std::fabs(u.y) * label_height) + gap;
+  const double beside = 0.5 * (std::fabs(n.x) * w + std::fabs(n.y) * label_height) + gap;
+  const V end = pressing ? t : h, way = pressing ? -1 * u : u;
+  return lay.place(a.label.tex, {end + out * way, 0.5 * (t + h) + beside * n, 0.5 * (t + h) - beside * n});
+}
 
 /// Bounds of everything drawn, then the axes at the lower left, outside it: `directions`
 /// are the axes' directions on paper, `names` their names.

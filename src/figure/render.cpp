@@ -1,6 +1,7 @@
 // A Figure as TikZ and as SVG; labels' LaTeX as SVG text.
 #include <cmath>
 #include <map>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -108,6 +109,53 @@ class SvgText {
   std::size_t i_ = 0;
 };
 
+// The advance of a label's shown text (svg_text's output) in ems of its font, an italic
+// serif: sub- and superscripts at 70%, combining dots taking no room. An estimate, which
+// the SVG then holds the text to (textLength), so that the box it fills is known.
+double shown_ems(const std::string& svg) {
+  double ems = 0, size = 1;
+  std::vector<double> sizes;
+  for (std::size_t i = 0; i < svg.size();) {
+    const auto c = static_cast<unsigned char>(svg[i]);
+    if (c == '<') {
+      const std::size_t close = svg.find('>', i);
+      const std::string tag = svg.substr(i, close - i);
+      if (tag.rfind("</", 0) == 0) {
+        size = sizes.empty() ? 1 : sizes.back();
+        if (!sizes.empty()) sizes.pop_back();
+      } else {
+        sizes.push_back(size);
+        if (tag.find("font-size=\"70%\"") != std::string::npos) size *= 0.7;
+      }
+      i = close + 1;
+      continue;
+    }
+    if (c == '&') {  // an escaped character: &lt; &gt; &amp; &quot;
+      ems += 0.6 * size;
+      i = svg.find(';', i) + 1;
+      continue;
+    }
+    std::size_t n = 1;
+    if (c >= 0xF0) n = 4;
+    else if (c >= 0xE0) n = 3;
+    else if (c >= 0xC0) n = 2;
+    const std::string ch = svg.substr(i, n);
+    i += n;
+    double w = 0.52;
+    if (ch == "\u0307" || ch == "\u0308") w = 0;  // a dot over the letter before
+    else if (ch == "\u2009") w = 0.17;
+    else if (ch == " ") w = 0.25;
+    else if (n > 1) w = 0.6;  // Greek, minus, root, dot, times
+    else if (std::string("mwMW").find(static_cast<char>(c)) != std::string::npos) w = 0.85;
+    else if (std::string("ijltfr()/,.:;'|!").find(static_cast<char>(c)) != std::string::npos) w = 0.33;
+    else if (std::isupper(c)) w = 0.7;
+    else if (std::isdigit(c)) w = 0.5;
+    else if (c == '+' || c == '=') w = 0.6;
+    ems += w * size;
+  }
+  return ems;
+}
+
 std::string svg_point(double x, double y, const Figure& f, double px) {
   return num((x - f.min_x) * px) + "," + num((f.max_y - y) * px);
 }
@@ -115,6 +163,19 @@ std::string svg_point(double x, double y, const Figure& f, double px) {
 }  // namespace
 
 std::string svg_text(const std::string& tex) { return SvgText(tex).run(); }
+
+SvgLabel svg_label(const FigureLabel& l) {
+  SvgLabel b;
+  const std::string text = svg_text(l.tex);
+  const double natural = shown_ems(text) * svg_font_size;
+  b.x = l.at.x;
+  // The font as large as TikZ's \small where the box is as high as the layout makes it,
+  // smaller in a lower box; the text as wide as it is, or the box's width less a margin.
+  b.font_size = l.height > 0 ? std::min(svg_font_size, l.height / (svg_ascent + svg_descent)) : svg_font_size;
+  b.width = l.width > 0 ? std::min(natural * b.font_size / svg_font_size, l.width - 2 * svg_margin) : natural;
+  b.baseline = l.at.y - 0.5 * (svg_ascent - svg_descent) * b.font_size;
+  return b;
+}
 
 std::size_t shown_length(const std::string& tex) {
   const std::string s = svg_text(tex);
@@ -137,8 +198,22 @@ std::size_t shown_length(const std::string& tex) {
   return n;
 }
 
+namespace {
+
+// A label as a TikZ node: its text centred in the box the layout kept, scaled down where it
+// would be wider or higher than the box (\tacklelabel, defined in each picture).
+std::string tikz_label(const FigureLabel& l) {
+  const std::string text = "$" + l.tex + "$";
+  const std::string body = l.width > 0 && l.height > 0 ? "\\tacklelabel{" + num(l.width) + "cm}{" + num(l.height) + "cm}{" + text + "}" : text;
+  return "  \\node[font=\\small, inner sep=0pt] at (" + num(l.at.x) + "," + num(l.at.y) + ") {" + body + "};\n";
+}
+
+}  // namespace
+
 std::string to_tikz(const Figure& f) {
-  std::string out = "\\begin{tikzpicture}[>=stealth, line cap=round, line join=round]\n";
+  std::string out = "\\begin{tikzpicture}[>=stealth, line cap=round, line join=round]\n"
+                    "  \\providecommand{\\tacklelabel}[3]{\\setbox0=\\hbox{#3}\\pgfmathsetmacro{\\tacklescale}{min(1, #1/max(\\the\\wd0, 0.01pt), "
+                    "#2/max(\\the\\dimexpr\\ht0+\\dp0\\relax, 0.01pt))}\\scalebox{\\tacklescale}{\\box0}}\n";
   for (const auto& o : f.outlines) {
     if (o.shape == FigureOutline::Shape::circle) {
       out += "  \\filldraw[fill=black!8, draw=black, thick] (" + num(o.centre.x) + "," + num(o.centre.y) + ") circle (" + num(o.radius) + ");\n";
@@ -153,22 +228,22 @@ std::string to_tikz(const Figure& f) {
     for (std::size_t i = 0; i < l.points.size(); ++i) out += (i ? " -- (" : "(") + num(l.points[i].x) + "," + num(l.points[i].y) + ")";
     out += ";\n";
   }
-  for (const auto& t : f.texts) out += "  \\node[inner sep=1pt] at (" + num(t.at.x) + "," + num(t.at.y) + ") {$" + t.tex + "$};\n";
+  for (const auto& t : f.texts) out += tikz_label(t);
   for (const auto& d : f.dots) {
     out += "  \\fill (" + num(d.at.x) + "," + num(d.at.y) + ") circle (1.5pt);\n";
-    if (d.label) out += "  \\node[font=\\small, inner sep=1pt] at (" + num(d.label->at.x) + "," + num(d.label->at.y) + ") {$" + d.label->tex + "$};\n";
+    if (d.label) out += tikz_label(*d.label);
   }
   for (const auto& a : f.arrows) {
     const std::string style = a.axis ? "->, thin" : a.dashed ? "->, thick, dashed" : "->, very thick";
     out += "  \\draw[" + style + "] (" + num(a.from.x) + "," + num(a.from.y) + ") -- (" + num(a.to.x) + "," + num(a.to.y) + ");\n";
-    out += "  \\node[font=\\small, inner sep=1pt] at (" + num(a.label.at.x) + "," + num(a.label.at.y) + ") {$" + a.label.tex + "$};\n";
+    out += tikz_label(a.label);
   }
   for (const auto& c : f.couples) {
     const double start = c.counterclockwise ? -60 : 240, end = c.counterclockwise ? 240 : -60;
     const double sx = c.centre.x + c.radius * std::cos(start * M_PI / 180), sy = c.centre.y + c.radius * std::sin(start * M_PI / 180);
     out += std::string("  \\draw[->, ") + (c.dashed ? "thick, dashed" : "very thick") + "] (" + num(sx) + "," + num(sy) + ") arc[start angle=" + num(start) + ", end angle=" + num(end) +
            ", radius=" + num(c.radius) + "];\n";
-    out += "  \\node[font=\\small, inner sep=1pt] at (" + num(c.label.at.x) + "," + num(c.label.at.y) + ") {$" + c.label.tex + "$};\n";
+    out += tikz_label(c.label);
   }
   return out + "\\end{tikzpicture}\n";
 }
@@ -193,9 +268,12 @@ std::string to_svg(const Figure& f) {
       out += "\" fill=\"#ebebeb\" stroke=\"black\" stroke-width=\"1.6\" stroke-linejoin=\"round\"/>\n";
     }
   }
+  // A label centred in the box the layout kept for it: its text held to the box's width.
   auto label = [&](const FigureLabel& l) {
-    return "<text x=\"" + num((l.at.x - f.min_x) * px) + "\" y=\"" + num((f.max_y - l.at.y) * px + 5) +
-           "\" text-anchor=\"middle\" font-family=\"serif\" font-style=\"italic\" font-size=\"15\">" + svg_text(l.tex) + "</text>\n";
+    const SvgLabel b = svg_label(l);
+    return "<text x=\"" + num((b.x - f.min_x) * px) + "\" y=\"" + num((f.max_y - b.baseline) * px) + "\" textLength=\"" +
+           num(b.width * px) + "\" lengthAdjust=\"spacingAndGlyphs\" text-anchor=\"middle\" font-family=\"serif\" font-style=\"italic\" font-size=\"" +
+           num(b.font_size * px) + "\">" + svg_text(l.tex) + "</text>\n";
   };
   for (const auto& l : f.lines) {
     out += "<polyline points=\"";

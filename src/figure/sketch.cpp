@@ -21,7 +21,6 @@ constexpr double lane_gap = 1.0;      // between strands side by side (drawing u
 constexpr double sheave_radius = 0.5; // strands in neighbouring lanes are tangent to it
 constexpr double block_length = 1.0;  // a block's size along the axis
 constexpr double margin = 0.45;       // a block's edge beyond the strands fixed to it
-constexpr double hatch = 0.22;
 
 // A strand of a path: between two points' positions along the axis, in one lane.
 struct Strand {
@@ -45,32 +44,22 @@ struct Block {
   double s_lo, s_hi, lat_lo, lat_hi;
 };
 
-std::vector<FigurePoint> zigzag(V a, V b, V across) {
-  // Straight leads, then coils.
-  const double l = len(b - a);
-  const V u = normalized(b - a);
-  const double lead = std::min(0.25, 0.2 * l);
-  const int n = std::max(4, static_cast<int>((l - 2 * lead) / 0.22));
-  std::vector<FigurePoint> out{fp(a), fp(a + lead * u)};
-  for (int i = 0; i < n; ++i) {
-    const double t = lead + (i + 0.5) * (l - 2 * lead) / n;
-    out.push_back(fp(a + t * u + ((i % 2 ? -1 : 1) * 0.18) * across));
-  }
-  out.push_back(fp(b - lead * u));
-  out.push_back(fp(b));
-  return out;
-}
-
 }  // namespace
 
 std::optional<Figure> mechanism_sketch(const Model& m) { return FigureMaker(m).sketch(); }
 
 std::optional<Figure> FigureMaker::sketch() const {
+  if (m_.dims() == 1) return sketch_line();
+  if (m_.dims() == 2) return sketch_plane();
+  return std::nullopt;
+}
+
+std::optional<Figure> FigureMaker::sketch_line() const {
   const Model& m = m_;
   auto is_path = [](const Model::Drawing& d) {
     return d.path.size() >= 2 && (d.as == "line" || d.as == "spring" || d.as == "damper");
   };
-  if (m.dims() != 1 || std::none_of(m.drawings.begin(), m.drawings.end(), is_path)) return std::nullopt;
+  if (std::none_of(m.drawings.begin(), m.drawings.end(), is_path)) return std::nullopt;
   PersonOrder order(factor_rank({m.symbols}));
 
   // The axis on paper: vertical when gravity acts along it (up the page against it).
@@ -195,15 +184,31 @@ std::optional<Figure> FigureMaker::sketch() const {
       k.lat_lo = mid - name / 2;
       k.lat_hi = mid + name / 2;
     }
+    blocks.push_back(k);
+  }
+  // Bodies in contact touch: the facing sides of two blocks meet halfway between them.
+  for (const auto& d : m.drawings) {
+    if (d.as != "contact" || d.path.size() != 2) continue;
+    auto block = [&](int point) {
+      return std::find_if(blocks.begin(), blocks.end(), [&](const Block& k) { return k.body == m.points[point].body; });
+    };
+    auto a = block(d.path[0]), b = block(d.path[1]);
+    if (a == blocks.end() || b == blocks.end() || a == b) continue;
+    if (a->s_lo + a->s_hi > b->s_lo + b->s_hi) std::swap(a, b);  // a below b along the axis
+    // Each keeps a quarter of a block's length at least.
+    const double lo = a->s_lo + 0.25 * block_length, hi = b->s_hi - 0.25 * block_length;
+    const double mid = lo <= hi ? std::clamp(0.5 * (a->s_hi + b->s_lo), lo, hi) : 0.5 * (lo + hi);
+    a->s_hi = b->s_lo = mid;
+  }
+  for (const auto& k : blocks) {
     for (const auto& t : meetings) {
-      if (m.points[t.point].body != static_cast<int>(b) || (t.s >= k.s_lo - 1e-9 && t.s <= k.s_hi + 1e-9)) continue;
+      if (m.points[t.point].body != k.body || (t.s >= k.s_lo - 1e-9 && t.s <= k.s_hi + 1e-9)) continue;
       const double edge = t.s > k.s_hi ? k.s_hi : k.s_lo, dir = t.s > k.s_hi ? 1 : -1;
       hangers.push_back({at(edge, t.lat), at(t.s - dir * reach(t), t.lat)});
     }
-    blocks.push_back(k);
     FigureOutline o;
     for (auto [s, l] : {std::pair{k.s_lo, k.lat_lo}, {k.s_hi, k.lat_lo}, {k.s_hi, k.lat_hi}, {k.s_lo, k.lat_hi}}) o.corners.push_back(fp(at(s, l)));
-    o.name = body.name;
+    o.name = m.bodies[k.body].name;
     f.outlines.push_back(o);
   }
   auto block_of = [&](int point) -> const Block* {
@@ -240,21 +245,7 @@ std::optional<Figure> FigureMaker::sketch() const {
     const double a = tied(st.from, st.s0, st.lat, dir), b = tied(st.to, st.s1, st.lat, -dir);
     if ((b - a) * dir <= 1e-9) continue;
     const V p = at(a, st.lat), q = at(b, st.lat);
-    if (st.as == "spring") {
-      f.lines.push_back({zigzag(p, q, across), false});
-    } else if (st.as == "damper") {
-      // A dashpot: the cylinder open towards the far end, the piston in it.
-      const V u = normalized(q - p);
-      const double l = len(q - p), mid = l / 2, h = 0.22, w = std::min(0.35, 0.3 * l);
-      f.lines.push_back({{fp(p), fp(p + (mid - w) * u)}, false});
-      f.lines.push_back({{fp(p + (mid + w) * u + h * across), fp(p + (mid - w) * u + h * across), fp(p + (mid - w) * u - h * across),
-                          fp(p + (mid + w) * u - h * across)},
-                         false});
-      f.lines.push_back({{fp(p + mid * u + 0.7 * h * across), fp(p + mid * u - 0.7 * h * across)}, false});
-      f.lines.push_back({{fp(p + mid * u), fp(q)}, false});
-    } else {
-      f.lines.push_back({{fp(p), fp(q)}, false});
-    }
+    draw_strand(f, st.as, p, q, across);
   }
   for (const auto& [p, q] : hangers) f.lines.push_back({{fp(p), fp(q)}, false});
 
@@ -301,8 +292,7 @@ std::optional<Figure> FigureMaker::sketch() const {
   for (const auto& g : grounds) {
     if (g.dir != 0) {
       const double sg = g.s + g.dir * g.depth, lo = g.lo - 0.6, hi = g.hi + 0.6;
-      f.lines.push_back({{fp(at(sg, lo)), fp(at(sg, hi))}, false});
-      for (double l = lo; l <= hi + 1e-9; l += 0.25) f.lines.push_back({{fp(at(sg, l)), fp(at(sg + g.dir * hatch, l + hatch))}, true});
+      draw_ground(f, at(sg, lo), at(sg, hi), g.dir * axis);
     } else {
       // The post, broken where a strand passes it.
       const double floor = lowest - 0.9;
@@ -316,8 +306,7 @@ std::optional<Figure> FigureMaker::sketch() const {
         from = l + 0.12;
       }
       f.lines.push_back({{fp(at(g.s, from)), fp(at(g.s, g.hi))}, false});
-      f.lines.push_back({{fp(at(g.s - 0.6, floor)), fp(at(g.s + 0.6, floor))}, false});
-      for (double s = g.s - 0.6; s <= g.s + 0.6 + 1e-9; s += 0.25) f.lines.push_back({{fp(at(s, floor)), fp(at(s + hatch, floor - hatch))}, true});
+      draw_ground(f, at(g.s - 0.6, floor), at(g.s + 0.6, floor), -1 * across);
     }
   }
   // A string's end tied to a fixed point or a massless body: a dot.
@@ -356,13 +345,7 @@ std::optional<Figure> FigureMaker::sketch() const {
   // Labels: the forces' at their heads, then the points' names (fixed points, sheaves, the
   // points of a body away from its own name).
   Layout lay(f);
-  for (auto& a : f.arrows) {
-    const V t = vp(a.from), h = vp(a.to), u = normalized(h - t), n = perp(u);
-    const double w = char_width * static_cast<double>(shown_length(a.label.tex)) + 0.12;
-    const double out = 0.5 * (std::fabs(u.x) * w + std::fabs(u.y) * label_height) + gap;
-    const double side = 0.5 * (std::fabs(n.x) * w + std::fabs(n.y) * label_height) + gap;
-    a.label = lay.place(a.label.tex, {h + out * u, 0.5 * (t + h) + side * n, 0.5 * (t + h) - side * n});
-  }
+  for (auto& a : f.arrows) a.label = place_at_end(lay, a, false);
   // Each block's name inside it, or beside it when a sheave or a strand is in the way.
   for (const auto& k : blocks) {
     const std::string tex = default_tex(m.bodies[k.body].name);

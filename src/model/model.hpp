@@ -204,13 +204,15 @@ struct Model {
     std::vector<GiNaC::ex> terms;  // the rule's {N}, {mu*N} in this connection's symbols
   };
   std::vector<ConnectionNote> connections;  // one per connection, in the description's order
-  /// What a 1-D mechanism's sketch draws of a connection (its rule's `sketch:`).
+  /// What a mechanism's sketch draws of a connection (its rule's `sketch:`).
   struct Drawing {
-    std::string as;         // line, spring, damper, pulley, support, arrow
-    std::string label;      // the connection's label ("force on A": its loads' source)
-    std::vector<int> path;  // its path's points (line, spring, damper)
-    int point = -1;         // its point (pulley)
-    int body = -1;          // its body (support, arrow)
+    std::string as;           // line, spring, damper, pulley, support, arrow, contact, surface, pin, joint, rod, couple
+    std::string label;        // the connection's label ("force on A": its loads' source)
+    std::vector<int> path;    // its path's points (line, spring, damper; contact: between)
+    int point = -1;           // its first point (pulley, surface, pin, joint, arrow)
+    std::vector<int> points;  // all its points, in the rule's order (a rod's or a cable's from and to)
+    int body = -1;            // its first body (support, arrow, surface, pin, joint, rod, couple)
+    Vec vector = zero_vec();  // its first vector (a surface's normal)
   };
   std::vector<Drawing> drawings;  // in the description's order
   std::optional<Vec> gravity;

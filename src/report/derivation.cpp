@@ -124,7 +124,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   section("Model");
   std::optional<FigureMaker> figures;  // made once, for the sketch and every balance
   const bool draw = options.narrate && options.figures;
-  if (m.dims() == 1 && draw) {
+  if (m.dims() <= 2 && draw) {
     figures.emplace(m);
     if (auto fig = figures->sketch()) {
       Step* st = step(Step::Kind::figure, fig->caption);

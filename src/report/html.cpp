@@ -92,7 +92,7 @@ const char* const style = R"(body{font-family:"Latin Modern Roman","CMU Serif",G
 h1{font-size:1.6em}h2{font-size:1.25em;margin-top:1.6em;border-bottom:1px solid #ccc}
 .eq{display:flex;align-items:center;gap:1em;margin:.5em 0}.eq .math{flex:1;text-align:center}
 .eq .tag{color:#555;font-size:.9em;white-space:nowrap}
-figure{text-align:center;margin:1em 0}figure svg{max-width:100%;height:auto}figcaption{font-size:.9em;color:#444}
+figure{text-align:center;margin:1em 0;break-inside:avoid;page-break-inside:avoid}figure svg{max-width:100%;height:auto}figcaption{font-size:.9em;color:#444}
 .katex-error{color:#b00;border-bottom:1px dotted #b00}
 table.parameters{border-collapse:collapse;margin:.8em 0}table.parameters th,table.parameters td{padding:.15em .8em;border-bottom:1px solid #ddd;text-align:left}
 table.parameters td.number{text-align:right;font-variant-numeric:tabular-nums}

@@ -56,7 +56,10 @@ std::vector<std::vector<Variant>> draw_variants(const std::vector<std::pair<cons
       Variant& v = variants[p];
       v.index = drawn + 1;
       for (const auto& s : table.all())
-        if (auto it = drawn_si.find(s->name); it != drawn_si.end() && s->role == SymbolRole::parameter) values[s->sym] = it->second;
+        if (auto it = drawn_si.find(s->name); it != drawn_si.end() && s->role == SymbolRole::parameter) {
+          values[s->sym] = it->second;
+          v.values[s->sym] = it->second;
+        }
       for (const SymbolInfo* r : ranged)
         for (const auto& q : parameters)
           if (q.name == r->name && table.find(r->name)) v.parameters.push_back(q);

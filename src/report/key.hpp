@@ -23,6 +23,7 @@ struct Variant {
   int index = 0;
   std::vector<Quantity> parameters;  // the drawn values, in each parameter's unit
   std::vector<Quantity> answers;
+  GiNaC::exmap values;  // the drawn values in SI, by the part's parameter symbols (its figures are drawn at them)
 };
 
 /// N variants: every parameter with a `range` drawn from it (a multiple of its `round` step,

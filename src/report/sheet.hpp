@@ -19,7 +19,7 @@ struct SheetEntry {
 /// One sheet for every entry and variant (LaTeX document, Markdown or an HTML page); an entry
 /// without a statement shows its title and what is asked. `figures`: each problem's drawn
 /// free body diagrams under its statement (left out by default: they are part of the answer);
-/// a 1-D mechanism's sketch is always drawn there.
+/// a 1-D or 2-D mechanism's sketch is always drawn there.
 [[nodiscard]] std::string write_sheet(const std::vector<SheetEntry>& entries, Format f, bool figures = false);
 
 }  // namespace tackle

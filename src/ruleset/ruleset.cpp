@@ -262,9 +262,12 @@ struct RuleReader {
     }
     if (auto s = root["sketch"]) {
       const auto t = scalar(s, "'sketch'", file, diags);
-      static const std::vector<std::string> kinds{"line", "spring", "damper", "pulley", "support", "arrow"};
+      static const std::vector<std::string> kinds{"line", "spring", "damper", "pulley", "support", "arrow", "contact",
+                                                  "surface", "pin", "joint", "rod", "couple"};
       if (t && std::find(kinds.begin(), kinds.end(), t->text) != kinds.end()) r.sketch = t->text;
-      else if (t) diags.error(t->at, "'sketch' is '" + t->text + "' (expected line, spring, damper, pulley, support or arrow)");
+      else if (t)
+        diags.error(t->at, "'sketch' is '" + t->text +
+                               "' (expected line, spring, damper, pulley, support, arrow, contact, surface, pin, joint, rod or couple)");
     }
     if (auto n = root["needs"]) read_args(n, true, r);
     if (auto n = root["optional"]) read_args(n, false, r);

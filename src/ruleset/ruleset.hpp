@@ -108,9 +108,13 @@ struct Rule {
   // The rule's loads assume the direction the body moves in (sliding friction opposite it):
   // past a turn the model no longer holds (a simulation ends there).
   bool assumes_direction = false;
-  // How a 1-D mechanism's sketch draws it (`sketch:`): "line" (a string along its path),
-  // "spring", "damper", "pulley" (a sheave at its point), "support" (its body held by the
-  // ground), "arrow" (a force on its body); "" when it is not drawn.
+  // How a mechanism's sketch draws it (`sketch:`): "line" (a string along its path, or a
+  // cable between its points), "spring", "damper", "pulley" (a sheave at its point),
+  // "support" (its body held by the ground), "arrow" (a force on its body), "contact" (the
+  // bodies at its two points drawn touching); in 2-D also "surface" (the ground its body
+  // touches at its point, across its first vector, the normal), "pin" (its body pinned to
+  // the ground at its point), "joint" (two bodies pinned together), "rod" (a link between
+  // its two points), "couple" (an arc on its body); "" when it is not drawn.
   std::string sketch;
   std::vector<ArgSpec> args;
   std::vector<std::vector<std::string>> one_of;  // exactly one argument of each group

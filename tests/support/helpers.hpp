@@ -1,6 +1,8 @@
 // Test helpers: run the chain on inline YAML, collect diagnostics as strings.
 #pragma once
 
+#include <algorithm>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -40,6 +42,15 @@ connections:
   - {type: cable, body: beam, from: B, to: C}
   - {type: couple, on: beam, moment: M}
 )";
+
+/// Every example description's path, in order.
+inline std::vector<std::string> example_files() {
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(TACKLE_SOURCE_DIR "/examples"))
+    if (e.path().extension() == ".yaml") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
 
 /// An example's text, to vary it in a test.
 inline std::string read_example(const std::string& name) { return read_text_file(TACKLE_SOURCE_DIR "/examples/" + name); }

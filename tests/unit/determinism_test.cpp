@@ -37,10 +37,7 @@ std::string everything(const std::string& file) {
 }  // namespace
 
 TEST_CASE("Determinism: every example reports the same under shifted hash orders", "[determinism]") {
-  std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(TACKLE_SOURCE_DIR "/examples"))
-    if (e.path().extension() == ".yaml") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
+  const std::vector<std::string> files = test::example_files();
   for (const auto& file : files) {
     SECTION(std::filesystem::path(file).stem().string()) {
       const std::string first = everything(file);

@@ -543,11 +543,21 @@ void add_conditions(BuildContext& ctx, Instance& in) {
     ctx.m.connections.push_back(std::move(note));
   }
   if (!rule->sketch.empty()) {
-    Model::Drawing d{rule->sketch, label, {}, -1, -1};
+    Model::Drawing d;
+    d.as = rule->sketch;
+    d.label = label;
+    bool vector = false;
     for (const auto& spec : rule->args) {  // the first argument of each kind, in the rule's order
       if (spec.kind == ArgKind::points && d.path.empty() && in.path_args.count(spec.key)) d.path = in.path_args.at(spec.key);
       if (spec.kind == ArgKind::body && d.body < 0 && in.body_args.count(spec.key)) d.body = in.body_args.at(spec.key);
-      if (spec.kind == ArgKind::point && d.point < 0 && in.point_args.count(spec.key)) d.point = in.point_args.at(spec.key);
+      if (spec.kind == ArgKind::point && in.point_args.count(spec.key)) {
+        if (d.point < 0) d.point = in.point_args.at(spec.key);
+        d.points.push_back(in.point_args.at(spec.key));
+      }
+      if (spec.kind == ArgKind::vector && !vector && in.vector_args.count(spec.key)) {
+        d.vector = in.vector_args.at(spec.key);
+        vector = true;
+      }
     }
     ctx.m.drawings.push_back(std::move(d));
   }

@@ -4,6 +4,7 @@
 
 #include "core/placeholders.hpp"
 #include "expr/print.hpp"
+#include "figure/figure.hpp"
 #include "model/symbols.hpp"
 #include "report/break.hpp"
 #include "report/html.hpp"
@@ -131,8 +132,10 @@ std::vector<SheetProblem> sheet_problems(const std::vector<SheetEntry>& entries)
       p.derivation = &d;
       p.model = e.model;
       p.values = base;
-      if (!e.variants.empty())
+      if (!e.variants.empty()) {
         for (const auto& q : e.variants[k].parameters) p.values[q.name] = q;
+        p.variant_values = e.variants[k].values;
+      }
       p.last_of_entry = k + 1 == n;
       out.push_back(std::move(p));
     }
@@ -245,6 +248,23 @@ std::vector<const Step*> figures_of(const Derivation& d, bool diagrams) {
   std::vector<const Step*> out;
   for (const auto& st : d.steps)
     if (st.kind == Step::Kind::figure && (diagrams || st.figure->sketch)) out.push_back(&st);
+  return out;
+}
+
+std::vector<Step> sheet_figures(const SheetProblem& p, bool diagrams) {
+  std::vector<Step> out;
+  const std::vector<const Step*> steps = figures_of(*p.derivation, diagrams);
+  if (p.variant_values.empty() || !p.model || steps.empty()) {
+    for (const Step* st : steps) out.push_back(*st);
+    return out;
+  }
+  const FigureMaker maker(*p.model, p.variant_values);
+  for (const Step* st : steps)
+    if (auto fig = maker.redraw(*st->figure)) {
+      Step again = *st;
+      again.figure = std::make_shared<const Figure>(std::move(*fig));
+      out.push_back(std::move(again));
+    }
   return out;
 }
 

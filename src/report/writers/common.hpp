@@ -37,6 +37,7 @@ struct SheetProblem {
   const Derivation* derivation = nullptr;
   const Model* model = nullptr;
   std::map<std::string, Quantity> values;  // the description's, a variant's over them
+  GiNaC::exmap variant_values;             // a variant's drawn values (SI, by symbol); empty: the description's
   bool last_of_entry = false;
 };
 [[nodiscard]] std::vector<SheetProblem> sheet_problems(const std::vector<SheetEntry>& entries);
@@ -48,6 +49,9 @@ struct SheetProblem {
 /// The drawn figures' steps of a derivation: the mechanism's sketch, and the free body
 /// diagrams when `diagrams`.
 [[nodiscard]] std::vector<const Step*> figures_of(const Derivation& d, bool diagrams);
+/// A sheet problem's figures (as figures_of): a variant's drawn again at its own values, and
+/// left out where they cannot be drawn there.
+[[nodiscard]] std::vector<Step> sheet_figures(const SheetProblem& p, bool diagrams);
 
 /// The key's variant table: its header names ("#", the parameters, the answers).
 [[nodiscard]] std::vector<std::string> variant_head(const KeyEntry& e);

@@ -163,7 +163,7 @@ class HtmlWriter final : public Writer {
       const std::string statement = statement_of(p, true);
       out += "<h2>Problem " + std::to_string(p.number) + ": " + html_escape(p.title) + "</h2>\n";
       if (!statement.empty()) out += "<p>" + html_statement(statement) + "</p>\n";
-      for (const Step* st : figures_of(*p.derivation, figures)) out += html_figure(*st);
+      for (const Step& st : sheet_figures(p, figures)) out += html_figure(st);
       out += "<p>Find " + join(asked) + ".</p>\n";
     }
     return html_page("Problems", out);

@@ -15,11 +15,12 @@ using namespace writers;
 
 namespace {
 
-// A drawn figure, centred, with its caption.
+// A drawn figure, centred, with its caption: one box, which a page never splits.
 std::string latex_figure(const Step& st) {
   // Scaled down to the line where it is wider (a wide 2-D diagram), never up.
-  return "\\begin{center}\n\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%\n" + to_tikz(*st.figure) +
-         "}\\\\[2pt]{\\small " + tex_escape(st.text) + "}\n\\end{center}\n";
+  return "\\begin{center}\n\\begin{minipage}{\\linewidth}\\centering\n"
+         "\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%\n" +
+         to_tikz(*st.figure) + "}\\\\[2pt]{\\small " + tex_escape(st.text) + "}\n\\end{minipage}\n\\end{center}\n";
 }
 
 // One line of an align* block: aligned on its relation (a boxed result is one box, aligned
@@ -202,7 +203,7 @@ class LatexWriter final : public Writer {
       const std::string statement = statement_of(p, true);
       out += "\\section*{Problem " + std::to_string(p.number) + ": " + tex_escape(p.title) + "}\n";
       if (!statement.empty()) out += statement + "\n\n";
-      for (const Step* st : figures_of(*p.derivation, figures)) out += latex_figure(*st);
+      for (const Step& st : sheet_figures(p, figures)) out += latex_figure(st);
       out += "Find " + join(asked) + ".\n";
       if (!p.last_of_entry) out += "\\clearpage\n";
     }

@@ -115,7 +115,7 @@ class MarkdownWriter final : public Writer {
       const std::string statement = statement_of(p, false);
       out += "## Problem " + std::to_string(p.number) + ": " + markdown_text(p.title) + "\n\n";
       if (!statement.empty()) out += markdown_text(statement) + "\n\n";
-      for (const Step* st : figures_of(*p.derivation, figures)) out += markdown_figure(*st);
+      for (const Step& st : sheet_figures(p, figures)) out += markdown_figure(st);
       out += "Find " + join(asked) + ".\n\n";
     }
     return out;

@@ -5,9 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <regex>
 #include <set>
 
 #include "figure/figure.hpp"
+#include "figure/geometry.hpp"
+#include "report/key.hpp"
+#include "report/writers/common.hpp"
 #include "../../support/helpers.hpp"
 
 using namespace tackle;
@@ -50,6 +54,39 @@ FigurePoint dot_named(const Figure& f, const std::string& name) {
     if (d.label && d.label->tex == name) return d.at;
   FAIL("no point " << name);
   return {};
+}
+
+// A label's text as an SVG writes it: the box it fills (pixels, y down).
+struct TextBox {
+  std::string text;
+  double x0, x1, y0, y1;
+  [[nodiscard]] bool overlaps(const TextBox& o) const {
+    constexpr double tol = 0.01;  // the SVG's numbers have three decimals
+    return x0 < o.x1 - tol && o.x0 < x1 - tol && y0 < o.y1 - tol && o.y0 < y1 - tol;
+  }
+  // Whether the segment p-q passes through the box.
+  [[nodiscard]] bool crossed_by(FigurePoint p, FigurePoint q) const {
+    return fig::box_hits_segment({{(x0 + x1) / 2, (y0 + y1) / 2}, x1 - x0, y1 - y0}, fig::vp(p), fig::vp(q));
+  }
+};
+
+struct SvgBoxes {
+  std::vector<TextBox> texts;
+  std::vector<std::pair<FigurePoint, FigurePoint>> shafts;  // the arrows' lines
+};
+
+// The text boxes and arrow shafts of an SVG that to_svg wrote, read back from its numbers.
+SvgBoxes svg_boxes(const std::string& svg) {
+  SvgBoxes out;
+  const std::regex text(R"re(<text x="([-0-9.]+)" y="([-0-9.]+)" textLength="([0-9.]+)"[^>]*font-size="([0-9.]+)">(.*?)</text>)re");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), text); it != std::sregex_iterator(); ++it) {
+    const double x = std::stod((*it)[1]), y = std::stod((*it)[2]), w = std::stod((*it)[3]), size = std::stod((*it)[4]);
+    out.texts.push_back({(*it)[5], x - w / 2, x + w / 2, y - svg_ascent * size, y + svg_descent * size});
+  }
+  const std::regex line(R"re(<line x1="([-0-9.]+)" y1="([-0-9.]+)" x2="([-0-9.]+)" y2="([-0-9.]+)")re");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), line); it != std::sregex_iterator(); ++it)
+    out.shafts.push_back({{std::stod((*it)[1]), std::stod((*it)[2])}, {std::stod((*it)[3]), std::stod((*it)[4])}});
+  return out;
 }
 
 }  // namespace
@@ -133,11 +170,8 @@ TEST_CASE("FBD: two strands under a pulley block sit to either side of its middl
   CHECK(std::fabs(xs[0] - xs[1]) > 0.3);
 }
 
-TEST_CASE("FBD: in every example no label lies on another and no arrow lies on an outline's edge", "[figure]") {
-  std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(TACKLE_SOURCE_DIR "/examples"))
-    if (e.path().extension() == ".yaml") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
+TEST_CASE("FBD: in every example no label lies on another or on an arrow, in TikZ and in SVG, and no arrow lies on an outline's edge", "[figure]") {
+  const std::vector<std::string> files = test::example_files();
   std::size_t drawn = 0;
   for (const auto& file : files) {
     const auto a = analyze_file(file, test::rules());
@@ -156,6 +190,30 @@ TEST_CASE("FBD: in every example no label lies on another and no arrow lies on a
                              std::fabs(labels[i].at.y - labels[k].at.y) * 2 >= labels[i].height + labels[k].height - 1e-9;
           CHECK(apart);
         }
+      // TikZ centres each label in its box: no arrow's shaft passes through a box.
+      for (const auto& l : labels) {
+        const TextBox box{l.tex, l.at.x - l.width / 2, l.at.x + l.width / 2, l.at.y - l.height / 2, l.at.y + l.height / 2};
+        for (const auto& x : f.arrows) {
+          INFO(l.tex << " and the arrow of " << x.label.tex);
+          CHECK(!box.crossed_by(x.from, x.to));
+        }
+      }
+      // The SVG draws each label in its box, as the TikZ does: the text boxes it writes (from
+      // its x, baseline, textLength and font size) lie on no other and on no arrow's shaft.
+      const auto svg = svg_boxes(to_svg(f));
+      CHECK(svg.texts.size() == labels.size());
+      for (std::size_t i = 0; i < svg.texts.size(); ++i) {
+        const TextBox& a = svg.texts[i];
+        INFO("SVG text " << a.text);
+        for (std::size_t k = i + 1; k < svg.texts.size(); ++k) {
+          INFO("and " << svg.texts[k].text);
+          CHECK(!a.overlaps(svg.texts[k]));
+        }
+        for (const auto& [p, q] : svg.shafts) {
+          INFO("shaft " << p.x << "," << p.y << " to " << q.x << "," << q.y);
+          CHECK(!a.crossed_by(p, q));
+        }
+      }
       // An arrow along an edge would hide it: no arrow runs on an edge's line over a length.
       for (const auto& o : f.outlines) {
         if (o.shape != FigureOutline::Shape::polygon) continue;
@@ -183,6 +241,30 @@ TEST_CASE("FBD: labels in SVG keep their subscripts, Greek letters and dots", "[
         "m<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>\u2009x\u0308<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>");
   CHECK(svg_text("a < b & c") == "a\u2009&lt;\u2009b\u2009&amp;\u2009c");
   CHECK(shown_length("m_{A} \\ddot{x}_{A}") == 5);
+}
+
+TEST_CASE("FBD: an SVG label is centred in its box and no wider or higher than it, and TikZ scales its label into the box", "[figure]") {
+  FigureLabel l;
+  l.at = {2, 3};
+  l.height = 0.42;
+  l.tex = "m_{A} \\ddot{s}";
+  l.width = 0.2 * static_cast<double>(shown_length(l.tex)) + 0.12;
+  const SvgLabel b = svg_label(l);
+  CHECK(b.x == 2);
+  CHECK(b.width <= l.width - 2 * svg_margin + 1e-12);
+  CHECK(b.width > 0.3);
+  // Its ascent and descent, together no higher than the box, are centred in it.
+  const double top = b.baseline + svg_ascent * b.font_size, bottom = b.baseline - svg_descent * b.font_size;
+  CHECK(top - bottom <= l.height + 1e-12);
+  CHECK(std::fabs((top + bottom) / 2 - 3) < 1e-12);
+  // A long label in a narrow box is held to the box.
+  l.tex = "\\frac{m L^{2} \\ddot{\\theta}}{12}";
+  l.width = 0.5;
+  CHECK(std::fabs(svg_label(l).width - (0.5 - 2 * svg_margin)) < 1e-12);
+  // TikZ: the same centre, the box's size given to \tacklelabel.
+  Figure f;
+  f.texts.push_back(l);
+  CHECK(to_tikz(f).find("at (2,3) {\\tacklelabel{0.5cm}{0.42cm}{$" + l.tex + "$}}") != std::string::npos);
 }
 
 TEST_CASE("FBD: a description draws a body as it says", "[figure]") {
@@ -294,8 +376,9 @@ TEST_CASE("Sketch: springs are coiled, a damper is a dashpot, the walls are hatc
   CHECK(std::count_if(f->lines.begin(), f->lines.end(), [](const FigureLine& l) { return l.points.size() == 4; }) == 1);
 }
 
-TEST_CASE("Sketch: only 1-D mechanisms with a string, spring or damper are sketched", "[figure][sketch]") {
-  CHECK(!sketch_of("sample-12.7-suitcase.yaml"));     // 2-D
+TEST_CASE("Sketch: 1-D mechanisms with a string, spring or damper are sketched, 2-D ones all, 3-D ones not", "[figure][sketch]") {
+  CHECK(sketch_of("sample-12.7-suitcase.yaml"));      // 2-D
+  CHECK(!sketch_of("sample-12.8-sign-board.yaml"));   // 3-D
   CHECK(!sketch_of("box-in-a-truck-system.yaml"));   // 1-D, nothing between the bodies to draw
   CHECK(sketch_of("sample-12.1-towing.yaml"));       // a tow rope
   // In a derivation it opens the model, before the free body diagrams.
@@ -304,4 +387,260 @@ TEST_CASE("Sketch: only 1-D mechanisms with a string, spring or damper are sketc
   REQUIRE(figs.size() == 4);
   CHECK(figs[0].sketch);
   CHECK(!figs[1].sketch);
+}
+
+TEST_CASE("Sketch: bodies in contact touch (sample 12.4's top block rests on the bottom one)", "[figure][sketch]") {
+  const auto f = sketch_of("sample-12.4-stacked-blocks-on-spring.yaml");
+  REQUIRE(f);
+  const auto blocks = outlines_of(*f, FigureOutline::Shape::polygon);
+  REQUIRE(blocks.size() == 2);
+  auto span = [](const FigureOutline& o, bool vertical) {
+    double lo = 1e300, hi = -1e300;
+    for (const auto& c : o.corners) {
+      lo = std::min(lo, vertical ? c.y : c.x);
+      hi = std::max(hi, vertical ? c.y : c.x);
+    }
+    return std::pair{lo, hi};
+  };
+  // y points down (gravity g > 0 along it): top (y_m = -0.1) is drawn above bottom (y = 0).
+  CHECK(blocks[0].name == "top");
+  const auto [top_lo, top_hi] = span(blocks[0], true);
+  const auto [bottom_lo, bottom_hi] = span(blocks[1], true);
+  CHECK(top_lo > bottom_lo);
+  CHECK(std::fabs(top_lo - bottom_hi) < 1e-9);  // the top's lower side on the bottom's upper side
+  CHECK(top_hi - top_lo > 0.2);
+  CHECK(bottom_hi - bottom_lo > 0.2);
+  // Side by side across the axis: one stands on the other.
+  const auto [top_left, top_right] = span(blocks[0], false);
+  const auto [bottom_left, bottom_right] = span(blocks[1], false);
+  CHECK(std::min(top_right, bottom_right) - std::max(top_left, bottom_left) > 0.5);
+  // Farther apart in the layout, they still touch.
+  const std::string apart = test::example_with("sample-12.4-stacked-blocks-on-spring.yaml", "layout: {y_m: -0.1, y: 0}",
+                                               "layout: {y_m: -0.3, y: 0}");
+  const auto g = mechanism_sketch(test::run_text(apart)->model);
+  REQUIRE(g);
+  const auto moved = outlines_of(*g, FigureOutline::Shape::polygon);
+  REQUIRE(moved.size() == 2);
+  CHECK(std::fabs(span(moved[0], true).first - span(moved[1], true).second) < 1e-9);
+}
+
+namespace {
+
+const FigureOutline* outline_named(const Figure& f, const std::string& name) {
+  for (const auto& o : f.outlines)
+    if (o.name == name) return &o;
+  return nullptr;
+}
+
+std::optional<FigurePoint> dot_at(const Figure& f, const std::string& tex) {
+  for (const auto& d : f.dots)
+    if (d.label && d.label->tex == tex) return d.at;
+  return std::nullopt;
+}
+
+// Whether some drawn line (not hatching) ends at p.
+bool a_line_ends_at(const Figure& f, FigurePoint p, double tol = 1e-6) {
+  return std::any_of(f.lines.begin(), f.lines.end(), [&](const FigureLine& l) {
+    return !l.thin && (std::hypot(l.points.front().x - p.x, l.points.front().y - p.y) < tol ||
+                       std::hypot(l.points.back().x - p.x, l.points.back().y - p.y) < tol);
+  });
+}
+
+// Whether some drawn line ends on the outline's edge.
+bool a_line_ends_on(const Figure& f, const FigureOutline& o) {
+  return std::any_of(f.lines.begin(), f.lines.end(), [&](const FigureLine& l) {
+    return !l.thin && (fig::boundary_distance(o, fig::vp(l.points.front())) < 1e-3 || fig::boundary_distance(o, fig::vp(l.points.back())) < 1e-3);
+  });
+}
+
+}  // namespace
+
+TEST_CASE("Sketch: every 2-D example is sketched, of a sensible size, its strings ending at their points", "[figure][sketch]") {
+  const std::vector<std::string> files = test::example_files();
+  std::size_t plane = 0;
+  for (const auto& file : files) {
+    const auto a = analyze_file(file, test::rules());
+    const Model& m = a->model;
+    if (m.dims() != 2) continue;
+    ++plane;
+    INFO(file);
+    const auto f = mechanism_sketch(m);
+    REQUIRE(f);
+    CHECK(f->sketch);
+    CHECK(f->caption == "Sketch of the mechanism");
+    // Finite, and about the size of a figure on a page (drawing units are about centimetres).
+    for (double v : {f->min_x, f->min_y, f->max_x, f->max_y}) CHECK(std::isfinite(v));
+    const double w = f->max_x - f->min_x, h = f->max_y - f->min_y;
+    CHECK(std::max(w, h) > 3);
+    CHECK(std::min(w, h) > 1);
+    CHECK(std::max(w, h) < 16);
+    // Every body with a position is drawn, by its name.
+    for (const auto& b : m.bodies)
+      if (b.has_cm) CHECK(outline_named(*f, b.name));
+    // Each string ends at its end points: at a named point's dot, or on the edge of the body
+    // the point is named after (a string tied to a block's side).
+    for (const auto& d : m.drawings) {
+      if (d.as != "line" || d.path.size() < 2) continue;
+      for (int p : {d.path.front(), d.path.back()}) {
+        const std::string& name = m.points[p].name;
+        INFO(d.label << " at " << name);
+        if (const auto at = dot_at(*f, default_tex(name))) {
+          CHECK(a_line_ends_at(*f, *at));
+        } else {
+          const FigureOutline* o = outline_named(*f, name);
+          REQUIRE(o);
+          CHECK(a_line_ends_on(*f, *o));
+        }
+      }
+    }
+  }
+  CHECK(plane >= 25);
+}
+
+TEST_CASE("Sketch: the incline at its angle, the pulley at its top, the hanging block below it", "[figure][sketch]") {
+  const auto f = sketch_of("incline-and-hanging-block.yaml");
+  REQUIRE(f);
+  // The incline: a line at theta = 30 degrees to the horizontal, hatched, its angle marked.
+  const bool incline = std::any_of(f->lines.begin(), f->lines.end(), [](const FigureLine& l) {
+    if (l.thin || l.points.size() != 2) return false;
+    const double dx = l.points[1].x - l.points[0].x, dy = l.points[1].y - l.points[0].y;
+    return std::hypot(dx, dy) > 3 && std::fabs(std::atan2(std::fabs(dy), std::fabs(dx)) - M_PI / 6) < 1e-9;
+  });
+  CHECK(incline);
+  CHECK(std::any_of(f->texts.begin(), f->texts.end(), [](const FigureLabel& l) { return l.tex == "\\theta"; }));
+  // The pulley P: a circle at the point P, above and to the right of A; B hangs below it.
+  const auto P = dot_at(*f, "P");
+  REQUIRE(P);
+  const auto sheaves = outlines_of(*f, FigureOutline::Shape::circle);
+  REQUIRE(sheaves.size() == 1);
+  CHECK(near(sheaves[0].centre, *P));
+  const FigureOutline* A = outline_named(*f, "A");
+  const FigureOutline* B = outline_named(*f, "B");
+  REQUIRE(A);
+  REQUIRE(B);
+  double bx0 = 1e300, bx1 = -1e300, by1 = -1e300, ay0 = 1e300;
+  for (const auto& c : B->corners) bx0 = std::min(bx0, c.x), bx1 = std::max(bx1, c.x), by1 = std::max(by1, c.y);
+  for (const auto& c : A->corners) ay0 = std::min(ay0, c.y);
+  CHECK(bx0 < P->x);
+  CHECK(P->x < bx1);
+  CHECK(by1 < P->y);
+  CHECK(ay0 < P->y);
+  // The strand from P down to B is vertical, tangent to the pulley's right side.
+  const double x = P->x + sheaves[0].radius;
+  CHECK(std::any_of(f->lines.begin(), f->lines.end(), [&](const FigureLine& l) {
+    return !l.thin && is_vertical(l) && std::fabs(l.points[0].x - x) < 1e-9 && std::fabs(std::max(l.points[0].y, l.points[1].y) - P->y) < 1e-9 &&
+           std::fabs(std::min(l.points[0].y, l.points[1].y) - by1) < 1e-9;
+  }));
+}
+
+TEST_CASE("Sketch: the ladder stands on the floor against the wall, its angle marked", "[figure][sketch]") {
+  const auto f = sketch_of("rotation-ladder-sliding-on-smooth-wall-and-floor.yaml");
+  REQUIRE(f);
+  const auto A = dot_at(*f, "A"), B = dot_at(*f, "B");
+  REQUIRE(A);
+  REQUIRE(B);
+  // theta = 60 degrees: B up and to the right of A, at 60 degrees.
+  CHECK(std::fabs(std::atan2(B->y - A->y, B->x - A->x) - M_PI / 3) < 1e-9);
+  // A floor through the ladder's foot (below A by its half thickness at most) and a wall at B.
+  auto horizontal_below = [&](const FigureLine& l) { return !l.thin && is_horizontal(l) && l.points[0].y <= A->y + 1e-9 && l.points[0].y > A->y - 0.2; };
+  auto vertical_beside = [&](const FigureLine& l) { return !l.thin && is_vertical(l) && l.points[0].x >= B->x - 1e-9 && l.points[0].x < B->x + 0.2; };
+  CHECK(std::count_if(f->lines.begin(), f->lines.end(), horizontal_below) == 1);
+  CHECK(std::count_if(f->lines.begin(), f->lines.end(), vertical_beside) == 1);
+  CHECK(std::any_of(f->texts.begin(), f->texts.end(), [](const FigureLabel& l) { return l.tex == "\\theta"; }));
+}
+
+TEST_CASE("Sketch: a position that cannot be evaluated draws nothing", "[figure][sketch]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.7-suitcase.yaml", test::rules());
+  Model m = a->model;
+  REQUIRE(mechanism_sketch(m));
+  // B moved to l/(h - 0.4): a pole at the layout's numbers (h = 0.4).
+  const GiNaC::ex l = m.symbols->find("l")->sym, h = m.symbols->find("h")->sym;
+  const auto B = std::find_if(m.points.begin(), m.points.end(), [](const Point& p) { return p.name == "B"; });
+  REQUIRE(B != m.points.end());
+  B->position[0] = l / (h - GiNaC::numeric(2, 5));
+  CHECK(!mechanism_sketch(m));
+}
+
+TEST_CASE("Sheet: each variant's figures are drawn at its own numbers", "[figure][sheet]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.7-suitcase.yaml", test::rules());
+  const Derivation d = explain(*a);
+  const std::vector<Variant> variants = draw_variants(a->model, d, 2, 1, 6);
+  REQUIRE(variants.size() == 2);
+  auto value = [](const Variant& v, const std::string& name) {
+    for (const auto& q : v.parameters)
+      if (q.name == name) return q.value;
+    FAIL("no " << name);
+    return 0.0;
+  };
+  // The seed draws two suitcases of different proportions (l wide, 2 h high).
+  const double r0 = value(variants[0], "l") / (2 * value(variants[0], "h")), r1 = value(variants[1], "l") / (2 * value(variants[1], "h"));
+  REQUIRE(std::fabs(r0 - r1) > 0.01);
+  const std::vector<SheetEntry> entries{{&d, &a->model, variants}};
+  const auto problems = writers::sheet_problems(entries);
+  REQUIRE(problems.size() == 2);
+  std::vector<std::vector<Step>> figures{writers::sheet_figures(problems[0], true), writers::sheet_figures(problems[1], true)};
+  for (std::size_t k = 0; k < 2; ++k) {
+    INFO("variant " << k + 1);
+    REQUIRE(figures[k].size() == 2);  // the sketch and the free body diagram
+    CHECK(figures[k][0].figure->sketch);
+    CHECK(figures[k][1].text == "Free body diagram of suitcase");
+    // The sketch's suitcase has the variant's proportions.
+    const FigureOutline* o = outline_named(*figures[k][0].figure, "suitcase");
+    REQUIRE(o);
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    for (const auto& c : o->corners) x0 = std::min(x0, c.x), x1 = std::max(x1, c.x), y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
+    CHECK(std::fabs((x1 - x0) / (y1 - y0) - (k == 0 ? r0 : r1)) < 1e-9);
+  }
+  // So the two variants' figures differ, and the sheet shows each one's.
+  CHECK(to_tikz(*figures[0][0].figure) != to_tikz(*figures[1][0].figure));
+  CHECK(to_tikz(*figures[0][1].figure) != to_tikz(*figures[1][1].figure));
+  const std::string tex = write_sheet(entries, Format::latex, true);
+  for (const auto& fs : figures)
+    for (const auto& st : fs) CHECK(tex.find(to_tikz(*st.figure)) != std::string::npos);
+  // Without variants, the derivation's own figures (at the description's numbers).
+  const auto own = writers::sheet_figures(writers::sheet_problems({{&d, &a->model, {}}})[0], true);
+  REQUIRE(own.size() == 2);
+  CHECK(own[0].figure == writers::figures_of(d, true)[0]->figure);
+}
+
+namespace {
+
+// What lies between the last `open` before each `picture` in the text and the first `close`
+// after it (empty where either is missing, or where the box before it closes after `open`).
+std::vector<std::string> boxes_around(const std::string& text, const std::string& picture, const std::string& open, const std::string& close) {
+  std::vector<std::string> out;
+  for (std::size_t at = text.find(picture); at != std::string::npos; at = text.find(picture, at + 1)) {
+    const std::size_t from = text.rfind(open, at), to = text.find(close, at), before = text.rfind(close, at);
+    const bool whole = from != std::string::npos && to != std::string::npos && (before == std::string::npos || before < from);
+    out.push_back(whole ? text.substr(from, to - from) : "");
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("Figures: a caption stays with its figure, in latex in one minipage that a page never splits, in html in one figure element", "[figure][sheet]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/incline-and-hanging-block.yaml", test::rules());
+  const Derivation d = explain(*a);
+  const auto captions = writers::figures_of(d, true);
+  REQUIRE(captions.size() == 3);  // the sketch and the two free body diagrams
+  const std::vector<SheetEntry> entries{{&d, &a->model, {}}};
+  // Every figure, in the derivation and on the sheet, is in a minipage with its caption and
+  // nothing else: \begin{minipage}, the picture, \\[2pt]{\small caption}, \end{minipage}.
+  for (const std::string& tex : {write(d, Format::latex, true), write_sheet(entries, Format::latex, true)}) {
+    const auto boxes = boxes_around(tex, "\\begin{tikzpicture}", "\\begin{minipage}", "\\end{minipage}");
+    REQUIRE(boxes.size() == captions.size());
+    for (std::size_t k = 0; k < boxes.size(); ++k) {
+      const std::string caption = "\\end{tikzpicture}\n}\\\\[2pt]{\\small " + captions[k]->text + "}\n";
+      INFO(boxes[k]);
+      CHECK(boxes[k].size() > caption.size());
+      CHECK(boxes[k].rfind(caption) == boxes[k].size() - caption.size());  // the caption ends the box
+    }
+  }
+  // HTML: each drawing and its caption in one <figure>.
+  for (const std::string& html : {write(d, Format::html, true), write_sheet(entries, Format::html, true)}) {
+    const auto boxes = boxes_around(html, "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"fbd\"", "<figure>", "</figure>");
+    REQUIRE(boxes.size() == captions.size());
+    for (std::size_t k = 0; k < boxes.size(); ++k) CHECK(boxes[k].find("<figcaption>" + captions[k]->text + "</figcaption>") != std::string::npos);
+  }
 }
