@@ -631,8 +631,9 @@ TEST_CASE("Grading: a format error names its line once", "[check][batch][platfor
 TEST_CASE("Grading: a batch line is the JSON library's own dump of the result, byte for byte", "[check][batch]") {
   // The batch writes its lines itself (a sixth of a check went into building JSON objects);
   // the library's dump of the same object is the reference.
+  static const char with_nul[] = "nul\0one\x01\x1f";  // (its length from its size: it holds a NUL)
   const std::vector<std::string> texts{"", "plain", "quote \" and backslash \\", "tab\tnew\nline\rcr\bbs\fff",
-                                       std::string("nul\0one\x01\x1f", 12), "del \x7f", "UTF-8: \xce\xbc N, \xe2\x89\xa5",
+                                       std::string(with_nul, sizeof with_nul - 1), "del \x7f", "UTF-8: \xce\xbc N, \xe2\x89\xa5",
                                        "not UTF-8: \xe9t\xe9", "cut \xe2\x89", "\xf0\x9f\x98\x80 emoji"};
   for (const double score : {0.0, 1.0, 0.5, 0.25, 1e-7, 2.0 / 3.0})
     for (const auto& t : texts) {
