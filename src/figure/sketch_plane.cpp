@@ -208,7 +208,10 @@ std::optional<Figure> FigureMaker::sketch_plane() const {
   // body's edge where the point is inside it, as a block's center is), across the normal,
   // under the body and on to the fixed points and the origin on the same line.
   std::vector<Surface> surfaces;
-  for (const auto& [dp, n] : surfaces_of) {
+  for (const auto& surface_of : surfaces_of) {
+    // (Not a structured binding: clang 14 does not let a lambda capture one.)
+    const auto& dp = surface_of.first;
+    const auto& n = surface_of.second;
     const Model::Drawing& d = *dp;
     const V c = paper(d.point);
     const V t = perp(n);
