@@ -646,7 +646,7 @@ TEST_CASE("Grading: a batch line is the JSON library's own dump of the result, b
       r.method = "numeric";
       r.echo_text = t;
       r.echo_latex = "\\frac{" + t + "}{2}";
-      for (const std::string id : {std::string(), t, std::string("s1")}) {
+      for (const std::string& id : {std::string(), t, std::string("s1")}) {
         // The single answer's JSON (the library's), without its version: the same fields.
         auto j = nlohmann::ordered_json::parse(result_json(r, t, id));
         j.erase("version");
@@ -667,7 +667,7 @@ TEST_CASE("Check: without the LaTeX echo, no answer gets one, a number with a un
   CheckOptions options;
   options.echo_latex = false;
   const Checker quiet(*a, options);
-  for (const std::string answer : {"m*g*(1/2 - mu*h/l)", "29.43 N", "m*g"}) {
+  for (const std::string& answer : {std::string("m*g*(1/2 - mu*h/l)"), std::string("29.43 N"), std::string("m*g")}) {
     const auto r = quiet.check("N_A", answer);
     CHECK(r.echo_latex.empty());
     CHECK(!r.echo_text.empty());  // the text echo stays
