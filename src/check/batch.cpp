@@ -90,6 +90,15 @@ std::string json_number(double v) {
   return out;
 }
 
+std::string platform_test(ResultsFormat format, const std::string& name, double score, double max, bool passed,
+                          const std::string& output) {
+  if (format == ResultsFormat::gradescope)
+    return "{\"name\":" + json_quoted(name) + ",\"score\":" + json_number(score) + ",\"max_score\":" + json_number(max) +
+           ",\"status\":\"" + (passed ? "passed" : "failed") + "\",\"output\":" + json_quoted(output) + ",\"visibility\":\"visible\"}";
+  return "{\"name\":" + json_quoted(name) + ",\"points\":" + json_number(score) + ",\"max_points\":" + json_number(max) +
+         ",\"message\":" + json_quoted(output) + "}";
+}
+
 std::string result_line(const CheckResult& r, const std::string& answer, const std::string& id) {
   std::string out;
   out.reserve(256 + answer.size() + r.summary.size() + r.echo_text.size() + r.echo_latex.size());
@@ -281,12 +290,8 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
     const std::string result = result_line(r, answer, id);
     out << result << "\n";
     if (options.format == ResultsFormat::jsonl) results << result << "\n";
-    if (platform) tests << (s.lines == 1 ? "\n    " : ",\n    ");
-    if (options.format == ResultsFormat::gradescope)
-      tests << dump({{"name", name}, {"score", points}, {"max_score", max_points},
-                       {"status", r.verdict == Verdict::correct ? "passed" : "failed"}, {"output", feedback}, {"visibility", "visible"}});
-    if (options.format == ResultsFormat::prairielearn)
-      tests << dump({{"name", name}, {"points", points}, {"max_points", max_points}, {"message", feedback}});
+    if (platform)
+      tests << (s.lines == 1 ? "\n    " : ",\n    ") << platform_test(options.format, name, points, max_points, r.verdict == Verdict::correct, feedback);
   }
   if (!platform) return s;
   if (spooled && s.invalid == 0) {

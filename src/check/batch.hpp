@@ -60,6 +60,10 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
 /// A string as JSON writes it (quoted, escaped), and a number (".0" when whole).
 [[nodiscard]] std::string json_quoted(std::string_view s);
 [[nodiscard]] std::string json_number(double v);
+/// One test of a platform's results file (Gradescope: score, max_score, status, output;
+/// PrairieLearn: points, max_points, message), on one line.
+[[nodiscard]] std::string platform_test(ResultsFormat format, const std::string& name, double score, double max, bool passed,
+                                        const std::string& output);
 /// One result as one line of JSON, as a batch writes it (no newline).
 [[nodiscard]] std::string result_line(const CheckResult& r, const std::string& answer, const std::string& id = {});
 /// One result as a JSON object (the single-answer `--format json` output).

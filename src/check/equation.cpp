@@ -18,6 +18,19 @@ namespace {
 // Larger families are not decided (each rank is a symbolic elimination).
 constexpr std::size_t max_family = 40;
 
+// The rank of the matrix whose columns are `columns` (and `extra`, when given), exactly.
+std::size_t rank_of(const std::vector<std::vector<ex>>& columns, const std::vector<ex>* extra) {
+  const std::size_t rows = extra ? extra->size() : columns.front().size();
+  const std::size_t n = columns.size() + (extra ? 1 : 0);
+  matrix a(rows, n);
+  for (std::size_t i = 0; i < rows; ++i) {
+    for (std::size_t j = 0; j < columns.size(); ++j) a(i, j) = columns[j][i];
+    if (extra) a(i, columns.size()) = (*extra)[i];
+  }
+  return a.rank();
+}
+
+
 // The source of a term as a student reads it: "a strand of string s at pA", "the weight of A",
 // "the force on A".
 std::string phrase(const std::string& source) {
@@ -64,6 +77,8 @@ EquationChecker::EquationChecker(const Analysis& analysis, const CheckOptions& o
       // (An equation not linear in the unknowns is no column: none is, at these levels.)
       f.vectors.push_back(v ? *v : std::vector<ex>(f.unknowns.size() + 1, 0));
     }
+    // The equations' own rank, once (every check compares its rank with the student's added).
+    if (!f.vectors.empty() && f.equations.size() <= max_family) f.rank = rank_of(f.vectors, nullptr);
   };
   for (const auto& b : analysis.model.bodies) bodies_.push_back({b.name, b.has_mass ? b.mass : ex(0), b.accel});
   family(equations_, SymbolRole::acceleration, acceleration_);
@@ -108,18 +123,10 @@ bool EquationChecker::proportional(const std::vector<ex>& a, const std::vector<e
   return true;
 }
 
-bool EquationChecker::in_span(const std::vector<std::vector<ex>>& columns, const std::vector<ex>& v) const {
+bool EquationChecker::in_span(const std::vector<std::vector<ex>>& columns, const std::vector<ex>& v,
+                              std::optional<std::size_t> rank) const {
   if (columns.empty()) return std::all_of(v.begin(), v.end(), [](const ex& x) { return x.is_zero(); });
-  const std::size_t rows = v.size();
-  matrix a(rows, columns.size()), b(rows, columns.size() + 1);
-  for (std::size_t i = 0; i < rows; ++i) {
-    for (std::size_t j = 0; j < columns.size(); ++j) {
-      a(i, j) = columns[j][i];
-      b(i, j) = columns[j][i];
-    }
-    b(i, columns.size()) = v[i];
-  }
-  return a.rank() == b.rank();
+  return (rank ? *rank : rank_of(columns, nullptr)) == rank_of(columns, &v);
 }
 
 CheckResult EquationChecker::check(std::string_view text) const {
@@ -192,7 +199,7 @@ CheckResult EquationChecker::check(std::string_view text) const {
   if (!v)
     return finish(Verdict::incorrect, "not_linear",
                   "the equation is not linear in the unknowns (forces and accelerations), as every balance and constraint of this problem is");
-  if (in_span(f.vectors, *v)) {
+  if (in_span(f.vectors, *v, f.rank)) {
     r.verdict = Verdict::correct;
     r.score = 1.0;
     r.method = "exact";
@@ -242,7 +249,7 @@ std::vector<std::string> EquationChecker::fewest(const Family& f, const std::vec
 std::vector<std::string> EquationChecker::needed_for(const ex& unknown, const ex& closed_form) const {
   if (acceleration_.equations.size() > max_family) return {};
   const auto v = vector_of(substituted(unknown - closed_form, definitions_), acceleration_);
-  if (!v || !in_span(acceleration_.vectors, *v)) return {};
+  if (!v || !in_span(acceleration_.vectors, *v, acceleration_.rank)) return {};
   return fewest(acceleration_, *v);
 }
 

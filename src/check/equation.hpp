@@ -36,9 +36,12 @@ class EquationChecker {
     std::vector<const Equation*> equations;
     std::vector<GiNaC::ex> unknowns;
     std::vector<std::vector<GiNaC::ex>> vectors;  // each equation's coefficients: unknowns, then the rest
+    std::optional<std::size_t> rank;              // of those columns (made once)
   };
   [[nodiscard]] std::optional<std::vector<GiNaC::ex>> vector_of(const GiNaC::ex& residual, const Family& f) const;
-  [[nodiscard]] bool in_span(const std::vector<std::vector<GiNaC::ex>>& columns, const std::vector<GiNaC::ex>& v) const;
+  /// Whether `v` is a combination of `columns` (`rank`: theirs, when known).
+  [[nodiscard]] bool in_span(const std::vector<std::vector<GiNaC::ex>>& columns, const std::vector<GiNaC::ex>& v,
+                             std::optional<std::size_t> rank = std::nullopt) const;
   [[nodiscard]] static bool proportional(const std::vector<GiNaC::ex>& a, const std::vector<GiNaC::ex>& b);
   [[nodiscard]] std::vector<std::string> fewest(const Family& f, const std::vector<GiNaC::ex>& v) const;
   void diagnose(const Family& f, const std::vector<GiNaC::ex>& v, CheckResult& r) const;

@@ -190,11 +190,7 @@ std::string solution_results(const SolutionGrade& g, ResultsFormat format) {
   const bool gradescope = format == ResultsFormat::gradescope;
   std::string tests;
   auto test = [&](const std::string& name, double score, double max, bool passed, const std::string& output) {
-    tests += tests.empty() ? "\n    " : ",\n    ";
-    tests += gradescope ? fmt::format("{{\"name\": {}, \"score\": {}, \"max_score\": {}, \"status\": \"{}\", \"output\": {}, \"visibility\": \"visible\"}}",
-                                      json_quoted(name), json_number(score), json_number(max), passed ? "passed" : "failed", json_quoted(output))
-                        : fmt::format("{{\"name\": {}, \"points\": {}, \"max_points\": {}, \"message\": {}}}", json_quoted(name),
-                                      json_number(score), json_number(max), json_quoted(output));
+    tests += (tests.empty() ? "\n    " : ",\n    ") + platform_test(format, name, score, max, passed, output);
   };
   for (std::size_t i = 0; i < g.steps.size(); ++i) {
     const auto& [step, r] = g.steps[i];
