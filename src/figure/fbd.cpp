@@ -10,6 +10,7 @@
 #include "numeric/evaluate.hpp"
 #include "figure/figure.hpp"
 #include "figure/geometry.hpp"
+#include "model/forces.hpp"
 
 namespace tackle {
 
@@ -29,15 +30,6 @@ struct Pending {
   bool at_cm = false;  // acts at the center of mass: drawn pulling away from it
 };
 
-std::string strip_suffix(const std::string& source) {
-  // "string s: strand pB-C at pB" and "string s (from its length sum) on A": one key per
-  // strand or connection, whichever body the load is on.
-  for (const char* sep : {" at ", " on "}) {
-    const auto at = source.rfind(sep);
-    if (at != std::string::npos && source.find(':') != std::string::npos && at > source.find(':')) return source.substr(0, at);
-  }
-  return source;
-}
 
 }  // namespace
 
@@ -330,105 +322,41 @@ std::optional<Figure> FigureMaker::draw(const std::vector<int>& bodies, bool sys
 
   // Forces from outside the system only: a connection (or strand) whose loads on the
   // system's bodies add up to nothing is internal to it.
-  std::set<std::string> internal;
-  if (system && bodies.size() > 1) {
-    std::map<std::string, Vec> sums;
-    for (const auto& l : m.loads)
-      if (std::find(bodies.begin(), bodies.end(), l.body) != bodies.end()) {
-        auto [it, fresh] = sums.emplace(strip_suffix(l.source), zero_vec());
-        it->second = it->second + l.force;
-      }
-    for (const auto& [key, sum] : sums)
-      if (is_zero_vec(sum)) internal.insert(key);
-  }
+  const std::set<std::string> internal = system ? internal_forces(m, bodies) : std::set<std::string>{};
 
   // The arrows of a force vector: one per unknown in it (its coefficient gives the
   // direction), and one per axis for what is known.
   std::vector<Pending> pending;
   bool failed = false;
   auto decompose = [&](int body, const Vec& force, std::optional<std::array<double, 3>> at, const ex& factor, bool dashed, bool at_cm) {
-    Vec rest = zero_vec();
-    for (int k = 0; k < m.dims(); ++k) rest[k] = force[k].expand();
-    // In the model's order of unknowns, never GiNaC's (hash) order: the drawing must not
-    // change from run to run.
-    std::set<ex, ex_is_less> seen;
-    for (int k = 0; k < m.dims(); ++k)
-      for (const_preorder_iterator it = rest[k].preorder_begin(); it != rest[k].preorder_end(); ++it)
-        if (is_a<symbol>(*it) && unknowns.count(*it)) seen.insert(*it);
-    std::vector<ex> present;
-    for (const ex& c : m.candidates)
-      if (seen.count(c)) present.push_back(c);
-    for (const ex& u : present) {
-      Vec c = zero_vec();
-      bool linear = true;
-      for (int k = 0; k < m.dims(); ++k) {
-        if (rest[k].degree(u) > 1 || rest[k].ldegree(u) < 0) linear = false;
-        c[k] = rest[k].coeff(u, 1);
-      }
-      if (!linear) continue;  // drawn with the known part below
-      // One arrow per kind of term: a contact's mu N apart from its N (a dimensionless
-      // factor such as mu makes a term its own force), the geometry (angles, lengths) kept
-      // in the direction.
-      std::vector<std::pair<ex, Vec>> groups;  // in the order the terms are met, keyed by their text
-      for (int k = 0; k < m.dims(); ++k) {
-        const ex ck = c[k].expand();
-        const std::size_t n = is_a<add>(ck) ? ck.nops() : 1;
-        for (std::size_t t = 0; t < n; ++t) {
-          const ex term = is_a<add>(ck) ? ck.op(t) : ck;
-          if (term.is_zero()) continue;
-          ex key = 1;
-          const std::size_t nf = is_a<mul>(term) ? term.nops() : 1;
-          for (std::size_t q = 0; q < nf; ++q) {
-            const ex fac = is_a<mul>(term) ? term.op(q) : term;
-            const ex base = is_a<power>(fac) ? fac.op(0) : fac;
-            if (!is_a<symbol>(base)) continue;
-            const SymbolInfo* info = m.symbols->find(base);
-            if (info && info->role == SymbolRole::parameter && (!info->dimension || info->dimension->exp == Dimension::none().exp) &&
-                !info->definition)
-              key *= fac;
-          }
-          auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first.is_equal(key); });
-          if (it == groups.end()) it = groups.insert(groups.end(), {key, zero_vec()});
-          it->second[k] += term / key;
-        }
-      }
-      std::sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) { return to_text(a.first) < to_text(b.first); });
-      bool drawn_any = false;
-      for (const auto& [key, cvec] : groups) {
-        std::array<double, 3> cv{0, 0, 0};
+    for (const ForcePart& part : split_force(m, force, unknowns, num)) {
+      if (!part.unknown.is_zero()) {
+        const V d = proj(part.numbers);
+        if (len(d) < 1e-9) continue;
         int nonzero = 0, which = 0;
-        bool ok = true;
-        for (int k = 0; k < m.dims(); ++k) {
-          auto v = num(cvec[k]);
-          if (!v) ok = false;
-          else cv[k] = *v;
-          if (v && std::fabs(*v) > 1e-12) {
+        for (int k = 0; k < m.dims(); ++k)
+          if (std::fabs(part.numbers[k]) > 1e-12) {
             ++nonzero;
             which = k;
           }
-        }
-        if (!ok || nonzero == 0) continue;
-        const V d = proj(cv);
-        if (len(d) < 1e-9) continue;
-        ex label = key * u;
-        if (nonzero == 1) label = (cv[which] < 0 ? -cvec[which] : cvec[which]) * key * u;
+        ex label = part.key * part.unknown;
+        if (nonzero == 1)
+          label = (part.numbers[which] < 0 ? -part.coefficients[which] : part.coefficients[which]) * part.key * part.unknown;
         pending.push_back({body, at, normalized(d), factor * label, dashed, at_cm});
-        drawn_any = true;
+        continue;
       }
-      if (drawn_any)
-        for (int k = 0; k < m.dims(); ++k) rest[k] = (rest[k] - c[k] * u).expand();
-    }
-    for (int k = 0; k < m.dims(); ++k) {
-      if (rest[k].is_zero()) continue;
-      // A component with no unknown in it keeps the form it was written in (k (x_B - x_A - L)).
-      if (present.empty()) rest[k] = force[k];
-      std::array<double, 3> e{0, 0, 0};
-      // Pointing the way that leaves its label without a minus sign (m g down, not -m g up).
-      const bool negative = to_latex(rest[k]).rfind('-', 0) == 0;
-      e[k] = negative ? -1 : 1;
-      const V d = proj(e);
-      if (len(d) < 1e-9) continue;
-      pending.push_back({body, at, normalized(d), factor * (negative ? -rest[k] : rest[k]), dashed, at_cm});
+      // What is known: one arrow per axis.
+      for (int k = 0; k < m.dims(); ++k) {
+        const ex& rk = part.coefficients[k];
+        if (rk.is_zero()) continue;
+        // Pointing the way that leaves its label without a minus sign (m g down, not -m g up).
+        const bool negative = to_latex(rk).rfind('-', 0) == 0;
+        std::array<double, 3> e{0, 0, 0};
+        e[k] = negative ? -1 : 1;
+        const V d = proj(e);
+        if (len(d) < 1e-9) continue;
+        pending.push_back({body, at, normalized(d), factor * (negative ? -rk : rk), dashed, at_cm});
+      }
     }
   };
 
@@ -483,7 +411,7 @@ std::optional<Figure> FigureMaker::draw(const std::vector<int>& bodies, bool sys
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const int bi = bodies[i];
     for (const auto& l : m.loads) {
-      if (l.body != bi || internal.count(strip_suffix(l.source))) continue;
+      if (l.body != bi || internal.count(force_key(l.source))) continue;
       std::optional<std::array<double, 3>> at;
       if (l.at && proj.dims > 1) at = point3(*l.at);
       const bool at_cm = l.at && m.bodies[bi].has_cm && is_zero_vec(*l.at - m.bodies[bi].cm);
@@ -591,7 +519,7 @@ std::optional<Figure> FigureMaker::draw(const std::vector<int>& bodies, bool sys
   if (proj.dims > 1)
     for (int bi : bodies) {
       for (const auto& l : m.loads)
-        if (l.body == bi && l.at && !l.at_name.empty() && !internal.count(strip_suffix(l.source)) &&
+        if (l.body == bi && l.at && !l.at_name.empty() && !internal.count(force_key(l.source)) &&
             std::any_of(m.points.begin(), m.points.end(), [&](const Point& p) { return p.name == l.at_name; }) &&
             named.insert(l.at_name).second) {
           FigureDot dot;
