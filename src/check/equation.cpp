@@ -31,9 +31,14 @@ std::size_t rank_of(const std::vector<std::vector<ex>>& columns, const std::vect
 }
 
 
+// The balance as a student names it: "the LMB of A (x)".
+std::string balance_name(const Equation& e) { return e.label; }
+
+}  // namespace
+
 // The source of a term as a student reads it: "a strand of string s at pA", "the weight of A",
 // "the force on A".
-std::string phrase(const std::string& source) {
+std::string force_phrase(const std::string& source) {
   const auto colon = source.find(": strand ");
   const auto at = source.rfind(" at ");
   if (colon != std::string::npos && at != std::string::npos && at > colon) {
@@ -47,10 +52,6 @@ std::string phrase(const std::string& source) {
   return "the force of the " + source;
 }
 
-// The balance as a student names it: "the LMB of A (x)".
-std::string balance_name(const Equation& e) { return e.label; }
-
-}  // namespace
 
 EquationChecker::EquationChecker(const Analysis& analysis, const CheckOptions& options)
     : options_(options),
@@ -275,7 +276,7 @@ void EquationChecker::diagnose(const Family& f, const std::vector<ex>& v, CheckR
     if (e->kind != Equation::Kind::lmb && e->kind != Equation::Kind::amb) continue;
     const ex whole = e->lhs - e->rhs;
     for (std::size_t j = 0; j < e->terms.size() && j < e->sources.size(); ++j) {
-      const std::string what = phrase(e->sources[j]);
+      const std::string what = force_phrase(e->sources[j]);
       if (matches(whole - e->terms[j])) say("missing_force", what + " is missing (" + balance_name(*e) + ")");
       else if (matches(whole - 2 * e->terms[j])) say("force_sign", what + " has the wrong sign or direction (" + balance_name(*e) + ")");
     }
@@ -314,11 +315,11 @@ void EquationChecker::diagnose(const Family& f, const std::vector<ex>& v, CheckR
           bool removal = false;
           for (std::size_t i = 0; i < e->terms.size() && i < e->sources.size(); ++i) {
             removal = removal || (e->terms[i] + added).is_zero();
-            if (again.empty() && (e->terms[i] - added).is_zero()) again = phrase(e->sources[i]);
+            if (again.empty() && (e->terms[i] - added).is_zero()) again = force_phrase(e->sources[i]);
           }
           if (removal) continue;
           if (!again.empty()) say("extra_force", "one force too many: " + again + " is counted once too often (" + balance_name(*e) + ")");
-          else say("extra_force", phrase(other->sources[j]) + " does not act on what " + balance_name(*e) + " balances");
+          else say("extra_force", force_phrase(other->sources[j]) + " does not act on what " + balance_name(*e) + " balances");
         }
       }
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include <fmt/format.h>
@@ -18,9 +19,17 @@ constexpr std::size_t max_steps = 200;
 
 bool is_balance(const Equation& e) { return e.kind == Equation::Kind::lmb || e.kind == Equation::Kind::amb; }
 
+std::string step_name(const SolutionStep& s) {
+  switch (s.kind) {
+    case SolutionStep::Kind::equation: return "equation";
+    case SolutionStep::Kind::answer: return "answer for " + s.unknown;
+    default: return s.text;
+  }
+}
+
 }  // namespace
 
-std::vector<SolutionStep> read_solution(const std::string& text, const std::string& file) {
+std::vector<SolutionStep> read_solution(const std::string& text, const std::string& file, const Model& m) {
   Diagnostics diags;
   const yaml::Document doc = yaml::load(text, file, diags);
   diags.throw_if_any();
@@ -31,13 +40,24 @@ std::vector<SolutionStep> read_solution(const std::string& text, const std::stri
     return out;
   }
   const yaml::Node steps = root["steps"];
-  if (!steps) diags.error(yaml::where(root, file), "the solution has no 'steps' (expected a list of {equation: ...} and {answer: ..., unknown: ...})");
+  if (!steps) diags.error(yaml::where(root, file), "the solution has no 'steps' (expected a list of {equation: ...}, {answer: ..., unknown: ...} and {fbd: ...})");
   else if (yaml::is_list(steps, "'steps'", file, diags)) {
     if (steps.size() > max_steps)
       diags.error(yaml::where(steps, file), "'steps' has " + std::to_string(steps.size()) + " steps (at most " + std::to_string(max_steps) + ")");
     for (const yaml::Node item : steps) {
-      if (!yaml::check_map(item, {"equation", "answer", "unknown"}, "a step", file, diags)) continue;
+      if (!yaml::check_map(item, {"equation", "answer", "unknown", "fbd"}, "a step", file, diags)) continue;
       SolutionStep s;
+      if (item["fbd"]) {
+        if (item["equation"] || item["answer"] || item["unknown"]) {
+          diags.error(yaml::where(item, file), "a free body diagram is a step of its own (expected {fbd: {body: ..., forces: [...]}})");
+          continue;
+        }
+        s.kind = SolutionStep::Kind::fbd;
+        s.fbd = read_fbd(item["fbd"], m, file, diags);
+        s.text = "free body diagram of " + join(s.fbd.bodies);
+        out.push_back(std::move(s));
+        continue;
+      }
       if (item["equation"] && (item["answer"] || item["unknown"])) {
         diags.error(yaml::where(item, file), "a step is an equation or an answer, not both (expected {equation: ...} or {answer: ..., unknown: ...})");
         continue;
@@ -50,7 +70,7 @@ std::vector<SolutionStep> read_solution(const std::string& text, const std::stri
         if (!item["unknown"]) diags.error(yaml::where(item, file), "an answer needs its 'unknown' (e.g. {answer: \"2*m_B*F/(9*m_A + 4*m_B)\", unknown: T})");
         else if (auto u = yaml::scalar(item["unknown"], "'unknown'", file, diags)) s.unknown = u->text;
       } else {
-        diags.error(yaml::where(item, file), "a step needs 'equation' or 'answer'");
+        diags.error(yaml::where(item, file), "a step needs 'equation', 'answer' or 'fbd'");
         continue;
       }
       out.push_back(std::move(s));
@@ -66,11 +86,13 @@ Rubric read_rubric(const std::string& text, const std::string& file) {
   diags.throw_if_any();
   const yaml::Node root = doc.root();
   Rubric r;
-  if (!yaml::check_map(root, {"balances", "constraints", "answers"}, "the rubric", file, diags)) {
+  if (!yaml::check_map(root, {"fbds", "balances", "constraints", "answers", "fbd"}, "the rubric", file, diags)) {
     diags.throw_if_any();
     return r;
   }
-  for (const auto& [key, field] : {std::pair{"balances", &r.balances}, std::pair{"constraints", &r.constraints}, std::pair{"answers", &r.answers}}) {
+  double fbds = 0;
+  for (const auto& [key, field] : {std::pair{"fbds", &fbds}, std::pair{"balances", &r.balances}, std::pair{"constraints", &r.constraints},
+                                   std::pair{"answers", &r.answers}}) {
     const yaml::Node n = root[key];
     if (!n) {
       *field = 0;  // a part the rubric does not name is not graded
@@ -85,17 +107,34 @@ Rubric read_rubric(const std::string& text, const std::string& file) {
     else
       *field = v;
   }
+  if (root["fbds"]) r.fbds = fbds;
+  if (root["fbd"]) r.fbd = read_fbd_rubric(root["fbd"], file, diags);
   diags.throw_if_any();
   return r;
 }
 
-SolutionGrade grade_solution(const Checker& checker, const std::vector<SolutionStep>& steps, const Rubric& rubric) {
+SolutionGrade grade_solution(const Checker& checker, const Model& model, const std::vector<SolutionStep>& steps, const Rubric& rubric) {
   SolutionGrade g;
   std::set<std::string> used;
   std::set<std::string> answered;
+  std::map<std::vector<std::string>, double> diagrams;  // sorted bodies -> the best score of a diagram of them (a fraction)
+  bool any_diagram = false;
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const SolutionStep& s = steps[i];
-    CheckResult r = s.kind == SolutionStep::Kind::equation ? checker.check_equation(s.text) : checker.check(s.unknown, s.text);
+    CheckResult r;
+    if (s.kind == SolutionStep::Kind::fbd) {
+      any_diagram = true;
+      std::vector<Diagnostic> problems;
+      r = fbd_result(check_fbd(model, s.fbd, rubric.fbd, problems));
+      if (!problems.empty()) r.summary = format(problems.front());
+      std::vector<std::string> key = s.fbd.bodies;
+      std::sort(key.begin(), key.end());
+      if (r.verdict == Verdict::correct || r.verdict == Verdict::incorrect) diagrams[key] = std::max(diagrams[key], r.score);
+      if (r.verdict != Verdict::correct && !g.first_wrong) g.first_wrong = i + 1;
+      g.steps.push_back({s, std::move(r)});
+      continue;
+    }
+    r = s.kind == SolutionStep::Kind::equation ? checker.check_equation(s.text) : checker.check(s.unknown, s.text);
     if (r.verdict == Verdict::correct) {
       for (const auto& l : r.follows_from) used.insert(l);
       if (s.kind == SolutionStep::Kind::answer) answered.insert(s.unknown);
@@ -124,6 +163,42 @@ SolutionGrade grade_solution(const Checker& checker, const std::vector<SolutionS
     g.score += p.score;
     g.max_score += p.max;
   };
+  // The diagrams the needed balances are written from: one per body or system balanced.
+  if (const double points = rubric.fbds.value_or(any_diagram ? 1.0 : 0.0); points > 0) {
+    std::vector<std::vector<std::string>> wanted;
+    for (const auto& l : needed) {
+      const Equation* e = checker.derivation_equation(l);
+      if (!e || !is_balance(*e) || e->bodies.empty()) continue;
+      std::vector<std::string> key;
+      for (int b : e->bodies) key.push_back(model.bodies[static_cast<std::size_t>(b)].name);
+      std::sort(key.begin(), key.end());
+      if (std::find(wanted.begin(), wanted.end(), key) == wanted.end()) wanted.push_back(key);
+    }
+    double done = 0;
+    std::size_t whole = 0;  // diagrams with every force right
+    std::vector<std::string> absent;
+    for (const auto& key : wanted) {
+      const auto it = diagrams.find(key);
+      if (it != diagrams.end()) {
+        done += it->second;
+        whole += it->second >= 1 - 1e-9;
+      }
+      else absent.push_back(key.size() == 1 ? key.front() : "the system of " + join(key));
+    }
+    // A diagram of a body no needed balance is written for still counts when none is wanted.
+    std::size_t of = wanted.size();
+    if (wanted.empty())
+      for (const auto& [key, score] : diagrams) {
+        done += score;
+        whole += score >= 1 - 1e-9;
+        ++of;
+      }
+    SolutionGrade::Part p{"fbds", of == 0 ? 0.0 : points * done / static_cast<double>(of), points, 0, of, absent};
+    p.done = whole;
+    g.parts.push_back(p);
+    g.score += p.score;
+    g.max_score += p.max;
+  }
   std::size_t balances = 0, balances_done = 0, constraints = 0, constraints_done = 0;
   std::vector<std::string> balances_missing, constraints_missing, answers_missing;
   for (const auto& l : needed) {
@@ -148,8 +223,7 @@ std::string solution_text(const SolutionGrade& g) {
   std::string out;
   for (std::size_t i = 0; i < g.steps.size(); ++i) {
     const auto& [step, r] = g.steps[i];
-    out += fmt::format("step {} ({}): {}: {}\n", i + 1, step.kind == SolutionStep::Kind::equation ? "equation" : "answer for " + step.unknown,
-                       verdict_name(r.verdict), r.summary);
+    out += fmt::format("step {} ({}): {}: {}\n", i + 1, step_name(step), verdict_name(r.verdict), r.summary);
   }
   if (g.first_wrong) out += fmt::format("first wrong step: {}\n", *g.first_wrong);
   if (!g.used.empty()) out += "used: " + join(g.used) + "\n";
@@ -194,8 +268,7 @@ std::string solution_results(const SolutionGrade& g, ResultsFormat format) {
   };
   for (std::size_t i = 0; i < g.steps.size(); ++i) {
     const auto& [step, r] = g.steps[i];
-    test("step " + std::to_string(i + 1) + (step.kind == SolutionStep::Kind::equation ? ": equation" : ": answer for " + step.unknown), 0, 0,
-         r.verdict == Verdict::correct, verdict_name(r.verdict) + ": " + r.summary);
+    test("step " + std::to_string(i + 1) + ": " + step_name(step), 0, 0, r.verdict == Verdict::correct, verdict_name(r.verdict) + ": " + r.summary);
   }
   for (const auto& p : g.parts) {
     std::string output = fmt::format("{} of {}", p.done, p.of);

@@ -10,13 +10,15 @@
 
 #include "check/batch.hpp"
 #include "check/check.hpp"
+#include "check/fbd.hpp"
 
 namespace tackle {
 
 struct SolutionStep {
-  enum class Kind { equation, answer } kind = Kind::equation;
+  enum class Kind { equation, answer, fbd } kind = Kind::equation;
   std::string text;     // the equation, or the answer
   std::string unknown;  // an answer's unknown
+  StudentFbd fbd;       // a free body diagram
 };
 
 /// Points per part of the solution (a part with 0 points is not graded).
@@ -24,6 +26,10 @@ struct Rubric {
   double balances = 1;     // the balances the asked unknowns need (LMB, AMB)
   double constraints = 1;  // the constraints they need (length sums, fixed points, rolling)
   double answers = 1;      // the asked unknowns answered correctly
+  // The free body diagrams of the bodies (or systems) whose balances the asked unknowns need,
+  // each in proportion to its own score; unset: 1 when the solution has a diagram, else not graded.
+  std::optional<double> fbds;
+  FbdRubric fbd;  // how each diagram is scored
 };
 
 struct SolutionGrade {
@@ -45,13 +51,16 @@ struct SolutionGrade {
   double score = 0, max_score = 0;
 };
 
-/// Reads a solution file: `steps:` a list of `{equation: "..."}` and `{answer: "...", unknown:
-/// NAME}`; every problem in the file reported at once (InputError, located).
-[[nodiscard]] std::vector<SolutionStep> read_solution(const std::string& text, const std::string& file);
-/// Reads a rubric file: `{balances: 4, constraints: 2, answers: 4}` (points, from 0 to 1000).
+/// Reads a solution file: `steps:` a list of `{equation: "..."}`, `{answer: "...", unknown:
+/// NAME}` and `{fbd: {body: B, forces: [...]}}` (see read_fbd);
+/// every problem in the file reported at once (InputError, located).
+[[nodiscard]] std::vector<SolutionStep> read_solution(const std::string& text, const std::string& file, const Model& m);
+/// Reads a rubric file: `{fbds: 2, balances: 4, constraints: 2, answers: 4}` (points, from 0 to
+/// 1000), and `fbd:` how a diagram is scored (see read_fbd_rubric).
 [[nodiscard]] Rubric read_rubric(const std::string& text, const std::string& file);
 
-[[nodiscard]] SolutionGrade grade_solution(const Checker& checker, const std::vector<SolutionStep>& steps, const Rubric& rubric);
+/// Grades the steps; a free body diagram's against `model` (the checker's problem).
+[[nodiscard]] SolutionGrade grade_solution(const Checker& checker, const Model& model, const std::vector<SolutionStep>& steps, const Rubric& rubric);
 
 /// The grade as text (what a student reads) and as JSON.
 [[nodiscard]] std::string solution_text(const SolutionGrade& g);

@@ -17,6 +17,7 @@
 #include "core/diagnostics.hpp"
 #include "core/utf8.hpp"
 #include "check/batch.hpp"
+#include "check/fbd.hpp"
 #include "check/steps.hpp"
 #include "expr/parse.hpp"
 #include "expr/rational.hpp"
@@ -122,7 +123,7 @@ struct Options {
   double until = 0;
   int samples = 201;
   // check
-  std::string unknown, answer, equation, steps, rubric, batch, results, results_format = "gradescope";
+  std::string unknown, answer, equation, steps, fbd, rubric, batch, results, results_format = "gradescope";
   bool equation_given = false;
   double tolerance = 0.01;
   int sig_figs = 0;
@@ -387,10 +388,18 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
       }
     return 0;
   }
-  if (!o.steps.empty()) {
-    const auto solution = tackle::read_solution(tackle::read_text_file(o.steps), o.steps);
+  if (!o.fbd.empty()) {
+    const tackle::StudentFbd fbd = tackle::read_fbd_file(tackle::read_text_file(o.fbd), o.fbd, analysis->model);
     const tackle::Rubric rubric = o.rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(tackle::read_text_file(o.rubric), o.rubric);
-    const tackle::SolutionGrade grade = tackle::grade_solution(checker, solution, rubric);
+    std::vector<tackle::Diagnostic> problems;
+    const tackle::FbdGrade grade = tackle::check_fbd(analysis->model, fbd, rubric.fbd, problems);
+    if (!problems.empty()) throw tackle::InputError(problems);  // a name the problem does not have
+    return emit(o.format == "json" ? tackle::fbd_json(grade) : tackle::fbd_text(grade), o.out);
+  }
+  if (!o.steps.empty()) {
+    const auto solution = tackle::read_solution(tackle::read_text_file(o.steps), o.steps, analysis->model);
+    const tackle::Rubric rubric = o.rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(tackle::read_text_file(o.rubric), o.rubric);
+    const tackle::SolutionGrade grade = tackle::grade_solution(checker, analysis->model, solution, rubric);
     if (!o.results.empty()) {
       const auto format = o.results_format == "prairielearn" ? tackle::ResultsFormat::prairielearn : tackle::ResultsFormat::gradescope;
       if (o.results_format == "jsonl") {
@@ -521,7 +530,7 @@ int run(int argc, char** argv) {
     with_phase(simulate);
   });
 
-  CLI::Option *answer_opt = nullptr, *batch_opt = nullptr, *equation_opt = nullptr, *steps_opt = nullptr;
+  CLI::Option *answer_opt = nullptr, *batch_opt = nullptr, *equation_opt = nullptr, *steps_opt = nullptr, *fbd_opt = nullptr;
   auto* check = add("check", "Check a student's answer (or a batch of them) against the closed form", [&](CLI::App* check) {
     check->add_option("file", o.file, "Problem description (YAML)")->required();
     auto* unknown_opt = check->add_option("--unknown", o.unknown, "The unknown the answer is for, e.g. T_HI");
@@ -531,9 +540,12 @@ int run(int argc, char** argv) {
                                      "constraints, or does it follow from them?")
                        ->each([&](const std::string&) { o.equation_given = true; });
     steps_opt = check->add_option("--steps", o.steps,
-                                  "A worked solution (YAML: steps: [{equation: ...}, {answer: ..., unknown: T}]) graded as a whole: "
+                                  "A worked solution (YAML: steps: [{fbd: ...}, {equation: ...}, {answer: ..., unknown: T}]) graded as a whole: "
                                   "each step, the equations used and missing, the first wrong step, a score");
-    check->add_option("--rubric", o.rubric, "With --steps: points for balances, constraints and answers (YAML)")->needs(steps_opt);
+    fbd_opt = check->add_option("--fbd", o.fbd,
+                                "A free body diagram the student drew (YAML: body: B, forces: [{name: T, at: pB, direction: [-1]}]): "
+                                "each force drawn, missing, extra or the wrong way, and a score");
+    check->add_option("--rubric", o.rubric, "With --steps or --fbd: points for FBDs, balances, constraints and answers, and how an FBD is scored (YAML)");
     batch_opt = check->add_option("--batch", o.batch, "JSON Lines file of {\"id\", \"unknown\", \"answer\"} or {\"id\", \"equation\"} "
                                                       "(- for standard input)");
     auto* results_opt = check->add_option("--results", o.results, "With --batch or --steps: also write a grading platform's results file");
@@ -569,6 +581,7 @@ int run(int argc, char** argv) {
     batch_opt->excludes(answer_opt);
     equation_opt->excludes(answer_opt)->excludes(batch_opt)->excludes(unknown_opt);
     steps_opt->excludes(answer_opt)->excludes(batch_opt)->excludes(unknown_opt)->excludes(equation_opt);
+    fbd_opt->excludes(answer_opt)->excludes(batch_opt)->excludes(unknown_opt)->excludes(equation_opt)->excludes(steps_opt);
   });
   const std::string asked = asked_subcommand(argc, argv);
   const bool named = std::any_of(definitions.begin(), definitions.end(), [&](const auto& d) { return d.first->get_name() == asked; });
@@ -585,8 +598,13 @@ int run(int argc, char** argv) {
     std::cerr << "tackle check: --results needs --batch or --steps\n";
     return 2;
   }
-  if (check->parsed() && answer_opt->count() == 0 && batch_opt->count() == 0 && equation_opt->count() == 0 && steps_opt->count() == 0) {
-    std::cerr << "tackle check: give --unknown and --answer, --equation, --steps or --batch\n";
+  if (check->parsed() && answer_opt->count() == 0 && batch_opt->count() == 0 && equation_opt->count() == 0 && steps_opt->count() == 0 &&
+      fbd_opt->count() == 0) {
+    std::cerr << "tackle check: give --unknown and --answer, --equation, --fbd, --steps or --batch\n";
+    return 2;
+  }
+  if (check->parsed() && !o.rubric.empty() && steps_opt->count() == 0 && fbd_opt->count() == 0) {
+    std::cerr << "tackle check: --rubric needs --steps or --fbd\n";
     return 2;
   }
   if (isolate->parsed() && o.target.empty() && !o.all) {

@@ -264,30 +264,11 @@ std::optional<std::array<double, 3>> point3(const Model& m, const Number& num, c
 
 }  // namespace fig
 
-// The numbers the geometry is drawn at, made once per model: every parameter's value and the
-// layout's coordinates (a parameter without a value as 1, a coordinate the layout does not
-// place at 0), the defined parameters and turning lengths from them.
+// The numbers the geometry is drawn at (layout_numbers), made once per model.
 FigureMaker::FigureMaker(const Model& m) : FigureMaker(m, {}) {}
 
-FigureMaker::FigureMaker(const Model& m, const exmap& values) : m_(m), values_(m.layout), unknowns_(m.candidates.begin(), m.candidates.end()) {
-  const SymbolTable& table = *m.symbols;
-  if (!values.empty()) {
-    for (const auto& [s, v] : values) values_[s] = v;
-    for (const auto& s : table.all())
-      if (s->definition) values_.erase(s->sym);  // made again from the new values below
-  }
-  for (const auto& s : table.all()) {
-    if (values_.count(s->sym) || s->definition) continue;
-    if (s->role == SymbolRole::parameter) values_[s->sym] = 1;
-    else if (s->role == SymbolRole::coordinate || s->role == SymbolRole::time) values_[s->sym] = 0;
-  }
-  for (const auto& s : table.all())
-    if (s->definition && !values_.count(s->sym))
-      if (auto x = value_at(*s->definition, values_)) values_[s->sym] = *x;
-  for (const auto& l : m.lengths)
-    if (auto sq = value_at(l.squared, values_); sq && is_a<numeric>(*sq) && ex_to<numeric>(*sq) >= 0)
-      values_[l.symbol] = sqrt(*sq);
-}
+FigureMaker::FigureMaker(const Model& m, const exmap& values)
+    : m_(m), values_(layout_numbers(m, values)), unknowns_(m.candidates.begin(), m.candidates.end()) {}
 
 // A number of the geometry, through the evaluation every stage uses (no pole reaches GiNaC);
 // none where it is undefined or not real.
