@@ -337,7 +337,7 @@ FbdGrade check_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& rubri
           for (auto& x : e.lines.back()) x = -x;
         e.fixed = key && *key != 0 && positive.count(p.unknown);
         e.name = to_text(p.unknown);
-        f.label = to_text(p.key * p.unknown);
+        f.label = p.key.is_equal(1) ? to_text(p.unknown) : to_text(p.key) + "*" + to_text(p.unknown);
       } else {
         const auto n = position(p.coefficients);
         if (!n) {
@@ -389,7 +389,7 @@ FbdGrade check_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& rubri
     if (dims == 3 && !is_zero_vec(l.couple) && undecided_by.empty()) undecided_by = "the couple of the " + l.source;
     if (dims == 2 && !l.couple[2].is_zero()) {
       Entry e{li, at, l.at_name, {}, false, false, false, true, 0, ""};
-      FbdGrade::Force f{l.source, "the couple of the " + l.source, to_text(l.couple[2]), "missing", {}, 1, 0};
+      FbdGrade::Force f{l.source, l.source.rfind("couple", 0) == 0 ? "the " + l.source : "the couple of the " + l.source, to_text(l.couple[2]), "missing", {}, 1, 0};
       if (const auto v = num(l.couple[2]); v && state_free(l.couple[2])) {
         bool has_unknown = false;
         for (const auto& u : unknowns) has_unknown = has_unknown || l.couple[2].has(u);
@@ -632,7 +632,7 @@ FbdGrade check_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& rubri
         continue;
       if (ours) {
         code = "internal_force";
-        message = said(i) + " is " + force_phrase(l.source) + ", which is internal to " + g.of + ": its pulls on the system's bodies cancel";
+        message = said(i) + " is " + force_phrase(l.source) + ", which is internal to " + g.of + " (its forces on the system's bodies cancel)";
       } else {
         code = "other_body";
         message = said(i) + " is " + force_phrase(l.source) + ", which acts on " + m.bodies[static_cast<std::size_t>(l.body)].name + ", not on " + g.of;

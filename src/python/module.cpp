@@ -13,6 +13,9 @@
 
 #include "check/batch.hpp"
 #include "check/check.hpp"
+#include "check/fbd.hpp"
+#include "check/steps.hpp"
+#include "description/yaml_reader.hpp"
 #include "expr/print.hpp"
 #include "pipeline/pipeline.hpp"
 #include "report/key.hpp"
@@ -119,6 +122,31 @@ class Problem {
                     py::arg("latex") = r.echo_latex, py::arg("identified_as") = identified, py::arg("follows_from") = follows);
   }
 
+  // A free body diagram the student drew: the YAML (or JSON) of `tackle check --fbd`, or a
+  // dict of the same; the grade as `--fbd --format json` gives it, as a dict.
+  [[nodiscard]] py::object check_fbd(const py::object& fbd, const std::string& rubric) const {
+    const std::string text = py::isinstance<py::str>(fbd) ? fbd.cast<std::string>() : py::module_::import("json").attr("dumps")(fbd).cast<std::string>();
+    const tackle::StudentFbd student = tackle::read_fbd_file(text, "fbd", analysis_->model);
+    const tackle::Rubric r = rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(rubric, "rubric");
+    std::vector<tackle::Diagnostic> problems;
+    const tackle::FbdGrade g = tackle::check_fbd(analysis_->model, student, r.fbd, problems);
+    if (!problems.empty()) throw tackle::InputError(problems);
+    return py::module_::import("json").attr("loads")(tackle::fbd_json(g));
+  }
+
+  // A worked solution (the YAML of `tackle check --steps`) with an optional rubric (YAML): the
+  // grade as `--steps --format json` gives it, as a dict, and the platform's results file.
+  [[nodiscard]] py::tuple check_solution(const std::string& solution, const std::string& rubric, const std::string& results_format) const {
+    const tackle::Checker checker(*analysis_, options(0.01, false));
+    tackle::ResultsFormat format = tackle::ResultsFormat::gradescope;
+    if (results_format == "prairielearn") format = tackle::ResultsFormat::prairielearn;
+    else if (results_format != "gradescope") throw py::value_error("results_format '" + results_format + "' (expected gradescope or prairielearn)");
+    const auto steps = tackle::read_solution(solution, "solution", analysis_->model);
+    const tackle::Rubric r = rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(rubric, "rubric");
+    const tackle::SolutionGrade g = tackle::grade_solution(checker, analysis_->model, steps, r);
+    return py::make_tuple(py::module_::import("json").attr("loads")(tackle::solution_json(g)), tackle::solution_results(g, format));
+  }
+
   // JSON Lines in; (the results a line, the platform's results file) out.
   [[nodiscard]] py::tuple check_batch(const std::string& lines, const std::string& results_format, double points,
                                       const py::dict& params, double tolerance, bool reveal) const {
@@ -186,6 +214,11 @@ PYBIND11_MODULE(tackle, m) {
            py::arg("tolerance") = 0.01, py::arg("reveal") = false, "Check one answer: verdict, score, summary, findings")
       .def("check_equation", &Problem::check_equation, py::arg("equation"),
            "Check an equation the student wrote: verdict, score, summary, findings, identified_as, follows_from")
+      .def("check_fbd", &Problem::check_fbd, py::arg("fbd"), py::arg("rubric") = "",
+           "Check a free body diagram the student drew (YAML/JSON text or a dict: body, forces, couples): "
+           "verdict, summary, each force's status, extras, findings, score")
+      .def("check_solution", &Problem::check_solution, py::arg("solution"), py::arg("rubric") = "", py::arg("results_format") = "gradescope",
+           "Grade a worked solution (YAML: steps of fbd, equation and answer): (the grade as a dict, the platform's results file)")
       .def("check_batch", &Problem::check_batch, py::arg("lines"), py::arg("results_format") = "gradescope",
            py::arg("points") = 1.0, py::arg("params") = py::dict(), py::arg("tolerance") = 0.01, py::arg("reveal") = false,
            "Check JSON Lines of answers: (results a line, the platform's results file)");

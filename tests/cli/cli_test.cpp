@@ -264,6 +264,37 @@ TEST_CASE("CLI: check one answer, as text and JSON, and usage errors exit 2", "[
   CHECK(run_tackle("check " + board + " --unknown T_HI --answer x --tolerance 2").code == 2);
 }
 
+TEST_CASE("CLI: check a free body diagram, as text and JSON; bad diagrams exit 1, usage 2", "[cli][check][fbd]") {
+  const fs::path dir = fs::temp_directory_path() / ("tackle-fbd-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  // By hand (sample 12.3): three strands of the string pull B toward C, along -x.
+  std::ofstream(dir / "b.yaml") << "body: B\nforces:\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [-1]}\n";
+  std::ofstream(dir / "bad.yaml") << "body: B\nforces:\n  - {name: T, at: pQ, direction: [-1, 0]}\n";
+  std::ofstream(dir / "rubric.yaml") << "fbd: {extra: 2, weights: {T: 2}}\n";
+  const std::string pulley = examples + "sample-12.3-two-mass-pulley.yaml";
+  Run r = run_tackle("check " + pulley + " --fbd " + (dir / "b.yaml").string());
+  CHECK(r.code == 0);
+  CHECK(r.out == "free body diagram of B: incorrect: a strand of string s at pB is missing\n"
+                 "  a strand of string s at pB (T): drawn as your T\n"
+                 "  a strand of string s at pB (T): drawn as your T\n"
+                 "  a strand of string s at pB (T): missing\n"
+                 "score: 2 of 3\n");
+  r = run_tackle("check " + pulley + " --fbd " + (dir / "b.yaml").string() + " --rubric " + (dir / "rubric.yaml").string() + " --format json");
+  CHECK(r.code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["verdict"] == "incorrect");
+  CHECK(j["score"] == 4.0);
+  CHECK(j["max_score"] == 6.0);
+  r = run_tackle("check " + pulley + " --fbd " + (dir / "bad.yaml").string());
+  CHECK(r.code == 1);
+  const std::string bad = (dir / "bad.yaml").string();
+  CHECK(r.err == bad + ":3:19: 'pQ' is not a point or body of the problem (expected one of: A, B, C, pA, pB)\n" + bad +
+                     ":3:34: 'direction' has 2 numbers (expected 1, one per axis)\n");
+  CHECK(run_tackle("check " + pulley + " --fbd " + (dir / "b.yaml").string() + " --equation 'T = 1'").code == 2);
+  CHECK(run_tackle("check " + pulley + " --unknown T --answer 1 --rubric " + (dir / "rubric.yaml").string()).code == 2);
+  fs::remove_all(dir);
+}
+
 TEST_CASE("CLI: check a batch into JSON Lines and a grader results file", "[cli][check][batch]") {
   const fs::path dir = fs::temp_directory_path() / "tackle-batch";
   fs::create_directories(dir);

@@ -55,6 +55,27 @@ class ModuleTest(unittest.TestCase):
         self.assertEqual(wrong["findings"][0]["code"], "missing_force")
         self.assertEqual(wrong["summary"], "a strand of string s at pA is missing (LMB A (x))")
 
+    def test_check_fbd(self):
+        # By hand: B is pulled toward C (left, -x) by three strands of the string at pB.
+        right = self.p.check_fbd({"body": "B", "forces": [{"name": "T", "at": "pB", "direction": [-1]}] * 3})
+        self.assertEqual(right["verdict"], "correct")
+        self.assertEqual(right["score"], 3)
+        wrong = self.p.check_fbd("body: B\nforces:\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [1]}\n")
+        self.assertEqual(wrong["verdict"], "incorrect")
+        self.assertEqual(wrong["findings"][0]["code"], "missing_force")
+        self.assertEqual(wrong["findings"][1]["message"], "your T stands for a strand of string s at pB, which points the other way")
+        with self.assertRaises(tackle.InputError) as e:
+            self.p.check_fbd({"body": "Q", "forces": []})
+        self.assertIn("'Q' is not a body of the problem (expected one of: A, B)", str(e.exception))
+
+    def test_check_solution(self):
+        grade, results = self.p.check_solution(
+            "steps:\n  - fbd: {body: B, forces: [{name: T, at: pB, direction: [-1]}]}\n"
+            "  - equation: '-3*T = m_B*ddot(x_B)'\n", rubric="fbds: 1\nbalances: 1\n", results_format="prairielearn")
+        self.assertEqual(grade["first_wrong"], 1)
+        self.assertEqual([p["name"] for p in grade["parts"]], ["fbds", "balances"])
+        self.assertEqual(json.loads(results)["tests"][0]["name"], "step 1: free body diagram of B")
+
     def test_batch_for_prairielearn(self):
         lines = ('{"id": "a", "unknown": "T", "answer": "2*F*m_B/(9*m_A + 4*m_B)"}\n'
                  '{"id": "b", "unknown": "T", "answer": "3*"}\n')

@@ -16,7 +16,7 @@ using namespace tackle;
 
 namespace {
 
-const Checker& checker_for(const std::string& example) {
+std::pair<std::unique_ptr<const Analysis>, std::unique_ptr<Checker>>& made_for(const std::string& example) {
   static std::map<std::string, std::pair<std::unique_ptr<const Analysis>, std::unique_ptr<Checker>>> made;
   auto it = made.find(example);
   if (it == made.end()) {
@@ -24,8 +24,11 @@ const Checker& checker_for(const std::string& example) {
     auto c = std::make_unique<Checker>(*a);
     it = made.emplace(example, std::make_pair(std::move(a), std::move(c))).first;
   }
-  return *it->second.second;
+  return it->second;
 }
+
+const Checker& checker_for(const std::string& example) { return *made_for(example).second; }
+const Model& model_for(const std::string& example) { return made_for(example).first->model; }
 
 struct EquationStep {
   const char* example;
@@ -224,13 +227,14 @@ TEST_CASE("Steps: a worked solution graded as a whole, with the rubric's points"
   // Sample 12.3 needs LMB A, LMB B and the string's length sum for T, ddot(x_A) and ddot(x_B)
   // (by hand: three unknowns, three equations, each used).
   const Checker& c = checker_for("sample-12.3-two-mass-pulley");
+  const Model& model = model_for("sample-12.3-two-mass-pulley");
   const auto partial = read_solution(R"Y(steps:
   - equation: "2*T - F = m_A*ddot(x_A)"
   - equation: "-2*T = m_B*ddot(x_B)"
   - {answer: "2*m_B*F/(9*m_A + 4*m_B)", unknown: T}
-)Y", "partial.yaml");
+)Y", "partial.yaml", model);
   const Rubric rubric = read_rubric("balances: 4\nconstraints: 2\nanswers: 3\n", "rubric.yaml");
-  const SolutionGrade g = grade_solution(c, partial, rubric);
+  const SolutionGrade g = grade_solution(c, model, partial, rubric);
   REQUIRE(g.steps.size() == 3);
   CHECK(g.steps[1].result.findings.front().code == "missing_force");
   CHECK(g.first_wrong == std::optional<std::size_t>(2));
@@ -252,8 +256,8 @@ TEST_CASE("Steps: a worked solution graded as a whole, with the rubric's points"
   - {answer: "2*m_B*F/(9*m_A + 4*m_B)", unknown: T}
   - {answer: "-9*F/(9*m_A + 4*m_B)", unknown: ddot(x_A)}
   - {answer: "-6*F/(9*m_A + 4*m_B)", unknown: ddot(x_B)}
-)Y", "whole.yaml");
-  const SolutionGrade w = grade_solution(c, whole, rubric);
+)Y", "whole.yaml", model);
+  const SolutionGrade w = grade_solution(c, model, whole, rubric);
   CHECK(!w.first_wrong);
   CHECK(w.missing.empty());
   CHECK(w.score == Approx(9));
@@ -276,6 +280,8 @@ TEST_CASE("Steps: a worked solution graded as a whole, with the rubric's points"
 }
 
 TEST_CASE("Steps: a solution or rubric file with problems says each, located", "[check][steps]") {
+  const Model& model = model_for("sample-12.3-two-mass-pulley");
+  auto read_solution = [&](const std::string& text, const std::string& file) { return tackle::read_solution(text, file, model); };
   auto errors = [](auto read, const std::string& text) {
     std::vector<std::string> out;
     try {
@@ -290,7 +296,7 @@ TEST_CASE("Steps: a solution or rubric file with problems says each, located", "
                                  "f.yaml:4:5: an answer needs its 'unknown' (e.g. {answer: \"2*m_B*F/(9*m_A + 4*m_B)\", unknown: T})"});
   CHECK(errors(read_solution, "stepz: []\n") ==
         std::vector<std::string>{"f.yaml:1:1: unknown key 'stepz' in the solution (did you mean 'steps'?)",
-                                 "f.yaml:1:1: the solution has no 'steps' (expected a list of {equation: ...} and {answer: ..., unknown: ...})"});
+                                 "f.yaml:1:1: the solution has no 'steps' (expected a list of {equation: ...}, {answer: ..., unknown: ...} and {fbd: ...})"});
   CHECK(errors(read_rubric, "balances: -1\nanswers: lots\n") ==
         std::vector<std::string>{"f.yaml:1:11: 'balances' is not a number of points (expected a number from 0 to 1000)",
                                  "f.yaml:2:10: 'answers' is not a number of points (expected a number from 0 to 1000)"});

@@ -1,0 +1,231 @@
+// Checking a free body diagram the student drew (issue "check the student's work", part 2).
+// Every expectation is from the examples' hand derivations (their notes): which forces act on
+// each body, at which point, along which line and which way; never from tackle's own output.
+#include <catch2/catch.hpp>
+
+#include <map>
+#include <memory>
+
+#include "check/fbd.hpp"
+#include "check/steps.hpp"
+
+#include <nlohmann/json.hpp>
+#include "../../support/helpers.hpp"
+
+using namespace tackle;
+
+namespace {
+
+const Analysis& analysis_for(const std::string& example) {
+  static std::map<std::string, std::unique_ptr<const Analysis>> made;
+  auto it = made.find(example);
+  if (it == made.end()) it = made.emplace(example, analyze_file(TACKLE_SOURCE_DIR "/examples/" + example + ".yaml", test::rules())).first;
+  return *it->second;
+}
+
+FbdGrade grade(const std::string& example, const std::string& yaml, const FbdRubric& rubric = {}) {
+  const Model& m = analysis_for(example).model;
+  const StudentFbd fbd = read_fbd_file(yaml, "fbd.yaml", m);
+  std::vector<Diagnostic> problems;
+  FbdGrade g = check_fbd(m, fbd, rubric, problems);
+  CHECK(problems.empty());
+  return g;
+}
+
+struct FbdCase {
+  const char* example;
+  const char* fbd;
+  Verdict verdict;
+  const char* code;     // the first finding's (correct: empty)
+  const char* summary;  // word for word
+  double score, max_score;
+};
+
+// By hand.
+// Sample 12.3 (x to the right, C at 0, A at x = -1 left of it, B at x = 1): A is pulled left by
+// F and by two strands of the string toward C (right); B by three strands toward C (left).
+// The Atwood machine (y up): A and B each hang from a strand (up) and weigh (down); the pulley
+// block C is held by the ceiling (R_C up) and pulled down by the two strands.
+// The incline (theta = 30 deg, x right, y up): A has the incline's normal force (at 120 deg),
+// the string's pull up the incline toward P (at 30 deg) and its weight (down); B the string
+// (up) and its weight. The system of A and B: the string runs over the fixed pulley P, so both
+// strands are external.
+// The suitcase slides right: each foot has N up and friction mu N left.
+// The wheel: the axle couple -M_0 (clockwise), the ground's N_C (up) and friction F_C along x,
+// of either sign (static friction; the notes find it forward), the weight at the center.
+// Two blocks joined by a pin at H: the pin's force on B, of unknown direction; B's roller
+// (up) and weight. For the system of A and B the pin is internal.
+// Towing: the chain pulls car 1 toward car 2 (+x); F acts on car 2.
+// Sample 12.8: the ball and socket at O and the hinge at G, forces of unknown direction; the
+// rod from H to I, along H -> I = (d, b, e) = (3, 1.5, 0.5) m, tension or compression; the
+// weight along -z.
+// The ladder: the floor pushes up at A, the wall pushes left (-x) at B; the weight at G.
+const std::vector<FbdCase> cases{
+    {"sample-12.3-two-mass-pulley", "body: B\nforces:\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [-1]}\n",
+     Verdict::correct, "", "every force on B is drawn, each along its line and at its point", 3, 3},
+    {"sample-12.3-two-mass-pulley", "body: B\nforces:\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [-1]}\n",
+     Verdict::incorrect, "missing_force", "a strand of string s at pB is missing", 2, 3},
+    {"sample-12.3-two-mass-pulley",
+     "body: B\nforces:\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [-1]}\n",
+     Verdict::incorrect, "extra_force", "your T counts a strand of string s at pB once too often", 2, 3},
+    {"sample-12.3-two-mass-pulley", "body: A\nforces:\n  - {name: F, direction: [-1]}\n  - {name: T, at: pA, direction: [1]}\n  - {name: T, at: pA, direction: [1]}\n",
+     Verdict::correct, "", "every force on A is drawn, each along its line and at its point", 3, 3},
+    {"sample-12.3-two-mass-pulley", "body: A\nforces:\n  - {name: F, direction: [1]}\n  - {name: T, at: pA, direction: [1]}\n  - {name: T, at: pA, direction: [1]}\n",
+     Verdict::incorrect, "force_direction", "your F stands for the force on A, which points the other way", 2.5, 3},
+    {"sample-12.3-two-mass-pulley",
+     "body: A\nforces:\n  - {name: F, direction: [-1]}\n  - {name: T, at: pA, direction: [1]}\n  - {name: T, at: pA, direction: [1]}\n  - {name: W, at: A, direction: [-1]}\n",
+     Verdict::incorrect, "extra_force", "your W is not one of the forces on A at A", 2, 3},
+    {"atwood-machine", "body: C\nforces:\n  - {name: R, direction: [1]}\n  - {name: T, direction: [-1]}\n  - {name: T, direction: [-1]}\n", Verdict::correct, "",
+     "every force on C is drawn, each along its line and at its point", 3, 3},
+    {"atwood-machine", "body: A\nforces:\n  - {name: T, direction: [-1]}\n  - {name: W, direction: [-1]}\n", Verdict::incorrect, "force_direction",
+     "your T stands for a strand of string s at A, which points the other way", 1.5, 2},
+    {"atwood-machine", "body: A\nforces:\n  - {name: T, direction: [1]}\n", Verdict::incorrect, "missing_force", "the weight of A is missing", 1, 2},
+    {"incline-and-hanging-block", "body: A\nforces:\n  - {name: N, at: A, angle: 120}\n  - {name: T, at: A, angle: 30}\n  - {name: W, at: A, direction: [0, -1]}\n",
+     Verdict::correct, "", "every force on A is drawn, each along its line and at its point", 3, 3},
+    {"incline-and-hanging-block", "body: A\nforces:\n  - {name: N, at: A, angle: 90}\n  - {name: T, at: A, angle: 30}\n  - {name: W, at: A, direction: [0, -1]}\n",
+     Verdict::incorrect, "force_direction", "your N stands for the force of the roller at A, but is not along its line", 2.5, 3},
+    {"incline-and-hanging-block", "body: A\nforces:\n  - {name: N, at: A, angle: 121.5}\n  - {name: T, at: A, direction: [0.866, 0.5]}\n  - {name: W, at: A, angle: -90}\n",
+     Verdict::correct, "", "every force on A is drawn, each along its line and at its point", 3, 3},
+    {"incline-and-hanging-block", "body: A\nforces:\n  - {name: N, at: A, angle: 120}\n  - {name: T, at: A, direction: any}\n  - {name: W, at: A, direction: [0, -1]}\n",
+     Verdict::incorrect, "force_direction", "your T stands for a strand of string s at A, whose line is known: draw it along that line", 2.5, 3},
+    {"incline-and-hanging-block",
+     "bodies: [A, B]\nforces:\n  - {name: N, at: A, angle: 120}\n  - {name: T, at: A, angle: 30}\n  - {name: W_A, at: A, direction: [0, -1]}\n  - {name: T, at: B, direction: [0, 1]}\n  - {name: W_B, at: B, direction: [0, -1]}\n",
+     Verdict::correct, "", "every force on the system of A and B is drawn, each along its line and at its point", 5, 5},
+    {"sample-12.7-suitcase",
+     "body: suitcase\nforces:\n  - {name: W, at: suitcase, direction: [0, -1]}\n  - {name: N_A, at: A, direction: [0, 1]}\n  - {name: N_B, at: B, direction: [0, 1]}\n  - {name: F_A, at: A, direction: [1, 0]}\n  - {name: F_B, at: B, direction: [-1, 0]}\n",
+     Verdict::incorrect, "force_direction", "your F_A stands for the force of the sliding contact at A (its mu*N_A part), which points the other way", 4.5, 5},
+    {"sample-12.7-suitcase",
+     "body: suitcase\nforces:\n  - {name: W, at: suitcase, direction: [0, -1]}\n  - {name: N_A, at: A, direction: [0, 1]}\n  - {name: N_B, at: B, direction: [0, 1]}\n  - {name: F_A, at: A, direction: [-1, 0]}\n",
+     Verdict::incorrect, "missing_force", "the force of the sliding contact at B (its mu*N_B part) is missing", 4, 5},
+    {"rotation-wheel-driven-by-a-couple",
+     "body: wheel\nforces:\n  - {name: W, at: wheel, direction: [0, -1]}\n  - {name: N, at: C, direction: [0, 1]}\n  - {name: F, at: C, direction: [-1, 0]}\ncouples:\n  - {name: M, sense: clockwise}\n",
+     Verdict::correct, "", "every force on wheel is drawn, each along its line and at its point", 4, 4},
+    {"rotation-wheel-driven-by-a-couple",
+     "body: wheel\nforces:\n  - {name: W, at: wheel, direction: [0, -1]}\n  - {name: N, at: C, direction: [0, 1]}\n  - {name: F, at: C, direction: [1, 0]}\ncouples:\n  - {name: M, sense: counterclockwise}\n",
+     Verdict::incorrect, "force_direction", "your couple M stands for the couple on wheel, which turns the other way", 3.5, 4},
+    {"two-blocks-joined-by-a-pin", "body: B\nforces:\n  - {name: N, at: B, direction: [0, 1]}\n  - {name: W, at: B, direction: [0, -1]}\n  - {name: H, at: H, direction: any}\n",
+     Verdict::correct, "", "every force on B is drawn, each along its line and at its point", 3, 3},
+    {"two-blocks-joined-by-a-pin",
+     "body: B\nforces:\n  - {name: N, at: B, direction: [0, 1]}\n  - {name: W, at: B, direction: [0, -1]}\n  - {name: H_x, at: H, direction: [1, 0]}\n  - {name: H_y, at: H, direction: [0, -1]}\n",
+     Verdict::correct, "", "every force on B is drawn, each along its line and at its point", 3, 3},
+    {"two-blocks-joined-by-a-pin",
+     "bodies: [A, B]\nforces:\n  - {name: N_A, at: A, direction: [0, 1]}\n  - {name: N_B, at: B, direction: [0, 1]}\n  - {name: W_A, at: A, direction: [0, -1]}\n  - {name: W_B, at: B, direction: [0, -1]}\n  - {name: F, at: A, direction: [1, 0]}\n  - {name: H, at: H, direction: any}\n",
+     Verdict::incorrect, "internal_force", "your H is the force of the pin joint at H, which is internal to the system of A and B (its forces on the system's bodies cancel)", 4, 5},
+    {"sample-12.1-towing", "body: car1\nforces:\n  - {name: T, at: car1, direction: [1]}\n", Verdict::correct, "",
+     "every force on car1 is drawn, each along its line and at its point", 1, 1},
+    {"sample-12.1-towing", "body: car1\nforces:\n  - {name: T, at: car1, direction: [1]}\n  - {name: F, at: car2, direction: [1]}\n", Verdict::incorrect, "other_body",
+     "your F is the force on car2, which acts on car2, not on car1", 0, 1},
+    {"sample-12.8-sign-board",
+     "body: board\nforces:\n  - {name: W, at: board, direction: [0, 0, -1]}\n  - {name: O, at: O, direction: any}\n  - {name: G, at: G, direction: any}\n  - {name: T, at: H, direction: [-3, -1.5, -0.5]}\n",
+     Verdict::correct, "", "every force on board is drawn, each along its line and at its point", 4, 4},
+    {"sample-12.8-sign-board",
+     "body: board\nforces:\n  - {name: W, at: board, direction: [0, 0, -1]}\n  - {name: O, at: O, direction: any}\n  - {name: G, at: G, direction: any}\n  - {name: T, at: H, direction: [1, 0, 0]}\n",
+     Verdict::incorrect, "force_direction", "your T stands for the force of the rod from H, but is not along its line", 3.5, 4},
+    {"rotation-ladder-sliding-on-smooth-wall-and-floor",
+     "body: ladder\nforces:\n  - {name: N_A, at: A, direction: [0, 1]}\n  - {name: N_B, at: B, direction: [-1, 0]}\n  - {name: W, at: ladder, direction: [0, -1]}\n",
+     Verdict::correct, "", "every force on ladder is drawn, each along its line and at its point", 3, 3},
+    {"rotation-ladder-sliding-on-smooth-wall-and-floor",
+     "body: ladder\nforces:\n  - {name: N_A, at: A, direction: [0, 1]}\n  - {name: N_B, at: A, direction: [-1, 0]}\n  - {name: W, at: ladder, direction: [0, -1]}\n",
+     Verdict::incorrect, "wrong_point", "your N_B stands for the force of the roller at B, which does not act at A", 2.5, 3},
+};
+
+}  // namespace
+
+TEST_CASE("FBD: each drawing's verdict, finding and score, from the examples' hand derivations", "[check][fbd]") {
+  for (const FbdCase& c : cases) {
+    INFO(c.example << "\n" << c.fbd);
+    const FbdGrade g = grade(c.example, c.fbd);
+    CHECK(verdict_name(g.verdict) == verdict_name(c.verdict));
+    CHECK(g.summary == c.summary);
+    if (c.verdict == Verdict::correct) CHECK(g.findings.empty());
+    else if (!g.findings.empty()) CHECK(g.findings.front().code == c.code);
+    CHECK(g.score == Approx(c.score));
+    CHECK(g.max_score == Approx(c.max_score));
+  }
+}
+
+TEST_CASE("FBD: the student's names are mapped to the forces they stand for", "[check][fbd]") {
+  const FbdGrade g = grade("incline-and-hanging-block",
+                           "body: A\nforces:\n  - {name: P, at: A, angle: 30}\n  - {name: R, at: A, angle: 120}\n  - {name: W, at: A, direction: [0, -1]}\n");
+  REQUIRE(g.forces.size() == 3);
+  CHECK(fbd_text(g) ==
+        "free body diagram of A: correct: every force on A is drawn, each along its line and at its point\n"
+        "  the force of the roller at A (N_A): drawn as your R\n"
+        "  a strand of string s at A (T): drawn as your P\n"
+        "  the weight of A (g*m_A): drawn as your W\n"
+        "score: 3 of 3\n");
+  const auto json = nlohmann::json::parse(fbd_json(g));
+  CHECK(json["forces"][1]["label"] == "T");
+  CHECK(json["forces"][1]["drawn_as"] == nlohmann::json::array({"P"}));
+  CHECK(json["forces"][1]["status"] == "drawn");
+}
+
+TEST_CASE("FBD: an instructor's weights and penalties", "[check][fbd]") {
+  FbdRubric r;
+  r.weights["gravity on A"] = 2;
+  r.wrong_direction = 0.25;
+  r.extra = 0.5;
+  // The weight drawn up (half... a quarter of its 2 points), and one extra arrow.
+  const FbdGrade g = grade("atwood-machine", "body: A\nforces:\n  - {name: T, direction: [1]}\n  - {name: W, direction: [1]}\n  - {name: X, direction: [1]}\n", r);
+  CHECK(g.max_score == Approx(3));
+  CHECK(g.score == Approx(1 + 0.5 - 0.5));
+  CHECK(g.findings.front().code == "force_direction");
+  CHECK(g.extras.size() == 1);
+}
+
+TEST_CASE("FBD: a diagram with problems says each, located, in the file's order", "[check][fbd]") {
+  const Model& m = analysis_for("incline-and-hanging-block").model;
+  std::vector<std::string> out;
+  try {
+    (void)read_fbd_file("body: Q\nforces:\n  - {name: N, at: Z, angle: 90}\n  - {name: T, at: A, direction: [1, 2, 3]}\n  - {name: W, at: A}\n"
+                        "  - {name: X, at: A, direction: [0, \"a\"]}\ncouples:\n  - {name: M, sense: left}\n",
+                        "f.yaml", m);
+  } catch (const InputError& e) {
+    for (const auto& d : e.diagnostics()) out.push_back(format(d));
+  }
+  CHECK(out == std::vector<std::string>{
+                   "f.yaml:1:7: 'Q' is not a body of the problem (expected one of: A, B)",
+                   "f.yaml:3:19: 'Z' is not a point or body of the problem (expected one of: A, B, P)",
+                   "f.yaml:4:33: 'direction' has 3 numbers (expected 2, one per axis)",
+                   "f.yaml:5:5: a force needs its 'direction' (expected a list of 2 numbers, 'angle' in degrees, or 'any')",
+                   "f.yaml:6:38: 'a' is not a number (expected a number from -10^6 to 10^6)",
+                   "f.yaml:8:22: 'left' is not a sense (expected counterclockwise, clockwise or any)",
+               });
+  out.clear();
+  const Model& line = analysis_for("sample-12.3-two-mass-pulley").model;
+  try {
+    (void)read_fbd_file("forces:\n  - {name: T, angle: 30}\ncouples: [{sense: any}]\n", "g.yaml", line);
+  } catch (const InputError& e) {
+    for (const auto& d : e.diagnostics()) out.push_back(format(d));
+  }
+  CHECK(out == std::vector<std::string>{
+                   "g.yaml:1:1: the free body diagram has no 'body' (expected body: NAME, or bodies: [A, B] for a system)",
+                   "g.yaml:2:22: 'angle' is for a plane problem (expected 'direction' with 1 number)",
+                   "g.yaml:3:10: 'couples' are for a plane problem (this one has 1 axes)",
+               });
+}
+
+TEST_CASE("FBD: a worked solution's diagrams earn the rubric's fbds points", "[check][fbd][steps]") {
+  const Analysis& a = analysis_for("sample-12.3-two-mass-pulley");
+  const Checker c(a);
+  // LMB A and LMB B are needed (by hand), so the diagrams of A and of B are wanted.
+  const auto steps = read_solution(R"Y(steps:
+  - fbd: {body: A, forces: [{name: F, direction: [-1]}, {name: T, at: pA, direction: [1]}, {name: T, at: pA, direction: [1]}]}
+  - fbd: {body: B, forces: [{name: T, at: pB, direction: [-1]}, {name: T, at: pB, direction: [-1]}]}
+  - equation: "2*T - F = m_A*ddot(x_A)"
+)Y", "s.yaml", a.model);
+  const Rubric rubric = read_rubric("fbds: 2\nbalances: 2\nconstraints: 0\nanswers: 0\n", "r.yaml");
+  const SolutionGrade g = grade_solution(c, a.model, steps, rubric);
+  REQUIRE(g.steps.size() == 3);
+  CHECK(g.steps[0].result.verdict == Verdict::correct);
+  CHECK(g.steps[1].result.summary == "a strand of string s at pB is missing");
+  CHECK(g.first_wrong == std::optional<std::size_t>(2));
+  REQUIRE(!g.parts.empty());
+  CHECK(g.parts[0].name == "fbds");
+  CHECK(g.parts[0].score == Approx(2 * (1 + 2.0 / 3) / 2));
+  CHECK(g.parts[0].done == 1);
+  CHECK(g.parts[0].of == 2);
+  const auto results = nlohmann::json::parse(solution_results(g, ResultsFormat::gradescope));
+  CHECK(results["tests"][1]["name"] == "step 2: free body diagram of B");
+  CHECK(results["tests"][1]["output"] == "incorrect: a strand of string s at pB is missing");
+}
