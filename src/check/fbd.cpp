@@ -11,6 +11,7 @@
 #include "check/equation.hpp"
 #include "expr/print.hpp"
 #include "model/forces.hpp"
+#include "numeric/layout.hpp"
 #include "numeric/evaluate.hpp"
 
 namespace tackle {

@@ -11,6 +11,7 @@
 #include "figure/figure.hpp"
 #include "figure/geometry.hpp"
 #include "model/forces.hpp"
+#include "numeric/layout.hpp"
 
 namespace tackle {
 

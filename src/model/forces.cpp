@@ -5,7 +5,6 @@
 #include <map>
 
 #include "expr/print.hpp"
-#include "numeric/evaluate.hpp"
 
 namespace tackle {
 
@@ -31,31 +30,6 @@ std::set<std::string> internal_forces(const Model& m, const std::vector<int>& bo
   for (const auto& [key, sum] : sums)
     if (is_zero_vec(sum)) internal.insert(key);
   return internal;
-}
-
-exmap layout_numbers(const Model& m, const exmap& values, std::set<ex, ex_is_less>* defaulted) {
-  exmap out = m.layout;
-  const SymbolTable& table = *m.symbols;
-  if (!values.empty()) {
-    for (const auto& [s, v] : values) out[s] = v;
-    for (const auto& s : table.all())
-      if (s->definition) out.erase(s->sym);  // made again from the new values below
-  }
-  for (const auto& s : table.all()) {
-    if (out.count(s->sym) || s->definition) continue;
-    if (s->role == SymbolRole::parameter) {
-      out[s->sym] = 1;
-      if (defaulted) defaulted->insert(s->sym);
-    } else if (s->role == SymbolRole::coordinate || s->role == SymbolRole::time) {
-      out[s->sym] = 0;
-    }
-  }
-  for (const auto& s : table.all())
-    if (s->definition && !out.count(s->sym))
-      if (auto x = value_at(*s->definition, out)) out[s->sym] = *x;
-  for (const auto& l : m.lengths)
-    if (auto sq = value_at(l.squared, out); sq && is_a<numeric>(*sq) && ex_to<numeric>(*sq) >= 0) out[l.symbol] = sqrt(*sq);
-  return out;
 }
 
 std::vector<ForcePart> split_force(const Model& m, const Vec& force, const std::set<ex, ex_is_less>& unknowns, const NumberAt& number) {

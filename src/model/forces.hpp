@@ -34,13 +34,6 @@ struct ForcePart {
   std::array<double, 3> numbers{0, 0, 0};  // the coefficients at the numbers (an unknown's part)
 };
 
-/// The numbers a free body diagram is drawn at: every parameter's value and the layout's
-/// coordinates, with `values` (SI, by symbol: a variant's) over the parameters' own; a
-/// parameter without a value as 1 (and put in `defaulted`), a coordinate the layout does not
-/// place at 0; the defined parameters and turning lengths made from them.
-[[nodiscard]] GiNaC::exmap layout_numbers(const Model& m, const GiNaC::exmap& values = {},
-                                          std::set<GiNaC::ex, GiNaC::ex_is_less>* defaulted = nullptr);
-
 using NumberAt = std::function<std::optional<double>(const GiNaC::ex&)>;
 
 /// `force` split into parts: for each unknown (in the model's order of candidates) that it is

@@ -15,7 +15,6 @@
 #include "check/check.hpp"
 #include "check/fbd.hpp"
 #include "check/steps.hpp"
-#include "description/yaml_reader.hpp"
 #include "expr/print.hpp"
 #include "pipeline/pipeline.hpp"
 #include "report/key.hpp"
