@@ -284,6 +284,8 @@ std::vector<std::string> Checker::needed_for(const std::string& unknown) const {
 
 const Equation* Checker::derivation_equation(const std::string& label) const { return equations_->equation(label); }
 
+std::string Checker::differentiated(const std::string& label) const { return equations_->differentiated(label); }
+
 std::vector<std::string> Checker::unknowns() const {
   std::vector<std::string> out;
   for (const auto& [k, v] : references_) out.push_back(k);

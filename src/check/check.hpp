@@ -60,7 +60,8 @@ enum class Verdict { correct, incorrect, invalid, undecided };
 /// missing_parameter, trig_swapped, term_sign, missing_term, extra_term, value, not_simplified, tolerance,
 /// budget, evaluation. Equations (check/equation.hpp) also: not_an_equation, trivial, not_linear,
 /// missing_force, force_sign, extra_force, missing_inertia, inertia_sign, wrong_mass,
-/// wrong_acceleration.
+/// wrong_acceleration, length_sum. Free body diagrams (check/fbd.hpp): missing_force,
+/// force_direction, wrong_point, extra_force, other_body, internal_force.
 struct Finding {
   std::string code;
   std::string message;
@@ -113,6 +114,9 @@ class Checker {
   [[nodiscard]] std::vector<std::string> needed_for(const std::string& unknown) const;
   /// The derivation's equation with this label, or null.
   [[nodiscard]] const Equation* derivation_equation(const std::string& label) const;
+  /// A length sum's equation differentiated twice ("string s: acceleration" for "length of
+  /// string s"); empty for another label.
+  [[nodiscard]] std::string differentiated(const std::string& label) const;
   /// The names that can be checked (determined unknowns and defined quantities).
   [[nodiscard]] std::vector<std::string> unknowns() const;
   [[nodiscard]] const CheckOptions& options() const { return options_; }

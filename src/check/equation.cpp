@@ -34,6 +34,33 @@ std::size_t rank_of(const std::vector<std::vector<ex>>& columns, const std::vect
 // The balance as a student names it: "the LMB of A (x)".
 std::string balance_name(const Equation& e) { return e.label; }
 
+// The problem's names, and a constant a length sum keeps (`const`, `C`, `C_s`, `L`, `L_1`) where
+// the problem has no such name: a symbol of its own, made once per name.
+class WithConstants : public NameResolver {
+ public:
+  explicit WithConstants(const NameResolver& base) : base_(base) {}
+  std::optional<ex> resolve(std::string_view name) const override {
+    if (auto e = base_.resolve(name)) return e;
+    const bool constant = name == "const" || name == "C" || name == "L" ||
+                          ((name.rfind("C_", 0) == 0 || name.rfind("L_", 0) == 0) && name.size() > 2);
+    if (!constant) return std::nullopt;
+    for (const auto& [n, s] : made_)
+      if (n == name) return s;
+    made_.emplace_back(std::string(name), symbol(std::string(name)));
+    return made_.back().second;
+  }
+  std::vector<std::string> known_names() const override { return base_.known_names(); }
+  [[nodiscard]] std::vector<ex> constants() const {
+    std::vector<ex> out;
+    for (const auto& [n, s] : made_) out.push_back(s);
+    return out;
+  }
+
+ private:
+  const NameResolver& base_;
+  mutable std::vector<std::pair<std::string, ex>> made_;
+};
+
 }  // namespace
 
 // The source of a term as a student reads it: "a strand of string s at pA", "the weight of A",
@@ -84,6 +111,35 @@ EquationChecker::EquationChecker(const Analysis& analysis, const CheckOptions& o
   for (const auto& b : analysis.model.bodies) bodies_.push_back({b.name, b.has_mass ? b.mass : ex(0), b.accel});
   family(equations_, SymbolRole::acceleration, acceleration_);
   family(rate_equations_, SymbolRole::rate, rate_);
+  // The length sums: every coordinate is a column (one that no sum holds must not be taken for
+  // the constant), and the constant is no column.
+  for (const auto& c : analysis.system.constraints) {
+    const bool named = c.meaning.size() >= c.label.size() && c.meaning.compare(c.meaning.size() - c.label.size(), c.label.size(), c.label) == 0;
+    Equation e;
+    e.kind = Equation::Kind::constraint_position;
+    e.label = named ? c.meaning : c.label + ": " + c.meaning;
+    e.lhs = c.quantity;
+    e.rhs = 0;
+    e.terms = {c.quantity};
+    e.sources = {"the " + c.meaning};
+    position_equations_.push_back(e);
+    position_differentiated_.push_back(c.label + ": acceleration");
+  }
+  for (const auto& e : position_equations_) position_.equations.push_back(&e);
+  for (const auto& s : symbols_->all())
+    if (s->role == SymbolRole::coordinate) position_.unknowns.push_back(s->sym);
+  for (const auto& e : position_equations_) {
+    auto v = vector_of(substituted(e.lhs, definitions_), position_);
+    if (v) v->back() = 0;
+    position_.vectors.push_back(v ? *v : std::vector<ex>(position_.unknowns.size() + 1, 0));
+  }
+  if (!position_.vectors.empty() && position_.equations.size() <= max_family) position_.rank = rank_of(position_.vectors, nullptr);
+}
+
+std::string EquationChecker::differentiated(const std::string& label) const {
+  for (std::size_t i = 0; i < position_equations_.size(); ++i)
+    if (position_equations_[i].label == label) return position_differentiated_[i];
+  return {};
 }
 
 std::optional<std::vector<ex>> EquationChecker::vector_of(const ex& residual, const Family& f) const {
@@ -153,10 +209,11 @@ CheckResult EquationChecker::check(std::string_view text) const {
   const std::size_t eq = equals.front();
   const std::string_view sides[2] = {text.substr(0, eq), text.substr(eq + 1)};
   ex side[2];
+  const WithConstants names(*symbols_);
   for (int k = 0; k < 2; ++k) {
     if (sides[k].find_first_not_of(" \t") == std::string_view::npos)
       return finish(Verdict::invalid, "not_an_equation", std::string(k == 0 ? "the left" : "the right") + " side is empty");
-    const ParseResult parsed = parse_expression(sides[k], *symbols_, options_.limits);
+    const ParseResult parsed = parse_expression(sides[k], names, options_.limits);
     if (!parsed.value) {
       const ParseProblem& p = parsed.problems.front();
       const bool limit = p.message.find("too ") != std::string::npos || p.message.find("at most") != std::string::npos;
@@ -188,10 +245,17 @@ CheckResult EquationChecker::check(std::string_view text) const {
   const ex residual = unexpanded.expand();
   if (residual.is_zero())
     return finish(Verdict::incorrect, "trivial", "the equation holds whatever the forces and the motion are (it reads 0 = 0 once simplified): it says nothing about this problem");
-  // Which level: the rates' equations when it has rates and no accelerations or forces.
-  bool has_acceleration = false, has_rate = false;
+  // Which level: the rates' equations when it has rates and no accelerations or forces; the
+  // length sums' when it has neither, only coordinates (and a constant).
+  bool has_acceleration = false, has_rate = false, has_coordinate = false;
   for (const ex& u : acceleration_.unknowns) has_acceleration = has_acceleration || residual.has(u);
   for (const ex& u : rate_.unknowns) has_rate = has_rate || residual.has(u);
+  for (const ex& u : position_.unknowns) has_coordinate = has_coordinate || residual.has(u);
+  const std::vector<ex> constants = names.constants();
+  if (!constants.empty() && (has_acceleration || has_rate || !has_coordinate))
+    return finish(Verdict::invalid, "syntax", "'" + to_text(constants.front()) +
+                                                  "' is not a name of this problem: a constant is for a length sum, an equation in the positions alone");
+  if (has_coordinate && !has_acceleration && !has_rate && !position_.equations.empty()) return check_position(residual, r);
   const Family& f = has_rate && !has_acceleration ? rate_ : acceleration_;
   if (f.equations.size() > max_family)
     return finish(Verdict::undecided, "too_large", "this problem has too many equations to decide a combination of them (" +
@@ -231,6 +295,52 @@ CheckResult EquationChecker::check(std::string_view text) const {
   return r;
 }
 
+CheckResult EquationChecker::check_position(const ex& residual, CheckResult r) const {
+  const Family& f = position_;
+  if (f.equations.size() > max_family)
+    return r.conclude(Verdict::undecided, "too_large", "this problem has too many constraints to decide a combination of them (" +
+                                                           std::to_string(f.equations.size()) + ")");
+  auto v = vector_of(residual, f);
+  if (!v) return r.conclude(Verdict::incorrect, "not_linear", "the equation is not linear in the positions, as every length sum of this problem is");
+  // What is left is the constant the sum keeps: any constant will do (it depends on where the
+  // positions are measured from and on the string's length).
+  v->back() = 0;
+  r.method = "exact";
+  if (in_span(f.vectors, *v, f.rank)) {
+    r.verdict = Verdict::correct;
+    r.score = 1.0;
+    for (std::size_t i = 0; i < f.vectors.size(); ++i)
+      if (proportional(f.vectors[i], *v)) r.identified_as.push_back(f.equations[i]->label);
+    r.follows_from = r.identified_as.empty() ? fewest(f, *v) : std::vector<std::string>{r.identified_as.front()};
+    r.summary = r.identified_as.empty() ? "it follows from " + join(r.follows_from) : "it is the " + r.identified_as.front() + " kept constant";
+    if (r.identified_as.empty() && r.follows_from.size() > 1)
+      r.summary = "it follows from " + join(std::vector<std::string>(r.follows_from.begin(), r.follows_from.end() - 1)) + " and " + r.follows_from.back();
+    return r;
+  }
+  // The constraint whose positions these are, where there is one: its sum is not this one.
+  std::vector<const Equation*> sharing;
+  for (std::size_t i = 0; i < f.vectors.size(); ++i) {
+    bool inside = true, shares = false;
+    for (std::size_t j = 0; j + 1 < v->size(); ++j) {
+      if ((*v)[j].is_zero()) continue;
+      if (f.vectors[i][j].is_zero()) inside = false;
+      else shares = true;
+    }
+    if (inside && shares) sharing.push_back(f.equations[i]);
+  }
+  if (sharing.size() == 1) {
+    const std::string& what = sharing.front()->label;
+    r.findings.push_back({"length_sum", "this is not the " + what + " kept constant" +
+                                            (what.rfind("length of string", 0) == 0 ? ": count the strands at each point the string passes" : "")});
+  } else {
+    r.findings.push_back({"value", "the equation does not follow from the constraints of this problem"});
+  }
+  r.verdict = Verdict::incorrect;
+  r.score = 0.0;
+  r.summary = r.findings.front().message;
+  return r;
+}
+
 std::vector<std::string> EquationChecker::fewest(const Family& f, const std::vector<ex>& v) const {
   // All the equations that say something, then each left out while the rest still give it.
   std::vector<std::size_t> used;
@@ -256,6 +366,8 @@ std::vector<std::string> EquationChecker::needed_for(const ex& unknown, const ex
 
 const Equation* EquationChecker::equation(const std::string& label) const {
   for (const auto& e : equations_)
+    if (e.label == label) return &e;
+  for (const auto& e : position_equations_)
     if (e.label == label) return &e;
   for (const auto& e : rate_equations_)
     if (e.label == label) return &e;

@@ -29,8 +29,11 @@ class EquationChecker {
   /// The fewest of the derivation's equations that give `unknown = closed_form` (their
   /// labels, in the derivation's order); empty when none do or there are too many to decide.
   [[nodiscard]] std::vector<std::string> needed_for(const GiNaC::ex& unknown, const GiNaC::ex& closed_form) const;
-  /// The derivation's equation with this label (the rates' too), or null.
+  /// The derivation's equation with this label (the rates' and the length sums' too), or null.
   [[nodiscard]] const Equation* equation(const std::string& label) const;
+  /// A length sum's (a constraint at the level of positions) equation at the level of
+  /// accelerations: "string s: acceleration" for "length of string s"; empty for other labels.
+  [[nodiscard]] std::string differentiated(const std::string& label) const;
 
  private:
   // One family of equations the student's may follow from: those at the acceleration level
@@ -49,17 +52,23 @@ class EquationChecker {
   [[nodiscard]] static bool proportional(const std::vector<GiNaC::ex>& a, const std::vector<GiNaC::ex>& b);
   [[nodiscard]] std::vector<std::string> fewest(const Family& f, const std::vector<GiNaC::ex>& v) const;
   void diagnose(const Family& f, const std::vector<GiNaC::ex>& v, CheckResult& r) const;
+  /// An equation in the positions alone: one of the length sums (up to its constant)?
+  [[nodiscard]] CheckResult check_position(const GiNaC::ex& residual, CheckResult r) const;
 
   CheckOptions options_;
   std::shared_ptr<const SymbolTable> symbols_;
   GiNaC::exmap definitions_;
   std::vector<Equation> equations_, rate_equations_;  // copies: a checker may outlive its analysis
+  // Each constraint's constant quantity (the length sum 3 x_B - 2 x_A), labelled as the
+  // derivation prints it, and the label of its second derivative.
+  std::vector<Equation> position_equations_;
+  std::vector<std::string> position_differentiated_;
   struct BodyTerms {
     std::string name;
     GiNaC::ex mass, accel;  // its mass (0 for a massless one) and its acceleration's symbol
   };
   std::vector<BodyTerms> bodies_;
-  Family acceleration_, rate_;
+  Family acceleration_, rate_, position_;
 };
 
 }  // namespace tackle

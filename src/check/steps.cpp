@@ -136,7 +136,11 @@ SolutionGrade grade_solution(const Checker& checker, const Model& model, const s
     }
     r = s.kind == SolutionStep::Kind::equation ? checker.check_equation(s.text) : checker.check(s.unknown, s.text);
     if (r.verdict == Verdict::correct) {
-      for (const auto& l : r.follows_from) used.insert(l);
+      for (const auto& l : r.follows_from) {
+        used.insert(l);
+        // A length sum counts for its derivatives (differentiating it is mechanical).
+        if (const std::string d = checker.differentiated(l); !d.empty()) used.insert(d);
+      }
       if (s.kind == SolutionStep::Kind::answer) answered.insert(s.unknown);
     } else if (!g.first_wrong) {
       g.first_wrong = i + 1;
