@@ -8,9 +8,16 @@ plus numbers with units. The expected verdict of each is decided here, independe
 tackle: the answer and the hand-derived closed form are evaluated in exact rationals
 (Python's fractions) at random points; a number is compared with the value to 1 %.
 
+With --equations (or --both), the same for N distinct equations a student writes
+(`{"equation": ...}` lines): random whole-number combinations of the hand-derived balances and
+constraints, their terms spread over both sides, half of them with one coefficient changed,
+a term left out or a mass swapped. The expected verdict is decided here too: an equation is
+correct when its coefficients (of the unknowns, and the rest) are a combination of the hand
+equations', by exact rank in Fractions at two random points.
+
 Prints the whole-process time (best of --repeat runs, with the machine's load average before
 each), the time per check, and how many verdicts disagree (there must be none).
-Usage: bench/check_batch.py [--build DIR] [-n 10000] [--repeat 5] [--seed 1]
+Usage: bench/check_batch.py [--build DIR] [-n 10000] [--repeat 5] [--seed 1] [--equations | --both]
 """
 import argparse
 import json
@@ -103,15 +110,128 @@ def shapes(problem, unknown, rng):
     return text, f
 
 
+# Each problem's hand-derived equations (the examples' notes), each as {unknown: coefficient,
+# "1": the rest} with the coefficients as (text, Python function of the parameters); every
+# equation reads sum = 0.
+def _c(text, f):
+    return (text, f)
+
+
+EQUATIONS = {
+    "sample-12.3-two-mass-pulley": {
+        "unknowns": ["T", "ddot(x_A)", "ddot(x_B)"],
+        "equations": [
+            # LMB A: 2 T - F - m_A a_A = 0; LMB B: -3 T - m_B a_B = 0; length: 3 a_B - 2 a_A = 0
+            {"T": _c("2", lambda p: 2), "ddot(x_A)": _c("(-m_A)", lambda p: -p["m_A"]), "1": _c("(-F)", lambda p: -p["F"])},
+            {"T": _c("(-3)", lambda p: -3), "ddot(x_B)": _c("(-m_B)", lambda p: -p["m_B"])},
+            {"ddot(x_A)": _c("(-2)", lambda p: -2), "ddot(x_B)": _c("3", lambda p: 3)},
+        ],
+        "swap": ("m_A", "m_B"),
+        "classes": [[0, 1], [2]],  # forces; accelerations (only equations of one dimension combine)
+    },
+    "sample-12.7-suitcase": {
+        "unknowns": ["N_A", "N_B", "a_C"],
+        "equations": [
+            # x: -mu (N_A + N_B) - m a_C = 0; y: N_A + N_B - m g = 0;
+            # about G: (N_B - N_A) l/2 - mu h (N_A + N_B) = 0
+            {"N_A": _c("(-mu)", lambda p: -p["mu"]), "N_B": _c("(-mu)", lambda p: -p["mu"]), "a_C": _c("(-m)", lambda p: -p["m"])},
+            {"N_A": _c("1", lambda p: 1), "N_B": _c("1", lambda p: 1), "1": _c("(-m*g)", lambda p: -p["m"] * p["g"])},
+            {"N_A": _c("(-l/2 - mu*h)", lambda p: -p["l"] / 2 - p["mu"] * p["h"]),
+             "N_B": _c("(l/2 - mu*h)", lambda p: p["l"] / 2 - p["mu"] * p["h"])},
+        ],
+        "swap": ("l", "h"),
+        "classes": [[0, 1], [2]],  # forces; moments
+    },
+}
+
+
+def _rank(rows):
+    """The rank of a list of rows of Fractions (Gaussian elimination, exact)."""
+    m = [list(r) for r in rows]
+    rank, cols = 0, len(m[0]) if m else 0
+    for c in range(cols):
+        pivot = next((i for i in range(rank, len(m)) if m[i][c] != 0), None)
+        if pivot is None:
+            continue
+        m[rank], m[pivot] = m[pivot], m[rank]
+        for i in range(len(m)):
+            if i != rank and m[i][c] != 0:
+                f = m[i][c] / m[rank][c]
+                m[i] = [a - f * b for a, b in zip(m[i], m[rank])]
+        rank += 1
+    return rank
+
+
+def equation_line(problem, rng):
+    """A student's equation: (text, expected verdict), the verdict decided by exact rank."""
+    spec, params = EQUATIONS[problem], PROBLEMS[problem]["params"]
+    keys = spec["unknowns"] + ["1"]
+    members = rng.choice(spec["classes"])
+    while True:
+        cs = [rng.choice([-3, -2, -1, 0, 1, 2, 3]) if i in members else 0 for i in range(len(spec["equations"]))]
+        if any(cs):
+            break
+    # The combination's terms: for each key, the sum of c_i times equation i's coefficient.
+    terms = []  # (key, text, function)
+    for key in keys:
+        parts = [(c, eq[key]) for c, eq in zip(cs, spec["equations"]) if c and key in eq]
+        if not parts:
+            continue
+        text = " + ".join(f"{c}*{t}" for c, (t, _) in parts)
+        terms.append([key, f"({text})", lambda p, parts=parts: sum(c * f(p) for c, (_, f) in parts)])
+    wrong = rng.random() < 0.5
+    if wrong and terms:
+        i = rng.randrange(len(terms))
+        how = rng.choice(["coefficient", "drop", "swap"])
+        key, text, f = terms[i]
+        if how == "coefficient":
+            k = rng.choice([2, 3, -1])
+            terms[i] = [key, f"{k}*{text}", lambda p, f=f, k=k: k * f(p)]
+        elif how == "drop" and len(terms) > 1:
+            del terms[i]
+        else:
+            a, b = spec["swap"]
+            swapped = text.replace(a, "@").replace(b, a).replace("@", b)
+            terms[i] = [key, swapped, lambda p, f=f, a=a, b=b: f({**p, a: p[b], b: p[a]})]
+    # Spread over both sides, in a random order.
+    rng.shuffle(terms)
+    # A term moved to the right side is written turned: sum(left) = -(the rest).
+    left, right = [], []
+    for i, (key, text, _) in enumerate(terms):
+        word = text if key == "1" else f"{text}*{key}"
+        if i > 0 and rng.random() < 0.4:
+            right.append(f"-{word}")
+        else:
+            left.append(word)
+    text = " + ".join(left) + " = " + (" + ".join(right) if right else "0")
+    expected = "correct"
+    vectors = []
+    for _ in range(2):
+        p = random_point(params, rng)
+        rows = [[Fraction(eq[k][1](p)) if k in eq else Fraction(0) for k in keys] for eq in spec["equations"]]
+        mine = [Fraction(0)] * len(keys)
+        for t in terms:  # what is written: left minus right, and a right term is written turned
+            mine[keys.index(t[0])] += Fraction(t[2](p))
+        vectors.append(mine)
+        if all(x == 0 for x in mine) or _rank(rows + [mine]) != _rank(rows):
+            expected = "incorrect"
+    return text, expected
+
+
 def random_point(params, rng):
     return {k: Fraction(v) * Fraction(rng.randint(500, 2000), 1000) for k, v in params.items()}
 
 
-def make_batch(n, rng):
+def make_batch(n, rng, equations=False):
     """Lines of (problem, json line, expected verdict)."""
     out = []
     names = list(PROBLEMS)
     for i in range(n):
+        if equations:
+            problem = names[i % len(names)]
+            text, expected = equation_line(problem, rng)
+            out.append((problem, json.dumps({"id": f"e{i}", "equation": text}), expected))
+            continue
         problem = names[i % len(names)]
         spec = PROBLEMS[problem]
         unknown = rng.choice(list(spec["reference"]))
@@ -137,10 +257,21 @@ def main():
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--no-latex", action="store_true", help="pass --no-latex (no LaTeX echo of each answer)")
+    kind = ap.add_mutually_exclusive_group()
+    kind.add_argument("--equations", action="store_true", help="distinct equations instead of answers")
+    kind.add_argument("--both", action="store_true", help="answers, then equations, in one run")
     args = ap.parse_args()
+    wrong = 0
+    for equations in ([False, True] if args.both else [args.equations]):
+        wrong += run(args, equations)
+    return 1 if wrong else 0
+
+
+def run(args, equations):
     rng = random.Random(args.seed)
     tackle = os.path.join(args.build, "tackle")
-    lines = make_batch(args.n, rng)
+    lines = make_batch(args.n, rng, equations)
+    what = "equations" if equations else "answers"
     total_time, total_checks, wrong = 0.0, 0, 0
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
@@ -171,15 +302,15 @@ def main():
             rows.append((problem, len(mine), right_share, best, loads))
             total_time += best
             total_checks += len(mine)
-    print(f"| problem | answers (right share) | whole process, best of {args.repeat} | per check | load before runs |")
+    print(f"\n| problem | {what} (right share) | whole process, best of {args.repeat} | per check | load before runs |")
     print("|---|---|---|---|---|")
     for problem, count, share, best, loads in rows:
         print(f"| {problem} | {count} ({share:.0%}) | {best * 1000:.0f} ms | {best / count * 1e6:.1f} us | "
               f"{min(loads):.1f} to {max(loads):.1f} |")
-    print(f"\n{total_checks} distinct answers: {total_time * 1000:.0f} ms whole process in all "
+    print(f"\n{total_checks} distinct {what}: {total_time * 1000:.0f} ms whole process in all "
           f"({total_time / total_checks * 1e6:.1f} us a check); verdicts that disagree with the "
           f"independent evaluation: {wrong}")
-    return 1 if wrong else 0
+    return wrong
 
 
 if __name__ == "__main__":

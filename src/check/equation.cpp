@@ -4,6 +4,7 @@
 #include <set>
 
 #include "core/utf8.hpp"
+#include "expr/pairs.hpp"
 #include "expr/parse.hpp"
 #include "expr/print.hpp"
 #include "expr/rational.hpp"
@@ -109,8 +110,21 @@ EquationChecker::EquationChecker(const Analysis& analysis, const CheckOptions& o
     if (!f.vectors.empty() && f.equations.size() <= max_family) f.rank = rank_of(f.vectors, nullptr);
   };
   for (const auto& b : analysis.model.bodies) bodies_.push_back({b.name, b.has_mass ? b.mass : ex(0), b.accel});
+  // The point: each parameter at its own small rational (the same in every run).
+  {
+    int k = 0;
+    static const int primes[] = {3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71, 73};
+    for (const auto& s : symbols_->all())
+      if (s->role == SymbolRole::parameter) {
+        const int p = primes[k % 20], q = primes[(k * 7 + 3) % 20] + k / 20;
+        point_[s->sym] = numeric(p, q == p ? q + 1 : q);
+        ++k;
+      }
+  }
   family(equations_, SymbolRole::acceleration, acceleration_);
   family(rate_equations_, SymbolRole::rate, rate_);
+  prepare(acceleration_);
+  prepare(rate_);
   // The length sums: every coordinate is a column (one that no sum holds must not be taken for
   // the constant), and the constant is no column.
   for (const auto& c : analysis.system.constraints) {
@@ -134,6 +148,98 @@ EquationChecker::EquationChecker(const Analysis& analysis, const CheckOptions& o
     position_.vectors.push_back(v ? *v : std::vector<ex>(position_.unknowns.size() + 1, 0));
   }
   if (!position_.vectors.empty() && position_.equations.size() <= max_family) position_.rank = rank_of(position_.vectors, nullptr);
+  prepare(position_);
+}
+
+void EquationChecker::prepare(Family& f) const {
+  if (f.vectors.empty() || f.equations.size() > max_family) return;
+  // The vectors y with y . column = 0 for every column: the solutions of F^T y = 0, one per
+  // free variable of GiNaC's solution (that one 1, the others 0). Checked against the rank.
+  const std::size_t m = f.vectors.front().size(), k = f.vectors.size();
+  try {
+    matrix ft(static_cast<unsigned>(k), static_cast<unsigned>(m)), vars(static_cast<unsigned>(m), 1), zero(static_cast<unsigned>(k), 1);
+    std::vector<symbol> y;
+    for (std::size_t i = 0; i < m; ++i) {
+      y.emplace_back("y" + std::to_string(i));
+      vars(static_cast<unsigned>(i), 0) = y.back();
+    }
+    for (std::size_t j = 0; j < k; ++j)
+      for (std::size_t i = 0; i < m; ++i) ft(static_cast<unsigned>(j), static_cast<unsigned>(i)) = f.vectors[j][i];
+    const matrix sol = ft.solve(vars, zero);
+    std::vector<std::size_t> free;
+    for (std::size_t i = 0; i < m; ++i)
+      if (sol(static_cast<unsigned>(i), 0).is_equal(y[i])) free.push_back(i);
+    if (f.rank && free.size() == m - *f.rank) {
+      std::vector<std::vector<ex>> basis;
+      for (const std::size_t i : free) {
+        exmap pick;
+        for (const std::size_t j : free) pick[y[j]] = j == i ? 1 : 0;
+        std::vector<ex> b;
+        for (std::size_t r = 0; r < m; ++r) b.push_back(normal(sol(static_cast<unsigned>(r), 0).subs(pick)));
+        // Scaled by its denominators' lcm: polynomial entries, so that a product with a
+        // polynomial vector is decided by expanding it.
+        ex scale = 1;
+        for (const ex& x : b) scale = lcm(scale, x.denom());
+        for (ex& x : b) x = normal(x * scale).expand();
+        basis.push_back(std::move(b));
+      }
+      for (const auto& b : basis) f.orthogonal_at.push_back(at_point(b));
+      f.orthogonal = std::move(basis);
+    }
+  } catch (const std::exception&) {
+    // No basis: the rank decides, as before.
+  }
+  auto at = [&](const std::optional<std::vector<ex>>& v) { return v ? at_point(*v) : std::nullopt; };
+  for (std::size_t i = 0; i < f.equations.size(); ++i) {
+    const Equation* e = f.equations[i];
+    std::vector<std::optional<std::vector<ex>>> terms;
+    std::vector<std::optional<std::vector<numeric>>> terms_at;
+    for (const ex& t : e->terms) {
+      terms.push_back(vector_of(substituted(t, definitions_), f));
+      terms_at.push_back(at(terms.back()));
+    }
+    f.term_vectors.push_back(std::move(terms));
+    f.term_vectors_at.push_back(std::move(terms_at));
+    f.lhs_vectors.push_back(vector_of(substituted(e->lhs, definitions_), f));
+    f.lhs_vectors_at.push_back(at(f.lhs_vectors.back()));
+    f.vectors_at.push_back(at_point(f.vectors[i]));
+  }
+}
+
+std::optional<std::vector<numeric>> EquationChecker::at_point(const std::vector<ex>& v) const {
+  std::vector<numeric> out;
+  out.reserve(v.size());
+  try {
+    for (const ex& x : v) {
+      const ex y = x.subs(point_);
+      if (!is_a<numeric>(y) || !ex_to<numeric>(y).is_rational()) return std::nullopt;
+      out.push_back(ex_to<numeric>(y));
+    }
+  } catch (const std::exception&) {
+    return std::nullopt;  // a pole at the point
+  }
+  return out;
+}
+
+bool EquationChecker::in_family(const Family& f, const std::vector<ex>& v) const {
+  if (!f.orthogonal) return in_span(f.vectors, v, f.rank);
+  // Refuted at the point when a product is not zero there; else each product normalised.
+  if (const auto vp = at_point(v))
+    for (const auto& y : f.orthogonal_at)
+      if (y) {
+        numeric dot = 0;
+        for (std::size_t i = 0; i < vp->size(); ++i) dot += (*y)[i] * (*vp)[i];
+        if (!dot.is_zero()) return false;
+      }
+  const bool polynomial = std::all_of(v.begin(), v.end(), [](const ex& x) { return rational_polynomial(x); });
+  for (const auto& y : *f.orthogonal) {
+    ex dot = 0;
+    for (std::size_t i = 0; i < v.size(); ++i)
+      if (!y[i].is_zero() && !v[i].is_zero()) dot += y[i] * v[i];
+    // Polynomials: zero exactly when the expansion is; else normalised.
+    if (polynomial ? !dot.expand().is_zero() : !normal(dot).is_zero()) return false;
+  }
+  return true;
 }
 
 std::string EquationChecker::differentiated(const std::string& label) const {
@@ -166,7 +272,20 @@ std::optional<std::vector<ex>> EquationChecker::vector_of(const ex& residual, co
   return v;
 }
 
-bool EquationChecker::proportional(const std::vector<ex>& a, const std::vector<ex>& b) {
+namespace {
+
+// Whether two vectors at the point may be proportional: false when a 2x2 minor is not zero.
+bool may_be_proportional(const std::vector<numeric>& a, const std::vector<numeric>& b) {
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t j = i + 1; j < a.size(); ++j)
+      if (!(a[i] * b[j] - a[j] * b[i]).is_zero()) return false;
+  return true;
+}
+
+}  // namespace
+
+bool EquationChecker::proportional(const std::vector<ex>& a, const std::vector<ex>& b, const std::optional<std::vector<numeric>>* ap_given,
+                                   const std::optional<std::vector<numeric>>* bp_given) const {
   // Every 2x2 minor zero, and neither is zero.
   bool a_zero = true, b_zero = true;
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -174,6 +293,12 @@ bool EquationChecker::proportional(const std::vector<ex>& a, const std::vector<e
     b_zero = b_zero && b[i].is_zero();
   }
   if (a_zero || b_zero) return false;
+  // A minor not zero at the point: not proportional.
+  const std::optional<std::vector<numeric>> ap = ap_given ? *ap_given : at_point(a);
+  if (ap) {
+    const std::optional<std::vector<numeric>> bp = bp_given ? *bp_given : at_point(b);
+    if (bp && !may_be_proportional(*ap, *bp)) return false;
+  }
   for (std::size_t i = 0; i < a.size(); ++i)
     for (std::size_t j = i + 1; j < a.size(); ++j)
       if (!normal(a[i] * b[j] - a[j] * b[i]).is_zero()) return false;
@@ -264,12 +389,14 @@ CheckResult EquationChecker::check(std::string_view text) const {
   if (!v)
     return finish(Verdict::incorrect, "not_linear",
                   "the equation is not linear in the unknowns (forces and accelerations), as every balance and constraint of this problem is");
-  if (in_span(f.vectors, *v, f.rank)) {
+  if (in_family(f, *v)) {
     r.verdict = Verdict::correct;
     r.score = 1.0;
     r.method = "exact";
+    const auto v_at = at_point(*v);
     for (std::size_t i = 0; i < f.vectors.size(); ++i)
-      if (proportional(f.vectors[i], *v)) r.identified_as.push_back(f.equations[i]->label);
+      if (proportional(f.vectors[i], *v, i < f.vectors_at.size() ? &f.vectors_at[i] : nullptr, &v_at))
+        r.identified_as.push_back(f.equations[i]->label);
     if (!r.identified_as.empty()) {
       r.follows_from = {r.identified_as.front()};
       r.summary = "it is " + r.identified_as.front();
@@ -306,11 +433,13 @@ CheckResult EquationChecker::check_position(const ex& residual, CheckResult r) c
   // positions are measured from and on the string's length).
   v->back() = 0;
   r.method = "exact";
-  if (in_span(f.vectors, *v, f.rank)) {
+  if (in_family(f, *v)) {
     r.verdict = Verdict::correct;
     r.score = 1.0;
+    const auto v_at = at_point(*v);
     for (std::size_t i = 0; i < f.vectors.size(); ++i)
-      if (proportional(f.vectors[i], *v)) r.identified_as.push_back(f.equations[i]->label);
+      if (proportional(f.vectors[i], *v, i < f.vectors_at.size() ? &f.vectors_at[i] : nullptr, &v_at))
+        r.identified_as.push_back(f.equations[i]->label);
     r.follows_from = r.identified_as.empty() ? fewest(f, *v) : std::vector<std::string>{r.identified_as.front()};
     r.summary = r.identified_as.empty() ? "it follows from " + join(r.follows_from) : "it is the " + r.identified_as.front() + " kept constant";
     if (r.identified_as.empty() && r.follows_from.size() > 1)
@@ -342,6 +471,39 @@ CheckResult EquationChecker::check_position(const ex& residual, CheckResult r) c
 }
 
 std::vector<std::string> EquationChecker::fewest(const Family& f, const std::vector<ex>& v) const {
+  // Independent equations combine in one way only: its coefficients, solved for at the point,
+  // name the equations (a coefficient zero there is left out, and the rest confirmed exactly).
+  if (f.rank && *f.rank == f.vectors.size() && f.vectors_at.size() == f.vectors.size() &&
+      std::all_of(f.vectors_at.begin(), f.vectors_at.end(), [](const auto& x) { return x.has_value(); })) {
+    if (const auto v_at = at_point(v)) {
+      const unsigned rows = static_cast<unsigned>(v.size()), k = static_cast<unsigned>(f.vectors.size());
+      matrix a(rows, k), rhs(rows, 1), vars(k, 1);
+      std::vector<symbol> c;
+      for (unsigned j = 0; j < k; ++j) {
+        c.emplace_back("c" + std::to_string(j));
+        vars(j, 0) = c.back();
+        for (unsigned i = 0; i < rows; ++i) a(i, j) = (*f.vectors_at[j])[i];
+      }
+      for (unsigned i = 0; i < rows; ++i) rhs(i, 0) = (*v_at)[i];
+      try {
+        const matrix sol = a.solve(vars, rhs);
+        std::vector<std::size_t> support;
+        std::vector<std::vector<ex>> columns;
+        for (unsigned j = 0; j < k; ++j)
+          if (!sol(j, 0).is_zero()) {
+            support.push_back(j);
+            columns.push_back(f.vectors[j]);
+          }
+        if (!support.empty() && in_span(columns, v)) {
+          std::vector<std::string> out;
+          for (const std::size_t j : support) out.push_back(f.equations[j]->label);
+          return out;
+        }
+      } catch (const std::exception&) {
+        // Not solvable at the point: the way below.
+      }
+    }
+  }
   // All the equations that say something, then each left out while the rest still give it.
   std::vector<std::size_t> used;
   for (std::size_t i = 0; i < f.vectors.size(); ++i)
@@ -360,7 +522,7 @@ std::vector<std::string> EquationChecker::fewest(const Family& f, const std::vec
 std::vector<std::string> EquationChecker::needed_for(const ex& unknown, const ex& closed_form) const {
   if (acceleration_.equations.size() > max_family) return {};
   const auto v = vector_of(substituted(unknown - closed_form, definitions_), acceleration_);
-  if (!v || !in_span(acceleration_.vectors, *v, acceleration_.rank)) return {};
+  if (!v || !in_family(acceleration_, *v)) return {};
   return fewest(acceleration_, *v);
 }
 
@@ -383,16 +545,45 @@ void EquationChecker::diagnose(const Family& f, const std::vector<ex>& v, CheckR
     const auto w = vector_of(substituted(candidate, definitions_), f);
     return w && proportional(*w, v);
   };
+  // A candidate made from the family's own vectors: a x + b y (none when one is not linear).
+  using Vector = std::optional<std::vector<ex>>;
+  auto combined = [](const Vector& x, const ex& a, const Vector& y, const ex& b) -> Vector {
+    if (!x || !y) return std::nullopt;
+    std::vector<ex> out(x->size());
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = (a * (*x)[i] + b * (*y)[i]).expand();
+    return out;
+  };
+  const std::optional<std::vector<numeric>> v_at = at_point(v);
+  auto matches_vector = [&](const Vector& w) { return w && proportional(*w, v, nullptr, &v_at); };
+  // The same, refuted first at the point from the parts' values there (no expression made).
+  using Values = std::optional<std::vector<numeric>>;
+  auto may_match = [&](const Values& x, const numeric& a, const Values& y, const numeric& b) {
+    if (!x || !y || !v_at) return true;
+    std::vector<numeric> c(x->size());
+    for (std::size_t i = 0; i < c.size(); ++i) c[i] = a * (*x)[i] + b * (*y)[i];
+    return may_be_proportional(c, *v_at);
+  };
+  static const Values none;
   // Every term of every balance, for a force that acts on another body.
-  for (const Equation* e : f.equations) {
+  for (std::size_t ei = 0; ei < f.equations.size(); ++ei) {
+    const Equation* e = f.equations[ei];
     if (e->kind != Equation::Kind::lmb && e->kind != Equation::Kind::amb) continue;
     const ex whole = e->lhs - e->rhs;
+    const Vector whole_vector = f.vectors[ei];
+    const bool made = ei < f.term_vectors.size();  // the terms' vectors made once
+    const Values& whole_at = made ? f.vectors_at[ei] : none;
     for (std::size_t j = 0; j < e->terms.size() && j < e->sources.size(); ++j) {
       const std::string what = force_phrase(e->sources[j]);
-      if (matches(whole - e->terms[j])) say("missing_force", what + " is missing (" + balance_name(*e) + ")");
-      else if (matches(whole - 2 * e->terms[j])) say("force_sign", what + " has the wrong sign or direction (" + balance_name(*e) + ")");
+      const Vector term = made ? f.term_vectors[ei][j] : vector_of(substituted(e->terms[j], definitions_), f);
+      const Values& term_at = made ? f.term_vectors_at[ei][j] : none;
+      if (may_match(whole_at, 1, term_at, -1) && matches_vector(combined(whole_vector, 1, term, -1)))
+        say("missing_force", what + " is missing (" + balance_name(*e) + ")");
+      else if (may_match(whole_at, 1, term_at, -2) && matches_vector(combined(whole_vector, 1, term, -2)))
+        say("force_sign", what + " has the wrong sign or direction (" + balance_name(*e) + ")");
     }
-    if (!e->rhs.is_zero() && matches(e->lhs))
+    const Vector lhs_vector = made ? f.lhs_vectors[ei] : vector_of(substituted(e->lhs, definitions_), f);
+    const Values& lhs_at = made ? f.lhs_vectors_at[ei] : none;
+    if (!e->rhs.is_zero() && may_match(lhs_at, 1, lhs_at, 0) && matches_vector(lhs_vector))
       say("missing_inertia", e->kind == Equation::Kind::lmb ? "the mass times acceleration term is missing (" + balance_name(*e) + ")"
                                                             : "the rate of change of angular momentum is missing (" + balance_name(*e) + ")");
     // Another body's mass, or another body's acceleration, in the balance of one body.
@@ -408,18 +599,22 @@ void EquationChecker::diagnose(const Family& f, const std::vector<ex>& v, CheckR
           say("wrong_acceleration", "the acceleration is " + other.name + "'s, not " + own.name + "'s (" + balance_name(*e) + ")");
       }
     }
-    if (!e->rhs.is_zero() && matches(e->lhs + e->rhs))
+    if (!e->rhs.is_zero() && may_match(lhs_at, 2, whole_at, -1) && matches_vector(combined(lhs_vector, 2, whole_vector, -1)))
       say("inertia_sign", e->kind == Equation::Kind::lmb ? "the mass times acceleration term has the wrong sign (" + balance_name(*e) + ")"
                                                          : "the rate of change of angular momentum has the wrong sign (" + balance_name(*e) + ")");
     // A force from another balance added: it acts on another body.
-    for (const Equation* other : f.equations) {
+    for (std::size_t oi = 0; oi < f.equations.size(); ++oi) {
+      const Equation* other = f.equations[oi];
       if (other == e || other->kind != e->kind) continue;
       for (std::size_t j = 0; j < other->terms.size() && j < other->sources.size(); ++j) {
         const bool own = std::find(e->sources.begin(), e->sources.end(), other->sources[j]) != e->sources.end();
         if (own) continue;
+        const bool other_made = made && oi < f.term_vectors.size();
+        const Vector term = other_made ? f.term_vectors[oi][j] : vector_of(substituted(other->terms[j], definitions_), f);
+        const Values& term_at = other_made ? f.term_vectors_at[oi][j] : none;
         for (const int sign : {1, -1}) {
           const ex added = sign * other->terms[j];
-          if (!matches(whole + added)) continue;
+          if (!may_match(whole_at, 1, term_at, sign) || !matches_vector(combined(whole_vector, 1, term, sign))) continue;
           // Taking away one of the balance's own forces is a force missing (said above); the
           // same force as one of its own is one counted once too often (a strand more); else
           // a force on another body.

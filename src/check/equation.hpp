@@ -44,12 +44,32 @@ class EquationChecker {
     std::vector<GiNaC::ex> unknowns;
     std::vector<std::vector<GiNaC::ex>> vectors;  // each equation's coefficients: unknowns, then the rest
     std::optional<std::size_t> rank;              // of those columns (made once)
+    // A basis of the vectors orthogonal to every column (made once, when it can be): a vector
+    // is a combination of the columns exactly when its product with each of these is zero, a
+    // sum to normalise instead of a rank to eliminate. With each at the point (when defined).
+    std::optional<std::vector<std::vector<GiNaC::ex>>> orthogonal;
+    std::vector<std::optional<std::vector<GiNaC::numeric>>> orthogonal_at;
+    // Each equation's terms' vectors and its left side's (none where not linear), for the
+    // diagnosis: a balance with a term left out is its vector less the term's.
+    std::vector<std::vector<std::optional<std::vector<GiNaC::ex>>>> term_vectors;
+    std::vector<std::optional<std::vector<GiNaC::ex>>> lhs_vectors;
+    // The same at the point (none where not linear or not defined there).
+    std::vector<std::optional<std::vector<GiNaC::numeric>>> vectors_at, lhs_vectors_at;
+    std::vector<std::vector<std::optional<std::vector<GiNaC::numeric>>>> term_vectors_at;
   };
   [[nodiscard]] std::optional<std::vector<GiNaC::ex>> vector_of(const GiNaC::ex& residual, const Family& f) const;
   /// Whether `v` is a combination of `columns` (`rank`: theirs, when known).
   [[nodiscard]] bool in_span(const std::vector<std::vector<GiNaC::ex>>& columns, const std::vector<GiNaC::ex>& v,
                              std::optional<std::size_t> rank = std::nullopt) const;
-  [[nodiscard]] static bool proportional(const std::vector<GiNaC::ex>& a, const std::vector<GiNaC::ex>& b);
+  /// Whether `v` is a combination of the family's equations (exact; see Family::orthogonal).
+  [[nodiscard]] bool in_family(const Family& f, const std::vector<GiNaC::ex>& v) const;
+  /// `ap`, `bp`: the vectors at the point, when known (else made here).
+  [[nodiscard]] bool proportional(const std::vector<GiNaC::ex>& a, const std::vector<GiNaC::ex>& b,
+                                  const std::optional<std::vector<GiNaC::numeric>>* ap = nullptr,
+                                  const std::optional<std::vector<GiNaC::numeric>>* bp = nullptr) const;
+  /// `v` at the point (exact rationals), or none where an entry is not a rational number there.
+  [[nodiscard]] std::optional<std::vector<GiNaC::numeric>> at_point(const std::vector<GiNaC::ex>& v) const;
+  void prepare(Family& f) const;
   [[nodiscard]] std::vector<std::string> fewest(const Family& f, const std::vector<GiNaC::ex>& v) const;
   void diagnose(const Family& f, const std::vector<GiNaC::ex>& v, CheckResult& r) const;
   /// An equation in the positions alone: one of the length sums (up to its constant)?
@@ -57,6 +77,9 @@ class EquationChecker {
 
   CheckOptions options_;
   std::shared_ptr<const SymbolTable> symbols_;
+  // A point of the parameters (fixed rationals): a value there that is not zero proves an
+  // expression is not zero; a zero there proves nothing, and is decided exactly.
+  GiNaC::exmap point_;
   GiNaC::exmap definitions_;
   std::vector<Equation> equations_, rate_equations_;  // copies: a checker may outlive its analysis
   // Each constraint's constant quantity (the length sum 3 x_B - 2 x_A), labelled as the
