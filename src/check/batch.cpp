@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "check/fbd.hpp"
+
 #include "core/diagnostics.hpp"
 #include "core/files.hpp"
 #include "core/limits.hpp"
@@ -217,6 +219,7 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
     ++s.lines;
     std::string id = "line " + std::to_string(s.lines), unknown, answer;
     bool equation = false;
+    std::optional<std::string> fbd;  // a free body diagram's JSON
     std::vector<std::pair<std::string, std::string>> params = options.set;
     CheckResult r;
     std::string problem;
@@ -228,7 +231,13 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
         const auto j = nlohmann::json::parse(line);
         if (!j.is_object()) throw std::runtime_error("not an object");
         if (j.contains("id")) id = j["id"].is_string() ? j["id"].get<std::string>() : j["id"].dump(-1, ' ', false, J::error_handler_t::replace);
-        if (j.contains("equation")) {
+        if (j.contains("fbd")) {
+          // A free body diagram, as `check --fbd` reads it (JSON is YAML).
+          if (!j["fbd"].is_object()) problem = "\"fbd\" is not an object (expected {\"body\": ..., \"forces\": [...]})";
+          else fbd = j["fbd"].dump(-1, ' ', false, J::error_handler_t::replace);
+          if (j.contains("answer") || j.contains("equation")) problem = "a line has one of \"fbd\", \"equation\" and \"answer\"";
+          if (fbd) answer = *fbd;
+        } else if (j.contains("equation")) {
           // A step of a worked solution: an equation, checked against the derivation's.
           if (!j["equation"].is_string()) problem = "\"equation\" is not a string";
           else answer = j["equation"].get<std::string>();
@@ -266,6 +275,24 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
       r.verdict = Verdict::invalid;
       r.summary = "line " + std::to_string(s.lines) + ": " + problem;
       r.findings.push_back({"not_an_answer", r.summary});
+    } else if (fbd) {
+      if (!options.model) {
+        r.verdict = Verdict::invalid;
+        r.summary = "line " + std::to_string(s.lines) + ": free body diagrams are not checked here";
+        r.findings.push_back({"not_an_answer", r.summary});
+      } else {
+        try {
+          const StudentFbd student = read_fbd_file(*fbd, "fbd", *options.model);
+          std::vector<Diagnostic> problems;
+          r = fbd_result(check_fbd(*options.model, student, FbdRubric{}, problems));
+          if (!problems.empty()) r.summary = problems.front().message;
+          unknown = r.unknown;  // the test's name: "free body diagram of B"
+        } catch (const InputError& e) {
+          r.verdict = Verdict::invalid;
+          r.summary = "line " + std::to_string(s.lines) + ": " + (e.diagnostics().empty() ? std::string("not a free body diagram") : e.diagnostics().front().message);
+          r.findings.push_back({"not_an_answer", r.summary});
+        }
+      }
     } else if (equation) {
       r = checker.check_equation(answer);
     } else {

@@ -31,6 +31,9 @@ struct GradeOptions {
   // `params` object adds to them.
   std::vector<std::pair<std::string, std::string>> set;
   std::string source = "-";  // the batch's name in its errors ("-": standard input)
+  // The problem's model, for lines with a free body diagram (`{"id", "fbd": {...}}`); none:
+  // such a line is invalid.
+  const Model* model = nullptr;
 };
 
 /// At most this many of PrairieLearn's `format_errors` are listed (then how many more): the

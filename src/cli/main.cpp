@@ -358,6 +358,7 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
       else grade.points_for[p.substr(0, eq)] = v;
     }
     grade.source = o.batch;
+    grade.model = &analysis->model;
     // Read and graded line by line, each result written as it goes: memory stays bounded
     // whatever the size of the batch.
     std::unique_ptr<std::istream> batch_file;
@@ -546,7 +547,7 @@ int run(int argc, char** argv) {
                                 "A free body diagram the student drew (YAML: body: B, forces: [{name: T, at: pB, direction: [-1]}]): "
                                 "each force drawn, missing, extra or the wrong way, and a score");
     check->add_option("--rubric", o.rubric, "With --steps or --fbd: points for FBDs, balances, constraints and answers, and how an FBD is scored (YAML)");
-    batch_opt = check->add_option("--batch", o.batch, "JSON Lines file of {\"id\", \"unknown\", \"answer\"} or {\"id\", \"equation\"} "
+    batch_opt = check->add_option("--batch", o.batch, "JSON Lines file of {\"id\", \"unknown\", \"answer\"}, {\"id\", \"equation\"} or {\"id\", \"fbd\"} "
                                                       "(- for standard input)");
     auto* results_opt = check->add_option("--results", o.results, "With --batch or --steps: also write a grading platform's results file");
     check->add_option("--results-format", o.results_format, "The results file's platform")

@@ -157,6 +157,7 @@ class Problem {
     else throw py::value_error("results_format '" + results_format + "' (expected gradescope, prairielearn or jsonl)");
     grade.points = points;
     grade.set = settings(params);
+    grade.model = &analysis_->model;
     std::istringstream in(lines);
     std::ostringstream out;
     const tackle::BatchSummary s = tackle::check_batch(checker, in, out, grade);

@@ -4,8 +4,10 @@
 #include <catch2/catch.hpp>
 
 #include <map>
+#include <sstream>
 #include <memory>
 
+#include "check/batch.hpp"
 #include "check/fbd.hpp"
 #include "check/steps.hpp"
 
@@ -228,4 +230,32 @@ TEST_CASE("FBD: a worked solution's diagrams earn the rubric's fbds points", "[c
   const auto results = nlohmann::json::parse(solution_results(g, ResultsFormat::gradescope));
   CHECK(results["tests"][1]["name"] == "step 2: free body diagram of B");
   CHECK(results["tests"][1]["output"] == "incorrect: a strand of string s at pB is missing");
+}
+
+TEST_CASE("FBD: a batch line with a diagram is graded, with partial credit", "[check][fbd][batch]") {
+  const Analysis& a = analysis_for("sample-12.3-two-mass-pulley");
+  const Checker c(a);
+  // By hand: B has three strands at pB pulling along -x; one drawn earns a third.
+  std::istringstream in(R"J({"id": "a", "fbd": {"body": "B", "forces": [{"name": "T", "at": "pB", "direction": [-1]}]}}
+{"id": "b", "fbd": {"body": "Q", "forces": []}}
+{"id": "c", "fbd": 3}
+)J");
+  std::ostringstream out, results;
+  GradeOptions options;
+  options.model = &a.model;
+  options.points = 3;
+  const BatchSummary s = check_batch(c, in, out, results, options);
+  CHECK(s.lines == 3);
+  CHECK(s.points == Approx(1));
+  const auto grader = nlohmann::json::parse(results.str());
+  CHECK(grader["tests"][0]["name"] == "a: free body diagram of B");
+  CHECK(grader["tests"][0]["output"] == "incorrect: a strand of string s at pB is missing");
+  CHECK(grader["tests"][1]["output"] == "invalid: line 2: 'Q' is not a body of the problem (expected one of: A, B)");
+  CHECK(grader["tests"][2]["output"] == "invalid: line 3: \"fbd\" is not an object (expected {\"body\": ..., \"forces\": [...]})");
+  // Without the model (a caller that did not give it), the line is invalid, not a crash.
+  std::istringstream again(R"J({"id": "a", "fbd": {"body": "B"}}
+)J");
+  std::ostringstream out2, results2;
+  (void)check_batch(c, again, out2, results2, GradeOptions{});
+  CHECK(nlohmann::json::parse(out2.str())["summary"] == "line 1: free body diagrams are not checked here");
 }
