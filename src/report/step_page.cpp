@@ -27,8 +27,9 @@ li.step[data-verdict=invalid]{border-left-color:#ef6c00}li.step[data-verdict=und
 .step .fields{display:flex;flex-wrap:wrap;align-items:center;gap:.5em}
 .step input.text{flex:1;min-width:16em;font-family:"DejaVu Sans Mono",monospace;font-size:1em;padding:.3em .4em}
 .step select,.step input{font-size:1em;padding:.25em}
+.step .fields.diagram{display:block}
 .step .echo{margin:.4em 0 0 .2em;min-height:1.2em}
-.verdict{margin-top:.3em}.verdict .badge{display:inline-block;min-width:6em;text-align:center;border-radius:3px;padding:0 .4em;color:#fff;background:#757575;font-weight:600}
+.verdict{margin-top:.3em}.badge{display:inline-block;min-width:6em;text-align:center;border-radius:3px;padding:0 .4em;color:#fff;background:#757575;font-weight:600}
 .badge[data-verdict=correct]{background:#2e7d32}.badge[data-verdict=incorrect]{background:#c62828}.badge[data-verdict=invalid]{background:#ef6c00}
 .verdict ul{margin:.3em 0 0 1.2em;padding:0}
 table.forces{border-collapse:collapse;margin:.3em 0}table.forces th,table.forces td{padding:.15em .4em;text-align:left;border-bottom:1px solid #eee}
@@ -95,8 +96,9 @@ document.addEventListener("DOMContentLoaded", function () {
   function pointField(value) {
     const s = el("select", {class: "at", "aria-label": "point"});
     s.append(option("", "(not said)", !value));
-    for (const p of P.points) s.append(option(p, p, value === p));
-    for (const b of P.bodies) s.append(option(b, b + " (center of mass)", value === b));
+    // A body's name is its center of mass (among the points, or after them).
+    for (const p of P.points) s.append(option(p, P.bodies.includes(p) ? p + " (center of mass)" : p, value === p));
+    for (const b of P.bodies) if (!P.points.includes(b)) s.append(option(b, b + " (center of mass)", value === b));
     return s;
   }
   function forceRow(row, f) {
@@ -145,8 +147,7 @@ document.addEventListener("DOMContentLoaded", function () {
     box.textContent = "";
     box.append(el("span", {class: "badge", "data-verdict": r.verdict}, r.verdict), " ", el("span", {class: "summary"}, r.summary || ""));
     const more = [];
-    for (const name of r.identified_as || []) more.push("it is " + name);
-    if ((r.follows_from || []).length) more.push("follows from " + r.follows_from.join(", "));
+    // (what a correct equation is or follows from, its summary says; a diagram's forces, here)
     for (const f of r.forces || []) more.push(f.phrase + ": " + f.status.replace(/_/g, " ") + (f.drawn_as && f.drawn_as.length ? " (your " + f.drawn_as.join(", ") + ")" : ""));
     for (const x of r.extras || []) more.push(x.message);
     if (more.length) {
@@ -209,7 +210,8 @@ document.addEventListener("DOMContentLoaded", function () {
       for (const f of init.forces || [{}]) table.append(forceRow(row, f));
       const add = el("button", {type: "button"}, "Add a force");
       add.addEventListener("click", function () { table.append(forceRow(row, {})); });
-      fields.append("Body ", s, table, add);
+      fields.classList.add("diagram");
+      fields.append(el("label", {}, "Body ", s), table, el("div", {}, add));
     }
     row.append(fields, el("div", {class: "echo"}), el("div", {class: "verdict", "aria-live": "polite"}));
     list.append(row);

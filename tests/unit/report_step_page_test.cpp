@@ -37,7 +37,8 @@ TEST_CASE("Step page: sample 12.3's statement with its numbers, its sketch, its 
   const auto c = config_of(page);
   CHECK(c["dims"] == 1);
   CHECK(c["axes"] == nlohmann::json::array({"x"}));
-  CHECK(c["points"] == nlohmann::json::array({"C", "pA", "pB"}));
+  // The points described, and each body's center of mass (its name).
+  CHECK(c["points"] == nlohmann::json::array({"A", "B", "C", "pA", "pB"}));
   CHECK(c["bodies"] == nlohmann::json::array({"A", "B"}));
   std::vector<std::string> unknowns;
   for (const auto& u : c["unknowns"]) unknowns.push_back(u["name"]);

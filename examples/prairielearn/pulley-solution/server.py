@@ -44,8 +44,9 @@ def generate(data):
     problem = _problem()
     # The description's numbers, in the units it states them in (F in N, masses in kg).
     for p in json.loads(problem.derive(format="json", full=False))["parameters"]:
-        if p["kind"] == "parameter" and p.get("stated"):
-            data["params"][p["name"]] = p["stated"]["value"]
+        if p["kind"] == "parameter" and p["value"] is not None:
+            value = p["stated"]["value"] if "stated" in p else p["value"]  # stated: a unit other than SI's
+            data["params"][p["name"]] = int(value) if float(value).is_integer() else value
     for a in problem.answers():
         if a["name"] in ANSWERS:
             data["correct_answers"][a["name"]] = "%g %s" % (a["value"], a["unit"])
