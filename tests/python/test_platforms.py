@@ -19,6 +19,7 @@ import subprocess
 import sys
 import tempfile
 import threading
+import time
 import unittest
 import urllib.parse
 
@@ -258,6 +259,8 @@ class StepServer:
     def close(self):
         self.process.terminate()
         self.process.wait(timeout=10)
+        self.process.stdout.close()
+        self.process.stderr.close()
 
 
 class StepServerTest(unittest.TestCase):
@@ -349,9 +352,10 @@ class StepServerTest(unittest.TestCase):
 
 
 class RecordingProxy:
-    """A proxy that answers nothing and records every connection: the browser is told to send
+    """A proxy that answers nothing and records every request: the browser is told to send
     everything that is not for this machine through it, so a page that fetched anything from
-    the network would show here."""
+    the network would show here (with its address as Referer or Origin; the browser's own
+    requests, a clock or an update service, have neither)."""
 
     def __init__(self):
         self.sock = socket.socket()
@@ -369,7 +373,7 @@ class RecordingProxy:
                 return
             conn.settimeout(2)
             try:
-                self.seen.append(conn.recv(300))
+                self.seen.append(conn.recv(8192))
             except OSError:
                 self.seen.append(b"")
             conn.close()
@@ -388,43 +392,72 @@ class PageInChromiumTest(unittest.TestCase):
         if member not in container:
             self.fail(msg or "%r not in the page (%d characters)" % (member, len(container)))
 
-    def test_prefilled_page(self):
+    def open_page(self, problem, query):
+        """The DOM after the page was opened at its server with `query` and its steps checked,
+        and the requests the server saw; asserts that nothing went to the network."""
         browser = shutil.which("chromium") or shutil.which("chromium-browser")
-        server = StepServer(os.path.join(SOURCE, "examples/sample-12.3-two-mass-pulley.yaml"))
+        server = StepServer(os.path.join(SOURCE, "examples", problem))
         self.addCleanup(server.close)
         proxy = RecordingProxy()
         self.addCleanup(proxy.close)
-        query = urllib.parse.urlencode([("eq", LMB_A), ("eq", "T - F = m_A*ddot(x_A)"), ("grade", "1")])
         profile = tempfile.mkdtemp()
         self.addCleanup(shutil.rmtree, profile, True)
         r = subprocess.run([browser, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--user-data-dir=" + profile,
                             "--disable-background-networking", "--disable-component-update", "--disable-sync",
                             "--proxy-server=http://127.0.0.1:%d" % proxy.port, "--virtual-time-budget=15000",
-                            "--window-size=1000,1400", "--dump-dom", server.url + "?" + query],
+                            "--window-size=1000,1400", "--dump-dom", server.url + "?" + urllib.parse.urlencode(query)],
                            capture_output=True, text=True, timeout=120)
-        dom = r.stdout
-        self.assertIn('data-checked="true"', dom, r.stderr[-2000:])
+        self.assertIn('data-checked="true"', r.stdout, "the page did not finish checking its steps: " + r.stderr[-2000:])
+        self.assertEqual(r.stdout.count('class="katex-error"'), 0)
+        time.sleep(0.3)  # the server's log, read by a thread, has every request the browser made
+        requests = [re.search(r'"(\w+ [^ ?]+)', line).group(1) for line in list(server.log) if '"' in line]
+        # Nothing fetched from the network: the page names nothing elsewhere, its policy lets it
+        # connect to its own origin only, and no request of the page's reached the proxy.
+        status, _, page = server.request("GET", "/")
+        page = page.decode("utf-8")
+        self.assertIsNone(re.search(r'(src|href)="(https?:)?//|url\((https?:)?//', page))
+        self.assertIn("default-src 'none';", page)
+        self.assertIn("connect-src 'self';", page)
+        from_page = [q[:200] for q in proxy.seen if re.search(rb"(?im)^(referer|origin):", q)]
+        self.assertEqual(from_page, [])
+        return r.stdout, [q for q in requests if q != "GET /favicon.ico"]  # (the browser's own, if it asks)
+
+    def test_prefilled_page(self):
+        dom, requests = self.open_page("sample-12.3-two-mass-pulley.yaml",
+                                       [("eq", LMB_A), ("eq", "T - F = m_A*ddot(x_A)"), ("grade", "1")])
         # The two verdicts, beside their steps, in order.
         verdicts = re.findall(r'<li class="step" data-kind="equation" data-verdict="(\w+)"', dom)
         self.assertEqual(verdicts, ["correct", "incorrect"])
         self.assertIn("it is LMB A (x)", dom)  # the summary
         self.assertIn("a strand of string s at pA is missing", dom)
-        # Each echoed equation typeset by KaTeX, and no KaTeX error anywhere.
+        # Each echoed equation typeset by KaTeX (and no KaTeX error anywhere: open_page).
         echoes = re.findall(r'<div class="echo">(.*?)</div>\s*<div class="verdict"', dom, re.S)
         self.assertEqual(len(echoes), 2)
         for echo in echoes:
             self.assertIn('class="katex"', echo)
-        self.assertEqual(dom.count('class="katex-error"'), 0)
         # The whole solution graded (no rubric: 1 point a part): LMB A used, LMB B and the
         # string's acceleration missing: balances 1 of 2, constraints 0 of 1, answers 0 of 3.
         self.assertRegex(dom, r'id="grade"[^>]*data-score="0.5/3"')
         self.assertIn("LMB B (x), string s: acceleration", dom)
-        # Nothing fetched from the network: nothing reached the proxy, and the server saw the
-        # page, the two steps and the solution only.
-        self.assertEqual(proxy.seen, [])
-        requests = [re.search(r'"(\w+ [^ ?]+)', line).group(1) for line in server.log if '"' in line]
-        requests = [q for q in requests if q != "GET /favicon.ico"]  # the browser's own, if it asks
+        # The server saw the page, the two steps and the solution only.
         self.assertEqual(sorted(requests), ["GET /", "POST /solution", "POST /step", "POST /step"])
+
+    def test_prefilled_diagrams_in_2d(self):
+        # Sample 12.7 by hand: the suitcase slides to +x on the ground at A and B; its weight
+        # points down (270 degrees from x), each normal force up (90), each friction force
+        # against the sliding (180).
+        right = {"body": "suitcase", "forces": [
+            {"name": "W", "at": "suitcase", "angle": 270}, {"name": "N_A", "at": "A", "angle": 90},
+            {"name": "F_A", "at": "A", "angle": 180}, {"name": "N_B", "at": "B", "angle": 90},
+            {"name": "F_B", "at": "B", "angle": 180}]}
+        wrong = json.loads(json.dumps(right))
+        wrong["forces"][4]["angle"] = 0  # friction at B along the sliding
+        dom, requests = self.open_page("sample-12.7-suitcase.yaml", [("fbd", json.dumps(right)), ("fbd", json.dumps(wrong))])
+        verdicts = re.findall(r'<li class="step" data-kind="fbd" data-verdict="(\w+)"', dom)
+        self.assertEqual(verdicts, ["correct", "incorrect"])
+        self.assertIn("your F_B stands for", dom)
+        self.assertIn("points the other way", dom)
+        self.assertEqual(sorted(requests), ["GET /", "POST /step", "POST /step"])
 
 
 class ScaleOutTest(unittest.TestCase):
