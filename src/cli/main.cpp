@@ -27,6 +27,7 @@
 #include "report/key.hpp"
 #include "report/html.hpp"
 #include "report/sheet.hpp"
+#include "report/step_page.hpp"
 #include "core/files.hpp"
 #include "report/sweep.hpp"
 #include "ruleset/builtin_rules.hpp"
@@ -129,6 +130,7 @@ struct Options {
   int sig_figs = 0;
   bool require_simplified = false, no_latex = false, reveal = false, top_level_score = false;
   bool figures = false;  // sheet
+  std::string endpoint;  // page
   std::vector<std::string> points_text, set_values;
 };
 
@@ -233,6 +235,14 @@ int run_sheet(const Options& o, const tackle::RuleSet& rules) {
               << " no 'statement'; the sheet states the problem from the description (its bodies, connections and given "
                  "values)\n";
   return emit(tackle::write_sheet(entries, formats.at(o.key_format), o.figures), o.out);
+}
+
+// A page to try the step checker: the problem and a worked-solution form posting to a checker.
+int run_page(const Options& o, const tackle::RuleSet& rules) {
+  const auto whole = tackle::analyze_file(o.file, rules);
+  const tackle::Analysis* analysis = the_phase(*whole, o);
+  if (!analysis) return 2;
+  return emit(tackle::step_page(tackle::explain(*analysis), analysis->model, o.endpoint), o.out);
 }
 
 int run_isolate(const Options& o, const tackle::RuleSet& rules) {
@@ -503,6 +513,22 @@ int run(int argc, char** argv) {
     sheet->add_option("-o,--output", o.out, "Write to this file instead of standard output");
   });
 
+  auto* page = add("page", "A page to try the step checker: the problem, its sketch and a worked-solution form whose "
+                           "steps a checker (scripts/step-server) judges as they are typed",
+                   [&](CLI::App* page) {
+    page->add_option("file", o.file, "Problem description (YAML)")->required();
+    page->add_option("--endpoint", o.endpoint, "Where the checker answers (POST {endpoint}/step and {endpoint}/solution): "
+                                               "a path or an http(s) URL; default: the page's own location")
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+              const std::string problem = tackle::endpoint_problem(text);
+              return problem.empty() ? std::string() : "'" + tackle::printable(text) + "' " + problem;
+            },
+            "URL"));
+    page->add_option("-o,--output", o.out, "Write to this file instead of standard output");
+    with_phase(page);
+  });
+
   auto* sweep = add("sweep", "Evaluate the closed forms over a range of one parameter: CSV, SVG plot, pgfplots", [&](CLI::App* sweep) {
     sweep->add_option("file", o.file, "Problem description (YAML)")->required();
     sweep->add_option("--vary", o.vary, "name=start:end:count, in the parameter's unit (default: the description's sweep)");
@@ -616,6 +642,7 @@ int run(int argc, char** argv) {
     const tackle::RuleSet rules = tackle::load_rules(o.rules_dir, tackle::RuleLoading::when_used, tackle::builtin_rules());
     if (key->parsed()) return run_key(o, rules);
     if (sheet->parsed()) return run_sheet(o, rules);
+    if (page->parsed()) return run_page(o, rules);
     if (isolate->parsed()) return run_isolate(o, rules);
     if (sweep->parsed()) return run_sweep(o, rules);
     if (simulate->parsed()) return run_simulate(o, rules);

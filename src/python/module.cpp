@@ -18,6 +18,7 @@
 #include "expr/print.hpp"
 #include "pipeline/pipeline.hpp"
 #include "report/key.hpp"
+#include "report/step_page.hpp"
 #include "ruleset/builtin_rules.hpp"
 
 namespace py = pybind11;
@@ -146,6 +147,10 @@ class Problem {
     return py::make_tuple(py::module_::import("json").attr("loads")(tackle::solution_json(g)), tackle::solution_results(g, format));
   }
 
+  // The page to try the step checker (`tackle page`): its form posts to `endpoint` (a path or an
+  // http(s) URL; empty: the page's own location). ValueError for an endpoint it cannot use.
+  [[nodiscard]] std::string page(const std::string& endpoint) const { return tackle::step_page(derivation_, analysis_->model, endpoint); }
+
   // JSON Lines in; (the results a line, the platform's results file) out.
   [[nodiscard]] py::tuple check_batch(const std::string& lines, const std::string& results_format, double points,
                                       const py::dict& params, double tolerance, bool reveal) const {
@@ -219,6 +224,9 @@ PYBIND11_MODULE(tackle, m) {
            "verdict, summary, each force's status, extras, findings, score")
       .def("check_solution", &Problem::check_solution, py::arg("solution"), py::arg("rubric") = "", py::arg("results_format") = "gradescope",
            "Grade a worked solution (YAML: steps of fbd, equation and answer): (the grade as a dict, the platform's results file)")
+      .def("page", &Problem::page, py::arg("endpoint") = "",
+           "A self-contained HTML page: the problem and a worked-solution form whose steps it posts to "
+           "{endpoint}/step and {endpoint}/solution (the page's own location by default)")
       .def("check_batch", &Problem::check_batch, py::arg("lines"), py::arg("results_format") = "gradescope",
            py::arg("points") = 1.0, py::arg("params") = py::dict(), py::arg("tolerance") = 0.01, py::arg("reveal") = false,
            "Check JSON Lines of answers: (results a line, the platform's results file)");

@@ -125,11 +125,11 @@ std::string html_math(const std::string& tex, bool display) {
   return std::string("<span class=\"math") + (display ? " display" : "") + "\">" + html_escape(tex) + "</span>";
 }
 
-std::string html_page(const std::string& title, const std::string& body) {
+std::string html_page(const std::string& title, const std::string& body, const std::string& head) {
   const Assets& a = assets();
   return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
          html_escape(title) + "</title>\n<style>\n" + a.css + "\n</style>\n<style>\n" + style + "</style>\n<script>\n" + a.js +
-         "\n</script>\n<script>\n" + render + "</script>\n</head>\n<body>\n" + body + "</body>\n</html>\n";
+         "\n</script>\n<script>\n" + render + "</script>\n" + head + "</head>\n<body>\n" + body + "</body>\n</html>\n";
 }
 
 }  // namespace tackle

@@ -18,7 +18,8 @@ struct SetupError : std::runtime_error {
 [[nodiscard]] std::string html_math(const std::string& tex, bool display = false);
 /// A whole page: `body` (HTML) under `title`, with KaTeX's script, style and fonts inlined
 /// from TACKLE_KATEX_DIR (default: where libjs-katex installs it). Throws SetupError
-/// naming the file when KaTeX is not there.
-[[nodiscard]] std::string html_page(const std::string& title, const std::string& body);
+/// naming the file when KaTeX is not there. `head`: more of the page's head (HTML), after
+/// KaTeX and the common style (a page's own policy, style and script).
+[[nodiscard]] std::string html_page(const std::string& title, const std::string& body, const std::string& head = "");
 
 }  // namespace tackle

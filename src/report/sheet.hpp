@@ -21,5 +21,8 @@ struct SheetEntry {
 /// free body diagrams under its statement (left out by default: they are part of the answer);
 /// a 1-D or 2-D mechanism's sketch is always drawn there.
 [[nodiscard]] std::string write_sheet(const std::vector<SheetEntry>& entries, Format f, bool figures = false);
+/// The first problem of `e` as a sheet shows it, in HTML without its heading or the page around
+/// it: the statement with its numbers (math for KaTeX), the mechanism's sketch, what is asked.
+[[nodiscard]] std::string sheet_problem_html(const SheetEntry& e, bool figures = false);
 
 }  // namespace tackle

@@ -114,6 +114,22 @@ TEST_CASE("CLI: exit codes: 0 ok, 1 input error, 2 usage", "[cli]") {
   CHECK(missing.err == "no/such/file.yaml: cannot read the file\n");
 }
 
+TEST_CASE("CLI: page writes one self-contained page; a bad endpoint is a usage error, a bad file an input error", "[cli][page]") {
+  const Run page = run_tackle("page " + examples + "sample-12.3-two-mass-pulley.yaml --endpoint /tackle");
+  CHECK(page.code == 0);
+  CHECK(page.out.rfind("<!DOCTYPE html>", 0) == 0);
+  CHECK(page.out.find("\"endpoint\":\"/tackle\"") != std::string::npos);
+  CHECK(page.out.find("katex.render") != std::string::npos);
+  const Run endpoint = run_tackle("page " + examples + "sample-12.3-two-mass-pulley.yaml --endpoint \"/a; script-src *\"");
+  CHECK(endpoint.code == 2);
+  CHECK(endpoint.err.find("--endpoint") != std::string::npos);
+  CHECK(endpoint.err.find("';'") != std::string::npos);
+  const Run missing = run_tackle("page no/such/file.yaml");
+  CHECK(missing.code == 1);
+  CHECK(missing.err == "no/such/file.yaml: cannot read the file\n");
+  CHECK(run_tackle("page").code == 2);
+}
+
 // Only the subcommand named gets its options defined (start-up): what each one accepts and
 // says must not depend on that.
 TEST_CASE("CLI: each subcommand's options are there whichever way it is named", "[cli]") {
@@ -127,7 +143,7 @@ TEST_CASE("CLI: each subcommand's options are there whichever way it is named", 
     CHECK(isolate.out.find("--require-simplified") == std::string::npos);
   }
   const Run top = run_tackle("--help");
-  for (const char* sub : {"derive", "solve", "isolate", "key", "sheet", "sweep", "simulate", "check"})
+  for (const char* sub : {"derive", "solve", "isolate", "key", "sheet", "page", "sweep", "simulate", "check"})
     CHECK(top.out.find(std::string("  ") + sub) != std::string::npos);
   const Run needs = run_tackle("check " + examples + "sample-12.8-sign-board.yaml --answer x");
   CHECK(needs.code == 2);

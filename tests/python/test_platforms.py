@@ -1,20 +1,34 @@
-"""The PrairieLearn question and the Gradescope autograder in examples/, driven with the data
-shapes the platforms document (no platform needed). Sample 12.3: T = 2 F m_B/(9 m_A + 4 m_B).
+"""The PrairieLearn questions and the Gradescope autograders in examples/, driven with the data
+shapes the platforms document (no platform needed), the step server (scripts/step-server) and
+the page it serves, in headless Chromium.
+
+Sample 12.3 by hand (the example's notes): LMB A: 2 T - F = m_A ddot(x_A); LMB B:
+-3 T = m_B ddot(x_B); the string's length 3 x_B - 2 x_A = const, so 3 ddot(x_B) = 2 ddot(x_A);
+T = 2 F m_B/(9 m_A + 4 m_B) (20 N at F = 130 N, m_A = m_B = 40 kg). The free body diagrams (A at
+x_A = -1 left of the fixed pulley C at 0, B at x_B = 1 right of it): A has two strands at pA
+pulling toward +x (to C) and F at A toward -x; B three strands at pB pulling toward -x.
 Usage: test_platforms.py SOURCE_DIR TACKLE_PROGRAM"""
+import http.client
 import importlib.util
 import json
 import os
+import re
+import shutil
+import socket
 import subprocess
 import sys
 import tempfile
+import threading
+import time
 import unittest
+import urllib.parse
 
 SOURCE = sys.argv.pop(1)
 TACKLE = sys.argv.pop(1)
 
 
-def load_server():
-    path = os.path.join(SOURCE, "examples/prairielearn/pulley-tension/server.py")
+def load_server(question="pulley-tension"):
+    path = os.path.join(SOURCE, "examples/prairielearn", question, "server.py")
     spec = importlib.util.spec_from_file_location("server", path)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
@@ -83,6 +97,367 @@ class GradescopeTest(unittest.TestCase):
                                     '"T": "2*F*m_B/(9*m_A + 4*m_B)"}')
         self.assertEqual([t["name"] for t in extra["tests"]], ["answers.json: T"])
         self.assertEqual(sum(t["score"] for t in extra["tests"]), 10)
+
+
+# A worked solution of sample 12.3, by hand (above): each step correct.
+LMB_A = "2*T - F = m_A*ddot(x_A)"
+LMB_B = "-3*T = m_B*ddot(x_B)"
+LENGTH = "3*x_B - 2*x_A = const"
+ACCELERATION = "3*ddot(x_B) = 2*ddot(x_A)"
+T_CLOSED = "2*F*m_B/(9*m_A + 4*m_B)"
+# ... and wrong ones: B's balance with one strand of the three missing.
+LMB_B_TWO_STRANDS = "-2*T = m_B*ddot(x_B)"
+FBD_A = {"body": "A", "forces": [{"name": "T", "at": "pA", "direction": [1]}, {"name": "T", "at": "pA", "direction": [1]},
+                                 {"name": "F", "at": "A", "direction": [-1]}]}
+FBD_B = {"body": "B", "forces": [{"name": "T", "at": "pB", "direction": [-1]}] * 3}
+
+
+class PrairieLearnSolutionTest(unittest.TestCase):
+    """examples/prairielearn/pulley-solution: the steps in step1..step6, T, graded as a whole with
+    its rubric (balances 4, constraints 2, answers 4)."""
+
+    def submit(self, server, answers):
+        data = new_data()
+        server.generate(data)
+        data["submitted_answers"] = dict({"step%d" % k: "" for k in range(1, 7)}, **answers)
+        server.parse(data)
+        if not data["format_errors"]:
+            server.grade(data)
+        return data
+
+    def test_generate(self):
+        server = load_server("pulley-solution")
+        data = new_data()
+        server.generate(data)
+        # The description's numbers, and T there: 2*130*40/(9*40 + 4*40) = 20 N.
+        self.assertEqual(data["params"], {"F": 130, "m_A": 40, "m_B": 40})
+        self.assertEqual(data["correct_answers"]["T"], "20 N")
+
+    def test_whole_solution(self):
+        server = load_server("pulley-solution")
+        data = self.submit(server, {"step1": LMB_A, "step2": LMB_B, "step3": LENGTH, "step4": ACCELERATION, "T": T_CLOSED})
+        self.assertEqual(data["format_errors"], {})
+        self.assertEqual(data["score"], 1.0)
+        for name in ("step1", "step2", "step3", "step4", "T"):
+            self.assertEqual(data["partial_scores"][name]["score"], 1.0, name)
+        self.assertIn("LMB A (x)", data["feedback"]["step1"])
+        self.assertIn("Missing (needed for T): none", data["feedback"]["solution"])
+
+    def test_partial_solution(self):
+        server = load_server("pulley-solution")
+        # LMB A right, B's balance a strand short, no constraint, T right as a number: balances
+        # 1 of 2 (2 of 4 points), constraints 0 of 1 (0 of 2), answers 1 of 1 (4 of 4): 6 of 10.
+        data = self.submit(server, {"step1": LMB_A, "step2": LMB_B_TWO_STRANDS, "T": "20 N"})
+        self.assertEqual(data["format_errors"], {})
+        self.assertAlmostEqual(data["score"], 0.6)
+        self.assertEqual(data["partial_scores"]["step2"]["score"], 0.0)
+        self.assertIn("a strand of string s at pB is missing", data["feedback"]["step2"])
+        self.assertNotIn("3*T", data["feedback"]["step2"])  # never the correct equation
+        self.assertIn("LMB B (x)", data["feedback"]["solution"])
+        self.assertIn("string s: acceleration", data["feedback"]["solution"])
+        # Nothing written but T: the answer's points only.
+        data = self.submit(server, {"T": T_CLOSED})
+        self.assertAlmostEqual(data["score"], 0.4)
+
+    def test_unreadable_steps_are_format_errors(self):
+        server = load_server("pulley-solution")
+        data = self.submit(server, {"step1": LMB_A, "step2": "2*T - F", "step3": "2*T = Q", "T": "2*F*"})
+        self.assertEqual(sorted(data["format_errors"]), ["T", "step2", "step3"])
+        self.assertIn("=", data["format_errors"]["step2"])
+        self.assertEqual(data["partial_scores"], {})  # not graded: no attempt charged
+
+
+class GradescopeSolutionTest(unittest.TestCase):
+    """examples/gradescope/pulley-solution: solution.yaml graded with its rubric (fbds 2,
+    balances 3, constraints 2, answers 3)."""
+
+    def run_autograder(self, solution):
+        root = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, root)
+        if solution is not None:
+            os.makedirs(os.path.join(root, "submission"))
+            with open(os.path.join(root, "submission/solution.yaml"), "w") as f:
+                f.write(solution if isinstance(solution, str) else json.dumps({"steps": solution}, indent=1))
+        env = dict(os.environ, AUTOGRADER=root, TACKLE=TACKLE)
+        subprocess.run([os.path.join(SOURCE, "examples/gradescope/pulley-solution/run_autograder")], env=env, check=True)
+        with open(os.path.join(root, "results/results.json")) as f:
+            return json.load(f)
+
+    def parts(self, results):
+        return {t["name"]: t["score"] for t in results["tests"] if not t["name"].startswith("step ")}
+
+    def test_whole_solution(self):
+        r = self.run_autograder([{"fbd": FBD_A}, {"fbd": FBD_B}, {"equation": LMB_A}, {"equation": LMB_B},
+                                 {"equation": LENGTH}, {"answer": T_CLOSED, "unknown": "T"}])
+        self.assertEqual(self.parts(r), {"fbds": 2, "balances": 3, "constraints": 2, "answers": 3})
+        self.assertEqual(r["score"], 10)
+        steps = [t for t in r["tests"] if t["name"].startswith("step ")]
+        self.assertEqual(len(steps), 6)
+        self.assertTrue(all(t["status"] == "passed" for t in steps), steps)
+        self.assertEqual(steps[1]["name"], "step 2: free body diagram of B")
+
+    def test_partial_solution(self):
+        # A's diagram right, B's missing: 1 of 2; LMB A right, B's a strand short: 1.5 of 3; no
+        # constraint: 0 of 2; T right as a number: 3 of 3. 5.5 in all.
+        r = self.run_autograder([{"fbd": FBD_A}, {"equation": LMB_A}, {"equation": LMB_B_TWO_STRANDS}, {"answer": "20 N", "unknown": "T"}])
+        self.assertEqual(self.parts(r), {"fbds": 1, "balances": 1.5, "constraints": 0, "answers": 3})
+        self.assertEqual(r["score"], 5.5)
+        wrong = [t for t in r["tests"] if t["name"].startswith("step 3")][0]
+        self.assertEqual(wrong["status"], "failed")
+        self.assertIn("a strand of string s at pB is missing", wrong["output"])
+        # B's diagram a strand short: 2 of its 3 forces.
+        r = self.run_autograder([{"fbd": dict(FBD_B, forces=FBD_B["forces"][:2])}])
+        step = r["tests"][0]
+        self.assertEqual(step["status"], "failed")
+        self.assertIn("a strand of string s at pB is missing", step["output"])
+
+    def test_missing_and_invalid_submissions(self):
+        r = self.run_autograder(None)
+        self.assertEqual((r["tests"], r["score"]), ([], 0))
+        self.assertIn("No solution.yaml was submitted", r["output"])
+        # A body the problem does not have, and a step of no known kind: located in solution.yaml.
+        r = self.run_autograder("steps:\n  - fbd: {body: Q, forces: []}\n  - frobnicate: 1\n")
+        self.assertEqual((r["tests"], r["score"]), ([], 0))
+        self.assertIn("could not be graded", r["output"])
+        self.assertRegex(r["output"], r"solution\.yaml:2:\d+: .*Q")
+        self.assertRegex(r["output"], r"solution\.yaml:3:\d+: ")
+        r = self.run_autograder("{not yaml: [")
+        self.assertEqual(r["tests"], [])
+        self.assertIn("solution.yaml:", r["output"])
+
+
+class StepServer:
+    """scripts/step-server on a free port of 127.0.0.1, with every request it saw."""
+
+    def __init__(self, problem):
+        self.process = subprocess.Popen([sys.executable, os.path.join(SOURCE, "scripts/step-server"), problem, "--port", "0",
+                                         "--build", os.path.dirname(TACKLE)],
+                                        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        self.url = self.process.stdout.readline().strip()
+        if not self.url:
+            raise RuntimeError("the step server did not start: " + self.process.stderr.read())
+        self.port = urllib.parse.urlparse(self.url).port
+        self.log = []
+        threading.Thread(target=self._read_log, daemon=True).start()
+
+    def _read_log(self):
+        for line in self.process.stderr:
+            self.log.append(line)
+
+    def request(self, method, path, body=None, headers=None):
+        c = http.client.HTTPConnection("127.0.0.1", self.port, timeout=30)
+        c.request(method, path, body=body, headers=headers or {})
+        r = c.getresponse()
+        data = r.read()
+        c.close()
+        return r.status, r.getheader("Content-Type"), data
+
+    def post(self, path, obj):
+        status, _, data = self.request("POST", path, json.dumps(obj), {"Content-Type": "application/json"})
+        return status, json.loads(data)
+
+    def close(self):
+        self.process.terminate()
+        self.process.wait(timeout=10)
+        self.process.stdout.close()
+        self.process.stderr.close()
+
+
+class StepServerTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.server = StepServer(os.path.join(SOURCE, "examples/sample-12.3-two-mass-pulley.yaml"))
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.server.close()
+
+    def step(self, obj):
+        status, r = self.server.post("/step", obj)
+        self.assertEqual(status, 200, r)
+        return r
+
+    def test_page(self):
+        status, content_type, data = self.server.request("GET", "/")
+        self.assertEqual(status, 200)
+        self.assertTrue(content_type.startswith("text/html"))
+        page = data.decode("utf-8")
+        self.assertIn("<h1>Sample 12.3: a two-mass pulley system</h1>", page)
+        self.assertIn("id=\"tackle-problem\"", page)
+
+    def test_equations(self):
+        r = self.step({"kind": "equation", "equation": LMB_A})
+        self.assertEqual((r["verdict"], r["identified_as"]), ("correct", ["LMB A (x)"]))
+        self.assertTrue(r["latex"])
+        r = self.step({"kind": "equation", "equation": "T - F = m_A*ddot(x_A)"})
+        self.assertEqual(r["verdict"], "incorrect")
+        self.assertIn("a strand of string s at pA is missing", r["summary"])
+        self.assertEqual(r["findings"][0]["code"], "missing_force")
+        self.assertEqual(self.step({"kind": "equation", "equation": LENGTH})["verdict"], "correct")
+        self.assertEqual(self.step({"kind": "equation", "equation": "2*T - F"})["verdict"], "invalid")
+
+    def test_answers(self):
+        self.assertEqual(self.step({"kind": "answer", "unknown": "T", "answer": T_CLOSED})["verdict"], "correct")
+        self.assertEqual(self.step({"kind": "answer", "unknown": "T", "answer": "20 N"})["verdict"], "correct")
+        self.assertEqual(self.step({"kind": "answer", "unknown": "T", "answer": "30 N"})["verdict"], "incorrect")
+        self.assertEqual(self.step({"kind": "answer", "unknown": "Q", "answer": "1"})["verdict"], "invalid")
+
+    def test_free_body_diagrams(self):
+        self.assertEqual(self.step({"kind": "fbd", "fbd": FBD_B})["verdict"], "correct")
+        r = self.step({"kind": "fbd", "fbd": dict(FBD_B, forces=FBD_B["forces"][:2])})
+        self.assertEqual(r["verdict"], "incorrect")
+        self.assertIn("a strand of string s at pB is missing", r["summary"])
+        # The student's mistakes in the data are a verdict, not a server error.
+        r = self.step({"kind": "fbd", "fbd": {"body": "Q", "forces": [{"name": "T", "at": "nowhere", "direction": [1]}]}})
+        self.assertEqual(r["verdict"], "invalid")
+        self.assertIn("Q", r["summary"])
+        self.assertEqual(self.step({"kind": "fbd", "fbd": {"body": "B", "forces": [{"name": "T", "direction": [1, 2]}]}})["verdict"], "invalid")
+
+    def test_solution(self):
+        status, g = self.server.post("/solution", {"steps": [{"equation": LMB_A}, {"equation": LMB_B}, {"equation": ACCELERATION},
+                                                            {"answer": T_CLOSED, "unknown": "T"}]})
+        self.assertEqual(status, 200)
+        # No rubric: 1 point a part; the answers' part asks for all three unknowns of the
+        # description (T answered: 1 of 3), the balances and the constraint all given.
+        self.assertEqual(g["missing"], [])
+        self.assertEqual([s["verdict"] for s in g["steps"]], ["correct"] * 4)
+        self.assertAlmostEqual(g["score"], 2 + 1 / 3)
+        status, g = self.server.post("/solution", {"steps": [{"equation": LMB_A}], "rubric": {"balances": 4, "constraints": 0, "answers": 0}})
+        self.assertEqual((status, g["score"], g["max_score"]), (200, 2, 4))
+        status, g = self.server.post("/solution", {"steps": [{"fbd": {"body": "Q", "forces": []}}]})
+        self.assertEqual((status, g["verdict"]), (200, "invalid"))
+
+    def test_bad_requests(self):
+        s = self.server
+        self.assertEqual(s.request("POST", "/step", "x" * (64 * 1024 + 1))[0], 413)
+        self.assertEqual(s.request("POST", "/step", "{not json")[0], 400)
+        self.assertEqual(s.request("POST", "/step", "[1, 2]")[0], 400)
+        self.assertEqual(s.request("POST", "/step", b"\xff\xfe")[0], 400)
+        self.assertEqual(s.request("POST", "/step", json.dumps({"kind": "poem"}))[0], 400)
+        self.assertEqual(s.request("POST", "/step", json.dumps({"kind": "equation", "equation": 3}))[0], 400)
+        self.assertEqual(s.request("POST", "/step", json.dumps({"kind": "fbd", "fbd": "B"}))[0], 400)
+        self.assertEqual(s.request("POST", "/solution", json.dumps({"steps": "all"}))[0], 400)
+        self.assertEqual(s.request("POST", "/elsewhere", "{}")[0], 404)
+        self.assertEqual(s.request("GET", "/etc/passwd")[0], 404)
+        self.assertEqual(s.request("PUT", "/step", "{}")[0], 405)
+        # A name that is not this machine's (DNS rebinding).
+        self.assertEqual(s.request("GET", "/", headers={"Host": "attacker.example:80"})[0], 403)
+        # No Content-Length: refused, not waited for.
+        c = socket.create_connection(("127.0.0.1", s.port), timeout=30)
+        c.sendall(b"POST /step HTTP/1.1\r\nHost: 127.0.0.1\r\nTransfer-Encoding: chunked\r\n\r\n5\r\nhello\r\n0\r\n\r\n")
+        self.assertIn(b" 411 ", c.recv(200))
+        c.close()
+        # The server is still there.
+        self.assertEqual(self.step({"kind": "equation", "equation": LMB_A})["verdict"], "correct")
+
+
+class RecordingProxy:
+    """A proxy that answers nothing and records every request: the browser is told to send
+    everything that is not for this machine through it, so a page that fetched anything from
+    the network would show here (with its address as Referer or Origin; the browser's own
+    requests, a clock or an update service, have neither)."""
+
+    def __init__(self):
+        self.sock = socket.socket()
+        self.sock.bind(("127.0.0.1", 0))
+        self.sock.listen(16)
+        self.port = self.sock.getsockname()[1]
+        self.seen = []
+        threading.Thread(target=self._serve, daemon=True).start()
+
+    def _serve(self):
+        while True:
+            try:
+                conn, _ = self.sock.accept()
+            except OSError:
+                return
+            conn.settimeout(2)
+            try:
+                self.seen.append(conn.recv(8192))
+            except OSError:
+                self.seen.append(b"")
+            conn.close()
+
+    def close(self):
+        self.sock.close()
+
+
+@unittest.skipUnless(shutil.which("chromium") or shutil.which("chromium-browser"), "chromium is not installed")
+class PageInChromiumTest(unittest.TestCase):
+    """The page as a browser shows it, served by the step server and pre-filled from its address
+    with a correct and an incorrect equation (and graded on load)."""
+    maxDiff = 2000
+
+    def assertIn(self, member, container, msg=None):  # the DOM is 650 KB: not printed whole
+        if member not in container:
+            self.fail(msg or "%r not in the page (%d characters)" % (member, len(container)))
+
+    def open_page(self, problem, query):
+        """The DOM after the page was opened at its server with `query` and its steps checked,
+        and the requests the server saw; asserts that nothing went to the network."""
+        browser = shutil.which("chromium") or shutil.which("chromium-browser")
+        server = StepServer(os.path.join(SOURCE, "examples", problem))
+        self.addCleanup(server.close)
+        proxy = RecordingProxy()
+        self.addCleanup(proxy.close)
+        profile = tempfile.mkdtemp()
+        self.addCleanup(shutil.rmtree, profile, True)
+        r = subprocess.run([browser, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run", "--user-data-dir=" + profile,
+                            "--disable-background-networking", "--disable-component-update", "--disable-sync",
+                            "--proxy-server=http://127.0.0.1:%d" % proxy.port, "--virtual-time-budget=15000",
+                            "--window-size=1000,1400", "--dump-dom", server.url + "?" + urllib.parse.urlencode(query)],
+                           capture_output=True, text=True, timeout=120)
+        self.assertIn('data-checked="true"', r.stdout, "the page did not finish checking its steps: " + r.stderr[-2000:])
+        self.assertEqual(r.stdout.count('class="katex-error"'), 0)
+        time.sleep(0.3)  # the server's log, read by a thread, has every request the browser made
+        requests = [re.search(r'"(\w+ [^ ?]+)', line).group(1) for line in list(server.log) if '"' in line]
+        # Nothing fetched from the network: the page names nothing elsewhere, its policy lets it
+        # connect to its own origin only, and no request of the page's reached the proxy.
+        status, _, page = server.request("GET", "/")
+        page = page.decode("utf-8")
+        self.assertIsNone(re.search(r'(src|href)="(https?:)?//|url\((https?:)?//', page))
+        self.assertIn("default-src 'none';", page)
+        self.assertIn("connect-src 'self';", page)
+        from_page = [q[:200] for q in proxy.seen if re.search(rb"(?im)^(referer|origin):", q)]
+        self.assertEqual(from_page, [])
+        return r.stdout, [q for q in requests if q != "GET /favicon.ico"]  # (the browser's own, if it asks)
+
+    def test_prefilled_page(self):
+        dom, requests = self.open_page("sample-12.3-two-mass-pulley.yaml",
+                                       [("eq", LMB_A), ("eq", "T - F = m_A*ddot(x_A)"), ("grade", "1")])
+        # The two verdicts, beside their steps, in order.
+        verdicts = re.findall(r'<li class="step" data-kind="equation" data-verdict="(\w+)"', dom)
+        self.assertEqual(verdicts, ["correct", "incorrect"])
+        self.assertIn("it is LMB A (x)", dom)  # the summary
+        self.assertIn("a strand of string s at pA is missing", dom)
+        # Each echoed equation typeset by KaTeX (and no KaTeX error anywhere: open_page).
+        echoes = re.findall(r'<div class="echo">(.*?)</div>\s*<div class="verdict"', dom, re.S)
+        self.assertEqual(len(echoes), 2)
+        for echo in echoes:
+            self.assertIn('class="katex"', echo)
+        # The whole solution graded (no rubric: 1 point a part): LMB A used, LMB B and the
+        # string's acceleration missing: balances 1 of 2, constraints 0 of 1, answers 0 of 3.
+        self.assertRegex(dom, r'id="grade"[^>]*data-score="0.5/3"')
+        self.assertIn("LMB B (x), string s: acceleration", dom)
+        # The server saw the page, the two steps and the solution only.
+        self.assertEqual(sorted(requests), ["GET /", "POST /solution", "POST /step", "POST /step"])
+
+    def test_prefilled_diagrams_in_2d(self):
+        # Sample 12.7 by hand: the suitcase slides to +x on the ground at A and B; its weight
+        # points down (270 degrees from x), each normal force up (90), each friction force
+        # against the sliding (180).
+        right = {"body": "suitcase", "forces": [
+            {"name": "W", "at": "suitcase", "angle": 270}, {"name": "N_A", "at": "A", "angle": 90},
+            {"name": "F_A", "at": "A", "angle": 180}, {"name": "N_B", "at": "B", "angle": 90},
+            {"name": "F_B", "at": "B", "angle": 180}]}
+        wrong = json.loads(json.dumps(right))
+        wrong["forces"][4]["angle"] = 0  # friction at B along the sliding
+        dom, requests = self.open_page("sample-12.7-suitcase.yaml", [("fbd", json.dumps(right)), ("fbd", json.dumps(wrong))])
+        verdicts = re.findall(r'<li class="step" data-kind="fbd" data-verdict="(\w+)"', dom)
+        self.assertEqual(verdicts, ["correct", "incorrect"])
+        self.assertIn("your F_B stands for", dom)
+        self.assertIn("points the other way", dom)
+        self.assertEqual(sorted(requests), ["GET /", "POST /step", "POST /step"])
 
 
 class ScaleOutTest(unittest.TestCase):

@@ -100,6 +100,17 @@ std::string html_body(const Derivation& d, bool full, const std::string& title, 
   return out;
 }
 
+// One problem of a sheet, below its heading: the statement, the figures, what is asked.
+std::string html_problem(const SheetProblem& p, bool figures) {
+  std::vector<std::string> asked;
+  for (const auto& a : p.derivation->answers) asked.push_back(html_math(a.tex));
+  const std::string statement = statement_of(p, true);
+  std::string out;
+  if (!statement.empty()) out += "<p>" + html_statement(statement) + "</p>\n";
+  for (const Step& st : sheet_figures(p, figures)) out += html_figure(st);
+  return out + "<p>Find " + join(asked) + ".</p>\n";
+}
+
 class HtmlWriter final : public Writer {
  public:
   const char* name() const override { return "html"; }
@@ -157,20 +168,20 @@ class HtmlWriter final : public Writer {
 
   std::string sheet(const std::vector<SheetEntry>& entries, bool figures) const override {
     std::string out = "<h1>Problems</h1>\n";
-    for (const auto& p : sheet_problems(entries)) {
-      std::vector<std::string> asked;
-      for (const auto& a : p.derivation->answers) asked.push_back(html_math(a.tex));
-      const std::string statement = statement_of(p, true);
-      out += "<h2>Problem " + std::to_string(p.number) + ": " + html_escape(p.title) + "</h2>\n";
-      if (!statement.empty()) out += "<p>" + html_statement(statement) + "</p>\n";
-      for (const Step& st : sheet_figures(p, figures)) out += html_figure(st);
-      out += "<p>Find " + join(asked) + ".</p>\n";
-    }
+    for (const auto& p : sheet_problems(entries))
+      out += "<h2>Problem " + std::to_string(p.number) + ": " + html_escape(p.title) + "</h2>\n" + html_problem(p, figures);
     return html_page("Problems", out);
   }
 };
 
 }  // namespace
+
+std::string sheet_problem_html(const SheetEntry& e, bool figures) {
+  const auto problems = sheet_problems({e});
+  if (problems.empty()) return "";
+  writers::Ordered order({e.derivation});
+  return html_problem(problems.front(), figures);
+}
 
 const Writer& html_writer() {
   static const HtmlWriter w;

@@ -1,0 +1,1 @@
+../pulley-tension/setup.sh
