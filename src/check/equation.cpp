@@ -47,7 +47,8 @@ class WithConstants : public NameResolver {
     if (!constant) return std::nullopt;
     for (const auto& [n, s] : made_)
       if (n == name) return s;
-    made_.emplace_back(std::string(name), symbol(std::string(name)));
+    // Written upright in LaTeX when it is the word const.
+    made_.emplace_back(std::string(name), name == "const" ? symbol("const", "\\mathrm{const}") : symbol(std::string(name)));
     return made_.back().second;
   }
   std::vector<std::string> known_names() const override { return base_.known_names(); }
