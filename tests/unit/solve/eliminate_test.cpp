@@ -133,7 +133,7 @@ TEST_CASE("Elimination: a triple Atwood machine gives T_3 = 8 g/(16/m_1 + 4/m_2 
   CHECK(difference(*a, "ddot(y_4)", "8*g/(m_4*" + S + ") - g").is_zero());
 }
 
-TEST_CASE("Elimination: a cascade of 12 levels gives T_12 = 2^12 g/(sum of 4^(24-k)/m_k)", "[solve][scale]") {
+TEST_CASE("Elimination: a cascade of 12 levels gives T_12 = 2^12 g/(sum of 4^(12-k)/m_k)", "[solve][scale]") {
   // The triple machine's argument for n levels: T_k = 2^(n-k) T_n, the lengths give
   // sum w_k a_k = 0 with w_k = 2^(n-k) (w_(n+1) = 1), and m_k a_k = w_k T_n - m_k g, so
   // T_n = g (sum w_k)/(sum w_k^2/m_k) = 2^n g/(sum w_k^2/m_k). The denominators met on the way
