@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -12,6 +13,44 @@
 namespace tackle {
 
 using namespace GiNaC;
+
+namespace {
+
+// GiNaC's own object for a small integer (ex(int) hands it out for -12 ... 12), or `c`.
+ex shared(const ex& c) {
+  const numeric& n = ex_to<numeric>(c);
+  if (!n.is_integer() || n < -12 || n > 12) return c;
+  const ex s(n.to_int());
+  return are_ex_trivially_equal(s, c) ? c : s;
+}
+
+}  // namespace
+
+namespace {
+
+// Shares the numbers of the sums and products of e in place. A coefficient is replaced by a
+// number of equal value, so nothing anyone holding the node can see changes: not its value,
+// its order of pairs, its hash or its flags. (GiNaC's reference counts are not atomic: no
+// expression is shared between threads, and tackle runs one.) A node met before is not walked
+// again (a chain's closed forms share their denominator).
+void share_in_place(const ex& e, std::unordered_set<const basic*>& seen) {
+  if (!is_exactly<add>(e) && !is_exactly<mul>(e)) return;
+  if (ex_to<basic>(e).get_refcount() > 1 && !seen.insert(&ex_to<basic>(e)).second) return;
+  auto& seq = const_cast<epvector&>(Pairs::of(e));
+  for (auto& p : seq) {
+    share_in_place(p.rest, seen);
+    const ex c = shared(p.coeff);
+    if (!are_ex_trivially_equal(c, p.coeff)) p.coeff = c;
+  }
+}
+
+}  // namespace
+
+ex with_shared_numbers(const ex& e) {
+  std::unordered_set<const basic*> seen;
+  share_in_place(e, seen);
+  return e;
+}
 
 bool linear_irreducible(const ex& p) {
   thread_local ExMemory<bool> memory;

@@ -257,11 +257,13 @@ std::optional<ex> quick_quotient(const ex& b, const std::vector<std::pair<ex, ex
     else
       kept *= g;
   }
-  num = numerator_of(monomial, num);
+  // Its numbers shared before anything remembers the sum (primitive_sum() below): a copy
+  // with a number object per term would be kept there.
+  num = with_shared_numbers(numerator_of(monomial, num));
   // Made without evaluating where GiNaC's evaluation would leave it as it is (a chain's
   // values over m_1 + ... + m_256: the sum's integer content, taken at each evaluation).
   const auto held = evaluated_quotient(num, kept);
-  const ex out = held ? *held : num / kept;
+  const ex out = with_shared_numbers(held ? *held : num / kept);
   remember_normal(out, out);
   return out;
 }
@@ -313,8 +315,9 @@ std::pair<Elimination, std::vector<Pivot>> eliminate_symbolically(const SparseSy
     ex rest = w.b[it->row];
     for (const auto& [v, x] : terms) rest -= v * x;
     if (const auto q = normal_by_factors(rest / pivot)) {
-      remember_normal(*q, *q);
-      out.value[it->column] = *q;
+      const ex v = with_shared_numbers(*q);
+      remember_normal(v, v);
+      out.value[it->column] = v;
       continue;
     }
     out.value[it->column] = normal_remembered(rest / pivot);
