@@ -19,8 +19,11 @@ namespace {
 // GiNaC's own object for a small integer (ex(int) hands it out for -12 ... 12), or `c`.
 ex shared(const ex& c) {
   const numeric& n = ex_to<numeric>(c);
-  if (!n.is_integer() || n < -12 || n > 12) return c;
-  const ex s(n.to_int());
+  // (Compared as a machine integer: n < -12 would make a number of -12 first.)
+  if (!n.is_integer() || n.int_length() > 4) return c;
+  const long v = n.to_long();
+  if (v < -12 || v > 12) return c;
+  const ex s(static_cast<int>(v));
   return are_ex_trivially_equal(s, c) ? c : s;
 }
 

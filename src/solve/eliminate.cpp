@@ -257,9 +257,7 @@ std::optional<ex> quick_quotient(const ex& b, const std::vector<std::pair<ex, ex
     else
       kept *= g;
   }
-  // Its numbers shared before anything remembers the sum (primitive_sum() below): a copy
-  // with a number object per term would be kept there.
-  num = with_shared_numbers(numerator_of(monomial, num));
+  num = numerator_of(monomial, num);
   // Made without evaluating where GiNaC's evaluation would leave it as it is (a chain's
   // values over m_1 + ... + m_256: the sum's integer content, taken at each evaluation).
   const auto held = evaluated_quotient(num, kept);
