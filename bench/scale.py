@@ -39,7 +39,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = os.environ.get("TACKLE_BUILD_DIR", os.path.join(ROOT, "build"))
 TACKLE = os.path.join(BUILD, "tackle")
 GINAC = os.path.join(BUILD, "bench", "ginac_lsolve")
-DEFAULT_SIZES = {"chain": [16, 32, 64, 128, 256], "cascade": [2, 4, 6, 8, 10], "tackle": [4, 16, 64],
+DEFAULT_SIZES = {"chain": [16, 32, 64, 128, 256], "cascade": [4, 8, 16, 32, 64], "tackle": [4, 16, 64],
                  "carts": [8, 16, 32, 64]}
 
 

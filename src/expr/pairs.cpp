@@ -67,9 +67,23 @@ bool gather(const ex& e, int sign, epvector& pairs, numeric& c) {
 
 bool primitive_sum(const ex& s) {
   if (!is_exactly<add>(s)) return false;
-  // Remembered: a chain's closed forms share one denominator.
+  // Remembered: a chain's closed forms share one denominator. The memory keeps the sums it
+  // holds alive, so it forgets everything past 2^16 terms as well as past 1024 sums: the
+  // partial sums met once each while a chain of 2048 blocks is solved (a million terms,
+  // each with a number of its own) were 120 MB kept for nothing. Deciding again costs one
+  // pass over the terms.
   thread_local ExMemory<bool> memory;
-  return remembered(memory, s, 1024, [&] { return primitive_sum_uncached(s); });
+  thread_local std::size_t terms = 0;  // in the sums remembered
+  if (auto it = memory.find(s); it != memory.end()) return it->second;
+  const bool v = primitive_sum_uncached(s);
+  const std::size_t k = Pairs::of(s).size();
+  if (memory.size() >= 1024 || terms + k > (std::size_t{1} << 16)) {
+    memory.clear();
+    terms = 0;
+  }
+  memory.emplace(s, v);
+  terms += k;
+  return v;
 }
 
 bool rational_polynomial(const ex& e) {

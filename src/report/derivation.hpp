@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -110,5 +111,9 @@ enum class Format { text, latex, json, markdown, html };
 /// The derivations of a phased description's phases, one after the other (one LaTeX document,
 /// one JSON object with a `phases` array); a single unphased derivation as above.
 [[nodiscard]] std::string write(const std::vector<Derivation>& phases, Format f, bool full);
+/// The same written to `out` as it is made (the text format writes each answer as it goes):
+/// the whole document is never held in memory.
+void write_to(std::ostream& out, const Derivation& d, Format f, bool full);
+void write_to(std::ostream& out, const std::vector<Derivation>& phases, Format f, bool full);
 
 }  // namespace tackle

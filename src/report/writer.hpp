@@ -5,6 +5,7 @@
 // SheetEntry, Isolation): writers only format them.
 #pragma once
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,11 @@ class Writer {
   [[nodiscard]] virtual std::string derivation(const Derivation& d, bool full) const = 0;
   /// A phased description's phases, one after the other, as one document.
   [[nodiscard]] virtual std::string phases(const std::vector<Derivation>& ds, bool full) const = 0;
+  /// The same two documents written to `out` as they are made: a format whose document is
+  /// long (a chain's answers: 88 MB for 2048 blocks) writes it piece by piece, never holding
+  /// it whole. By default the text made whole, then written.
+  virtual void derivation_to(std::ostream& out, const Derivation& d, bool full) const { out << derivation(d, full); }
+  virtual void phases_to(std::ostream& out, const std::vector<Derivation>& ds, bool full) const { out << phases(ds, full); }
   // Documents a format may not have (the command line offers only those it has; asking a
   // format for another is a bug, reported as an internal error).
   [[nodiscard]] virtual std::string key(const std::vector<KeyEntry>& entries) const;

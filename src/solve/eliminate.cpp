@@ -1,5 +1,6 @@
 #include "solve/eliminate.hpp"
 
+#include "expr/fraction.hpp"
 #include "expr/pairs.hpp"
 #include "expr/trig.hpp"
 
@@ -31,6 +32,7 @@ using Row = std::map<std::size_t, ex>;
 // normal() would look for a denominator to cancel against.
 ex reduced(const ex& x) {
   if (rational_polynomial(x)) return x.expand();
+  if (const auto q = normal_by_factors(x)) return *q;
   const ex n = normal(x);
   if (!n.is_zero() && has_trig(n) && normal(pythagoras(n, true)).is_zero()) return 0;
   return n;
@@ -142,13 +144,6 @@ std::optional<Pivot> choose(const Work& w, const std::vector<bool>& eliminated, 
   return best;
 }
 
-// Whether a polynomial is irreducible by linear_and_coprime, remembered: a chain's values
-// share one denominator.
-bool linear_irreducible(const ex& p) {
-  thread_local ExMemory<bool> memory;
-  return remembered(memory, p, 1024, [&] { return linear_and_coprime(p); });
-}
-
 // A polynomial in symbols with rational coefficients (what divide() takes): no functions,
 // no roots, no floating-point numbers.
 bool is_polynomial_form(const ex& e) { return rational_polynomial(e); }
@@ -176,76 +171,6 @@ std::optional<std::pair<numeric, std::vector<ex>>> irreducible_factors(const ex&
     return std::nullopt;
   }
   return std::make_pair(c, out);
-}
-
-// The total degree of an expanded polynomial (the highest of its terms' degrees), or -1 when
-// it is not one (or an exponent is past a million: no decision from degrees then).
-long total_degree(const ex& p) {
-  auto of_monomial = [](const ex& t) -> long {
-    if (is_exactly<numeric>(t)) return 0;
-    if (is_exactly<symbol>(t)) return 1;
-    auto power_of = [](const ex& base, const ex& expo) -> long {
-      const numeric& k = ex_to<numeric>(expo);
-      return is_exactly<symbol>(base) && k.is_pos_integer() && k <= 1000000 ? k.to_long() : -1;
-    };
-    if (is_exactly<power>(t)) return is_exactly<numeric>(t.op(1)) ? power_of(t.op(0), t.op(1)) : -1;
-    if (!is_exactly<mul>(t)) return -1;
-    long d = 0;
-    for (const auto& f : Pairs::of(t)) {
-      const long k = power_of(f.rest, f.coeff);
-      if (k < 0) return -1;
-      d += k;
-    }
-    return d;
-  };
-  if (!is_exactly<add>(p)) return of_monomial(p);
-  long d = 0;
-  for (const auto& t : Pairs::of(p)) {
-    const long k = of_monomial(t.rest);
-    if (k < 0) return -1;
-    d = std::max(d, k);
-  }
-  return d;
-}
-
-// False when the polynomial g (of degree 1 in some symbol x) certainly does not divide p: at
-// integers drawn from the other symbols' names, p is not zero at g's root in x. (divide()
-// takes long to say no for a sum over 256 masses.) True when that does not decide it. The
-// symbol and the root are found once per g (a chain's values share one denominator); the
-// values drawn by name are the same for g's coefficients and for p.
-bool may_divide(const ex& p, const ex& g) {
-  if (is_a<symbol>(g)) return p.ldegree(g) > 0 || p.is_zero();
-  // By degree first: g (a sum) divides p only if p's total degree is at least g's, and when
-  // the two are equal, only if p is a number times g, term for term (a chain's partial sums
-  // of masses against the sum of all of them).
-  thread_local ExMemory<long> degrees;
-  const long dg = remembered(degrees, g, 1024, [&] { return total_degree(g); });
-  if (const long dp = total_degree(p); dp >= 0 && dg >= 0 && !p.is_zero()) {
-    if (dp < dg) return false;
-    if (dp == dg && is_exactly<add>(g) && (!is_exactly<add>(p) || p.nops() != g.nops())) return false;
-  }
-  constexpr std::uint64_t seed = 20261123;
-  struct Root {
-    ex x;
-    std::uint64_t value;
-  };
-  thread_local ExMemory<std::optional<Root>> roots;
-  const std::optional<Root> root = remembered(roots, g, 1024, [&]() -> std::optional<Root> {
-    for (const ex& x : symbols_in(g)) {
-      if (g.degree(x) != 1) continue;
-      ModularPoint point(seed);
-      const ModularAt a = modular_at(g.coeff(x, 1), point), b = modular_at(g.coeff(x, 0), point);
-      if (a.kind == RationalAt::Kind::value && b.kind == RationalAt::Kind::value && a.value != 0)
-        return Root{x, modular_quotient(modular_negated(b.value), a.value)};
-      break;
-    }
-    return std::nullopt;
-  });
-  if (!root) return true;
-  ModularPoint point(seed);
-  point.values.emplace(root->x, root->value);
-  const ModularAt at = modular_at(p, point);
-  return at.kind != RationalAt::Kind::value || at.value == 0;
 }
 
 // monomial * sum, expanded; or as a product when it is a monomial times a long primitive
@@ -336,7 +261,7 @@ std::optional<ex> quick_quotient(const ex& b, const std::vector<std::pair<ex, ex
   // Made without evaluating where GiNaC's evaluation would leave it as it is (a chain's
   // values over m_1 + ... + m_256: the sum's integer content, taken at each evaluation).
   const auto held = evaluated_quotient(num, kept);
-  const ex out = held ? *held : num / kept;
+  const ex out = with_shared_numbers(held ? *held : num / kept);
   remember_normal(out, out);
   return out;
 }
@@ -387,6 +312,12 @@ std::pair<Elimination, std::vector<Pivot>> eliminate_symbolically(const SparseSy
     }
     ex rest = w.b[it->row];
     for (const auto& [v, x] : terms) rest -= v * x;
+    if (const auto q = normal_by_factors(rest / pivot)) {
+      const ex v = with_shared_numbers(*q);
+      remember_normal(v, v);
+      out.value[it->column] = v;
+      continue;
+    }
     out.value[it->column] = normal_remembered(rest / pivot);
   }
   for (std::size_t i = 0; i < n_rows; ++i) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <map>
+#include <unordered_set>
 #include <memory>
 #include <optional>
 #include <set>
@@ -89,6 +90,9 @@ struct BuildContext {
   // (whichever way round), and where they end.
   std::map<std::pair<std::string, std::string>, GiNaC::ex> turning_lengths;
   std::map<int, std::string> turning_at;  // a point at an end of a turning strand: the strand
+  // The lengths in m.strand_lengths, expanded: a strand's length is looked up here (comparing
+  // it with every one before it was quadratic: 3 G instructions of a chain of 1024 blocks).
+  std::unordered_set<GiNaC::ex, std::hash<GiNaC::ex>, GiNaC::ex_is_equal> strand_lengths_expanded;
 
   // The connections stage's checks that need every connection.
   std::vector<PendingCheck> pending_checks;

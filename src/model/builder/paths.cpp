@@ -113,9 +113,9 @@ const Path* path_of(BuildContext& ctx, Instance& in, const std::string& key) {
         if (seg.constant) continue;
         const bool turning = std::any_of(ctx.m.lengths.begin(), ctx.m.lengths.end(),
                                          [&](const TurningLength& l) { return seg.length.has(l.symbol); });
-        const bool known = std::any_of(ctx.m.strand_lengths.begin(), ctx.m.strand_lengths.end(),
-                                       [&](const auto& s) { return (s.first - seg.length).expand().is_zero(); });
-        if (!turning && !known)
+        // Known when its expanded form is one met before (equal expanded forms: the difference
+        // expands to zero).
+        if (!turning && ctx.strand_lengths_expanded.insert(seg.length.expand()).second)
           ctx.m.strand_lengths.emplace_back(seg.length, "strand " + ctx.m.points[seg.from].name + "-" +
                                                             ctx.m.points[seg.to].name + " of " + in.label);
       }

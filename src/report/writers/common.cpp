@@ -310,6 +310,19 @@ std::string write(const std::vector<Derivation>& ds, Format f, bool full) {
   return writer_for(f).phases(ds, full);
 }
 
+void write_to(std::ostream& out, const Derivation& d, Format f, bool full) {
+  writers::Ordered order({&d});
+  writer_for(f).derivation_to(out, d, full);
+}
+
+void write_to(std::ostream& out, const std::vector<Derivation>& ds, Format f, bool full) {
+  if (ds.size() == 1 && ds[0].phase.empty()) return write_to(out, ds[0], f, full);
+  std::vector<const Derivation*> all;
+  for (const auto& d : ds) all.push_back(&d);
+  writers::Ordered order(all);
+  writer_for(f).phases_to(out, ds, full);
+}
+
 std::string write_key(const std::vector<KeyEntry>& entries, Format f) {
   std::vector<const Derivation*> all;
   for (const auto& e : entries) all.push_back(e.derivation);

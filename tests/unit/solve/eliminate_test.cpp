@@ -90,6 +90,72 @@ layout: {y_P1: 0, y_P2: -2, y_1: -1, y_2: -3, y_3: -3.5}
   CHECK(difference(*a, "ddot(y_1)", "g*(4*m_2*m_3 - m_1*(m_2 + m_3))/" + D).is_zero());
 }
 
+namespace {
+
+// bench/generate.py cascade n without the numbers: pulley P_1 hangs from the ceiling; the
+// string s_k over P_k carries block B_k and pulley P_(k+1); the last carries B_n and B_(n+1).
+std::string cascade(int n) {
+  std::ostringstream o;
+  o << "title: cascade\naxes: [y]\nparameters:\n  g: {unit: m/s^2}\n";
+  for (int i = 1; i <= n + 1; ++i) o << "  m_" << i << ": {unit: kg}\n";
+  o << "gravity: -g\nbodies:\n";
+  for (int k = 1; k <= n; ++k) o << "  P" << k << ": {mass: 0, position: y_P" << k << "}\n";
+  for (int i = 1; i <= n + 1; ++i) o << "  B" << i << ": {mass: m_" << i << ", position: y_" << i << "}\n";
+  o << "strings:\n";
+  for (int k = 1; k < n; ++k)
+    o << "  - {name: s" << k << ", path: [B" << k << ", P" << k << ", P" << k + 1 << "], tension: T_" << k << "}\n";
+  o << "  - {name: s" << n << ", path: [B" << n << ", P" << n << ", B" << n + 1 << "], tension: T_" << n << "}\n";
+  o << "connections:\n  - {type: fixed, body: P1}\n";
+  for (int k = 1; k <= n; ++k) o << "  - {type: pulley, at: P" << k << "}\n";
+  o << "layout: {";
+  for (int k = 1; k <= n; ++k) o << "y_P" << k << ": " << -2 * (k - 1) << ", ";
+  for (int i = 1; i <= n; ++i) o << "y_" << i << ": " << -2 * (i - 1) - 1 << ", ";
+  o << "y_" << n + 1 << ": " << -2 * (n - 1) - 1.5 << "}\n";
+  return o.str();
+}
+
+}  // namespace
+
+TEST_CASE("Elimination: a triple Atwood machine gives T_3 = 8 g/(16/m_1 + 4/m_2 + 1/m_3 + 1/m_4)", "[solve][scale]") {
+  // By hand, y up. The massless pulleys P2 and P3 give T_1 = 2 T_2 = 4 T_3. The strings'
+  // lengths: a_1 = -a_P2 (P1 is fixed), a_2 + a_P3 = 2 a_P2, a_3 + a_4 = 2 a_P3, so
+  // 4 a_1 + 2 a_2 + a_3 + a_4 = 0. Each block: m_k a_k = w_k T_3 - m_k g with
+  // w = (4, 2, 1, 1). Then sum w_k a_k = T_3 (16/m_1 + 4/m_2 + 1/m_3 + 1/m_4) - 8 g = 0.
+  const auto a = test::run_text(cascade(3));
+  REQUIRE(a->solution.status == Solution::Status::determined);
+  const std::string S = "(16/m_1 + 4/m_2 + 1/m_3 + 1/m_4)";
+  CHECK(difference(*a, "T_3", "8*g/" + S).is_zero());
+  CHECK(difference(*a, "T_2", "16*g/" + S).is_zero());
+  CHECK(difference(*a, "T_1", "32*g/" + S).is_zero());
+  CHECK(difference(*a, "ddot(y_1)", "32*g/(m_1*" + S + ") - g").is_zero());
+  CHECK(difference(*a, "ddot(y_2)", "16*g/(m_2*" + S + ") - g").is_zero());
+  CHECK(difference(*a, "ddot(y_3)", "8*g/(m_3*" + S + ") - g").is_zero());
+  CHECK(difference(*a, "ddot(y_4)", "8*g/(m_4*" + S + ") - g").is_zero());
+}
+
+TEST_CASE("Elimination: a cascade of 12 levels gives T_12 = 2^12 g/(sum of 4^(12-k)/m_k)", "[solve][scale]") {
+  // The triple machine's argument for n levels: T_k = 2^(n-k) T_n, the lengths give
+  // sum w_k a_k = 0 with w_k = 2^(n-k) (w_(n+1) = 1), and m_k a_k = w_k T_n - m_k g, so
+  // T_n = g (sum w_k)/(sum w_k^2/m_k) = 2^n g/(sum w_k^2/m_k). The denominators met on the way
+  // are products of up to 13 masses (put over them without a gcd: expr/fraction.hpp).
+  const int n = 12;
+  const auto a = test::run_text(cascade(n));
+  REQUIRE(a->solution.status == Solution::Status::determined);
+  std::string S = "(";
+  for (int k = 1; k <= n + 1; ++k) {
+    const long w = k <= n ? (1L << (n - k)) : 1;
+    S += (k > 1 ? " + " : "") + std::to_string(w * w) + "/m_" + std::to_string(k);
+  }
+  S += ")";
+  const std::string t_n = "(" + std::to_string(1L << n) + "*g/" + S + ")";
+  for (int k = 1; k <= n; ++k)
+    CHECK(difference(*a, "T_" + std::to_string(k), std::to_string(1L << (n - k)) + "*" + t_n).is_zero());
+  for (int k = 1; k <= n + 1; ++k) {
+    const long w = k <= n ? (1L << (n - k)) : 1;
+    CHECK(difference(*a, "ddot(y_" + std::to_string(k) + ")", std::to_string(w) + "*" + t_n + "/m_" + std::to_string(k) + " - g").is_zero());
+  }
+}
+
 TEST_CASE("Elimination: a block-and-tackle of 64 strands gives T = m (F + 65 g m_H)/(m + 4096 m_H)", "[solve][scale][string]") {
   // bench/generate.py tackle 64. By hand: the length 64 (y_C - y_M) + (y_C - y_H) gives
   // a_H = -64 a_M; LMB L: 64 T - m g = m a_M; LMB H: T - F - m_H g = m_H a_H. So
