@@ -29,7 +29,9 @@ using Row = std::map<std::size_t, ex>;
 
 // An entry in normal form, and exactly 0 when it is zero (also by sin^2 + cos^2 = 1). A
 // polynomial with rational coefficients (most entries: m_1 + m_2, 1, -k) is only expanded:
-// normal() would look for a denominator to cancel against.
+// normal() would look for a denominator to cancel against. A sum of fractions over products
+// of symbols and irreducible sums (a cascade's entries, over products of masses) is put over
+// their factors without a gcd (expr/fraction.hpp); anything else goes to normal().
 ex reduced(const ex& x) {
   if (rational_polynomial(x)) return x.expand();
   if (const auto q = normal_by_factors(x)) return *q;

@@ -1,6 +1,7 @@
 // Sparse elimination of a linear system over rational functions: the one elimination the
 // solver uses. Rows are sparse (a column appears in a row only while its entry is nonzero,
-// decided exactly: normal() and sin^2 + cos^2 = 1), pivots are chosen by Markowitz's rule
+// decided exactly: a normal form, found without a gcd where the denominators are products of
+// known irreducible factors, and sin^2 + cos^2 = 1), pivots are chosen by Markowitz's rule
 // (fewest other entries in the pivot's row times its column, then the smallest entry), so a
 // chain of bodies eliminates with O(1) fill per pivot instead of touching every row, and the
 // solution is found by back substitution.
