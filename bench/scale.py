@@ -246,6 +246,7 @@ def main():
         startup[p], _ = best(cmd, args.timeout, args.repeat, stdin)
     t, _ = best([TACKLE, "--version"], args.timeout, args.repeat)
     print(f"start-up: tackle {show(t, args.timeout)}, " + ", ".join(f"{p} {show(startup[p], args.timeout)}" for p in peers))
+    print(f"load average at the start: {os.getloadavg()[0]:.1f}")
 
     for kind in [k for k in args.kinds.split(",") if k]:
         rows = {}
@@ -282,6 +283,21 @@ def main():
         print("| growth exponent | | " + " | ".join([exponent(rows, "solve", sizes[kind]), ""] + [exponent(rows, c, sizes[kind]) for c in counted]
                                                     + [exponent(rows, "derive", sizes[kind])]
                                                     + [exponent(rows, p, sizes[kind]) for p in peers]) + " |")
+        # Each peer against tackle solve, paired within this run (above 1: tackle is faster;
+        # a peer past the limit is at least limit / tackle's time).
+        if peers:
+            print(f"\n{kind}: peer time / tackle solve time, in this run (load average now {os.getloadavg()[0]:.1f})")
+            print("| n | " + " | ".join(peers) + " |")
+            print("|---" * (1 + len(peers)) + "|")
+            for n in sizes[kind]:
+                r = rows[n]
+                def ratio(p):
+                    if r.get("solve") is None:
+                        return "-"
+                    if r.get(p) is None:
+                        return f"> {args.timeout / r['solve']:.1f}"
+                    return f"{r[p] / r['solve']:.1f}"
+                print(f"| {n} | " + " | ".join(ratio(p) for p in peers) + " |")
     files = [f for f in args.files.split(",") if f]
     if files:
         print("\nsingle problems")
