@@ -12,7 +12,6 @@
 #include "expr/print.hpp"
 #include "model/forces.hpp"
 #include "numeric/layout.hpp"
-#include "numeric/evaluate.hpp"
 
 namespace tackle {
 
@@ -248,23 +247,8 @@ FbdGrade check_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& rubri
   // The numbers the sketch shows: the parameters' values, the layout's positions.
   std::set<ex, ex_is_less> defaulted;
   const exmap values = layout_numbers(m, {}, &defaulted);
-  auto num = [&](const ex& e) -> std::optional<double> {
-    const auto v = value_at(e, values);
-    if (!v) return std::nullopt;
-    const ex x = evalf(*v);
-    if (!is_a<numeric>(x) || !ex_to<numeric>(x).is_real()) return std::nullopt;
-    const double d = ex_to<numeric>(x).to_double();
-    return std::isfinite(d) ? std::optional<double>(d) : std::nullopt;
-  };
-  auto position = [&](const Vec& v) -> std::optional<Triple> {
-    Triple p{0, 0, 0};
-    for (int k = 0; k < dims; ++k) {
-      const auto x = num(v[k]);
-      if (!x) return std::nullopt;
-      p[k] = *x;
-    }
-    return p;
-  };
+  auto num = [&](const ex& e) { return real_at(e, values); };
+  auto position = [&](const Vec& v) { return point_at(m, num, v); };
   // A student's `at`: a point, or a body (its center of mass).
   std::vector<std::optional<Triple>> arrow_at(fbd.forces.size());
   for (std::size_t i = 0; i < fbd.forces.size(); ++i) {

@@ -7,7 +7,6 @@
 #include <set>
 
 #include "expr/print.hpp"
-#include "numeric/evaluate.hpp"
 #include "figure/figure.hpp"
 #include "figure/geometry.hpp"
 #include "model/forces.hpp"
@@ -253,15 +252,7 @@ void draw_ground(Figure& f, V a, V b, V into) {
   for (double s = 0; s <= l + 1e-9; s += hatch_step) f.lines.push_back({{fp(a + s * u), fp(a + s * u + hatch * into + hatch * u)}, true});
 }
 
-std::optional<std::array<double, 3>> point3(const Model& m, const Number& num, const Vec& v) {
-  std::array<double, 3> p{0, 0, 0};
-  for (int k = 0; k < m.dims(); ++k) {
-    auto x = num(v[k]);
-    if (!x) return std::nullopt;
-    p[k] = *x;
-  }
-  return p;
-}
+std::optional<std::array<double, 3>> point3(const Model& m, const Number& num, const Vec& v) { return point_at(m, num, v); }
 
 }  // namespace fig
 
@@ -273,14 +264,7 @@ FigureMaker::FigureMaker(const Model& m, const exmap& values)
 
 // A number of the geometry, through the evaluation every stage uses (no pole reaches GiNaC);
 // none where it is undefined or not real.
-std::optional<double> FigureMaker::number(const ex& e) const {
-  const auto v = value_at(e, values_);
-  if (!v) return std::nullopt;
-  const ex x = evalf(*v);
-  if (!is_a<numeric>(x) || !ex_to<numeric>(x).is_real()) return std::nullopt;
-  const double d = ex_to<numeric>(x).to_double();
-  return std::isfinite(d) ? std::optional<double>(d) : std::nullopt;
-}
+std::optional<double> FigureMaker::number(const ex& e) const { return real_at(e, values_); }
 
 std::optional<Figure> FigureMaker::redraw(const Figure& f) const { return f.sketch ? sketch() : draw(f.bodies, f.system); }
 

@@ -2,6 +2,8 @@
 
 #include "numeric/evaluate.hpp"
 
+#include <cmath>
+
 namespace tackle {
 
 using namespace GiNaC;
@@ -29,6 +31,25 @@ exmap layout_numbers(const Model& m, const exmap& values, std::set<ex, ex_is_les
   for (const auto& l : m.lengths)
     if (auto sq = value_at(l.squared, out); sq && is_a<numeric>(*sq) && ex_to<numeric>(*sq) >= 0) out[l.symbol] = sqrt(*sq);
   return out;
+}
+
+std::optional<double> real_at(const ex& e, const exmap& values) {
+  const auto v = value_at(e, values);
+  if (!v) return std::nullopt;
+  const ex x = evalf(*v);
+  if (!is_a<numeric>(x) || !ex_to<numeric>(x).is_real()) return std::nullopt;
+  const double d = ex_to<numeric>(x).to_double();
+  return std::isfinite(d) ? std::optional<double>(d) : std::nullopt;
+}
+
+std::optional<std::array<double, 3>> point_at(const Model& m, const std::function<std::optional<double>(const ex&)>& number, const Vec& v) {
+  std::array<double, 3> p{0, 0, 0};
+  for (int k = 0; k < m.dims(); ++k) {
+    const auto x = number(v[k]);
+    if (!x) return std::nullopt;
+    p[static_cast<std::size_t>(k)] = *x;
+  }
+  return p;
 }
 
 }  // namespace tackle

@@ -2,6 +2,9 @@
 // diagram compared with them.
 #pragma once
 
+#include <array>
+#include <functional>
+#include <optional>
 #include <set>
 
 #include <ginac/ginac.h>
@@ -16,5 +19,14 @@ namespace tackle {
 /// place at 0; the defined parameters and turning lengths made from them.
 [[nodiscard]] GiNaC::exmap layout_numbers(const Model& m, const GiNaC::exmap& values = {},
                                           std::set<GiNaC::ex, GiNaC::ex_is_less>* defaulted = nullptr);
+
+/// `e` at `values` as a real number, through the evaluation every stage uses (no pole reaches
+/// GiNaC); none where it is undefined, not real or not finite.
+[[nodiscard]] std::optional<double> real_at(const GiNaC::ex& e, const GiNaC::exmap& values);
+
+/// A point's coordinates by `number` (one per axis of `m`, the rest 0); none when one cannot be
+/// evaluated.
+[[nodiscard]] std::optional<std::array<double, 3>> point_at(const Model& m, const std::function<std::optional<double>(const GiNaC::ex&)>& number,
+                                                            const Vec& v);
 
 }  // namespace tackle
