@@ -152,7 +152,7 @@ StudentFbd read_fbd_data(const yaml::Node& node, int dims, const std::string& fi
   }
   if (const yaml::Node couples = node["couples"]; couples && yaml::is_list(couples, "'couples'", file, diags)) {
     count += couples.size();
-    if (dims != 2 && couples.size() > 0) diags.error(yaml::where(couples, file), "'couples' are for a plane problem (this one has " + std::to_string(dims) + " axes)");
+    if (dims != 2 && couples.size() > 0) diags.error(yaml::where(couples, file), "'couples' are for a plane problem (this one has " + std::to_string(dims) + (dims == 1 ? " axis)" : " axes)"));
     for (const yaml::Node item : couples) {
       if (!yaml::check_map(item, {"name", "sense"}, "a couple", file, diags)) continue;
       StudentCouple c;

@@ -203,7 +203,7 @@ TEST_CASE("FBD: a diagram with problems says each, located, in the file's order"
   CHECK(out == std::vector<std::string>{
                    "g.yaml:1:1: the free body diagram has no 'body' (expected body: NAME, or bodies: [A, B] for a system)",
                    "g.yaml:2:22: 'angle' is for a plane problem (expected 'direction' with 1 number)",
-                   "g.yaml:3:10: 'couples' are for a plane problem (this one has 1 axes)",
+                   "g.yaml:3:10: 'couples' are for a plane problem (this one has 1 axis)",
                });
 }
 
