@@ -315,7 +315,9 @@ std::string endpoint_problem(const std::string& endpoint) {
       return std::string("has '") + (u <= ' ' || u >= 127 ? std::string("a space or control character") : std::string(1, c)) +
              "' (expected a path such as /tackle or an http(s) URL)";
   }
-  if (endpoint.find("://") != std::string::npos && endpoint.rfind("http://", 0) != 0 && endpoint.rfind("https://", 0) != 0)
+  // A scheme is what comes before a ':' that no '/' precedes (javascript:..., data:...).
+  const std::size_t colon = endpoint.find(':');
+  if (colon != std::string::npos && colon < endpoint.find('/') && endpoint.rfind("http://", 0) != 0 && endpoint.rfind("https://", 0) != 0)
     return "is a URL that is not http or https";
   if ((endpoint == "http://" || endpoint == "https://")) return "has no host";
   return "";
