@@ -124,8 +124,6 @@ EquationChecker::EquationChecker(const Analysis& analysis, const CheckOptions& o
   }
   family(equations_, SymbolRole::acceleration, acceleration_);
   family(rate_equations_, SymbolRole::rate, rate_);
-  prepare(acceleration_);
-  prepare(rate_);
   // The length sums: every coordinate is a column (one that no sum holds must not be taken for
   // the constant), and the constant is no column.
   for (const auto& c : analysis.system.constraints) {
@@ -149,10 +147,14 @@ EquationChecker::EquationChecker(const Analysis& analysis, const CheckOptions& o
     position_.vectors.push_back(v ? *v : std::vector<ex>(position_.unknowns.size() + 1, 0));
   }
   if (!position_.vectors.empty() && position_.equations.size() <= max_family) position_.rank = rank_of(position_.vectors, nullptr);
-  prepare(position_);
 }
 
-void EquationChecker::prepare(Family& f) const {
+const EquationChecker::Family& EquationChecker::prepared(const Family& f) const {
+  std::call_once(f.made, [&] { prepare(f); });
+  return f;
+}
+
+void EquationChecker::prepare(const Family& f) const {
   if (f.vectors.empty() || f.equations.size() > max_family) return;
   // The vectors y with y . column = 0 for every column: the solutions of F^T y = 0, one per
   // free variable of GiNaC's solution (that one 1, the others 0). Checked against the rank.
@@ -382,7 +384,7 @@ CheckResult EquationChecker::check(std::string_view text) const {
     return finish(Verdict::invalid, "syntax", "'" + to_text(constants.front()) +
                                                   "' is not a name of this problem: a constant is for a length sum, an equation in the positions alone");
   if (has_coordinate && !has_acceleration && !has_rate && !position_.equations.empty()) return check_position(residual, r);
-  const Family& f = has_rate && !has_acceleration ? rate_ : acceleration_;
+  const Family& f = prepared(has_rate && !has_acceleration ? rate_ : acceleration_);
   if (f.equations.size() > max_family)
     return finish(Verdict::undecided, "too_large", "this problem has too many equations to decide a combination of them (" +
                                                        std::to_string(f.equations.size()) + ")");
@@ -424,7 +426,7 @@ CheckResult EquationChecker::check(std::string_view text) const {
 }
 
 CheckResult EquationChecker::check_position(const ex& residual, CheckResult r) const {
-  const Family& f = position_;
+  const Family& f = prepared(position_);
   if (f.equations.size() > max_family)
     return r.conclude(Verdict::undecided, "too_large", "this problem has too many constraints to decide a combination of them (" +
                                                            std::to_string(f.equations.size()) + ")");
@@ -522,6 +524,7 @@ std::vector<std::string> EquationChecker::fewest(const Family& f, const std::vec
 
 std::vector<std::string> EquationChecker::needed_for(const ex& unknown, const ex& closed_form) const {
   if (acceleration_.equations.size() > max_family) return {};
+  (void)prepared(acceleration_);
   const auto v = vector_of(substituted(unknown - closed_form, definitions_), acceleration_);
   if (!v || !in_family(acceleration_, *v)) return {};
   return fewest(acceleration_, *v);

@@ -6,6 +6,7 @@
 // term missing, a force that acts on another body), never showing the correct equation.
 #pragma once
 
+#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -47,15 +48,18 @@ class EquationChecker {
     // A basis of the vectors orthogonal to every column (made once, when it can be): a vector
     // is a combination of the columns exactly when its product with each of these is zero, a
     // sum to normalise instead of a rank to eliminate. With each at the point (when defined).
-    std::optional<std::vector<std::vector<GiNaC::ex>>> orthogonal;
-    std::vector<std::optional<std::vector<GiNaC::numeric>>> orthogonal_at;
+    // Made when an equation is first checked (prepared()), not with the checker: a checker
+    // made for answers alone never pays for them.
+    mutable std::once_flag made;
+    mutable std::optional<std::vector<std::vector<GiNaC::ex>>> orthogonal;
+    mutable std::vector<std::optional<std::vector<GiNaC::numeric>>> orthogonal_at;
     // Each equation's terms' vectors and its left side's (none where not linear), for the
     // diagnosis: a balance with a term left out is its vector less the term's.
-    std::vector<std::vector<std::optional<std::vector<GiNaC::ex>>>> term_vectors;
-    std::vector<std::optional<std::vector<GiNaC::ex>>> lhs_vectors;
+    mutable std::vector<std::vector<std::optional<std::vector<GiNaC::ex>>>> term_vectors;
+    mutable std::vector<std::optional<std::vector<GiNaC::ex>>> lhs_vectors;
     // The same at the point (none where not linear or not defined there).
-    std::vector<std::optional<std::vector<GiNaC::numeric>>> vectors_at, lhs_vectors_at;
-    std::vector<std::vector<std::optional<std::vector<GiNaC::numeric>>>> term_vectors_at;
+    mutable std::vector<std::optional<std::vector<GiNaC::numeric>>> vectors_at, lhs_vectors_at;
+    mutable std::vector<std::vector<std::optional<std::vector<GiNaC::numeric>>>> term_vectors_at;
   };
   [[nodiscard]] std::optional<std::vector<GiNaC::ex>> vector_of(const GiNaC::ex& residual, const Family& f) const;
   /// Whether `v` is a combination of `columns` (`rank`: theirs, when known).
@@ -69,7 +73,9 @@ class EquationChecker {
                                   const std::optional<std::vector<GiNaC::numeric>>* bp = nullptr) const;
   /// `v` at the point (exact rationals), or none where an entry is not a rational number there.
   [[nodiscard]] std::optional<std::vector<GiNaC::numeric>> at_point(const std::vector<GiNaC::ex>& v) const;
-  void prepare(Family& f) const;
+  /// `f` with its orthogonal basis and vectors made (once, thread-safely).
+  const Family& prepared(const Family& f) const;
+  void prepare(const Family& f) const;
   [[nodiscard]] std::vector<std::string> fewest(const Family& f, const std::vector<GiNaC::ex>& v) const;
   void diagnose(const Family& f, const std::vector<GiNaC::ex>& v, CheckResult& r) const;
   /// An equation in the positions alone: one of the length sums (up to its constant)?
