@@ -107,8 +107,6 @@ EquationChecker::EquationChecker(const Analysis& analysis, const CheckOptions& o
       // (An equation not linear in the unknowns is no column: none is, at these levels.)
       f.vectors.push_back(v ? *v : std::vector<ex>(f.unknowns.size() + 1, 0));
     }
-    // The equations' own rank, once (every check compares its rank with the student's added).
-    if (!f.vectors.empty() && f.equations.size() <= max_family) f.rank = rank_of(f.vectors, nullptr);
   };
   for (const auto& b : analysis.model.bodies) bodies_.push_back({b.name, b.has_mass ? b.mass : ex(0), b.accel});
   // The point: each parameter at its own small rational (the same in every run).
@@ -146,7 +144,6 @@ EquationChecker::EquationChecker(const Analysis& analysis, const CheckOptions& o
     if (v) v->back() = 0;
     position_.vectors.push_back(v ? *v : std::vector<ex>(position_.unknowns.size() + 1, 0));
   }
-  if (!position_.vectors.empty() && position_.equations.size() <= max_family) position_.rank = rank_of(position_.vectors, nullptr);
 }
 
 const EquationChecker::Family& EquationChecker::prepared(const Family& f) const {
@@ -156,6 +153,8 @@ const EquationChecker::Family& EquationChecker::prepared(const Family& f) const 
 
 void EquationChecker::prepare(const Family& f) const {
   if (f.vectors.empty() || f.equations.size() > max_family) return;
+  // The equations' own rank (every check compares its rank with the student's added).
+  f.rank = rank_of(f.vectors, nullptr);
   // The vectors y with y . column = 0 for every column: the solutions of F^T y = 0, one per
   // free variable of GiNaC's solution (that one 1, the others 0). Checked against the rank.
   const std::size_t m = f.vectors.front().size(), k = f.vectors.size();

@@ -44,7 +44,7 @@ class EquationChecker {
     std::vector<const Equation*> equations;
     std::vector<GiNaC::ex> unknowns;
     std::vector<std::vector<GiNaC::ex>> vectors;  // each equation's coefficients: unknowns, then the rest
-    std::optional<std::size_t> rank;              // of those columns (made once)
+    mutable std::optional<std::size_t> rank;      // of those columns (made with the rest, below)
     // A basis of the vectors orthogonal to every column (made once, when it can be): a vector
     // is a combination of the columns exactly when its product with each of these is zero, a
     // sum to normalise instead of a rank to eliminate. With each at the point (when defined).
