@@ -80,6 +80,16 @@ struct CheckResult {
   // factor), or that it follows from; a correct one names them.
   bool equation = false;
   std::vector<std::string> identified_as, follows_from;
+  // A correct equation as a combination of the model's equations (those of follows_from):
+  // each one's label and whether its coefficient is a plain number, the same for every value
+  // of the parameters (up to a factor common to all). All plain: the student wrote a sum of
+  // those equations (a system's balance is its bodies' balances added); any not plain: the
+  // equation was derived from them by eliminating unknowns (an answer restated).
+  struct Part {
+    std::string label;
+    bool plain = false;
+  };
+  std::vector<Part> combination;
 
   /// Sets the verdict and its summary, the finding too when there is a code; the score follows
   /// the verdict (1 when correct, else 0).

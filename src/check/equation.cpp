@@ -401,6 +401,7 @@ CheckResult EquationChecker::check(std::string_view text) const {
         r.identified_as.push_back(f.equations[i]->label);
     if (!r.identified_as.empty()) {
       r.follows_from = {r.identified_as.front()};
+      r.combination = {{r.identified_as.front(), true}};
       r.summary = "it is " + r.identified_as.front();
       return r;
     }
