@@ -208,30 +208,22 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   for (const auto& p : parameters_) answer_names_.emplace(p.name, p.symbol);
   definitions_ = symbols_->definitions();
   lengths_ = symbols_->definitions(true);
-  // Fixed random points: exact positive rationals near each parameter's value (between half
-  // and twice it), or in [1, 10] when it has none. A fixed seed keeps the first comparison
-  // (which settles every answer that differs at one of them) and the diagnoses the same in
-  // every run; since anyone can find these points, an answer that agrees at all of them is
-  // decided by decide(), never by them.
-  std::mt19937 rng(12);
-  std::uniform_int_distribution<int> spread(500, 2000), whole(10, 100);
+  // Fixed random points (algebra/states.hpp): a fixed seed keeps the first comparison (which
+  // settles every answer that differs at one of them) and the diagnoses the same in every
+  // run; since anyone can find these points, an answer that agrees at all of them is decided
+  // by decide(), never by them. Angles through rational points on the circle, so that an
+  // answer in their sines and cosines is compared exactly.
+  exset angles;
+  for (const auto& d : analysis.solution.values) angles_in(substituted(d.value, lengths_), angles);
+  for (const auto& w : m.wanted) angles_in(substituted(w.expr, lengths_), angles);
+  std::vector<StateInput> inputs;
   for (const auto& p : parameters_) {
     const SymbolInfo* s = symbols_->find(p.symbol);
     if (s->definition) continue;  // follows from the others
-    if (s->value && is_a<numeric>(*s->value) && !s->value->is_zero() && ex_to<numeric>(*s->value).is_rational())
-      bases_.emplace_back(p.symbol, ex_to<numeric>(*s->value));
-    else if (const ex f = s->value ? evalf(*s->value) : ex(0); is_a<numeric>(f) && !f.is_zero())
-      // An irrational value (pi/6 for 30 deg): a rational near it.
-      bases_.emplace_back(p.symbol, numeric(std::llround(ex_to<numeric>(f).to_double() * 1e6), 1000000));
-    else
-      bases_.emplace_back(p.symbol, std::nullopt);
+    inputs.push_back(input_near(p.symbol, s->value, angles.count(p.symbol) != 0));
   }
-  for (int k = 0; k < options_.points; ++k) {
-    Point point;
-    for (const auto& [symbol, base] : bases_)
-      point.emplace_back(symbol, base ? *base * numeric(spread(rng), 1000) : numeric(whole(rng), 10) + numeric(1, 7 + k));
-    points_.push_back(point);
-  }
+  states_ = States(std::move(inputs));
+  for (int k = 0; k < options_.points; ++k) points_.push_back(states_.fixed(k));
   // References: every determined unknown, and the defined quantities of `find`.
   auto add_reference = [&](const std::string& name, const ex& closed_form, std::optional<Dimension> dim) {
     const ex closed = substituted(closed_form, definitions_);
@@ -290,279 +282,6 @@ std::vector<std::string> Checker::unknowns() const {
   std::vector<std::string> out;
   for (const auto& [k, v] : references_) out.push_back(k);
   return out;
-}
-
-namespace {
-
-// Numbers the evaluator keeps working with: at most this many bits in a rational's
-// numerator and denominator, or in a float's binary exponent. Past that an answer is not
-// decided by numbers (found by fuzzing: 98355^(.3^2.3^5^355.32)^h made CLN build an integer
-// of 10^16 digits).
-constexpr long max_bits = 8192;
-
-// In CLN's own reals: the evaluator works with them, not with GiNaC's numeric objects.
-long bits_of(const cln::cl_R& v) {
-  if (cln::zerop(v)) return 0;
-  // (What numer().int_length() and denom().int_length() say, without making either.)
-  if (cln::instanceof(v, cln::cl_I_ring)) return std::max<long>(cln::integer_length(cln::the<cln::cl_I>(v)), 1);
-  if (cln::instanceof(v, cln::cl_RA_ring)) {
-    const cln::cl_RA& q = cln::the<cln::cl_RA>(v);
-    return std::max<long>(cln::integer_length(cln::numerator(q)), cln::integer_length(cln::denominator(q)));
-  }
-  return std::labs(cln::float_exponent(cln::the<cln::cl_F>(v)));
-}
-
-bool integral(const cln::cl_R& v) { return cln::instanceof(v, cln::cl_I_ring); }
-
-std::optional<cln::cl_R> real_of(const numeric& v) {
-  if (!v.is_real()) return std::nullopt;
-  return cln::the<cln::cl_R>(v.to_cl_N());
-}
-
-}  // namespace
-
-Checker::Exact::Exact(const ex& e, const Point& layout, const exmap& definitions) { emit(e, layout, definitions, 0); }
-
-void Checker::Exact::emit(const ex& e, const Point& layout, const exmap& definitions, int depth) {
-  if (is_exactly<numeric>(e)) {
-    if (const auto v = real_of(ex_to<numeric>(e))) nodes_.push_back({Op::number, *v});
-    else nodes_.push_back({Op::nothing, 0});
-    return;
-  }
-  if (is_exactly<constant>(e)) {  // pi in an answer: a float at the current Digits
-    if (const ex v = evalf(e); is_exactly<numeric>(v))
-      if (const auto r = real_of(ex_to<numeric>(v))) {
-        nodes_.push_back({Op::number, *r});
-        return;
-      }
-    nodes_.push_back({Op::nothing, 0});
-    return;
-  }
-  if (is_exactly<symbol>(e)) {
-    for (std::size_t i = 0; i < layout.size(); ++i)
-      if (layout[i].first.is_equal(e)) {
-        nodes_.push_back({Op::input, 0, i});
-        return;
-      }
-    if (const auto d = definitions.find(e); d != definitions.end() && depth < 8) emit(d->second, layout, definitions, depth + 1);
-    else nodes_.push_back({Op::nothing, 0});
-    return;
-  }
-  if (is_exactly<add>(e) || is_exactly<mul>(e)) {
-    nodes_.push_back({is_exactly<add>(e) ? Op::add : Op::mul, 0, 0, 0, e.nops()});
-    for (std::size_t i = 0; i < e.nops(); ++i) emit(e.op(i), layout, definitions, depth);
-    return;
-  }
-  if (is_exactly<power>(e)) {
-    nodes_.push_back({Op::power, 0});
-    emit(e.op(0), layout, definitions, depth);
-    emit(e.op(1), layout, definitions, depth);
-    return;
-  }
-  if (is_exactly<function>(e) && e.nops() == 1) {
-    nodes_.push_back({Op::function, 0, 0, ex_to<function>(e).get_serial()});
-    emit(e.op(0), layout, definitions, depth);
-    return;
-  }
-  nodes_.push_back({Op::nothing, 0});
-}
-
-// A value while evaluating: exact as a fraction n/d (d > 0) not put in lowest terms (a
-// rational's product and sum in CLN take gcds at every step, most of an evaluation's time;
-// they are taken here only when a value grows past the bound, and once at the end), or a
-// CLN float after a fractional power or a function.
-struct Checker::Exact::Value {
-  bool exact = true;
-  cln::cl_I n = 0, d = 1;
-  cln::cl_R f;
-
-  void set(const cln::cl_R& v) {
-    exact = cln::instanceof(v, cln::cl_RA_ring);
-    if (exact) {
-      const cln::cl_RA& q = cln::the<cln::cl_RA>(v);
-      n = cln::numerator(q);
-      d = cln::denominator(q);
-    } else {
-      f = v;
-    }
-  }
-  [[nodiscard]] cln::cl_R real() const {
-    if (!exact) return f;
-    if (d == 1) return n;
-    return cln::cl_RA(n) / cln::cl_RA(d);
-  }
-  void reduce() {
-    const cln::cl_I g = cln::gcd(n, d);
-    if (g != 1) {
-      n = cln::exquo(n, g);
-      d = cln::exquo(d, g);
-    }
-  }
-  // Past the bound on bits (in lowest terms)?
-  bool too_large() {
-    if (!exact) return bits_of(f) > max_bits;
-    const auto over = [&] { return cln::integer_length(n) > max_bits || cln::integer_length(d) > max_bits; };
-    if (!over()) return false;
-    reduce();
-    return over();
-  }
-};
-
-std::optional<numeric> Checker::Exact::operator()(const Point& point) const {
-  if (nodes_.empty()) return std::nullopt;
-  try {
-    std::size_t at = 0;
-    Value v;
-    if (run(at, point, v)) return numeric(v.real());
-  } catch (const std::bad_alloc&) {
-    throw;  // out of memory is the process's (exit 3), not this number's
-  } catch (const std::exception&) {
-  }
-  return std::nullopt;
-}
-
-// The node at `at` and what follows it into `out`; `at` moves past them (false, for nothing,
-// leaves it anywhere: the caller gives up too). Exact rationals as long as the operations
-// allow; a fractional power or a function is evaluated by GiNaC in CLN floats at the current
-// Digits.
-bool Checker::Exact::run(std::size_t& at, const Point& point, Value& out) const {
-  const Node& node = nodes_[at++];
-  switch (node.op) {
-    case Op::number:
-      out.set(node.number);
-      return true;
-    case Op::input: {
-      const auto v = real_of(point[node.index].second);
-      if (!v) return false;
-      out.set(*v);
-      return true;
-    }
-    case Op::nothing: return false;
-    case Op::add:
-    case Op::mul: {
-      const bool sum = node.op == Op::add;
-      out.exact = true;
-      out.n = sum ? 0 : 1;
-      out.d = 1;
-      Value v;
-      for (std::size_t i = 0; i < node.n; ++i) {
-        if (!run(at, point, v)) return false;
-        if (out.exact && v.exact) {
-          if (!sum) {
-            out.n = out.n * v.n;
-            out.d = out.d * v.d;
-          } else if (out.d == v.d) {
-            out.n = out.n + v.n;
-          } else {
-            out.n = out.n * v.d + v.n * out.d;
-            out.d = out.d * v.d;
-          }
-        } else if (out.exact || v.exact) {
-          // A float and a fraction: the fraction enters as n and d (CLN would reduce it first).
-          const Value& q = out.exact ? out : v;
-          const cln::cl_R& f = out.exact ? v.f : out.f;
-          const cln::cl_R r = sum ? f * q.d + q.n : f * q.n;
-          out.set(q.d == 1 ? r : r / q.d);
-        } else {
-          out.set(sum ? out.f + v.f : out.f * v.f);
-        }
-        if (out.too_large()) return false;
-      }
-      return true;
-    }
-    case Op::power: {
-      Value b, x;
-      if (!run(at, point, b) || !run(at, point, x)) return false;
-      if (b.exact && x.exact && x.d == 1) {  // a fraction to a whole power (most powers)
-        if (cln::integer_length(x.n) > 62) return false;
-        const long k = cln::cl_I_to_long(x.n);
-        const unsigned long m = static_cast<unsigned long>(k < 0 ? -k : k);
-        if (cln::zerop(b.n)) {
-          if (k <= 0) return false;  // 0^0, or a division by zero
-          out.set(0);
-          return true;
-        }
-        // The result's size in bits is about |k| * log2|base|: bound it before making it.
-        const auto bits = [&] {
-          return static_cast<double>(m) * static_cast<double>(std::max(cln::integer_length(b.n), cln::integer_length(b.d)) + 1);
-        };
-        if (bits() > max_bits) {
-          b.reduce();
-          if (bits() > max_bits) return false;
-        }
-        out.exact = true;
-        if (m == 0) {
-          out.n = 1;
-          out.d = 1;
-        } else if (k > 0) {
-          out.n = cln::expt_pos(b.n, m);
-          out.d = cln::expt_pos(b.d, m);
-        } else {
-          const bool negative = cln::minusp(b.n);
-          out.n = cln::expt_pos(b.d, m);
-          out.d = cln::expt_pos(negative ? cln::cl_I(-b.n) : b.n, m);
-          if (negative && (m & 1)) out.n = -out.n;
-        }
-        return true;
-      }
-      const cln::cl_R base = b.real(), expo = x.real();
-      const bool whole = integral(expo);
-      if (cln::zerop(base) && !(whole && cln::plusp(expo))) return false;
-      if (!whole && cln::minusp(base)) return false;  // complex
-      // The result's size in bits is about |expo| * log2|base|: bound it before making it.
-      if (bits_of(expo) > 62 || std::fabs(cln::double_approx(expo)) * static_cast<double>(bits_of(base) + 1) > max_bits)
-        return false;
-      if (whole) {
-        out.set(cln::expt(base, cln::the<cln::cl_I>(expo)));
-        return true;
-      }
-      // A rational power of a rational: exact when the base is a perfect power (sqrt(m^2) at a
-      // point), else in floats at the current Digits, as evalf() would make it.
-      if (cln::instanceof(base, cln::cl_RA_ring) && cln::instanceof(expo, cln::cl_RA_ring)) {
-        const cln::cl_RA& q = cln::the<cln::cl_RA>(expo);
-        cln::cl_RA root;
-        if (cln::rootp(cln::the<cln::cl_RA>(base), cln::denominator(q), &root)) {
-          out.set(cln::expt(root, cln::numerator(q)));
-          return true;
-        }
-      }
-      if (expo == cln::cl_RA(1) / 2) {  // a square root (base > 0 here): sqrt, not exp(log(base)/2)
-        out.set(cln::sqrt(cln::cl_float(base, cln::default_float_format)));
-        return true;
-      }
-      const cln::cl_N v = cln::expt(cln::cl_N(cln::cl_float(base, cln::default_float_format)), cln::cl_N(expo));
-      if (!cln::instanceof(v, cln::cl_R_ring)) return false;
-      out.set(cln::the<cln::cl_R>(v));
-      return true;
-    }
-    case Op::function: {
-      Value a;
-      if (!run(at, point, a)) return false;
-      // abs and csgn of a value: exact, and for any size (10^-30 in an argument is not too
-      // large to take a sign of).
-      if (node.serial == abs_SERIAL::serial || node.serial == csgn_SERIAL::serial) {
-        const bool negative = a.exact ? cln::minusp(a.n) : cln::minusp(a.f);
-        if (node.serial == csgn_SERIAL::serial) {
-          out.set(cln::cl_I(negative ? -1 : (a.exact ? cln::zerop(a.n) : cln::zerop(a.f)) ? 0 : 1));
-        } else {
-          out = a;
-          if (negative && out.exact) out.n = -out.n;
-          if (negative && !out.exact) out.f = -out.f;
-        }
-        return true;
-      }
-      const cln::cl_R arg = a.real();
-      if (bits_of(arg) > 62) return false;  // sin(10^30) says nothing; exp of it is huge
-      if (node.serial == exp_SERIAL::serial && std::fabs(cln::double_approx(arg)) > 5000) return false;
-      const ex v = evalf(function(node.serial, ex(numeric(arg))));
-      if (!is_exactly<numeric>(v)) return false;
-      const auto r = real_of(ex_to<numeric>(v));
-      if (!r) return false;
-      out.set(*r);
-      return true;
-    }
-  }
-  return false;
 }
 
 namespace {
@@ -693,40 +412,21 @@ constexpr std::size_t max_kinks = 4;  // arguments up to their sign: 16 combinat
 
 }  // namespace
 
-Checker::Point Checker::draw_point(std::mt19937& rng) const {
+Sample Checker::draw_point(std::mt19937& rng) const {
   // Finer than the fixed points (1.5 million values between half and twice each value): an
   // answer built to vanish at some values meets one of them by a chance of its degree over
   // that.
-  std::uniform_int_distribution<long> spread(500000, 2000000), whole(1000000, 10000000);
-  Point p;
-  for (const auto& [symbol, base] : bases_)
-    p.emplace_back(symbol, base ? *base * numeric(spread(rng), 1000000) : numeric(whole(rng), 1000000));
-  return p;
+  return states_.draw(rng);
 }
 
-const std::vector<Checker::Point>& Checker::FreshPoints::get() {
+const std::vector<Sample>& Checker::FreshPoints::get() {
   if (points_) return *points_;
   points_.emplace();
-  std::mt19937 rng;
-  if (checker_.options_.seed) {
-    const std::uint64_t seed = *checker_.options_.seed;
-    std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)};
-    rng.seed(seq);
-  } else {
-    try {
-      std::random_device device;
-      std::seed_seq seq{device(), device(), device(), device()};
-      rng.seed(seq);
-    } catch (const std::exception&) {  // no entropy source: the clock, still not the student's to know
-      const auto now = static_cast<std::uint64_t>(std::chrono::steady_clock::now().time_since_epoch().count());
-      std::seed_seq seq{static_cast<std::uint32_t>(now), static_cast<std::uint32_t>(now >> 32)};
-      rng.seed(seq);
-    }
-  }
+  std::mt19937 rng = States::generator(checker_.options_.seed);
   // Where the reference is defined (a point on a pole is drawn again).
   for (int k = 0; k < checker_.options_.points; ++k)
     for (int attempt = 0; attempt < 16; ++attempt) {
-      Point p = checker_.draw_point(rng);
+      Sample p = checker_.draw_point(rng);
       if (ref_.program(p)) {
         points_->push_back(std::move(p));
         break;
@@ -735,7 +435,7 @@ const std::vector<Checker::Point>& Checker::FreshPoints::get() {
   return *points_;
 }
 
-Checker::Agreement Checker::compare(const ex& answer, const ex& reference, const Exact& reference_at, const Shape& shape,
+Checker::Agreement Checker::compare(const ex& answer, const ex& reference, const Program& reference_at, const Shape& shape,
                                     FreshPoints& fresh, const std::function<bool()>& over_budget, bool& exact_values) const {
   exact_values = false;
   if (answer.is_equal(reference)) return Agreement::proved;  // the closed form as GiNaC writes it
@@ -761,12 +461,12 @@ Checker::Agreement Checker::compare(const ex& answer, const ex& reference, const
     } catch (const std::exception&) {
     }
   }
-  const Exact answer_at = program(answer);
+  const Program answer_at = program(answer);
   const auto& points = fresh.get();
   // (No points, or fewer than asked where the reference is defined: nothing to go on.)
   if (points.empty() || points.size() < static_cast<std::size_t>(options_.points)) return Agreement::unevaluable;
   exact_values = true;
-  for (const Point& p : points) {
+  for (const Sample& p : points) {
     if (over_budget()) return Agreement::budget;
     const auto a = answer_at(p), b = reference_at(p);
     if (!a || !b) return Agreement::unevaluable;
@@ -861,20 +561,20 @@ Checker::Decision Checker::decide(const Reference& ref, const ex& typed, const s
   if (differing.empty()) return correct(all_proved, all_exact);
   // Along each parameter of the kinks' arguments, from each fixed point: values from 2^-64 to
   // 3 * 2^63 times the point's, so both sides of a kink within them are met.
-  std::vector<Exact> args_at;
+  std::vector<Program> args_at;
   std::set<ex, ex_is_less> used;
   for (const auto& arg : args) {
     args_at.push_back(program(arg));
     for (const auto& s : symbols_in(substituted(arg, lengths_))) used.insert(s);
   }
-  const Exact answer_at = program(answer);
-  for (const Point& base : points_)
+  const Program answer_at = program(answer);
+  for (const Sample& base : points_)
     for (std::size_t i = 0; i < base.size(); ++i) {
       if (!used.count(base[i].first)) continue;
       for (int e = -64; e <= 64; ++e)
         for (const numeric& f : {numeric(2).power(e), numeric(3, 2) * numeric(2).power(e)}) {
           if (over_budget()) return budget;
-          Point p = base;
+          Sample p = base;
           p[i].second = base[i].second * f;
           std::size_t signs = 0;
           bool clear = true;
@@ -891,10 +591,7 @@ Checker::Decision Checker::decide(const Reference& ref, const ex& typed, const s
   return refused;
 }
 
-Checker::Exact Checker::program(const ex& e) const {
-  static const Point none;
-  return Exact(e, points_.empty() ? none : points_.front(), lengths_);
-}
+Program Checker::program(const ex& e) const { return Program(e, states_.layout(), lengths_, states_.angles()); }
 
 namespace {
 
@@ -1165,7 +862,8 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
   const Dimension expected = ref.dimension.value_or(Dimension::none());
   std::string unit_shown = std::string(unit_text);
   if (unit_text.empty()) {
-    if (!(expected == Dimension::none()))
+    // (Zero is zero in every unit: 0 for a force that vanishes needs none.)
+    if (!(expected == Dimension::none()) && !value.is_zero())
       return finish(Verdict::invalid, "no_unit", "give the unit: the answer is " + with_article(expected.describe()) + " (in SI, " +
                                                      si_unit_name(expected) + ")");
   } else {
@@ -1302,7 +1000,7 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
                   "this is " + with_article(dim->describe()) + "; " + with_article(ref.dimension->describe()) + " was expected");
   // Numeric first (cheap, and it settles every wrong answer): the answer at the random points,
   // exactly in rationals where it can be, else in CLN floats to `digits`.
-  const Exact answer_at = program(answer);
+  const Program answer_at = program(answer);
   std::vector<numeric> values;
   for (std::size_t k = 0; k < points_.size(); ++k) {
     if (over_budget()) return finish(Verdict::undecided, "budget", "the answer took too long to check");
@@ -1357,17 +1055,17 @@ const Checker::Reference::Diagnosis& Checker::diagnosis(const Reference& ref) co
     d.expanded = ref.shape.expanded ? *ref.shape.expanded : ref.closed_form.expand();
     d.needed = symbols_in(ref.closed_form);
     if (Factored f; ref.shape.rational && f.put(ref.closed_form, 1)) d.factored.emplace(f.coefficient, f.powers);
-    auto at_points = [&](const Exact& e, const std::function<void(Point&)>& change) {
+    auto at_points = [&](const Program& e, const std::function<void(Sample&)>& change) {
       std::vector<std::optional<numeric>> out;
-      for (Point p : points_) {
+      for (Sample p : points_) {
         change(p);
         out.push_back(e(p));
       }
       return out;
     };
-    const auto keep = [](Point&) {};
+    const auto keep = [](Sample&) {};
     for (std::size_t i = 0; !points_.empty() && i < points_[0].size(); ++i) {
-      Point p = points_[0];
+      Sample p = points_[0];
       p[i].second *= 2;
       d.doubled.push_back(ref.program(p));
     }
@@ -1376,12 +1074,12 @@ const Checker::Reference::Diagnosis& Checker::diagnosis(const Reference& ref) co
         d.term_turned.push_back(at_points(program(d.expanded - 2 * d.expanded.op(i)), keep));
         d.term_left_out.push_back(at_points(program(d.expanded - d.expanded.op(i)), keep));
       }
-    auto set = [](Point& p, const ex& s, const std::function<numeric(const Point&)>& value) {
+    auto set = [](Sample& p, const ex& s, const std::function<numeric(const Sample&)>& value) {
       const numeric v = value(p);
       for (auto& [sym, x] : p)
         if (sym.is_equal(s)) x = v;
     };
-    auto value_of = [](const Point& p, const ex& s) {
+    auto value_of = [](const Sample& p, const ex& s) {
       for (const auto& [sym, x] : p)
         if (sym.is_equal(s)) return std::optional<numeric>(x);
       return std::optional<numeric>();
@@ -1389,38 +1087,43 @@ const Checker::Reference::Diagnosis& Checker::diagnosis(const Reference& ref) co
     for (std::size_t i = 0; i < parameters_.size(); ++i) {
       const ex& p = parameters_[i].symbol;
       if (!ref.closed_form.has(p)) continue;
-      d.zeroed[i] = at_points(ref.program, [&](Point& pt) { set(pt, p, [](const Point&) { return numeric(0); }); });
+      d.zeroed[i] = at_points(ref.program, [&](Sample& pt) { set(pt, p, [](const Sample&) { return numeric(0); }); });
     }
     for (std::size_t i = 0; i < parameters_.size() && i < 16; ++i)
       for (std::size_t j = i + 1; j < parameters_.size() && j < 16; ++j) {
         const auto& a = parameters_[i];
         const auto& b = parameters_[j];
         if (!(a.dimension == b.dimension) || !ref.closed_form.has(a.symbol) || !ref.closed_form.has(b.symbol)) continue;
-        d.equalled[{i, j}] = at_points(ref.program, [&](Point& pt) {
-          if (const auto x = value_of(pt, a.symbol); x && value_of(pt, b.symbol)) set(pt, b.symbol, [&](const Point&) { return *x; });
+        // (An angle's input is its half-angle's tangent: equal to another's value it is not the same.)
+        const auto angle = [&](const ex& x) {
+          return std::any_of(states_.inputs().begin(), states_.inputs().end(), [&](const StateInput& in) { return in.angle && in.symbol.is_equal(x); });
+        };
+        if (angle(a.symbol) || angle(b.symbol)) continue;
+        d.equalled[{i, j}] = at_points(ref.program, [&](Sample& pt) {
+          if (const auto x = value_of(pt, a.symbol); x && value_of(pt, b.symbol)) set(pt, b.symbol, [&](const Sample&) { return *x; });
         });
       }
   });
   return ref.lazy->diagnosis;
 }
 
-std::optional<Checker::QuotientShape> Checker::quotient_shape(const Reference& ref, const Exact& answer_at,
+std::optional<Checker::QuotientShape> Checker::quotient_shape(const Reference& ref, const Program& answer_at,
                                                               const std::vector<numeric>& values) const {
   // At the first point, each parameter doubled in turn: the quotient changes by 2^e for a
-  // power p^e of it, and not at all when it does not depend on it. Exact rationals only.
+  // power p^e of it, and not at all when it does not depend on it. Program rationals only.
   const Reference::Diagnosis& diag = diagnosis(ref);
   if (values.empty() || ref.at_points.empty() || ref.at_points[0].is_zero() || values[0].is_zero() ||
       !values[0].is_rational() || !ref.at_points[0].is_rational() || diag.doubled.size() != points_[0].size())
     return std::nullopt;
   static const std::vector<std::pair<int, numeric>> powers_of_two{{1, 2}, {-1, numeric(1, 2)}, {2, 4}, {-2, numeric(1, 4)},
                                                                   {3, 8}, {-3, numeric(1, 8)}, {4, 16}, {-4, numeric(1, 16)}};
-  const Point& p0 = points_[0];
+  const Sample& p0 = points_[0];
   const numeric q0 = values[0] / ref.at_points[0];
   QuotientShape shape;
   std::vector<int> exponents(p0.size(), 0);
   bool powers = true;
   for (std::size_t i = 0; i < p0.size(); ++i) {
-    Point p = p0;
+    Sample p = p0;
     p[i].second *= 2;
     const auto& b = diag.doubled[i];
     const auto a = answer_at(p);
@@ -1435,7 +1138,7 @@ std::optional<Checker::QuotientShape> Checker::quotient_shape(const Reference& r
   }
   if (!powers) return shape;
   // c times the powers, checked at every point.
-  const auto at = [&](const Point& p) {
+  const auto at = [&](const Sample& p) {
     numeric v = 1;
     for (std::size_t i = 0; i < p.size(); ++i)
       if (exponents[i] != 0) v *= p[i].second.power(exponents[i]);
@@ -1451,7 +1154,7 @@ std::optional<Checker::QuotientShape> Checker::quotient_shape(const Reference& r
   return shape;
 }
 
-void Checker::diagnose(const Reference& ref, const ex& answer, const Exact& answer_at, const std::vector<numeric>& values, CheckResult& r) const {
+void Checker::diagnose(const Reference& ref, const ex& answer, const Program& answer_at, const std::vector<numeric>& values, CheckResult& r) const {
   const std::size_t n = std::min(values.size(), ref.at_points.size());
   // The sign, or a constant factor (exact when the ratio simplifies to a number).
   bool constant_ratio = n > 0;
@@ -1466,7 +1169,7 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const Exact& answ
     else constant_ratio = same(q, *ratio);
   }
   if (constant_ratio && ratio) {
-    // Exact when the values are; else the ratio rounded to a simple fraction.
+    // Program when the values are; else the ratio rounded to a simple fraction.
     numeric c = *ratio;
     if (!c.is_rational() && std::abs(c.to_double()) < 1e12) {  // (a larger ratio does not fit a long: fuzzing)
       const double x = c.to_double();
@@ -1506,9 +1209,9 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const Exact& answ
   // Does the answer, at the points changed by `change`, take the reference's values
   // `reference` (at the same points changed as the diagnosis says)? Swapping two parameters or
   // setting one to zero changes the point, not the expression.
-  auto matches_at = [&](const std::function<void(Point&)>& change, const std::vector<std::optional<numeric>>& reference) {
+  auto matches_at = [&](const std::function<void(Sample&)>& change, const std::vector<std::optional<numeric>>& reference) {
     for (std::size_t k = 0; k < points_.size(); ++k) {
-      Point pa = points_[k];
+      Sample pa = points_[k];
       change(pa);
       const auto a = answer_at(pa);
       if (!a || k >= reference.size() || !reference[k] || !same(*a, *reference[k])) return false;
@@ -1516,7 +1219,7 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const Exact& answ
     return true;
   };
   std::vector<std::optional<numeric>> at_points(ref.at_points.begin(), ref.at_points.end());
-  auto value_of = [](Point& p, const ex& s) -> numeric* {
+  auto value_of = [](Sample& p, const ex& s) -> numeric* {
     for (auto& [sym, v] : p)
       if (sym.is_equal(s)) return &v;
     return nullptr;
@@ -1540,7 +1243,7 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const Exact& answ
     const ex swapped = expanded.subs(lst{sin(wild(0)) == cos(wild(0)), cos(wild(0)) == sin(wild(0))});
     if (!swapped.is_equal(expanded)) {
       bool all = n > 0;
-      const Exact swapped_at = program(swapped);
+      const Program swapped_at = program(swapped);
       for (std::size_t k = 0; all && k < n; ++k) {
         auto v = swapped_at(points_[k]);
         all = v && same(*v, ref.at_points[k]);
@@ -1599,7 +1302,7 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const Exact& answ
         const exmap swap{{params[i], params[j]}, {params[j], params[i]}};
         const ex swapped = substituted(substituted(answer, swap), definitions_);
         bool all = true;
-        const Exact swapped_at = program(swapped);
+        const Program swapped_at = program(swapped);
         for (std::size_t k = 0; all && k < points_.size(); ++k) {
           auto a = swapped_at(points_[k]);
           all = a && same(*a, ref.at_points[k]);
@@ -1607,7 +1310,7 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const Exact& answ
         if (all) r.findings.push_back({"swapped", to_text(params[i]) + " and " + to_text(params[j]) + " are swapped"});
         continue;
       }
-      const auto swap = [&](Point& p) {
+      const auto swap = [&](Sample& p) {
         numeric* x = value_of(p, params[i]);
         numeric* y = value_of(p, params[j]);
         if (x && y) std::swap(*x, *y);
@@ -1620,11 +1323,11 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const Exact& answ
     const ex& p = params[i];
     const auto zeroed = diag.zeroed.find(i);
     if (zeroed == diag.zeroed.end() || used.count(p)) continue;
-    if (matches_at([](Point&) {}, zeroed->second)) r.findings.push_back({"special_case", "this is correct only " + describe(p)});
+    if (matches_at([](Sample&) {}, zeroed->second)) r.findings.push_back({"special_case", "this is correct only " + describe(p)});
   }
   for (const auto& [pair, reference] : diag.equalled) {
     const std::size_t i = pair.first, j = pair.second;  // (clang 14: a lambda cannot capture a structured binding)
-    const auto equal_values = [&](Point& pt) {
+    const auto equal_values = [&](Sample& pt) {
       numeric* x = value_of(pt, params[i]);
       numeric* y = value_of(pt, params[j]);
       if (x && y) *y = *x;

@@ -20,6 +20,8 @@
 
 #include <ginac/ginac.h>
 
+#include "algebra/program.hpp"
+#include "algebra/states.hpp"
 #include "core/limits.hpp"
 #include "core/units.hpp"
 #include "pipeline/pipeline.hpp"
@@ -132,35 +134,6 @@ class Checker {
   [[nodiscard]] const CheckOptions& options() const { return options_; }
 
  private:
-  using Point = std::vector<std::pair<GiNaC::ex, GiNaC::numeric>>;  // symbol -> value
-  // An expression made once into code over the points' parameters (in the points' order)
-  // and evaluated at each point: exact rationals as long as the operations allow, CLN floats
-  // after a fractional power or a function; nothing for a symbol without a value, a division
-  // by zero, a complex value or a number past the bounds. A check evaluates its answer at
-  // every point and a diagnosis the answer and the reference at changed points: walking the
-  // expression node by node at each point (GiNaC makes the products' factors anew for each
-  // visit) was half the time of a check.
-  class Exact {
-   public:
-    Exact() = default;  // evaluates to nothing
-    /// A symbol that is not in `layout` is replaced by its entry in `definitions` (to 8 levels).
-    Exact(const GiNaC::ex& e, const Point& layout, const GiNaC::exmap& definitions);
-    [[nodiscard]] std::optional<GiNaC::numeric> operator()(const Point& point) const;
-
-   private:
-    enum class Op { number, input, nothing, add, mul, power, function };
-    struct Node {
-      Op op;
-      cln::cl_R number;       // number
-      std::size_t index = 0;  // input: the parameter's place in a point
-      unsigned serial = 0;    // function
-      std::size_t n = 0;      // add, mul: how many operands follow
-    };
-    struct Value;  // a fraction kept unreduced, or a float
-    std::vector<Node> nodes_;  // in preorder
-    void emit(const GiNaC::ex& e, const Point& layout, const GiNaC::exmap& definitions, int depth);
-    bool run(std::size_t& at, const Point& point, Value& out) const;
-  };
   // What deciding an equality with an expression needs to know of it.
   struct Shape {
     bool rational = false;  // a rational function of independent symbols
@@ -170,7 +143,7 @@ class Checker {
   struct Reference {
     std::string name;
     GiNaC::ex closed_form;
-    Exact program;  // the closed form, made once
+    Program program;  // the closed form, made once
     std::optional<Dimension> dimension;
     std::optional<GiNaC::numeric> value;     // SI, when every parameter has a value
     std::vector<GiNaC::numeric> at_points;   // the closed form at each random point
@@ -213,12 +186,12 @@ class Checker {
   class FreshPoints {
    public:
     explicit FreshPoints(const Checker& checker, const Reference& ref) : checker_(checker), ref_(ref) {}
-    const std::vector<Point>& get();
+    const std::vector<Sample>& get();
 
    private:
     const Checker& checker_;
     const Reference& ref_;
-    std::optional<std::vector<Point>> points_;
+    std::optional<std::vector<Sample>> points_;
   };
   // A verdict reached beyond the fixed points.
   struct Decision {
@@ -231,7 +204,7 @@ class Checker {
                            CheckResult r, const GiNaC::exmap* values) const;
   CheckResult check_expression(const Reference& ref, std::string_view text, CheckResult r,
                                std::chrono::steady_clock::time_point start, const std::function<int(int)>& column) const;
-  void diagnose(const Reference& ref, const GiNaC::ex& answer, const Exact& answer_at, const std::vector<GiNaC::numeric>& values,
+  void diagnose(const Reference& ref, const GiNaC::ex& answer, const Program& answer_at, const std::vector<GiNaC::numeric>& values,
                 CheckResult& r) const;
   // The quotient answer/reference as the values show it: a product of powers of the
   // parameters (c p^e q^f..., exponents up to 4) when it is one, and how many parameters it
@@ -240,7 +213,7 @@ class Checker {
     std::optional<GiNaC::ex> monomial;
     int depends_on = 0;
   };
-  [[nodiscard]] std::optional<QuotientShape> quotient_shape(const Reference& ref, const Exact& answer_at,
+  [[nodiscard]] std::optional<QuotientShape> quotient_shape(const Reference& ref, const Program& answer_at,
                                                             const std::vector<GiNaC::numeric>& values) const;
   /// The reference's part of every diagnosis (made once, on first use; safe from threads).
   [[nodiscard]] const Reference::Diagnosis& diagnosis(const Reference& ref) const;
@@ -248,13 +221,13 @@ class Checker {
   /// point, decided: proved or refuted by normal() where GiNaC can, else at fresh points (and
   /// for abs(), on each side of every kink).
   [[nodiscard]] Decision decide(const Reference& ref, const GiNaC::ex& answer, const std::function<bool()>& over_budget) const;
-  [[nodiscard]] Agreement compare(const GiNaC::ex& answer, const GiNaC::ex& reference, const Exact& reference_at,
+  [[nodiscard]] Agreement compare(const GiNaC::ex& answer, const GiNaC::ex& reference, const Program& reference_at,
                                   const Shape& shape, FreshPoints& fresh, const std::function<bool()>& over_budget, bool& exact_values) const;
   /// A point near the parameters' values drawn from `rng`, finer than the fixed points.
-  [[nodiscard]] Point draw_point(std::mt19937& rng) const;
+  [[nodiscard]] Sample draw_point(std::mt19937& rng) const;
   /// `e` made into code for the points, every defined parameter put in (the turning strands'
   /// lengths too).
-  [[nodiscard]] Exact program(const GiNaC::ex& e) const;
+  [[nodiscard]] Program program(const GiNaC::ex& e) const;
   bool same(const GiNaC::numeric& a, const GiNaC::numeric& b) const;
   std::string describe(const GiNaC::ex& parameter) const;
 
@@ -265,10 +238,10 @@ class Checker {
   std::vector<std::string> problem_unknowns_;
   GiNaC::exmap definitions_;                // defined parameters, expanded before comparing
   GiNaC::exmap lengths_;                    // the turning strands' lengths too: for numbers only
-  std::vector<Point> points_;
-  // Each parameter of a point (in the points' order) and the value points are drawn near
-  // (nothing: drawn from 1 to 10).
-  std::vector<std::pair<GiNaC::ex, std::optional<GiNaC::numeric>>> bases_;
+  // The states answers are compared at (algebra/states.hpp): each parameter, and the value
+  // points are drawn near (an angle's: its tan(angle/2)); the fixed points.
+  States states_;
+  std::vector<Sample> points_;
   GiNaC::numeric tolerance_;                // relative, for values that are not exact: 10^-(digits - 8)
   std::map<std::string, Reference, std::less<>> references_;
   std::shared_ptr<const EquationChecker> equations_;

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <random>
 
+#include "check/check.hpp"
 #include "core/files.hpp"
 #include "description/yaml_reader.hpp"
 #include "expr/parse.hpp"
@@ -440,4 +441,48 @@ motion:
   CHECK_FALSE(limited.complete);
   CHECK(limited.steps == 1);
   CHECK(limited.stopped.find("in its time limit (1 steps): undecided beyond") != std::string::npos);
+}
+
+// Issue "verdicts": the same expression can never be right as an answer and wrong as an
+// equation. Each example's expected closed form (derived by hand in its notes) is checked as
+// the answer for its unknown and as the equation `unknown = closed form`: both correct; the
+// equation with the sign of the closed form turned is incorrect (where the closed form is
+// not zero).
+TEST_CASE("Examples: every expected answer is correct as an answer and as the equation unknown = closed form", "[examples][check]") {
+  std::size_t checked = 0;
+  for (const auto& file : example_files()) {
+    const yaml::Document doc = load_yaml(file);
+    const yaml::Node top = doc.root();
+    const auto whole = analyze_file(file, test::rules());
+    auto check = [&](const yaml::Node& root, const Analysis& an) {
+      CheckOptions options;
+      options.seed = 41;
+      const Checker checker(an, options);
+      const auto checkable = checker.unknowns();
+      for (const auto& kv : root["expected"]) {
+        const std::string name = yaml_text(kv.first), form = yaml_text(kv.second["closed_form"]);
+        if (std::find(checkable.begin(), checkable.end(), name) == checkable.end()) continue;
+        INFO(file << ": " << name << " = " << form);
+        const CheckResult answer = checker.check(name, form);
+        INFO("as an answer: " << verdict_name(answer.verdict) << ": " << answer.summary);
+        CHECK(answer.verdict == Verdict::correct);
+        const CheckResult equation = checker.check_equation(name + " = " + form);
+        INFO("as an equation: " << verdict_name(equation.verdict) << ": " << equation.summary);
+        CHECK(equation.verdict == Verdict::correct);
+        const auto parsed = parse_expression(form, *an.model.symbols);
+        if (parsed.value && !parsed.value->is_zero()) {
+          const CheckResult turned = checker.check_equation(name + " = -(" + form + ")");
+          INFO("turned: " << verdict_name(turned.verdict) << ": " << turned.summary);
+          CHECK(turned.verdict == Verdict::incorrect);
+        }
+        ++checked;
+      }
+    };
+    if (const yaml::Node phases = top["phases"]) {
+      for (std::size_t i = 0; i < phases.size(); ++i) check(phases[i], *whole->phases[i].analysis);
+    } else {
+      check(top, *whole);
+    }
+  }
+  CHECK(checked >= 150);
 }

@@ -534,14 +534,15 @@ TEST_CASE("Check: an answer correct only on one side of an abs() kink is incorre
 
 TEST_CASE("Check: the points a numeric verdict rests on are drawn for each check", "[check][trust]") {
   // The incline: N_A = m_A g cos(theta). sin(theta + pi/2) is cos(theta), an identity normal()
-  // does not know: decided at points. A correct answer is correct at every point, so from
-  // every seed (an answer wrong away from the fixed points is wrong at the fresh ones: above).
+  // does not know: decided at points, exactly (theta's points are rational points on the
+  // circle). A correct answer is correct at every point, so from every seed (an answer wrong
+  // away from the fixed points is wrong at the fresh ones: above).
   const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/incline-and-hanging-block.yaml", test::rules());
   for (const std::uint64_t seed : {1u, 5u, 123456789u}) {
     const CheckResult r = seeded(*a, seed)->check("N_A", "g*m_A*sin(theta + pi/2)");
     CHECK(r.verdict == Verdict::correct);
-    CHECK(r.method == "numeric");
-    CHECK(r.summary == "equal to the closed form at 8 random points, to 32 digits");
+    CHECK(r.method == "exact rationals");
+    CHECK(r.summary == "equal to the closed form (in exact arithmetic at 8 random points)");
   }
   // With no points to draw (a library caller's choice), an answer only points could decide
   // is never correct; a rational one is still proved.
