@@ -6,33 +6,58 @@ namespace tackle {
 
 using namespace GiNaC;
 
+namespace {
+
+// Which unknown `f` is (its place), or -1; -2 when it is not one but holds one.
+int unknown_place(const ex& f, const std::vector<ex>& unknowns) {
+  if (is_exactly<symbol>(f)) {
+    for (std::size_t i = 0; i < unknowns.size(); ++i)
+      if (unknowns[i].is_equal(f)) return static_cast<int>(i);
+    return -1;
+  }
+  if (is_exactly<numeric>(f)) return -1;
+  for (const ex& u : unknowns)
+    if (f.has(u)) return -2;
+  return -1;
+}
+
+// A term of an expanded sum into the parts: its unknown's (its coefficient), or the rest's;
+// false when it holds two unknowns, a power of one, or one inside anything else.
+bool put_term(const ex& t, const std::vector<ex>& unknowns, std::vector<exvector>& parts) {
+  if (!is_exactly<mul>(t)) {
+    const int place = unknown_place(t, unknowns);
+    if (place == -2) return false;
+    if (place >= 0) parts[static_cast<std::size_t>(place)].push_back(1);
+    else parts.back().push_back(t);
+    return true;
+  }
+  int found = -1;
+  exvector rest;
+  for (std::size_t i = 0; i < t.nops(); ++i) {
+    const ex f = t.op(i);
+    const int place = unknown_place(f, unknowns);
+    if (place == -2 || (place >= 0 && found >= 0)) return false;
+    if (place >= 0) found = place;
+    else rest.push_back(f);
+  }
+  (found >= 0 ? parts[static_cast<std::size_t>(found)] : parts.back()).push_back(mul(rest));
+  return true;
+}
+
+}  // namespace
+
 std::optional<std::vector<ex>> linear_parts(const ex& residual, const std::vector<ex>& unknowns) {
   try {
     const ex e = residual.expand();
-    std::vector<ex> v;
-    exmap zero;
-    for (const ex& u : unknowns) zero[u] = 0;
-    for (const ex& u : unknowns) {
-      if (!e.has(u)) {
-        v.push_back(0);
-        continue;
-      }
-      // (degree() throws for a power with a fractional exponent, sqrt(T^2): not linear.)
-      if (e.degree(u) > 1 || e.ldegree(u) < 0) return std::nullopt;
-      const ex c = e.coeff(u, 1);
-      for (const ex& w : unknowns)
-        if (c.has(w)) return std::nullopt;  // a product of two unknowns
-      v.push_back(c);
+    std::vector<exvector> parts(unknowns.size() + 1);
+    if (is_exactly<add>(e)) {
+      for (std::size_t i = 0; i < e.nops(); ++i)
+        if (!put_term(e.op(i), unknowns, parts)) return std::nullopt;
+    } else if (!put_term(e, unknowns, parts)) {
+      return std::nullopt;
     }
-    const ex rest = e.subs(zero);
-    // Every unknown must appear linearly: what is left must be free of them, and the parts
-    // must make the whole (abs(T) has no part linear in T).
-    for (const ex& w : unknowns)
-      if (rest.has(w)) return std::nullopt;
-    ex whole = rest;
-    for (std::size_t i = 0; i < unknowns.size(); ++i) whole += v[i] * unknowns[i];
-    if (!(e - whole).expand().is_zero()) return std::nullopt;
-    v.push_back(rest);
+    std::vector<ex> v;
+    for (const auto& p : parts) v.push_back(add(p));
     return v;
   } catch (const std::bad_alloc&) {
     throw;
@@ -78,6 +103,18 @@ Truth::Truth(Family family, const States& states, std::vector<Sample> points, st
     if (!consistent) return;
   }
   usable_ = !points_.empty();
+  prepare_basis();
+}
+
+void Truth::prepare_basis() {
+  std::vector<Row> first;
+  for (const auto& r : at_rows_) first.push_back(r[0]);
+  basis_ = independent_rows(first, width(), tolerance_);
+  for (std::size_t k = 0; k < points_.size(); ++k) {
+    std::vector<Row> rows;
+    for (const std::size_t i : basis_) rows.push_back(at_rows_[i][k]);
+    inverses_.push_back(left_inverse(rows, width(), tolerance_));
+  }
 }
 
 Sample Truth::extended(std::size_t k, const Row& unknowns) const {
@@ -88,7 +125,7 @@ Sample Truth::extended(std::size_t k, const Row& unknowns) const {
   return p;
 }
 
-Truth::Values Truth::values(const std::vector<ex>& parts, bool fixed_only) const {
+Truth::Values Truth::values(const std::vector<ex>& parts, bool fixed_only, std::size_t first) const {
   std::vector<Program> programs;
   for (std::size_t j = 0; j < parts.size(); ++j) {
     const bool dropped = family_.free_constants && j + 1 == parts.size();
@@ -97,7 +134,7 @@ Truth::Values Truth::values(const std::vector<ex>& parts, bool fixed_only) const
   const std::size_t n = fixed_only ? std::min(fixed_, points_.size()) : points_.size();
   std::vector<Row> out;
   const Row none(family_.unknowns.size(), 0);
-  for (std::size_t k = 0; k < n; ++k) {
+  for (std::size_t k = first; k < n; ++k) {
     const Sample p = extended(k, none);
     Row row;
     for (const Program& prog : programs) {
@@ -118,7 +155,7 @@ Truth::Decision Truth::holds(const std::vector<Row>& values) const {
       if (!orthogonal(values[k], x, tolerance_)) return {Answer::fails, rational && all_rational(null_[k])};
     exact = exact && rational && all_rational(null_[k]);
   }
-  return {fresh() ? Answer::holds : Answer::unknown, exact};
+  return {values.size() > fixed_ ? Answer::holds : Answer::unknown, exact};
 }
 
 std::optional<Row> Truth::solution(std::size_t k, std::mt19937& rng) const {
@@ -211,39 +248,30 @@ bool Truth::proportional(const std::vector<Row>& a, const std::vector<Row>& b) c
 }
 
 std::vector<Truth::Part> Truth::combination(const std::vector<Row>& values) const {
-  if (values.empty() || at_rows_.empty()) return {};
-  // At the first point: all the equations, then each left out (the latest first) while the
-  // rest still give it.
-  std::vector<std::size_t> used;
-  for (std::size_t i = 0; i < at_rows_.size(); ++i)
-    if (std::any_of(at_rows_[i][0].begin(), at_rows_[i][0].end(), [](const numeric& x) { return !x.is_zero(); })) used.push_back(i);
-  auto rows_at = [&](const std::vector<std::size_t>& which, std::size_t k) {
-    std::vector<Row> rows;
-    for (const std::size_t i : which) rows.push_back(at_rows_[i][k]);
-    return rows;
-  };
-  for (std::size_t j = used.size(); j-- > 0;) {
-    std::vector<std::size_t> rest = used;
-    rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(j));
-    if (combination_of(rows_at(rest, 0), values[0], tolerance_)) used = std::move(rest);
-  }
-  // Each coefficient at every point, against the first's: plain when the same number at each.
-  std::vector<Part> out;
+  if (values.empty() || basis_.empty()) return {};
+  // The coefficients at each point (in the basis), where its left inverse is known.
   std::vector<std::optional<Row>> lambdas;
-  for (std::size_t k = 0; k < values.size(); ++k) lambdas.push_back(combination_of(rows_at(used, k), values[k], tolerance_));
-  for (std::size_t j = 0; j < used.size(); ++j) {
+  for (std::size_t k = 0; k < values.size() && k < inverses_.size(); ++k)
+    lambdas.push_back(inverses_[k] ? std::optional<Row>(inverses_[k]->coefficients(values[k])) : std::nullopt);
+  if (lambdas.empty() || !lambdas[0]) return {};
+  const Row& at_first = *lambdas[0];
+  const numeric scale = size_of(at_first);
+  std::vector<std::size_t> used;
+  for (std::size_t j = 0; j < at_first.size(); ++j)
+    if (!tolerance_.negligible(at_first[j], scale)) used.push_back(j);
+  // Plain: each coefficient over the first's the same number at every point.
+  std::vector<Part> out;
+  for (const std::size_t j : used) {
     bool plain = true;
-    std::optional<numeric> ratio;
     for (const auto& l : lambdas) {
-      if (!l || (*l)[0].is_zero()) {
+      if (!l) {
         plain = false;
         break;
       }
-      const numeric r = (*l)[j] / (*l)[0];
-      if (ratio && !tolerance_.negligible(r - *ratio, abs(r) + abs(*ratio))) plain = false;
-      ratio = r;
+      const numeric a = (*l)[j] * at_first[used.front()], b = (*l)[used.front()] * at_first[j];
+      plain = plain && tolerance_.negligible(a - b, abs(a) + abs(b));
     }
-    out.push_back({used[j], plain && ratio && ratio->is_rational()});
+    out.push_back({basis_[j], plain});
   }
   return out;
 }

@@ -69,12 +69,13 @@ class Truth {
   [[nodiscard]] std::size_t points() const { return points_.size(); }
   [[nodiscard]] std::size_t fixed() const { return fixed_; }
 
-  /// The parts' values at every point (or the fixed ones only).
-  [[nodiscard]] Values values(const std::vector<GiNaC::ex>& parts, bool fixed_only = false) const;
+  /// The parts' values at the points from `first` (all of them, or the fixed ones only).
+  [[nodiscard]] Values values(const std::vector<GiNaC::ex>& parts, bool fixed_only = false, std::size_t first = 0) const;
   /// The equation `i`'s parts' values at every point.
   [[nodiscard]] const std::vector<Row>& equation_values(std::size_t i) const { return at_rows_[i]; }
-  /// Whether the linear equation with these values holds at every point (unknown when it
-  /// holds and there are no fresh points).
+  /// Whether the linear equation with these values (at the first points, or all) holds at
+  /// those points: it fails at one, or holds at all of them; unknown when it holds there and
+  /// they are not past the fixed ones.
   [[nodiscard]] Decision holds(const std::vector<Row>& values) const;
   /// Whether `residual` (any expression in the unknowns and the inputs) vanishes at random
   /// solutions at every point.
@@ -106,14 +107,18 @@ class Truth {
   std::size_t fixed_ = 0;
   std::vector<std::vector<Row>> at_rows_;  // [equation][point]: its parts' values
   std::vector<std::vector<Row>> null_;     // [point]: the null space of [A | e]
+  // The equations a combination is written in (independent at the first point, the earlier
+  // kept first), and at each point their left inverse (none where they are not independent).
+  std::vector<std::size_t> basis_;
+  std::vector<std::optional<LeftInverse>> inverses_;
   bool usable_ = false;
+  void prepare_basis();
 
   [[nodiscard]] std::size_t width() const { return family_.unknowns.size() + 1; }
   // Some points past the fixed ones: anyone can find the fixed points, so that an equation
   // built to hold at them alone must not be found to hold.
   [[nodiscard]] bool fresh() const { return points_.size() > fixed_; }
   [[nodiscard]] Sample extended(std::size_t k, const Row& unknowns) const;
-  void prepare_point(std::size_t k);
 };
 
 }  // namespace tackle

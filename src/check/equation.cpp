@@ -208,52 +208,62 @@ void EquationChecker::build_levels(const Analysis& analysis) {
   std::vector<ex> positions;
   for (const auto& s : table.all())
     if (s->role == SymbolRole::coordinate && !contains(accelerations, s->sym)) positions.push_back(s->sym);
-  // The states: every other symbol without a definition, angles found in every equation.
+  // The states' inputs: every other symbol without a definition, angles found in every equation.
   exset angles;
   for (const auto* v : {&equations_, &rate_equations_, &position_equations_})
     for (const auto& e : *v) angles_in(substituted(e.lhs - e.rhs, definitions_), angles);
   for (const auto& d : analysis.solution.values) angles_in(substituted(d.value, definitions_), angles);
-  std::vector<StateInput> inputs;
   for (const auto& s : table.all()) {
     if (s->definition || contains(accelerations, s->sym)) continue;
     if (s->role == SymbolRole::defined || s->role == SymbolRole::motion) continue;
-    const bool angle = angles.count(s->sym) != 0;
-    inputs.push_back(state_input(*s, m.layout, angle));
+    inputs_.push_back(state_input(*s, m.layout, angles.count(s->sym) != 0));
   }
-  const States states(std::move(inputs));
-  std::vector<Sample> points;
-  for (std::size_t k = 0; k < fixed_points; ++k) points.push_back(states.fixed(static_cast<int>(k)));
-  std::mt19937 rng = States::generator(options_.seed);
-  for (int k = 0; k < options_.points; ++k) points.push_back(states.draw(rng));
-  const Tolerance tolerance{ex_to<numeric>(GiNaC::pow(numeric(10), numeric(-(options_.digits - 8))))};
-  const exmap plain = table.definitions();
-  // A level decides with these of its equations (none past the bound: its checks are undecided).
-  auto make = [&](Level& level, std::vector<const Equation*> equations, const std::vector<ex>& unknowns, bool free_constants) {
-    level.equations = std::move(equations);
-    level.unknowns = unknowns;
-    if (level.equations.size() > max_family) return;
-    level.truth = Truth(family_of(level.equations, unknowns, plain, free_constants), states, points, fixed_points, definitions_,
-                        tolerance);
+  auto level = [](Level& l, std::string name, std::vector<const Equation*> equations, std::vector<ex> unknowns) {
+    l.name = std::move(name);
+    l.equations = std::move(equations);
+    l.unknowns = std::move(unknowns);
   };
-  // Rates: the constraints' in rates, solved at each point, so that the states are motions the
-  // model allows (a rate the constraints fix is set to what they fix it to; the fixed points'
-  // the same in every run).
-  rate_.name = "constraints in rates";
-  make(rate_, pointers(rate_equations_), rates, false);
-  std::mt19937 same(5);
-  if (rate_.truth.usable())
-    for (std::size_t k = 0; k < points.size(); ++k)
-      if (const auto u = rate_.truth.solution(k, k < fixed_points ? same : rng))
-        for (std::size_t j = 0; j < rates.size(); ++j)
-          for (auto& [symbol, value] : points[k])
-            if (symbol.is_equal(rates[j])) value = (*u)[j];
-  acceleration_.name = "balances and constraints";
-  make(acceleration_, pointers(equations_), accelerations, false);
-  // The complete set cannot decide (it contradicts itself at the states): the derivation's own.
-  if (!acceleration_.truth.usable() && equations_.size() > analysis.system.equations.size())
-    make(acceleration_, pointers(equations_, analysis.system.equations.size()), accelerations, false);
-  position_.name = "length sums";
-  make(position_, pointers(position_equations_), positions, true);
+  level(rate_, "constraints in rates", pointers(rate_equations_), rates);
+  level(acceleration_, "balances and constraints", pointers(equations_), accelerations);
+  level(position_, "length sums", pointers(position_equations_), positions);
+  derivation_size_ = analysis.system.equations.size();
+}
+
+// The states, then each level's algebra over them (a checker made for answers alone never
+// pays for them).
+void EquationChecker::prepare() const {
+  std::call_once(prepared_, [&] {
+    const States states(inputs_);
+    std::vector<Sample> points;
+    for (std::size_t k = 0; k < fixed_points; ++k) points.push_back(states.fixed(static_cast<int>(k)));
+    std::mt19937 rng = States::generator(options_.seed);
+    for (int k = 0; k < options_.points; ++k) points.push_back(states.draw(rng));
+    const Tolerance tolerance{ex_to<numeric>(GiNaC::pow(numeric(10), numeric(-(options_.digits - 8))))};
+    const exmap plain = symbols_->definitions();
+    // A level decides with its equations (none past the bound: its checks are undecided).
+    auto make = [&](Level& level, std::size_t count, bool free_constants) {
+      if (level.equations.size() > max_family) return;
+      const std::vector<const Equation*> used(level.equations.begin(), level.equations.begin() + static_cast<std::ptrdiff_t>(count));
+      level.truth.emplace(family_of(used, level.unknowns, plain, free_constants), states, points, fixed_points, definitions_, tolerance);
+      if (count < level.equations.size()) level.equations = used;
+    };
+    // Rates: the constraints' in rates, solved at each point, so that the states are motions
+    // the model allows (a rate the constraints fix is set to what they fix it to; the fixed
+    // points' the same in every run).
+    make(rate_, rate_.equations.size(), false);
+    std::mt19937 same(5);
+    if (rate_.truth && rate_.truth->usable())
+      for (std::size_t k = 0; k < points.size(); ++k)
+        if (const auto u = rate_.truth->solution(k, k < fixed_points ? same : rng))
+          for (std::size_t j = 0; j < rate_.unknowns.size(); ++j)
+            for (auto& [symbol, value] : points[k])
+              if (symbol.is_equal(rate_.unknowns[j])) value = (*u)[j];
+    make(acceleration_, acceleration_.equations.size(), false);
+    // The complete set cannot decide (it contradicts itself at the states): the derivation's own.
+    if (acceleration_.truth && !acceleration_.truth->usable() && acceleration_.equations.size() > derivation_size_)
+      make(acceleration_, derivation_size_, false);
+    make(position_, position_.equations.size(), true);
+  });
 }
 
 const Equation* EquationChecker::equation(const std::string& label) const {
@@ -305,6 +315,7 @@ bool has_any(const ex& e, const std::vector<ex>& symbols) {
 }  // namespace
 
 CheckResult EquationChecker::check(std::string_view text) const {
+  prepare();
   CheckResult r;
   r.equation = true;
   auto finish = [&](Verdict v, std::string code, std::string message) { return r.conclude(v, std::move(code), std::move(message)); };
@@ -369,39 +380,50 @@ CheckResult EquationChecker::check(std::string_view text) const {
 std::optional<Rows> EquationChecker::values_of(const Level& level, const ex& e, bool fixed_only) const {
   const auto parts = linear_parts(substituted(e, symbols_->definitions()), level.unknowns);
   if (!parts) return std::nullopt;
-  return level.truth.values(*parts, fixed_only);
+  return level.truth->values(*parts, fixed_only);
 }
 
-CheckResult EquationChecker::decide(const Level& level, const ex& residual, CheckResult r) const {
-  if (level.equations.size() > max_family)
-    return r.conclude(Verdict::undecided, "too_large", "this problem has too many equations to decide a combination of them (" +
-                                                           std::to_string(level.equations.size()) + ")");
-  if (!level.truth.usable())
-    return r.conclude(Verdict::undecided, "model", "tackle cannot decide an equation for this problem: its " + level.name +
-                                                       " are not linear in the unknowns, or contradict each other");
-  const auto parts = linear_parts(residual, level.unknowns);
-  std::optional<Rows> values;
-  if (parts) {
-    values = level.truth.values(*parts);
-    if (!values)
-      return r.conclude(Verdict::undecided, "evaluation",
-                        "the equation could not be evaluated at the test values (a division by zero, a negative square root, or a number too large to work with?)");
+namespace {
+
+bool all_zero(const Rows& rows) {
+  return std::all_of(rows.begin(), rows.end(),
+                     [](const Row& r) { return std::all_of(r.begin(), r.end(), [](const numeric& x) { return x.is_zero(); }); });
+}
+
+const char* const trivial_message =
+    "the equation holds whatever the forces and the motion are (it reads 0 = 0 once simplified): it says nothing about this problem";
+
+}  // namespace
+
+// A linear equation: at the fixed points first (most wrong ones fail there, and are diagnosed
+// with those values), then at the fresh ones.
+CheckResult EquationChecker::decide_linear(const Level& level, const std::vector<ex>& parts, CheckResult r) const {
+  const Truth& truth = *level.truth;
+  auto values = truth.values(parts, true);
+  if (values) {
+    if (const Truth::Decision d = truth.holds(*values); d.answer == Truth::Answer::fails) {
+      r.method = d.exact ? "exact rationals" : "numeric";
+      return incorrect(level, *values, r);
+    }
+    if (const auto more = truth.values(parts, false, values->size())) values->insert(values->end(), more->begin(), more->end());
+    else values.reset();
   }
-  const Truth::Decision d = values ? level.truth.holds(*values) : level.truth.holds_anyhow(residual);
-  r.method = d.exact ? "exact rationals" : "numeric";
-  if (d.answer == Truth::Answer::unknown)
+  if (!values)
     return r.conclude(Verdict::undecided, "evaluation",
-                      "the equation could not be evaluated at the motions the model allows (a division by zero, a negative square root?)");
-  if (d.answer == Truth::Answer::holds) {
-    if (level.truth.vanishes(residual).answer == Truth::Answer::holds)
-      return r.conclude(Verdict::incorrect, "trivial", "the equation holds whatever the forces and the motion are (it reads 0 = 0 once simplified): it says nothing about this problem");
-    r.verdict = Verdict::correct;
-    r.score = 1.0;
-    if (values) name_it(level, *values, r);
-    else r.summary = "it holds wherever the " + level.name + " do (it is not linear in the unknowns)";
-    return r;
-  }
-  if (values) diagnose(level, *values, r);
+                      "the equation could not be evaluated at the test values (a division by zero, a negative square root, or a number too large to work with?)");
+  const Truth::Decision d = truth.holds(*values);
+  r.method = d.exact ? "exact rationals" : "numeric";
+  if (d.answer == Truth::Answer::fails) return incorrect(level, *values, r);
+  if (d.answer == Truth::Answer::unknown) return r.conclude(Verdict::undecided, "points", "there are no random points to decide the equation at");
+  if (all_zero(*values)) return r.conclude(Verdict::incorrect, "trivial", trivial_message);
+  r.verdict = Verdict::correct;
+  r.score = 1.0;
+  name_it(level, *values, r);
+  return r;
+}
+
+CheckResult EquationChecker::incorrect(const Level& level, const Rows& values, CheckResult r) const {
+  diagnose(level, values, r);
   if (r.findings.empty())
     r.findings.push_back({"value", "the equation does not follow from the balances and constraints of this problem"});
   r.verdict = Verdict::incorrect;
@@ -410,14 +432,38 @@ CheckResult EquationChecker::decide(const Level& level, const ex& residual, Chec
   return r;
 }
 
+CheckResult EquationChecker::decide(const Level& level, const ex& residual, CheckResult r) const {
+  if (level.equations.size() > max_family)
+    return r.conclude(Verdict::undecided, "too_large", "this problem has too many equations to decide a combination of them (" +
+                                                           std::to_string(level.equations.size()) + ")");
+  if (!level.truth || !level.truth->usable())
+    return r.conclude(Verdict::undecided, "model", "tackle cannot decide an equation for this problem: its " + level.name +
+                                                       " are not linear in the unknowns, or contradict each other");
+  if (const auto parts = linear_parts(residual, level.unknowns)) return decide_linear(level, *parts, r);
+  // Not linear in the unknowns: at random solutions (a ratio of accelerations, a root).
+  const Truth& truth = *level.truth;
+  const Truth::Decision d = truth.holds_anyhow(residual);
+  r.method = d.exact ? "exact rationals" : "numeric";
+  if (d.answer == Truth::Answer::unknown)
+    return r.conclude(Verdict::undecided, "evaluation",
+                      "the equation could not be evaluated at the motions the model allows (a division by zero, a negative square root?)");
+  if (d.answer == Truth::Answer::fails)
+    return r.conclude(Verdict::incorrect, "value", "the equation does not follow from the balances and constraints of this problem");
+  if (truth.vanishes(residual).answer == Truth::Answer::holds) return r.conclude(Verdict::incorrect, "trivial", trivial_message);
+  r.verdict = Verdict::correct;
+  r.score = 1.0;
+  r.summary = "it holds wherever the " + level.name + " do (it is not linear in the unknowns)";
+  return r;
+}
+
 void EquationChecker::name_it(const Level& level, const Rows& values, CheckResult& r) const {
   for (std::size_t i = 0; i < level.equations.size(); ++i)
-    if (level.truth.proportional(level.truth.equation_values(i), values)) r.identified_as.push_back(level.equations[i]->label);
+    if (level.truth->proportional(level.truth->equation_values(i), values)) r.identified_as.push_back(level.equations[i]->label);
   if (!r.identified_as.empty()) {
     r.follows_from = {r.identified_as.front()};
     r.combination = {{r.identified_as.front(), true}};
   } else {
-    for (const auto& part : level.truth.combination(values)) {
+    for (const auto& part : level.truth->combination(values)) {
       r.follows_from.push_back(level.equations[part.equation]->label);
       r.combination.push_back({r.follows_from.back(), part.plain});
     }
@@ -435,12 +481,13 @@ void EquationChecker::name_it(const Level& level, const Rows& values, CheckResul
 }
 
 std::vector<std::string> EquationChecker::needed_for(const ex& unknown, const ex& closed_form) const {
+  prepare();
   const Level& level = acceleration_;
-  if (!level.truth.usable()) return {};
+  if (!level.truth || !level.truth->usable()) return {};
   const auto values = values_of(level, unknown - closed_form, false);
-  if (!values || level.truth.holds(*values).answer != Truth::Answer::holds) return {};
+  if (!values || level.truth->holds(*values).answer != Truth::Answer::holds) return {};
   std::vector<std::string> out;
-  for (const auto& part : level.truth.combination(*values)) out.push_back(level.equations[part.equation]->label);
+  for (const auto& part : level.truth->combination(*values)) out.push_back(level.equations[part.equation]->label);
   return out;
 }
 
@@ -449,15 +496,15 @@ CheckResult EquationChecker::position_verdict(const Level& level, const ex& resi
     return r.conclude(Verdict::undecided, "too_large", "this problem has too many constraints to decide a combination of them (" +
                                                            std::to_string(level.equations.size()) + ")");
   const auto parts = linear_parts(residual, level.unknowns);
-  if (!level.truth.usable() || !parts)
+  if (!level.truth || !level.truth->usable() || !parts)
     return r.conclude(Verdict::undecided, "not_linear",
                       "tackle decides an equation in the positions when it and the problem's length sums are linear in the positions");
   // What is left is the constant the sum keeps: any constant will do (it depends on where the
   // positions are measured from and on the string's length); the level drops it.
-  const auto values = level.truth.values(*parts);
+  const auto values = level.truth->values(*parts);
   if (!values)
     return r.conclude(Verdict::undecided, "evaluation", "the equation could not be evaluated at the test values (a division by zero?)");
-  const Truth::Decision d = level.truth.holds(*values);
+  const Truth::Decision d = level.truth->holds(*values);
   r.method = d.exact ? "exact rationals" : "numeric";
   if (d.answer == Truth::Answer::holds) {
     r.verdict = Verdict::correct;
@@ -468,7 +515,7 @@ CheckResult EquationChecker::position_verdict(const Level& level, const ex& resi
   // The constraint whose positions these are, where there is one: its sum is not this one.
   std::vector<const Equation*> sharing;
   for (std::size_t i = 0; i < level.equations.size(); ++i) {
-    const auto own = linear_parts(level.truth.family().residuals[i], level.unknowns);
+    const auto own = linear_parts(level.truth->family().residuals[i], level.unknowns);
     if (!own) continue;
     bool inside = true, shares = false;
     for (std::size_t j = 0; j + 1 < parts->size(); ++j) {
@@ -504,7 +551,7 @@ const std::vector<EquationChecker::Level::Terms>& EquationChecker::terms_of(cons
 }
 
 void EquationChecker::diagnose(const Level& level, const Rows& values, CheckResult& r) const {
-  const Rows v(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(std::min(values.size(), level.truth.fixed())));
+  const Rows v(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(std::min(values.size(), level.truth->fixed())));
   for (std::size_t ei = 0; ei < level.equations.size(); ++ei) {
     const Equation* e = level.equations[ei];
     if (e->kind != Equation::Kind::lmb && e->kind != Equation::Kind::amb) continue;
@@ -534,25 +581,25 @@ void say(CheckResult& r, const std::string& code, const std::string& message) {
 void EquationChecker::diagnose_balance(const Level& level, std::size_t ei, const Rows& v, CheckResult& r) const {
   const Equation* e = level.equations[ei];
   const Level::Terms& t = terms_of(level)[ei];
-  const Rows whole = first_rows(level.truth.equation_values(ei), level.truth.fixed());
+  const Rows whole = first_rows(level.truth->equation_values(ei), level.truth->fixed());
   const std::string& name = e->label;
   const bool lmb = e->kind == Equation::Kind::lmb;
   for (std::size_t j = 0; j < t.terms.size() && j < e->sources.size(); ++j) {
     if (!t.terms[j]) continue;
     const std::string what = force_phrase(e->sources[j]);
-    if (level.truth.proportional(combined(whole, 1, *t.terms[j], -1), v)) say(r, "missing_force", what + " is missing (" + name + ")");
-    else if (level.truth.proportional(combined(whole, 1, *t.terms[j], -2), v))
+    if (level.truth->proportional(combined(whole, 1, *t.terms[j], -1), v)) say(r, "missing_force", what + " is missing (" + name + ")");
+    else if (level.truth->proportional(combined(whole, 1, *t.terms[j], -2), v))
       say(r, "force_sign", what + " has the wrong sign or direction (" + name + ")");
   }
   if (e->rhs.is_zero() || !t.lhs) return;
-  if (level.truth.proportional(*t.lhs, v))
+  if (level.truth->proportional(*t.lhs, v))
     say(r, "missing_inertia", lmb ? "the mass times acceleration term is missing (" + name + ")"
                                   : "the rate of change of angular momentum is missing (" + name + ")");
   if (lmb && !e->system && e->bodies.size() == 1) {
     const BodyTerms& own = bodies_[static_cast<std::size_t>(e->bodies.front())];
     auto matches = [&](const ex& candidate) {
       const auto w = values_of(level, candidate, true);
-      return w && level.truth.proportional(*w, v);
+      return w && level.truth->proportional(*w, v);
     };
     for (const BodyTerms& other : bodies_) {
       if (&other == &own) continue;
@@ -564,7 +611,7 @@ void EquationChecker::diagnose_balance(const Level& level, std::size_t ei, const
         say(r, "wrong_acceleration", "the acceleration is " + other.name + "'s, not " + own.name + "'s (" + name + ")");
     }
   }
-  if (level.truth.proportional(combined(*t.lhs, 2, whole, -1), v))
+  if (level.truth->proportional(combined(*t.lhs, 2, whole, -1), v))
     say(r, "inertia_sign", lmb ? "the mass times acceleration term has the wrong sign (" + name + ")"
                                : "the rate of change of angular momentum has the wrong sign (" + name + ")");
 }
@@ -573,7 +620,7 @@ void EquationChecker::diagnose_balance(const Level& level, std::size_t ei, const
 // force as one of its own, it is counted once too often).
 void EquationChecker::diagnose_other_forces(const Level& level, std::size_t ei, const Rows& v, CheckResult& r) const {
   const Equation* e = level.equations[ei];
-  const Rows whole = first_rows(level.truth.equation_values(ei), level.truth.fixed());
+  const Rows whole = first_rows(level.truth->equation_values(ei), level.truth->fixed());
   for (std::size_t oi = 0; oi < level.equations.size(); ++oi) {
     const Equation* other = level.equations[oi];
     if (other == e || other->kind != e->kind) continue;
@@ -581,7 +628,7 @@ void EquationChecker::diagnose_other_forces(const Level& level, std::size_t ei, 
     for (std::size_t j = 0; j < other->terms.size() && j < other->sources.size() && j < t.terms.size(); ++j) {
       if (!t.terms[j] || std::find(e->sources.begin(), e->sources.end(), other->sources[j]) != e->sources.end()) continue;
       for (const int sign : {1, -1}) {
-        if (!level.truth.proportional(combined(whole, 1, *t.terms[j], sign), v)) continue;
+        if (!level.truth->proportional(combined(whole, 1, *t.terms[j], sign), v)) continue;
         // Taking away one of the balance's own forces is a force missing (said above); the
         // same force as one of its own is one counted once too often (a strand more); else
         // a force on another body.

@@ -45,10 +45,10 @@ class EquationChecker {
   // the algebra that decides with them, and what the diagnosis needs of each equation at the
   // fixed points (made when first wanted).
   struct Level {
+    std::string name;  // "balances and constraints", "constraints in rates", "length sums"
     std::vector<const Equation*> equations;
     std::vector<GiNaC::ex> unknowns;
-    Truth truth;
-    std::string name;  // "balances and constraints", "constraints", "length sums"
+    std::optional<Truth> truth;  // made when first wanted (none past the bound on equations)
     struct Terms {
       std::vector<std::optional<std::vector<Row>>> terms;  // each term's values
       std::optional<std::vector<Row>> lhs;
@@ -59,6 +59,8 @@ class EquationChecker {
   using Rows = std::vector<Row>;
 
   CheckResult decide(const Level& level, const GiNaC::ex& residual, CheckResult r) const;
+  CheckResult decide_linear(const Level& level, const std::vector<GiNaC::ex>& parts, CheckResult r) const;
+  CheckResult incorrect(const Level& level, const Rows& values, CheckResult r) const;
   void name_it(const Level& level, const Rows& values, CheckResult& r) const;
   [[nodiscard]] std::optional<Rows> values_of(const Level& level, const GiNaC::ex& e, bool fixed_only) const;
   [[nodiscard]] const std::vector<Level::Terms>& terms_of(const Level& level) const;
@@ -67,6 +69,7 @@ class EquationChecker {
   void diagnose_other_forces(const Level& level, std::size_t ei, const Rows& v, CheckResult& r) const;
   [[nodiscard]] CheckResult position_verdict(const Level& level, const GiNaC::ex& residual, CheckResult r) const;
   void build_levels(const Analysis& analysis);
+  void prepare() const;
 
   CheckOptions options_;
   std::shared_ptr<const SymbolTable> symbols_;
@@ -82,7 +85,11 @@ class EquationChecker {
     GiNaC::ex mass, accel;  // its mass (0 for a massless one) and its acceleration's symbol
   };
   std::vector<BodyTerms> bodies_;
-  Level acceleration_, rate_, position_;
+  // Each level's equations and unknowns; its algebra made by prepare(), once.
+  mutable Level acceleration_, rate_, position_;
+  std::size_t derivation_size_ = 0;  // the derivation's own equations, first among the acceleration level's
+  std::vector<StateInput> inputs_;
+  mutable std::once_flag prepared_;
 };
 
 }  // namespace tackle

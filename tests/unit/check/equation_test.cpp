@@ -177,6 +177,12 @@ const std::vector<EquationStep> steps{
     {"sample-12.1-towing-system", "F - T = m_2*ddot(x_2)", Verdict::correct, "", "it is LMB car2 (x)"},
     {"sample-12.1-towing-system", "T = m_1*F/(m_1 + m_2)", Verdict::correct, "", ""},
     {"sample-12.1-towing-system", "T = m_2*ddot(x_1)", Verdict::incorrect, "", ""},
+    // Sample 12.8 derives only the moment about the axis OG; the board's x balance (its notes:
+    // the ball and socket's, the hinge's and the rod's x components make m a) still holds.
+    {"sample-12.8-sign-board", "G_x + O_x + T_HI*d/l = a*m", Verdict::correct, "", "it is LMB board (x)"},
+    {"sample-12.8-sign-board", "G_x + O_x + T_HI*d/sqrt(b^2 + d^2 + e^2) = a*m", Verdict::correct, "", "it is LMB board (x)"},
+    {"sample-12.8-sign-board", "G_x + O_x - T_HI*d/l = a*m", Verdict::incorrect, "force_sign",
+     "the force of the rod from H has the wrong sign or direction (LMB board (x))"},
     // Not linear in the unknowns, true on the solution (the Atwood machine's A: T - m_A g =
     // m_A ddot(y_A)); a ratio of the accelerations (sample 12.3: 3 ddot(x_B) = 2 ddot(x_A)).
     {"atwood-machine", "m_A = T/(g + ddot(y_A))", Verdict::correct, "", ""},
