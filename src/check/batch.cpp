@@ -291,6 +291,15 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
           r.verdict = Verdict::invalid;
           r.summary = "line " + std::to_string(s.lines) + ": " + (e.diagnostics().empty() ? std::string("not a free body diagram") : e.diagnostics().front().message);
           r.findings.push_back({"not_an_answer", r.summary});
+        } catch (const std::bad_alloc&) {
+          throw;
+        } catch (const std::exception& e) {
+          // This line's verdict, never the batch's end (the checks of answers and equations
+          // guard themselves: Checker::check).
+          r.verdict = Verdict::undecided;
+          r.summary = "line " + std::to_string(s.lines) + ": tackle failed while checking this diagram (an internal error: " +
+                      e.what() + "), so it is left undecided";
+          r.findings.push_back({"internal", r.summary});
         }
       }
     } else if (equation) {

@@ -265,7 +265,31 @@ CheckResult& CheckResult::conclude(Verdict v, std::string code, std::string mess
   return *this;
 }
 
-CheckResult Checker::check_equation(std::string_view equation) const { return equations_->check(equation); }
+namespace {
+
+// A check's boundary: whatever goes wrong inside one check (an exception from GiNaC on an
+// expression nobody foresaw) is that check's verdict, undecided with the reason, never the end
+// of a batch, a worked solution or a service. (Out of memory is the process's: every input is
+// bounded well below it.)
+CheckResult guarded(const std::string& unknown, bool equation, const std::function<CheckResult()>& check) {
+  try {
+    return check();
+  } catch (const std::bad_alloc&) {
+    throw;
+  } catch (const std::exception& e) {
+    CheckResult r;
+    r.unknown = unknown;
+    r.equation = equation;
+    return r.conclude(Verdict::undecided, "internal",
+                      std::string("tackle failed while checking this (an internal error: ") + e.what() + "), so it is left undecided");
+  }
+}
+
+}  // namespace
+
+CheckResult Checker::check_equation(std::string_view equation) const {
+  return guarded("", true, [&] { return equations_->check(equation); });
+}
 
 std::vector<std::string> Checker::needed_for(const std::string& unknown) const {
   const auto it = references_.find(unknown);
@@ -773,7 +797,12 @@ std::optional<exmap> Checker::values_for(const std::vector<std::pair<std::string
   return values;
 }
 
+
 CheckResult Checker::check(const std::string& unknown, std::string_view answer, const exmap* values) const {
+  return guarded(unknown, false, [&] { return check_answer(unknown, answer, values); });
+}
+
+CheckResult Checker::check_answer(const std::string& unknown, std::string_view answer, const exmap* values) const {
   const auto start = std::chrono::steady_clock::now();
   CheckResult r;
   r.unknown = unknown;

@@ -60,8 +60,8 @@ enum class Verdict { correct, incorrect, invalid, undecided };
 /// Codes: unknown_name, syntax, too_large, not_an_answer, wrong_unknown, no_unit, unit,
 /// dimension, sign, factor, other_unknown, swapped, special_case, extra_parameter,
 /// missing_parameter, trig_swapped, term_sign, missing_term, extra_term, value, not_simplified, tolerance,
-/// budget, evaluation. Equations (check/equation.hpp) also: not_an_equation, trivial, not_linear,
-/// missing_force, force_sign, extra_force, missing_inertia, inertia_sign, wrong_mass,
+/// budget, evaluation, internal (an item that made tackle fail: undecided). Equations
+/// (check/equation.hpp) also: not_an_equation, trivial, not_linear, model, points, missing_force, force_sign, extra_force, missing_inertia, inertia_sign, wrong_mass,
 /// wrong_acceleration, length_sum. Free body diagrams (check/fbd.hpp): missing_force,
 /// force_direction, wrong_point, extra_force, other_body, internal_force.
 struct Finding {
@@ -106,7 +106,8 @@ class Checker {
 
   /// Checks `answer` for the unknown `unknown` (a name such as `T_HI` or `ddot(x_A)`).
   /// `values`: the student's own numbers (a variant), from values_for(); a number answered
-  /// is compared with the closed form there.
+  /// is compared with the closed form there. Never throws for any text (but out of memory):
+  /// what goes wrong inside is the verdict undecided, code `internal`, with the reason.
   [[nodiscard]] CheckResult check(const std::string& unknown, std::string_view answer,
                                   const GiNaC::exmap* values = nullptr) const;
   /// The parameters' values (SI) with `set` (name -> number in the parameter's stated unit)
@@ -116,8 +117,8 @@ class Checker {
   /// an input error).
   [[nodiscard]] std::optional<GiNaC::exmap> values_for(const std::vector<std::pair<std::string, std::string>>& set,
                                                        std::string& problem, bool* out_of_domain = nullptr) const;
-  /// Checks an equation the student wrote ("2*T - F = m_A*ddot(x_A)"): correct when it is a
-  /// combination of the derivation's equations (see check/equation.hpp).
+  /// Checks an equation the student wrote ("2*T - F = m_A*ddot(x_A)"): correct when it holds in
+  /// every state the model allows (see check/equation.hpp). Never throws, as check().
   [[nodiscard]] CheckResult check_equation(std::string_view equation) const;
   /// The unknowns the problem asks for (`find`) that can be checked, in its order.
   [[nodiscard]] const std::vector<std::string>& asked() const { return asked_; }
@@ -200,6 +201,7 @@ class Checker {
     std::string code, message;  // the finding (or the summary of a correct answer)
   };
 
+  CheckResult check_answer(const std::string& unknown, std::string_view answer, const GiNaC::exmap* values) const;
   CheckResult check_number(const Reference& ref, std::string_view number, std::string_view unit_text,
                            CheckResult r, const GiNaC::exmap* values) const;
   CheckResult check_expression(const Reference& ref, std::string_view text, CheckResult r,

@@ -6,6 +6,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "core/files.hpp"
@@ -36,6 +38,15 @@ inline bool slow_example(const std::string& path) {
 
 inline std::string text_of(const std::uint8_t* data, std::size_t size) {
   return {reinterpret_cast<const char*>(data), size};
+}
+
+/// A check guards itself (an exception inside is the verdict undecided, code `internal`): for
+/// the fuzzer such a verdict is still a finding, so it aborts on one (in a JSON result too).
+inline void no_internal_verdict(const std::string& findings_or_json) {
+  if (findings_or_json.find("\"internal\"") != std::string::npos || findings_or_json == "internal") {
+    std::fprintf(stderr, "an internal error became a verdict: %s\n", findings_or_json.substr(0, 2000).c_str());
+    std::abort();
+  }
 }
 
 }  // namespace tackle::fuzz

@@ -55,6 +55,22 @@ class ModuleTest(unittest.TestCase):
         self.assertEqual(wrong["findings"][0]["code"], "missing_force")
         self.assertEqual(wrong["summary"], "a strand of string s at pA is missing (LMB A (x))")
 
+    def test_no_equation_ends_a_check(self):
+        # Issue "verdicts": these made the grader fail (an internal error); each now has a
+        # verdict, and a batch with them grades every line. By hand: T = 2 F m_B/(9 m_A + 4
+        # m_B) > 0, so sqrt(T^2) = T holds whatever T is; F/T is not 1; ddot(x_A) is
+        # negative (its cube's real cube root is not what is computed); ddot(x_A)/ddot(x_B) =
+        # 3/2, whose sine is not 0.
+        verdicts = {"sqrt(T^2) = T": "incorrect", "log(F/T) = 0": "incorrect",
+                    "(ddot(x_A)^3)^(1/3) = ddot(x_B)": "undecided", "sin(ddot(x_A)/ddot(x_B)) = 0": "incorrect"}
+        for text, verdict in verdicts.items():
+            self.assertEqual(self.p.check_equation(text)["verdict"], verdict, text)
+        lines = "".join(json.dumps({"id": str(i), "equation": t}) + "\n" for i, t in enumerate(verdicts))
+        lines += json.dumps({"id": "last", "equation": "2*T - F = m_A*ddot(x_A)"}) + "\n"
+        out, _ = self.p.check_batch(lines, results_format="gradescope")
+        graded = [json.loads(l) for l in out.splitlines()]
+        self.assertEqual([g["verdict"] for g in graded], list(verdicts.values()) + ["correct"])
+
     def test_check_fbd(self):
         # By hand: B is pulled toward C (left, -x) by three strands of the string at pB.
         right = self.p.check_fbd({"body": "B", "forces": [{"name": "T", "at": "pB", "direction": [-1]}] * 3})
