@@ -8,6 +8,10 @@ plus numbers with units. The expected verdict of each is decided here, independe
 tackle: the answer and the hand-derived closed form are evaluated in exact rationals
 (Python's fractions) at random points; a number is compared with the value to 1 %.
 
+Half of the lines come from a problem with an angle (the incline: sin, cos, tan, sin(theta +
+pi/2) for cos, sin for cos as a mistake), its parameters' points drawn with the angle as t =
+tan(theta/2), so that the sine and cosine are exact rationals here too.
+
 With --equations (or --both), the same for N distinct equations a student writes
 (`{"equation": ...}` lines): random whole-number combinations of the hand-derived balances and
 constraints, their terms spread over both sides, half of them with one coefficient changed,
@@ -41,6 +45,18 @@ PROBLEMS = {
             "T": lambda p: 2 * p["m_B"] * p["F"] / (9 * p["m_A"] + 4 * p["m_B"]),
             "ddot(x_A)": lambda p: -9 * p["F"] / (9 * p["m_A"] + 4 * p["m_B"]),
             "ddot(x_B)": lambda p: -6 * p["F"] / (9 * p["m_A"] + 4 * p["m_B"]),
+        },
+    },
+    # A problem with an angle (its notes): theta = 30 deg; tackle's own points and these are
+    # drawn apart. Here theta is t = tan(theta/2) (sin = 2t/(1 + t^2), cos = (1 - t^2)/(1 + t^2):
+    # exact rationals), near tan(15 deg).
+    "incline-and-hanging-block": {
+        "params": {"m_A": 4, "m_B": 6, "g": Fraction(981, 100), "t_theta": Fraction(267949192431, 10**12)},
+        "unit": {"ddot(s)": "m/s^2", "T": "N", "N_A": "N"},
+        "reference": {
+            "ddot(s)": lambda p: p["g"] * (p["m_B"] - p["m_A"] * p["sin(theta)"]) / (p["m_A"] + p["m_B"]),
+            "T": lambda p: p["m_A"] * p["m_B"] * p["g"] * (1 + p["sin(theta)"]) / (p["m_A"] + p["m_B"]),
+            "N_A": lambda p: p["m_A"] * p["g"] * p["cos(theta)"],
         },
     },
     "sample-12.7-suitcase": {
@@ -89,6 +105,8 @@ def shapes(problem, unknown, rng):
             return Fraction(n) * top / (a * ma + b * mb)
 
         return text, f
+    if problem == "incline-and-hanging-block":
+        return incline_shape(unknown, rng, right, coef, k)
     # The suitcase.
     sign = {"N_A": -1, "N_B": 1}.get(unknown)
     if sign is None:  # a_C = -mu g
@@ -110,6 +128,28 @@ def shapes(problem, unknown, rng):
     return text, f
 
 
+def incline_shape(unknown, rng, right, coef, k):
+    """The incline's answers as students write them: scaled, reordered, sin(theta) written as
+    cos(theta - pi/2) or tan(theta)*cos(theta); wrong: a coefficient, a sign, sin for cos."""
+    trig = {"sin": ["sin(theta)", "cos(theta - pi/2)", "tan(theta)*cos(theta)"], "cos": ["cos(theta)", "sin(theta + pi/2)"]}
+    swap = not right and rng.random() < 0.3
+    def fn(name):  # the function written, and the one meant (a swap writes the other)
+        other = {"sin": "cos", "cos": "sin"}[name]
+        return rng.choice(trig[other if swap else name]), (other if swap else name)
+    if unknown == "N_A":
+        (text_c, c), n = fn("cos"), coef(1)
+        return f"{n * k}*m_A*g*{text_c}/{k}", (lambda p, n=n, c=c: n * p["m_A"] * p["g"] * p[f"{c}(theta)"])
+    (text_s, sn), a, b = fn("sin"), coef(1), coef(1)
+    sign = 1 if right or rng.random() < 0.6 else -1
+    if unknown == "ddot(s)":
+        text = f"g*({k}*m_B {'-' if sign > 0 else '+'} {a * k}*m_A*{text_s})/({k}*m_A + {b * k}*m_B)"
+        return text, (lambda p, a=a, b=b, sign=sign, sn=sn:
+                      p["g"] * (p["m_B"] - sign * a * p["m_A"] * p[f"{sn}(theta)"]) / (p["m_A"] + b * p["m_B"]))
+    text = f"{k}*m_A*m_B*g*(1 {'+' if sign > 0 else '-'} {a}*{text_s})/({k}*m_A + {b * k}*m_B)"
+    return text, (lambda p, a=a, b=b, sign=sign, sn=sn:
+                  p["m_A"] * p["m_B"] * p["g"] * (1 + sign * a * p[f"{sn}(theta)"]) / (p["m_A"] + b * p["m_B"]))
+
+
 # Each problem's hand-derived equations (the examples' notes), each as {unknown: coefficient,
 # "1": the rest} with the coefficients as (text, Python function of the parameters); every
 # equation reads sum = 0.
@@ -128,6 +168,22 @@ EQUATIONS = {
         ],
         "swap": ("m_A", "m_B"),
         "classes": [[0, 1], [2]],  # forces; accelerations (only equations of one dimension combine)
+    },
+    "incline-and-hanging-block": {
+        "unknowns": ["T", "N_A", "ddot(s)", "ddot(y_B)"],
+        "equations": [
+            # Along the incline: T - m_A g sin(theta) - m_A ddot(s) = 0; across it: N_A - m_A g
+            # cos(theta) = 0 (tackle balances A along x and y: these are combinations of
+            # those with sin and cos for coefficients); B: T - m_B g - m_B ddot(y_B) = 0; the
+            # string: ddot(s) + ddot(y_B) = 0.
+            {"T": _c("1", lambda p: 1), "ddot(s)": _c("(-m_A)", lambda p: -p["m_A"]),
+             "1": _c("(-m_A*g*sin(theta))", lambda p: -p["m_A"] * p["g"] * p["sin(theta)"])},
+            {"N_A": _c("1", lambda p: 1), "1": _c("(-m_A*g*cos(theta))", lambda p: -p["m_A"] * p["g"] * p["cos(theta)"])},
+            {"T": _c("1", lambda p: 1), "ddot(y_B)": _c("(-m_B)", lambda p: -p["m_B"]), "1": _c("(-m_B*g)", lambda p: -p["m_B"] * p["g"])},
+            {"ddot(s)": _c("1", lambda p: 1), "ddot(y_B)": _c("1", lambda p: 1)},
+        ],
+        "swap": ("sin(theta)", "cos(theta)"),
+        "classes": [[0, 1, 2], [3]],  # forces; accelerations
     },
     "sample-12.7-suitcase": {
         "unknowns": ["N_A", "N_B", "a_C"],
@@ -193,6 +249,10 @@ def equation_line(problem, rng):
             a, b = spec["swap"]
             swapped = text.replace(a, "@").replace(b, a).replace("@", b)
             terms[i] = [key, swapped, lambda p, f=f, a=a, b=b: f({**p, a: p[b], b: p[a]})]
+    # A problem with an angle: the whole equation sometimes multiplied by cos(theta) (the same
+    # equation, written as a student clearing a denominator would).
+    if "t_theta" in params and rng.random() < 0.3:
+        terms = [[key, f"cos(theta)*{text}", lambda p, f=f: p["cos(theta)"] * f(p)] for key, text, f in terms]
     # Spread over both sides, in a random order.
     rng.shuffle(terms)
     # A term moved to the right side is written turned: sum(left) = -(the rest).
@@ -219,16 +279,30 @@ def equation_line(problem, rng):
 
 
 def random_point(params, rng):
-    return {k: Fraction(v) * Fraction(rng.randint(500, 2000), 1000) for k, v in params.items()}
+    p = {k: Fraction(v) * Fraction(rng.randint(500, 2000), 1000) for k, v in params.items()}
+    return with_angles(p)
+
+
+def with_angles(p):
+    """An angle given as t_NAME = tan(NAME/2): its sine and cosine, exact."""
+    for k in [k for k in p if k.startswith("t_")]:
+        t, name = p[k], k[2:]
+        p[f"sin({name})"] = 2 * t / (1 + t * t)
+        p[f"cos({name})"] = (1 - t * t) / (1 + t * t)
+    return p
 
 
 def make_batch(n, rng, equations=False):
     """Lines of (problem, json line, expected verdict)."""
     out = []
     names = list(PROBLEMS)
+    # Half of the lines from the problems with an angle, half from the others.
+    angled = [k for k in names if any(x.startswith("t_") for x in PROBLEMS[k]["params"])]
+    plain = [k for k in names if k not in angled]
     for i in range(n):
         if equations:
-            problem = names[i % len(names)]
+            group = angled if i % 2 == 0 or not plain else plain
+            problem = group[(i // 2) % len(group)]
             text, expected = equation_line(problem, rng)
             out.append((problem, json.dumps({"id": f"e{i}", "equation": text}), expected))
             continue
@@ -237,7 +311,7 @@ def make_batch(n, rng, equations=False):
         unknown = rng.choice(list(spec["reference"]))
         ref = spec["reference"][unknown]
         if rng.random() < 0.2:  # a number with its unit, right or off
-            value = float(ref({k: Fraction(v) for k, v in spec["params"].items()}))
+            value = float(ref(with_angles({k: Fraction(v) for k, v in spec["params"].items()})))
             given = value * (1 + rng.choice([0, 0, 0.002, 0.05, -0.3]))
             text = f"{given:.6g} {spec['unit'][unknown]}"
             expected = abs(given - value) <= 0.01 * abs(value)

@@ -359,6 +359,32 @@ bool Program::run_function(const Node& node, std::size_t& at, const Sample& poin
 // e^(i arg) exactly: each angle's (1 + i t)^2 / (1 + t^2) to its multiple, times i per
 // quarter turn; then its imaginary part (sin), real part (cos) or their quotient (tan).
 bool Program::run_trig(const Node& node, std::size_t& at, const Sample& point, Value& out) const {
+  if (node.n == 1 && node.multiple == 0 && (nodes_[at].multiple == 1 || nodes_[at].multiple == -1)) {
+    // One angle, once (most of them): cos = (1 - t^2)/(1 + t^2), sin = 2t/(1 + t^2), as a
+    // fraction kept unreduced.
+    const Node& angle = nodes_[at++];
+    const auto t = real_of(point[angle.index].second);
+    if (!t || !cln::instanceof(*t, cln::cl_RA_ring)) {
+      --at;
+    } else {
+      const cln::cl_RA& q = cln::the<cln::cl_RA>(*t);
+      const cln::cl_I n = cln::numerator(q), d = cln::denominator(q), nn = n * n, dd = d * d;
+      const cln::cl_I sine = 2 * n * d * angle.multiple, cosine = dd - nn, both = dd + nn;
+      out.exact = true;
+      if (node.serial == sin_SERIAL::serial) {
+        out.n = sine;
+        out.d = both;
+      } else if (node.serial == cos_SERIAL::serial) {
+        out.n = cosine;
+        out.d = both;
+      } else {
+        if (cln::zerop(cosine)) return false;
+        out.n = cln::minusp(cosine) ? cln::cl_I(-sine) : sine;
+        out.d = cln::abs(cosine);
+      }
+      return true;
+    }
+  }
   cln::cl_N z = 1;
   long bits = 0;
   for (std::size_t k = 0; k < node.n; ++k) {

@@ -249,9 +249,11 @@ bool Truth::proportional(const std::vector<Row>& a, const std::vector<Row>& b) c
 
 std::vector<Truth::Part> Truth::combination(const std::vector<Row>& values) const {
   if (values.empty() || basis_.empty()) return {};
-  // The coefficients at each point (in the basis), where its left inverse is known.
+  // The coefficients (in the basis) at the first point and at the last, a fresh one, where the
+  // left inverse is known: a coefficient that is a rational function of the inputs and not a
+  // number takes the same value at both by chance only.
   std::vector<std::optional<Row>> lambdas;
-  for (std::size_t k = 0; k < values.size() && k < inverses_.size(); ++k)
+  for (const std::size_t k : {std::size_t{0}, std::min(values.size(), inverses_.size()) - 1})
     lambdas.push_back(inverses_[k] ? std::optional<Row>(inverses_[k]->coefficients(values[k])) : std::nullopt);
   if (lambdas.empty() || !lambdas[0]) return {};
   const Row& at_first = *lambdas[0];

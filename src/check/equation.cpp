@@ -157,11 +157,16 @@ StateInput state_input(const SymbolInfo& s, const exmap& layout, bool angle) {
   return input_near(s.sym, v, angle);
 }
 
-Rows combined(const Rows& a, const numeric& x, const Rows& b, const numeric& y) {
-  Rows out = a;
-  for (std::size_t k = 0; k < out.size() && k < b.size(); ++k)
-    for (std::size_t i = 0; i < out[k].size() && i < b[k].size(); ++i) out[k][i] = x * a[k][i] + y * b[k][i];
-  return out;
+// Whether x a + y b is a multiple of v at every point v has values at (made point by point:
+// most candidates of a diagnosis fail at the first).
+bool combined_matches(const Truth& truth, const Rows& a, const numeric& x, const Rows& b, const numeric& y, const Rows& v) {
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    if (k >= a.size() || k >= b.size()) return false;
+    Row c(a[k].size());
+    for (std::size_t i = 0; i < c.size() && i < b[k].size(); ++i) c[i] = x * a[k][i] + y * b[k][i];
+    if (!truth.proportional({c}, {v[k]})) return false;
+  }
+  return !v.empty();
 }
 
 }  // namespace
@@ -544,10 +549,25 @@ const std::vector<EquationChecker::Level::Terms>& EquationChecker::terms_of(cons
       Level::Terms t;
       for (const ex& term : e->terms) t.terms.push_back(values_of(level, term, true));
       t.lhs = values_of(level, e->lhs, true);
+      other_bodies(level, *e, t);
       level.terms.push_back(std::move(t));
     }
   });
   return level.terms;
+}
+
+void EquationChecker::other_bodies(const Level& level, const Equation& e, Level::Terms& t) const {
+  if (e.kind != Equation::Kind::lmb || e.system || e.bodies.size() != 1 || e.rhs.is_zero()) return;
+  const BodyTerms& own = bodies_[static_cast<std::size_t>(e.bodies.front())];
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const BodyTerms& other = bodies_[i];
+    if (&other == &own) continue;
+    if (!own.mass.is_zero() && !other.mass.is_zero() && !other.mass.is_equal(own.mass))
+      if (auto w = values_of(level, e.lhs - e.rhs.subs(own.mass == other.mass), true)) t.other_mass.emplace_back(i, std::move(*w));
+    if (is_a<symbol>(own.accel) && is_a<symbol>(other.accel) && !other.accel.is_equal(own.accel))
+      if (auto w = values_of(level, e.lhs - e.rhs.subs(own.accel == other.accel), true))
+        t.other_acceleration.emplace_back(i, std::move(*w));
+  }
 }
 
 void EquationChecker::diagnose(const Level& level, const Rows& values, CheckResult& r) const {
@@ -587,8 +607,8 @@ void EquationChecker::diagnose_balance(const Level& level, std::size_t ei, const
   for (std::size_t j = 0; j < t.terms.size() && j < e->sources.size(); ++j) {
     if (!t.terms[j]) continue;
     const std::string what = force_phrase(e->sources[j]);
-    if (level.truth->proportional(combined(whole, 1, *t.terms[j], -1), v)) say(r, "missing_force", what + " is missing (" + name + ")");
-    else if (level.truth->proportional(combined(whole, 1, *t.terms[j], -2), v))
+    if (combined_matches(*level.truth, whole, 1, *t.terms[j], -1, v)) say(r, "missing_force", what + " is missing (" + name + ")");
+    else if (combined_matches(*level.truth, whole, 1, *t.terms[j], -2, v))
       say(r, "force_sign", what + " has the wrong sign or direction (" + name + ")");
   }
   if (e->rhs.is_zero() || !t.lhs) return;
@@ -597,21 +617,13 @@ void EquationChecker::diagnose_balance(const Level& level, std::size_t ei, const
                                   : "the rate of change of angular momentum is missing (" + name + ")");
   if (lmb && !e->system && e->bodies.size() == 1) {
     const BodyTerms& own = bodies_[static_cast<std::size_t>(e->bodies.front())];
-    auto matches = [&](const ex& candidate) {
-      const auto w = values_of(level, candidate, true);
-      return w && level.truth->proportional(*w, v);
-    };
-    for (const BodyTerms& other : bodies_) {
-      if (&other == &own) continue;
-      if (!own.mass.is_zero() && !other.mass.is_zero() && !other.mass.is_equal(own.mass) &&
-          matches(e->lhs - e->rhs.subs(own.mass == other.mass)))
-        say(r, "wrong_mass", "the mass is " + other.name + "'s, not " + own.name + "'s (" + name + ")");
-      if (is_a<symbol>(own.accel) && is_a<symbol>(other.accel) && !other.accel.is_equal(own.accel) &&
-          matches(e->lhs - e->rhs.subs(own.accel == other.accel)))
-        say(r, "wrong_acceleration", "the acceleration is " + other.name + "'s, not " + own.name + "'s (" + name + ")");
-    }
+    for (const auto& [i, w] : t.other_mass)
+      if (level.truth->proportional(w, v)) say(r, "wrong_mass", "the mass is " + bodies_[i].name + "'s, not " + own.name + "'s (" + name + ")");
+    for (const auto& [i, w] : t.other_acceleration)
+      if (level.truth->proportional(w, v))
+        say(r, "wrong_acceleration", "the acceleration is " + bodies_[i].name + "'s, not " + own.name + "'s (" + name + ")");
   }
-  if (level.truth->proportional(combined(*t.lhs, 2, whole, -1), v))
+  if (combined_matches(*level.truth, *t.lhs, 2, whole, -1, v))
     say(r, "inertia_sign", lmb ? "the mass times acceleration term has the wrong sign (" + name + ")"
                                : "the rate of change of angular momentum has the wrong sign (" + name + ")");
 }
@@ -628,7 +640,7 @@ void EquationChecker::diagnose_other_forces(const Level& level, std::size_t ei, 
     for (std::size_t j = 0; j < other->terms.size() && j < other->sources.size() && j < t.terms.size(); ++j) {
       if (!t.terms[j] || std::find(e->sources.begin(), e->sources.end(), other->sources[j]) != e->sources.end()) continue;
       for (const int sign : {1, -1}) {
-        if (!level.truth->proportional(combined(whole, 1, *t.terms[j], sign), v)) continue;
+        if (!combined_matches(*level.truth, whole, 1, *t.terms[j], sign, v)) continue;
         // Taking away one of the balance's own forces is a force missing (said above); the
         // same force as one of its own is one counted once too often (a strand more); else
         // a force on another body.

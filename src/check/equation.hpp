@@ -52,6 +52,9 @@ class EquationChecker {
     struct Terms {
       std::vector<std::optional<std::vector<Row>>> terms;  // each term's values
       std::optional<std::vector<Row>> lhs;
+      // A body's own balance with another body's mass, or acceleration, in its m a: by the
+      // other body's place.
+      std::vector<std::pair<std::size_t, std::vector<Row>>> other_mass, other_acceleration;
     };
     mutable std::once_flag made;
     mutable std::vector<Terms> terms;
@@ -66,6 +69,7 @@ class EquationChecker {
   [[nodiscard]] const std::vector<Level::Terms>& terms_of(const Level& level) const;
   void diagnose(const Level& level, const Rows& v, CheckResult& r) const;
   void diagnose_balance(const Level& level, std::size_t ei, const Rows& v, CheckResult& r) const;
+  void other_bodies(const Level& level, const Equation& e, Level::Terms& t) const;
   void diagnose_other_forces(const Level& level, std::size_t ei, const Rows& v, CheckResult& r) const;
   [[nodiscard]] CheckResult position_verdict(const Level& level, const GiNaC::ex& residual, CheckResult r) const;
   void build_levels(const Analysis& analysis);
