@@ -359,9 +359,9 @@ bool Program::run_function(const Node& node, std::size_t& at, const Sample& poin
 // e^(i arg) exactly: each angle's (1 + i t)^2 / (1 + t^2) to its multiple, times i per
 // quarter turn; then its imaginary part (sin), real part (cos) or their quotient (tan).
 bool Program::run_trig(const Node& node, std::size_t& at, const Sample& point, Value& out) const {
-  if (node.n == 1 && node.multiple == 0 && (nodes_[at].multiple == 1 || nodes_[at].multiple == -1)) {
+  if (node.n == 1 && (nodes_[at].multiple == 1 || nodes_[at].multiple == -1)) {
     // One angle, once (most of them): cos = (1 - t^2)/(1 + t^2), sin = 2t/(1 + t^2), as a
-    // fraction kept unreduced.
+    // fraction kept unreduced; a quarter turn added takes (cos, sin) to (-sin, cos).
     const Node& angle = nodes_[at++];
     const auto t = real_of(point[angle.index].second);
     if (!t || !cln::instanceof(*t, cln::cl_RA_ring)) {
@@ -369,7 +369,13 @@ bool Program::run_trig(const Node& node, std::size_t& at, const Sample& point, V
     } else {
       const cln::cl_RA& q = cln::the<cln::cl_RA>(*t);
       const cln::cl_I n = cln::numerator(q), d = cln::denominator(q), nn = n * n, dd = d * d;
-      const cln::cl_I sine = 2 * n * d * angle.multiple, cosine = dd - nn, both = dd + nn;
+      cln::cl_I sine = 2 * n * d * angle.multiple, cosine = dd - nn;
+      const cln::cl_I both = dd + nn;
+      for (long k = 0; k < node.multiple; ++k) {
+        const cln::cl_I turned = -sine;
+        sine = cosine;
+        cosine = turned;
+      }
       out.exact = true;
       if (node.serial == sin_SERIAL::serial) {
         out.n = sine;

@@ -25,6 +25,7 @@
 #include "expr/parse.hpp"
 #include "expr/print.hpp"
 #include "expr/rational.hpp"
+#include "expr/trig.hpp"
 #include "numeric/evaluate.hpp"
 #include "solve/solve.hpp"
 
@@ -475,9 +476,10 @@ Checker::Agreement Checker::compare(const ex& answer, const ex& reference, const
     const ex cross = n1 * d2 - n2 * d1;
     if (expanded_size(cross) <= budget && !over_budget())
       return cross.expand().is_zero() ? Agreement::proved : Agreement::refuted;
-  } else if (size <= budget && !over_budget()) {
-    // Zero is a proof; not zero may still be zero by an identity normal() does not know
-    // (sin^2 + cos^2 = 1).
+  } else if (size <= budget && !over_budget() && !has_trig(answer) && !has_trig(reference)) {
+    // Zero is a proof; not zero may still be zero by an identity normal() does not know.
+    // (Not tried with a sine or a cosine: normal() knows none of their identities, and the
+    // points, rational points on the circle for every angle, compare them exactly.)
     try {
       if (normal(answer - reference).is_zero()) return Agreement::proved;
     } catch (const std::bad_alloc&) {
