@@ -275,6 +275,8 @@ std::vector<Truth::Part> Truth::combination(const std::vector<Row>& values) cons
     }
     out.push_back({basis_[j], plain});
   }
+  // The first is the measure of the others: plain when they all are.
+  if (!out.empty()) out.front().plain = std::all_of(out.begin(), out.end(), [](const Part& p) { return p.plain; });
   return out;
 }
 

@@ -86,7 +86,7 @@ class Truth {
   [[nodiscard]] bool proportional(const std::vector<Row>& a, const std::vector<Row>& b) const;
   /// The fewest equations a holding equation is a combination of (their places, the family's
   /// earlier equations kept first), with whether each coefficient is a plain number (the same
-  /// at every point, relative to the first's).
+  /// at the points, relative to the first's; the first is plain when all the others are).
   struct Part {
     std::size_t equation;
     bool plain;

@@ -360,3 +360,25 @@ TEST_CASE("Steps: a solution or rubric file with problems says each, located", "
         std::vector<std::string>{"f.yaml:1:11: 'balances' is not a number of points (expected a number from 0 to 1000)",
                                  "f.yaml:2:10: 'answers' is not a number of points (expected a number from 0 to 1000)"});
 }
+
+TEST_CASE("Equations: a correct equation says which equations it combines, and whether the student added them", "[check][equation]") {
+  // Sample 12.1 (its notes): car 1, T = m_1 a_1; car 2, F - T = m_2 a_2. Their sum, F = m_1 a_1 +
+  // m_2 a_2, adds them (coefficients 1 and 1); T = m_1 F/(m_1 + m_2) eliminates the
+  // accelerations (coefficients in the masses).
+  const Checker& towing = checker_for("sample-12.1-towing");
+  const CheckResult sum = towing.check_equation("F = m_1*ddot(x_1) + m_2*ddot(x_2)");
+  REQUIRE(sum.verdict == Verdict::correct);
+  REQUIRE(sum.combination.size() == 2);
+  CHECK(sum.combination[0].label == "LMB car1 (x)");
+  CHECK(sum.combination[1].label == "LMB car2 (x)");
+  CHECK(sum.combination[0].plain);
+  CHECK(sum.combination[1].plain);
+  const CheckResult derived = towing.check_equation("T = m_1*F/(m_1 + m_2)");
+  REQUIRE(derived.verdict == Verdict::correct);
+  REQUIRE(derived.combination.size() == 3);
+  CHECK(std::none_of(derived.combination.begin(), derived.combination.end(), [](const CheckResult::Part& p) { return p.plain; }));
+  // One of the model's own, up to a factor: itself, plain.
+  const CheckResult own = towing.check_equation("2*T = 2*m_1*ddot(x_1)");
+  REQUIRE(own.combination.size() == 1);
+  CHECK(own.combination[0].plain);
+}
