@@ -172,6 +172,21 @@ std::string factor_words(const numeric& c) {
 
 }  // namespace
 
+namespace {
+
+// A float as the simple fraction it is within 10^-9 (a denominator up to 12), if it is one.
+std::optional<numeric> simple_fraction(const numeric& c) {
+  if (c.is_rational()) return c;
+  if (!c.is_real() || std::abs(c.to_double()) >= 1e12) return std::nullopt;  // (a larger one does not fit a long: fuzzing)
+  const double x = c.to_double();
+  for (int den = 1; den <= 12; ++den)
+    if (std::abs(x * den - std::round(x * den)) < 1e-9 * std::max(1.0, std::abs(x * den)))
+      return numeric(static_cast<long>(std::round(x * den)), den);
+  return std::nullopt;
+}
+
+}  // namespace
+
 double expanded_size(const ex& e) {
   if (is_a<add>(e)) {
     double s = 0;
@@ -1141,10 +1156,11 @@ const Checker::Reference::Diagnosis& Checker::diagnosis(const Reference& ref) co
 std::optional<Checker::QuotientShape> Checker::quotient_shape(const Reference& ref, const Program& answer_at,
                                                               const std::vector<numeric>& values) const {
   // At the first point, each parameter doubled in turn: the quotient changes by 2^e for a
-  // power p^e of it, and not at all when it does not depend on it. Program rationals only.
+  // power p^e of it, and not at all when it does not depend on it. Exact rationals, or floats
+  // compared within the tolerance (a root in the closed form: sample 12.8's rod length).
   const Reference::Diagnosis& diag = diagnosis(ref);
   if (values.empty() || ref.at_points.empty() || ref.at_points[0].is_zero() || values[0].is_zero() ||
-      !values[0].is_rational() || !ref.at_points[0].is_rational() || diag.doubled.size() != points_[0].size())
+      diag.doubled.size() != points_[0].size())
     return std::nullopt;
   static const std::vector<std::pair<int, numeric>> powers_of_two{{1, 2}, {-1, numeric(1, 2)}, {2, 4}, {-2, numeric(1, 4)},
                                                                   {3, 8}, {-3, numeric(1, 8)}, {4, 16}, {-4, numeric(1, 16)}};
@@ -1158,12 +1174,12 @@ std::optional<Checker::QuotientShape> Checker::quotient_shape(const Reference& r
     p[i].second *= 2;
     const auto& b = diag.doubled[i];
     const auto a = answer_at(p);
-    if (!a || !b || b->is_zero() || !a->is_rational() || !b->is_rational()) return std::nullopt;
+    if (!a || !b || b->is_zero()) return std::nullopt;
     const numeric r = *a / *b / q0;
-    if (r.is_equal(numeric(1))) continue;
+    if (same(r, 1)) continue;
     ++shape.depends_on;
     for (const auto& [e, two] : powers_of_two)
-      if (r.is_equal(two)) exponents[i] = e;
+      if (same(r, two)) exponents[i] = e;
     powers = powers && exponents[i] != 0;
     if (!powers && shape.depends_on > 2) return shape;  // neither kind of simple factor
   }
@@ -1175,9 +1191,15 @@ std::optional<Checker::QuotientShape> Checker::quotient_shape(const Reference& r
       if (exponents[i] != 0) v *= p[i].second.power(exponents[i]);
     return v;
   };
-  const numeric c = q0 / at(p0);
+  numeric c = q0 / at(p0);
   for (std::size_t k = 1; k < values.size() && k < points_.size(); ++k)
-    if (ref.at_points[k].is_zero() || !(values[k] / ref.at_points[k]).is_equal(c * at(points_[k]))) return shape;
+    if (ref.at_points[k].is_zero() || !same(values[k] / ref.at_points[k], c * at(points_[k]))) return shape;
+  if (!c.is_rational()) {
+    // A float: the simple fraction it is (a denominator up to 12), or no monomial to say.
+    const auto simple = simple_fraction(c);
+    if (!simple) return shape;
+    c = *simple;
+  }
   ex monomial = c;
   for (std::size_t i = 0; i < p0.size(); ++i)
     if (exponents[i] != 0) monomial *= GiNaC::pow(p0[i].first, exponents[i]);
@@ -1200,16 +1222,10 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const Program& an
     else constant_ratio = same(q, *ratio);
   }
   if (constant_ratio && ratio) {
-    // Program when the values are; else the ratio rounded to a simple fraction.
+    // Exact when the values are; else the ratio rounded to a simple fraction.
     numeric c = *ratio;
-    if (!c.is_rational() && std::abs(c.to_double()) < 1e12) {  // (a larger ratio does not fit a long: fuzzing)
-      const double x = c.to_double();
-      for (int den = 1; den <= 12; ++den)
-        if (std::abs(x * den - std::round(x * den)) < 1e-9 * std::max(1.0, std::abs(x * den))) {
-          c = numeric(static_cast<long>(std::round(x * den)), den);
-          break;
-        }
-    }
+    if (!c.is_rational())
+      if (const auto simple = simple_fraction(c)) c = *simple;
     // Still irrational: a square root of a simple fraction (sqrt(3), sqrt(3)/2), said exactly.
     if (!c.is_rational() && std::abs(c.to_double()) < 1e6) {
       const double x2 = c.to_double() * c.to_double();
