@@ -50,6 +50,12 @@ std::string bodies_phrase(const std::vector<std::string>& names) {
 
 StudentFbd read_fbd_data(const yaml::Node& node, int dims, const std::string& file, Diagnostics& diags);
 
+void in_file_order(std::vector<Diagnostic>& problems) {
+  std::stable_sort(problems.begin(), problems.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    return std::pair(a.where.line, a.where.column) < std::pair(b.where.line, b.where.column);
+  });
+}
+
 }  // namespace
 
 StudentFbd read_fbd(const yaml::Node& node, const Model& m, const std::string& file, Diagnostics& out) {
@@ -59,9 +65,7 @@ StudentFbd read_fbd(const yaml::Node& node, const Model& m, const std::string& f
   StudentFbd fbd = read_fbd_data(node, dims, file, diags);
   std::vector<Diagnostic> all = diags.items();
   for (auto& d : fbd_name_problems(m, fbd)) all.push_back(std::move(d));
-  std::stable_sort(all.begin(), all.end(), [](const Diagnostic& a, const Diagnostic& b) {
-    return std::pair(a.where.line, a.where.column) < std::pair(b.where.line, b.where.column);
-  });
+  in_file_order(all);
   for (auto& d : all) out.error(std::move(d.where), std::move(d.message));
   return fbd;
 }
@@ -191,9 +195,7 @@ std::vector<Diagnostic> fbd_name_problems(const Model& m, const StudentFbd& fbd)
     if (!f.at.empty() && std::find(names.begin(), names.end(), f.at) == names.end())
       problems.push_back({f.at_where, "'" + f.at + "' is not a point or body of the problem (expected one of: " + some(names) + ")"});
   // In the file's order.
-  std::stable_sort(problems.begin(), problems.end(), [](const Diagnostic& a, const Diagnostic& b) {
-    return std::pair(a.where.line, a.where.column) < std::pair(b.where.line, b.where.column);
-  });
+  in_file_order(problems);
   return problems;
 }
 
@@ -226,9 +228,34 @@ FbdRubric read_fbd_rubric(const yaml::Node& node, const std::string& file, Diagn
         double v = 1;
         read(e.second, "the weight of '" + e.first.text() + "'", 1000.0, v);
         r.weights[e.first.text()] = v;
+        r.weight_where[e.first.text()] = yaml::where(e.first, file);
       }
   }
   return r;
+}
+
+std::vector<Diagnostic> fbd_rubric_problems(const Model& m, const FbdRubric& r) {
+  // What a weight may name: each force's unknowns, its source, or its source's key (a strand
+  // without its end: "string s: strand pB-C"), which the message offers.
+  std::vector<std::string> names;
+  auto add = [&](const std::string& n) {
+    if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+  };
+  for (const Load& l : m.loads)
+    for (const ex& u : m.candidates)
+      if (std::any_of(l.force.begin(), l.force.end(), [&](const ex& c) { return c.has(u); }) ||
+          std::any_of(l.couple.begin(), l.couple.end(), [&](const ex& c) { return c.has(u); }))
+        add(to_text(u));
+  for (const Load& l : m.loads) add(force_key(l.source));
+  auto a_source = [&](const std::string& name) {
+    return std::any_of(m.loads.begin(), m.loads.end(), [&](const Load& l) { return l.source == name; });
+  };
+  std::vector<Diagnostic> problems;
+  for (const auto& [name, where] : r.weight_where)
+    if (std::find(names.begin(), names.end(), name) == names.end() && !a_source(name))
+      problems.push_back({where, "'" + name + "' names no force of the problem (expected a force's unknown or source: " + some(names) + ")"});
+  in_file_order(problems);
+  return problems;
 }
 
 FbdGrade check_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& rubric, std::vector<Diagnostic>& problems) {

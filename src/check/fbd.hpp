@@ -54,6 +54,7 @@ struct FbdRubric {
   double extra = 1;
   double tolerance = 5;
   std::map<std::string, double> weights;
+  std::map<std::string, Location> weight_where;  // where each weight is named (its key), for fbd_rubric_problems
 };
 
 /// Reads a free body diagram: `body: B` (or `bodies: [A, B]`, a system), `forces:` a list of
@@ -69,6 +70,9 @@ struct FbdRubric {
 /// The `fbd:` part of a rubric: `{wrong_direction: 0.5, wrong_point: 0.5, extra: 1, tolerance: 5,
 /// weights: {T: 2}}`.
 [[nodiscard]] FbdRubric read_fbd_rubric(const yaml::Node& node, const std::string& file, Diagnostics& diags);
+/// The weights of `r` that name no force of `m` (neither a force's unknown nor its source),
+/// each located at its key.
+[[nodiscard]] std::vector<Diagnostic> fbd_rubric_problems(const Model& m, const FbdRubric& r);
 
 struct FbdGrade {
   std::string of;  // "B", or "the system of A and B"

@@ -146,18 +146,26 @@ class PrairieLearnSolutionTest(unittest.TestCase):
     def test_partial_solution(self):
         server = load_server("pulley-solution")
         # LMB A right, B's balance a strand short, no constraint, T right as a number: balances
-        # 1 of 2 (2 of 4 points), constraints 0 of 1 (0 of 2), answers 1 of 1 (4 of 4): 6 of 10.
+        # 1 of 2 (2 of 4 points), constraints 0 of 1 (0 of 2), answers 1 of 1 (4 of 4): 6 of 10,
+        # less the wrong step's share, 10 points over twice the 4 items: 4.75 of 10.
         data = self.submit(server, {"step1": LMB_A, "step2": LMB_B_TWO_STRANDS, "T": "20 N"})
         self.assertEqual(data["format_errors"], {})
-        self.assertAlmostEqual(data["score"], 0.6)
+        self.assertAlmostEqual(data["score"], 0.475)
+        self.assertIn("1 incorrect step: -1.25", data["feedback"]["solution"])
         self.assertEqual(data["partial_scores"]["step2"]["score"], 0.0)
         self.assertIn("a strand of string s at pB is missing", data["feedback"]["step2"])
         self.assertNotIn("3*T", data["feedback"]["step2"])  # never the correct equation
         self.assertIn("LMB B (x)", data["feedback"]["solution"])
         self.assertIn("string s: acceleration", data["feedback"]["solution"])
-        # Nothing written but T: the answer's points only.
+        # Nothing written but T: the answer's points only; and T restated as an equation as well:
+        # still the answer's points only (it is derived from the balances, not written as them).
         data = self.submit(server, {"T": T_CLOSED})
         self.assertAlmostEqual(data["score"], 0.4)
+        data = self.submit(server, {"step1": "T = " + T_CLOSED, "T": T_CLOSED})
+        self.assertAlmostEqual(data["score"], 0.4)
+        self.assertIn("it earns no balance or constraint points", data["feedback"]["step1"])
+        # Nothing at all: nothing.
+        self.assertEqual(self.submit(server, {})["score"], 0.0)
 
     def test_unreadable_steps_are_format_errors(self):
         server = load_server("pulley-solution")
@@ -198,10 +206,11 @@ class GradescopeSolutionTest(unittest.TestCase):
 
     def test_partial_solution(self):
         # A's diagram right, B's missing: 1 of 2; LMB A right, B's a strand short: 1.5 of 3; no
-        # constraint: 0 of 2; T right as a number: 3 of 3. 5.5 in all.
+        # constraint: 0 of 2; T right as a number: 3 of 3. 5.5, less the wrong step's share: 10
+        # points over twice the 6 items (2 diagrams, 2 balances, 1 constraint, 1 answer).
         r = self.run_autograder([{"fbd": FBD_A}, {"equation": LMB_A}, {"equation": LMB_B_TWO_STRANDS}, {"answer": "20 N", "unknown": "T"}])
-        self.assertEqual(self.parts(r), {"fbds": 1, "balances": 1.5, "constraints": 0, "answers": 3})
-        self.assertEqual(r["score"], 5.5)
+        self.assertEqual(self.parts(r), {"fbds": 1, "balances": 1.5, "constraints": 0, "answers": 3, "wrong steps": -10 / 12})
+        self.assertAlmostEqual(r["score"], 5.5 - 10 / 12)
         wrong = [t for t in r["tests"] if t["name"].startswith("step 3")][0]
         self.assertEqual(wrong["status"], "failed")
         self.assertIn("a strand of string s at pB is missing", wrong["output"])

@@ -216,7 +216,7 @@ TEST_CASE("FBD: a worked solution's diagrams earn the rubric's fbds points", "[c
   - fbd: {body: B, forces: [{name: T, at: pB, direction: [-1]}, {name: T, at: pB, direction: [-1]}]}
   - equation: "2*T - F = m_A*ddot(x_A)"
 )Y", "s.yaml", a.model);
-  const Rubric rubric = read_rubric("fbds: 2\nbalances: 2\nconstraints: 0\nanswers: 0\n", "r.yaml");
+  const Rubric rubric = read_rubric("fbds: 2\nbalances: 2\nconstraints: 0\nanswers: 0\n", "r.yaml", a.model);
   const SolutionGrade g = grade_solution(c, a.model, steps, rubric);
   REQUIRE(g.steps.size() == 3);
   CHECK(g.steps[0].result.verdict == Verdict::correct);
