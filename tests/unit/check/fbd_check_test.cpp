@@ -61,7 +61,14 @@ struct FbdCase {
 // Sample 12.8: the ball and socket at O and the hinge at G, forces of unknown direction; the
 // rod from H to I, along H -> I = (d, b, e) = (3, 1.5, 0.5) m, tension or compression; the
 // weight along -z.
-// The ladder: the floor pushes up at A, the wall pushes left (-x) at B; the weight at G.
+// The ladder: the floor pushes up at A, the wall pushes left (-x) at B; the weight at G. A and
+// B are the ends, off G: where N_A and N_B act sets their moments about G; the weight's is
+// nothing wherever along its line through G it is drawn.
+// The massive pulley P (pinned at its center O, which is its center of mass): the pin's force
+// (unknown direction) at O, the weight M g down at O, the strand s_1 down at L (the left rim,
+// block 1 hangs below it), the strand s_2 down at E (the right rim). A second arrow down at O
+// named like the weight, or both said to be weights, is the weight again, not the pin's force.
+// The Atwood machine's pulley block C is massless: R_C up and the two strands down, no weight.
 const std::vector<FbdCase> cases{
     {"sample-12.3-two-mass-pulley", "body: B\nforces:\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [-1]}\n",
      Verdict::correct, "", "every force on B is drawn, each along its line and at its point", 3, 3},
@@ -129,6 +136,26 @@ const std::vector<FbdCase> cases{
     {"rotation-ladder-sliding-on-smooth-wall-and-floor",
      "body: ladder\nforces:\n  - {name: N_A, at: A, direction: [0, 1]}\n  - {name: N_B, at: A, direction: [-1, 0]}\n  - {name: W, at: ladder, direction: [0, -1]}\n",
      Verdict::incorrect, "wrong_point", "your N_B stands for the force of the roller at B, which does not act at A", 2.5, 3},
+    {"rotation-ladder-sliding-on-smooth-wall-and-floor",
+     "body: ladder\nforces:\n  - {name: N_A, direction: [0, 1]}\n  - {name: N_B, at: B, direction: [-1, 0]}\n  - {name: W, at: ladder, direction: [0, -1]}\n",
+     Verdict::incorrect, "wrong_point", "your N_A stands for the force of the roller at A, but is drawn at no point (where it acts sets its moment)", 2.5, 3},
+    {"rotation-ladder-sliding-on-smooth-wall-and-floor",
+     "body: ladder\nforces:\n  - {name: N_A, at: A, direction: [0, 1]}\n  - {name: N_B, at: B, direction: [-1, 0]}\n  - {name: W, direction: [0, -1]}\n",
+     Verdict::correct, "", "every force on ladder is drawn, each along its line and at its point", 3, 3},
+    {"rotation-atwood-massive-pulley",
+     "body: P\nforces:\n  - {name: T_1, at: L, direction: [0, -1]}\n  - {name: T_2, at: E, direction: [0, -1]}\n  - {name: W, at: P, direction: [0, -1]}\n"
+     "  - {name: W, at: P, direction: [0, -1]}\n",
+     Verdict::incorrect, "missing_force", "the force of the pin at O is missing", 2, 4},
+    {"rotation-atwood-massive-pulley",
+     "body: P\nforces:\n  - {name: T_1, at: L, direction: [0, -1]}\n  - {name: T_2, at: E, direction: [0, -1]}\n  - {name: W, at: P, direction: [0, -1], kind: weight}\n"
+     "  - {name: R, at: O, direction: [0, -1], kind: weight}\n",
+     Verdict::incorrect, "missing_force", "the force of the pin at O is missing", 2, 4},
+    {"rotation-atwood-massive-pulley",
+     "body: P\nforces:\n  - {name: T_1, at: L, direction: [0, -1]}\n  - {name: T_2, at: E, direction: [0, -1]}\n  - {name: W, at: P, direction: [0, -1]}\n"
+     "  - {name: R, at: O, direction: [0, -1]}\n",
+     Verdict::correct, "", "every force on P is drawn, each along its line and at its point", 4, 4},
+    {"atwood-machine", "body: C\nforces:\n  - {name: R, direction: [1], kind: weight}\n  - {name: T, direction: [-1]}\n  - {name: T, direction: [-1]}\n",
+     Verdict::incorrect, "missing_force", "the force of the fixed body C is missing", 1, 3},
 };
 
 }  // namespace
@@ -144,6 +171,77 @@ TEST_CASE("FBD: each drawing's verdict, finding and score, from the examples' ha
     CHECK(g.score == Approx(c.score));
     CHECK(g.max_score == Approx(c.max_score));
   }
+}
+
+TEST_CASE("FBD: a weight drawn twice is the weight twice, never another force", "[check][fbd]") {
+  // By hand (see the cases): the pin at O is missing, and the second weight is one too many,
+  // whether it is named like the first or both are said to be weights. (One said to be a weight
+  // and one down at O said to be nothing: that one may be the pin's force, drawn down.)
+  const char* const twice = "body: P\nforces:\n  - {name: T_1, at: L, direction: [0, -1]}\n  - {name: T_2, at: E, direction: [0, -1]}\n"
+                            "  - {name: W, at: P, direction: [0, -1]}\n  - {name: W, at: P, direction: [0, -1]}\n";
+  CHECK(fbd_text(grade("rotation-atwood-massive-pulley", twice)) ==
+        "free body diagram of P: incorrect: the force of the pin at O is missing\n"
+        "  the force of the pin at O (O_x, O_y): missing\n"
+        "  a strand of string s_1 at L (T_1): drawn as your T_1\n"
+        "  a strand of string s_2 at E (T_2): drawn as your T_2\n"
+        "  the weight of P (M*g): drawn as your W\n"
+        "  extra: your W counts the weight of P once too often\n"
+        "score: 2 of 4\n");
+  const FbdGrade said = grade("rotation-atwood-massive-pulley",
+                              "body: P\nforces:\n  - {name: T_1, at: L, direction: [0, -1]}\n  - {name: T_2, at: E, direction: [0, -1]}\n"
+                              "  - {name: W, at: P, direction: [0, -1], kind: weight}\n  - {name: R, at: O, direction: [0, -1], kind: weight}\n");
+  REQUIRE(said.extras.size() == 1);
+  CHECK(said.extras[0].message == "your R counts the weight of P once too often");
+  // Said to be a weight where the body has none (the massless pulley block C): not its R_C.
+  const FbdGrade none = grade("atwood-machine", "body: C\nforces:\n  - {name: R, direction: [1], kind: weight}\n");
+  REQUIRE(none.extras.size() == 1);
+  CHECK(none.extras[0].message == "your R is not one of the forces on C");
+}
+
+TEST_CASE("FBD: a force that is nothing in the sketch earns its share, drawn at its point or left out", "[check][fbd]") {
+  // The block on the incline with the spring at its rest length (by hand: its length D - x =
+  // 1.5 - 1 = 0.5 m is l_0): the spring's force is nothing there, the weight points down the
+  // axis. Left out or drawn at A along the axis: every point; drawn at the anchor Q: half.
+  const auto a = test::run_text(test::example_with("incline-1d-block-on-spring.yaml", "layout: {x: 0.9}", "layout: {x: 1}"));
+  auto graded = [&](const std::string& yaml) {
+    std::vector<Diagnostic> problems;
+    return check_fbd(a->model, read_fbd_file(yaml, "fbd.yaml", a->model), FbdRubric{}, problems);
+  };
+  CHECK(fbd_text(graded("body: A\nforces:\n  - {name: W, at: A, direction: [-1]}\n")) ==
+        "free body diagram of A: correct: every force on A is drawn, each along its line and at its point\n"
+        "  the force of spring sp at A (-k*(l_0 + x - D)): nothing at this position (not needed)\n"
+        "  the weight of A (g*m*sin(theta)): drawn as your W\n"
+        "score: 2 of 2\n");
+  CHECK(fbd_text(graded("body: A\nforces:\n  - {name: W, at: A, direction: [-1]}\n  - {name: S, at: A, direction: [1]}\n")) ==
+        "free body diagram of A: correct: every force on A is drawn, each along its line and at its point\n"
+        "  the force of spring sp at A (-k*(l_0 + x - D)): drawn as your S\n"
+        "  the weight of A (g*m*sin(theta)): drawn as your W\n"
+        "score: 2 of 2\n");
+  const FbdGrade anchor = graded("body: A\nforces:\n  - {name: W, at: A, direction: [-1]}\n  - {name: S, at: Q, direction: [1]}\n");
+  CHECK(anchor.summary == "your S stands for the force of spring sp at A, which does not act at Q");
+  CHECK(anchor.score == Approx(1.5));
+  CHECK(anchor.max_score == Approx(2));
+}
+
+TEST_CASE("FBD: an arrow's kind, and a rubric's weights, are read with their problems located", "[check][fbd]") {
+  const Model& m = analysis_for("incline-and-hanging-block").model;
+  std::vector<std::string> out;
+  try {
+    (void)read_fbd_file("body: A\nforces:\n  - {name: W, at: A, direction: [0, -1], kind: gravity}\n", "f.yaml", m);
+  } catch (const InputError& e) {
+    for (const auto& d : e.diagnostics()) out.push_back(format(d));
+  }
+  CHECK(out == std::vector<std::string>{"f.yaml:3:48: 'gravity' is not a kind of force (expected weight, tension, spring, damper, applied or support)"});
+  out.clear();
+  // By hand, the incline's forces: the roller at A (N_A), the string's strands A-P on A and P-B
+  // on B (tension T), the weights of A and B; no C.
+  try {
+    (void)read_rubric("fbd:\n  weights: {N_A: 2, gravity on C: 1, T: 1}\n", "r.yaml", m);
+  } catch (const InputError& e) {
+    for (const auto& d : e.diagnostics()) out.push_back(format(d));
+  }
+  CHECK(out == std::vector<std::string>{"r.yaml:2:21: 'gravity on C' names no force of the problem (expected a force's unknown or source: N_A, T, "
+                                        "roller at A, string s: strand A-P, string s: strand P-B, gravity on A, gravity on B)"});
 }
 
 TEST_CASE("FBD: the student's names are mapped to the forces they stand for", "[check][fbd]") {
@@ -216,7 +314,7 @@ TEST_CASE("FBD: a worked solution's diagrams earn the rubric's fbds points", "[c
   - fbd: {body: B, forces: [{name: T, at: pB, direction: [-1]}, {name: T, at: pB, direction: [-1]}]}
   - equation: "2*T - F = m_A*ddot(x_A)"
 )Y", "s.yaml", a.model);
-  const Rubric rubric = read_rubric("fbds: 2\nbalances: 2\nconstraints: 0\nanswers: 0\n", "r.yaml");
+  const Rubric rubric = read_rubric("fbds: 2\nbalances: 2\nconstraints: 0\nanswers: 0\n", "r.yaml", a.model);
   const SolutionGrade g = grade_solution(c, a.model, steps, rubric);
   REQUIRE(g.steps.size() == 3);
   CHECK(g.steps[0].result.verdict == Verdict::correct);
