@@ -1,5 +1,7 @@
 #include "motion/motion.hpp"
 
+#include "motion/mass_form.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -432,27 +434,9 @@ std::optional<EquationsOfMotion::Linearised> linearised_system(const Model& m, c
       lin.stiffness_matrix(static_cast<unsigned>(i), static_cast<unsigned>(j)) = *k;
     }
   }
-  const exmap values = m.symbols->values();
-  Eigen::MatrixXd Kn(n, n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) {
-      ex kij = lin.stiffness_matrix(static_cast<unsigned>(i), static_cast<unsigned>(j));
-      for (int depth = 0; depth < 8 && !kij.is_zero(); ++depth) kij = substituted(kij, m.symbols->definitions());
-      const auto v = kij.is_zero() ? std::optional<double>(0) : NormalForm(kij).approx_at(values);
-      if (!v) return lin;  // no numbers: the matrix alone
-      Kn(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = *v;
-    }
-  const Eigen::EigenSolver<Eigen::MatrixXd> es(Kn);
-  if (es.info() != Eigen::Success) return lin;
-  const double scale = Kn.cwiseAbs().maxCoeff();
-  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
-    const auto ev = es.eigenvalues()(i);
-    // A zero eigenvalue is a free mode (a cart that rolls on with no spring): frequency 0.
-    const double tiny = 1e-12 * (1 + scale);
-    if (std::abs(ev.imag()) > 1e-9 * (1 + std::abs(ev.real())) || ev.real() < -tiny) return std::nullopt;  // not a stable rest
-    lin.frequencies.push_back(ev.real() <= tiny ? 0.0 : std::sqrt(ev.real()));
-  }
-  std::sort(lin.frequencies.begin(), lin.frequencies.end());
+  const auto frequencies = small_oscillations(m, lin.stiffness_matrix);
+  if (!frequencies) return std::nullopt;  // not a stable rest
+  lin.frequencies = *frequencies;
   return lin;
 }
 
@@ -552,6 +536,10 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   eom.ddq = spec.accelerations;
   if (sol.status == Solution::Status::inconsistent) {
     out.problem = "the equations are inconsistent, so there is no motion to follow";
+    return out;
+  }
+  if (!sol.unsolved.empty()) {
+    follow_mass_form(m, *sol.mass_form, out);
     return out;
   }
   std::vector<ex> state = eom.q;

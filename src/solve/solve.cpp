@@ -12,6 +12,7 @@
 #include "core/diagnostics.hpp"
 #include "expr/pairs.hpp"
 #include "expr/print.hpp"
+#include "motion/mass_form.hpp"
 #include "solve/eliminate.hpp"
 
 namespace tackle {
@@ -719,6 +720,12 @@ AcuteAngles acute_angles(const Model& model) {
 }  // namespace
 
 Solution solve(const Model& model, const EquationSystem& s) {
+  if (LeftToMotion left = instant_left_to_motion(model); !left.why.empty()) {
+    Solution unsolved;
+    unsolved.unsolved = std::move(left.why);
+    unsolved.mass_form = std::move(left.form);
+    return unsolved;
+  }
   Solution sol = solve_equations(model.file, s.equations, s.unknowns);
   if (sol.status == Solution::Status::inconsistent) return sol;
   if (auto r = solve_level(model, s.rate_equations, SymbolRole::rate)) sol.rates = std::make_shared<const Solution>(std::move(*r));
