@@ -174,7 +174,7 @@ std::optional<MassForm> mass_form(const Model& m, std::string& why_not) {
 }
 
 LeftToMotion instant_left_to_motion(const Model& m) {
-  if (!m.motion || m.motion->coordinates.size() < 2 || !m.wanted.empty() || !m.conditions.empty() || m.interval || m.impact)
+  if (!m.motion || m.motion->coordinates.size() < 2 || !m.wanted.empty() || m.interval || m.impact)
     return {};
   const exmap values = m.symbols->values();
   for (const auto& g : m.given)
@@ -238,15 +238,28 @@ std::optional<std::vector<double>> small_oscillations(const Model& m, const matr
   return out;
 }
 
-void follow_mass_form(const Model& m, const MassForm& f, Motion& out) {
-  EquationsOfMotion& eom = out.eom;
+bool take_mass_form(const Model& m, EquationsOfMotion& eom, std::shared_ptr<const MassForm> made) {
+  if (!made) {
+    std::string why_not;
+    auto f = mass_form(m, why_not);
+    if (!f || !f->mass_varies) return false;
+    made = std::make_shared<const MassForm>(std::move(*f));
+  }
   eom.mass_form = true;
   eom.linear = false;
   eom.nonlinear = "the mass matrix changes with the coordinates";
+  eom.M = made->M;
+  eom.forcing = made->F;
+  return true;
+}
+
+void follow_mass_form(const Model& m, const std::shared_ptr<const MassForm>& f, Motion& out) {
+  EquationsOfMotion& eom = out.eom;
+  take_mass_form(m, eom, f);
   out.no_response = "the equations of motion are nonlinear (" + eom.nonlinear + "; simulate them)";
-  eom.M = f.M;
-  eom.forcing = f.F;
-  const auto rest = at_rest(m, f);
+  for (const auto& c : m.conditions)
+    out.not_followed.emplace_back(c.source, "its forces are not solved for, as nothing is asked at the instant");
+  const auto rest = at_rest(m, *f);
   if (!rest) return;
   for (unsigned i = 0; i < rest->C0.rows(); ++i)
     for (unsigned j = 0; j < rest->C0.cols(); ++j)

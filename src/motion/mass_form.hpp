@@ -34,7 +34,7 @@ struct MassForm {
 [[nodiscard]] std::optional<MassForm> mass_form(const Model& m, std::string& why_not);
 
 /// Why the instant is left to the motion (empty: it is solved): the description asks nothing
-/// of it (no 'find', no given value, no validity condition) and its closed forms would be
+/// of it (no 'find', no given value) and its closed forms would be
 /// ratios of determinants of a mass matrix that turns with the coordinates (two degrees of
 /// freedom or more), while the motion has its equations in the mass-matrix form.
 /// The mass-matrix form comes with it, made once.
@@ -57,9 +57,14 @@ struct MassFormAtRest {
 /// when q = 0 is not a stable rest; empty when there are no numbers to tell.
 [[nodiscard]] std::optional<std::vector<double>> small_oscillations(const Model& m, const GiNaC::matrix& K);
 
+struct EquationsOfMotion;
 struct Motion;
+/// The mass-matrix form into `eom` (M, forcing, mass_form), when the mass matrix turns with
+/// the coordinates: `made`, or made here. False when there is none.
+bool take_mass_form(const Model& m, EquationsOfMotion& eom, std::shared_ptr<const MassForm> made = nullptr);
 /// The motion of an instant left unsolved (instant_left_to_motion): its equations in the
-/// mass-matrix form and their small oscillations about rest, in `out.eom`.
-void follow_mass_form(const Model& m, const MassForm& f, Motion& out);
+/// mass-matrix form `f` and their small oscillations about rest, in `out.eom`; the validity
+/// conditions are not followed (their forces are not solved for).
+void follow_mass_form(const Model& m, const std::shared_ptr<const MassForm>& f, Motion& out);
 
 }  // namespace tackle

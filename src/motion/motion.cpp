@@ -539,7 +539,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
     return out;
   }
   if (!sol.unsolved.empty()) {
-    follow_mass_form(m, *sol.mass_form, out);
+    follow_mass_form(m, sol.mass_form, out);
     return out;
   }
   std::vector<ex> state = eom.q;
@@ -676,6 +676,9 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
       eom.linear = false;
     }
   }
+  // A mass matrix that turns with the coordinates (coupled links): the equations also as a
+  // person writes them, M(q) q'' = F.
+  if (!mass_constant && n > 1) take_mass_form(m, eom);
   if (eom.linear) {
     eom.K = matrix(n, n);
     eom.C = matrix(n, n);
