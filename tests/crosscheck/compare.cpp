@@ -136,7 +136,7 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
     Instant inst = model->solve(s);
     // a rate tackle gives from the constraints is the state's own (the state keeps them)
     for (const auto& [name, value] : vals)
-      if (name.rfind("dot(", 0) == 0 && tk.count(name)) inst.quantities.push_back({name, value, true, false});
+      if (name.rfind("dot(", 0) == 0 && tk.count(name)) inst.quantities.push_back({name, value, true, false, {}});
     ++out.states;
     if (std::getenv("CROSSCHECK_DEBUG")) {
       std::fprintf(stderr, "state (residual %g, rank deficiency %d):\n", inst.residual, inst.rank_deficiency);

@@ -168,4 +168,21 @@ Expr Expr::constant(double v) {
 
 bool Expr::uses(int slot) const { return uses_slot(root_.get(), slot); }
 
+double Expr::magnitude(const std::vector<double>& vars) const {
+  const std::function<double(const Node*)> size = [&](const Node* n) -> double {
+    switch (n->kind) {
+      case Node::neg: return size(n->l.get());
+      case Node::add:
+      case Node::sub: return size(n->l.get()) + size(n->r.get());
+      case Node::mul: return size(n->l.get()) * size(n->r.get());
+      case Node::div: return size(n->l.get()) / std::abs(eval_node<double>(n->r.get(), vars));
+      case Node::ipow:
+        if (n->exponent > 0) return std::pow(size(n->l.get()), n->exponent);
+        return std::abs(eval_node<double>(n, vars));
+      default: return std::abs(eval_node<double>(n, vars));
+    }
+  };
+  return size(root_.get());
+}
+
 }  // namespace crosscheck

@@ -69,6 +69,10 @@ class Expr {
   [[nodiscard]] bool valid() const { return root_ != nullptr; }
   /// Whether the expression reads variable `slot`.
   [[nodiscard]] bool uses(int slot) const;
+  /// The size of its terms, for "near 0": sums and differences add their parts' sizes
+  /// (|a| + |b|, so that a sum that cancels keeps the size of what cancelled), products and
+  /// quotients multiply and divide them, anything else is its value's size.
+  [[nodiscard]] double magnitude(const std::vector<double>& vars) const;
 
   struct Node {
     enum Kind { num, var, neg, add, sub, mul, div, pow, ipow, fsqrt, fabs, fsin, fcos, ftan, fexp, flog } kind;

@@ -8,9 +8,18 @@
 //   tackle_crosscheck files FILE...             description files (the regressions); a file
 //                                               named expected-disagreement-* must disagree
 //   tackle_crosscheck print SEED                the mechanism SEED generates, as YAML
+//   tackle_crosscheck equations|answers|fbds N [SEED] [--examples DIR] [--all]
+//                                               the oracle of verdicts (oracle.hpp): N students'
+//                                               equations, answers or free body diagrams over
+//                                               DIR's examples and generated mechanisms, each
+//                                               decided by the model and checked by tackle
+//   tackle_crosscheck explain FILE EQUATION [UNKNOWN]
+//                                               one equation (an answer for UNKNOWN): the
+//                                               model's values, its truth, tackle's verdict
 // Exit status 1 when anything disagrees (beyond 1e-9 relative) or tackle refuses a
 // generated mechanism.
 #include <algorithm>
+#include <cstdlib>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +29,7 @@
 #include <fmt/format.h>
 
 #include "crosscheck/compare.hpp"
+#include "crosscheck/oracle.hpp"
 #include "ruleset/ruleset.hpp"
 
 namespace {
@@ -41,6 +51,7 @@ void print_disagreements(const crosscheck::Outcome& o, std::size_t limit = 4) {
 
 int usage() {
   std::cerr << "usage: tackle_crosscheck examples DIR [PERTURB] | generated N [SEED] [--motion-every K] [--quiet] [PERTURB] | files FILE... | print SEED\n"
+               "       | equations|answers|fbds N [SEED] [--examples DIR] [--all] | explain FILE EQUATION [UNKNOWN]\n"
                "  PERTURB: --perturb-masses X | --perturb-inertia X | --perturb-winding\n";
   return 2;
 }
@@ -64,6 +75,25 @@ int main(int argc, char** argv) {
   const auto started = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
 
+  if ((mode == "equations" || mode == "answers" || mode == "fbds") && argc >= 3) {
+    crosscheck::OracleOptions o;
+    o.kind = mode == "equations" ? crosscheck::OracleOptions::Kind::equations
+             : mode == "answers" ? crosscheck::OracleOptions::Kind::answers
+                                 : crosscheck::OracleOptions::Kind::fbds;
+    o.count = std::stol(argv[2]);
+    for (int i = 3; i < argc; ++i) {
+      const std::string a = argv[i];
+      if (a == "--examples" && i + 1 < argc) o.examples = argv[++i];
+      else if (a == "--all") o.shown = 0;
+      else o.seed = std::stoull(a);
+    }
+    const long disagreements = crosscheck::run_oracle(o, rules);
+    std::cout << fmt::format("({:.1f} s)\n", elapsed());
+    return disagreements ? 1 : 0;
+  }
+  if (mode == "explain" && (argc == 4 || argc == 5))
+    return crosscheck::explain_one(argv[2], argv[3], argc == 5 ? argv[4] : "", rules,
+                                   std::getenv("CROSSCHECK_SEED") ? std::stoull(std::getenv("CROSSCHECK_SEED")) : 1);
   if (mode == "print" && argc == 3) {
     std::cout << crosscheck::generate(std::stoull(argv[2]));
     return 0;

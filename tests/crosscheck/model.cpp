@@ -1006,6 +1006,12 @@ Model::Kkt Model::system(const State& s, const std::vector<int>* only) const {
   return out;
 }
 
+Eigen::VectorXd Model::along_line(const Body& b, const Eigen::MatrixXd& nulls) const {
+  // a body's acceleration along its line (or direction): its part of each free direction
+  const double bb = b.kind == Body::line ? b.b.squaredNorm() : 1.0;
+  return (b.b.transpose() * nulls.middleRows(b.q0, dims_)).transpose() / bb;
+}
+
 Instant Model::solve_kinematics(const State& s) const {
   // J a = -gamma with the given accelerations put in: the others by least squares, each
   // compared where the constraints determine it.
@@ -1040,6 +1046,7 @@ Instant Model::solve_kinematics(const State& s) const {
   out.residual = (J * x - rhs).norm() / std::max(1.0, rhs.norm());
   const int rank = static_cast<int>(svd.rank());
   const Eigen::MatrixXd nulls = svd.matrixV().rightCols(n - rank);
+  out.free_directions = static_cast<int>(nulls.cols());
   for (const auto& b : bodies_) {
     if (b.kind != Body::line || given_accel_.count("ddot(" + b.coord + ")")) continue;
     Quantity qn;
@@ -1047,6 +1054,7 @@ Instant Model::solve_kinematics(const State& s) const {
     qn.value = b.b.dot(x.segment(b.q0, dims_)) / b.b.squaredNorm();
     for (int i = 0; i < dims_; ++i)
       qn.determined = qn.determined && (b.b(i) == 0 || nulls.cols() == 0 || nulls.row(b.q0 + i).norm() < 1e-7);
+    qn.free = along_line(b, nulls);
     out.quantities.push_back(qn);
   }
   for (const auto& b : bodies_) {
@@ -1055,6 +1063,7 @@ Instant Model::solve_kinematics(const State& s) const {
     qn.name = "ddot(" + b.angle + ")";
     qn.value = x(b.r0);
     qn.determined = nulls.cols() == 0 || nulls.row(b.r0).norm() < 1e-7;
+    qn.free = nulls.row(b.r0).transpose();
     out.quantities.push_back(qn);
   }
   return out;
@@ -1078,13 +1087,14 @@ Instant Model::solve(const State& s) const {
   out.rank_deficiency = static_cast<int>(k.K.rows()) - rank;
   const Eigen::MatrixXd nulls = svd.matrixV().rightCols(k.K.cols() - rank);
   auto determined = [&](int i) { return nulls.rows() == 0 || nulls.cols() == 0 || nulls.row(i).norm() < 1e-7; };
+  out.free_directions = static_cast<int>(nulls.cols());
   for (const auto& b : bodies_) {
     if (b.kind != Body::line && b.kind != Body::along) continue;
-    const double bb = b.kind == Body::line ? b.b.squaredNorm() : 1.0;
     Quantity qn;
     qn.name = b.kind == Body::line ? "ddot(" + b.coord + ")" : b.coord;
-    qn.value = b.b.dot(x.segment(b.q0, dims_)) / bb;
+    qn.value = b.b.dot(x.segment(b.q0, dims_)) / (b.kind == Body::line ? b.b.squaredNorm() : 1.0);
     for (int i = 0; i < dims_; ++i) qn.determined = qn.determined && (b.b(i) == 0 || determined(b.q0 + i));
+    qn.free = along_line(b, nulls);
     out.quantities.push_back(qn);
   }
   for (const auto& b : bodies_) {
@@ -1093,6 +1103,7 @@ Instant Model::solve(const State& s) const {
       qn.name = b.angle.empty() ? "guide: angular acceleration of " + b.name : "ddot(" + b.angle + ")";
       qn.value = x(b.r0 + r);
       qn.determined = determined(b.r0 + r);
+      qn.free = nulls.row(b.r0 + r).transpose();
       out.quantities.push_back(qn);
     }
   }
@@ -1103,6 +1114,7 @@ Instant Model::solve(const State& s) const {
     qn.name = c.guide ? "guide: " + c.name : c.name;
     qn.value = x(n + static_cast<int>(j));
     qn.determined = determined(n + static_cast<int>(j));
+    qn.free = nulls.row(n + static_cast<int>(j)).transpose();
     qn.force = true;
     out.quantities.push_back(qn);
   }
@@ -1260,6 +1272,9 @@ std::optional<State> Model::random_state(std::mt19937_64& rng, double spread) co
   if (uses_time_) s.t = 0.5 * (1 + u(rng));
   place_turning(s);
   project(s, false);
+  // (the projection may land on the mirror image of a straight strand, two blocks that
+  // changed places: no state of the mechanism described)
+  if (!strands_keep_direction(s, base_state())) return std::nullopt;
   if (has_massless_ && !settle_massless(s)) return std::nullopt;
   // the state must keep every constraint
   for (const auto& c : cons_) {
@@ -1329,31 +1344,37 @@ std::optional<State> Model::state_from(const std::map<std::string, double>& coor
   return s;
 }
 
-bool Model::strands_keep_direction(const State& s, const State& ref) const {
-  // A strand that keeps its direction and now points the other way went through zero length
-  // (a strand that turns may point anywhere).
-  auto check = [&](const std::vector<PointRef>& pts) {
-    const std::vector<double> q(s.q.data(), s.q.data() + s.q.size()), q0(ref.q.data(), ref.q.data() + ref.q.size());
-    const auto vars = variables(q, Eigen::VectorXd(), s.t), vars0 = variables(q0, Eigen::VectorXd(), ref.t);
+std::vector<Eigen::VectorXd> Model::strand_vectors(const State& s) const {
+  std::vector<Eigen::VectorXd> out;
+  const std::vector<double> q(s.q.data(), s.q.data() + s.q.size());
+  const auto vars = variables(q, Eigen::VectorXd(), s.t);
+  auto add = [&](const std::vector<PointRef>& pts) {
     for (std::size_t k = 1; k < pts.size(); ++k) {
       const auto a = position(pts[k], q, vars, s.t), b = position(pts[k - 1], q, vars, s.t);
-      const auto a0 = position(pts[k], q0, vars0, ref.t), b0 = position(pts[k - 1], q0, vars0, ref.t);
-      Eigen::VectorXd now(dims_), then(dims_);
-      for (int i = 0; i < dims_; ++i) {
-        now(i) = a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>(i)];
-        then(i) = a0[static_cast<std::size_t>(i)] - b0[static_cast<std::size_t>(i)];
-      }
-      const double dot = now.dot(then), norms = now.norm() * then.norm();
-      if (norms == 0) continue;
-      if (dot < 0 && std::abs(std::abs(dot) - norms) < 1e-9 * norms) return false;
+      Eigen::VectorXd v(dims_);
+      for (int i = 0; i < dims_; ++i) v(i) = a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>(i)];
+      out.push_back(v);
     }
-    return true;
   };
   for (const auto& c : cons_)
-    if (c.kind == Constraint::path && !check(c.points)) return false;
-  for (const auto& e : elements_)
-    if (!check(e.points)) return false;
+    if (c.kind == Constraint::path) add(c.points);
+  for (const auto& e : elements_) add(e.points);
+  return out;
+}
+
+bool same_directions(const std::vector<Eigen::VectorXd>& now, const std::vector<Eigen::VectorXd>& then) {
+  // A strand that keeps its direction and now points the other way went through zero length
+  // (a strand that turns may point anywhere).
+  for (std::size_t k = 0; k < now.size() && k < then.size(); ++k) {
+    const double dot = now[k].dot(then[k]), norms = now[k].norm() * then[k].norm();
+    if (norms == 0) continue;
+    if (dot < 0 && std::abs(std::abs(dot) - norms) < 1e-9 * norms) return false;
+  }
   return true;
+}
+
+bool Model::strands_keep_direction(const State& s, const State& ref) const {
+  return same_directions(strand_vectors(s), strand_vectors(ref));
 }
 
 std::map<std::string, double> Model::coordinates_at(const State& s) const {

@@ -49,10 +49,15 @@ struct Quantity {
   double value = 0;
   bool determined = true;
   bool force = false;  // a constraint force (else an acceleration)
+  // Its parts along the directions the equations leave free (the null space of the system,
+  // each column of unit length): empty or zero when determined. An expression in several
+  // quantities is determined where these parts cancel (O_y + G_y in an indeterminate support).
+  Eigen::VectorXd free;
 };
 
 struct Instant {
   std::vector<Quantity> quantities;
+  int free_directions = 0;  // columns of each Quantity::free
   double residual = 0;  // of the KKT system at its least-squares solution, relative
   int rank_deficiency = 0;
 };
@@ -63,6 +68,10 @@ struct Perturbation {
   double inertia = 0;    // every turning body's moment of inertia times 1 + inertia
   bool winding = false;  // a string wound on a drum winds the other way
 };
+
+/// Whether every strand that kept its direction between `then` and `now` (strand_vectors)
+/// still points the same way: none went through zero length.
+[[nodiscard]] bool same_directions(const std::vector<Eigen::VectorXd>& now, const std::vector<Eigen::VectorXd>& then);
 
 class Model {
  public:
@@ -95,6 +104,9 @@ class Model {
   /// points in `ref` (a strand through zero length, a block through its pulley, is where
   /// neither this model nor tackle's describes the mechanism any more).
   [[nodiscard]] bool strands_keep_direction(const State& s, const State& ref) const;
+  /// Each strand (of strings, springs, dampers, contacts, in the model's order) from its
+  /// first point to its second: the same list for every model of one description.
+  [[nodiscard]] std::vector<Eigen::VectorXd> strand_vectors(const State& s) const;
   /// Whether any expression depends on time.
   [[nodiscard]] bool uses_time() const { return uses_time_; }
   [[nodiscard]] const std::map<std::string, double>& parameters() const { return params_; }
@@ -187,6 +199,7 @@ class Model {
   std::map<std::string, double> given_accel_;  // kinematics: ddot(q) -> its value
   bool kinematic_ = false;                     // no body has a mass: the constraints alone
   [[nodiscard]] Instant solve_kinematics(const State& s) const;
+  [[nodiscard]] Eigen::VectorXd along_line(const Body& b, const Eigen::MatrixXd& nulls) const;
 
   int slot(const std::string& name) const;
   Expr compile(const tackle::Text& t) const;
