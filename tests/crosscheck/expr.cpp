@@ -185,4 +185,23 @@ double Expr::magnitude(const std::vector<double>& vars) const {
   return size(root_.get());
 }
 
+std::optional<double> evaluate_text(const std::string& text, const std::map<std::string, double>& values,
+                                    const std::function<bool(const std::string&)>& usable) {
+  std::vector<double> vars;
+  bool known = true;
+  try {
+    const Expr e = Expr::compile(text, [&](const std::string& n) {
+      if (n == "pi" && !values.count(n)) return -1;
+      auto it = values.find(n);
+      if (it == values.end() || (usable && !usable(n))) known = false;
+      vars.push_back(it == values.end() ? 0.0 : it->second);
+      return static_cast<int>(vars.size()) - 1;
+    });
+    if (!known) return std::nullopt;
+    return e.eval(vars);
+  } catch (const std::runtime_error&) {
+    return std::nullopt;
+  }
+}
+
 }  // namespace crosscheck

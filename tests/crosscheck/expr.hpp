@@ -11,6 +11,8 @@
 
 #include <cmath>
 #include <functional>
+#include <map>
+#include <optional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -114,5 +116,10 @@ class Expr {
     throw std::logic_error("expression node");
   }
 };
+
+/// `text` evaluated with `values` by name (`pi` the number unless named there); nothing when
+/// it does not read or names something that is not there, or that `usable` refuses.
+[[nodiscard]] std::optional<double> evaluate_text(const std::string& text, const std::map<std::string, double>& values,
+                                                  const std::function<bool(const std::string&)>& usable = {});
 
 }  // namespace crosscheck

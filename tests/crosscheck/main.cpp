@@ -4,7 +4,9 @@
 //                                               N random mechanisms from SEED
 //   PERTURB (a deliberately wrong model, which must disagree): --perturb-masses X (the
 //   model's masses times 1 + X), --perturb-inertia X (its moments of inertia times 1 + X),
-//   --perturb-winding (its strings wound on drums wind the other way)
+//   --perturb-winding (its strings wound on drums wind the other way); or a deliberately
+//   wrong tackle: --perturb-drop-answer (its first answer asked for left out),
+//   --perturb-invert-condition (its first validity condition inverted)
 //   tackle_crosscheck files FILE...             description files (the regressions); a file
 //                                               named expected-disagreement-* must disagree
 //   tackle_crosscheck print SEED                the mechanism SEED generates, as YAML
@@ -52,7 +54,7 @@ void print_disagreements(const crosscheck::Outcome& o, std::size_t limit = 4) {
 int usage() {
   std::cerr << "usage: tackle_crosscheck examples DIR [PERTURB] | generated N [SEED] [--motion-every K] [--quiet] [PERTURB] | files FILE... | print SEED\n"
                "       | equations|answers|fbds N [SEED] [--examples DIR] [--all] | explain FILE EQUATION [UNKNOWN]\n"
-               "  PERTURB: --perturb-masses X | --perturb-inertia X | --perturb-winding\n";
+               "  PERTURB: --perturb-masses X | --perturb-inertia X | --perturb-winding | --perturb-drop-answer | --perturb-invert-condition\n";
   return 2;
 }
 
@@ -62,6 +64,8 @@ bool perturbation(int argc, char** argv, int& i, crosscheck::Options& o) {
   if (a == "--perturb-masses" && i + 1 < argc) o.perturb = std::stod(argv[++i]);
   else if (a == "--perturb-inertia" && i + 1 < argc) o.perturb_inertia = std::stod(argv[++i]);
   else if (a == "--perturb-winding") o.perturb_winding = true;
+  else if (a == "--perturb-drop-answer") o.perturb_drop_answer = true;
+  else if (a == "--perturb-invert-condition") o.perturb_invert_condition = true;
   else return false;
   return true;
 }
@@ -120,6 +124,7 @@ int main(int argc, char** argv) {
                                    out.not_determined ? fmt::format(", {} left free by the model", out.not_determined) : "",
                                    out.motion_points ? fmt::format(", motion: {} points, max error {:.2g}", out.motion_points, out.motion_error) : "");
           if (!out.motion_note.empty()) std::cout << "          motion: " << out.motion_note << "\n";
+          for (const auto& note : out.not_compared) std::cout << "          not compared: " << note << "\n";
           break;
         case crosscheck::Outcome::Kind::skipped:
           ++skipped;

@@ -381,6 +381,12 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     c.dir = Eigen::VectorXd::Constant(1, axis);
     cons_.push_back(c);
   };
+  // A contact that grips: it pushes, and its friction stays within mu N (mu when given).
+  auto grips = [&](const std::string& at, const tackle::ConnectionDesc& c, const std::string& what) {
+    requirements_.push_back({Requirement::pushes, "N_" + at, "", 0, -1, what + " pushes"});
+    if (opt_text(c, "mu"))
+      requirements_.push_back({Requirement::cone, "F_" + at, "N_" + at, number(c.arg("mu")->items[0]), -1, what + " grips (|F| <= mu N)"});
+  };
   for (const auto& c : d.connections) {
     const std::string& type = c.type.text;
     const std::string cname = c.name ? c.name->text : "";
@@ -406,6 +412,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       Constraint s;
       s.name = opt_text(c, "tension") ? *opt_text(c, "tension") : "T_" + cname;
       s.g_sign = -1;
+      requirements_.push_back({Requirement::pulls, s.name, "", 0, -1, "string " + cname + " pulls"});
       if (c.arg("path")) {
         s.kind = Constraint::path;
         s.points = path_of(c, "path");
@@ -424,6 +431,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       e.points = path_of(c, "path");
       e.winds = windings(e.points, perturb.winding ? -1.0 : 1.0);
       e.k = number(need(c, "k").items[0]);
+      if (type == "elastic_cord")
+        requirements_.push_back({Requirement::taut, "", "", 0, static_cast<int>(elements_.size()), "elastic cord " + cname + " is taut"});
       if (c.arg("rest_length")) {
         e.rest = number(need(c, "rest_length").items[0]);
       } else {
@@ -445,6 +454,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       const bool contact = type == "contact";
       s.name = opt_text(c, "force") ? *opt_text(c, "force") : (contact ? "N_" : "T_") + cname;
       s.g_sign = contact ? 1 : -1;
+      if (contact) requirements_.push_back({Requirement::pushes, s.name, "", 0, -1, "contact " + cname + " pushes"});
       cons_.push_back(s);
     } else if (type == "fixed") {
       const int b = body_of(c, "body");
@@ -453,6 +463,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       const int b = body_of(c, "body");
       const std::string at = need_text(c, "at");
       Constraint* k = add_project("N_" + at, material(at, b), b, unit_vec(c, "normal"));
+      requirements_.push_back({Requirement::pushes, "N_" + at, "", 0, -1, "the " + type + " at " + at + " pushes"});
       if (type == "sliding" || type == "skidding_wheel") {
         k->mu = number(need(c, "mu").items[0]);
         k->sliding = unit_vec(c, "sliding");
@@ -464,6 +475,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       const std::string at = need_text(c, "at");
       add_project("N_" + at, material(at, b), b, unit_vec(c, "normal"));
       add_project("F_" + at, material(at, b), b, unit_vec(c, "rolling"));
+      grips(at, c, "the driven wheel at " + at);
     } else if (type == "rolling") {
       // no slip: the body's material point at the contact C has no velocity along the
       // tangent, v_cm . t + omega (z x (C - cm)) . t = 0, and the center keeps its distance
@@ -488,11 +500,13 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
         k.arm = -arm(1) * k.dir(0) + arm(0) * k.dir(1);
         cons_.push_back(k);
       }
+      grips(at, c, "the rolling contact at " + at);
     } else if (type == "sticking") {
       const int b = body_of(c, "body");
       const std::string at = need_text(c, "at");
       add_project("N_" + at, material(at, b), b, unit_vec(c, "normal"));
       add_project("F_" + at, material(at, b), b, unit_vec(c, "tangent"));
+      grips(at, c, "the sticking contact at " + at);
     } else if (type == "collar") {
       const int b = body_of(c, "body");
       const std::string at = need_text(c, "at");
@@ -513,6 +527,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       s.kind = Constraint::path;
       s.name = "T_" + from + to;
       s.g_sign = -1;
+      if (type == "cable") requirements_.push_back({Requirement::pulls, s.name, "", 0, -1, "cable from " + from + " pulls"});
       const PointRef pf = material(from, b);
       PointRef pt = point(to, -1);
       if (pt.body >= 0) throw Unsupported("a rod or cable to a moving point");
@@ -918,6 +933,63 @@ Eigen::VectorXd Model::generalized(const PointRef& p, const Eigen::VectorXd& for
   return g;
 }
 
+double Model::element_tension(const Element& e, const State& s) const {
+  const auto L = length_derivs(e.points, e.winds, s);
+  if (e.kind == Element::damper) return e.c * (L.grad.dot(s.v) + L.dt);
+  double rest = e.rest;
+  if (e.stretch) {
+    // origin length: every coordinate of tackle's at 0 (angles too: nothing wound)
+    std::vector<D2> q0(static_cast<std::size_t>(ndof_), D2(0.0));
+    for (int i = 0; i < ndof_; ++i) q0[static_cast<std::size_t>(i)] = D2(origin_q_(i));
+    rest = path_length(e.points, q0, D2(s.t)).a.a - e.stretch_value;
+  }
+  return e.k * (L.value - rest);
+}
+
+std::vector<Margin> Model::margins(const State& s, const Instant& inst) const {
+  std::vector<Margin> out;
+  for (const auto& r : requirements_) {
+    Margin m{&r, 0, true};
+    const Quantity* f = inst.find(r.force);
+    const Quantity* n = r.kind == Requirement::cone ? inst.find(r.normal) : nullptr;
+    if (r.kind == Requirement::taut) {
+      m.value = element_tension(elements_[static_cast<std::size_t>(r.element)], s);
+    } else if (!f || (r.kind == Requirement::cone && !n)) {
+      m.determined = false;
+    } else {
+      m.value = r.kind == Requirement::cone ? r.mu * n->value - std::abs(f->value) : f->value;
+      m.determined = f->determined && (!n || n->determined);
+    }
+    out.push_back(m);
+  }
+  return out;
+}
+
+Eigen::VectorXd Model::velocity(const PointRef& p, const State& s) const {
+  std::vector<D1> q(static_cast<std::size_t>(ndof_));
+  for (int i = 0; i < ndof_; ++i) q[static_cast<std::size_t>(i)] = D1(s.q(i), s.v(i));
+  const auto vars = variables(q, Eigen::VectorXd(), D1(s.t, 1.0));
+  const auto r = position(p, q, vars, D1(s.t, 1.0));
+  Eigen::VectorXd v(dims_);
+  for (int i = 0; i < dims_; ++i) v(i) = r[static_cast<std::size_t>(i)].b;
+  return v;
+}
+
+std::optional<double> Model::slip_speed(const std::string& normal, const State& s) const {
+  for (const auto& c : cons_) {
+    if (c.name != normal || c.mu == 0) continue;
+    // the body's material point there (a contact point that keeps the ground's directions,
+    // where a wheel touches, is where the material point now is)
+    PointRef p = c.points[0];
+    if (!p.turns && p.body >= 0 && dims_ == 2 && bodies_[static_cast<std::size_t>(p.body)].r0 >= 0) {
+      p.offset = rotated(p.offset, -s.q(bodies_[static_cast<std::size_t>(p.body)].r0));
+      p.turns = true;
+    }
+    return c.sliding.dot(velocity(p, s));
+  }
+  return std::nullopt;
+}
+
 Model::Kkt Model::system(const State& s, const std::vector<int>* only) const {
   const int n = ndof_;
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
@@ -943,23 +1015,7 @@ Model::Kkt Model::system(const State& s, const std::vector<int>* only) const {
       for (int k = 0; k < b.nr; ++k) f(b.r0 + k) += l.couple[static_cast<std::size_t>(b.nr == 1 ? 0 : k)].eval(vars);
     }
   }
-  for (const auto& e : elements_) {
-    const auto L = length_derivs(e.points, e.winds, s);
-    double tension = 0;
-    if (e.kind == Element::damper) {
-      tension = e.c * (L.grad.dot(s.v) + L.dt);
-    } else {
-      double rest = e.rest;
-      if (e.stretch) {
-        // origin length: every coordinate of tackle's at 0 (angles too: nothing wound)
-        std::vector<D2> q0(static_cast<std::size_t>(ndof_), D2(0.0));
-        for (int i = 0; i < ndof_; ++i) q0[static_cast<std::size_t>(i)] = D2(origin_q_(i));
-        rest = path_length(e.points, q0, D2(s.t)).a.a - e.stretch_value;
-      }
-      tension = e.k * (L.value - rest);
-    }
-    f -= tension * L.grad;
-  }
+  for (const auto& e : elements_) f -= element_tension(e, s) * length_derivs(e.points, e.winds, s).grad;
 
   // Constraints: every rule's; a guide only where the rules leave that motion free.
   std::vector<Derivs> rows;

@@ -57,9 +57,36 @@ struct Quantity {
 
 struct Instant {
   std::vector<Quantity> quantities;
+  /// The quantity of that name, or null.
+  [[nodiscard]] const Quantity* find(const std::string& name) const {
+    for (const auto& q : quantities)
+      if (q.name == name) return &q;
+    return nullptr;
+  }
   int free_directions = 0;  // columns of each Quantity::free
   double residual = 0;  // of the KKT system at its least-squares solution, relative
   int rank_deficiency = 0;
+};
+
+/// What the model's own physics requires of a solution, connection by connection: a string
+/// or a cable pulls (its tension is not negative), a contact, a roller or a wheel pushes (its
+/// normal force is not negative), a sticking contact's or a gripping wheel's friction stays
+/// within its cone (|F| <= mu N), an elastic cord is taut (its length at least its rest
+/// length). Nothing here is read from tackle's rules.
+struct Requirement {
+  enum Kind { pulls, pushes, cone, taut } kind = pulls;
+  std::string force;   // the constraint force (tackle's name for it): T, N_A; cone: the friction F_A
+  std::string normal;  // cone: the normal force N_A
+  double mu = 0;       // cone
+  int element = -1;    // taut: the cord (an element of the model)
+  std::string what;    // in words: "string s pulls"
+};
+
+/// How far a requirement is met at a state: a force (N), not negative when it is met.
+struct Margin {
+  const Requirement* requirement = nullptr;
+  double value = 0;
+  bool determined = true;  // the model determines the forces it is made of
 };
 
 /// A deliberately wrong model (the test that the comparison catches one).
@@ -107,6 +134,13 @@ class Model {
   /// Each strand (of strings, springs, dampers, contacts, in the model's order) from its
   /// first point to its second: the same list for every model of one description.
   [[nodiscard]] std::vector<Eigen::VectorXd> strand_vectors(const State& s) const;
+  /// Its requirements (Requirement) in the description's order, and how far each is met at a
+  /// state whose instant (solve()) is `inst`.
+  [[nodiscard]] const std::vector<Requirement>& requirements() const { return requirements_; }
+  [[nodiscard]] std::vector<Margin> margins(const State& s, const Instant& inst) const;
+  /// A sliding contact's slip speed (its material point's velocity along its sliding
+  /// direction) by its normal force's name (N_A); nothing for another name.
+  [[nodiscard]] std::optional<double> slip_speed(const std::string& normal, const State& s) const;
   /// Whether any expression depends on time.
   [[nodiscard]] bool uses_time() const { return uses_time_; }
   [[nodiscard]] const std::map<std::string, double>& parameters() const { return params_; }
@@ -193,6 +227,9 @@ class Model {
   std::vector<Constraint> cons_;
   std::vector<Element> elements_;
   std::vector<Load> loads_;
+  std::vector<Requirement> requirements_;
+  [[nodiscard]] double element_tension(const Element& e, const State& s) const;
+  [[nodiscard]] Eigen::VectorXd velocity(const PointRef& p, const State& s) const;
   Eigen::VectorXd gravity_;
   Eigen::VectorXd origin_q_;                   // every coordinate of tackle's at 0 (a spring's `stretch`)
   std::map<std::string, double> base_coord_, base_rate_;

@@ -139,7 +139,10 @@ class Tally {
     for (Counts* k : {&total_, &families_[it.v.family], &groups_[s.group]}) count(*k, it, c);
     if (c.kind == Comparison::skipped) ++skip_reasons_[reason_kind(c.why)];
     if (c.kind == Comparison::undecided) ++undecided_reasons_[c.why];
-    if (c.kind == Comparison::disagree) show(s, it, c);
+    if (c.kind == Comparison::disagree) {
+      ++disagree_reasons_[c.why + (it.r && !it.r->findings.empty() ? " (" + it.r->findings.front().code + ")" : "")];
+      show(s, it, c);
+    }
     else if (it.j.tautology && std::getenv("CROSSCHECK_DEBUG"))
       std::cout << fmt::format("TAUTOLOGY  {} [{}] {}\n", s.name, it.v.family, it.v.text);
     else if (it.v.meant && it.j.truth == Truth::fails && std::getenv("CROSSCHECK_DEBUG"))
@@ -153,6 +156,8 @@ class Tally {
     row("all", total_);
     std::cout << fmt::format("\n{:<52} {:>7} {:>9}\n", "source", noun_, "disagree");
     for (const auto& [g, k] : groups_) std::cout << fmt::format("{:<52} {:>7} {:>9}\n", g, k.items, k.disagreements);
+    if (!disagree_reasons_.empty()) std::cout << "\ndisagreements (tackle's finding):\n";
+    for (const auto& [why, n] : disagree_reasons_) std::cout << fmt::format("  {:>6}  {}\n", n, why);
     if (!skip_reasons_.empty()) std::cout << "\nnot decided by the model (skipped):\n";
     for (const auto& [why, n] : skip_reasons_) std::cout << fmt::format("  {:>6}  {}\n", n, why);
     if (!undecided_reasons_.empty()) std::cout << "\ntrue, and left undecided by tackle (allowed, counted):\n";
@@ -168,7 +173,7 @@ class Tally {
   int shown_;
   Counts total_;
   std::map<std::string, Counts> families_, groups_;
-  std::map<std::string, long> skip_reasons_, undecided_reasons_;
+  std::map<std::string, long> skip_reasons_, undecided_reasons_, disagree_reasons_;
   std::map<std::string, int> shown_of_;
 
   static void count(Counts& k, const Item& it, const Comparison& c) {

@@ -5,6 +5,7 @@
 
 #include "check/check.hpp"
 
+#include "equations/equations.hpp"
 #include "expr/print.hpp"
 
 namespace crosscheck {
@@ -186,6 +187,7 @@ Variants::Variants(const tackle::Analysis& a) : table_(a.model.symbols), const_(
     parameters_.push_back(s->sym);
     if (s->dimension && *s->dimension == tackle::Dimension::mass()) masses_.push_back(s->sym);
   }
+  add_other_balances(a.model);
   for (const auto& e : balances_) {
     angles_in(e.lhs, angles_);
     angles_in(e.rhs, angles_);
@@ -211,6 +213,36 @@ bool typeable(const std::string& text) {
       ++i;
   }
   return text.size() <= limits.max_length && 5 * tokens <= 4 * limits.max_tokens;
+}
+
+void Variants::add_other_balances(const tackle::Model& m) {
+  const int n = m.dims();
+  const tackle::Vec axes[] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  std::vector<std::vector<int>> groups;
+  for (int b = 0; b < static_cast<int>(m.bodies.size()); ++b) {
+    groups.push_back({b});
+    if (b > 0) groups.push_back({b - 1, b});  // (a system: its internal forces cancel)
+  }
+  auto add = [&](const tackle::Equation& e) {
+    if (!(e.lhs - e.rhs).expand().is_zero()) others_.push_back({e.lhs, e.rhs});
+  };
+  for (const auto& g : groups)
+    for (int i = 0; i < n; ++i) add(tackle::lmb_along(m, g, g.size() > 1, axes[i], m.axes[static_cast<std::size_t>(i)]));
+  if (n != 2) return;
+  for (int b = 0; b < static_cast<int>(m.bodies.size()); ++b) {
+    if (!m.bodies[static_cast<std::size_t>(b)].has_mass) continue;
+    add(tackle::amb_along(m, {b}, false, m.bodies[static_cast<std::size_t>(b)].cm, "its center", axes[2], "z"));
+    for (const auto& p : m.points)
+      if (fixed_point(p.position)) add(tackle::amb_along(m, {b}, false, p.position, p.name, axes[2], "z"));
+  }
+}
+
+bool Variants::fixed_point(const tackle::Vec& at) const {
+  for (const auto& c : at)
+    for (const_preorder_iterator it = c.preorder_begin(); it != c.preorder_end(); ++it)
+      if (is_a<symbol>(*it))
+        if (const auto* s = table_->find(*it); !s || s->role != tackle::SymbolRole::parameter) return false;
+  return true;
 }
 
 std::optional<Variant> Variants::draw(const std::vector<Family>& families, Rng& rng) {
@@ -372,6 +404,15 @@ std::vector<Variants::Family> Variants::equation_families() const {
       if (out.lhs.is_equal(e->lhs) && out.rhs.is_equal(e->rhs)) return std::nullopt;
       return out;
     });
+  if (!others_.empty()) {
+    add("other-balance", true, [this](Rng& rng) -> std::optional<Eq> {
+      const auto e = one_of(rng, others_);
+      return coin(rng) ? e : Eq{e->lhs - e->rhs, 0};
+    });
+    add("other-balance-sign", false, [this](Rng& rng) {
+      return change_term(*one_of(rng, others_), rng, [](const ex& t) { return std::optional<ex>(-t); });
+    });
+  }
   if (!rates_.empty()) add("rate", true, [this](Rng& rng) { return one_of(rng, rates_); });
   if (!positions_.empty()) add("length-sum", true, [this](Rng& rng) { return length_sum(rng, false); });
   // meant to be false

@@ -70,6 +70,12 @@ class Variants {
 
   std::shared_ptr<const tackle::SymbolTable> table_;
   std::vector<Eq> balances_, rates_, positions_;
+  // Balances the derivation need not print (its `derive:` chooses): each body's and some
+  // systems' LMB along each axis, a 2-D body's AMB about its center and about fixed points
+  // (tackle's lmb_along and amb_along, raw material like the rest).
+  std::vector<Eq> others_;
+  void add_other_balances(const tackle::Model& m);
+  [[nodiscard]] bool fixed_point(const tackle::Vec& at) const;  // a point no state moves
   std::vector<std::optional<tackle::Dimension>> balance_dimensions_;
   std::vector<std::pair<GiNaC::ex, GiNaC::ex>> closed_;  // unknown -> closed form
   std::vector<std::string> closed_names_;

@@ -16,16 +16,8 @@ namespace {
 constexpr double holds_below = 1e-8;
 constexpr double fails_above = 1e-5;
 
-bool is_quantity(const World& w, const std::string& name) {
-  return std::any_of(w.instant.quantities.begin(), w.instant.quantities.end(),
-                     [&](const Quantity& q) { return q.name == name; });
-}
-
-const Quantity* quantity(const World& w, const std::string& name) {
-  for (const auto& q : w.instant.quantities)
-    if (q.name == name) return &q;
-  return nullptr;
-}
+bool is_quantity(const World& w, const std::string& name) { return w.instant.find(name) != nullptr; }
+const Quantity* quantity(const World& w, const std::string& name) { return w.instant.find(name); }
 
 // The states of one draw: the layout (its massless bodies settled), then random ones near it.
 std::vector<State> states_of(const Model& m, std::mt19937_64& rng, int count) {
@@ -42,22 +34,8 @@ std::vector<State> states_of(const Model& m, std::mt19937_64& rng, int count) {
 // Each definition evaluated with the world's values (a name it uses that the world lacks
 // leaves it out).
 void define(World& w, const Definitions& definitions) {
-  for (const auto& [name, text] : definitions) {
-    std::vector<std::string> names;
-    std::vector<double> vars;
-    bool known = true;
-    try {
-      const Expr e = Expr::compile(text, [&](const std::string& n) {
-        if (n == "pi" && !w.values.count(n)) return -1;
-        auto it = w.values.find(n);
-        if (it == w.values.end()) known = false;
-        vars.push_back(it == w.values.end() ? 0.0 : it->second);
-        return static_cast<int>(vars.size()) - 1;
-      });
-      if (known) w.values[name] = e.eval(vars);
-    } catch (const std::runtime_error&) {
-    }
-  }
+  for (const auto& [name, text] : definitions)
+    if (const auto v = evaluate_text(text, w.values)) w.values[name] = *v;
 }
 
 World world_at(const Model& m, const State& s, int draw) {
