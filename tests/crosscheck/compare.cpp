@@ -220,6 +220,7 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
       out.motion_points = mo.motion_points;
       out.motion_error = mo.motion_error;
       out.motion_note = mo.motion_note;
+      out.motion_event = mo.motion_event;
       for (const auto& x : mo.disagreements) out.disagreements.push_back(x);
       if (!mo.disagreements.empty()) out.kind = Outcome::Kind::disagree;
     }

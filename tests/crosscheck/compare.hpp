@@ -29,6 +29,7 @@ struct Outcome {
   int motion_points = 0;
   double motion_error = 0;
   std::string motion_note;        // why the motion was not compared, when it was not
+  std::string motion_event;       // the first event of the motion, the model's and tackle's alike
   std::set<std::string> not_compared;  // claims of tackle's the model cannot judge (claims.hpp)
 };
 

@@ -124,6 +124,7 @@ int main(int argc, char** argv) {
                                    out.not_determined ? fmt::format(", {} left free by the model", out.not_determined) : "",
                                    out.motion_points ? fmt::format(", motion: {} points, max error {:.2g}", out.motion_points, out.motion_error) : "");
           if (!out.motion_note.empty()) std::cout << "          motion: " << out.motion_note << "\n";
+          if (!out.motion_event.empty()) std::cout << "          the motion's first event: " << out.motion_event << "\n";
           for (const auto& note : out.not_compared) std::cout << "          not compared: " << note << "\n";
           break;
         case crosscheck::Outcome::Kind::skipped:

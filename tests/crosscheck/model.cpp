@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "core/units.hpp"  // input reading only: each unit's factor to SI
@@ -988,6 +989,17 @@ std::optional<double> Model::slip_speed(const std::string& normal, const State& 
     return c.sliding.dot(velocity(p, s));
   }
   return std::nullopt;
+}
+
+std::vector<std::pair<std::string, double>> Model::watched(const State& s) const {
+  State p = s;
+  project(p, false);
+  std::vector<std::pair<std::string, double>> out;
+  for (const auto& mg : margins(p, solve(p)))
+    out.emplace_back(mg.requirement->what, mg.determined ? mg.value : std::numeric_limits<double>::quiet_NaN());
+  for (const auto& c : cons_)
+    if (c.mu != 0) out.emplace_back("the slip at " + c.name.substr(2) + " (its friction turns)", *slip_speed(c.name, p));
+  return out;
 }
 
 Model::Kkt Model::system(const State& s, const std::vector<int>* only) const {

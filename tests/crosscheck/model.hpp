@@ -141,6 +141,10 @@ class Model {
   /// A sliding contact's slip speed (its material point's velocity along its sliding
   /// direction) by its normal force's name (N_A); nothing for another name.
   [[nodiscard]] std::optional<double> slip_speed(const std::string& normal, const State& s) const;
+  /// What a motion watches, at a state (projected onto the constraints first): each
+  /// requirement's margin (NaN where not determined), then each sliding contact's slip speed.
+  /// A margin that turns negative, or a slip that turns, ends the motion the model describes.
+  [[nodiscard]] std::vector<std::pair<std::string, double>> watched(const State& s) const;
   /// Whether any expression depends on time.
   [[nodiscard]] bool uses_time() const { return uses_time_; }
   [[nodiscard]] const std::map<std::string, double>& parameters() const { return params_; }
