@@ -285,12 +285,14 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
   // Points: a body is a point (its center); a point on a body at its offset; a fixed point.
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     PointRef p;
+    p.name = bodies_[i].name;
     p.body = static_cast<int>(i);
     p.offset = Eigen::VectorXd::Zero(n);
     points_[bodies_[i].name] = p;
   }
   for (const auto& pd : d.points) {
     PointRef p;
+    p.name = pd.name.text;
     if (pd.on) {
       auto it = body_index.find(pd.on->text);
       if (it == body_index.end()) throw Unsupported("point on an unknown body");
@@ -382,6 +384,13 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     c.dir = Eigen::VectorXd::Constant(1, axis);
     cons_.push_back(c);
   };
+  // What a connection adds is labelled after it ("sliding at A": its type, then its name or
+  // the point it acts at), for the diagrams.
+  auto label_made = [&](const std::string& label, std::size_t cons_from, std::size_t elements_from, std::size_t loads_from) {
+    for (std::size_t k = cons_from; k < cons_.size(); ++k) cons_[k].label = label;
+    for (std::size_t k = elements_from; k < elements_.size(); ++k) elements_[k].label = label;
+    for (std::size_t k = loads_from; k < loads_.size(); ++k) loads_[k].label = label;
+  };
   // A contact that grips: it pushes, and its friction stays within mu N (mu when given).
   auto grips = [&](const std::string& at, const tackle::ConnectionDesc& c, const std::string& what) {
     requirements_.push_back({Requirement::pushes, "N_" + at, "", 0, -1, what + " pushes"});
@@ -391,6 +400,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
   for (const auto& c : d.connections) {
     const std::string& type = c.type.text;
     const std::string cname = c.name ? c.name->text : "";
+    // (what this connection adds is labelled after it, for diagrams: see the loop's end)
+    const std::size_t cons_before = cons_.size(), elements_before = elements_.size(), loads_before = loads_.size();
     if (type == "force") {
       Load l;
       l.body = body_of(c, "on");
@@ -487,6 +498,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       const std::string at = need_text(c, "at");
       const Eigen::VectorXd arm = layout_position(point(at, b)) - bb.cm0;  // C - cm, the ground's directions
       PointRef contact;  // the geometric contact point, the center's plus C - cm
+      contact.name = at;
       contact.body = b;
       contact.offset = arm;
       contact.turns = false;
@@ -568,6 +580,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
                                                                              "on a body whose acceleration is not given"
                                                                            : "not in the model") + ")");
     }
+    label_made(type + (cname.empty() ? "" : " " + cname), cons_before, elements_before, loads_before);
   }
 
   // Guides: what tackle's bodies do without a connection saying so. A body with a
@@ -699,6 +712,7 @@ Model::PointRef Model::material(const std::string& name, int body) const {
   const Eigen::VectorXd p0 = layout_position(p);
   const Body& b = bodies_[static_cast<std::size_t>(body)];
   PointRef m;
+  m.name = name;
   m.body = body;
   m.offset = rotated(p0 - b.cm0, -b.angle0);
   return m;
@@ -945,6 +959,29 @@ double Model::element_tension(const Element& e, const State& s) const {
     rest = path_length(e.points, q0, D2(s.t)).a.a - e.stretch_value;
   }
   return e.k * (L.value - rest);
+}
+
+Eigen::VectorXd Model::point_position(const PointRef& p, const State& s) const {
+  const std::vector<double> q(s.q.data(), s.q.data() + s.q.size());
+  const auto r = position(p, q, variables(q, s.v, s.t), s.t);
+  return Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size()));
+}
+
+std::vector<double> Model::numbers_at(const State& s) const {
+  const std::vector<double> q(s.q.data(), s.q.data() + s.q.size());
+  return variables(q, s.v, s.t);
+}
+
+std::optional<Eigen::VectorXd> Model::named_position(const std::string& name, const State& s) const {
+  auto it = points_.find(name);
+  if (it == points_.end()) return std::nullopt;
+  return point_position(it->second, s);
+}
+
+std::vector<std::string> Model::body_names() const {
+  std::vector<std::string> out;
+  for (const auto& b : bodies_) out.push_back(b.name);
+  return out;
 }
 
 std::vector<Margin> Model::margins(const State& s, const Instant& inst) const {

@@ -89,6 +89,22 @@ struct Margin {
   bool determined = true;  // the model determines the forces it is made of
 };
 
+/// A force on a body as the model has it at a state, for free body diagrams: where it acts (a
+/// point's name, or the body's for its center), along which line, and whether its sense is
+/// known before solving (gravity, a given force, a string that pulls, a contact that pushes, a
+/// spring's pull or push at the state) or not (a reaction of either sign). A force of unknown
+/// direction (a pin's, a joint's: two or three reactions of either sign at one point) has the
+/// lines its direction spans. A 2-D couple has no line and its sense in `turn` (0: unknown).
+struct BodyForce {
+  std::string what;                    // "string s", "gravity", "roller at A", "spring k_s"
+  std::string at;
+  std::vector<Eigen::VectorXd> lines;  // unit; the first is the force's own direction when `sense`
+  bool sense = true;
+  bool zero = false;                   // nothing at this state (a spring at its rest length)
+  bool couple = false;
+  int turn = 0;
+};
+
 /// A deliberately wrong model (the test that the comparison catches one).
 struct Perturbation {
   double masses = 0;     // every mass times 1 + masses
@@ -145,6 +161,12 @@ class Model {
   /// requirement's margin (NaN where not determined), then each sliding contact's slip speed.
   /// A margin that turns negative, or a slip that turns, ends the motion the model describes.
   [[nodiscard]] std::vector<std::pair<std::string, double>> watched(const State& s) const;
+  /// The forces on a body at a state (throws Unsupported for what a sketch cannot show: a
+  /// damper's force or a load that depends on the speed, a couple in space).
+  [[nodiscard]] std::vector<BodyForce> forces_on(const std::string& body, const State& s) const;
+  /// A named point's (or a body's center's) position at a state; nothing for another name.
+  [[nodiscard]] std::optional<Eigen::VectorXd> named_position(const std::string& name, const State& s) const;
+  [[nodiscard]] std::vector<std::string> body_names() const;
   /// Whether any expression depends on time.
   [[nodiscard]] bool uses_time() const { return uses_time_; }
   [[nodiscard]] const std::map<std::string, double>& parameters() const { return params_; }
@@ -174,6 +196,7 @@ class Model {
     std::vector<Expr> cm_expr;       // turning: the center in tackle's coordinates (its angle, others')
   };
   struct PointRef {
+    std::string name;                // the description's point (or body, for its center); "" for one made here
     int body = -1;                   // -1: the ground
     Eigen::VectorXd offset;          // from the body's center, in the body's frame (material point)
     bool turns = true;               // false: the offset keeps the ground's directions (a point where a
@@ -201,6 +224,7 @@ class Model {
       double sign = 1;               // -1 only in a deliberately wrong model
     };
     std::vector<Winding> winds;      // path
+    std::string label;               // the connection's type and name ("string s"), for diagrams
   };
   struct Element {                   // a spring, elastic cord or damper on a path
     enum Kind { spring, damper } kind = spring;
@@ -209,12 +233,14 @@ class Model {
     double k = 0, rest = 0, c = 0;
     bool stretch = false;            // rest = origin length - stretch
     double stretch_value = 0;
+    std::string label;
   };
   struct Load {
     int body = -1;
     PointRef at;
     std::vector<Expr> force;         // one per axis; may use coordinates, rates, t
     std::vector<Expr> couple;        // 2-D: one, 3-D: three
+    std::string label;
   };
 
  private:
@@ -233,6 +259,20 @@ class Model {
   std::vector<Load> loads_;
   std::vector<Requirement> requirements_;
   [[nodiscard]] double element_tension(const Element& e, const State& s) const;
+  [[nodiscard]] Eigen::VectorXd point_position(const PointRef& p, const State& s) const;
+  [[nodiscard]] std::vector<double> numbers_at(const State& s) const;  // every slot's value
+  // forces.cpp: the parts of forces_on
+  struct ForcePart {
+    std::string what, group;  // parts of one group of unknown sense make one force of unknown direction
+    std::string at;
+    Eigen::VectorXd direction;
+    bool sense = false, zero = false;
+  };
+  void strand_parts(int body, const std::vector<PointRef>& pts, double sign, const std::string& what, bool sense,
+                    const State& s, std::vector<ForcePart>& out) const;
+  void constraint_parts(int body, const Constraint& c, const State& s, std::vector<ForcePart>& out, std::vector<BodyForce>& couples) const;
+  void load_forces(int body, const State& s, std::vector<BodyForce>& out) const;
+  [[nodiscard]] bool sense_known(const std::string& force) const;
   [[nodiscard]] Eigen::VectorXd velocity(const PointRef& p, const State& s) const;
   Eigen::VectorXd gravity_;
   Eigen::VectorXd origin_q_;                   // every coordinate of tackle's at 0 (a spring's `stretch`)

@@ -145,8 +145,8 @@ class Tally {
     }
     else if (it.j.tautology && std::getenv("CROSSCHECK_DEBUG"))
       std::cout << fmt::format("TAUTOLOGY  {} [{}] {}\n", s.name, it.v.family, it.v.text);
-    else if (it.v.meant && it.j.truth == Truth::fails && std::getenv("CROSSCHECK_DEBUG"))
-      std::cout << fmt::format("MEANT TRUE, FALSE  {} [{}] {}\n          {}\n", s.name, it.v.family, it.j.why, it.v.text);
+    else if (it.v.meant != (it.j.truth == Truth::holds) && it.j.truth != Truth::unknown && std::getenv("CROSSCHECK_DEBUG"))
+      std::cout << fmt::format("NOT AS MEANT  {} [{}] {}\n          {}\n", s.name, it.v.family, it.j.why, it.v.text);
   }
 
   long print(long written) const {
@@ -200,7 +200,10 @@ class Tally {
     if (shown_ > 0 && n++ >= shown_) return;
     std::cout << fmt::format("DISAGREE  {} [{}] {}{}\n", s.name, it.v.family, c.why,
                              it.r && !it.r->summary.empty() ? ": " + it.r->summary : "");
-    std::cout << fmt::format("          {}{}\n", it.v.unknown.empty() ? "" : it.v.unknown + " = ", it.v.text);
+    std::string text = it.v.text;  // (a diagram's YAML: each line indented)
+    for (std::size_t at = text.find('\n'); at != std::string::npos && at + 1 < text.size(); at = text.find('\n', at + 1))
+      text.insert(at + 1, "          ");
+    std::cout << fmt::format("          {}{}\n", it.v.unknown.empty() ? "" : it.v.unknown + " = ", text);
     if (it.j.truth == Truth::fails) std::cout << fmt::format("          (model: {})\n", it.j.why);
   }
 };
@@ -220,8 +223,8 @@ ItemKind item_kind(OracleOptions::Kind k) {
               [](const Source&, const Variant& v, const std::vector<World>& w) { return judge_answer(v.unknown, v.text, w); },
               [](const Source& s, const Variant& v) { return s.checker->check(v.unknown, v.text); }};
     case OracleOptions::Kind::fbds:
-      return {"diagrams", [](const Source& s, Rng& rng) { return make_diagram(s.d, *s.analysis, rng); },
-              [](const Source& s, const Variant& v, const std::vector<World>&) { return judge_diagram(s.d, v.text); },
+      return {"diagrams", [](const Source& s, Rng& rng) { return make_diagram(s.d, rng); },
+              [](const Source&, const Variant& v, const std::vector<World>&) { return judge_diagram(*v.diagram); },
               [](const Source& s, const Variant& v) { return check_diagram(*s.analysis, v.text); }};
     case OracleOptions::Kind::equations:
     default:

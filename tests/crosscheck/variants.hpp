@@ -7,6 +7,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <random>
 #include <string>
@@ -18,11 +19,14 @@
 
 namespace crosscheck {
 
+struct Diagram;  // diagram.hpp
+
 struct Variant {
-  std::string text;     // the equation ("lhs = rhs") or the answer
+  std::string text;     // the equation ("lhs = rhs"), the answer, or the diagram (YAML)
   std::string family;   // how it was made ("trig-tan", "sign", ...)
   bool meant = true;    // made to be true
   std::string unknown;  // an answer: the unknown it answers
+  std::shared_ptr<const Diagram> diagram;  // a diagram: its arrows and the model's forces
 };
 
 class Variants {
