@@ -171,19 +171,27 @@ bool fits(const Arrow& a, const BodyForce& f, const Diagram& g) {
   return c >= cos_tol || (!(f.sense && !f.zero) && -c >= cos_tol);
 }
 
-// A matching of arrows to forces (augmenting paths): arrow i's force in `of[i]`.
-bool augment(std::size_t i, const std::vector<std::vector<bool>>& fit, std::vector<int>& force_of, std::vector<int>& arrow_of,
-             std::vector<bool>& seen) {
-  for (std::size_t j = 0; j < fit[i].size(); ++j) {
-    if (!fit[i][j] || seen[j]) continue;
-    seen[j] = true;
-    if (arrow_of[j] < 0 || augment(static_cast<std::size_t>(arrow_of[j]), fit, force_of, arrow_of, seen)) {
-      force_of[i] = static_cast<int>(j);
-      arrow_of[j] = static_cast<int>(i);
-      return true;
+// Which rows a matching in `fit` (augmenting paths) leaves without a column; rows with
+// `needed` false are not matched at all.
+std::vector<std::size_t> unmatched_rows(const std::vector<std::vector<bool>>& fit, std::size_t columns, const std::vector<bool>& needed) {
+  std::vector<int> row_of(columns, -1);
+  const std::function<bool(std::size_t, std::vector<bool>&)> augment = [&](std::size_t i, std::vector<bool>& seen) {
+    for (std::size_t j = 0; j < columns; ++j) {
+      if (!fit[i][j] || seen[j]) continue;
+      seen[j] = true;
+      if (row_of[j] < 0 || augment(static_cast<std::size_t>(row_of[j]), seen)) {
+        row_of[j] = static_cast<int>(i);
+        return true;
+      }
     }
+    return false;
+  };
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < fit.size(); ++i) {
+    std::vector<bool> seen(columns, false);
+    if (needed[i] && !augment(i, seen)) out.push_back(i);
   }
-  return false;
+  return out;
 }
 
 }  // namespace
@@ -211,21 +219,21 @@ std::optional<Variant> make_diagram(const tackle::Description& d, Rng& rng) {
 }
 
 Judgement judge_diagram(const Diagram& g) {
+  // Right when one matching of arrows to forces takes in every arrow and every force that is
+  // not zero (a zero force may be drawn or not). Such a matching exists exactly when one takes
+  // in every arrow and one every such force (Mendelsohn-Dulmage): each is found alone.
   const std::size_t na = g.arrows.size(), nf = g.forces.size();
-  std::vector<std::vector<bool>> fit(na, std::vector<bool>(nf, false));
+  std::vector<std::vector<bool>> by_arrow(na, std::vector<bool>(nf, false)), by_force(nf, std::vector<bool>(na, false));
   for (std::size_t i = 0; i < na; ++i)
-    for (std::size_t j = 0; j < nf; ++j) fit[i][j] = fits(g.arrows[i], g.forces[j], g);
-  std::vector<int> force_of(na, -1), arrow_of(nf, -1);
-  for (std::size_t i = 0; i < na; ++i) {
-    std::vector<bool> seen(nf, false);
-    augment(i, fit, force_of, arrow_of, seen);
-  }
+    for (std::size_t j = 0; j < nf; ++j) by_arrow[i][j] = by_force[j][i] = fits(g.arrows[i], g.forces[j], g);
+  std::vector<bool> drawn(nf);
+  for (std::size_t j = 0; j < nf; ++j) drawn[j] = !g.forces[j].zero;
   Judgement j;
   j.truth = Truth::holds;
-  for (std::size_t i = 0; i < na && j.truth == Truth::holds; ++i)
-    if (force_of[i] < 0) j = {Truth::fails, "arrow " + g.arrows[i].name + " is no force on " + g.body, 1};
-  for (std::size_t k = 0; k < nf && j.truth == Truth::holds; ++k)
-    if (arrow_of[k] < 0 && !g.forces[k].zero) j = {Truth::fails, "the force of " + g.forces[k].what + " at " + g.forces[k].at + " is not drawn", 1};
+  if (const auto extra = unmatched_rows(by_arrow, nf, std::vector<bool>(na, true)); !extra.empty())
+    j = {Truth::fails, "arrow " + g.arrows[extra.front()].name + " is no force on " + g.body, 1};
+  else if (const auto missing = unmatched_rows(by_force, na, drawn); !missing.empty())
+    j = {Truth::fails, "the force of " + g.forces[missing.front()].what + " at " + g.forces[missing.front()].at + " is not drawn", 1};
   return j;
 }
 
