@@ -12,7 +12,24 @@
 // dual numbers; G the generalized directions of the constraint forces, J^T for ideal ones).
 // It reads the description (tackle's plain Description structs) and takes the SI factor of
 // each parameter's unit from tackle's unit table (src/core/units: input reading); nothing of
-// tackle's model, equations, solver, energy or motion is used.
+// tackle's model, equations, solver, energy or motion is used. Its requirements (strings pull,
+// contacts push, grips stay within mu N, cords stay taut) and its forces on a body
+// (forces.cpp) are its own, not read from tackle's rules.
+//
+// What the rest of the cross-check takes from tackle, beyond what it checks:
+// - compare.cpp, claims.cpp, motion.cpp: tackle's answers (closed forms, the asked quantities,
+//   the conditions with `holds` and `always`, the slip speeds, simulate) are what is compared;
+//   tackle's definitions of the names it makes (defined parameters, turning strands' lengths,
+//   a length sum's constant as its quantity) are put in before they are evaluated.
+// - the oracle of verdicts (oracle.cpp, variants.cpp, worlds.cpp, diagram.cpp): the students'
+//   items are made from tackle's equations (the derivation's, its rate and position equations,
+//   lmb_along and amb_along for other bodies and systems), closed forms and symbol table
+//   (which symbols are parameters and masses, their dimensions: to write equations of one
+//   dimension), printed with tackle's to_text and kept within tackle's documented input bounds
+//   (answer_limits); a diagram names the description's points and bodies. Their truth comes
+//   from this model alone (worlds.cpp: the text read by expr.hpp's parser, evaluated at the
+//   model's states), except the turning strands' lengths, which tackle names and defines and
+//   the oracle evaluates from tackle's definition, as text.
 #pragma once
 
 #include <algorithm>
