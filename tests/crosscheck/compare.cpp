@@ -77,6 +77,7 @@ std::string describe_state(const std::map<std::string, double>& vals, const tack
 }  // namespace
 
 Outcome compare_motion(const tackle::Analysis& a, const Model& m, const tackle::Description& d, const Options& o);
+Outcome compare_phases(const tackle::Description& d, const tackle::Analysis& a);  // phases.cpp
 
 Outcome compare(const std::string& text, const std::string& file, const tackle::RuleSet& rules, const Options& o) {
   Outcome out;
@@ -87,6 +88,16 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
     out.kind = Outcome::Kind::tackle_refused;
     out.reason = std::string("the description does not read: ") + e.what();
     return out;
+  }
+  if (!d.phases.empty() || d.impact || d.interval) {
+    // (impacts, intervals and phases: what the model follows of them)
+    try {
+      return compare_phases(d, *tackle::analyze_text(text, file, rules));
+    } catch (const std::exception& e) {
+      out.kind = Outcome::Kind::tackle_refused;
+      out.reason = e.what();
+      return out;
+    }
   }
   std::mt19937_64 rng(o.seed);
   std::optional<Model> model;
