@@ -168,6 +168,22 @@ Expr Expr::constant(double v) {
 
 bool Expr::uses(int slot) const { return uses_slot(root_.get(), slot); }
 
+std::vector<Expr> Expr::divisors() const {
+  std::vector<Expr> out;
+  const std::function<void(const std::shared_ptr<const Node>&)> walk = [&](const std::shared_ptr<const Node>& n) {
+    if (!n) return;
+    if (n->kind == Node::div || (n->kind == Node::ipow && n->exponent < 0)) {
+      Expr d;
+      d.root_ = n->kind == Node::div ? n->r : n->l;
+      out.push_back(d);
+    }
+    walk(n->l);
+    walk(n->r);
+  };
+  walk(root_);
+  return out;
+}
+
 double Expr::magnitude(const std::vector<double>& vars) const {
   const std::function<double(const Node*)> size = [&](const Node* n) -> double {
     switch (n->kind) {

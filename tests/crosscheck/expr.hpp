@@ -75,6 +75,8 @@ class Expr {
   /// (|a| + |b|, so that a sum that cancels keeps the size of what cancelled), products and
   /// quotients multiply and divide them, anything else is its value's size.
   [[nodiscard]] double magnitude(const std::vector<double>& vars) const;
+  /// Every expression it divides by (a quotient's denominator, the base of a negative power).
+  [[nodiscard]] std::vector<Expr> divisors() const;
 
   struct Node {
     enum Kind { num, var, neg, add, sub, mul, div, pow, ipow, fsqrt, fabs, fsin, fcos, ftan, fexp, flog } kind;

@@ -162,7 +162,7 @@ Eq moved(const Eq& e, Rng& rng) {
   }
 }
 
-Variant made(const std::optional<Eq>& e, const std::string& family, bool meant) { return {text(*e), family, meant, ""}; }
+Variant made(const std::optional<Eq>& e, const std::string& family, bool meant) { return {text(*e), family, meant, "", nullptr}; }
 
 }  // namespace
 
@@ -347,7 +347,10 @@ std::optional<Eq> Variants::length_sum(Rng& rng, bool wrong) const {
   } else if (coin(rng)) {
     e = scaled(*e, some_factor(rng), true);
   }
-  if (coin(rng)) e->rhs = e->rhs.subs(const_ == numeric(static_cast<int>(pick(rng, 9)) + 1));
+  // (a number for the constant, as checking.md allows, where the sum is in coordinates alone)
+  bool parameters = false;
+  for (const auto& p : parameters_) parameters = parameters || e->lhs.has(p);
+  if (!parameters && coin(rng)) e->rhs = e->rhs.subs(const_ == numeric(static_cast<int>(pick(rng, 9)) + 1));
   return e;
 }
 
@@ -449,7 +452,7 @@ std::optional<Variant> Variants::answer_of(Rng& rng, const std::function<std::op
   if (!c) return std::nullopt;
   const auto a = change(c->second, rng);
   if (!a) return std::nullopt;
-  return Variant{tackle::to_text(*a), "", true, closed_names_[c->first]};
+  return Variant{tackle::to_text(*a), "", true, closed_names_[c->first], nullptr};
 }
 
 std::vector<Variants::Family> Variants::answer_families() const {

@@ -153,9 +153,25 @@ double noise_floor(const Compiled& c, const World& w, std::vector<double> vars, 
   return floor;
 }
 
+// Whether the text divides by something that is 0 at this state, as far as the model's numbers
+// tell (`(H_z x_A - H_z x_B)/H_z` with H_z = 0: not defined there).
+bool divides_by_zero(const Compiled& c, const World& w, const std::vector<double>& vars) {
+  for (const Expr* side : {&c.lhs, &c.rhs})
+    for (const Expr& d : side->divisors()) {
+      const Compiled part{d, Expr::constant(0), c.names};
+      const double v = d.eval(vars);
+      if (std::abs(v) <= 100 * noise_floor(part, w, vars, v) + 1e-300) return true;
+    }
+  return false;
+}
+
 std::optional<Residual> residual_at(const Compiled& c, const World& w, const Eigen::VectorXd* shift, std::string& why) {
   const auto vars = variables(c, w, shift, why);
   if (!vars) return std::nullopt;
+  if (divides_by_zero(c, w, *vars)) {
+    why = "it divides by a quantity that is 0 at a state of the model";
+    return std::nullopt;
+  }
   Residual r{c.lhs.eval(*vars) - c.rhs.eval(*vars), c.lhs.magnitude(*vars) + c.rhs.magnitude(*vars), 0};
   if (!std::isfinite(r.value) || !std::isfinite(r.size)) {
     why = "not a real number at a state of the model";
@@ -191,11 +207,13 @@ bool number_side(const Compiled& c, const Expr& side) {
 }
 
 // A length sum kept constant: coordinates and parameters, no force, rate or acceleration, and
-// a constant that is `const` or one side that is a number (docs/checking.md: the constant
-// depends on where positions are measured from). A parameter is no such constant: `b = x_A -
-// x_B` says what b is.
+// a constant that is `const`, or, in coordinates alone, one side that is a number
+// (docs/checking.md: the constant depends on where positions are measured from). A parameter
+// is no such constant (`b = x_A - x_B` says what b is), nor is a number where the sum has a
+// parameter in it (`k_1 x - (k_1 + k_2) x_S + k_2 l_2 = 0`, a massless joint's balance with a
+// term left out, is off by a force).
 bool length_sum(const Compiled& c, const World& w) {
-  bool coordinate = false, named = false;
+  bool coordinate = false, named = false, parameter = false;
   for (const auto& n : c.names) {
     if (n == "const") {
       named = true;
@@ -203,9 +221,11 @@ bool length_sum(const Compiled& c, const World& w) {
     }
     if (is_quantity(w, n) || n.rfind("dot(", 0) == 0 || n.rfind("ddot(", 0) == 0) return false;
     coordinate = coordinate || (w.values.count("dot(" + n + ")") > 0);
+    parameter = parameter || std::find(w.parameters.begin(), w.parameters.end(), n) != w.parameters.end();
   }
-  return coordinate && (named || number_side(c, c.lhs) || number_side(c, c.rhs));
+  return coordinate && (named || (!parameter && (number_side(c, c.lhs) || number_side(c, c.rhs))));
 }
+
 
 std::string state_text(const World& w) {
   std::string out = fmt::format("draw {}", w.draw);
