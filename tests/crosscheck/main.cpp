@@ -10,11 +10,13 @@
 //   tackle_crosscheck files FILE...             description files (the regressions); a file
 //                                               named expected-disagreement-* must disagree
 //   tackle_crosscheck print SEED                the mechanism SEED generates, as YAML
-//   tackle_crosscheck equations|answers|fbds N [SEED] [--examples DIR] [--all]
+//   tackle_crosscheck equations|answers|fbds N [SEED] [--examples DIR] [--all] [--perturb-silent]
 //                                               the oracle of verdicts (oracle.hpp): N students'
 //                                               equations, answers or free body diagrams over
 //                                               DIR's examples and generated mechanisms, each
 //                                               decided by the model and checked by tackle
+//                                               (--perturb-silent: tackle's verdicts left empty,
+//                                               so that every item must disagree)
 //   tackle_crosscheck explain FILE EQUATION [UNKNOWN]
 //                                               one equation (an answer for UNKNOWN): the
 //                                               model's values, its truth, tackle's verdict
@@ -53,7 +55,7 @@ void print_disagreements(const crosscheck::Outcome& o, std::size_t limit = 4) {
 
 int usage() {
   std::cerr << "usage: tackle_crosscheck examples DIR [PERTURB] | generated N [SEED] [--motion-every K] [--quiet] [PERTURB] | files FILE... | print SEED\n"
-               "       | equations|answers|fbds N [SEED] [--examples DIR] [--all] | explain FILE EQUATION [UNKNOWN]\n"
+               "       | equations|answers|fbds N [SEED] [--examples DIR] [--all] [--perturb-silent] | explain FILE EQUATION [UNKNOWN]\n"
                "  PERTURB: --perturb-masses X | --perturb-inertia X | --perturb-winding | --perturb-drop-answer | --perturb-invert-condition\n";
   return 2;
 }
@@ -89,6 +91,7 @@ int main(int argc, char** argv) {
       const std::string a = argv[i];
       if (a == "--examples" && i + 1 < argc) o.examples = argv[++i];
       else if (a == "--all") o.shown = 0;
+      else if (a == "--perturb-silent") o.silent = true;
       else o.seed = std::stoull(a);
     }
     const long disagreements = crosscheck::run_oracle(o, rules);

@@ -18,6 +18,7 @@ struct OracleOptions {
   std::string examples;     // the directory of the examples
   int per_visit = 10;       // items made from one source at one draw of its worlds
   int shown = 3;            // disagreements printed per source and family (0: all)
+  bool silent = false;      // a tackle that says nothing (an empty verdict): every item must disagree
 };
 
 /// Runs the oracle; prints every disagreement (up to `shown` of a kind), the tallies and
