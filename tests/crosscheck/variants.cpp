@@ -437,7 +437,19 @@ std::vector<Variants::Family> Variants::equation_families() const {
       const auto e = one_of(rng, rates_);
       return change_term(*e, rng, [](const ex& t) { return std::optional<ex>(-t); });
     });
-  if (!positions_.empty()) add("length-sum-wrong", false, [this](Rng& rng) { return length_sum(rng, true); });
+  if (!positions_.empty()) {
+    add("length-sum-wrong", false, [this](Rng& rng) { return length_sum(rng, true); });
+    // a parameter of the problem for the constant: it says what the sum is (`x_A - x_B = b`)
+    add("length-sum-parameter", false, [this](Rng& rng) -> std::optional<Eq> {
+      std::vector<ex> lengths;
+      for (const auto& p : parameters_)
+        if (dimension(p) == tackle::Dimension::length()) lengths.push_back(p);
+      const auto e = one_of(rng, positions_);
+      const auto b = one_of(rng, lengths);
+      if (!e || !b) return std::nullopt;
+      return Eq{e->lhs, *b};
+    });
+  }
   return f;
 }
 
