@@ -33,8 +33,21 @@ numeric some_factor(Rng& rng) {
   return *one_of(rng, factors);
 }
 
+// GiNaC keeps a sum's terms in an order that changes from run to run (its hashes take the
+// address its libraries are loaded at): every choice here is made among things put in the
+// order of their text, so that a seed makes the same items.
+std::vector<ex> by_text(std::vector<ex> v) {
+  std::stable_sort(v.begin(), v.end(), [](const ex& a, const ex& b) { return tackle::to_text(a) < tackle::to_text(b); });
+  v.erase(std::unique(v.begin(), v.end(), [](const ex& a, const ex& b) { return a.is_equal(b); }), v.end());
+  return v;
+}
+
 std::vector<ex> terms(const ex& side) {
-  if (is_a<add>(side)) return {side.begin(), side.end()};
+  if (is_a<add>(side)) {
+    std::vector<ex> t(side.begin(), side.end());
+    std::stable_sort(t.begin(), t.end(), [](const ex& a, const ex& b) { return tackle::to_text(a) < tackle::to_text(b); });
+    return t;
+  }
   if (side.is_zero()) return {};
   return {side};
 }
@@ -51,33 +64,23 @@ bool is_sin(const ex& e) { return is_ex_the_function(e, sin); }
 bool is_cos(const ex& e) { return is_ex_the_function(e, cos); }
 bool is_trig(const ex& e) { return is_sin(e) || is_cos(e) || is_ex_the_function(e, tan); }
 
-int count(const ex& e, const Match& m) {
-  int n = 0;
-  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
-    if (m(*it)) ++n;
-  return n;
+// The distinct subexpressions of `e` that match.
+std::vector<ex> matches(const Eq& e, const Match& m) {
+  std::vector<ex> out;
+  for (const ex* side : {&e.lhs, &e.rhs})
+    for (const_preorder_iterator it = side->preorder_begin(); it != side->preorder_end(); ++it)
+      if (m(*it)) out.push_back(*it);
+  return by_text(out);
 }
 
-// `e` with its n-th match (in preorder) changed.
-struct NthChange : map_function {
-  const Match& match;
-  const Change& by;
-  int n;
-  NthChange(const Match& m, const Change& b, int k) : match(m), by(b), n(k) {}
-  ex operator()(const ex& e) override {
-    if (n < 0) return e;
-    if (match(e) && n-- == 0) return by(e);
-    return e.map(*this);
-  }
-};
-
-// The equation with one match, drawn from both sides, changed (nothing when none matches).
+// The equation with one of its matches, drawn at random, changed wherever it stands (nothing
+// when none matches).
 std::optional<Eq> change_one(const Eq& e, const Match& m, const Change& by, Rng& rng) {
-  const int left = count(e.lhs, m), right = count(e.rhs, m);
-  if (left + right == 0) return std::nullopt;
-  const int k = static_cast<int>(pick(rng, static_cast<std::size_t>(left + right)));
-  NthChange f(m, by, k < left ? k : k - left);
-  return k < left ? Eq{f(e.lhs), e.rhs} : Eq{e.lhs, f(e.rhs)};
+  const auto found = matches(e, m);
+  if (found.empty()) return std::nullopt;
+  const ex x = found[pick(rng, found.size())];
+  const ex y = by(x);
+  return Eq{e.lhs.subs(x == y), e.rhs.subs(x == y)};
 }
 
 // One term of either side changed by `by` (nothing for it: left out).
@@ -93,11 +96,11 @@ std::optional<Eq> change_term(const Eq& e, Rng& rng, const std::function<std::op
   return Eq{sum(l), sum(r)};
 }
 
-// The angles of the trig functions in `e`.
+// The angles of the trig functions in `e`, added to `out` (in the order of their text).
 void angles_in(const ex& e, std::vector<ex>& out) {
   for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
-    if (is_trig(*it) && std::none_of(out.begin(), out.end(), [&](const ex& a) { return a.is_equal(it->op(0)); }))
-      out.push_back(it->op(0));
+    if (is_trig(*it)) out.push_back(it->op(0));
+  out = by_text(out);
 }
 
 // Trig rewrites of one sine or cosine (true identities), or of a term (sin^2 + cos^2 = 1).
@@ -116,7 +119,7 @@ std::optional<Eq> trig_pythagoras(const Eq& e, const std::vector<ex>& problem_an
   angles_in(e.lhs, angles);
   angles_in(e.rhs, angles);
   const auto is_cos_squared = [](const ex& x) { return is_a<power>(x) && is_cos(x.op(0)) && x.op(1).is_equal(2); };
-  if (coin(rng) && count(e.lhs, is_cos_squared) + count(e.rhs, is_cos_squared) > 0)
+  if (coin(rng) && !matches(e, is_cos_squared).empty())
     return change_one(e, is_cos_squared, [](const ex& c) { return 1 - pow(sin(c.op(0).op(0)), 2); }, rng);
   const auto x = one_of(rng, angles.empty() ? problem_angles : angles);
   if (!x) return std::nullopt;
