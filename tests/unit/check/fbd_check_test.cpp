@@ -82,9 +82,6 @@ struct FbdCase {
 // truck, a = F/(M + m) = 2 m/s^2, so the bed pushes it forward with m a = 600 N, and it pushes
 // the truck back with 600 N (F - 600 = M a = 3000 N): K's diagram is that one force (its sense
 // an unknown's, either), T's is F and the box's force, the system's is F alone.
-// The massive pulley's pin force drawn as its components at O, O_x along x and O_y up (either
-// sense): right; a second arrow down at P beside them is the weight again (drawn like W, the
-// second of the two the one too many), not a third component.
 const std::vector<FbdCase> cases{
     {"sample-12.3-two-mass-pulley", "body: B\nforces:\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [-1]}\n",
      Verdict::correct, "", "every force on B is drawn, each along its line and at its point", 3, 3},
@@ -192,14 +189,6 @@ const std::vector<FbdCase> cases{
      "every force on T is drawn, each along its line and at its point", 2, 2},
     {"box-in-a-truck-system", "bodies: [T, K]\nforces:\n  - {name: F, at: T, direction: [1]}\n", Verdict::correct, "",
      "every force on the system of T and K is drawn, each along its line and at its point", 1, 1},
-    {"rotation-atwood-massive-pulley",
-     "body: P\nforces:\n  - {name: T_1, at: L, direction: [0, -1]}\n  - {name: T_2, at: E, direction: [0, -1]}\n  - {name: W, at: P, direction: [0, -1]}\n"
-     "  - {name: O_x, at: O, direction: [1, 0]}\n  - {name: O_y, at: O, direction: [0, 1]}\n",
-     Verdict::correct, "", "every force on P is drawn, each along its line and at its point", 4, 4},
-    {"rotation-atwood-massive-pulley",
-     "body: P\nforces:\n  - {name: T_1, at: L, direction: [0, -1]}\n  - {name: T_2, at: E, direction: [0, -1]}\n  - {name: W, at: P, direction: [0, -1]}\n"
-     "  - {name: O_x, at: O, direction: [1, 0]}\n  - {name: O_y, at: O, direction: [0, 1]}\n  - {name: W2, at: P, direction: [0, -1]}\n",
-     Verdict::incorrect, "extra_force", "your W2 counts the weight of P once too often", 3, 4},
 };
 
 }  // namespace
@@ -240,6 +229,25 @@ TEST_CASE("FBD: a weight drawn twice is the weight twice, never another force", 
   const FbdGrade none = grade("atwood-machine", "body: C\nforces:\n  - {name: R, direction: [1], kind: weight}\n");
   REQUIRE(none.extras.size() == 1);
   CHECK(none.extras[0].message == "your R is not one of the forces on C");
+}
+
+TEST_CASE("FBD: a force of unknown direction drawn as its components, at one point", "[check][fbd]") {
+  // By hand (see the cases): the massive pulley's pin force drawn as its components at O, O_x
+  // along x and O_y up (either sense), is right. A second arrow down at P beside them is the
+  // weight again (drawn like W, the second of the two the one too many), not a third component.
+  const std::string drawn = "body: P\nforces:\n  - {name: T_1, at: L, direction: [0, -1]}\n  - {name: T_2, at: E, direction: [0, -1]}\n"
+                            "  - {name: W, at: P, direction: [0, -1]}\n  - {name: O_x, at: O, direction: [1, 0]}\n  - {name: O_y, at: O, direction: [0, 1]}\n";
+  const FbdGrade right = grade("rotation-atwood-massive-pulley", drawn);
+  CHECK(right.summary == "every force on P is drawn, each along its line and at its point");
+  CHECK(right.score == Approx(4));
+  CHECK(fbd_text(grade("rotation-atwood-massive-pulley", drawn + "  - {name: W2, at: P, direction: [0, -1]}\n")) ==
+        "free body diagram of P: incorrect: your W2 counts the weight of P once too often\n"
+        "  the force of the pin at O (O_x, O_y): drawn as your O_x, O_y\n"
+        "  a strand of string s_1 at L (T_1): drawn as your T_1\n"
+        "  a strand of string s_2 at E (T_2): drawn as your T_2\n"
+        "  the weight of P (M*g): drawn as your W\n"
+        "  extra: your W2 counts the weight of P once too often\n"
+        "score: 3 of 4\n");
 }
 
 TEST_CASE("FBD: a force that is nothing in the sketch earns its share, drawn at its point or left out", "[check][fbd]") {
