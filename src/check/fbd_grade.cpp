@@ -487,11 +487,14 @@ struct Matching {
   double total = 0;
 };
 
-Matching match_once(const Diagram& d, const FbdGrade& g) {
+// The best assignment of arrows to forces, the arrows `held` (where given) and the force `taken`
+// (where given) left out of it: a force's components chosen already.
+Matching match_once(const Diagram& d, const FbdGrade& g, const std::vector<std::size_t>& held = {}, std::optional<std::size_t> taken = {}) {
   const std::size_t na = d.fbd.forces.size(), ne = d.entries.size();
   std::vector<std::vector<double>> value(na, std::vector<double>(ne, 0));
   for (std::size_t i = 0; i < na; ++i)
-    for (std::size_t k = 0; k < ne; ++k) value[i][k] = fit_value(d, g, i, k);
+    for (std::size_t k = 0; k < ne; ++k)
+      if (k != taken && std::find(held.begin(), held.end(), i) == held.end()) value[i][k] = fit_value(d, g, i, k);
   Matching mt{assign(value, ne), std::vector<int>(ne, -1), std::vector<Fit>(ne, none), std::vector<std::vector<std::size_t>>(ne), 0};
   for (std::size_t i = 0; i < na; ++i) {
     if (mt.entry_of[i] < 0) continue;
@@ -564,7 +567,7 @@ Matching match(Diagram& d, const FbdGrade& g) {
 // A force of unknown direction may be drawn as one arrow per line of its span, the arrows at one
 // point (said alike: a second weight drawn at the body's center is no component of the pin's
 // force drawn at the pin, even where the two points are one).
-void more_lines(const Diagram& d, Matching& mt) {
+void more_lines(const Diagram& d, const FbdGrade& g, Matching& mt) {
   const std::size_t na = d.fbd.forces.size(), ne = d.entries.size();
   for (std::size_t i = 0; i < na; ++i) {
     if (mt.entry_of[i] >= 0 || !d.fbd.forces[i].direction) continue;
@@ -579,9 +582,64 @@ void more_lines(const Diagram& d, Matching& mt) {
       if (in_span(d, *d.fbd.forces[i].direction, drawn)) continue;  // not a new line
       mt.more[k].push_back(i);
       mt.entry_of[i] = static_cast<int>(k);
+      mt.total += fit_value(d, g, i, k);
       break;
     }
   }
+}
+
+// A force of unknown direction (its entry) and a group of arrows that may stand for it
+// together, as its components.
+using Group = std::pair<std::size_t, std::vector<std::size_t>>;
+
+// The groups for force `k`: two or more arrows (one per line of its span at most), each fitting
+// it with a direction, drawn at one point (as said), each off the span of the ones before it;
+// added to `out` while it holds fewer than `cap` (a drawing of many arrows at one pin).
+void component_groups(const Diagram& d, std::size_t k, std::size_t cap, std::vector<Group>& out) {
+  const Entry& en = d.entries[k];
+  std::vector<std::size_t> fitting;
+  for (std::size_t i = 0; i < d.fbd.forces.size(); ++i)
+    if (d.fbd.forces[i].direction && fit(d, i, en) == good) fitting.push_back(i);
+  std::vector<std::size_t> group;
+  std::vector<Triple> lines;
+  const std::function<void(std::size_t)> grow = [&](std::size_t from) {
+    if (out.size() >= cap) return;
+    if (group.size() >= 2) out.push_back({k, group});
+    for (std::size_t j = from; j < fitting.size() && group.size() < en.lines.size(); ++j) {
+      const StudentForce& a = d.fbd.forces[fitting[j]];
+      if ((!group.empty() && a.at != d.fbd.forces[group.front()].at) || in_span(d, *a.direction, lines)) continue;
+      group.push_back(fitting[j]);
+      lines.push_back(*a.direction);
+      grow(j + 1);
+      group.pop_back();
+      lines.pop_back();
+    }
+  };
+  grow(0);
+}
+
+// The matching that fits best in all, each force of unknown direction drawn as one arrow (with
+// the further lines drawn at its point after it) or as a group of components chosen first: of
+// two arrows along x at a weld, one may be its component and the other a given force there.
+Matching best_matching(Diagram& d, const FbdGrade& g) {
+  Matching best = match(d, g);
+  more_lines(d, g, best);
+  std::vector<Group> groups;
+  for (std::size_t k = 0; k < d.entries.size(); ++k)
+    if (d.entries[k].free) component_groups(d, k, 256, groups);
+  for (const auto& [k, group] : groups) {
+    Matching mt = match_once(d, g, group, k);
+    mt.arrow_of[k] = static_cast<int>(group.front());
+    mt.fitted[k] = good;
+    mt.more[k].assign(group.begin() + 1, group.end());
+    for (const std::size_t i : group) {
+      mt.entry_of[i] = static_cast<int>(k);
+      mt.total += fit_value(d, g, i, k);
+    }
+    more_lines(d, g, mt);
+    if (mt.total > best.total + 1e-9) best = std::move(mt);
+  }
+  return best;
 }
 
 std::string said(const Diagram& d, std::size_t i) {
@@ -720,8 +778,7 @@ FbdGrade check_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& rubri
   weigh(d, g);
   d.cos_tol = std::cos(rubric.tolerance * pi / 180);
   d.sin_tol = std::sin(rubric.tolerance * pi / 180);
-  Matching mt = match(d, g);
-  more_lines(d, mt);
+  const Matching mt = best_matching(d, g);
   std::vector<Finding> missing, wrong, extra;
   grade_forces(d, mt, g, wrong);
   grade_couples(d, mt, g, wrong, extra);

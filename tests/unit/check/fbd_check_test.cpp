@@ -248,6 +248,22 @@ TEST_CASE("FBD: a force of unknown direction drawn as its components, at one poi
         "  the weight of P (M*g): drawn as your W\n"
         "  extra: your W2 counts the weight of P once too often\n"
         "score: 3 of 4\n");
+  // The two blocks with the pin H put at A's center (by hand, A's forces: the roller's N_A up,
+  // the weight down, the pull F along +x, all at A, and the pin's force of unknown direction at
+  // H, the same point). Five arrows: up, down, +x and down at A, and one 4 degrees below +x at
+  // H. Two of those at A along independent lines are the pin's components, the one at H is the
+  // pull (within 5 degrees of its line, at its point): every force drawn, nothing extra.
+  const auto pinned = test::run_text(test::example_with("two-blocks-joined-by-a-pin.yaml", "H: {on: A, offset: [\"-b\", 0]}", "H: {on: A, offset: [0, 0]}"));
+  std::vector<Diagnostic> problems;
+  const FbdGrade at_a = check_fbd(pinned->model,
+                                  read_fbd_file("body: A\nforces:\n  - {name: W, at: A, direction: [0, -1]}\n  - {name: N, at: A, direction: [0, 1]}\n"
+                                                "  - {name: P, at: A, direction: [1, 0]}\n  - {name: Q, at: H, direction: [1, -0.07]}\n"
+                                                "  - {name: R, at: A, direction: [0, -1]}\n",
+                                                "fbd.yaml", pinned->model),
+                                  FbdRubric{}, problems);
+  CHECK(at_a.summary == "every force on A is drawn, each along its line and at its point");
+  CHECK(at_a.score == Approx(4));
+  CHECK(at_a.extras.empty());
 }
 
 TEST_CASE("FBD: a force that is nothing in the sketch earns its share, drawn at its point or left out", "[check][fbd]") {
