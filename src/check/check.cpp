@@ -209,6 +209,52 @@ double expanded_size(const ex& e) {
   return 1;
 }
 
+namespace {
+
+// The rates among the answer's names that the constraints' rate forms tie to the others, each
+// as an expression in them: the constraints in those rates and the parameters alone, solved
+// (linear) for as many as they fix. Nothing when they cannot be solved.
+exmap tied_rates(const EquationSystem& system, const std::vector<ex>& names, const SymbolTable& table) {
+  exset named(names.begin(), names.end());
+  const auto is_rate = [&](const ex& x) {
+    const SymbolInfo* s = table.find(x);
+    return s && s->role == SymbolRole::rate;
+  };
+  // The constraints' rate forms in rates and the answer's other names; every rate in them,
+  // those the answer does not name first (eliminated first: Gaussian elimination takes its
+  // pivots in this order), then the named ones.
+  lst equations;
+  exset others, own;
+  for (const auto& c : system.constraints) {
+    bool usable = !c.rate.is_zero();
+    for (const ex& x : symbols_in(c.rate)) usable = usable && (is_rate(x) || named.count(x) != 0);
+    if (!usable) continue;
+    equations.append(c.rate == 0);
+    for (const ex& x : symbols_in(c.rate))
+      if (is_rate(x)) (named.count(x) ? own : others).insert(x);
+  }
+  if (equations.nops() == 0 || own.empty()) return {};
+  lst rates;
+  for (const ex& x : others) rates.append(x);
+  for (const ex& x : own) rates.append(x);
+  exmap out;
+  try {
+    const ex solved = lsolve(equations, rates);
+    if (!is_a<lst>(solved)) return {};
+    for (const ex& e : solved) {
+      if (!own.count(e.lhs()) || e.lhs().is_equal(e.rhs())) continue;
+      bool in_named = true;  // (in the answer's names alone: not through a rate it cannot name)
+      for (const ex& x : symbols_in(e.rhs())) in_named = in_named && named.count(x) != 0 && !x.is_equal(e.lhs());
+      if (in_named) out[e.lhs()] = e.rhs();
+    }
+  } catch (const std::exception&) {
+    return {};
+  }
+  return out;
+}
+
+}  // namespace
+
 Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(options), symbols_(analysis.model.symbols) {
   const Model& m = analysis.model;
   GiNaC::Digits = std::max<long>(GiNaC::Digits, options_.digits);
@@ -235,6 +281,16 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   for (const auto& p : parameters_) answer_names_.emplace(p.name, p.symbol);
   definitions_ = symbols_->definitions();
   lengths_ = symbols_->definitions(true);
+  // Rates the constraints tie together (dot(x_B2) = -dot(x_B1) where a string keeps x_B1 +
+  // x_B2): the dependent ones follow from the others at each point, as a defined parameter
+  // does; drawn apart, a right answer written in the other rate would differ.
+  std::vector<ex> names;
+  for (const auto& p : parameters_) names.push_back(p.symbol);
+  const exmap tied = tied_rates(analysis.system, names, *symbols_);
+  for (const auto& [rate, value] : tied) {
+    definitions_[rate] = value;
+    lengths_[rate] = value;
+  }
   // Fixed random points (algebra/states.hpp): a fixed seed keeps the first comparison (which
   // settles every answer that differs at one of them) and the diagnoses the same in every
   // run; since anyone can find these points, an answer that agrees at all of them is decided
@@ -246,7 +302,7 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   std::vector<StateInput> inputs;
   for (const auto& p : parameters_) {
     const SymbolInfo* s = symbols_->find(p.symbol);
-    if (s->definition) continue;  // follows from the others
+    if (s->definition || tied.count(p.symbol)) continue;  // follows from the others
     std::optional<ex> value = s->value;
     if (const auto at = m.layout.find(p.symbol); !value && at != m.layout.end()) value = at->second;  // a coordinate's
     inputs.push_back(input_near(p.symbol, value, angles.count(p.symbol) != 0));
