@@ -461,7 +461,7 @@ struct Reader {
 
   void read_root(const yaml::Node& root, bool phase) {
     std::vector<std::string> keys{"axes", "parameters", "gravity", "bodies", "points", "connections", "loads",
-               "strings", "layout", "given", "find", "derive", "expected", "expected_combinations", "expected_conditions", "expected_free", "expected_power",
+               "strings", "layout", "given", "find", "derive", "expected", "expected_combinations", "expected_conditions", "expected_ranges", "expected_free", "expected_power",
                "notes", "sweep", "motion", "expected_motion", "interval", "impact"};
     if (phase) {
       keys.insert(keys.begin(), {"name", "carry"});

@@ -9,6 +9,7 @@
 #include "expr/normal_form.hpp"
 #include "expr/print.hpp"
 #include "expr/rational.hpp"
+#include "solve/bounds.hpp"
 
 namespace tackle {
 
@@ -238,8 +239,10 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
         r.holds = relation_holds(x, r.op);
       }
     }
+    number_bounds(r.solved, table, digits);
     out.conditions.push_back(r);
   }
+  out.ranges = ranges_at_numbers(out.conditions, table, digits);
   return out;
 }
 

@@ -52,8 +52,9 @@ void statement(BuildContext& ctx);
 
 // Helpers one stage lends another.
 
-// The value of a `given` entry in SI (questions.cpp); read_layout uses it too.
-std::optional<GiNaC::ex> given_value(const GivenDesc& g, const SymbolInfo& s, Diagnostics& to,
+// The value of a `given` entry in SI, a number or an expression in the parameters
+// (questions.cpp); read_layout uses it too.
+std::optional<GiNaC::ex> given_value(const GivenDesc& g, const SymbolInfo& s, const SymbolTable& table, Diagnostics& to,
                                      std::string* unit_text = nullptr, GiNaC::ex* to_si = nullptr);
 
 // The path of a points argument, made once (paths.cpp); the connections stage uses it.

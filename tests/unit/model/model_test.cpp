@@ -114,6 +114,31 @@ TEST_CASE("Given: a coordinate or velocity with its value at the instant", "[giv
   CHECK(text.find("    l_CP = sqrt(h^2 + x^2)  = 5 m    [definition]\n") != std::string::npos);
 }
 
+TEST_CASE("Given: a value may be an expression in the parameters, the quantity's definition", "[given]") {
+  // x = -4 h/3 = -4 m at h = 3 m: the same instant as x = -4 m, so by hand (as the example
+  // with -4) l_CP = sqrt(h^2 + x^2) = 5 m, and every answer has the same number.
+  std::string text = raised_pulley + "find: [T, N_C]\n";
+  const auto plain = test::run_text(text);
+  text.replace(text.find("x: {value: -4, unit: m}"), 23, "x: -4*h/3");
+  const auto a = test::run_text(text);
+  const SymbolTable& t = *a->model.symbols;
+  REQUIRE(t.find("x")->definition);
+  CHECK(to_text(*t.find("x")->definition) == "-4*h/3");
+  const Derivation d = explain(*a), e = explain(*plain);
+  REQUIRE(d.answers.size() == e.answers.size());
+  for (std::size_t i = 0; i < d.answers.size(); ++i) {
+    INFO(d.answers[i].name);
+    REQUIRE(d.answers[i].value);
+    CHECK(d.answers[i].value->approx == Approx(e.answers[i].value->approx));
+  }
+  const std::string report = write(d, Format::text, true);
+  CHECK(report.find("    x = -4*h/3  = -4 m    [given]\n") != std::string::npos);
+  CHECK(report.find("    l_CP = sqrt(h^2 + x^2)  = 5 m    [definition]\n") != std::string::npos);
+  // No condition is solved for h with x held: x moves with h.
+  for (const auto& c : d.conditions)
+    for (const auto& s : c.solved) CHECK(to_text(s.parameter) != "h");
+}
+
 TEST_CASE("Given: a value must be a number in a unit of the quantity", "[given][errors]") {
   auto with = [](const std::string& from, const std::string& to) {
     std::string text = raised_pulley + "find: [T]\n";
@@ -122,8 +147,15 @@ TEST_CASE("Given: a value must be a number in a unit of the quantity", "[given][
   };
   CHECK(with("x: {value: -4, unit: m}", "x: {value: -4, unit: kg}") ==
         Messages{"t.yaml:21:24: 'x' is a length, but kg is a mass"});
-  CHECK(with("x: {value: -4, unit: m}", "x: {value: h, unit: m}") ==
-        Messages{"t.yaml:21:14: 'given' value of 'x': unknown name 'h'"});
+  CHECK(with("x: {value: -4, unit: m}", "x: {value: k, unit: m}") ==
+        Messages{"t.yaml:21:14: 'given' value of 'x': unknown name 'k' (known: m, M, h, g, t, x, y, N_C, T, l_CP)"});
+  CHECK(with("x: {value: -4, unit: m}", "x: {value: T, unit: m}") ==
+        Messages{"t.yaml:21:14: 'given' value of 'x': 'T' is not a parameter (expected a number or an expression in the "
+                 "parameters)"});
+  CHECK(with("x: {value: -4, unit: m}", "x: g") ==
+        Messages{"t.yaml:21:6: 'given' value of 'x' is an acceleration (expected a length)"});
+  CHECK(with("x: {value: -4, unit: m}", "x: sqrt(-h)") ==
+        Messages{"t.yaml:21:6: 'given' value of 'x' is not a real number"});
   CHECK(with("x: {value: -4, unit: m}", "x: {unit: m}") ==
         Messages{"t.yaml:21:13: 'given' value of 'x' has a 'unit' but no 'value'"});
   CHECK(with("x: {value: -4, unit: m}", "x: {value: -4, units: m}") ==
