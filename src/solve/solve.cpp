@@ -746,10 +746,16 @@ Solution solve(const Model& model, const EquationSystem& s) {
   // The given numbers (and the acute angles' stand-ins at them), made once for every condition.
   exmap values = model.symbols->values();
   for (const auto& [stand_in, f] : acute.back) values[stand_in] = f.subs(values);
+  // Quantities given in the parameters (dot(theta) = v/L) are put in: the conditions are then
+  // in the parameters, and solved for them (v^2 >= -g L cos(theta), not dot(theta)^2 >= ...).
+  exmap given_in_parameters;
+  for (const auto& g : model.given)
+    if (const SymbolInfo* info = model.symbols->find(g); info && info->definition) given_in_parameters[g] = *info->definition;
+  auto given_put_in = [&](const ex& e) { return given_in_parameters.empty() ? e : substituted(e, given_in_parameters); };
   for (const auto& c : model.conditions) {
     CheckedCondition cc;
     cc.condition = &c;
-    const ex normal_form = normal_remembered(substituted(c.lhs - c.rhs, sol.general));
+    const ex normal_form = normal_remembered(given_put_in(substituted(c.lhs - c.rhs, sol.general)));
     cc.expr = simplest(normal_form);
     // The symbols are gathered once (has() of each symbol would be quadratic per condition),
     // by hash: they are only looked up.

@@ -116,6 +116,14 @@ void set_given(BuildContext& ctx, const SymbolInfo& s, const ex& v, const Text& 
                                   to_text(distinct_symbols(at).front()) + " has no value (expected a value for it in 'parameters')");
 }
 
+// The steady rate or its period when a `find` entry names one of them.
+const Wanted* steady_reported(const BuildContext& ctx, const FindDesc& f) {
+  if (!ctx.m.steady || f.expr) return nullptr;
+  for (const auto& w : ctx.m.steady->reported)
+    if (w.name == f.name.text) return &w;
+  return nullptr;
+}
+
 }  // namespace
 
 void given_and_find(BuildContext& ctx) {
@@ -143,7 +151,14 @@ void given_and_find(BuildContext& ctx) {
     ctx.m.given.push_back(s->sym);
     ctx.m.candidates.erase(std::remove(ctx.m.candidates.begin(), ctx.m.candidates.end(), s->sym), ctx.m.candidates.end());
   }
+  // A steady motion's unknown: its rate's square, after the others; its rate and period are
+  // reported where `find` names them (else after what it asks for).
+  if (ctx.m.steady) ctx.m.candidates.push_back(ctx.m.steady->squared);
   for (const auto& f : ctx.d.find) {
+    if (const Wanted* w = steady_reported(ctx, f)) {
+      ctx.m.wanted.push_back(*w);
+      continue;
+    }
     if (f.expr) {
       if (!ctx.claim(f.name, "quantity")) continue;
       auto e = ctx.parse(*f.expr, *ctx.table, "'" + f.name.text + "' in 'find'");

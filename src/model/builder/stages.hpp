@@ -16,6 +16,9 @@ namespace tackle::build {
 void axes(BuildContext& ctx);
 // The parameters in the symbol table (dimension, unit, sign, value, range); needs nothing.
 void parameters(BuildContext& ctx);
+// m.steady from 'steady': the unknown rate's square, the rate's name read as its root, the
+// rate and period reported, the condition that the rate is real; needs the parameters.
+void steady(BuildContext& ctx);
 // m.bodies (each a point too), their coordinates, accelerations and masses; needs the axes and parameters.
 void bodies(BuildContext& ctx);
 // The named points of m.points (fixed, or on a body); needs the bodies.
