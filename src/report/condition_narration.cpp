@@ -5,6 +5,7 @@
 #include "report/narrator.hpp"
 
 #include <algorithm>
+#include <unordered_set>
 
 #include "expr/print.hpp"
 #include "expr/rational.hpp"
@@ -53,8 +54,12 @@ std::string sign_words(const std::string& op, bool holds) {
 
 void narrate_always(Narrator& n, const std::string& lead, const ex& shown, const ex& expr, const std::string& op, bool holds,
                     const std::string& otherwise) {
-  std::vector<ex> names = distinct_symbols(expr);
-  std::sort(names.begin(), names.end(), [](const ex& a, const ex& b) { return to_text(a) < to_text(b); });
+  // In the order the description names them (g, m_1, ..., m_33).
+  const auto found = distinct_symbols(expr);
+  const std::unordered_set<ex, ExHash, ex_is_equal> present(found.begin(), found.end());
+  std::vector<ex> names;
+  for (const auto& s : n.table.all())
+    if (present.count(s->sym) != 0) names.push_back(s->sym);
   auto [list, listed] = listed_names(names);
   // The last of a few names after "and": g, m and theta.
   if (const auto last = list.rfind(", {}"); last != std::string::npos && list.find("...") == std::string::npos)

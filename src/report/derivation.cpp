@@ -183,9 +183,11 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     const SteadySpec& sp = *m.steady;
     const ex rate = table.find(sp.rate)->sym, period = table.find(sp.period)->sym;
     step(Step::Kind::bullet, "Steady motion at an unknown rate {}: the balances are linear in {}, an unknown solved for "
-                             "with the others; {} = sqrt({}) (the balances fix its size, not its sense), and the period "
-                             "is {} = 2 pi/{}.")
-        ->math = {rate, sp.squared, rate, sp.squared, period, rate};
+                             "with the others; the rate is its root (the balances fix its size, not its sense), and the "
+                             "period follows from it:")
+        ->math = {rate, sp.squared};
+    equation("steady rate", rate, sqrt(sp.squared));
+    equation("period", period, 2 * Pi / rate);
   }
 
   // An impact has no balances of forces: it is told by narrate_impact.

@@ -46,7 +46,7 @@ bool given_in_parameters(const ex& v, const SymbolInfo& s, bool with_unit, const
   }
   const ex approx = evalf(substituted(v, table.values()));
   if (is_a<numeric>(approx) && !ex_to<numeric>(approx).is_real()) {
-    to.error(at, what + " is not a real number");
+    to.error(at, what + " is not a real number (expected a real value at the parameters' values)");
     return false;
   }
   if (with_unit || is_a<numeric>(v) || !s.dimension) return true;

@@ -10,9 +10,11 @@ using namespace GiNaC;
 
 namespace {
 
-// The unit the rate is reported in (rad/s unless said): a rate's.
+Unit radians_per_second() { return Unit{1, Dimension::time().pow(-1), "rad/s"}; }
+
+// The unit the rate is reported in (rad/s unless said): a rate's, or nothing (reported).
 std::optional<Unit> rate_unit(BuildContext& ctx, const SteadyDesc& st) {
-  if (!st.unit) return Unit{1, Dimension::time().pow(-1), "rad/s"};
+  if (!st.unit) return radians_per_second();
   std::string err;
   int col = 0;
   auto unit = parse_unit(st.unit->text, err, col);
@@ -34,9 +36,11 @@ void steady(BuildContext& ctx) {
   if (!ctx.d.steady || ctx.d.steady->rate.text.empty()) return;  // (no rate: reported when read)
   const SteadyDesc& st = *ctx.d.steady;
   const Text period = st.period ? *st.period : Text{"tau", st.at};
-  const auto unit = rate_unit(ctx, st);
-  if (!ctx.claim(st.rate, "steady rate") || !ctx.claim(period, "period") || !unit) return;
-  const Dimension rate = unit->dimension;
+  // (A unit that is not a rate is reported; the rate is made all the same, in rad/s, so that
+  // the expressions written in it raise no second error.)
+  const auto unit = rate_unit(ctx, st).value_or(radians_per_second());
+  if (!ctx.claim(st.rate, "steady rate") || !ctx.claim(period, "period")) return;
+  const Dimension rate = unit.dimension;
   const std::string tex = default_tex(st.rate.text);
   const SymbolInfo& squared =
       ctx.table->add(st.rate.text + "^2", "{" + tex + "^{2}}", SymbolRole::unknown, rate.pow(2), false, st.rate.at);
@@ -46,8 +50,7 @@ void steady(BuildContext& ctx) {
   SteadySpec spec{root.name, tau.name, squared.sym, {}};
   spec.reported.push_back({root.name, root.tex, sqrt(squared.sym), true, rate, unit});
   spec.reported.push_back({tau.name, tau.tex, 2 * Pi / sqrt(squared.sym), true, Dimension::time(), std::nullopt});
-  ctx.m.conditions.push_back({squared.sym, 0, ">=", "the rate is real (" + squared.name + " >= 0)",
-                              "no rate keeps this motion steady (the balances need " + squared.name + " < 0)", "steady motion"});
+  ctx.m.conditions.push_back({squared.sym, 0, ">=", "the rate is real", "no real rate keeps this motion steady", "steady motion"});
   ctx.m.steady = std::move(spec);
 }
 

@@ -174,7 +174,7 @@ TEST_CASE("Given: a value must be a number in a unit of the quantity", "[given][
   CHECK(with("x: {value: -4, unit: m}", "x: g") ==
         Messages{"t.yaml:21:6: 'given' value of 'x' is an acceleration (expected a length)"});
   CHECK(with("x: {value: -4, unit: m}", "x: sqrt(-h)") ==
-        Messages{"t.yaml:21:6: 'given' value of 'x' is not a real number"});
+        Messages{"t.yaml:21:6: 'given' value of 'x' is not a real number (expected a real value at the parameters' values)"});
   CHECK(with("x: {value: -4, unit: m}", "x: {unit: m}") ==
         Messages{"t.yaml:21:13: 'given' value of 'x' has a 'unit' but no 'value'"});
   CHECK(with("x: {value: -4, unit: m}", "x: {value: -4, units: m}") ==

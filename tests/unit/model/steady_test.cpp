@@ -57,16 +57,13 @@ TEST_CASE("Steady: where the balances need omega^2 < 0, no rate is reported and 
   REQUIRE(c != d.conditions.end());
   REQUIRE(c->holds);
   CHECK_FALSE(*c->holds);
-  CHECK(write(d, Format::text, true).find("This is VIOLATED for the given numbers: no rate keeps this motion steady (the "
-                                          "balances need omega^2 < 0).") != std::string::npos);
+  CHECK(write(d, Format::text, true).find("This is VIOLATED for the given numbers: no real rate keeps this motion steady.") !=
+        std::string::npos);
 }
 
 TEST_CASE("Steady: problems are located", "[steady][errors]") {
   CHECK(test::errors_of(pendulum_with("steady: {rate: omega, period: tau}", "steady: {rate: omega, unit: m}")) ==
-        Messages{"t.yaml:24:29: 'unit' of 'steady' is a length (expected a rate, such as rad/s or rpm)",
-                 "t.yaml:26:58: 'acceleration' of body 'bob': unknown name 'omega' (known: m, L, theta, g, t)",
-                 "t.yaml:32:14: 'find': unknown name 'omega' (known: m, L, theta, g, t, T_BO)",
-                 "t.yaml:32:21: 'find': unknown name 'tau' (known: m, L, theta, g, t, T_BO)"});
+        Messages{"t.yaml:24:29: 'unit' of 'steady' is a length (expected a rate, such as rad/s or rpm)"});
   CHECK(test::errors_of(pendulum_with("steady: {rate: omega, period: tau}", "steady: {period: tau}"))[0] ==
         "t.yaml:24:9: 'steady' has no 'rate' (expected the name of the unknown rate, e.g. rate: omega)");
   CHECK(test::errors_of(pendulum_with("steady: {rate: omega, period: tau}", "steady: {rate: m}"))[0] ==
