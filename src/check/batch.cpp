@@ -284,22 +284,13 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
         try {
           const StudentFbd student = read_fbd_file(*fbd, "fbd", *options.model);
           std::vector<Diagnostic> problems;
-          r = fbd_result(check_fbd(*options.model, student, FbdRubric{}, problems));
+          r = checked_fbd(*options.model, student, FbdRubric{}, problems);
           if (!problems.empty()) r.summary = problems.front().message;
           unknown = r.unknown;  // the test's name: "free body diagram of B"
         } catch (const InputError& e) {
           r.verdict = Verdict::invalid;
           r.summary = "line " + std::to_string(s.lines) + ": " + (e.diagnostics().empty() ? std::string("not a free body diagram") : e.diagnostics().front().message);
           r.findings.push_back({"not_an_answer", r.summary});
-        } catch (const std::bad_alloc&) {
-          throw;
-        } catch (const std::exception& e) {
-          // This line's verdict, never the batch's end (the checks of answers and equations
-          // guard themselves: Checker::check).
-          r.verdict = Verdict::undecided;
-          r.summary = "line " + std::to_string(s.lines) + ": tackle failed while checking this diagram (an internal error: " +
-                      e.what() + "), so it is left undecided";
-          r.findings.push_back({"internal", r.summary});
         }
       }
     } else if (equation) {

@@ -213,12 +213,23 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   const Model& m = analysis.model;
   GiNaC::Digits = std::max<long>(GiNaC::Digits, options_.digits);
   tolerance_ = ex_to<numeric>(GiNaC::pow(numeric(10), numeric(-(options_.digits - 8))));
-  // The names an answer may use: the parameters and the given quantities.
+  // The names an answer may use: the parameters and the given quantities; and the state's
+  // coordinates, rates and time where a closed form holds them (an equation of motion:
+  // ddot(x) in x, dot(x) and t), drawn at the points like parameters.
   for (const auto& s : symbols_->all())
     if (s->role == SymbolRole::parameter) parameters_.push_back({s->name, s->sym, s->dimension});
   for (const auto& g : m.given) {
     const SymbolInfo* s = symbols_->find(g);
     parameters_.push_back({s->name, s->sym, s->dimension});
+  }
+  std::set<ex, ex_is_less> in_closed_forms;
+  for (const auto& d : analysis.solution.values)
+    for (const ex& x : symbols_in(substituted(d.value, symbols_->definitions(true)))) in_closed_forms.insert(x);
+  for (const auto& s : symbols_->all()) {
+    const bool state = s->role == SymbolRole::coordinate || s->role == SymbolRole::rate || s->role == SymbolRole::time;
+    if (state && in_closed_forms.count(s->sym) && !contains(m.given, s->sym) && !contains(m.candidates, s->sym) &&
+        !contains(analysis.system.unknowns, s->sym))
+      parameters_.push_back({s->name, s->sym, s->dimension});
   }
   for (const auto& u : m.candidates) problem_unknowns_.push_back(symbols_->find(u)->name);
   for (const auto& p : parameters_) answer_names_.emplace(p.name, p.symbol);
@@ -236,7 +247,9 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   for (const auto& p : parameters_) {
     const SymbolInfo* s = symbols_->find(p.symbol);
     if (s->definition) continue;  // follows from the others
-    inputs.push_back(input_near(p.symbol, s->value, angles.count(p.symbol) != 0));
+    std::optional<ex> value = s->value;
+    if (const auto at = m.layout.find(p.symbol); !value && at != m.layout.end()) value = at->second;  // a coordinate's
+    inputs.push_back(input_near(p.symbol, value, angles.count(p.symbol) != 0));
   }
   states_ = States(std::move(inputs));
   for (int k = 0; k < options_.points; ++k) points_.push_back(states_.fixed(k));

@@ -505,7 +505,14 @@ CheckResult EquationChecker::position_verdict(const Level& level, const ex& resi
     return r.conclude(Verdict::undecided, "not_linear",
                       "tackle decides an equation in the positions when it and the problem's length sums are linear in the positions");
   // What is left is the constant the sum keeps: any constant will do (it depends on where the
-  // positions are measured from and on the string's length); the level drops it.
+  // positions are measured from and on the string's length); the level drops it. A constant
+  // in the problem's own names says which constant it is, which depends on the origin: not
+  // decided.
+  for (const ex& s : symbols_in(parts->back()))
+    if (symbols_->find(s))
+      return r.conclude(Verdict::undecided, "constant",
+                        "the constant a length sum keeps depends on where the positions are measured from, so tackle cannot tell whether it is " +
+                            to_text(parts->back().is_zero() ? ex(0) : -parts->back()) + ": write it as const, C or a number");
   const auto values = level.truth->values(*parts);
   if (!values)
     return r.conclude(Verdict::undecided, "evaluation", "the equation could not be evaluated at the test values (a division by zero?)");

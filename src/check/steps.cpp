@@ -80,19 +80,19 @@ std::vector<SolutionStep> read_solution(const std::string& text, const std::stri
   return out;
 }
 
-Rubric read_rubric(const std::string& text, const std::string& file) {
+Rubric read_rubric(const std::string& text, const std::string& file, const Model& m) {
   Diagnostics diags;
   const yaml::Document doc = yaml::load(text, file, diags);
   diags.throw_if_any();
   const yaml::Node root = doc.root();
   Rubric r;
-  if (!yaml::check_map(root, {"fbds", "balances", "constraints", "answers", "fbd"}, "the rubric", file, diags)) {
+  if (!yaml::check_map(root, {"fbds", "balances", "constraints", "answers", "penalty", "fbd"}, "the rubric", file, diags)) {
     diags.throw_if_any();
     return r;
   }
-  double fbds = 0;
+  double fbds = 0, penalty = 0;
   for (const auto& [key, field] : {std::pair{"fbds", &fbds}, std::pair{"balances", &r.balances}, std::pair{"constraints", &r.constraints},
-                                   std::pair{"answers", &r.answers}}) {
+                                   std::pair{"answers", &r.answers}, std::pair{"penalty", &penalty}}) {
     const yaml::Node n = root[key];
     if (!n) {
       *field = 0;  // a part the rubric does not name is not graded
@@ -107,132 +107,241 @@ Rubric read_rubric(const std::string& text, const std::string& file) {
     else
       *field = v;
   }
-  if (root["fbds"]) r.fbds = fbds;
-  if (root["fbd"]) r.fbd = read_fbd_rubric(root["fbd"], file, diags);
+  r.fbds = fbds;  // (only without a rubric do diagrams get a point of their own)
+  if (root["penalty"]) r.penalty = penalty;
+  if (root["fbd"]) {
+    r.fbd = read_fbd_rubric(root["fbd"], file, diags);
+    for (auto& d : fbd_rubric_problems(m, r.fbd)) diags.error(std::move(d.where), std::move(d.message));
+  }
   diags.throw_if_any();
   return r;
 }
 
-SolutionGrade grade_solution(const Checker& checker, const Model& model, const std::vector<SolutionStep>& steps, const Rubric& rubric) {
-  SolutionGrade g;
-  std::set<std::string> used;
+std::vector<std::string> equations_given(const CheckResult& r) {
+  if (r.combination.empty()) return r.identified_as.empty() ? std::vector<std::string>{} : std::vector<std::string>{r.identified_as.front()};
+  std::vector<std::string> out;
+  for (const auto& p : r.combination) {
+    if (!p.plain) return {};  // derived by eliminating unknowns
+    out.push_back(p.label);
+  }
+  return out;
+}
+
+namespace {
+
+// What the correct steps gave, as they are checked in turn.
+struct Given {
+  std::set<std::string> equations;  // the derivation's labels
   std::set<std::string> answered;
   std::map<std::vector<std::string>, double> diagrams;  // sorted bodies -> the best score of a diagram of them (a fraction)
   bool any_diagram = false;
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    const SolutionStep& s = steps[i];
-    CheckResult r;
-    if (s.kind == SolutionStep::Kind::fbd) {
-      any_diagram = true;
-      std::vector<Diagnostic> problems;
-      r = fbd_result(check_fbd(model, s.fbd, rubric.fbd, problems));
-      if (!problems.empty()) r.summary = format(problems.front());
-      std::vector<std::string> key = s.fbd.bodies;
-      std::sort(key.begin(), key.end());
-      if (r.verdict == Verdict::correct || r.verdict == Verdict::incorrect) diagrams[key] = std::max(diagrams[key], r.score);
-      if (r.verdict != Verdict::correct && !g.first_wrong) g.first_wrong = i + 1;
-      g.steps.push_back({s, std::move(r)});
+};
+
+std::string and_list(const std::vector<std::string>& v) {
+  if (v.size() < 2) return join(v);
+  return join(std::vector<std::string>(v.begin(), v.end() - 1)) + " and " + v.back();
+}
+
+// Why a correct equation that gives none of the derivation's equations earns nothing for them
+// (with no combination known, the algebra could not tell a sum apart: none is assumed).
+std::string derived_note(const CheckResult& r) {
+  return "it earns no balance or constraint points: it is derived from " + and_list(r.follows_from) +
+         " by eliminating unknowns, not written as " + (r.follows_from.size() == 1 ? "it" : "them or as their sum");
+}
+
+CheckResult grade_diagram(const Model& model, const SolutionStep& s, const FbdRubric& rubric, Given& given) {
+  given.any_diagram = true;
+  std::vector<Diagnostic> problems;
+  CheckResult r = checked_fbd(model, s.fbd, rubric, problems);
+  if (!problems.empty()) r.summary = format(problems.front());
+  std::vector<std::string> key = s.fbd.bodies;
+  std::sort(key.begin(), key.end());
+  if (r.verdict == Verdict::correct || r.verdict == Verdict::incorrect) given.diagrams[key] = std::max(given.diagrams[key], r.score);
+  return r;
+}
+
+SolutionGrade::Step grade_step(const Checker& checker, const Model& model, const SolutionStep& s, const FbdRubric& rubric, Given& given) {
+  if (s.kind == SolutionStep::Kind::fbd) return {s, grade_diagram(model, s, rubric, given), ""};
+  CheckResult r = s.kind == SolutionStep::Kind::equation ? checker.check_equation(s.text) : checker.check(s.unknown, s.text);
+  if (r.verdict != Verdict::correct) return {s, std::move(r), ""};
+  if (s.kind == SolutionStep::Kind::answer) {
+    given.answered.insert(s.unknown);
+    return {s, std::move(r), ""};
+  }
+  const std::vector<std::string> labels = equations_given(r);
+  for (const auto& l : labels) {
+    given.equations.insert(l);
+    // A length sum counts for its derivatives (differentiating it is mechanical).
+    if (const std::string d = checker.differentiated(l); !d.empty()) given.equations.insert(d);
+  }
+  std::string note = labels.empty() ? derived_note(r) : "";
+  return {s, std::move(r), std::move(note)};
+}
+
+// What the asked unknowns need: the fewest equations that determine each (in the order of
+// asking), and the unknowns for which those cannot be determined.
+struct Needs {
+  std::vector<std::string> equations;
+  std::vector<std::string> undetermined;
+  std::string why_not;  // why no part that rests on the needed equations can be graded; empty: they can
+};
+
+Needs needs_of(const Checker& checker) {
+  Needs n;
+  for (const auto& u : checker.asked()) {
+    const std::vector<std::string> labels = checker.needed_for(u);
+    if (labels.empty()) n.undetermined.push_back(u);
+    for (const auto& l : labels)
+      if (std::find(n.equations.begin(), n.equations.end(), l) == n.equations.end()) n.equations.push_back(l);
+  }
+  if (checker.asked().empty()) n.why_not = "the problem asks for no unknown that can be checked";
+  else if (!n.undetermined.empty())
+    n.why_not = "tackle cannot tell which equations " + and_list(n.undetermined) + (n.undetermined.size() == 1 ? " needs" : " need");
+  return n;
+}
+
+SolutionGrade::Part not_graded(const std::string& name, const std::string& why) {
+  SolutionGrade::Part p;
+  p.name = name;
+  p.not_graded = why;
+  return p;
+}
+
+// `earned` (a sum of fractions) of `of` items, for `points`.
+SolutionGrade::Part graded(const std::string& name, double points, double earned, std::size_t done, std::size_t of, std::vector<std::string> missing) {
+  return {name, points * earned / static_cast<double>(of), points, done, of, std::move(missing), ""};
+}
+
+std::string group_name(const std::vector<std::string>& key) { return key.size() == 1 ? key.front() : "the system of " + and_list(key); }
+
+// The diagrams the needed balances are written from: one per body or system balanced, each
+// earning in proportion to its best diagram's score.
+SolutionGrade::Part diagrams_part(const Checker& checker, const Model& model, const Needs& needs, const Given& given, double points) {
+  if (!needs.why_not.empty()) return not_graded("fbds", needs.why_not);
+  std::vector<std::vector<std::string>> wanted;
+  for (const auto& l : needs.equations) {
+    const Equation* e = checker.derivation_equation(l);
+    if (!e || !is_balance(*e) || e->bodies.empty()) continue;
+    std::vector<std::string> key;
+    for (int b : e->bodies) key.push_back(model.bodies[static_cast<std::size_t>(b)].name);
+    std::sort(key.begin(), key.end());
+    if (std::find(wanted.begin(), wanted.end(), key) == wanted.end()) wanted.push_back(key);
+  }
+  if (wanted.empty()) return not_graded("fbds", "no balance is needed for the unknowns asked, so no diagram is");
+  double earned = 0;
+  std::size_t whole = 0;  // diagrams with every force right
+  std::vector<std::string> absent;
+  for (const auto& key : wanted) {
+    const auto it = given.diagrams.find(key);
+    if (it == given.diagrams.end()) {
+      absent.push_back(group_name(key));
       continue;
     }
-    r = s.kind == SolutionStep::Kind::equation ? checker.check_equation(s.text) : checker.check(s.unknown, s.text);
-    if (r.verdict == Verdict::correct) {
-      for (const auto& l : r.follows_from) {
-        used.insert(l);
-        // A length sum counts for its derivatives (differentiating it is mechanical).
-        if (const std::string d = checker.differentiated(l); !d.empty()) used.insert(d);
-      }
-      if (s.kind == SolutionStep::Kind::answer) answered.insert(s.unknown);
-    } else if (!g.first_wrong) {
-      g.first_wrong = i + 1;
-    }
-    g.steps.push_back({s, std::move(r)});
+    earned += it->second;
+    whole += it->second >= 1 - 1e-9;
   }
-  // What the asked unknowns need, in the derivation's order of asking.
-  std::vector<std::string> needed;
-  for (const auto& u : checker.asked())
-    for (const auto& l : checker.needed_for(u))
-      if (std::find(needed.begin(), needed.end(), l) == needed.end()) needed.push_back(l);
-  for (const auto& l : needed)
-    if (!used.count(l)) g.missing.push_back(l);
-  // Used, in the order the derivation has them (the needed ones first, then any other).
-  for (const auto& l : needed)
-    if (used.count(l)) g.used.push_back(l);
-  for (const auto& l : used)
-    if (std::find(g.used.begin(), g.used.end(), l) == g.used.end()) g.used.push_back(l);
-  auto part = [&](const std::string& name, double points, std::size_t done, std::size_t of, std::vector<std::string> missing) {
-    if (points <= 0) return;
-    SolutionGrade::Part p{name, of == 0 ? points : points * static_cast<double>(done) / static_cast<double>(of), points, done, of,
-                          std::move(missing)};
-    g.parts.push_back(p);
-    g.score += p.score;
-    g.max_score += p.max;
-  };
-  // The diagrams the needed balances are written from: one per body or system balanced.
-  if (const double points = rubric.fbds.value_or(any_diagram ? 1.0 : 0.0); points > 0) {
-    std::vector<std::vector<std::string>> wanted;
-    for (const auto& l : needed) {
-      const Equation* e = checker.derivation_equation(l);
-      if (!e || !is_balance(*e) || e->bodies.empty()) continue;
-      std::vector<std::string> key;
-      for (int b : e->bodies) key.push_back(model.bodies[static_cast<std::size_t>(b)].name);
-      std::sort(key.begin(), key.end());
-      if (std::find(wanted.begin(), wanted.end(), key) == wanted.end()) wanted.push_back(key);
-    }
-    double done = 0;
-    std::size_t whole = 0;  // diagrams with every force right
-    std::vector<std::string> absent;
-    for (const auto& key : wanted) {
-      const auto it = diagrams.find(key);
-      if (it != diagrams.end()) {
-        done += it->second;
-        whole += it->second >= 1 - 1e-9;
-      }
-      else absent.push_back(key.size() == 1 ? key.front() : "the system of " + join(key));
-    }
-    // A diagram of a body no needed balance is written for still counts when none is wanted.
-    std::size_t of = wanted.size();
-    if (wanted.empty())
-      for (const auto& [key, score] : diagrams) {
-        done += score;
-        whole += score >= 1 - 1e-9;
-        ++of;
-      }
-    SolutionGrade::Part p{"fbds", of == 0 ? 0.0 : points * done / static_cast<double>(of), points, 0, of, absent};
-    p.done = whole;
-    g.parts.push_back(p);
-    g.score += p.score;
-    g.max_score += p.max;
-  }
-  std::size_t balances = 0, balances_done = 0, constraints = 0, constraints_done = 0;
-  std::vector<std::string> balances_missing, constraints_missing, answers_missing;
-  for (const auto& l : needed) {
+  return graded("fbds", points, earned, whole, wanted.size(), absent);
+}
+
+// The balances' and the constraints' parts: the needed ones the steps give.
+void equation_parts(const Checker& checker, const Needs& needs, const Given& given, const Rubric& rubric, std::vector<SolutionGrade::Part>& out) {
+  std::size_t of[2] = {0, 0}, done[2] = {0, 0};
+  std::vector<std::string> missing[2];
+  for (const auto& l : needs.equations) {
     const Equation* e = checker.derivation_equation(l);
-    const bool balance = e && is_balance(*e);
-    (balance ? balances : constraints) += 1;
-    if (used.count(l)) (balance ? balances_done : constraints_done) += 1;
-    else (balance ? balances_missing : constraints_missing).push_back(l);
+    const int k = e && is_balance(*e) ? 0 : 1;
+    ++of[k];
+    if (given.equations.count(l)) ++done[k];
+    else missing[k].push_back(l);
   }
-  part("balances", rubric.balances, balances_done, balances, balances_missing);
-  part("constraints", rubric.constraints, constraints_done, constraints, constraints_missing);
-  std::size_t answers_done = 0;
+  const char* names[2] = {"balances", "constraints"};
+  const double points[2] = {rubric.balances, rubric.constraints};
+  const char* none[2] = {"no balance is needed for the unknowns asked", "no constraint is needed for the unknowns asked"};
+  for (int k = 0; k < 2; ++k) {
+    if (points[k] <= 0) continue;
+    if (!needs.why_not.empty()) out.push_back(not_graded(names[k], needs.why_not));
+    else if (of[k] == 0) out.push_back(not_graded(names[k], none[k]));
+    else out.push_back(graded(names[k], points[k], static_cast<double>(done[k]), done[k], of[k], missing[k]));
+  }
+}
+
+SolutionGrade::Part answers_part(const Checker& checker, const Given& given, double points) {
+  if (checker.asked().empty()) return not_graded("answers", "the problem asks for no unknown that can be checked");
+  std::size_t done = 0;
+  std::vector<std::string> missing;
   for (const auto& u : checker.asked()) {
-    answers_done += answered.count(u);
-    if (!answered.count(u)) answers_missing.push_back(u);
+    if (given.answered.count(u)) ++done;
+    else missing.push_back(u);
   }
-  part("answers", rubric.answers, answers_done, checker.asked().size(), answers_missing);
+  return graded("answers", points, static_cast<double>(done), done, checker.asked().size(), missing);
+}
+
+// Each incorrect step takes its share back: the rubric's `penalty`, else half of what one item
+// graded is worth on average; never more than the parts earned.
+void take_penalty(SolutionGrade& g, const Rubric& rubric) {
+  std::size_t items = 0;
+  for (const auto& p : g.parts)
+    if (p.not_graded.empty()) items += p.of;
+  g.penalty_each = rubric.penalty.value_or(items > 0 ? g.max_score / (2.0 * static_cast<double>(items)) : 0.0);
+  for (const auto& s : g.steps) g.wrong += s.result.verdict == Verdict::incorrect;
+  g.penalty = std::min(g.score, g.penalty_each * static_cast<double>(g.wrong));
+  g.score -= g.penalty;
+}
+
+}  // namespace
+
+SolutionGrade grade_solution(const Checker& checker, const Model& model, const std::vector<SolutionStep>& steps, const Rubric& rubric) {
+  SolutionGrade g;
+  Given given;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    g.steps.push_back(grade_step(checker, model, steps[i], rubric.fbd, given));
+    if (g.steps.back().result.verdict != Verdict::correct && !g.first_wrong) g.first_wrong = i + 1;
+  }
+  const Needs needs = needs_of(checker);
+  // Used, in the order the derivation has them (the needed ones first, then any other).
+  for (const auto& l : needs.equations) (given.equations.count(l) ? g.used : g.missing).push_back(l);
+  for (const auto& l : given.equations)
+    if (std::find(g.used.begin(), g.used.end(), l) == g.used.end()) g.used.push_back(l);
+  if (const double points = rubric.fbds.value_or(given.any_diagram ? 1.0 : 0.0); points > 0)
+    g.parts.push_back(diagrams_part(checker, model, needs, given, points));
+  equation_parts(checker, needs, given, rubric, g.parts);
+  if (rubric.answers > 0) g.parts.push_back(answers_part(checker, given, rubric.answers));
+  for (const auto& p : g.parts) {
+    g.score += p.score;
+    g.max_score += p.max;
+  }
+  take_penalty(g, rubric);
   return g;
 }
+
+namespace {
+
+std::string part_line(const SolutionGrade::Part& p) {
+  if (!p.not_graded.empty()) return fmt::format("{}: not graded: {}\n", p.name, p.not_graded);
+  return fmt::format("{}: {:g} of {:g} ({} of {})\n", p.name, p.score, p.max, p.done, p.of);
+}
+
+// What the wrong steps took: "2 incorrect steps, 0.5 points each".
+std::string penalty_phrase(const SolutionGrade& g) {
+  std::string out = fmt::format("{} incorrect step{}, {:g} points each", g.wrong, g.wrong == 1 ? "" : "s", g.penalty_each);
+  if (g.penalty < g.penalty_each * static_cast<double>(g.wrong) - 1e-12) out += "; no more than the parts earned";
+  return out;
+}
+
+}  // namespace
 
 std::string solution_text(const SolutionGrade& g) {
   std::string out;
   for (std::size_t i = 0; i < g.steps.size(); ++i) {
-    const auto& [step, r] = g.steps[i];
+    const auto& [step, r, note] = g.steps[i];
     out += fmt::format("step {} ({}): {}: {}\n", i + 1, step_name(step), verdict_name(r.verdict), r.summary);
+    if (!note.empty()) out += "  " + note + "\n";
   }
   if (g.first_wrong) out += fmt::format("first wrong step: {}\n", *g.first_wrong);
   if (!g.used.empty()) out += "used: " + join(g.used) + "\n";
   if (!g.missing.empty()) out += "missing (needed for the unknowns asked): " + join(g.missing) + "\n";
-  for (const auto& p : g.parts) out += fmt::format("{}: {:g} of {:g} ({} of {})\n", p.name, p.score, p.max, p.done, p.of);
+  for (const auto& p : g.parts) out += part_line(p);
+  if (g.wrong > 0 && g.penalty_each > 0) out += fmt::format("wrong steps: -{:g} ({})\n", g.penalty, penalty_phrase(g));
   out += fmt::format("score: {:g} of {:g}\n", g.score, g.max_score);
   return out;
 }
@@ -240,8 +349,10 @@ std::string solution_text(const SolutionGrade& g) {
 std::string solution_json(const SolutionGrade& g) {
   std::string out = "{\n  \"version\": 1,\n  \"steps\": [";
   for (std::size_t i = 0; i < g.steps.size(); ++i) {
-    const auto& [step, r] = g.steps[i];
-    out += (i ? ",\n    " : "\n    ") + result_line(r, step.text, "step " + std::to_string(i + 1));
+    const auto& [step, r, note] = g.steps[i];
+    std::string line = result_line(r, step.text, "step " + std::to_string(i + 1));
+    if (!note.empty()) line.insert(line.size() - 1, ",\"note\":" + json_quoted(note));
+    out += (i ? ",\n    " : "\n    ") + line;
   }
   out += g.steps.empty() ? "],\n" : "\n  ],\n";
   auto list = [](const std::vector<std::string>& v) {
@@ -255,30 +366,39 @@ std::string solution_json(const SolutionGrade& g) {
   out += "  \"parts\": [";
   for (std::size_t i = 0; i < g.parts.size(); ++i) {
     const auto& p = g.parts[i];
-    out += fmt::format("{}{{\"name\": {}, \"score\": {}, \"max_score\": {}, \"done\": {}, \"of\": {}}}", i ? ", " : "",
-                       json_quoted(p.name), json_number(p.score), json_number(p.max), p.done, p.of);
+    out += fmt::format("{}{{\"name\": {}, \"graded\": {}, \"score\": {}, \"max_score\": {}, \"done\": {}, \"of\": {}{}}}", i ? ", " : "",
+                       json_quoted(p.name), p.not_graded.empty() ? "true" : "false", json_number(p.score), json_number(p.max), p.done, p.of,
+                       p.not_graded.empty() ? "" : ", \"not_graded\": " + json_quoted(p.not_graded));
   }
   out += "],\n";
+  out += fmt::format("  \"wrong\": {},\n  \"penalty_each\": {},\n  \"penalty\": {},\n", g.wrong, json_number(g.penalty_each), json_number(g.penalty));
   out += "  \"score\": " + json_number(g.score) + ",\n  \"max_score\": " + json_number(g.max_score) + "\n}\n";
   return out;
 }
 
 std::string solution_results(const SolutionGrade& g, ResultsFormat format) {
-  // One test per step (feedback, no points of its own) and one per part of the rubric.
+  // One test per step (feedback, no points of its own), one per part of the rubric, and what
+  // the wrong steps took.
   const bool gradescope = format == ResultsFormat::gradescope;
   std::string tests;
   auto test = [&](const std::string& name, double score, double max, bool passed, const std::string& output) {
     tests += (tests.empty() ? "\n    " : ",\n    ") + platform_test(format, name, score, max, passed, output);
   };
   for (std::size_t i = 0; i < g.steps.size(); ++i) {
-    const auto& [step, r] = g.steps[i];
-    test("step " + std::to_string(i + 1) + ": " + step_name(step), 0, 0, r.verdict == Verdict::correct, verdict_name(r.verdict) + ": " + r.summary);
+    const auto& [step, r, note] = g.steps[i];
+    test("step " + std::to_string(i + 1) + ": " + step_name(step), 0, 0, r.verdict == Verdict::correct,
+         verdict_name(r.verdict) + ": " + r.summary + (note.empty() ? "" : "; " + note));
   }
   for (const auto& p : g.parts) {
+    if (!p.not_graded.empty()) {
+      test(p.name, 0, 0, true, "not graded: " + p.not_graded);
+      continue;
+    }
     std::string output = fmt::format("{} of {}", p.done, p.of);
     if (!p.missing.empty()) output += (p.name == "answers" ? "; not answered: " : "; missing: ") + join(p.missing);
     test(p.name, p.score, p.max, p.score >= p.max, output);
   }
+  if (g.wrong > 0 && g.penalty_each > 0) test("wrong steps", -g.penalty, 0, false, penalty_phrase(g));
   std::string out = "{\n  \"tests\": [" + tests + (tests.empty() ? "],\n" : "\n  ],\n");
   const std::string said = fmt::format("{:g} of {:g} points", g.score, g.max_score);
   if (gradescope) out += "  \"score\": " + json_number(g.score) + ",\n  \"output\": " + json_quoted(said) + "\n}\n";

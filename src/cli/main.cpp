@@ -420,7 +420,7 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
   }
   if (!o.fbd.empty()) {
     const tackle::StudentFbd fbd = tackle::read_fbd_file(tackle::read_text_file(o.fbd), o.fbd, analysis->model);
-    const tackle::Rubric rubric = o.rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(tackle::read_text_file(o.rubric), o.rubric);
+    const tackle::Rubric rubric = o.rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(tackle::read_text_file(o.rubric), o.rubric, analysis->model);
     std::vector<tackle::Diagnostic> problems;
     const tackle::FbdGrade grade = tackle::check_fbd(analysis->model, fbd, rubric.fbd, problems);
     if (!problems.empty()) throw tackle::InputError(problems);  // a name the problem does not have
@@ -428,7 +428,7 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
   }
   if (!o.steps.empty()) {
     const auto solution = tackle::read_solution(tackle::read_text_file(o.steps), o.steps, analysis->model);
-    const tackle::Rubric rubric = o.rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(tackle::read_text_file(o.rubric), o.rubric);
+    const tackle::Rubric rubric = o.rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(tackle::read_text_file(o.rubric), o.rubric, analysis->model);
     const tackle::SolutionGrade grade = tackle::grade_solution(checker, analysis->model, solution, rubric);
     if (!o.results.empty()) {
       const auto format = o.results_format == "prairielearn" ? tackle::ResultsFormat::prairielearn : tackle::ResultsFormat::gradescope;
@@ -591,7 +591,7 @@ int run(int argc, char** argv) {
     fbd_opt = check->add_option("--fbd", o.fbd,
                                 "A free body diagram the student drew (YAML: body: B, forces: [{name: T, at: pB, direction: [-1]}]): "
                                 "each force drawn, missing, extra or the wrong way, and a score");
-    check->add_option("--rubric", o.rubric, "With --steps or --fbd: points for FBDs, balances, constraints and answers, and how an FBD is scored (YAML)");
+    check->add_option("--rubric", o.rubric, "With --steps or --fbd: points for FBDs, balances, constraints and answers, what a wrong step costs, and how an FBD is scored (YAML)");
     batch_opt = check->add_option("--batch", o.batch, "JSON Lines file of {\"id\", \"unknown\", \"answer\"}, {\"id\", \"equation\"} or {\"id\", \"fbd\"} "
                                                       "(- for standard input)");
     auto* results_opt = check->add_option("--results", o.results, "With --batch or --steps: also write a grading platform's results file");

@@ -127,7 +127,7 @@ class Problem {
   [[nodiscard]] py::object check_fbd(const py::object& fbd, const std::string& rubric) const {
     const std::string text = py::isinstance<py::str>(fbd) ? fbd.cast<std::string>() : py::module_::import("json").attr("dumps")(fbd).cast<std::string>();
     const tackle::StudentFbd student = tackle::read_fbd_file(text, "fbd", analysis_->model);
-    const tackle::Rubric r = rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(rubric, "rubric");
+    const tackle::Rubric r = rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(rubric, "rubric", analysis_->model);
     std::vector<tackle::Diagnostic> problems;
     const tackle::FbdGrade g = tackle::check_fbd(analysis_->model, student, r.fbd, problems);
     if (!problems.empty()) throw tackle::InputError(problems);
@@ -142,7 +142,7 @@ class Problem {
     if (results_format == "prairielearn") format = tackle::ResultsFormat::prairielearn;
     else if (results_format != "gradescope") throw py::value_error("results_format '" + results_format + "' (expected gradescope or prairielearn)");
     const auto steps = tackle::read_solution(solution, "solution", analysis_->model);
-    const tackle::Rubric r = rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(rubric, "rubric");
+    const tackle::Rubric r = rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(rubric, "rubric", analysis_->model);
     const tackle::SolutionGrade g = tackle::grade_solution(checker, analysis_->model, steps, r);
     return py::make_tuple(py::module_::import("json").attr("loads")(tackle::solution_json(g)), tackle::solution_results(g, format));
   }

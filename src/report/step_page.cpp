@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "expr/print.hpp"
 #include "report/html.hpp"
 #include "report/sheet.hpp"
 
@@ -103,11 +104,15 @@ document.addEventListener("DOMContentLoaded", function () {
   }
   function forceRow(row, f) {
     const tr = el("tr", {class: "force"});
-    const name = el("input", {class: "name", type: "text", placeholder: "T", "aria-label": "force's name"});
+    const name = el("input", {class: "name", type: "text", placeholder: P.hints.force, "aria-label": "force's name"});
     name.value = f.name || "";
     const remove = el("button", {type: "button", class: "remove"}, "\u00d7");
     remove.addEventListener("click", function () { tr.remove(); changed(row); });
-    tr.append(el("td", {}, name), el("td", {}, pointField(f.at || "")), el("td", {}, directionField(f.dir || "")), el("td", {}, remove));
+    const kind = el("select", {class: "kind", "aria-label": "kind of force"});
+    kind.append(option("", "(not said)", !f.kind));
+    for (const k of ["weight", "tension", "spring", "damper", "applied", "support"]) kind.append(option(k, k, f.kind === k));
+    tr.append(el("td", {}, name), el("td", {}, pointField(f.at || "")), el("td", {}, directionField(f.dir || "")), el("td", {}, kind),
+              el("td", {}, remove));
     for (const input of tr.querySelectorAll("input, select")) input.addEventListener("input", function () { changed(row); });
     return tr;
   }
@@ -135,6 +140,8 @@ document.addEventListener("DOMContentLoaded", function () {
       const f = {name: tr.querySelector("input.name").value};
       const at = tr.querySelector("select.at").value;
       if (at) f.at = at;
+      const kind = tr.querySelector("select.kind").value;
+      if (kind) f.kind = kind;
       Object.assign(f, direction(tr.querySelector(".dir").value));
       forces.push(f);
     }
@@ -188,15 +195,20 @@ document.addEventListener("DOMContentLoaded", function () {
     row.append(el("div", {class: "head"}, el("span", {class: "kind"}, kindName[kind]), remove));
     const fields = el("div", {class: "fields"});
     if (kind === "equation" || kind === "answer") {
+      const input = el("input", {class: "text", type: "text", spellcheck: "false", autocomplete: "off",
+                                 placeholder: kind === "equation" ? P.hints.equation : "", "aria-label": kindName[kind]});
       if (kind === "answer") {
+        // The hint: the problem's own parameters, or a number in the chosen unknown's unit.
         const s = el("select", {class: "unknown", "aria-label": "unknown"});
         for (const u of P.unknowns) s.append(option(u.name, u.name, init.unknown === u.name));
-        s.addEventListener("change", function () { changed(row); });
+        const hint = function () {
+          const u = P.unknowns.find(function (x) { return x.name === s.value; });
+          input.placeholder = P.hints.answer + (u && u.unit ? (P.hints.answer ? ", or " : "") + "a number in " + u.unit : "");
+        };
+        s.addEventListener("change", function () { hint(); changed(row); });
+        hint();
         fields.append(s, " = ");
       }
-      const input = el("input", {class: "text", type: "text", spellcheck: "false", autocomplete: "off",
-                                 placeholder: kind === "equation" ? "2*T - F = m_A*ddot(x_A)" : "2*F*m_B/(9*m_A + 4*m_B), or 20 N",
-                                 "aria-label": kindName[kind]});
       input.value = init.text || "";
       input.addEventListener("input", function () { changed(row); });
       fields.append(input);
@@ -206,7 +218,8 @@ document.addEventListener("DOMContentLoaded", function () {
       s.addEventListener("change", function () { changed(row); });
       const table = el("table", {class: "forces"});
       table.append(el("tr", {}, el("th", {}, "force"), el("th", {}, "at"),
-                       el("th", {}, P.dims === 1 ? "direction" : P.dims === 2 ? "direction (degrees from " + P.axes[0] + ")" : "direction"), el("th")));
+                       el("th", {}, P.dims === 1 ? "direction" : P.dims === 2 ? "direction (degrees from " + P.axes[0] + ")" : "direction"),
+                       el("th", {}, "kind"), el("th")));
       for (const f of init.forces || [{}]) table.append(forceRow(row, f));
       const add = el("button", {type: "button"}, "Add a force");
       add.addEventListener("click", function () { table.append(forceRow(row, {})); });
@@ -244,13 +257,18 @@ document.addEventListener("DOMContentLoaded", function () {
     gradeBox.setAttribute("data-score", g.score + "/" + g.max_score);
     gradeBox.append(el("h2", {}, "Grade"), el("p", {class: "score"}, "Score: " + Number(g.score.toFixed(3)) + " of " + g.max_score));
     const ol = el("ol");
-    for (const s of g.steps) ol.append(el("li", {}, el("span", {class: "badge", "data-verdict": s.verdict}, s.verdict), " " + (s.summary || "")));
+    for (const s of g.steps) ol.append(el("li", {}, el("span", {class: "badge", "data-verdict": s.verdict}, s.verdict), " " + (s.summary || "") + (s.note ? " (" + s.note + ")" : "")));
     if (g.steps.length) gradeBox.append(ol);
     if (g.first_wrong) gradeBox.append(el("p", {}, "First step that is not correct: " + g.first_wrong + "."));
     gradeBox.append(el("p", {}, "Used: " + (g.used.length ? g.used.join(", ") : "none") + "."),
                     el("p", {class: "missing"}, "Missing (needed for the unknowns asked): " + (g.missing.length ? g.missing.join(", ") : "none") + "."));
     const t = el("table", {}, el("tr", {}, el("th", {}, "part"), el("th", {}, "points"), el("th", {}, "done")));
-    for (const p of g.parts) t.append(el("tr", {}, el("td", {}, p.name), el("td", {}, Number(p.score.toFixed(3)) + " of " + p.max_score), el("td", {}, p.done + " of " + p.of)));
+    for (const p of g.parts) {
+      if (p.graded) t.append(el("tr", {}, el("td", {}, p.name), el("td", {}, Number(p.score.toFixed(3)) + " of " + p.max_score), el("td", {}, p.done + " of " + p.of)));
+      else t.append(el("tr", {class: "not-graded"}, el("td", {}, p.name), el("td", {}, "not graded"), el("td", {}, p.not_graded)));
+    }
+    if (g.wrong && g.penalty) t.append(el("tr", {class: "wrong-steps"}, el("td", {}, "wrong steps"), el("td", {}, "\u2212" + Number(g.penalty.toFixed(3))),
+                                          el("td", {}, g.wrong + " incorrect")));
     gradeBox.append(t);
   }
 
@@ -280,7 +298,7 @@ document.addEventListener("DOMContentLoaded", function () {
         for (const x of Array.isArray(f.forces) ? f.forces : []) {
           const dir = x.direction === "any" ? "any" : x.angle !== undefined ? String(x.angle)
                     : Array.isArray(x.direction) ? (P.dims === 1 ? (x.direction[0] < 0 ? "-1" : "+1") : x.direction.join(", ")) : "";
-          forces.push({name: String(x.name || ""), at: String(x.at || ""), dir: dir});
+          forces.push({name: String(x.name || ""), at: String(x.at || ""), dir: dir, kind: String(x.kind || "")});
         }
         first.push(addStep("fbd", {body: String(f.body || ""), forces: forces}));
       }
@@ -303,6 +321,44 @@ std::string connect_sources(const std::string& endpoint) {
       out += " " + endpoint.substr(0, slash);
     }
   return out;
+}
+
+// The equation hint: the problem's first balance by its name, and its inertial side where that
+// gives nothing away (nothing, or a body's mass times its coordinate's acceleration: what the
+// forces add up to; the forces are the student's to find); else the first constraint's.
+std::string equation_hint(const Derivation& d, const Model& m) {
+  for (const Equation& e : d.equations) {
+    if (e.kind != Equation::Kind::lmb && e.kind != Equation::Kind::amb) continue;
+    bool plain = e.rhs.is_zero();
+    if (e.bodies.size() == 1 && !e.system) {
+      const Body& b = m.bodies[static_cast<std::size_t>(e.bodies.front())];
+      plain = plain || (GiNaC::is_a<GiNaC::symbol>(b.accel) && (e.rhs - b.mass * b.accel).expand().is_zero());
+    }
+    return e.label + ": ... = " + (plain ? to_text(e.rhs) : std::string("..."));
+  }
+  for (const Equation& e : d.equations)
+    if (e.kind == Equation::Kind::constraint_acceleration) return e.label + ": ... = 0";
+  return "";
+}
+
+// The hints the form shows, from the problem itself, never from another: its first balance
+// (equation_hint), the parameters an answer is written in, the name of its first unknown force.
+nlohmann::ordered_json hints(const Derivation& d, const Model& m) {
+  nlohmann::ordered_json h{{"equation", equation_hint(d, m)}, {"answer", ""}, {"force", ""}};
+  std::vector<std::string> names;
+  for (const auto& p : d.parameters)
+    if (p.kind == "parameter" || p.kind == "given") names.push_back(p.name);
+  if (!names.empty())
+    h["answer"] = "in " + join(std::vector<std::string>(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(names.size(), 4)))) +
+                  (names.size() > 4 ? ", ..." : "");
+  for (const auto& u : d.unknowns) {
+    const SymbolInfo* s = m.symbols ? m.symbols->find(u) : nullptr;
+    if (s && s->dimension && *s->dimension == Dimension::force()) {
+      h["force"] = s->name;
+      break;
+    }
+  }
+  return h;
 }
 
 }  // namespace
@@ -335,7 +391,8 @@ std::string step_page(const Derivation& d, const Model& m, const std::string& en
   config["bodies"] = nlohmann::json::array();
   for (const auto& b : m.bodies) config["bodies"].push_back(b.name);
   config["unknowns"] = nlohmann::json::array();
-  for (const auto& a : d.answers) config["unknowns"].push_back({{"name", a.name}, {"tex", a.tex}});
+  for (const auto& a : d.answers) config["unknowns"].push_back({{"name", a.name}, {"tex", a.tex}, {"unit", a.value ? a.value->unit : ""}});
+  config["hints"] = hints(d, m);
   // In a script element: no "</script>" (nor "<!--") can end it early.
   std::string json;
   for (char c : config.dump()) json += c == '<' ? std::string("\\u003c") : std::string(1, c);
@@ -356,9 +413,17 @@ std::string step_page(const Derivation& d, const Model& m, const std::string& en
 
   std::string body = "<h1>" + html_escape(d.title) + "</h1>\n" + sheet_problem_html(SheetEntry{&d, &m, {}});
   body += "<div class=\"tryit\">\n<h2>Your solution</h2>\n";
-  body += "<p class=\"names\">Write each step as you would on paper, one a line: an equation (a balance, a length sum "
-          "<code>3*x_B - 2*x_A = const</code> or its derivatives), a final answer, or a free body diagram. Each is checked "
-          "as you type. Names: " + typed + "; <code>dot(x)</code> and <code>ddot(x)</code> for rates and accelerations.</p>\n";
+  // What an equation may be: a constraint held constant only where the problem has one.
+  const std::string equations = m.constraints.empty() ? "a balance" : "a balance, a quantity held constant (<code>... = const</code>, in the "
+                                                                      "positions) or its derivatives";
+  // Rates and accelerations, shown on the problem's own first coordinate.
+  std::string rates;
+  for (const auto& b : m.bodies)
+    for (const GiNaC::ex& q : {b.coord, b.angle})
+      if (const SymbolInfo* s = m.symbols && !q.is_zero() ? m.symbols->find(q) : nullptr; s && rates.empty())
+        rates = "; <code>dot(" + html_escape(s->name) + ")</code> and <code>ddot(" + html_escape(s->name) + ")</code> for its rate and acceleration";
+  body += "<p class=\"names\">Write each step as you would on paper, one a line: an equation (" + equations +
+          "), a final answer, or a free body diagram. Each is checked as you type. Names: " + typed + rates + ".</p>\n";
   body += "<ol class=\"steps\" id=\"steps\"></ol>\n<div class=\"buttons\" id=\"add\"></div>\n<div id=\"grade\" aria-live=\"polite\"></div>\n";
   body += "<p class=\"notice\">Checked by tackle; a verdict names what is wrong in words of physics and never shows the "
           "correct equation.</p>\n</div>\n";

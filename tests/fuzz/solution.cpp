@@ -55,7 +55,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const tackle::InputError&) {
   }
   try {
-    (void)tackle::read_rubric(text, "rubric.yaml");
+    (void)tackle::read_rubric(text, "rubric.yaml", p.analysis->model);
   } catch (const tackle::InputError&) {
   }
   return 0;

@@ -146,18 +146,26 @@ class PrairieLearnSolutionTest(unittest.TestCase):
     def test_partial_solution(self):
         server = load_server("pulley-solution")
         # LMB A right, B's balance a strand short, no constraint, T right as a number: balances
-        # 1 of 2 (2 of 4 points), constraints 0 of 1 (0 of 2), answers 1 of 1 (4 of 4): 6 of 10.
+        # 1 of 2 (2 of 4 points), constraints 0 of 1 (0 of 2), answers 1 of 1 (4 of 4): 6 of 10,
+        # less the wrong step's share, 10 points over twice the 4 items: 4.75 of 10.
         data = self.submit(server, {"step1": LMB_A, "step2": LMB_B_TWO_STRANDS, "T": "20 N"})
         self.assertEqual(data["format_errors"], {})
-        self.assertAlmostEqual(data["score"], 0.6)
+        self.assertAlmostEqual(data["score"], 0.475)
+        self.assertIn("1 incorrect step: -1.25", data["feedback"]["solution"])
         self.assertEqual(data["partial_scores"]["step2"]["score"], 0.0)
         self.assertIn("a strand of string s at pB is missing", data["feedback"]["step2"])
         self.assertNotIn("3*T", data["feedback"]["step2"])  # never the correct equation
         self.assertIn("LMB B (x)", data["feedback"]["solution"])
         self.assertIn("string s: acceleration", data["feedback"]["solution"])
-        # Nothing written but T: the answer's points only.
+        # Nothing written but T: the answer's points only; and T restated as an equation as well:
+        # still the answer's points only (it is derived from the balances, not written as them).
         data = self.submit(server, {"T": T_CLOSED})
         self.assertAlmostEqual(data["score"], 0.4)
+        data = self.submit(server, {"step1": "T = " + T_CLOSED, "T": T_CLOSED})
+        self.assertAlmostEqual(data["score"], 0.4)
+        self.assertIn("it earns no balance or constraint points", data["feedback"]["step1"])
+        # Nothing at all: nothing.
+        self.assertEqual(self.submit(server, {})["score"], 0.0)
 
     def test_unreadable_steps_are_format_errors(self):
         server = load_server("pulley-solution")
@@ -198,10 +206,11 @@ class GradescopeSolutionTest(unittest.TestCase):
 
     def test_partial_solution(self):
         # A's diagram right, B's missing: 1 of 2; LMB A right, B's a strand short: 1.5 of 3; no
-        # constraint: 0 of 2; T right as a number: 3 of 3. 5.5 in all.
+        # constraint: 0 of 2; T right as a number: 3 of 3. 5.5, less the wrong step's share: 10
+        # points over twice the 6 items (2 diagrams, 2 balances, 1 constraint, 1 answer).
         r = self.run_autograder([{"fbd": FBD_A}, {"equation": LMB_A}, {"equation": LMB_B_TWO_STRANDS}, {"answer": "20 N", "unknown": "T"}])
-        self.assertEqual(self.parts(r), {"fbds": 1, "balances": 1.5, "constraints": 0, "answers": 3})
-        self.assertEqual(r["score"], 5.5)
+        self.assertEqual(self.parts(r), {"fbds": 1, "balances": 1.5, "constraints": 0, "answers": 3, "wrong steps": -10 / 12})
+        self.assertAlmostEqual(r["score"], 5.5 - 10 / 12)
         wrong = [t for t in r["tests"] if t["name"].startswith("step 3")][0]
         self.assertEqual(wrong["status"], "failed")
         self.assertIn("a strand of string s at pB is missing", wrong["output"])
@@ -327,28 +336,81 @@ class StepServerTest(unittest.TestCase):
         status, g = self.server.post("/solution", {"steps": [{"fbd": {"body": "Q", "forces": []}}]})
         self.assertEqual((status, g["verdict"]), (200, "invalid"))
 
+    def refused(self, status, method, path, body=None, headers=None):
+        """The request is answered `status` with {"error": "..."}; the message."""
+        got, content_type, data = self.server.request(method, path, body, headers)
+        self.assertEqual(got, status, data[:300])
+        self.assertTrue(content_type.startswith("application/json"), content_type)
+        return json.loads(data)["error"]
+
+    def raw(self, request):
+        """`request` sent as bytes, the sending side then closed: the status line and the body."""
+        c = socket.create_connection(("127.0.0.1", self.server.port), timeout=30)
+        c.sendall(request)
+        c.shutdown(socket.SHUT_WR)
+        answer = b""
+        while True:
+            chunk = c.recv(4096)
+            if not chunk:
+                break
+            answer += chunk
+        c.close()
+        head, _, body = answer.partition(b"\r\n\r\n")
+        return head.split(b"\r\n")[0], body
+
     def test_bad_requests(self):
         s = self.server
-        self.assertEqual(s.request("POST", "/step", "x" * (64 * 1024 + 1))[0], 413)
-        self.assertEqual(s.request("POST", "/step", "{not json")[0], 400)
-        self.assertEqual(s.request("POST", "/step", "[1, 2]")[0], 400)
-        self.assertEqual(s.request("POST", "/step", b"\xff\xfe")[0], 400)
-        self.assertEqual(s.request("POST", "/step", json.dumps({"kind": "poem"}))[0], 400)
-        self.assertEqual(s.request("POST", "/step", json.dumps({"kind": "equation", "equation": 3}))[0], 400)
-        self.assertEqual(s.request("POST", "/step", json.dumps({"kind": "fbd", "fbd": "B"}))[0], 400)
-        self.assertEqual(s.request("POST", "/solution", json.dumps({"steps": "all"}))[0], 400)
-        self.assertEqual(s.request("POST", "/elsewhere", "{}")[0], 404)
-        self.assertEqual(s.request("GET", "/etc/passwd")[0], 404)
-        self.assertEqual(s.request("PUT", "/step", "{}")[0], 405)
+        self.refused(413, "POST", "/step", "x" * (64 * 1024 + 1))
+        self.assertEqual(self.refused(400, "POST", "/step", "{not json"), "the request is not JSON (UTF-8)")
+        self.assertEqual(self.refused(400, "POST", "/step", "[1, 2]"), "the request is not a JSON object")
+        self.refused(400, "POST", "/step", b"\xff\xfe")
+        self.assertEqual(self.refused(400, "POST", "/step", "[" * 5000 + "]" * 5000), "the request's JSON is nested too deeply")
+        self.assertEqual(self.refused(400, "POST", "/step", '{"kind": "fbd", "fbd": {"body": "B", "forces": [{"direction": [NaN]}]}}'),
+                         "the request is not JSON (UTF-8)")
+        self.assertEqual(self.refused(400, "POST", "/step", json.dumps({"kind": "poem"})), "'kind' must be equation, answer or fbd")
+        self.assertEqual(self.refused(400, "POST", "/step", json.dumps({"kind": "equation", "equation": 3})), "'equation' must be a string")
+        self.assertEqual(self.refused(400, "POST", "/step", '{"kind": "equation", "equation": "T = \\ud800"}'),
+                         "'equation' is not text (it has a lone surrogate)")
+        self.assertEqual(self.refused(400, "POST", "/step", json.dumps({"kind": "fbd", "fbd": "B"})), "'fbd' must be an object (body, forces)")
+        self.assertEqual(self.refused(400, "POST", "/solution", json.dumps({"steps": "all"})), "'steps' must be a list")
+        self.assertEqual(self.refused(400, "POST", "/solution", json.dumps({"steps": [{"equation": LMB_A}, 3]})),
+                         'step 2 must be an object ({"equation": ...}, {"answer": ..., "unknown": ...} or {"fbd": {...}})')
+        self.assertEqual(self.refused(400, "POST", "/solution", json.dumps({"steps": [{"answer": 20, "unknown": "T"}]})),
+                         "step 1: 'answer' must be a string")
+        self.assertEqual(self.refused(400, "POST", "/solution", json.dumps({"steps": [{"fbd": []}]})), "step 1: 'fbd' must be an object (body, forces)")
+        self.refused(404, "POST", "/elsewhere", "{}")
+        self.refused(404, "GET", "/etc/passwd")
+        self.refused(405, "PUT", "/step", "{}")
+        self.refused(405, "OPTIONS", "/step")
+        self.refused(405, "BREW", "/step")
         # A name that is not this machine's (DNS rebinding).
-        self.assertEqual(s.request("GET", "/", headers={"Host": "attacker.example:80"})[0], 403)
-        # No Content-Length: refused, not waited for.
-        c = socket.create_connection(("127.0.0.1", s.port), timeout=30)
-        c.sendall(b"POST /step HTTP/1.1\r\nHost: 127.0.0.1\r\nTransfer-Encoding: chunked\r\n\r\n5\r\nhello\r\n0\r\n\r\n")
-        self.assertIn(b" 411 ", c.recv(200))
-        c.close()
+        self.refused(403, "GET", "/", headers={"Host": "attacker.example:80"})
+        # No Content-Length, two of them, or one that is not a number: refused, not waited for;
+        # a body shorter than it says, or a request line that cannot be read: refused too.
+        status, body = self.raw(b"POST /step HTTP/1.1\r\nHost: 127.0.0.1\r\nTransfer-Encoding: chunked\r\n\r\n5\r\nhello\r\n0\r\n\r\n")
+        self.assertEqual((status, json.loads(body)["error"]), (b"HTTP/1.0 411 Length Required", "send the body with a Content-Length"))
+        for lengths in (b"Content-Length: 2\r\nContent-Length: 2\r\n", b"Content-Length: -1\r\n", b"Content-Length: 1e3\r\n"):
+            status, body = self.raw(b"POST /step HTTP/1.1\r\nHost: 127.0.0.1\r\n" + lengths + b"\r\n{}")
+            self.assertEqual((status, json.loads(body)["error"]), (b"HTTP/1.0 400 Bad Request", "the Content-Length is not one whole number"))
+        status, body = self.raw(b"POST /step HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: 100\r\n\r\n{}")
+        self.assertEqual((status, json.loads(body)["error"]), (b"HTTP/1.0 408 Request Timeout", "the request's body is shorter than its Content-Length"))
+        status, body = self.raw(b"POST /step HTTP/1.1 extra\r\n\r\n")
+        self.assertEqual(status, b"HTTP/1.0 400 Bad Request")
+        self.assertIn("error", json.loads(body))
         # The server is still there.
         self.assertEqual(self.step({"kind": "equation", "equation": LMB_A})["verdict"], "correct")
+
+    def test_cross_origin_posts_are_refused(self):
+        # A page of another origin (a browser says where it comes from): refused before it is read.
+        body = json.dumps({"kind": "equation", "equation": LMB_A})
+        for headers in ({"Origin": "http://attacker.example"}, {"Origin": "null"}, {"Sec-Fetch-Site": "cross-site"},
+                        {"Origin": "http://127.0.0.1:%d" % (self.server.port + 1)}):
+            self.assertEqual(self.refused(403, "POST", "/step", body, headers), "a page of another origin may not post here")
+        # The page's own origin, by either of this machine's names, and a client that says none.
+        for headers in ({"Origin": "http://127.0.0.1:%d" % self.server.port}, {"Origin": "http://localhost:%d" % self.server.port},
+                        {"Sec-Fetch-Site": "same-origin"}, {}):
+            status, _, data = self.server.request("POST", "/step", body, headers)
+            self.assertEqual((status, json.loads(data)["verdict"]), (200, "correct"), headers)
 
 
 class RecordingProxy:
@@ -436,9 +498,13 @@ class PageInChromiumTest(unittest.TestCase):
         for echo in echoes:
             self.assertIn('class="katex"', echo)
         # The whole solution graded (no rubric: 1 point a part): LMB A used, LMB B and the
-        # string's acceleration missing: balances 1 of 2, constraints 0 of 1, answers 0 of 3.
-        self.assertRegex(dom, r'id="grade"[^>]*data-score="0.5/3"')
+        # string's acceleration missing: balances 1 of 2, constraints 0 of 1, answers 0 of 3,
+        # 0.5 points; the wrong step takes a quarter back (3 points over twice the 6 items).
+        self.assertRegex(dom, r'id="grade"[^>]*data-score="0.25/3"')
         self.assertIn("LMB B (x), string s: acceleration", dom)
+        self.assertIn('<tr class="wrong-steps"><td>wrong steps</td><td>\u22120.25</td><td>1 incorrect</td></tr>', dom)
+        # The hint in each equation's field is this problem's own first balance, its forces left out.
+        self.assertIn('placeholder="LMB A (x): ... = m_A*ddot(x_A)"', dom)
         # The server saw the page, the two steps and the solution only.
         self.assertEqual(sorted(requests), ["GET /", "POST /solution", "POST /step", "POST /step"])
 
@@ -447,17 +513,23 @@ class PageInChromiumTest(unittest.TestCase):
         # points down (270 degrees from x), each normal force up (90), each friction force
         # against the sliding (180).
         right = {"body": "suitcase", "forces": [
-            {"name": "W", "at": "suitcase", "angle": 270}, {"name": "N_A", "at": "A", "angle": 90},
+            {"name": "W", "at": "suitcase", "angle": 270, "kind": "weight"}, {"name": "N_A", "at": "A", "angle": 90},
             {"name": "F_A", "at": "A", "angle": 180}, {"name": "N_B", "at": "B", "angle": 90},
             {"name": "F_B", "at": "B", "angle": 180}]}
         wrong = json.loads(json.dumps(right))
         wrong["forces"][4]["angle"] = 0  # friction at B along the sliding
-        dom, requests = self.open_page("sample-12.7-suitcase.yaml", [("fbd", json.dumps(right)), ("fbd", json.dumps(wrong))])
+        # The weight said to be a support's force: it is none of the suitcase's (the kind chosen
+        # in the form reaches the checker).
+        misnamed = json.loads(json.dumps(right))
+        misnamed["forces"][0]["kind"] = "support"
+        dom, requests = self.open_page("sample-12.7-suitcase.yaml",
+                                       [("fbd", json.dumps(right)), ("fbd", json.dumps(wrong)), ("fbd", json.dumps(misnamed))])
         verdicts = re.findall(r'<li class="step" data-kind="fbd" data-verdict="(\w+)"', dom)
-        self.assertEqual(verdicts, ["correct", "incorrect"])
+        self.assertEqual(verdicts, ["correct", "incorrect", "incorrect"])
         self.assertIn("your F_B stands for", dom)
         self.assertIn("points the other way", dom)
-        self.assertEqual(sorted(requests), ["GET /", "POST /step", "POST /step"])
+        self.assertIn("the weight of suitcase is missing", dom)
+        self.assertEqual(sorted(requests), ["GET /", "POST /step", "POST /step", "POST /step"])
 
 
 class ScaleOutTest(unittest.TestCase):

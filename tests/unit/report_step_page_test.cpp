@@ -25,6 +25,14 @@ std::string page_of(const std::string& example, const std::string& endpoint = ""
   return step_page(explain(*a), a->model, endpoint);
 }
 
+// A block pushed along a smooth floor by F, its title and statement left to each test.
+const char* const pushed_block = R"(axes: [x]
+parameters: {F: {value: 10, unit: N}, m: {value: 2, unit: kg}}
+bodies: {A: {mass: m, position: x}}
+loads: [{on: A, force: F}]
+find: [ddot(x)]
+)";
+
 }  // namespace
 
 TEST_CASE("Step page: sample 12.3's statement with its numbers, its sketch, its points, bodies and unknowns", "[page]") {
@@ -53,6 +61,30 @@ TEST_CASE("Step page: sample 12.3's statement with its numbers, its sketch, its 
     CHECK(page.find(elsewhere) == std::string::npos);
 }
 
+TEST_CASE("Step page: its hints are the problem's own, never another example's", "[page]") {
+  // Sample 12.3 by hand: its first balance is LMB A (x), 2T - F = m_A ddot(x_A), whose forces
+  // are the student's to find; its parameters F, m_A, m_B; its unknown force T (N).
+  const auto c = config_of(page_of("sample-12.3-two-mass-pulley.yaml"));
+  CHECK(c["hints"] == nlohmann::json::parse(R"J({"equation": "LMB A (x): ... = m_A*ddot(x_A)", "answer": "in F, m_A, m_B", "force": "T"})J"));
+  CHECK(c["unknowns"][0]["unit"] == "N");
+  CHECK(c["unknowns"][1]["unit"] == "m/s^2");
+  // The incline: its first balance, LMB A (x), has the incline's projection on its inertial
+  // side (m_A ddot(s) cos(theta)), which the hint keeps back; sample 12.3's names appear nowhere.
+  const std::string incline = page_of("incline-and-hanging-block.yaml");
+  CHECK(config_of(incline)["hints"] ==
+        nlohmann::json::parse(R"J({"equation": "LMB A (x): ... = ...", "answer": "in m_A, m_B, g, theta, ...", "force": "N_A"})J"));
+  for (const char* other : {"x_A", "x_B", "2*F", "3*x_B"}) CHECK(incline.find(other) == std::string::npos);
+  CHECK(incline.find("<code>dot(s)</code> and <code>ddot(s)</code> for its rate and acceleration") != std::string::npos);
+  // Sample 12.2 needs no balance (its string alone): the hint is its constraint's, with no force.
+  CHECK(config_of(page_of("sample-12.2-pulley-kinematics.yaml"))["hints"] ==
+        nlohmann::json::parse(R"J({"equation": "string s: acceleration: ... = 0", "answer": "in d", "force": ""})J"));
+  // A problem with no quantity held constant is not offered one.
+  const auto a = test::run_text(std::string("title: pushed\n") + pushed_block);
+  const std::string pushed = step_page(explain(*a), a->model);
+  CHECK(pushed.find("an equation (a balance), a final answer") != std::string::npos);
+  CHECK(pushed.find("<code>... = const</code>") == std::string::npos);
+}
+
 TEST_CASE("Step page: a 2-D problem's form asks for angles; an endpoint elsewhere is the one other source", "[page]") {
   const std::string page = page_of("sample-12.7-suitcase.yaml", "http://127.0.0.1:8123/tackle/");
   const auto c = config_of(page);
@@ -64,12 +96,7 @@ TEST_CASE("Step page: a 2-D problem's form asks for angles; an endpoint elsewher
 TEST_CASE("Step page: no text from the description reaches the page as HTML", "[page]") {
   const auto a = test::run_text(R"(title: "A <b>bold</b> title </script>"
 statement: "Pull with {F}. <script>alert(1)</script> <img src=x onerror=alert(2)> & $a < b$"
-axes: [x]
-parameters: {F: {value: 10, unit: N}, m: {value: 2, unit: kg}}
-bodies: {A: {mass: m, position: x}}
-loads: [{on: A, force: F}]
-find: [ddot(x)]
-)");
+)" + std::string(pushed_block));
   const std::string page = step_page(explain(*a), a->model);
   CHECK(page.find("<script>alert") == std::string::npos);
   CHECK(page.find("<img src=x") == std::string::npos);

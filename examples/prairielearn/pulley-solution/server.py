@@ -9,7 +9,8 @@ parse():    a step or an answer tackle cannot read (a syntax error, no `=`, an u
             number without its unit) is a format error: the submission is invalid and costs no
             attempt.
 grade():    each step's verdict and summary as its feedback (never the correct equation), the
-            rubric's parts (balances, constraints, answers) and the score, in proportion."""
+            rubric's parts (balances, constraints, answers), what the incorrect steps took,
+            and the score, in proportion."""
 import json
 import os
 
@@ -71,9 +72,14 @@ def grade(data):
     g, _ = _problem().check_solution(solution, rubric=rubric, results_format="prairielearn")
     for (name, _), result in zip(submitted, g["steps"]):
         feedback = "%s: %s" % (result["verdict"], result["summary"])
+        if result.get("note"):  # a correct step that earns nothing for the balances (derived from them)
+            feedback += "; " + result["note"]
         data["partial_scores"][name] = {"score": 1.0 if result["verdict"] == "correct" else 0.0, "weight": 0, "feedback": feedback}
         data["feedback"][name] = feedback
-    parts = "; ".join("%s %g of %g" % (p["name"], p["score"], p["max_score"]) for p in g["parts"])
+    parts = "; ".join("%s %g of %g" % (p["name"], p["score"], p["max_score"]) if p["graded"]
+                      else "%s not graded (%s)" % (p["name"], p["not_graded"]) for p in g["parts"])
+    if g["wrong"] and g["penalty"]:
+        parts += "; %d incorrect step%s: -%g" % (g["wrong"], "" if g["wrong"] == 1 else "s", g["penalty"])
     missing = ", ".join(g["missing"]) or "none"
     data["feedback"]["solution"] = "%s. Missing (needed for T): %s." % (parts, missing)
     data["score"] = g["score"] / g["max_score"] if g["max_score"] > 0 else 0.0
