@@ -58,8 +58,15 @@ void narrate_always(Narrator& n, const std::string& lead, const ex& shown, const
   const auto found = distinct_symbols(expr);
   const std::unordered_set<ex, ExHash, ex_is_equal> present(found.begin(), found.end());
   std::vector<ex> names;
+  std::unordered_set<ex, ExHash, ex_is_equal> named;
   for (const auto& s : n.table.all())
-    if (present.count(s->sym) != 0) names.push_back(s->sym);
+    if (present.count(s->sym) != 0 && named.insert(s->sym).second) names.push_back(s->sym);
+  // (a symbol the table does not hold, if any, after them, by name)
+  std::vector<ex> others;
+  for (const ex& x : found)
+    if (named.count(x) == 0) others.push_back(x);
+  std::sort(others.begin(), others.end(), [](const ex& a, const ex& b) { return to_text(a) < to_text(b); });
+  names.insert(names.end(), others.begin(), others.end());
   auto [list, listed] = listed_names(names);
   // The last of a few names after "and": g, m and theta.
   if (const auto last = list.rfind(", {}"); last != std::string::npos && list.find("...") == std::string::npos)
