@@ -167,9 +167,12 @@ std::optional<Row> Truth::solution(std::size_t k, std::mt19937& rng) const {
       const numeric z(pick(rng), 97);
       for (std::size_t i = 0; i < x.size(); ++i) x[i] = x[i] + z * b[i];
     }
-    if (tolerance_.negligible(x.back(), size_of(x))) continue;
+    const numeric size = size_of(x);
+    if (tolerance_.negligible(x.back(), size)) continue;
     Row u(x.begin(), x.end() - 1);
-    for (numeric& v : u) v = v / x.back();
+    // (A float that is zero up to rounding, an unknown the family holds at 0, made 0: in a
+    // product or a quotient it would be taken for a value.)
+    for (numeric& v : u) v = tolerance_.negligible(v, size) ? numeric(0) : v / x.back();
     return u;
   }
   return std::nullopt;

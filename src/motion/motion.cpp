@@ -365,6 +365,7 @@ std::string against_at_start(const Model& m, const Solution& sol, const Dependen
     ex v = put_in(substituted(e, sol.general), dep);
     v = substituted(v, spec.initial);
     for (int depth = 0; depth < 4; ++depth) v = substituted(substituted(v, dep.definitions), values);
+    if (is_a<symbol>(m.time)) v = v.subs(m.time == 0);  // at the start (a support driven in time)
     v = evalf(v);
     if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
     return ex_to<numeric>(v).to_double();

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "crosscheck/claims.hpp"
 #include "crosscheck/model.hpp"
 #include "description/description.hpp"
 #include "pipeline/pipeline.hpp"  // tackle's side: its closed forms (and, for motion, simulate)
@@ -23,6 +24,16 @@ struct ClosedForms {
   std::vector<std::pair<std::string, GiNaC::ex>> symbols;  // every symbol of the table, by name
 };
 
+// `e` with every defined name written out (to 12 levels).
+GiNaC::ex written_out(GiNaC::ex e, const GiNaC::exmap& defs) {
+  for (int i = 0; i < 12; ++i) {
+    const GiNaC::ex next = e.subs(defs);
+    if (next.is_equal(e)) break;
+    e = next;
+  }
+  return e;
+}
+
 ClosedForms closed_forms(const tackle::Analysis& a) {
   ClosedForms out;
   const auto& table = *a.model.symbols;
@@ -33,13 +44,7 @@ ClosedForms closed_forms(const tackle::Analysis& a) {
   for (const auto& d : all) {
     const tackle::SymbolInfo* s = table.find(d.unknown);
     if (!s) continue;
-    GiNaC::ex e = d.value;
-    for (int i = 0; i < 12; ++i) {
-      const GiNaC::ex next = e.subs(defs);
-      if (next.is_equal(e)) break;
-      e = next;
-    }
-    out.values.emplace_back(s->name, e);
+    out.values.emplace_back(s->name, written_out(d.value, defs));
   }
   for (const auto& s : table.all()) out.symbols.emplace_back(s->name, s->sym);
   return out;
@@ -72,6 +77,7 @@ std::string describe_state(const std::map<std::string, double>& vals, const tack
 }  // namespace
 
 Outcome compare_motion(const tackle::Analysis& a, const Model& m, const tackle::Description& d, const Options& o);
+Outcome compare_phases(const tackle::Description& d, const tackle::Analysis& a);  // phases.cpp
 
 Outcome compare(const std::string& text, const std::string& file, const tackle::RuleSet& rules, const Options& o) {
   Outcome out;
@@ -82,6 +88,16 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
     out.kind = Outcome::Kind::tackle_refused;
     out.reason = std::string("the description does not read: ") + e.what();
     return out;
+  }
+  if (!d.phases.empty() || d.impact || d.interval) {
+    // (impacts, intervals and phases: what the model follows of them)
+    try {
+      return compare_phases(d, *tackle::analyze_text(text, file, rules));
+    } catch (const std::exception& e) {
+      out.kind = Outcome::Kind::tackle_refused;
+      out.reason = e.what();
+      return out;
+    }
   }
   std::mt19937_64 rng(o.seed);
   std::optional<Model> model;
@@ -110,6 +126,9 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
     // The model must agree that no state satisfies them: checked below at the base state.
   }
   const ClosedForms forms = closed_forms(*a);
+  Claims claims = claims_of(*a, d);
+  plant(claims, o);
+  const GiNaC::exmap defs = a->model.symbols->definitions(true);
 
   std::vector<State> states;
   states.push_back(model->base_state());
@@ -129,6 +148,10 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
       auto it = vals.find(name);
       if (it != vals.end()) at[sym] = GiNaC::numeric(it->second);
     }
+    // a length sum's named constant (C_s in a position answer, x_A = C_s - x_B): its value here
+    for (const auto& c : a->system.constraints)
+      if (!c.constant.is_zero() && GiNaC::is_a<GiNaC::symbol>(c.constant))
+        if (auto v = evaluate(written_out(c.quantity, defs), at)) at[c.constant] = GiNaC::numeric(*v);
     std::map<std::string, double> tk;
     for (const auto& [name, e] : forms.values) {
       if (auto v = evaluate(e, at)) tk[name] = *v;
@@ -136,7 +159,7 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
     Instant inst = model->solve(s);
     // a rate tackle gives from the constraints is the state's own (the state keeps them)
     for (const auto& [name, value] : vals)
-      if (name.rfind("dot(", 0) == 0 && tk.count(name)) inst.quantities.push_back({name, value, true, false});
+      if (name.rfind("dot(", 0) == 0 && tk.count(name)) inst.quantities.push_back({name, value, true, false, {}});
     ++out.states;
     if (std::getenv("CROSSCHECK_DEBUG")) {
       std::fprintf(stderr, "state (residual %g, rank deficiency %d):\n", inst.residual, inst.rank_deficiency);
@@ -193,6 +216,11 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
       if (diff > o.tolerance * std::max(std::abs(expect), std::abs(q.value)) + 1e-10 * scale)
         out.disagreements.push_back({q.name, expect, q.value, where});
     }
+    // what tackle says beyond its closed forms: every answer asked for, the conditions
+    ClaimState cs{&s, &inst, vals, [&](const GiNaC::ex& e) { return evaluate(written_out(e, defs), at); },
+                  force_scale, accel_scale, &s == &states.front(), where};
+    for (const auto& q : inst.quantities) cs.values[q.name] = q.value;
+    compare_claims(claims, *model, cs, out, out.not_compared);
   }
   if (model_balanced)
     out.disagreements.push_back({"consistency (tackle: inconsistent; the model solves the balances at every state)", 1, 0, *model_balanced});
@@ -203,6 +231,7 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
       out.motion_points = mo.motion_points;
       out.motion_error = mo.motion_error;
       out.motion_note = mo.motion_note;
+      out.motion_event = mo.motion_event;
       for (const auto& x : mo.disagreements) out.disagreements.push_back(x);
       if (!mo.disagreements.empty()) out.kind = Outcome::Kind::disagree;
     }

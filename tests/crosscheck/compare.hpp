@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,8 @@ struct Outcome {
   int motion_points = 0;
   double motion_error = 0;
   std::string motion_note;        // why the motion was not compared, when it was not
+  std::string motion_event;       // the first event of the motion, the model's and tackle's alike
+  std::set<std::string> not_compared;  // claims of tackle's the model cannot judge (claims.hpp)
 };
 
 struct Options {
@@ -39,6 +42,10 @@ struct Options {
   double perturb = 0;             // the model's masses times 1 + perturb (a deliberately wrong model)
   double perturb_inertia = 0;     // its moments of inertia times 1 + perturb_inertia
   bool perturb_winding = false;   // its wound strings winding the other way
+  // A deliberately wrong tackle (claims.hpp): the first answer asked for left out, the first
+  // validity condition inverted.
+  bool perturb_drop_answer = false;
+  bool perturb_invert_condition = false;
 };
 
 /// Compares one description (YAML text; `file` names it).

@@ -168,4 +168,56 @@ Expr Expr::constant(double v) {
 
 bool Expr::uses(int slot) const { return uses_slot(root_.get(), slot); }
 
+std::vector<Expr> Expr::divisors() const {
+  std::vector<Expr> out;
+  const std::function<void(const std::shared_ptr<const Node>&)> walk = [&](const std::shared_ptr<const Node>& n) {
+    if (!n) return;
+    if (n->kind == Node::div || (n->kind == Node::ipow && n->exponent < 0)) {
+      Expr d;
+      d.root_ = n->kind == Node::div ? n->r : n->l;
+      out.push_back(d);
+    }
+    walk(n->l);
+    walk(n->r);
+  };
+  walk(root_);
+  return out;
+}
+
+double Expr::magnitude(const std::vector<double>& vars) const {
+  const std::function<double(const Node*)> size = [&](const Node* n) -> double {
+    switch (n->kind) {
+      case Node::neg: return size(n->l.get());
+      case Node::add:
+      case Node::sub: return size(n->l.get()) + size(n->r.get());
+      case Node::mul: return size(n->l.get()) * size(n->r.get());
+      case Node::div: return size(n->l.get()) / std::abs(eval_node<double>(n->r.get(), vars));
+      case Node::ipow:
+        if (n->exponent > 0) return std::pow(size(n->l.get()), n->exponent);
+        return std::abs(eval_node<double>(n, vars));
+      default: return std::abs(eval_node<double>(n, vars));
+    }
+  };
+  return size(root_.get());
+}
+
+std::optional<double> evaluate_text(const std::string& text, const std::map<std::string, double>& values,
+                                    const std::function<bool(const std::string&)>& usable) {
+  std::vector<double> vars;
+  bool known = true;
+  try {
+    const Expr e = Expr::compile(text, [&](const std::string& n) {
+      if (n == "pi" && !values.count(n)) return -1;
+      auto it = values.find(n);
+      if (it == values.end() || (usable && !usable(n))) known = false;
+      vars.push_back(it == values.end() ? 0.0 : it->second);
+      return static_cast<int>(vars.size()) - 1;
+    });
+    if (!known) return std::nullopt;
+    return e.eval(vars);
+  } catch (const std::runtime_error&) {
+    return std::nullopt;
+  }
+}
+
 }  // namespace crosscheck

@@ -11,6 +11,8 @@
 
 #include <cmath>
 #include <functional>
+#include <map>
+#include <optional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -69,6 +71,12 @@ class Expr {
   [[nodiscard]] bool valid() const { return root_ != nullptr; }
   /// Whether the expression reads variable `slot`.
   [[nodiscard]] bool uses(int slot) const;
+  /// The size of its terms, for "near 0": sums and differences add their parts' sizes
+  /// (|a| + |b|, so that a sum that cancels keeps the size of what cancelled), products and
+  /// quotients multiply and divide them, anything else is its value's size.
+  [[nodiscard]] double magnitude(const std::vector<double>& vars) const;
+  /// Every expression it divides by (a quotient's denominator, the base of a negative power).
+  [[nodiscard]] std::vector<Expr> divisors() const;
 
   struct Node {
     enum Kind { num, var, neg, add, sub, mul, div, pow, ipow, fsqrt, fabs, fsin, fcos, ftan, fexp, flog } kind;
@@ -110,5 +118,10 @@ class Expr {
     throw std::logic_error("expression node");
   }
 };
+
+/// `text` evaluated with `values` by name (`pi` the number unless named there); nothing when
+/// it does not read or names something that is not there, or that `usable` refuses.
+[[nodiscard]] std::optional<double> evaluate_text(const std::string& text, const std::map<std::string, double>& values,
+                                                  const std::function<bool(const std::string&)>& usable = {});
 
 }  // namespace crosscheck

@@ -4,13 +4,26 @@
 //                                               N random mechanisms from SEED
 //   PERTURB (a deliberately wrong model, which must disagree): --perturb-masses X (the
 //   model's masses times 1 + X), --perturb-inertia X (its moments of inertia times 1 + X),
-//   --perturb-winding (its strings wound on drums wind the other way)
+//   --perturb-winding (its strings wound on drums wind the other way); or a deliberately
+//   wrong tackle: --perturb-drop-answer (its first answer asked for left out),
+//   --perturb-invert-condition (its first validity condition inverted)
 //   tackle_crosscheck files FILE...             description files (the regressions); a file
 //                                               named expected-disagreement-* must disagree
 //   tackle_crosscheck print SEED                the mechanism SEED generates, as YAML
+//   tackle_crosscheck equations|answers|fbds N [SEED] [--examples DIR] [--all] [--perturb-silent]
+//                                               the oracle of verdicts (oracle.hpp): N students'
+//                                               equations, answers or free body diagrams over
+//                                               DIR's examples and generated mechanisms, each
+//                                               decided by the model and checked by tackle
+//                                               (--perturb-silent: tackle's verdicts left empty,
+//                                               so that every item must disagree)
+//   tackle_crosscheck explain FILE EQUATION [UNKNOWN]
+//                                               one equation (an answer for UNKNOWN): the
+//                                               model's values, its truth, tackle's verdict
 // Exit status 1 when anything disagrees (beyond 1e-9 relative) or tackle refuses a
 // generated mechanism.
 #include <algorithm>
+#include <cstdlib>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +33,7 @@
 #include <fmt/format.h>
 
 #include "crosscheck/compare.hpp"
+#include "crosscheck/oracle.hpp"
 #include "ruleset/ruleset.hpp"
 
 namespace {
@@ -41,7 +55,8 @@ void print_disagreements(const crosscheck::Outcome& o, std::size_t limit = 4) {
 
 int usage() {
   std::cerr << "usage: tackle_crosscheck examples DIR [PERTURB] | generated N [SEED] [--motion-every K] [--quiet] [PERTURB] | files FILE... | print SEED\n"
-               "  PERTURB: --perturb-masses X | --perturb-inertia X | --perturb-winding\n";
+               "       | equations|answers|fbds N [SEED] [--examples DIR] [--all] [--perturb-silent] | explain FILE EQUATION [UNKNOWN]\n"
+               "  PERTURB: --perturb-masses X | --perturb-inertia X | --perturb-winding | --perturb-drop-answer | --perturb-invert-condition\n";
   return 2;
 }
 
@@ -51,6 +66,8 @@ bool perturbation(int argc, char** argv, int& i, crosscheck::Options& o) {
   if (a == "--perturb-masses" && i + 1 < argc) o.perturb = std::stod(argv[++i]);
   else if (a == "--perturb-inertia" && i + 1 < argc) o.perturb_inertia = std::stod(argv[++i]);
   else if (a == "--perturb-winding") o.perturb_winding = true;
+  else if (a == "--perturb-drop-answer") o.perturb_drop_answer = true;
+  else if (a == "--perturb-invert-condition") o.perturb_invert_condition = true;
   else return false;
   return true;
 }
@@ -64,6 +81,26 @@ int main(int argc, char** argv) {
   const auto started = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
 
+  if ((mode == "equations" || mode == "answers" || mode == "fbds") && argc >= 3) {
+    crosscheck::OracleOptions o;
+    o.kind = mode == "equations" ? crosscheck::OracleOptions::Kind::equations
+             : mode == "answers" ? crosscheck::OracleOptions::Kind::answers
+                                 : crosscheck::OracleOptions::Kind::fbds;
+    o.count = std::stol(argv[2]);
+    for (int i = 3; i < argc; ++i) {
+      const std::string a = argv[i];
+      if (a == "--examples" && i + 1 < argc) o.examples = argv[++i];
+      else if (a == "--all") o.shown = 0;
+      else if (a == "--perturb-silent") o.silent = true;
+      else o.seed = std::stoull(a);
+    }
+    const long disagreements = crosscheck::run_oracle(o, rules);
+    std::cout << fmt::format("({:.1f} s)\n", elapsed());
+    return disagreements ? 1 : 0;
+  }
+  if (mode == "explain" && (argc == 4 || argc == 5))
+    return crosscheck::explain_one(argv[2], argv[3], argc == 5 ? argv[4] : "", rules,
+                                   std::getenv("CROSSCHECK_SEED") ? std::stoull(std::getenv("CROSSCHECK_SEED")) : 1);
   if (mode == "print" && argc == 3) {
     std::cout << crosscheck::generate(std::stoull(argv[2]));
     return 0;
@@ -90,6 +127,8 @@ int main(int argc, char** argv) {
                                    out.not_determined ? fmt::format(", {} left free by the model", out.not_determined) : "",
                                    out.motion_points ? fmt::format(", motion: {} points, max error {:.2g}", out.motion_points, out.motion_error) : "");
           if (!out.motion_note.empty()) std::cout << "          motion: " << out.motion_note << "\n";
+          if (!out.motion_event.empty()) std::cout << "          the motion's first event: " << out.motion_event << "\n";
+          for (const auto& note : out.not_compared) std::cout << "          not compared: " << note << "\n";
           break;
         case crosscheck::Outcome::Kind::skipped:
           ++skipped;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <set>
 
 #include "core/units.hpp"  // input reading only: each unit's factor to SI
@@ -66,13 +68,21 @@ int Model::slot(const std::string& name) const {
   return it == slots_.end() ? -1 : it->second;
 }
 
-Expr Model::compile(const tackle::Text& t) const {
+Expr Model::compile_any(const tackle::Text& t) const {
   try {
     Expr e = Expr::compile(t.text, [this](const std::string& n) { return slot(n); });
     return e;
   } catch (const std::runtime_error& e) {
     throw Unsupported(e.what());
   }
+}
+
+Expr Model::compile(const tackle::Text& t) const {
+  Expr e = compile_any(t);
+  // (the steady rate has no value of its own: solve() finds it from a body's acceleration)
+  if (steady_slot_ >= 0 && e.uses(steady_slot_))
+    throw Unsupported("the steady rate '" + slot_names_[static_cast<std::size_t>(steady_slot_)] + "' outside a body's given acceleration");
+  return e;
 }
 
 double Model::number(const tackle::Text& t) const {
@@ -110,6 +120,15 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     slots_[p.name.text] = static_cast<int>(slot_names_.size());
     slot_names_.push_back(p.name.text);
   }
+  // A steady motion at an unknown rate (`steady: {rate: omega}`): the rate is a name of its
+  // own, with no value; only a body's given acceleration may use it (see solve_steady).
+  if (d.steady && !d.steady->rate.text.empty()) {
+    if (d.motion) throw Unsupported("a steady motion at an unknown rate with a motion in time");
+    if (slots_.count(d.steady->rate.text)) throw Unsupported("a steady rate named as a parameter");
+    steady_slot_ = static_cast<int>(slot_names_.size());
+    slots_[d.steady->rate.text] = steady_slot_;
+    slot_names_.push_back(d.steady->rate.text);
+  }
   first_coord_slot_ = static_cast<int>(slot_names_.size());
   for (const auto& b : d.bodies) {
     for (const auto* c : {&b.position, &b.angle}) {
@@ -134,6 +153,12 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     if (nm.rfind("dot(", 0) == 0) base_rate_[nm] = v;
     else if (nm.rfind("ddot(", 0) == 0) given_accel_[nm] = v;
     else base_coord_[nm] = v;
+    // a coordinate or rate given in the parameters (theta: theta_0, dot(theta): v/L): tackle
+    // answers at that value only, so the states keep it
+    const Expr e = compile(*g.value);
+    bool in_parameters = false;
+    for (int k = 0; k < first_coord_slot_; ++k) in_parameters = in_parameters || e.uses(k);
+    if (in_parameters && nm.rfind("ddot(", 0) != 0) pinned_[nm] = v;
   }
   // A problem of kinematics only: no body has a mass, so no balance is written, and the
   // constraints alone give the accelerations from the given ones.
@@ -144,6 +169,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     if (!kinematic_) throw Unsupported("a given acceleration (" + g.name.text + ") of a body with a balance");
     if (!given_accel_.count(g.name.text)) given_accel_[g.name.text] = draw(rng) - 1.25;
   }
+
+  if (steady_slot_ >= 0 && kinematic_) throw Unsupported("a steady motion of bodies without mass");
 
   // Bodies.
   auto eval_vec = [&](const std::vector<Expr>& es, const std::vector<double>& vars) {
@@ -243,10 +270,33 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
         b.kind = Body::driven;
         std::vector<Expr> acc;
         for (const auto& it : bd.acceleration->items) {
-          acc.push_back(compile(it));
+          acc.push_back(compile_any(it));
           if (acc.back().uses(t_slot)) throw Unsupported("a given acceleration that changes in time");
         }
-        b.frame_accel = eval_vec(acc, base_vars());
+        b.frame_accel = eval_vec(acc, base_vars());  // (with the steady rate at 0)
+        if (steady_slot_ >= 0) {
+          // a0 + s w, s the rate squared: linear in s, or the model cannot find s
+          auto at = [&](double sq) {
+            auto vars = base_vars();
+            vars[static_cast<std::size_t>(steady_slot_)] = std::sqrt(sq);
+            return eval_vec(acc, vars);
+          };
+          const Eigen::VectorXd w = at(1) - b.frame_accel;
+          if (w.norm() > 0) {
+            const Eigen::VectorXd bend = at(2.3) - b.frame_accel - 2.3 * w;
+            if (bend.norm() > 1e-12 * (1 + b.frame_accel.norm() + w.norm()))
+              throw Unsupported("a given acceleration that is not linear in the steady rate squared");
+            if (steady_) throw Unsupported("the steady rate in the accelerations of two bodies");
+            Steady st;
+            st.body = static_cast<int>(bodies_.size());
+            st.a0 = b.frame_accel;
+            st.w = w;
+            st.squared = d.steady->rate.text + "^2";
+            st.rate = d.steady->rate.text;
+            st.period = d.steady->period ? d.steady->period->text : "tau";
+            steady_ = st;
+          }
+        }
       } else if (bd.accel_along) {
         b.kind = Body::along;
         std::vector<Expr> dir;
@@ -268,6 +318,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     has_massless_ = has_massless_ || !b.massive;
     bodies_.push_back(b);
   }
+  if (steady_slot_ >= 0 && !steady_) throw Unsupported("a steady rate that no body's acceleration uses");
+  if (steady_) requirements_.push_back({Requirement::real, steady_->squared, "", 0, -1, "the steady rate is real"});
   int next = 0;
   for (auto& b : bodies_) { b.q0 = next; next += n; }
   for (auto& b : bodies_) {
@@ -284,12 +336,14 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
   // Points: a body is a point (its center); a point on a body at its offset; a fixed point.
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     PointRef p;
+    p.name = bodies_[i].name;
     p.body = static_cast<int>(i);
     p.offset = Eigen::VectorXd::Zero(n);
     points_[bodies_[i].name] = p;
   }
   for (const auto& pd : d.points) {
     PointRef p;
+    p.name = pd.name.text;
     if (pd.on) {
       auto it = body_index.find(pd.on->text);
       if (it == body_index.end()) throw Unsupported("point on an unknown body");
@@ -355,6 +409,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     const Eigen::VectorXd p0 = layout_position(material_point);
     for (int i = 0; i < n; ++i) g.ground.push_back(Expr::constant(p0(i)));
     g.frame_accel = bodies_[static_cast<std::size_t>(body)].frame_accel;
+    g.frame_body = body;
     return g;
   };
   auto add_project = [&](const std::string& name, const PointRef& p, int body, const Eigen::VectorXd& dir) {
@@ -381,9 +436,24 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     c.dir = Eigen::VectorXd::Constant(1, axis);
     cons_.push_back(c);
   };
+  // What a connection adds is labelled after it ("sliding at A": its type, then its name or
+  // the point it acts at), for the diagrams.
+  auto label_made = [&](const std::string& label, std::size_t cons_from, std::size_t elements_from, std::size_t loads_from) {
+    for (std::size_t k = cons_from; k < cons_.size(); ++k) cons_[k].label = label;
+    for (std::size_t k = elements_from; k < elements_.size(); ++k) elements_[k].label = label;
+    for (std::size_t k = loads_from; k < loads_.size(); ++k) loads_[k].label = label;
+  };
+  // A contact that grips: it pushes, and its friction stays within mu N (mu when given).
+  auto grips = [&](const std::string& at, const tackle::ConnectionDesc& c, const std::string& what) {
+    requirements_.push_back({Requirement::pushes, "N_" + at, "", 0, -1, what + " pushes"});
+    if (opt_text(c, "mu"))
+      requirements_.push_back({Requirement::cone, "F_" + at, "N_" + at, number(c.arg("mu")->items[0]), -1, what + " grips (|F| <= mu N)"});
+  };
   for (const auto& c : d.connections) {
     const std::string& type = c.type.text;
     const std::string cname = c.name ? c.name->text : "";
+    // (what this connection adds is labelled after it, for diagrams: see the loop's end)
+    const std::size_t cons_before = cons_.size(), elements_before = elements_.size(), loads_before = loads_.size();
     if (type == "force") {
       Load l;
       l.body = body_of(c, "on");
@@ -406,6 +476,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       Constraint s;
       s.name = opt_text(c, "tension") ? *opt_text(c, "tension") : "T_" + cname;
       s.g_sign = -1;
+      requirements_.push_back({Requirement::pulls, s.name, "", 0, -1, "string " + cname + " pulls"});
       if (c.arg("path")) {
         s.kind = Constraint::path;
         s.points = path_of(c, "path");
@@ -424,6 +495,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       e.points = path_of(c, "path");
       e.winds = windings(e.points, perturb.winding ? -1.0 : 1.0);
       e.k = number(need(c, "k").items[0]);
+      if (type == "elastic_cord")
+        requirements_.push_back({Requirement::taut, "", "", 0, static_cast<int>(elements_.size()), "elastic cord " + cname + " is taut"});
       if (c.arg("rest_length")) {
         e.rest = number(need(c, "rest_length").items[0]);
       } else {
@@ -445,6 +518,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       const bool contact = type == "contact";
       s.name = opt_text(c, "force") ? *opt_text(c, "force") : (contact ? "N_" : "T_") + cname;
       s.g_sign = contact ? 1 : -1;
+      if (contact) requirements_.push_back({Requirement::pushes, s.name, "", 0, -1, "contact " + cname + " pushes"});
       cons_.push_back(s);
     } else if (type == "fixed") {
       const int b = body_of(c, "body");
@@ -453,6 +527,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       const int b = body_of(c, "body");
       const std::string at = need_text(c, "at");
       Constraint* k = add_project("N_" + at, material(at, b), b, unit_vec(c, "normal"));
+      requirements_.push_back({Requirement::pushes, "N_" + at, "", 0, -1, "the " + type + " at " + at + " pushes"});
       if (type == "sliding" || type == "skidding_wheel") {
         k->mu = number(need(c, "mu").items[0]);
         k->sliding = unit_vec(c, "sliding");
@@ -464,6 +539,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       const std::string at = need_text(c, "at");
       add_project("N_" + at, material(at, b), b, unit_vec(c, "normal"));
       add_project("F_" + at, material(at, b), b, unit_vec(c, "rolling"));
+      grips(at, c, "the driven wheel at " + at);
     } else if (type == "rolling") {
       // no slip: the body's material point at the contact C has no velocity along the
       // tangent, v_cm . t + omega (z x (C - cm)) . t = 0, and the center keeps its distance
@@ -474,6 +550,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       const std::string at = need_text(c, "at");
       const Eigen::VectorXd arm = layout_position(point(at, b)) - bb.cm0;  // C - cm, the ground's directions
       PointRef contact;  // the geometric contact point, the center's plus C - cm
+      contact.name = at;
       contact.body = b;
       contact.offset = arm;
       contact.turns = false;
@@ -488,11 +565,13 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
         k.arm = -arm(1) * k.dir(0) + arm(0) * k.dir(1);
         cons_.push_back(k);
       }
+      grips(at, c, "the rolling contact at " + at);
     } else if (type == "sticking") {
       const int b = body_of(c, "body");
       const std::string at = need_text(c, "at");
       add_project("N_" + at, material(at, b), b, unit_vec(c, "normal"));
       add_project("F_" + at, material(at, b), b, unit_vec(c, "tangent"));
+      grips(at, c, "the sticking contact at " + at);
     } else if (type == "collar") {
       const int b = body_of(c, "body");
       const std::string at = need_text(c, "at");
@@ -513,10 +592,12 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       s.kind = Constraint::path;
       s.name = "T_" + from + to;
       s.g_sign = -1;
+      if (type == "cable") requirements_.push_back({Requirement::pulls, s.name, "", 0, -1, "cable from " + from + " pulls"});
       const PointRef pf = material(from, b);
       PointRef pt = point(to, -1);
       if (pt.body >= 0) throw Unsupported("a rod or cable to a moving point");
       pt.frame_accel = bodies_[static_cast<std::size_t>(b)].frame_accel;
+      pt.frame_body = b;
       s.points = {pf, pt};
       cons_.push_back(s);
     } else if (type == "pin_joint" || type == "ball_joint" || type == "weld_joint" || type == "slider_joint" ||
@@ -552,6 +633,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
                                                                              "on a body whose acceleration is not given"
                                                                            : "not in the model") + ")");
     }
+    label_made(type + (cname.empty() ? "" : " " + cname), cons_before, elements_before, loads_before);
   }
 
   // Guides: what tackle's bodies do without a connection saying so. A body with a
@@ -579,13 +661,24 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
         if (e.norm() > 1e-6) across.push_back(e.normalized());
       }
     } else {
-      for (int k = 0; k < n; ++k) across.push_back(Eigen::VectorXd::Unit(n, k));
+      // a body in steady motion: its first guide along the part of its acceleration that the
+      // unknown rate gives (solve_steady finds the rate that makes that guide's force 0)
+      const bool steady = steady_ && steady_->body == static_cast<int>(i);
+      if (steady) across.push_back(steady_->w.normalized());
+      for (int k = 0; k < n; ++k) {
+        Eigen::VectorXd e = Eigen::VectorXd::Unit(n, k);
+        for (const auto& a : across) e -= a * a.dot(e);
+        if (e.norm() > 1e-6) across.push_back(e.normalized());
+      }
+      if (steady) steady_->guide = static_cast<int>(cons_.size());
     }
     for (std::size_t k = 0; k < across.size(); ++k) {
       Constraint c;
       c.kind = Constraint::guide_line;
       c.guide = true;
       c.name = "guide on " + b.name + " across its motion (" + std::to_string(k + 1) + ")";
+      if (steady_ && steady_->guide == static_cast<int>(cons_.size()))
+        c.name = "guide on " + b.name + " along its acceleration at the steady rate";
       c.body = static_cast<int>(i);
       c.dir = across[k];
       cons_.push_back(c);
@@ -683,6 +776,7 @@ Model::PointRef Model::material(const std::string& name, int body) const {
   const Eigen::VectorXd p0 = layout_position(p);
   const Body& b = bodies_[static_cast<std::size_t>(body)];
   PointRef m;
+  m.name = name;
   m.body = body;
   m.offset = rotated(p0 - b.cm0, -b.angle0);
   return m;
@@ -918,6 +1012,97 @@ Eigen::VectorXd Model::generalized(const PointRef& p, const Eigen::VectorXd& for
   return g;
 }
 
+double Model::element_tension(const Element& e, const State& s) const {
+  const auto L = length_derivs(e.points, e.winds, s);
+  if (e.kind == Element::damper) return e.c * (L.grad.dot(s.v) + L.dt);
+  double rest = e.rest;
+  if (e.stretch) {
+    // origin length: every coordinate of tackle's at 0 (angles too: nothing wound)
+    std::vector<D2> q0(static_cast<std::size_t>(ndof_), D2(0.0));
+    for (int i = 0; i < ndof_; ++i) q0[static_cast<std::size_t>(i)] = D2(origin_q_(i));
+    rest = path_length(e.points, q0, D2(s.t)).a.a - e.stretch_value;
+  }
+  return e.k * (L.value - rest);
+}
+
+Eigen::VectorXd Model::point_position(const PointRef& p, const State& s) const {
+  const std::vector<double> q(s.q.data(), s.q.data() + s.q.size());
+  const auto r = position(p, q, variables(q, s.v, s.t), s.t);
+  return Eigen::Map<const Eigen::VectorXd>(r.data(), static_cast<Eigen::Index>(r.size()));
+}
+
+std::vector<double> Model::numbers_at(const State& s) const {
+  const std::vector<double> q(s.q.data(), s.q.data() + s.q.size());
+  return variables(q, s.v, s.t);
+}
+
+std::optional<Eigen::VectorXd> Model::named_position(const std::string& name, const State& s) const {
+  auto it = points_.find(name);
+  if (it == points_.end()) return std::nullopt;
+  return point_position(it->second, s);
+}
+
+std::vector<std::string> Model::body_names() const {
+  std::vector<std::string> out;
+  for (const auto& b : bodies_) out.push_back(b.name);
+  return out;
+}
+
+std::vector<Margin> Model::margins(const State& s, const Instant& inst) const {
+  std::vector<Margin> out;
+  for (const auto& r : requirements_) {
+    Margin m{&r, 0, true};
+    const Quantity* f = inst.find(r.force);
+    const Quantity* n = r.kind == Requirement::cone ? inst.find(r.normal) : nullptr;
+    if (r.kind == Requirement::taut) {
+      m.value = element_tension(elements_[static_cast<std::size_t>(r.element)], s);
+    } else if (!f || (r.kind == Requirement::cone && !n)) {
+      m.determined = false;
+    } else {
+      m.value = r.kind == Requirement::cone ? r.mu * n->value - std::abs(f->value) : f->value;
+      m.determined = f->determined && (!n || n->determined);
+    }
+    out.push_back(m);
+  }
+  return out;
+}
+
+Eigen::VectorXd Model::velocity(const PointRef& p, const State& s) const {
+  std::vector<D1> q(static_cast<std::size_t>(ndof_));
+  for (int i = 0; i < ndof_; ++i) q[static_cast<std::size_t>(i)] = D1(s.q(i), s.v(i));
+  const auto vars = variables(q, Eigen::VectorXd(), D1(s.t, 1.0));
+  const auto r = position(p, q, vars, D1(s.t, 1.0));
+  Eigen::VectorXd v(dims_);
+  for (int i = 0; i < dims_; ++i) v(i) = r[static_cast<std::size_t>(i)].b;
+  return v;
+}
+
+std::optional<double> Model::slip_speed(const std::string& normal, const State& s) const {
+  for (const auto& c : cons_) {
+    if (c.name != normal || c.mu == 0) continue;
+    // the body's material point there (a contact point that keeps the ground's directions,
+    // where a wheel touches, is where the material point now is)
+    PointRef p = c.points[0];
+    if (!p.turns && p.body >= 0 && dims_ == 2 && bodies_[static_cast<std::size_t>(p.body)].r0 >= 0) {
+      p.offset = rotated(p.offset, -s.q(bodies_[static_cast<std::size_t>(p.body)].r0));
+      p.turns = true;
+    }
+    return c.sliding.dot(velocity(p, s));
+  }
+  return std::nullopt;
+}
+
+std::vector<std::pair<std::string, double>> Model::watched(const State& s) const {
+  State p = s;
+  project(p, false);
+  std::vector<std::pair<std::string, double>> out;
+  for (const auto& mg : margins(p, solve(p)))
+    out.emplace_back(mg.requirement->what, mg.determined ? mg.value : std::numeric_limits<double>::quiet_NaN());
+  for (const auto& c : cons_)
+    if (c.mu != 0) out.emplace_back("the slip at " + c.name.substr(2) + " (its friction turns)", *slip_speed(c.name, p));
+  return out;
+}
+
 Model::Kkt Model::system(const State& s, const std::vector<int>* only) const {
   const int n = ndof_;
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
@@ -943,23 +1128,7 @@ Model::Kkt Model::system(const State& s, const std::vector<int>* only) const {
       for (int k = 0; k < b.nr; ++k) f(b.r0 + k) += l.couple[static_cast<std::size_t>(b.nr == 1 ? 0 : k)].eval(vars);
     }
   }
-  for (const auto& e : elements_) {
-    const auto L = length_derivs(e.points, e.winds, s);
-    double tension = 0;
-    if (e.kind == Element::damper) {
-      tension = e.c * (L.grad.dot(s.v) + L.dt);
-    } else {
-      double rest = e.rest;
-      if (e.stretch) {
-        // origin length: every coordinate of tackle's at 0 (angles too: nothing wound)
-        std::vector<D2> q0(static_cast<std::size_t>(ndof_), D2(0.0));
-        for (int i = 0; i < ndof_; ++i) q0[static_cast<std::size_t>(i)] = D2(origin_q_(i));
-        rest = path_length(e.points, q0, D2(s.t)).a.a - e.stretch_value;
-      }
-      tension = e.k * (L.value - rest);
-    }
-    f -= tension * L.grad;
-  }
+  for (const auto& e : elements_) f -= element_tension(e, s) * length_derivs(e.points, e.winds, s).grad;
 
   // Constraints: every rule's; a guide only where the rules leave that motion free.
   std::vector<Derivs> rows;
@@ -1006,6 +1175,12 @@ Model::Kkt Model::system(const State& s, const std::vector<int>* only) const {
   return out;
 }
 
+Eigen::VectorXd Model::along_line(const Body& b, const Eigen::MatrixXd& nulls) const {
+  // a body's acceleration along its line (or direction): its part of each free direction
+  const double bb = b.kind == Body::line ? b.b.squaredNorm() : 1.0;
+  return (b.b.transpose() * nulls.middleRows(b.q0, dims_)).transpose() / bb;
+}
+
 Instant Model::solve_kinematics(const State& s) const {
   // J a = -gamma with the given accelerations put in: the others by least squares, each
   // compared where the constraints determine it.
@@ -1040,6 +1215,7 @@ Instant Model::solve_kinematics(const State& s) const {
   out.residual = (J * x - rhs).norm() / std::max(1.0, rhs.norm());
   const int rank = static_cast<int>(svd.rank());
   const Eigen::MatrixXd nulls = svd.matrixV().rightCols(n - rank);
+  out.free_directions = static_cast<int>(nulls.cols());
   for (const auto& b : bodies_) {
     if (b.kind != Body::line || given_accel_.count("ddot(" + b.coord + ")")) continue;
     Quantity qn;
@@ -1047,6 +1223,7 @@ Instant Model::solve_kinematics(const State& s) const {
     qn.value = b.b.dot(x.segment(b.q0, dims_)) / b.b.squaredNorm();
     for (int i = 0; i < dims_; ++i)
       qn.determined = qn.determined && (b.b(i) == 0 || nulls.cols() == 0 || nulls.row(b.q0 + i).norm() < 1e-7);
+    qn.free = along_line(b, nulls);
     out.quantities.push_back(qn);
   }
   for (const auto& b : bodies_) {
@@ -1055,12 +1232,63 @@ Instant Model::solve_kinematics(const State& s) const {
     qn.name = "ddot(" + b.angle + ")";
     qn.value = x(b.r0);
     qn.determined = nulls.cols() == 0 || nulls.row(b.r0).norm() < 1e-7;
+    qn.free = nulls.row(b.r0).transpose();
     out.quantities.push_back(qn);
   }
   return out;
 }
 
 Instant Model::solve(const State& s) const {
+  return steady_ ? solve_steady(s) : solve_fixed(s);
+}
+
+void Model::set_steady(double squared) {
+  Body& b = bodies_[static_cast<std::size_t>(steady_->body)];
+  b.frame_accel = steady_->a0 + squared * steady_->w;
+  auto follow = [&](PointRef& p) {
+    if (p.frame_body == steady_->body) p.frame_accel = b.frame_accel;
+  };
+  for (auto& c : cons_)
+    for (auto& p : c.points) follow(p);
+  for (auto& e : elements_)
+    for (auto& p : e.points) follow(p);
+  for (auto& l : loads_) follow(l.at);
+  for (auto& [name, p] : points_) follow(p);
+}
+
+Instant Model::solve_steady(const State& s) const {
+  // The body's acceleration is a0 + s w, s the rate squared, unknown. At t = 0 the frame's
+  // acceleration enters only the constraints' second derivatives (the right-hand side), so
+  // everything solved is affine in s, the force of the guide along w too: tackle's model has
+  // no such force, and s is where it vanishes.
+  if (uses_time_) throw Unsupported("a steady motion at an unknown rate in a model that depends on time");
+  Model at0 = *this, at1 = *this;
+  at0.set_steady(0);
+  at1.set_steady(1);
+  const Instant i0 = at0.solve_fixed(s), i1 = at1.solve_fixed(s);
+  const std::string guide = "guide: " + cons_[static_cast<std::size_t>(steady_->guide)].name;
+  const Quantity *g0 = i0.find(guide), *g1 = i1.find(guide);
+  const double slope = g0 && g1 ? g1->value - g0->value : 0.0;
+  if (!g0 || !g1 || !g0->determined || !g1->determined ||
+      std::abs(slope) <= 1e-12 * std::max({1.0, std::abs(g0->value), std::abs(g1->value)})) {
+    // (the balances do not fix the rate: along w something else holds the body)
+    Instant out = i0;
+    out.quantities.push_back({steady_->squared, 0, false, false, {}});
+    return out;
+  }
+  const double squared = -g0->value / slope;
+  Model at = *this;
+  at.set_steady(squared);
+  Instant out = at.solve_fixed(s);
+  out.quantities.push_back({steady_->squared, squared, true, false, {}});
+  if (squared > 0) {
+    out.quantities.push_back({steady_->rate, std::sqrt(squared), true, false, {}});
+    out.quantities.push_back({steady_->period, 2 * std::numbers::pi / std::sqrt(squared), true, false, {}});
+  }
+  return out;
+}
+
+Instant Model::solve_fixed(const State& s) const {
   if (kinematic_) return solve_kinematics(s);
   const Kkt k = system(s);
   const int n = ndof_;
@@ -1078,13 +1306,14 @@ Instant Model::solve(const State& s) const {
   out.rank_deficiency = static_cast<int>(k.K.rows()) - rank;
   const Eigen::MatrixXd nulls = svd.matrixV().rightCols(k.K.cols() - rank);
   auto determined = [&](int i) { return nulls.rows() == 0 || nulls.cols() == 0 || nulls.row(i).norm() < 1e-7; };
+  out.free_directions = static_cast<int>(nulls.cols());
   for (const auto& b : bodies_) {
     if (b.kind != Body::line && b.kind != Body::along) continue;
-    const double bb = b.kind == Body::line ? b.b.squaredNorm() : 1.0;
     Quantity qn;
     qn.name = b.kind == Body::line ? "ddot(" + b.coord + ")" : b.coord;
-    qn.value = b.b.dot(x.segment(b.q0, dims_)) / bb;
+    qn.value = b.b.dot(x.segment(b.q0, dims_)) / (b.kind == Body::line ? b.b.squaredNorm() : 1.0);
     for (int i = 0; i < dims_; ++i) qn.determined = qn.determined && (b.b(i) == 0 || determined(b.q0 + i));
+    qn.free = along_line(b, nulls);
     out.quantities.push_back(qn);
   }
   for (const auto& b : bodies_) {
@@ -1093,6 +1322,7 @@ Instant Model::solve(const State& s) const {
       qn.name = b.angle.empty() ? "guide: angular acceleration of " + b.name : "ddot(" + b.angle + ")";
       qn.value = x(b.r0 + r);
       qn.determined = determined(b.r0 + r);
+      qn.free = nulls.row(b.r0 + r).transpose();
       out.quantities.push_back(qn);
     }
   }
@@ -1103,6 +1333,7 @@ Instant Model::solve(const State& s) const {
     qn.name = c.guide ? "guide: " + c.name : c.name;
     qn.value = x(n + static_cast<int>(j));
     qn.determined = determined(n + static_cast<int>(j));
+    qn.free = nulls.row(n + static_cast<int>(j)).transpose();
     qn.force = true;
     out.quantities.push_back(qn);
   }
@@ -1247,25 +1478,41 @@ void Model::place_turning(State& s) const {
 std::optional<State> Model::random_state(std::mt19937_64& rng, double spread) const {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   State s = base_state();
+  // (a value given in the parameters stays: the draws are made all the same, so that the
+  // other values drawn do not depend on it)
+  auto kept = [&](const std::string& name) { return pinned_.count(name) != 0; };
   for (const auto& b : bodies_) {
     if (b.kind != Body::line) continue;
-    s.q.segment(b.q0, dims_) += b.b * (spread * u(rng));
-    s.v.segment(b.q0, dims_) = b.b * u(rng);
+    const double dq = spread * u(rng), dv = u(rng);
+    if (!kept(b.coord)) s.q.segment(b.q0, dims_) += b.b * dq;
+    if (!kept("dot(" + b.coord + ")")) s.v.segment(b.q0, dims_) = b.b * dv;
   }
   for (const auto& b : bodies_) {
     if (b.angle.empty()) continue;
-    s.q(b.r0) += spread * u(rng);
-    s.v(b.r0) = u(rng);
+    const double dq = spread * u(rng), dv = u(rng);
+    if (!kept(b.angle)) s.q(b.r0) += dq;
+    if (!kept("dot(" + b.angle + ")")) s.v(b.r0) = dv;
   }
   if (uses_time_) s.t = 0.5 * (1 + u(rng));
   place_turning(s);
   project(s, false);
+  // (the projection may land on the mirror image of a straight strand, two blocks that
+  // changed places: no state of the mechanism described)
+  if (!strands_keep_direction(s, base_state())) return std::nullopt;
   if (has_massless_ && !settle_massless(s)) return std::nullopt;
   // the state must keep every constraint
   for (const auto& c : cons_) {
     const Derivs dv = cons_derivs(c, s);
     if (std::abs(dv.value - c.constant) > 1e-9 * (1 + std::abs(c.constant))) return std::nullopt;
     if (std::abs(dv.grad.dot(s.v) + dv.dt) > 1e-9 * (1 + s.v.norm())) return std::nullopt;
+  }
+  // nor may the projection have moved a value given in the parameters
+  if (!pinned_.empty()) {
+    const auto vals = values_at(s);
+    for (const auto& [name, v] : pinned_) {
+      auto it = vals.find(name);
+      if (it != vals.end() && std::abs(it->second - v) > 1e-9 * (1 + std::abs(v))) return std::nullopt;
+    }
   }
   return s;
 }
@@ -1329,31 +1576,37 @@ std::optional<State> Model::state_from(const std::map<std::string, double>& coor
   return s;
 }
 
-bool Model::strands_keep_direction(const State& s, const State& ref) const {
-  // A strand that keeps its direction and now points the other way went through zero length
-  // (a strand that turns may point anywhere).
-  auto check = [&](const std::vector<PointRef>& pts) {
-    const std::vector<double> q(s.q.data(), s.q.data() + s.q.size()), q0(ref.q.data(), ref.q.data() + ref.q.size());
-    const auto vars = variables(q, Eigen::VectorXd(), s.t), vars0 = variables(q0, Eigen::VectorXd(), ref.t);
+std::vector<Eigen::VectorXd> Model::strand_vectors(const State& s) const {
+  std::vector<Eigen::VectorXd> out;
+  const std::vector<double> q(s.q.data(), s.q.data() + s.q.size());
+  const auto vars = variables(q, Eigen::VectorXd(), s.t);
+  auto add = [&](const std::vector<PointRef>& pts) {
     for (std::size_t k = 1; k < pts.size(); ++k) {
       const auto a = position(pts[k], q, vars, s.t), b = position(pts[k - 1], q, vars, s.t);
-      const auto a0 = position(pts[k], q0, vars0, ref.t), b0 = position(pts[k - 1], q0, vars0, ref.t);
-      Eigen::VectorXd now(dims_), then(dims_);
-      for (int i = 0; i < dims_; ++i) {
-        now(i) = a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>(i)];
-        then(i) = a0[static_cast<std::size_t>(i)] - b0[static_cast<std::size_t>(i)];
-      }
-      const double dot = now.dot(then), norms = now.norm() * then.norm();
-      if (norms == 0) continue;
-      if (dot < 0 && std::abs(std::abs(dot) - norms) < 1e-9 * norms) return false;
+      Eigen::VectorXd v(dims_);
+      for (int i = 0; i < dims_; ++i) v(i) = a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>(i)];
+      out.push_back(v);
     }
-    return true;
   };
   for (const auto& c : cons_)
-    if (c.kind == Constraint::path && !check(c.points)) return false;
-  for (const auto& e : elements_)
-    if (!check(e.points)) return false;
+    if (c.kind == Constraint::path) add(c.points);
+  for (const auto& e : elements_) add(e.points);
+  return out;
+}
+
+bool same_directions(const std::vector<Eigen::VectorXd>& now, const std::vector<Eigen::VectorXd>& then) {
+  // A strand that keeps its direction and now points the other way went through zero length
+  // (a strand that turns may point anywhere).
+  for (std::size_t k = 0; k < now.size() && k < then.size(); ++k) {
+    const double dot = now[k].dot(then[k]), norms = now[k].norm() * then[k].norm();
+    if (norms == 0) continue;
+    if (dot < 0 && std::abs(std::abs(dot) - norms) < 1e-9 * norms) return false;
+  }
   return true;
+}
+
+bool Model::strands_keep_direction(const State& s, const State& ref) const {
+  return same_directions(strand_vectors(s), strand_vectors(ref));
 }
 
 std::map<std::string, double> Model::coordinates_at(const State& s) const {

@@ -12,7 +12,26 @@
 // dual numbers; G the generalized directions of the constraint forces, J^T for ideal ones).
 // It reads the description (tackle's plain Description structs) and takes the SI factor of
 // each parameter's unit from tackle's unit table (src/core/units: input reading); nothing of
-// tackle's model, equations, solver, energy or motion is used.
+// tackle's model, equations, solver, energy or motion is used. Its requirements (strings pull,
+// contacts push, grips stay within mu N, cords stay taut, a steady rate is real) and its
+// forces on a body (forces.cpp) are its own, not read from tackle's rules. A steady motion at
+// an unknown rate (`steady:`, a body's given acceleration a0 + omega^2 w) is solved with the
+// body guided only across w: omega^2 is where the force of a guide along w would vanish.
+//
+// What the rest of the cross-check takes from tackle, beyond what it checks:
+// - compare.cpp, claims.cpp, motion.cpp: tackle's answers (closed forms, the asked quantities,
+//   the conditions with `holds` and `always`, the slip speeds, simulate) are what is compared;
+//   tackle's definitions of the names it makes (defined parameters, turning strands' lengths,
+//   a length sum's constant as its quantity) are put in before they are evaluated.
+// - the oracle of verdicts (oracle.cpp, variants.cpp, worlds.cpp, diagram.cpp): the students'
+//   items are made from tackle's equations (the derivation's, its rate and position equations,
+//   lmb_along and amb_along for other bodies and systems), closed forms and symbol table
+//   (which symbols are parameters and masses, their dimensions: to write equations of one
+//   dimension), printed with tackle's to_text and kept within tackle's documented input bounds
+//   (answer_limits); a diagram names the description's points and bodies. Their truth comes
+//   from this model alone (worlds.cpp: the text read by expr.hpp's parser, evaluated at the
+//   model's states), except the turning strands' lengths, which tackle names and defines and
+//   the oracle evaluates from tackle's definition, as text.
 #pragma once
 
 #include <algorithm>
@@ -49,12 +68,62 @@ struct Quantity {
   double value = 0;
   bool determined = true;
   bool force = false;  // a constraint force (else an acceleration)
+  // Its parts along the directions the equations leave free (the null space of the system,
+  // each column of unit length): empty or zero when determined. An expression in several
+  // quantities is determined where these parts cancel (O_y + G_y in an indeterminate support).
+  Eigen::VectorXd free;
 };
 
 struct Instant {
   std::vector<Quantity> quantities;
+  /// The quantity of that name, or null.
+  [[nodiscard]] const Quantity* find(const std::string& name) const {
+    for (const auto& q : quantities)
+      if (q.name == name) return &q;
+    return nullptr;
+  }
+  int free_directions = 0;  // columns of each Quantity::free
   double residual = 0;  // of the KKT system at its least-squares solution, relative
   int rank_deficiency = 0;
+};
+
+/// What the model's own physics requires of a solution, connection by connection: a string
+/// or a cable pulls (its tension is not negative), a contact, a roller or a wheel pushes (its
+/// normal force is not negative), a sticking contact's or a gripping wheel's friction stays
+/// within its cone (|F| <= mu N), an elastic cord is taut (its length at least its rest
+/// length); a steady motion's unknown rate is real (its square is not negative). Nothing here
+/// is read from tackle's rules.
+struct Requirement {
+  enum Kind { pulls, pushes, cone, taut, real } kind = pulls;
+  std::string force;   // the constraint force (tackle's name for it): T, N_A; cone: the friction F_A;
+                       // real: the rate squared (omega^2)
+  std::string normal;  // cone: the normal force N_A
+  double mu = 0;       // cone
+  int element = -1;    // taut: the cord (an element of the model)
+  std::string what;    // in words: "string s pulls"
+};
+
+/// How far a requirement is met at a state: a force (N), not negative when it is met.
+struct Margin {
+  const Requirement* requirement = nullptr;
+  double value = 0;
+  bool determined = true;  // the model determines the forces it is made of
+};
+
+/// A force on a body as the model has it at a state, for free body diagrams: where it acts (a
+/// point's name, or the body's for its center), along which line, and whether its sense is
+/// known before solving (gravity, a given force, a string that pulls, a contact that pushes, a
+/// spring's pull or push at the state) or not (a reaction of either sign). A force of unknown
+/// direction (a pin's, a joint's: two or three reactions of either sign at one point) has the
+/// lines its direction spans. A 2-D couple has no line and its sense in `turn` (0: unknown).
+struct BodyForce {
+  std::string what;                    // "string s", "gravity", "roller at A", "spring k_s"
+  std::string at;
+  std::vector<Eigen::VectorXd> lines;  // unit; the first is the force's own direction when `sense`
+  bool sense = true;
+  bool zero = false;                   // nothing at this state (a spring at its rest length)
+  bool couple = false;
+  int turn = 0;
 };
 
 /// A deliberately wrong model (the test that the comparison catches one).
@@ -63,6 +132,10 @@ struct Perturbation {
   double inertia = 0;    // every turning body's moment of inertia times 1 + inertia
   bool winding = false;  // a string wound on a drum winds the other way
 };
+
+/// Whether every strand that kept its direction between `then` and `now` (strand_vectors)
+/// still points the same way: none went through zero length.
+[[nodiscard]] bool same_directions(const std::vector<Eigen::VectorXd>& now, const std::vector<Eigen::VectorXd>& then);
 
 class Model {
  public:
@@ -76,7 +149,8 @@ class Model {
   /// The state at the layout (given values, then layout, then 0), projected onto the
   /// constraints.
   [[nodiscard]] State base_state() const;
-  /// A random state near the layout, consistent with the constraints (positions and rates).
+  /// A random state near the layout, consistent with the constraints (positions and rates);
+  /// a coordinate or rate given in the parameters keeps its value.
   [[nodiscard]] std::optional<State> random_state(std::mt19937_64& rng, double spread) const;
   /// The accelerations and constraint forces at a state.
   [[nodiscard]] Instant solve(const State& s) const;
@@ -95,6 +169,26 @@ class Model {
   /// points in `ref` (a strand through zero length, a block through its pulley, is where
   /// neither this model nor tackle's describes the mechanism any more).
   [[nodiscard]] bool strands_keep_direction(const State& s, const State& ref) const;
+  /// Each strand (of strings, springs, dampers, contacts, in the model's order) from its
+  /// first point to its second: the same list for every model of one description.
+  [[nodiscard]] std::vector<Eigen::VectorXd> strand_vectors(const State& s) const;
+  /// Its requirements (Requirement) in the description's order, and how far each is met at a
+  /// state whose instant (solve()) is `inst`.
+  [[nodiscard]] const std::vector<Requirement>& requirements() const { return requirements_; }
+  [[nodiscard]] std::vector<Margin> margins(const State& s, const Instant& inst) const;
+  /// A sliding contact's slip speed (its material point's velocity along its sliding
+  /// direction) by its normal force's name (N_A); nothing for another name.
+  [[nodiscard]] std::optional<double> slip_speed(const std::string& normal, const State& s) const;
+  /// What a motion watches, at a state (projected onto the constraints first): each
+  /// requirement's margin (NaN where not determined), then each sliding contact's slip speed.
+  /// A margin that turns negative, or a slip that turns, ends the motion the model describes.
+  [[nodiscard]] std::vector<std::pair<std::string, double>> watched(const State& s) const;
+  /// The forces on a body at a state (throws Unsupported for what a sketch cannot show: a
+  /// damper's force or a load that depends on the speed, a couple in space).
+  [[nodiscard]] std::vector<BodyForce> forces_on(const std::string& body, const State& s) const;
+  /// A named point's (or a body's center's) position at a state; nothing for another name.
+  [[nodiscard]] std::optional<Eigen::VectorXd> named_position(const std::string& name, const State& s) const;
+  [[nodiscard]] std::vector<std::string> body_names() const;
   /// Whether any expression depends on time.
   [[nodiscard]] bool uses_time() const { return uses_time_; }
   [[nodiscard]] const std::map<std::string, double>& parameters() const { return params_; }
@@ -124,12 +218,14 @@ class Model {
     std::vector<Expr> cm_expr;       // turning: the center in tackle's coordinates (its angle, others')
   };
   struct PointRef {
+    std::string name;                // the description's point (or body, for its center); "" for one made here
     int body = -1;                   // -1: the ground
     Eigen::VectorXd offset;          // from the body's center, in the body's frame (material point)
     bool turns = true;               // false: the offset keeps the ground's directions (a point where a
                                      // strand leaves a drum, where a wheel touches the ground)
     std::vector<Expr> ground;        // a ground point's position (parameters, t)
     Eigen::VectorXd frame_accel;     // a ground point that moves with a driven body's frame
+    int frame_body = -1;             // that body (-1: none)
   };
   struct Constraint {
     std::string name;                // tackle's unknown, "" when it has none, "guide ..." for guides
@@ -151,6 +247,7 @@ class Model {
       double sign = 1;               // -1 only in a deliberately wrong model
     };
     std::vector<Winding> winds;      // path
+    std::string label;               // the connection's type and name ("string s"), for diagrams
   };
   struct Element {                   // a spring, elastic cord or damper on a path
     enum Kind { spring, damper } kind = spring;
@@ -159,12 +256,14 @@ class Model {
     double k = 0, rest = 0, c = 0;
     bool stretch = false;            // rest = origin length - stretch
     double stretch_value = 0;
+    std::string label;
   };
   struct Load {
     int body = -1;
     PointRef at;
     std::vector<Expr> force;         // one per axis; may use coordinates, rates, t
     std::vector<Expr> couple;        // 2-D: one, 3-D: three
+    std::string label;
   };
 
  private:
@@ -181,15 +280,47 @@ class Model {
   std::vector<Constraint> cons_;
   std::vector<Element> elements_;
   std::vector<Load> loads_;
+  std::vector<Requirement> requirements_;
+  [[nodiscard]] double element_tension(const Element& e, const State& s) const;
+  [[nodiscard]] Eigen::VectorXd point_position(const PointRef& p, const State& s) const;
+  [[nodiscard]] std::vector<double> numbers_at(const State& s) const;  // every slot's value
+  // forces.cpp: the parts of forces_on
+  struct ForcePart {
+    std::string what, group;  // parts of one group of unknown sense make one force of unknown direction
+    std::string at;
+    Eigen::VectorXd direction;
+    bool sense = false, zero = false;
+  };
+  void strand_parts(int body, const std::vector<PointRef>& pts, double sign, const std::string& what, bool sense,
+                    const State& s, std::vector<ForcePart>& out) const;
+  void constraint_parts(int body, const Constraint& c, const State& s, std::vector<ForcePart>& out, std::vector<BodyForce>& couples) const;
+  void load_forces(int body, const State& s, std::vector<BodyForce>& out) const;
+  [[nodiscard]] bool sense_known(const std::string& force) const;
+  [[nodiscard]] Eigen::VectorXd velocity(const PointRef& p, const State& s) const;
   Eigen::VectorXd gravity_;
   Eigen::VectorXd origin_q_;                   // every coordinate of tackle's at 0 (a spring's `stretch`)
   std::map<std::string, double> base_coord_, base_rate_;
   std::map<std::string, double> given_accel_;  // kinematics: ddot(q) -> its value
+  std::map<std::string, double> pinned_;       // coordinates and rates given in the parameters: every state keeps them
   bool kinematic_ = false;                     // no body has a mass: the constraints alone
   [[nodiscard]] Instant solve_kinematics(const State& s) const;
+  // A steady motion at an unknown rate: the body whose given acceleration is a0 + s w in the
+  // rate squared s, and the guide along w (whose force solve_steady makes 0).
+  struct Steady {
+    int body = -1, guide = -1;
+    Eigen::VectorXd a0, w;
+    std::string squared, rate, period;  // tackle's names: omega^2, omega, tau
+  };
+  std::optional<Steady> steady_;
+  int steady_slot_ = -1;  // the rate's slot (no value: only a body's acceleration uses it)
+  [[nodiscard]] Instant solve_steady(const State& s) const;
+  [[nodiscard]] Instant solve_fixed(const State& s) const;  // with every given acceleration as it is
+  void set_steady(double squared);  // the body's (and its frame's) acceleration at this rate squared
+  [[nodiscard]] Eigen::VectorXd along_line(const Body& b, const Eigen::MatrixXd& nulls) const;
 
   int slot(const std::string& name) const;
-  Expr compile(const tackle::Text& t) const;
+  Expr compile(const tackle::Text& t) const;      // (not the steady rate)
+  Expr compile_any(const tackle::Text& t) const;  // (the steady rate too)
   double number(const tackle::Text& t) const;
   PointRef point(const std::string& name, int body_hint) const;
   PointRef material(const std::string& name, int body) const;

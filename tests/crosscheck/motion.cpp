@@ -2,6 +2,8 @@
 // ends) from the description's initial values, against `tackle simulate` at 11 times.
 #include <chrono>
 #include <cmath>
+#include <functional>
+#include <optional>
 
 #include <boost/numeric/odeint.hpp>
 #include <fmt/format.h>
@@ -12,6 +14,80 @@
 #include "pipeline/pipeline.hpp"
 
 namespace crosscheck {
+
+namespace {
+
+// The model's first event along its motion (Model::watched): a requirement that is not met
+// (at the start: at t = 0; one that starts at 0 and falls: where it falls; else where it
+// stops being met: a string goes slack, a contact stops pushing, a grip slips), a slip against
+// the sliding direction the description assumes at the start, or a slip that turns.
+class Events {
+ public:
+  Events(const Model& m, const State& start) : m_(m), tol_(1e-7 * std::max(1.0, m.largest_mass() * m.gravity_magnitude())) {
+    const auto w = m.watched(start);
+    for (std::size_t k = 0; k < w.size(); ++k) {
+      const double v = w[k].second;
+      // (a requirement, or a slip, is watched as a quantity that must stay positive; a slip
+      // that starts at 0 takes the sign it first has)
+      slip_.push_back(k >= m.requirements().size());
+      sign_.push_back(std::isnan(v) || std::abs(v) <= tol_ ? (slip_[k] ? 0 : 1) : v > 0 ? 1 : -1);
+      if (sign_[k] < 0 && !first) first = {0.0, w[k].first + (slip_[k] ? ": against the assumed sliding direction" : "")};
+    }
+  }
+  // A step from t0 to t1, `at` the state at any time in it.
+  void step(double t0, double t1, const std::function<State(double)>& at) {
+    if (first) return;
+    const auto w = m_.watched(at(t1));
+    for (std::size_t k = 0; k < w.size(); ++k) {
+      const double v = w[k].second;
+      if (std::isnan(v) || std::abs(v) <= tol_) continue;
+      const int now = v > 0 ? 1 : -1;
+      if (sign_[k] != 0 && now != sign_[k]) {
+        const double te = locate(k, t0, t1, at);
+        if (!first || te < first->first) first = {te, w[k].first};
+      } else if (sign_[k] == 0) {
+        sign_[k] = now;
+      }
+    }
+  }
+  std::optional<std::pair<double, std::string>> first;
+
+ private:
+  const Model& m_;
+  double tol_;
+  std::vector<int> sign_;
+  std::vector<bool> slip_;
+  double locate(std::size_t k, double lo, double hi, const std::function<State(double)>& at) const {
+    for (int i = 0; i < 50 && hi - lo > 1e-12 * (1 + hi); ++i) {
+      const double mid = (lo + hi) / 2;
+      const double v = m_.watched(at(mid))[k].second;
+      (v * sign_[k] > 0 ? lo : hi) = mid;
+    }
+    return hi;
+  }
+};
+
+// tackle's first event that ends its run against the model's first event.
+void compare_events(const tackle::Simulation& sim, const Events& ev, double horizon, Outcome& out) {
+  std::optional<tackle::SimulationEvent> end;
+  for (const auto& e : sim.events)
+    if (e.ends) {
+      end = e;
+      break;
+    }
+  const auto close = [](double a, double b) { return std::abs(a - b) <= 1e-6 * std::max(1.0, std::abs(a)); };
+  if (ev.first && ev.first->first <= horizon && (!end || !close(end->t, ev.first->first)))
+    out.disagreements.push_back({fmt::format("motion: the model's first event: {} at t = {:.9g} s; tackle's: {}", ev.first->second,
+                                             ev.first->first, end ? fmt::format("{} at t = {:.9g} s", end->what, end->t) : "none"),
+                                 end ? end->t : -1, ev.first->first, "from the initial values"});
+  else if (end && ev.first)
+    out.motion_event = fmt::format("{} at t = {:.6g} s (tackle: {})", ev.first->second, ev.first->first, end->what);
+  else if (end && !ev.first && end->t <= horizon)
+    out.disagreements.push_back({fmt::format("motion: tackle's run ends at t = {:.9g} s ({}); the model has no event there", end->t, end->what),
+                                 end->t, -1, "from the initial values"});
+}
+
+}  // namespace
 
 Outcome compare_motion(const tackle::Analysis& a, const Model& m, const tackle::Description& d, const Options& o) {
   Outcome out;
@@ -83,24 +159,36 @@ Outcome compare_motion(const tackle::Analysis& a, const Model& m, const tackle::
   std::size_t row = 0;
   const auto& table = sim.table;
   stepper.initialize(x, 0.0, 1e-3);
-  while (row < table.x.size()) {
-    const double target = table.x[row];
+  auto state_at = [&](double t) {
+    Vec y = x;
+    stepper.calc_state(t, y);
+    State s;
+    s.q = Eigen::Map<const Eigen::VectorXd>(y.data(), n);
+    s.v = Eigen::Map<const Eigen::VectorXd>(y.data() + n, n);
+    s.t = t;
+    return s;
+  };
+  Events events(m, *start);
+  // Steps to `target` watching the strands and the events; false when the model cannot get
+  // there (a point it cannot get past, where a strand's length reaches 0 and its direction is
+  // lost, would take steps without end: the run stops there).
+  auto advance = [&](double target) {
     while (target > 0 && stepper.current_time() < target && !failed && crossed < 0) {
-      // (a point the model cannot get past, where a strand's length reaches 0 and its
-      // direction is lost, would take steps without end: the run stops there)
       if (++steps > 200000 || std::chrono::steady_clock::now() - began > std::chrono::seconds(10)) {
         out.motion_note = fmt::format("the model's integration does not get past t = {:.4g} s (compared up to there)",
                                       stepper.current_time());
-        return out;
+        return false;
       }
       stepper.do_step(rhs);
-      const Vec& y = stepper.current_state();
-      State s;
-      s.q = Eigen::Map<const Eigen::VectorXd>(y.data(), n);
-      s.v = Eigen::Map<const Eigen::VectorXd>(y.data() + n, n);
-      s.t = stepper.current_time();
+      const State s = state_at(stepper.current_time());
       if (!m.strands_keep_direction(s, *start)) crossed = stepper.previous_time();
+      else events.step(stepper.previous_time(), stepper.current_time(), state_at);
     }
+    return true;
+  };
+  while (row < table.x.size()) {
+    const double target = table.x[row];
+    if (!advance(target)) return out;
     if (crossed >= 0 && target > crossed) {
       out.motion_note = fmt::format(
           "a strand goes through zero length at t = {:.4g} s (a block through its pulley or anchor): "
@@ -131,6 +219,10 @@ Outcome compare_motion(const tackle::Analysis& a, const Model& m, const tackle::
     }
     ++row;
   }
+  // (past the last row, to where tackle's run ends: an event there is the model's too)
+  const double horizon = table.x.empty() ? 0.0 : std::max(table.x.back(), sim.complete ? 0.0 : sim.reached * (1 + 1e-5) + 1e-7);
+  if (!advance(horizon)) return out;
+  if (crossed < 0 && !failed) compare_events(sim, events, horizon, out);
   if (!sim.complete && out.motion_note.empty()) out.motion_note = fmt::format("tackle's run ends at t = {:g} s ({})", sim.reached, sim.stopped);
   return out;
 }

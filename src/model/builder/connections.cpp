@@ -507,6 +507,22 @@ void add_constraints(BuildContext& ctx, Instance& in) {
   }
 }
 
+// A rule that assumes the direction of sliding with no friction at the given numbers (mu = 0):
+// its forces along the sliding direction are zero, so a turn changes nothing.
+bool frictionless(BuildContext& ctx, const Instance& in) {
+  const auto along = in.vector_args.find("sliding");
+  if (along == in.vector_args.end()) return false;
+  const exmap values = ctx.table->values();
+  bool any = false;
+  for (const auto& l : ctx.m.loads) {
+    if (l.source != in.label) continue;
+    any = true;
+    const ex f = evalf(substituted(inner(l.force, unit(along->second)), values));
+    if (!f.is_zero()) return false;
+  }
+  return any;
+}
+
 // Validity conditions, assumptions, the model's list of connections, and checks that need
 // every connection (run after all of them).
 void add_conditions(BuildContext& ctx, Instance& in) {
@@ -561,7 +577,7 @@ void add_conditions(BuildContext& ctx, Instance& in) {
     }
     ctx.m.drawings.push_back(std::move(d));
   }
-  if (rule->assumes_direction) {
+  if (rule->assumes_direction && !frictionless(ctx, in)) {
     ctx.m.direction_assumed_by.push_back(label);
     // At a point of a turning body the contact slips at the material point's velocity, not
     // the center's (a ball that slides and spins).

@@ -184,13 +184,15 @@ TEST_CASE("Steps: an empty solution scores 0, and a part with nothing needed is 
   CHECK(results["tests"][1]["name"] == "balances");
   CHECK(results["tests"][1]["max_score"] == 0.0);
   CHECK(results["tests"][1]["output"] == "not graded: no balance is needed for the unknowns asked");
-  // The forced damped block asks for no unknown with a closed form to check (its answer is a
-  // motion in time): nothing is graded, and nothing is given.
+  // The forced damped block asks for ddot(x) in its state (by hand: m ddot(x) = F_0 cos(w t) -
+  // c dot(x) - k x, its one balance; no constraint): nothing given, nothing earned, and the
+  // constraints are not graded.
   CHECK(solution_text(grade("damped-block-on-spring-forced", "steps: []\n", rubric10)) ==
-        "balances: not graded: the problem asks for no unknown that can be checked\n"
-        "constraints: not graded: the problem asks for no unknown that can be checked\n"
-        "answers: not graded: the problem asks for no unknown that can be checked\n"
-        "score: 0 of 0\n");
+        "missing (needed for the unknowns asked): LMB block (x)\n"
+        "balances: 0 of 4 (0 of 1)\n"
+        "constraints: not graded: no constraint is needed for the unknowns asked\n"
+        "answers: 0 of 4 (0 of 1)\n"
+        "score: 0 of 8\n");
 }
 
 TEST_CASE("Steps: a part whose needed equations tackle cannot tell is not awarded", "[check][steps]") {
