@@ -11,6 +11,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <system_error>
 
 #include <CLI/CLI.hpp>
 
@@ -677,6 +678,12 @@ int run(int argc, char** argv) {
   } catch (const std::bad_alloc&) {
     // To main, which says so; the outputs unwound on the way have removed their temporary files.
     throw;
+  } catch (const std::system_error& e) {
+    // A system call out of memory (reading the rules directory under a small address space) is
+    // out of memory too, not a bug.
+    if (e.code() == std::errc::not_enough_memory) throw std::bad_alloc();
+    std::cerr << "tackle: internal error: " << e.what() << "\n";
+    return 3;
   } catch (const std::exception& e) {
     std::cerr << "tackle: internal error: " << e.what() << "\n";
     return 3;
