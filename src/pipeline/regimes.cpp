@@ -115,6 +115,7 @@ RegimeChoice decide_regime(const Analysis& a, const Description& d, const RuleSe
     const auto v = at_values(cc.expr, table);
     const bool fails = v && !relation_holds(*v, cc.condition->op);
     if (fails) out.failed.push_back(cc.condition->meaning);
+    if (!v) out.undecided = true;
     for (const auto& s : cc.solved) {
       RegimeChoice::Bound b{cc.condition->meaning, s.parameter, s.bound, s.op, number_of(s.bound, s.parameter), fails};
       std::string problem;
@@ -156,6 +157,7 @@ RegimeChoice decide_regime(const Analysis& a, const Description& d, const RuleSe
     }
   }
   turn = false;
+  if (!out.failed.empty()) out.undecided = false;
   if (out.failed.empty() || rule->regimes.size() < 2) return out;
   const RegimeSpec& next = rule->regimes[1];
   out.chosen = next.type;

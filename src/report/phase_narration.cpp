@@ -150,7 +150,10 @@ void narrate_regimes(Derivation& d, const std::vector<RegimeChoice>& choices, co
       if (!f.limit.is_zero()) n.equation("the most friction at the contact", f.limit, f.limit_value)->note = f.limit_number;
     }
     bounds(true, slips ? "The friction coefficient that would hold them together:" : "The friction coefficient that holds them together:");
-    if (!slips) {
+    if (c.undecided) {
+      n.text("At the given numbers these have no number (they depend on the time or on a coordinate): the contact is derived "
+             "sticking, and the model holds while they do (a simulation stops where they fail).");
+    } else if (!slips) {
       n.text("At the given numbers they do: the bodies move together, as derived here.");
     } else {
       n.text("At the given numbers they do not (" + join(c.failed, "; ") + " fails): the bodies slip on each other, and the contact is " +

@@ -64,6 +64,9 @@ struct RegimeChoice {
   std::string first, chosen;  // the rules tried first and chosen (sticking_between, sliding_between)
   // The first regime's conditions that fail at the given numbers (their meanings) ...
   std::vector<std::string> failed;
+  // (... or none, and some have no number there: they depend on the time or on a coordinate
+  // without a value. The first regime is taken; it holds while they do.)
+  bool undecided = false;
   // ... and each of its conditions solved for a parameter, with the bound's number (when the
   // parameters have values): `F <= g*mu_s*(m_A + m_B) = 14.715 N`.
   struct Bound {

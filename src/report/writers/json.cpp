@@ -218,7 +218,8 @@ nlohmann::ordered_json json_object(const Derivation& d, bool full) {
     // Connections decided at the numbers: sticking, or slipping where sticking cannot hold.
     auto& regimes = j["regimes"] = nlohmann::ordered_json::array();
     for (const auto& c : d.regimes) {
-      nlohmann::ordered_json r{{"connection", c.connection}, {"tried", c.first}, {"chosen", c.chosen}, {"failed", c.failed}};
+      nlohmann::ordered_json r{{"connection", c.connection}, {"tried", c.first}, {"chosen", c.chosen}, {"failed", c.failed},
+                                 {"decided", !c.undecided}};
       auto& bounds = r["holds_while"] = nlohmann::ordered_json::array();
       auto text_or_null = [](const std::string& t) { return t.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(t); };
       for (const auto& b : c.holds_while)
