@@ -21,9 +21,11 @@ equations', by exact rank in Fractions at two random points.
 
 Prints the whole-process time (best of --repeat runs, with the machine's load average before
 each), the time per check, and how many verdicts disagree (there must be none).
-Usage: bench/check_batch.py [--build DIR] [-n 10000] [--repeat 5] [--seed 1] [--equations | --both]
+With --each, every problem gets N lines of its own (a batch of N per example).
+Usage: bench/check_batch.py [--build DIR] [-n 10000] [--repeat 5] [--seed 1] [--each] [--equations | --both]
 """
 import argparse
+import math
 import json
 import os
 import random
@@ -58,6 +60,14 @@ PROBLEMS = {
             "T": lambda p: p["m_A"] * p["m_B"] * p["g"] * (1 + p["sin(theta)"]) / (p["m_A"] + p["m_B"]),
             "N_A": lambda p: p["m_A"] * p["g"] * p["cos(theta)"],
         },
+    },
+    # Sample 12.8 (its notes): T_HI = m a l/(2 d), l = sqrt(b^2 + d^2 + e^2), a root. Its points
+    # are drawn from whole-number quadruples b^2 + d^2 + e^2 = l^2 (scaled together), so that the
+    # root is an exact rational here too.
+    "sample-12.8-sign-board": {
+        "params": {"m": 20, "a": Fraction(6, 10), "g": 10, "b": Fraction(3, 2), "c": Fraction(3, 2), "d": 3, "e": Fraction(1, 2)},
+        "unit": {"T_HI": "N"},
+        "reference": {"T_HI": lambda p: p["m"] * p["a"] * p["l"] / (2 * p["d"])},
     },
     "sample-12.7-suitcase": {
         "params": {"m": 10, "g": Fraction(981, 100), "mu": Fraction(3, 10), "l": Fraction(6, 10), "h": Fraction(4, 10)},
@@ -107,6 +117,8 @@ def shapes(problem, unknown, rng):
         return text, f
     if problem == "incline-and-hanging-block":
         return incline_shape(unknown, rng, right, coef, k)
+    if problem == "sample-12.8-sign-board":
+        return board_shape(rng, right, coef, k)
     # The suitcase.
     sign = {"N_A": -1, "N_B": 1}.get(unknown)
     if sign is None:  # a_C = -mu g
@@ -126,6 +138,53 @@ def shapes(problem, unknown, rng):
         def f(p, two=two, s=s):
             return p["m"] * p["g"] / 2 + s * two * p["m"] * p["g"] * p["mu"] * p["h"] / (2 * p["l"])
     return text, f
+
+
+def root(x):
+    """The square root of a Fraction when it is rational, else None (an irrational value, never
+    equal to a rational reference)."""
+    x = Fraction(x)
+    if x < 0:
+        return None
+    n, d = math.isqrt(x.numerator), math.isqrt(x.denominator)
+    return Fraction(n, d) if n * n == x.numerator and d * d == x.denominator else None
+
+
+def board_shape(rng, right, coef, k):
+    """Sample 12.8's T_HI as students write it: the root written out or as l, scaled, split;
+    wrong: a coefficient, a term of the root left out, c for d, an extra term."""
+    n, two = coef(1), coef(2)
+    wrong = None if right else rng.choice(["coefficient", "root", "c", "extra"])
+    inside = ["b^2", "d^2", "e^2"]
+    rng.shuffle(inside)
+    kept = inside[:2] if wrong == "root" else inside
+    below = "c" if wrong == "c" else "d"
+    extra = rng.randint(1, 5) if wrong == "extra" else 0
+    form = rng.randint(0, 3)
+    rt = f"sqrt({' + '.join(kept)})"
+    if form == 0:
+        text = f"{n * k}*m*a*{rt}/({two * k}*{below})"
+    elif form == 1 and wrong != "root":
+        text = f"{n}*a*m*l/{below}/{two}"
+    elif form == 2:
+        text = f"{n}*m*a*sqrt(({' + '.join(kept)})/({two * two * k * k}*{below}^2))*{k}"
+    else:
+        text = f"a*m*{rt}*{n}/({below}*{two})"
+    if extra:
+        text += f" + {extra}*m*g/{k}"
+
+    def f(p, n=n, two=two, kept=kept, below=below, extra=extra):
+        r = root(sum(p[x[0]] ** 2 for x in kept))
+        if r is None:
+            return None
+        return n * p["m"] * p["a"] * r / (two * p[below]) + Fraction(extra, k) * p["m"] * p["g"]
+
+    return text, f
+
+
+# Whole-number quadruples b^2 + d^2 + e^2 = l^2.
+QUADRUPLES = [(1, 2, 2, 3), (2, 3, 6, 7), (1, 4, 8, 9), (4, 4, 7, 9), (2, 6, 9, 11), (6, 6, 7, 11),
+              (2, 10, 11, 15), (1, 12, 12, 17), (3, 4, 12, 13), (2, 5, 14, 15), (8, 9, 12, 17)]
 
 
 def incline_shape(unknown, rng, right, coef, k):
@@ -280,11 +339,20 @@ def equation_line(problem, rng):
 
 def random_point(params, rng):
     p = {k: Fraction(v) * Fraction(rng.randint(500, 2000), 1000) for k, v in params.items()}
+    if {"b", "d", "e"} <= p.keys():  # sample 12.8: its root exact
+        q = list(rng.choice(QUADRUPLES))
+        sides = q[:3]
+        rng.shuffle(sides)
+        scale = Fraction(rng.randint(1, 40), 10)
+        p["b"], p["d"], p["e"], p["l"] = (x * scale for x in sides + [q[3]])
     return with_angles(p)
 
 
 def with_angles(p):
-    """An angle given as t_NAME = tan(NAME/2): its sine and cosine, exact."""
+    """An angle given as t_NAME = tan(NAME/2): its sine and cosine, exact; sample 12.8's l (a
+    float at the description's own values, where only numbers with units use it)."""
+    if {"b", "d", "e"} <= p.keys() and "l" not in p:
+        p["l"] = root(p["b"] ** 2 + p["d"] ** 2 + p["e"] ** 2) or (p["b"] ** 2 + p["d"] ** 2 + p["e"] ** 2) ** 0.5
     for k in [k for k in p if k.startswith("t_")]:
         t, name = p[k], k[2:]
         p[f"sin({name})"] = 2 * t / (1 + t * t)
@@ -295,7 +363,7 @@ def with_angles(p):
 def make_batch(n, rng, equations=False):
     """Lines of (problem, json line, expected verdict)."""
     out = []
-    names = list(PROBLEMS)
+    names = list(EQUATIONS) if equations else list(PROBLEMS)
     # Half of the lines from the problems with an angle, half from the others.
     angled = [k for k in names if any(x.startswith("t_") for x in PROBLEMS[k]["params"])]
     plain = [k for k in names if k not in angled]
@@ -331,6 +399,9 @@ def main():
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--no-latex", action="store_true", help="pass --no-latex (no LaTeX echo of each answer)")
+    ap.add_argument("--each", action="store_true",
+                    help="n lines for each problem (one batch of n per example) rather than n in all")
+    ap.add_argument("--write", metavar="DIR", help="write each problem's batch (PROBLEM.jsonl) to DIR and stop (to profile)")
     kind = ap.add_mutually_exclusive_group()
     kind.add_argument("--equations", action="store_true", help="distinct equations instead of answers")
     kind.add_argument("--both", action="store_true", help="answers, then equations, in one run")
@@ -344,13 +415,22 @@ def main():
 def run(args, equations):
     rng = random.Random(args.seed)
     tackle = os.path.join(args.build, "tackle")
-    lines = make_batch(args.n, rng, equations)
+    count = args.n * (len(EQUATIONS if equations else PROBLEMS) if args.each else 1)
+    lines = make_batch(count, rng, equations)
     what = "equations" if equations else "answers"
+    if args.write:
+        os.makedirs(args.write, exist_ok=True)
+        for problem in {p for p, _, _ in lines}:
+            with open(os.path.join(args.write, f"{problem}.{what}.jsonl"), "w") as f:
+                f.write("".join(l + "\n" for p, l, _ in lines if p == problem))
+        return 0
     total_time, total_checks, wrong = 0.0, 0, 0
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         for problem in PROBLEMS:
             mine = [(l, e) for p, l, e in lines if p == problem]
+            if not mine:
+                continue
             path = os.path.join(tmp, problem + ".jsonl")
             with open(path, "w") as f:
                 f.write("".join(l + "\n" for l, _ in mine))

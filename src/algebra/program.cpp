@@ -57,6 +57,76 @@ numeric half_tangent(double angle) {
 
 Program::Program(const ex& e, const Sample& layout, const exmap& definitions, const std::vector<bool>& angles) {
   emit(e, layout, definitions, angles, 0);
+  for (Node& node : nodes_)
+    if (node.op == Op::number) node.approx = cln::double_approx(node.number);
+}
+
+std::vector<double> doubles_of(const Sample& point) {
+  std::vector<double> out;
+  out.reserve(point.size());
+  for (const auto& [symbol, value] : point) out.push_back(value.is_real() ? value.to_double() : std::nan(""));
+  return out;
+}
+
+double Program::approx(const std::vector<double>& point) const {
+  if (nodes_.empty()) return std::nan("");
+  std::size_t at = 0;
+  return run_double(at, point);
+}
+
+// The node at `at` and what follows it, in doubles (NaN for nothing); `at` moves past them
+// always (a NaN operand does not stop the walk: the value is NaN anyway).
+double Program::run_double(std::size_t& at, const std::vector<double>& point) const {
+  const Node& node = nodes_[at++];
+  switch (node.op) {
+    case Op::number: return node.approx;
+    case Op::input: return point[node.index];
+    case Op::angle: return 2 * std::atan(point[node.index]);
+    case Op::nothing: return std::nan("");
+    case Op::add:
+    case Op::mul: {
+      const bool sum = node.op == Op::add;
+      double out = sum ? 0 : 1;
+      for (std::size_t i = 0; i < node.n; ++i) {
+        const double v = run_double(at, point);
+        out = sum ? out + v : out * v;
+      }
+      return out;
+    }
+    case Op::power: {
+      const double b = run_double(at, point), x = run_double(at, point);
+      if (b == 0 && x <= 0) return std::nan("");
+      return x == 0.5 ? std::sqrt(b) : std::pow(b, x);
+    }
+    case Op::function: {
+      const double a = run_double(at, point);
+      if (node.serial == abs_SERIAL::serial) return std::fabs(a);
+      if (node.serial == csgn_SERIAL::serial) return a > 0 ? 1.0 : a < 0 ? -1.0 : 0.0;
+      if (node.serial == exp_SERIAL::serial) return std::exp(a);
+      if (node.serial == log_SERIAL::serial) return a > 0 ? std::log(a) : std::nan("");
+      if (node.serial == sin_SERIAL::serial) return std::sin(a);
+      if (node.serial == cos_SERIAL::serial) return std::cos(a);
+      if (node.serial == tan_SERIAL::serial) return std::tan(a);
+      if (node.serial == asin_SERIAL::serial) return std::asin(a);
+      if (node.serial == acos_SERIAL::serial) return std::acos(a);
+      if (node.serial == atan_SERIAL::serial) return std::atan(a);
+      if (node.serial == sinh_SERIAL::serial) return std::sinh(a);
+      if (node.serial == cosh_SERIAL::serial) return std::cosh(a);
+      if (node.serial == tanh_SERIAL::serial) return std::tanh(a);
+      return std::nan("");  // another function: no screen (the exact evaluation decides)
+    }
+    case Op::trig: {
+      double angle = node.multiple * std::acos(0.0);  // the quarter turns
+      for (std::size_t k = 0; k < node.n; ++k) {
+        const Node& pair = nodes_[at++];
+        angle += static_cast<double>(pair.multiple) * 2 * std::atan(point[pair.index]);
+      }
+      if (node.serial == sin_SERIAL::serial) return std::sin(angle);
+      if (node.serial == cos_SERIAL::serial) return std::cos(angle);
+      return std::tan(angle);
+    }
+  }
+  return std::nan("");
 }
 
 void Program::emit(const ex& e, const Sample& layout, const exmap& definitions, const std::vector<bool>& angles, int depth) {

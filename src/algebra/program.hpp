@@ -35,6 +35,9 @@ class Program {
   /// The value at `point` (same inputs as the layout), or nothing: a symbol without a value, a
   /// division by zero, a complex value, a number past the bounds.
   [[nodiscard]] std::optional<GiNaC::numeric> operator()(const Sample& point) const;
+  /// The value at `point` in doubles (each input's value as a double, in the layout's order),
+  /// NaN for nothing: a screen, never a verdict (an exact evaluation confirms what it passes).
+  [[nodiscard]] double approx(const std::vector<double>& point) const;
   [[nodiscard]] bool empty() const { return nodes_.empty(); }
 
  private:
@@ -46,6 +49,7 @@ class Program {
     unsigned serial = 0;    // function, trig
     std::size_t n = 0;      // add, mul: how many operands follow; trig: how many (index, multiple) pairs follow
     long multiple = 0;      // trig: pi/2 added this many times; a pair: the angle's multiple
+    double approx = 0;      // number: as a double
   };
   struct Value;  // a fraction kept unreduced, or a float
   std::vector<Node> nodes_;  // in preorder
@@ -56,7 +60,11 @@ class Program {
   bool run_power(std::size_t& at, const Sample& point, Value& out) const;
   bool run_function(const Node& node, std::size_t& at, const Sample& point, Value& out) const;
   bool run_trig(const Node& node, std::size_t& at, const Sample& point, Value& out) const;
+  double run_double(std::size_t& at, const std::vector<double>& point) const;
 };
+
+/// A point's values as doubles, in its order (for Program::approx).
+[[nodiscard]] std::vector<double> doubles_of(const Sample& point);
 
 /// The angle's value at a point from its t = tan(angle/2): 2 atan(t), a float.
 [[nodiscard]] GiNaC::numeric angle_of(const GiNaC::numeric& t);

@@ -209,6 +209,52 @@ double expanded_size(const ex& e) {
   return 1;
 }
 
+namespace {
+
+// The rates among the answer's names that the constraints' rate forms tie to the others, each
+// as an expression in them: the constraints in those rates and the parameters alone, solved
+// (linear) for as many as they fix. Nothing when they cannot be solved.
+exmap tied_rates(const EquationSystem& system, const std::vector<ex>& names, const SymbolTable& table) {
+  exset named(names.begin(), names.end());
+  const auto is_rate = [&](const ex& x) {
+    const SymbolInfo* s = table.find(x);
+    return s && s->role == SymbolRole::rate;
+  };
+  // The constraints' rate forms in rates and the answer's other names; every rate in them,
+  // those the answer does not name first (eliminated first: Gaussian elimination takes its
+  // pivots in this order), then the named ones.
+  lst equations;
+  exset others, own;
+  for (const auto& c : system.constraints) {
+    bool usable = !c.rate.is_zero();
+    for (const ex& x : symbols_in(c.rate)) usable = usable && (is_rate(x) || named.count(x) != 0);
+    if (!usable) continue;
+    equations.append(c.rate == 0);
+    for (const ex& x : symbols_in(c.rate))
+      if (is_rate(x)) (named.count(x) ? own : others).insert(x);
+  }
+  if (equations.nops() == 0 || own.empty()) return {};
+  lst rates;
+  for (const ex& x : others) rates.append(x);
+  for (const ex& x : own) rates.append(x);
+  exmap out;
+  try {
+    const ex solved = lsolve(equations, rates);
+    if (!is_a<lst>(solved)) return {};
+    for (const ex& e : solved) {
+      if (!own.count(e.lhs()) || e.lhs().is_equal(e.rhs())) continue;
+      bool in_named = true;  // (in the answer's names alone: not through a rate it cannot name)
+      for (const ex& x : symbols_in(e.rhs())) in_named = in_named && named.count(x) != 0 && !x.is_equal(e.lhs());
+      if (in_named) out[e.lhs()] = e.rhs();
+    }
+  } catch (const std::exception&) {
+    return {};
+  }
+  return out;
+}
+
+}  // namespace
+
 Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(options), symbols_(analysis.model.symbols) {
   const Model& m = analysis.model;
   GiNaC::Digits = std::max<long>(GiNaC::Digits, options_.digits);
@@ -235,6 +281,16 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   for (const auto& p : parameters_) answer_names_.emplace(p.name, p.symbol);
   definitions_ = symbols_->definitions();
   lengths_ = symbols_->definitions(true);
+  // Rates the constraints tie together (dot(x_B2) = -dot(x_B1) where a string keeps x_B1 +
+  // x_B2): the dependent ones follow from the others at each point, as a defined parameter
+  // does; drawn apart, a right answer written in the other rate would differ.
+  std::vector<ex> names;
+  for (const auto& p : parameters_) names.push_back(p.symbol);
+  const exmap tied = tied_rates(analysis.system, names, *symbols_);
+  for (const auto& [rate, value] : tied) {
+    definitions_[rate] = value;
+    lengths_[rate] = value;
+  }
   // Fixed random points (algebra/states.hpp): a fixed seed keeps the first comparison (which
   // settles every answer that differs at one of them) and the diagnoses the same in every
   // run; since anyone can find these points, an answer that agrees at all of them is decided
@@ -246,13 +302,16 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   std::vector<StateInput> inputs;
   for (const auto& p : parameters_) {
     const SymbolInfo* s = symbols_->find(p.symbol);
-    if (s->definition) continue;  // follows from the others
+    if (s->definition || tied.count(p.symbol)) continue;  // follows from the others
     std::optional<ex> value = s->value;
     if (const auto at = m.layout.find(p.symbol); !value && at != m.layout.end()) value = at->second;  // a coordinate's
     inputs.push_back(input_near(p.symbol, value, angles.count(p.symbol) != 0));
   }
   states_ = States(std::move(inputs));
   for (int k = 0; k < options_.points; ++k) points_.push_back(states_.fixed(k));
+  for (const Sample& p : points_) point_doubles_.push_back(doubles_of(p));
+  extend_points();
+  for (const Sample& p : extended_points_) extended_doubles_.push_back(doubles_of(p));
   // References: every determined unknown, and the defined quantities of `find`.
   auto add_reference = [&](const std::string& name, const ex& closed_form, std::optional<Dimension> dim) {
     const ex closed = substituted(closed_form, definitions_);
@@ -646,6 +705,49 @@ Checker::Decision Checker::decide(const Reference& ref, const ex& typed, const s
 }
 
 Program Checker::program(const ex& e) const { return Program(e, states_.layout(), lengths_, states_.angles()); }
+
+void Checker::extend_points() {
+  std::vector<std::pair<ex, Program>> defined;
+  for (const auto& p : parameters_)
+    if (const auto d = definitions_.find(p.symbol); d != definitions_.end()) defined.emplace_back(p.symbol, program(d->second));
+  if (defined.empty()) return;
+  std::vector<Sample> out;
+  for (const Sample& point : points_) {
+    Sample e = point;
+    for (const auto& [symbol, at] : defined) {
+      const auto v = at(point);
+      if (!v) return;  // (no extended points: the diagnosis substitutes)
+      e.emplace_back(symbol, *v);
+    }
+    out.push_back(std::move(e));
+  }
+  extended_points_ = std::move(out);
+  extended_angles_ = states_.angles();
+  extended_angles_.resize(extended_points_.front().size(), false);
+}
+
+namespace {
+
+// A changed point's doubles: those of the point it was changed from, each changed value
+// made anew (a rational's double is dear: a screen makes one or two).
+std::vector<double> doubles_from(const Sample& changed, const Sample& from, const std::vector<double>& from_doubles) {
+  std::vector<double> out = from_doubles;
+  for (std::size_t i = 0; i < changed.size() && i < out.size(); ++i)
+    if (!changed[i].second.is_equal(from[i].second)) out[i] = changed[i].second.is_real() ? changed[i].second.to_double() : std::nan("");
+  return out;
+}
+
+// Can a and b be the same value? A screen in doubles before the exact comparison: a difference
+// past 10^-6 of the size is no rounding (NaN, a value doubles cannot say, passes).
+bool maybe_same(double a, const numeric& b) {
+  if (std::isnan(a) || !b.is_real()) return true;
+  const double y = b.to_double();
+  if (!std::isfinite(a) || !std::isfinite(y)) return true;
+  const double scale = std::max(std::fabs(a), std::fabs(y));
+  return scale < 1e-9 || std::fabs(a - y) <= 1e-6 * scale;
+}
+
+}  // namespace
 
 namespace {
 
@@ -1182,12 +1284,30 @@ std::optional<Checker::QuotientShape> Checker::quotient_shape(const Reference& r
   QuotientShape shape;
   std::vector<int> exponents(p0.size(), 0);
   bool powers = true;
+  // (The quotients in doubles where they can be: a screen for the exponents, which are
+  // confirmed exactly at every point below; exact where doubles cannot say.)
+  const std::vector<double>& d0 = point_doubles_[0];
+  const double q0d = q0.to_double();
   for (std::size_t i = 0; i < p0.size(); ++i) {
+    const auto& b = diag.doubled[i];
+    if (!b || b->is_zero()) return std::nullopt;
+    std::vector<double> di = d0;
+    di[i] *= 2;
+    const double rd = answer_at.approx(di) / b->to_double() / q0d;
+    if (std::isfinite(rd) && std::fabs(rd) > 1e-300) {
+      const auto near = [&](double x) { return std::fabs(rd - x) <= 1e-9 * std::fabs(x); };
+      if (near(1)) continue;
+      ++shape.depends_on;
+      for (const auto& [e, two] : powers_of_two)
+        if (near(two.to_double())) exponents[i] = e;
+      powers = powers && exponents[i] != 0;
+      if (!powers && shape.depends_on > 2) return shape;  // neither kind of simple factor
+      continue;
+    }
     Sample p = p0;
     p[i].second *= 2;
-    const auto& b = diag.doubled[i];
     const auto a = answer_at(p);
-    if (!a || !b || b->is_zero()) return std::nullopt;
+    if (!a) return std::nullopt;
     const numeric r = *a / *b / q0;
     if (same(r, 1)) continue;
     ++shape.depends_on;
@@ -1270,6 +1390,11 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const Program& an
   // `reference` (at the same points changed as the diagnosis says)? Swapping two parameters or
   // setting one to zero changes the point, not the expression.
   auto matches_at = [&](const std::function<void(Sample&)>& change, const std::vector<std::optional<numeric>>& reference) {
+    if (!points_.empty() && !reference.empty() && reference[0]) {  // most fail here, in doubles
+      Sample first = points_[0];
+      change(first);
+      if (!maybe_same(answer_at.approx(doubles_from(first, points_[0], point_doubles_[0])), *reference[0])) return false;
+    }
     for (std::size_t k = 0; k < points_.size(); ++k) {
       Sample pa = points_[k];
       change(pa);
@@ -1352,11 +1477,40 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const Program& an
       factor_findings.push_back({"factor", "off by a factor of " + to_text(*quotient)});
   }
   // Two parameters swapped.
+  std::optional<Program> raw_at;  // the answer as typed over the extended points
   std::vector<ex> params;
   for (const auto& p : parameters_) params.push_back(p.symbol);
   for (std::size_t i = 0; i < params.size() && i < 16; ++i)
     for (std::size_t j = i + 1; j < params.size() && j < 16; ++j) {
       if (!typed_symbols.count(params[i]) && !typed_symbols.count(params[j])) continue;
+      if ((definitions_.count(params[i]) || definitions_.count(params[j])) && !extended_points_.empty()) {
+        // A defined parameter's value is in the extended points: swapped there, in the answer
+        // as typed (the same as substituting the swap, then the definitions).
+        if (!raw_at) raw_at.emplace(answer, extended_points_.front(), lengths_, extended_angles_);
+        const auto in = [&](const Sample& p, const ex& x) {
+          for (std::size_t at = 0; at < p.size(); ++at)
+            if (p[at].first.is_equal(x)) return at;
+          return p.size();
+        };
+        const Sample& first = extended_points_.front();
+        const std::size_t a = in(first, params[i]), b = in(first, params[j]);
+        if (a == first.size() || b == first.size()) continue;
+        bool all = true;
+        for (std::size_t k = 0; all && k < extended_points_.size() && k < ref.at_points.size(); ++k) {
+          Sample pk = extended_points_[k];
+          std::swap(pk[a].second, pk[b].second);
+          if (k == 0) {  // (swapped in doubles: no value changes)
+            std::vector<double> dk = extended_doubles_[0];
+            std::swap(dk[a], dk[b]);
+            all = maybe_same(raw_at->approx(dk), ref.at_points[0]);
+          }
+          if (!all) break;
+          const auto v = (*raw_at)(pk);
+          all = v && same(*v, ref.at_points[k]);
+        }
+        if (all) r.findings.push_back({"swapped", to_text(params[i]) + " and " + to_text(params[j]) + " are swapped"});
+        continue;
+      }
       if (definitions_.count(params[i]) || definitions_.count(params[j])) {
         // A defined parameter has no value of its own at the point: swap in the expression.
         const exmap swap{{params[i], params[j]}, {params[j], params[i]}};

@@ -230,6 +230,7 @@ class Checker {
   /// `e` made into code for the points, every defined parameter put in (the turning strands'
   /// lengths too).
   [[nodiscard]] Program program(const GiNaC::ex& e) const;
+  void extend_points();
   bool same(const GiNaC::numeric& a, const GiNaC::numeric& b) const;
   std::string describe(const GiNaC::ex& parameter) const;
 
@@ -244,6 +245,12 @@ class Checker {
   // points are drawn near (an angle's: its tan(angle/2)); the fixed points.
   States states_;
   std::vector<Sample> points_;
+  // The points with each defined parameter's value added (l = sqrt(b^2 + d^2 + e^2) at the
+  // point), its layout's angles: a diagnosis swaps a defined parameter's value there rather
+  // than substitute the answer anew for each pair. Empty when a definition has no value.
+  std::vector<Sample> extended_points_;
+  std::vector<std::vector<double>> point_doubles_, extended_doubles_;  // the same in doubles
+  std::vector<bool> extended_angles_;
   GiNaC::numeric tolerance_;                // relative, for values that are not exact: 10^-(digits - 8)
   std::map<std::string, Reference, std::less<>> references_;
   std::shared_ptr<const EquationChecker> equations_;

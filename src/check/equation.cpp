@@ -504,21 +504,22 @@ CheckResult EquationChecker::position_verdict(const Level& level, const ex& resi
   if (!level.truth || !level.truth->usable() || !parts)
     return r.conclude(Verdict::undecided, "not_linear",
                       "tackle decides an equation in the positions when it and the problem's length sums are linear in the positions");
-  // What is left is the constant the sum keeps: any constant will do (it depends on where the
-  // positions are measured from and on the string's length); the level drops it. A constant
-  // in the problem's own names says which constant it is, which depends on the origin: not
-  // decided.
-  for (const ex& s : symbols_in(parts->back()))
-    if (symbols_->find(s))
-      return r.conclude(Verdict::undecided, "constant",
-                        "the constant a length sum keeps depends on where the positions are measured from, so tackle cannot tell whether it is " +
-                            to_text(parts->back().is_zero() ? ex(0) : -parts->back()) + ": write it as const, C or a number");
   const auto values = level.truth->values(*parts);
   if (!values)
     return r.conclude(Verdict::undecided, "evaluation", "the equation could not be evaluated at the test values (a division by zero?)");
   const Truth::Decision d = level.truth->holds(*values);
   r.method = d.exact ? "exact rationals" : "numeric";
   if (d.answer == Truth::Answer::holds) {
+    // The positions' part holds. What is left is the constant the sum keeps: any constant will
+    // do (it depends on where the positions are measured from and on the string's length);
+    // the level drops it. A constant in the problem's own names says which constant it is,
+    // which depends on the origin: not decided. (A sum that is kept by nothing is incorrect
+    // whatever its constant: y_R = d_Q + l_0 where y_R moves.)
+    for (const ex& s : symbols_in(parts->back()))
+      if (symbols_->find(s))
+        return r.conclude(Verdict::undecided, "constant",
+                          "the constant a length sum keeps depends on where the positions are measured from, so tackle cannot tell whether it is " +
+                              to_text(parts->back().is_zero() ? ex(0) : -parts->back()) + ": write it as const, C or a number");
     r.verdict = Verdict::correct;
     r.score = 1.0;
     name_it(level, *values, r);

@@ -118,15 +118,6 @@ std::vector<Diagnostic> place_names(Diagram& d, FbdGrade& g) {
   return problems;
 }
 
-bool state_free(const Model& m, const ex& e) {
-  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end(); ++it)
-    if (is_a<symbol>(*it)) {
-      const SymbolInfo* info = m.symbols->find(*it);
-      if (!info || (info->role != SymbolRole::parameter && info->role != SymbolRole::defined)) return false;
-    }
-  return true;
-}
-
 // The line of a force that is nothing at the sketch's position (a spring at its natural length):
 // its components are a vanishing size times a direction, so their ratios keep the direction.
 std::optional<Triple> zero_line(const Diagram& d, const Vec& c) {
@@ -141,6 +132,20 @@ std::optional<Triple> zero_line(const Diagram& d, const Vec& c) {
   }
   if (norm3(u) < 1e-12) return std::nullopt;
   return u;
+}
+
+// Where a load acts: its point, or (a load on a 1-D body, which says none) the body itself.
+void place_at(const Diagram& d, const Load& l, Entry& e) {
+  e.at_name = l.at_name;
+  if (l.at) {
+    e.at = d.position(*l.at);
+    return;
+  }
+  if (l.body < 0) return;
+  const Body& b = d.m.bodies[static_cast<std::size_t>(l.body)];
+  if (!b.has_cm) return;
+  e.at = d.position(b.cm);
+  e.at_name = b.name;
 }
 
 // Whether where the force acts sets its moment about its body's center of mass (2-D and 3-D):
@@ -171,6 +176,7 @@ bool part_entry(Diagram& d, const Load& l, const ForcePart& p, Entry& e, FbdGrad
     e.lines.push_back(p.numbers);
     if (key && *key < 0)
       for (auto& x : e.lines.back()) x = -x;
+    e.zero = key && *key == 0;  // mu N with mu = 0: no friction in the sketch
     e.fixed = key && *key != 0 && d.positive.count(p.unknown);
     e.names = {to_text(p.unknown)};
     f.label = p.key.is_equal(1) ? to_text(p.unknown) : to_text(p.key) + "*" + to_text(p.unknown);
@@ -184,7 +190,9 @@ bool part_entry(Diagram& d, const Load& l, const ForcePart& p, Entry& e, FbdGrad
   e.zero = norm3(*n) < 1e-12;
   if (!e.zero) e.lines.push_back(*n);
   else if (const auto line = zero_line(d, p.coefficients)) e.lines.push_back(*line);  // either sense
-  e.fixed = !e.zero && state_free(d.m, all);
+  // Known at the sketch's position (a spring's stretch there, a given force at t = 0), so is
+  // its sense: pulling or pushing as its value says.
+  e.fixed = !e.zero;
   // Its label where it lies along one axis: its size, as a figure writes it (m_B g).
   int along = -1, count = 0;
   for (int k = 0; k < d.m.dims(); ++k)
@@ -238,14 +246,64 @@ void couple_entry(Diagram& d, FbdGrade& g, std::size_t li, std::string& undecide
   e.kind = kind_of(d.m, l.source);
   FbdGrade::Force f{l.source, l.source.rfind("couple", 0) == 0 ? "the " + l.source : "the couple of the " + l.source, to_text(l.couple[2]),
                     "missing", {}, 1, 0};
-  if (const auto v = d.num(l.couple[2]); v && state_free(d.m, l.couple[2])) {
+  if (const auto v = d.num(l.couple[2])) {  // its value at the sketch's position
     const bool has_unknown = std::any_of(d.unknowns.begin(), d.unknowns.end(), [&](const ex& u) { return l.couple[2].has(u); });
-    if (!has_unknown) e.couple_sense = *v > 0 ? 1 : *v < 0 ? -1 : 0;
+    if (!has_unknown) {
+      e.couple_sense = *v > 0 ? 1 : *v < 0 ? -1 : 0;
+      e.zero = *v == 0;  // nothing in the sketch (a couple of 0)
+    }
   }
   if (std::any_of(d.defaulted.begin(), d.defaulted.end(), [&](const ex& s) { return l.couple[2].has(s); }) && undecided_by.empty())
     undecided_by = f.phrase;
   d.entries.push_back(e);
   g.forces.push_back(f);
+}
+
+// The connection a constraint comes from, by its label without its axis ("same motion carried
+// (x)"), when no load comes from it: two bodies said to move together (same_motion) ask for no
+// force between them, yet one carries the other. Empty for every other constraint.
+std::string forceless_connection(const Model& m, const Constraint& c) {
+  std::string key = c.label;
+  if (const auto open = key.rfind(" ("); open != std::string::npos && key.back() == ')') key.erase(open);
+  const bool loaded = std::any_of(m.loads.begin(), m.loads.end(), [&](const Load& l) {
+    return l.source == key || l.source.rfind(key + ":", 0) == 0 || l.source.rfind(key + " (", 0) == 0;
+  });
+  return loaded ? "" : key;
+}
+
+// The other body a constraint keeps body `b`'s center at a constant offset from, along an axis
+// (x_K - x_T = const); -1 for none.
+int carrier_of(const Model& m, const Constraint& c, std::size_t b) {
+  for (std::size_t o = 0; o < m.bodies.size(); ++o)
+    for (int k = 0; o != b && k < m.dims(); ++k) {
+      const ex offset = (m.bodies[b].cm[k] - m.bodies[o].cm[k]).expand();
+      if (!offset.is_zero() && ((offset - c.quantity).expand().is_zero() || (offset + c.quantity).expand().is_zero())) return static_cast<int>(o);
+    }
+  return -1;
+}
+
+// The force of a body that carries one of the diagram's (or is carried by it) where the model
+// has none: at the body's center, along any direction (in 1-D, either sense), an unknown the
+// balances of the system do not need.
+void carried_entries(Diagram& d, FbdGrade& g) {
+  std::set<std::pair<std::string, int>> made;
+  for (const Constraint& c : d.m.constraints) {
+    const std::string key = forceless_connection(d.m, c);
+    for (const int b : d.bodies) {
+      const Body& body = d.m.bodies[static_cast<std::size_t>(b)];
+      const int o = key.empty() || !body.has_cm ? -1 : carrier_of(d.m, c, static_cast<std::size_t>(b));
+      if (o < 0 || std::find(d.bodies.begin(), d.bodies.end(), o) != d.bodies.end() || !made.insert({key, b}).second) continue;
+      Entry e;
+      e.at = d.position(body.cm);
+      e.at_name = body.name;
+      e.kind = "support";
+      for (int k = 0; k < d.m.dims(); ++k) e.lines.push_back(Triple{k == 0 ? 1.0 : 0.0, k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0});
+      e.free = d.m.dims() > 1;
+      d.entries.push_back(e);
+      const std::string phrase = "the force of " + d.m.bodies[static_cast<std::size_t>(o)].name + " on " + body.name + " (" + key + ")";
+      g.forces.push_back({key, phrase, "", "missing", {}, 1, 0});
+    }
+  }
 }
 
 // Tackle's own diagram: one entry per force the student should draw; what makes it undecided.
@@ -264,8 +322,7 @@ std::string own_diagram(Diagram& d, FbdGrade& g) {
     for (const ForcePart& p : split_force(d.m, l.force, d.unknowns, [&](const ex& e) { return d.num(e); })) {
       Entry e;
       e.load = li;
-      if (l.at) e.at = d.position(*l.at);
-      e.at_name = l.at_name;
+      place_at(d, l, e);
       e.kind = kind_of(d.m, l.source);
       FbdGrade::Force f{l.source, force_phrase(l.source), "", "missing", {}, 1, 0};
       if (!part_entry(d, l, p, e, f, undecided_by)) continue;
@@ -278,6 +335,7 @@ std::string own_diagram(Diagram& d, FbdGrade& g) {
     if (d.m.dims() == 3 && !is_zero_vec(l.couple) && undecided_by.empty()) undecided_by = "the couple of the " + l.source;
     if (d.m.dims() == 2 && !l.couple[2].is_zero()) couple_entry(d, g, li, undecided_by);
   }
+  carried_entries(d, g);
   return undecided_by;
 }
 
@@ -429,11 +487,14 @@ struct Matching {
   double total = 0;
 };
 
-Matching match_once(const Diagram& d, const FbdGrade& g) {
+// The best assignment of arrows to forces, the arrows `held` (where given) and the force `taken`
+// (where given) left out of it: a force's components chosen already.
+Matching match_once(const Diagram& d, const FbdGrade& g, const std::vector<std::size_t>& held = {}, std::optional<std::size_t> taken = {}) {
   const std::size_t na = d.fbd.forces.size(), ne = d.entries.size();
   std::vector<std::vector<double>> value(na, std::vector<double>(ne, 0));
   for (std::size_t i = 0; i < na; ++i)
-    for (std::size_t k = 0; k < ne; ++k) value[i][k] = fit_value(d, g, i, k);
+    for (std::size_t k = 0; k < ne; ++k)
+      if (k != taken && std::find(held.begin(), held.end(), i) == held.end()) value[i][k] = fit_value(d, g, i, k);
   Matching mt{assign(value, ne), std::vector<int>(ne, -1), std::vector<Fit>(ne, none), std::vector<std::vector<std::size_t>>(ne), 0};
   for (std::size_t i = 0; i < na; ++i) {
     if (mt.entry_of[i] < 0) continue;
@@ -447,13 +508,19 @@ Matching match_once(const Diagram& d, const FbdGrade& g) {
 
 // Arrows drawn alike (the same name, point and direction, no kind said) stand for forces of one
 // kind: two weights drawn at a pin are a weight twice, never a weight and the pin's force.
+// Whether two arrows are drawn at one point (as said) and the same way.
+bool drawn_alike(const Diagram& d, std::size_t i, std::size_t j) {
+  const StudentForce &a = d.fbd.forces[i], &b = d.fbd.forces[j];
+  if (a.at != b.at) return false;
+  if (!a.direction || !b.direction) return !a.direction && !b.direction;
+  return dot3(*a.direction, *b.direction) >= d.cos_tol * norm3(*a.direction) * norm3(*b.direction);
+}
+
 std::vector<std::vector<std::size_t>> alike_groups(const Diagram& d) {
   std::vector<std::vector<std::size_t>> groups;
   auto alike = [&](std::size_t i, std::size_t j) {
     const StudentForce &a = d.fbd.forces[i], &b = d.fbd.forces[j];
-    if (a.name.empty() || a.name != b.name || a.at != b.at || !a.kind.empty() || !b.kind.empty()) return false;
-    if (!a.direction || !b.direction) return !a.direction && !b.direction;
-    return dot3(*a.direction, *b.direction) >= d.cos_tol * norm3(*a.direction) * norm3(*b.direction);
+    return !a.name.empty() && a.name == b.name && a.kind.empty() && b.kind.empty() && drawn_alike(d, i, j);
   };
   std::vector<char> placed(d.fbd.forces.size(), 0);
   for (std::size_t i = 0; i < d.fbd.forces.size(); ++i) {
@@ -497,24 +564,82 @@ Matching match(Diagram& d, const FbdGrade& g) {
   return best;
 }
 
-// A force of unknown direction may be drawn as one arrow per line of its span.
-void more_lines(const Diagram& d, Matching& mt) {
+// A force of unknown direction may be drawn as one arrow per line of its span, the arrows at one
+// point (said alike: a second weight drawn at the body's center is no component of the pin's
+// force drawn at the pin, even where the two points are one).
+void more_lines(const Diagram& d, const FbdGrade& g, Matching& mt) {
   const std::size_t na = d.fbd.forces.size(), ne = d.entries.size();
   for (std::size_t i = 0; i < na; ++i) {
     if (mt.entry_of[i] >= 0 || !d.fbd.forces[i].direction) continue;
     for (std::size_t k = 0; k < ne; ++k) {
       const Entry& en = d.entries[k];
       if (!en.free || mt.fitted[k] != good || 1 + mt.more[k].size() >= en.lines.size() || fit(d, i, en) != good) continue;
-      const auto& first = d.fbd.forces[static_cast<std::size_t>(mt.arrow_of[k])].direction;
-      if (!first) continue;  // drawn as one force of unknown direction already
+      const StudentForce& drawn_first = d.fbd.forces[static_cast<std::size_t>(mt.arrow_of[k])];
+      const auto& first = drawn_first.direction;
+      if (!first || drawn_first.at != d.fbd.forces[i].at) continue;  // drawn as one force of unknown direction already, or elsewhere
       std::vector<Triple> drawn{*first};
       for (auto j : mt.more[k]) drawn.push_back(*d.fbd.forces[j].direction);
       if (in_span(d, *d.fbd.forces[i].direction, drawn)) continue;  // not a new line
       mt.more[k].push_back(i);
       mt.entry_of[i] = static_cast<int>(k);
+      mt.total += fit_value(d, g, i, k);
       break;
     }
   }
+}
+
+// A force of unknown direction (its entry) and a group of arrows that may stand for it
+// together, as its components.
+using Group = std::pair<std::size_t, std::vector<std::size_t>>;
+
+// The groups for force `k`: two or more arrows (one per line of its span at most), each fitting
+// it with a direction, drawn at one point (as said), each off the span of the ones before it;
+// added to `out` while it holds fewer than `cap` (a drawing of many arrows at one pin).
+void component_groups(const Diagram& d, std::size_t k, std::size_t cap, std::vector<Group>& out) {
+  const Entry& en = d.entries[k];
+  std::vector<std::size_t> fitting;
+  for (std::size_t i = 0; i < d.fbd.forces.size(); ++i)
+    if (d.fbd.forces[i].direction && fit(d, i, en) == good) fitting.push_back(i);
+  std::vector<std::size_t> group;
+  std::vector<Triple> lines;
+  const std::function<void(std::size_t)> grow = [&](std::size_t from) {
+    if (out.size() >= cap) return;
+    if (group.size() >= 2) out.push_back({k, group});
+    for (std::size_t j = from; j < fitting.size() && group.size() < en.lines.size(); ++j) {
+      const StudentForce& a = d.fbd.forces[fitting[j]];
+      if ((!group.empty() && a.at != d.fbd.forces[group.front()].at) || in_span(d, *a.direction, lines)) continue;
+      group.push_back(fitting[j]);
+      lines.push_back(*a.direction);
+      grow(j + 1);
+      group.pop_back();
+      lines.pop_back();
+    }
+  };
+  grow(0);
+}
+
+// The matching that fits best in all, each force of unknown direction drawn as one arrow (with
+// the further lines drawn at its point after it) or as a group of components chosen first: of
+// two arrows along x at a weld, one may be its component and the other a given force there.
+Matching best_matching(Diagram& d, const FbdGrade& g) {
+  Matching best = match(d, g);
+  more_lines(d, g, best);
+  std::vector<Group> groups;
+  for (std::size_t k = 0; k < d.entries.size(); ++k)
+    if (d.entries[k].free) component_groups(d, k, 256, groups);
+  for (const auto& [k, group] : groups) {
+    Matching mt = match_once(d, g, group, k);
+    mt.arrow_of[k] = static_cast<int>(group.front());
+    mt.fitted[k] = good;
+    mt.more[k].assign(group.begin() + 1, group.end());
+    for (const std::size_t i : group) {
+      mt.entry_of[i] = static_cast<int>(k);
+      mt.total += fit_value(d, g, i, k);
+    }
+    more_lines(d, g, mt);
+    if (mt.total > best.total + 1e-9) best = std::move(mt);
+  }
+  return best;
 }
 
 std::string said(const Diagram& d, std::size_t i) {
@@ -561,7 +686,8 @@ void grade_couples(const Diagram& d, const Matching& mt, FbdGrade& g, std::vecto
     std::optional<std::size_t> best;
     bool right = false;
     for (std::size_t k = 0; k < d.entries.size(); ++k) {
-      if (!d.entries[k].couple || mt.arrow_of[k] >= 0 || g.forces[k].status != "missing") continue;
+      const bool taken = g.forces[k].status != "missing" && g.forces[k].status != "zero";
+      if (!d.entries[k].couple || mt.arrow_of[k] >= 0 || taken) continue;
       const bool ok = d.entries[k].couple_sense == 0 || sc.sense == d.entries[k].couple_sense;
       if (!best || (ok && !right)) {
         best = k;
@@ -582,14 +708,14 @@ void grade_couples(const Diagram& d, const Matching& mt, FbdGrade& g, std::vecto
 }
 
 // Why an arrow left over is there, where it can be said: a force drawn twice (its name, or its
-// kind, is that of the arrow standing for it), a force on another body, a force internal to the
-// system; else it is one of no force here.
+// kind, is that of the arrow standing for it, or it is drawn like that arrow), a force on another
+// body, a force internal to the system; else it is one of no force here.
 Finding extra_finding(const Diagram& d, const Matching& mt, const FbdGrade& g, std::size_t i) {
   const StudentForce& a = d.fbd.forces[i];
   for (std::size_t k = 0; k < d.entries.size(); ++k) {
     if (mt.arrow_of[k] < 0 || d.entries[k].zero || fit(d, i, d.entries[k]) != good) continue;
-    const bool same = a.name == d.fbd.forces[static_cast<std::size_t>(mt.arrow_of[k])].name || a.name == label_of(d, g, k) ||
-                      !d.arrow_kind[i].empty();
+    const auto j = static_cast<std::size_t>(mt.arrow_of[k]);
+    const bool same = a.name == d.fbd.forces[j].name || a.name == label_of(d, g, k) || !d.arrow_kind[i].empty() || drawn_alike(d, i, j);
     if (same)
       return {"extra_force", said(d, i) + " counts " + g.forces[k].phrase + " once too often"};
   }
@@ -599,8 +725,7 @@ Finding extra_finding(const Diagram& d, const Matching& mt, const FbdGrade& g, s
     if (ours && !d.internal.count(force_key(l.source))) continue;
     Entry e;
     e.load = li;
-    if (l.at) e.at = d.position(*l.at);
-    e.at_name = l.at_name;
+    place_at(d, l, e);
     for (const ForcePart& p : split_force(d.m, l.force, d.unknowns, [&](const ex& x) { return d.num(x); }))
       if (!p.unknown.is_zero()) e.lines.push_back(p.numbers);
       else if (auto n = d.position(p.coefficients)) e.lines.push_back(*n);
@@ -653,8 +778,7 @@ FbdGrade check_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& rubri
   weigh(d, g);
   d.cos_tol = std::cos(rubric.tolerance * pi / 180);
   d.sin_tol = std::sin(rubric.tolerance * pi / 180);
-  Matching mt = match(d, g);
-  more_lines(d, mt);
+  const Matching mt = best_matching(d, g);
   std::vector<Finding> missing, wrong, extra;
   grade_forces(d, mt, g, wrong);
   grade_couples(d, mt, g, wrong, extra);

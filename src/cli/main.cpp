@@ -1,5 +1,6 @@
 // The tackle command: a thin shell over the library. Exit codes: 0 ok, 1 input error or an
 // output that cannot be written, 2 usage error, 3 internal error or out of memory.
+#include <system_error>
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -11,7 +12,6 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <system_error>
 
 #include <CLI/CLI.hpp>
 
@@ -679,8 +679,8 @@ int run(int argc, char** argv) {
     // To main, which says so; the outputs unwound on the way have removed their temporary files.
     throw;
   } catch (const std::system_error& e) {
-    // A system call out of memory (reading the rules directory under a small address space) is
-    // out of memory too, not a bug.
+    // A system call that ran out of memory (listing the rules directory under a small address
+    // space) is out of memory too, not a bug.
     if (e.code() == std::errc::not_enough_memory) throw std::bad_alloc();
     std::cerr << "tackle: internal error: " << e.what() << "\n";
     return 3;

@@ -407,6 +407,17 @@ struct Reader {
     d.interval = std::move(iv);
   }
 
+  void read_steady(const yaml::Node& n) {
+    if (!check_map(n, {"rate", "unit", "period"}, "'steady'", file, diags)) return;
+    SteadyDesc st;
+    st.at = where(n, file);
+    if (auto r = opt_scalar(n, "rate", "'steady'")) st.rate = *r;
+    else diags.error(st.at, "'steady' has no 'rate' (expected the name of the unknown rate, e.g. rate: omega)");
+    st.unit = opt_scalar(n, "unit", "'steady'");
+    st.period = opt_scalar(n, "period", "'steady'");
+    d.steady = std::move(st);
+  }
+
   void read_impact(const yaml::Node& n) {
     if (!check_map(n, {"from", "plastic", "restitution"}, "'impact'", file, diags)) return;
     ImpactDesc im;
@@ -461,8 +472,8 @@ struct Reader {
 
   void read_root(const yaml::Node& root, bool phase) {
     std::vector<std::string> keys{"axes", "parameters", "gravity", "bodies", "points", "connections", "loads",
-               "strings", "layout", "given", "find", "derive", "expected", "expected_combinations", "expected_conditions", "expected_free", "expected_power",
-               "notes", "sweep", "motion", "expected_motion", "interval", "impact"};
+               "strings", "layout", "given", "find", "derive", "expected", "expected_combinations", "expected_conditions", "expected_ranges", "expected_free", "expected_power",
+               "notes", "sweep", "motion", "expected_motion", "interval", "impact", "steady"};
     if (phase) {
       keys.insert(keys.begin(), {"name", "carry"});
     } else {
@@ -524,6 +535,7 @@ struct Reader {
     if (auto mo = root["motion"]) read_motion(mo);
     if (auto iv = root["interval"]) read_interval(iv);
     if (auto im = root["impact"]) read_impact(im);
+    if (auto st = root["steady"]) read_steady(st);
   }
 
   void read_derive(const yaml::Node& n) {

@@ -142,6 +142,15 @@ struct IntervalDesc {
   Location at;
 };
 
+/// A steady motion whose rate is unknown (`steady:`): `rate` names it (a new name, used in
+/// the description's expressions: an acceleration omega^2*r), `unit` is the unit it is
+/// reported in (rad/s unless said), `period` names its period (tau unless said).
+struct SteadyDesc {
+  Text rate;
+  std::optional<Text> unit, period;
+  Location at;
+};
+
 /// An impact (`impact:`): the bodies' rates just before (`from`); the finite forces give no
 /// impulse while it lasts, so momentum is conserved, and the bodies stick together
 /// (`plastic: true`) or, two of them, part with a coefficient of restitution.
@@ -177,6 +186,7 @@ struct Description {
   std::optional<MotionDesc> motion;  // motion in time (equations of motion, response, simulate)
   std::optional<IntervalDesc> interval;  // constant acceleration over an interval
   std::optional<ImpactDesc> impact;      // an impact: momentum conserved, rates before -> after
+  std::optional<SteadyDesc> steady;      // a steady motion whose rate is solved from the balances
   // Phases (`phases:`): each a description of its own sharing the top-level parameters; the
   // state at the end of one is carried into the next as defined parameters.
   std::vector<PhaseDesc> phases;

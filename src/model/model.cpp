@@ -80,6 +80,7 @@ Model build_model(const Description& d, const RuleSet& rules) {
   m.title = d.title.text;
   build::axes(ctx);
   build::parameters(ctx);
+  build::steady(ctx);
   build::bodies(ctx);
   build::points(ctx);
   build::read_layout(ctx);

@@ -168,6 +168,15 @@ struct ImpactSpec {
   Location at;
 };
 
+/// A steady motion whose rate is unknown (`steady:`): the balances are linear in the rate's
+/// square, an unknown of the solve; the rate (its root: the balances fix its size, not its
+/// sense) and its period 2 pi/rate are reported as well as what `find` asks for.
+struct SteadySpec {
+  std::string rate, period;      // their names
+  GiNaC::ex squared;             // the unknown, rate^2
+  std::vector<Wanted> reported;  // the rate and its period
+};
+
 struct Model {
   std::string file;
   std::string title;
@@ -227,6 +236,7 @@ struct Model {
   std::optional<MotionSpec> motion;
   std::optional<IntervalSpec> interval;
   std::optional<ImpactSpec> impact;
+  std::optional<SteadySpec> steady;
   // Numbers for drawing: every parameter's value (SI) and the layout's coordinates.
   GiNaC::exmap layout;
 };

@@ -106,7 +106,10 @@ void SymbolTable::set_value(const std::string& name, GiNaC::ex value) {
   items_[it->second]->value = value;
 }
 
+void SymbolTable::set_alias(const std::string& name, GiNaC::ex expression) { aliases_[name] = std::move(expression); }
+
 std::optional<GiNaC::ex> SymbolTable::resolve(std::string_view name) const {
+  if (const auto a = aliases_.find(name); a != aliases_.end()) return a->second;
   if (const SymbolInfo* s = find(name)) {
     if (s->role == SymbolRole::defined) return std::nullopt;
     return GiNaC::ex(s->sym);
@@ -117,7 +120,8 @@ std::optional<GiNaC::ex> SymbolTable::resolve(std::string_view name) const {
 std::vector<std::string> SymbolTable::known_names() const {
   std::vector<std::string> n;
   for (const auto& s : items_)
-    if (s->role != SymbolRole::defined) n.push_back(s->name);
+    if (s->role != SymbolRole::defined && s->name.find('^') == std::string::npos) n.push_back(s->name);  // not omega^2
+  for (const auto& [name, expression] : aliases_) n.push_back(name);
   return n;
 }
 

@@ -92,6 +92,9 @@ class SymbolTable : public NameResolver, public DimensionLookup {
   /// too when asked (for numbers only: their roots are not for normal()).
   [[nodiscard]] GiNaC::exmap definitions(bool geometric = false) const;
   void set_definition(const std::string& name, GiNaC::ex definition, bool geometric = false);
+  /// A name that reads as an expression wherever a description or an answer names it: a
+  /// steady motion's unknown rate omega reads as sqrt(omega^2), its square being the unknown.
+  void set_alias(const std::string& name, GiNaC::ex expression);
   /// The symbols with a definition, in the table's order (a chain's thousand symbols have
   /// none: each closed form and each term of the derivation asked every symbol).
   [[nodiscard]] std::vector<const SymbolInfo*> defined() const;
@@ -105,6 +108,7 @@ class SymbolTable : public NameResolver, public DimensionLookup {
   std::map<std::string, std::size_t, std::less<>> by_name_;
   std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> by_symbol_;
   std::set<std::size_t> defined_;  // the indices of the symbols with a definition
+  std::map<std::string, GiNaC::ex, std::less<>> aliases_;
   // values(), made once after the last change (every change forgets it); a run asks for it
   // some thirty times.
   mutable std::shared_ptr<const ValueSet> values_;

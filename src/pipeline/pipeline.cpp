@@ -5,6 +5,7 @@
 #include "expr/parse.hpp"
 #include "expr/print.hpp"
 #include "report/narrator.hpp"
+#include "solve/bounds.hpp"
 
 #include <algorithm>
 
@@ -270,10 +271,12 @@ Derivation explain(const Analysis& a, const ReportOptions& options) {
     d.impact_equations = a.impact->equations;
   }
   if (a.motion) {
-    if (options.narrate) narrate_motion(d, a.model, *a.motion, options);
     d.motion = *a.motion;
     d.motion->in_state.clear();
     d.motion->conditions_in_state.clear();  // pointers into the analysis' solution
+    // The conditions for all t with their bounds' numbers, to the report's digits.
+    for (auto& c : d.motion->conditions) number_bounds(c.solved, *a.model.symbols, options.digits, a.motion->definitions);
+    if (options.narrate) narrate_motion(d, a.model, *d.motion, options);
     if (a.model.motion->until && options.narrate) {
       // A figure, not a command: a second of computing at most (a hostile 'until' must not
       // hold a report up; `tackle simulate` allows 10 s).

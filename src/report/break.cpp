@@ -195,6 +195,10 @@ std::vector<std::string> displayed_lines(const std::string& lhs, const std::stri
     }
   }
   const auto right = break_tex(rhs, std::max(30.0, width - tex_width(lhs) - 3 - tex_width(tail)));
+  // A formula that fits without its number, and cannot be broken: the number on a line of
+  // its own (a bound's (19.1206 m/s)^2 after a fraction).
+  const std::string bare = lhs + " " + rel + " " + rhs;
+  if (right.size() == 1 && !tail.empty() && tex_width(bare) <= width) return {lhs + " &" + rel + " " + rhs, "&" + tail};
   if (right.size() == 1) return {whole};
   std::vector<std::string> lines{lhs + " &" + rel + " " + right.front()};
   for (std::size_t k = 1; k < right.size(); ++k) lines.push_back("&\\quad " + right[k]);

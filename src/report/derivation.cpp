@@ -92,32 +92,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   auto section = [&](std::string t) { n.section(std::move(t)); };
   auto text = [&](std::string t) { n.text(std::move(t)); };
   auto text_with = [&](std::string t, std::vector<ex> math) { n.text_with(std::move(t), std::move(math)); };
-  // A list of names as prose: runs of five or more names of one shape with indices going
-  // up by one are written with dots (x_1, ..., x_256), so that 511 unknowns make a line.
-  // Returns the text with a placeholder per name shown, and those names.
-  auto listed = [](const std::vector<ex>& xs) {
-    std::string s;
-    std::vector<ex> shown;
-    std::vector<std::optional<std::pair<std::string, long>>> shapes;
-    for (const auto& x : xs) shapes.push_back(index_shape(to_text(x)));
-    for (std::size_t i = 0; i < xs.size();) {
-      std::size_t run = 1;
-      if (shapes[i])
-        while (i + run < xs.size() && shapes[i + run] && shapes[i + run]->first == shapes[i]->first &&
-               shapes[i + run]->second == shapes[i]->second + static_cast<long>(run))
-          ++run;
-      s += shown.empty() ? "{}" : ", {}";
-      shown.push_back(xs[i]);
-      if (run >= 5) {
-        s += ", ..., {}";
-        shown.push_back(xs[i + run - 1]);
-        i += run;
-      } else {
-        ++i;
-      }
-    }
-    return std::make_pair(s, shown);
-  };
+  auto listed = [](const std::vector<ex>& xs) { return listed_names(xs); };
   auto bullet = [&](std::string t) { n.bullet(std::move(t)); };
   auto equation = [&](std::string label, ex lhs, ex rhs) { return n.equation(std::move(label), lhs, rhs); };
 
@@ -162,7 +137,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   std::vector<std::string> symbolic;
   for (const auto& sym : table.all()) {
     // Parameters, and quantities given with their value at the instant (z = 3 m).
-    if (sym->role != SymbolRole::parameter && !sym->value) continue;
+    if (sym->role != SymbolRole::parameter && !sym->value && !sym->definition) continue;
     {
       ParameterReport pr;
       pr.name = sym->name;
@@ -176,7 +151,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     }
     if (sym->definition) {
       // A defined parameter: its definition, and its value when the others have one.
-      Step* st = step(Step::Kind::equation, "definition");  // not folded: it is the definition
+      // not folded: it is the definition (a quantity given in the parameters: dot(theta) = v/l)
+      Step* st = step(Step::Kind::equation, sym->role == SymbolRole::parameter ? "definition" : "given");
       st->lhs = sym->sym;
       st->rhs = *sym->definition;
       if (auto v = evaluate(sym->sym, table, sym->dimension)) st->note = v->decimal + (v->unit.empty() ? "" : " " + v->unit);
@@ -201,6 +177,17 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     const auto [names, shown] = listed(syms);
     Step* st = step(Step::Kind::bullet, "Symbolic parameters (no value given): " + names + ".");
     st->math = shown;
+  }
+
+  if (m.steady) {
+    const SteadySpec& sp = *m.steady;
+    const ex rate = table.find(sp.rate)->sym, period = table.find(sp.period)->sym;
+    step(Step::Kind::bullet, "Steady motion at an unknown rate {}: the balances are linear in {}, an unknown solved for "
+                             "with the others; the rate is its root (the balances fix its size, not its sense), and the "
+                             "period follows from it:")
+        ->math = {rate, sp.squared};
+    equation("steady rate", rate, sqrt(sp.squared));
+    equation("period", period, 2 * Pi / rate);
   }
 
   // An impact has no balances of forces: it is told by narrate_impact.
@@ -403,36 +390,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   if (end) narrate_interval_end(d, m, *end, options);
 
   d.conditions = ans.conditions;
-  if (!ans.conditions.empty()) {
-    section("Validity");
-    for (const auto& r : ans.conditions) {
-      text(r.source + ": the model holds while " + r.meaning + ":");
-      Step* rule = equation(r.source, r.lhs, r.rhs);
-      rule->relation = r.op;
-      Step* closed = equation("closed form", named(r.simplified), 0);
-      closed->relation = r.op;
-      if (r.always) {
-        text(*r.always ? "This holds for all positive values of the parameters."
-                       : "This fails for all positive values of the parameters: " + r.otherwise + ".");
-      } else if (!r.solved.empty() && !(r.solved.size() == 1 && r.solved[0].bound.is_zero() &&
-                                        r.simplified.is_equal(r.solved[0].parameter))) {
-        text(r.solved.size() == 1 ? "It holds exactly when:" : "It holds exactly when (each form is equivalent):");
-        for (const auto& sv : r.solved) {
-          const bool provided = !sv.provided.is_zero();
-          Step* solved = equation(provided ? "solved for {}, while {} > 0 (as at the given numbers)" : "solved for {}",
-                                  sv.parameter, sv.bound);
-          solved->math = {sv.parameter};
-          if (provided) solved->math.push_back(sv.provided);
-          solved->relation = sv.op;
-        }
-      }
-      if (r.holds)
-        text(*r.holds ? "This holds for the given numbers."
-                      : "This is VIOLATED for the given numbers: " + r.otherwise + ".");
-      else if (r.depends_on_free)
-        text("This depends on an unknown the equations do not determine.");
-    }
-  }
+  d.ranges = ans.ranges;
+  narrate_validity(n, ans.conditions, ans.ranges, named);
   // The power balance: an independent check, made in the analysis from the model's velocities
   // and loads; narrated here.
   d.power = power_check;

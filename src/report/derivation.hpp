@@ -33,6 +33,7 @@ struct Step {
   bool equals_constant = false;  // "lhs = const" (a length sum held constant)
   bool boxed = false;          // a final closed form
   std::string note;            // a number with its unit ("20 N"); for `given`, the unit only
+  bool note_squared = false;   // the note is the square of that number: (19.1206 m/s)^2
   std::string number;          // given: the value as a decimal ("0.3")
   std::vector<GiNaC::ex> math; // text and bullets: each "{}" in `text` is the next of these
   std::shared_ptr<const Figure> figure;  // figure
@@ -57,6 +58,7 @@ struct Derivation {
   std::vector<Answer> answers;
   std::vector<CombinationReport> combinations;
   std::vector<ConditionReport> conditions;
+  std::vector<ParameterRange> ranges;  // each parameter the conditions are solved for, alone, in numbers
   std::vector<std::string> free;
   std::vector<std::string> conflicts;
   std::string status;  // determined | underdetermined | inconsistent

@@ -232,8 +232,13 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
                     (low ? "non-negative" : "non-positive") + " and outweighs the amplitude:",
                 {*c.steady_offset});
       if (c.steady_amplitude_condition) {
-        Step* amp = equation("amplitude condition", *c.steady_amplitude_condition, 0);
-        amp->relation = ">=";
+        if (const auto always = holds_always(*c.steady_amplitude_condition, ">=")) {
+          narrate_always(n, "The amplitude condition's left side, {}, is ", *c.steady_amplitude_condition,
+                         *c.steady_amplitude_condition, ">=", *always, cond.otherwise);
+        } else {
+          Step* amp = equation("amplitude condition", *c.steady_amplitude_condition, 0);
+          amp->relation = ">=";
+        }
       }
       if (c.band) {
         const auto& b = *c.band;
@@ -256,18 +261,21 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
       continue;
     }
     const bool lower = cond.op == ">=" || cond.op == ">";
-    Step* ex_st = equation(lower ? "least value over time" : "greatest value over time", c.extreme ? *c.extreme : ex(0), 0);
-    ex_st->relation = cond.op;
+    const auto always = holds_always(*c.extreme, cond.op);
+    if (always) {
+      narrate_always(n, std::string(lower ? "Its least" : "Its greatest") + " value over time, {}, is ", *c.extreme, *c.extreme,
+                     cond.op, *always, cond.otherwise);
+    } else {
+      Step* ex_st = equation(lower ? "least value over time" : "greatest value over time", *c.extreme, 0);
+      ex_st->relation = cond.op;
+    }
     if (c.extreme_at) {
       Step* at = equation(lower ? "least at" : "greatest at", t, *c.extreme_at);
       if (auto v = number(*c.extreme_at, Dimension::time())) at->note = with_unit(v);
     }
-    text(std::string("So the model holds for all t exactly when this holds") + (c.solved.empty() ? "." : ", that is:"));
-    for (const auto& sv : c.solved) {
-      Step* s = equation("for all {}, solved for {}", sv.parameter, sv.bound);
-      s->math = {t, sv.parameter};
-      s->relation = sv.op;
-    }
+    if (!always) text(std::string("So the model holds for all t exactly when this holds") + (c.solved.empty() ? "." : ", that is:"));
+    if (!always)
+      for (const auto& sv : c.solved) narrate_solved(n, sv, "for all {}, solved for {}", {t, sv.parameter});
     if (c.holds_for_all_t) {
       if (*c.holds_for_all_t) {
         text("With the given numbers it holds for all t.");

@@ -3,6 +3,7 @@
 // both tell their story through it.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -40,5 +41,27 @@ struct Narrator {
     return st;
   }
 };
+
+/// A list of names as prose: runs of five or more names of one shape with indices going up
+/// by one are written with dots (x_1, ..., x_256), so that 511 unknowns make a line. Returns
+/// the text with a placeholder per name shown, and those names.
+[[nodiscard]] std::pair<std::string, std::vector<GiNaC::ex>> listed_names(const std::vector<GiNaC::ex>& xs);
+
+/// A condition solved for a parameter, as an equation (`label` with its "{}"s filled from
+/// `math`) with its bound's number, and what a bound at or below 0 means for a positive
+/// parameter (report/condition_narration.cpp).
+void narrate_solved(Narrator& n, const SolvedFor& form, std::string label, std::vector<GiNaC::ex> math);
+
+/// A condition that holds (or fails) whatever the values, in words and never as a trivial
+/// inequality: `lead` with a "{}" for `shown`, then its sign and the names it holds for
+/// ("With the solution, g m is never negative: this holds for every value of g and m.").
+void narrate_always(Narrator& n, const std::string& lead, const GiNaC::ex& shown, const GiNaC::ex& expr, const std::string& op,
+                    bool holds, const std::string& otherwise);
+
+/// The Validity section: each condition, its closed form, its solved forms with their
+/// numbers, a condition that always or never holds in words; then each parameter's range at
+/// the given numbers. `named` names what the closed forms share (the derivation's sum).
+void narrate_validity(Narrator& n, const std::vector<ConditionReport>& conditions,
+                      const std::vector<ParameterRange>& ranges, const std::function<GiNaC::ex(const GiNaC::ex&)>& named);
 
 }  // namespace tackle

@@ -9,6 +9,7 @@
 #include "expr/normal_form.hpp"
 #include "expr/print.hpp"
 #include "expr/rational.hpp"
+#include "solve/bounds.hpp"
 
 namespace tackle {
 
@@ -66,6 +67,10 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
       const SymbolInfo* info = table.find(u);
       wanted.push_back({info->name, info->tex, u, false, info->dimension, std::nullopt});
     }
+  // A steady motion's rate and period, unless `find` placed them.
+  if (m.steady)
+    for (const auto& w : m.steady->reported)
+      if (std::none_of(wanted.begin(), wanted.end(), [&](const Wanted& x) { return x.name == w.name; })) wanted.push_back(w);
   // What a closed form may not contain: anything but parameters, defined quantities, time
   // and what is given. At one instant the positions and velocities are the state the balances
   // are written in: known symbols, as a person keeps x in `k (D - x - l_0)/m`. They are
@@ -238,8 +243,10 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
         r.holds = relation_holds(x, r.op);
       }
     }
+    number_bounds(r.solved, table, digits);
     out.conditions.push_back(r);
   }
+  out.ranges = ranges_at_numbers(out.conditions, table, digits);
   return out;
 }
 

@@ -50,6 +50,16 @@ struct ConditionReport {
   bool depends_on_free = false;   // on an unknown the equations leave free
 };
 
+/// One parameter's values for which every condition holds, the others at their given values
+/// (from the solved forms' numbers): `5.3187 m/s <= v <= 19.1206 m/s`.
+struct ParameterRange {
+  GiNaC::ex parameter;
+  std::optional<NumericValue> low, high;  // absent: nothing asked on that side
+  bool low_strict = false, high_strict = false;
+  std::optional<NumericValue> given;      // the parameter's own value, in the same unit
+  bool empty = false;                     // the bounds exclude each other: no value will do
+};
+
 struct CombinationReport {
   GiNaC::ex combination, value;
   std::optional<NumericValue> number;
@@ -62,6 +72,7 @@ struct Answers {
   // the unknowns that are not determined alone.
   std::vector<std::pair<std::string, std::optional<NumericValue>>> minimum_norm;
   std::vector<ConditionReport> conditions;
+  std::vector<ParameterRange> ranges;  // each parameter the conditions are solved for, alone
 };
 
 /// The answers to the model's questions (every unknown when it asks none), numbers to

@@ -418,6 +418,21 @@ ex strip_signed_factors_of(const ex& nd, std::string& op) {
 // The same for `e` itself.
 ex strip_signed_factors(const ex& e, std::string& op) { return strip_signed_factors_of(numer_denom_remembered(e), op); }
 
+// Whether `rest op 0` holds (or fails) whatever the values, for what strip_signed_factors left:
+// a number, or even powers only (k^2 x_S^2 with k^2 divided out: never negative, and zero
+// where x_S is).
+std::optional<bool> always_of_rest(const ex& rest, const std::string& op) {
+  if (is_a<numeric>(rest)) return relation_holds(ex_to<numeric>(rest), op);
+  const ex nd = numer_denom_remembered(rest);
+  for (int side = 0; side < 2; ++side)
+    for (const ex& x : canonical_factors(nd.op(side)))
+      if (!(is_a<numeric>(x) && ex_to<numeric>(x).is_positive()) && !(is_a<power>(x) && x.op(1).info(info_flags::even)))
+        return std::nullopt;
+  if (op == ">=") return true;
+  if (op == "<") return false;
+  return std::nullopt;
+}
+
 }  // namespace
 
 bool relation_holds(const numeric& x, const std::string& op) {
@@ -460,27 +475,30 @@ std::vector<SolvedFor> solve_reduced(const ex& rest, const std::string& reduced_
     const ex bound = simplest(-b / a);
     const std::string op = sign > 0 ? reduced_op : flipped(reduced_op);
     if (!square) {
-      out.push_back({p, op, bound});
+      out.push_back({p, op, bound, 0, std::nullopt});
       continue;
     }
     if (op != "<=" && op != "<" && op != ">=" && op != ">") continue;
     // v op sqrt(bound) where the bound is positive, else the square itself (v^2 >= a negative
     // number always holds, and the parameters may make it so).
     if (known_sign(factored(bound)) > 0) {
-      out.push_back({p, op, simplest(sqrt(bound)), provided});
+      out.push_back({p, op, simplest(sqrt(bound)), provided, std::nullopt});
       continue;
     }
-    // A lower bound on a square that is negative at the given numbers says nothing there.
-    if (values && (op == ">=" || op == ">")) {
-      const ex at = evalf(bound.subs(*values).subs(*values));
-      if (is_a<numeric>(at) && ex_to<numeric>(at).is_real() && ex_to<numeric>(at).is_negative()) continue;
-    }
-    out.push_back({pow(p, 2), op, bound, provided});
+    // (A lower bound on the square that is negative at the given numbers asks nothing of p
+    // there: the report says so, with the number.)
+    out.push_back({pow(p, 2), op, bound, provided, std::nullopt});
   }
   return out;
 }
 
 }  // namespace
+
+std::optional<bool> holds_always(const ex& expr, const std::string& op) {
+  std::string reduced_op = op;
+  const ex rest = strip_signed_factors(expr, reduced_op);
+  return always_of_rest(rest, reduced_op);
+}
 
 std::vector<SolvedFor> solve_condition(const ex& expr, const std::string& op, const std::vector<ex>& parameters) {
   if (op == "=") return {};
@@ -728,10 +746,16 @@ Solution solve(const Model& model, const EquationSystem& s) {
   // The given numbers (and the acute angles' stand-ins at them), made once for every condition.
   exmap values = model.symbols->values();
   for (const auto& [stand_in, f] : acute.back) values[stand_in] = f.subs(values);
+  // Quantities given in the parameters (dot(theta) = v/L) are put in: the conditions are then
+  // in the parameters, and solved for them (v^2 >= -g L cos(theta), not dot(theta)^2 >= ...).
+  exmap given_in_parameters;
+  for (const auto& g : model.given)
+    if (const SymbolInfo* info = model.symbols->find(g); info && info->definition) given_in_parameters[g] = *info->definition;
+  auto given_put_in = [&](const ex& e) { return given_in_parameters.empty() ? e : substituted(e, given_in_parameters); };
   for (const auto& c : model.conditions) {
     CheckedCondition cc;
     cc.condition = &c;
-    const ex normal_form = normal_remembered(substituted(c.lhs - c.rhs, sol.general));
+    const ex normal_form = normal_remembered(given_put_in(substituted(c.lhs - c.rhs, sol.general)));
     cc.expr = simplest(normal_form);
     // The symbols are gathered once (has() of each symbol would be quadratic per condition),
     // by hash: they are only looked up.
@@ -751,17 +775,18 @@ Solution solve(const Model& model, const EquationSystem& s) {
       // blocks of sample 12.4 stay together while y >= -y_s).
       for (const auto& g : model.given)
         if (present.count(g) != 0) parameters.push_back(g);
-      // Not for a name a turning strand's length depends on (or for that length itself):
-      // the condition only looks linear in it.
-      // (The lengths in the condition are found once, not for each parameter.)
-      std::vector<const SymbolInfo*> lengths_in;
+      // Not for a name a defined quantity in the condition depends on (a turning strand's
+      // length, a given rate v/R, y_s = (m + M) g/k): solved with that quantity held, the form
+      // would be wrong; nor for a turning strand's length itself: the condition only looks
+      // linear in it. (The defined names in the condition are found once, not per parameter.)
+      std::vector<const SymbolInfo*> defined_in;
       for (const SymbolInfo* sym : model.symbols->defined())
-        if (sym->geometric && present.count(sym->sym) != 0) lengths_in.push_back(sym);
-      if (!lengths_in.empty())
+        if (present.count(sym->sym) != 0) defined_in.push_back(sym);
+      if (!defined_in.empty())
         parameters.erase(std::remove_if(parameters.begin(), parameters.end(),
                                         [&](const ex& p) {
-                                          return std::any_of(lengths_in.begin(), lengths_in.end(), [&](const SymbolInfo* l) {
-                                            return l->sym.is_equal(p) || l->definition->has(p);
+                                          return std::any_of(defined_in.begin(), defined_in.end(), [&](const SymbolInfo* l) {
+                                            return (l->geometric && l->sym.is_equal(p)) || l->definition->has(p);
                                           });
                                         }),
                          parameters.end());
@@ -783,7 +808,7 @@ Solution solve(const Model& model, const EquationSystem& s) {
             sv.bound = simplest(sv.bound.subs(acute.back));
             sv.provided = simplest(sv.provided.subs(acute.back));
           }
-        if (is_a<numeric>(rest)) cc.always = relation_holds(ex_to<numeric>(rest), op);
+        cc.always = always_of_rest(rest, op);
       }
     }
     sol.conditions.push_back(cc);

@@ -14,6 +14,7 @@
 
 #include "equations/equations.hpp"
 #include "model/model.hpp"
+#include "numeric/evaluate.hpp"
 
 namespace tackle {
 
@@ -29,6 +30,17 @@ struct Combination {
   GiNaC::ex value;
 };
 
+/// A solved form's bound at the given numbers, as the report says it (filled by the answers
+/// stage, which knows the digits: solve_condition leaves it empty).
+struct BoundNumber {
+  NumericValue value;                // the bound, in the parameter's stated unit (a square's: in SI)
+  std::optional<NumericValue> root;  // `p^2 op B` with B >= 0: sqrt(B), the bound on p, in p's unit
+  // For a positive parameter: a lower bound at or below 0 asks nothing of it (every value
+  // down to 0 satisfies it); an upper bound at or below 0 leaves it no value.
+  bool every_value = false;
+  bool no_value = false;
+};
+
 /// A condition solved for one parameter: `parameter op bound`, equivalent to the condition
 /// (found when the condition is linear in that parameter with a coefficient of known sign,
 /// once factors of known sign are divided out).
@@ -40,6 +52,7 @@ struct SolvedFor {
   // numbers: the form holds while it stays positive (`v^2 <= g r .../(cos(beta) - mu sin(beta))`
   // while cos(beta) - mu sin(beta) > 0).
   GiNaC::ex provided = 0;
+  std::optional<BoundNumber> number;  // at the given numbers (see BoundNumber)
 };
 
 struct CheckedCondition {
@@ -52,6 +65,11 @@ struct CheckedCondition {
 
 /// Whether `x op 0` holds, for op one of >=, >, <=, <, =.
 [[nodiscard]] bool relation_holds(const GiNaC::numeric& x, const std::string& op);
+
+/// Whether `expr op 0` holds for every value of its symbols (true), for none (false), or
+/// depends on them (nothing): from the signs of its factors, the known ones and even powers
+/// (`k^2*x_S^2 >= 0` always holds).
+[[nodiscard]] std::optional<bool> holds_always(const GiNaC::ex& expr, const std::string& op);
 
 /// Solves `expr op 0` for each parameter it is linear in (see SolvedFor).
 [[nodiscard]] std::vector<SolvedFor> solve_condition(const GiNaC::ex& expr, const std::string& op,

@@ -1,5 +1,6 @@
 #include "crosscheck/diagram.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -194,6 +195,68 @@ std::vector<std::size_t> unmatched_rows(const std::vector<std::vector<bool>>& fi
   return out;
 }
 
+// Whether `arrows` can stand together for the force of unknown direction `f` as its components
+// (docs/checking.md: one arrow per component along independent lines): two or more, at most
+// one per line of its span, each fitting it with a direction, drawn at one point (as said), each
+// more than 5 degrees off the span of the ones before it.
+bool components(const Diagram& g, const BodyForce& f, const std::vector<std::size_t>& arrows) {
+  if (arrows.size() < 2 || arrows.size() > f.lines.size()) return false;
+  std::vector<Eigen::VectorXd> basis;
+  for (const std::size_t i : arrows) {
+    const Arrow& a = g.arrows[i];
+    if (!a.direction || a.at != g.arrows[arrows.front()].at || !fits(a, f, g)) return false;
+    Eigen::VectorXd r = a.direction->normalized();
+    for (const auto& b : basis) r -= r.dot(b) * b;
+    if (r.norm() <= std::sin(5 * std::numbers::pi / 180)) return false;
+    basis.push_back(r.normalized());
+  }
+  return true;
+}
+
+// The first arrow no force takes and the first force no arrow stands for, of those `in` (an
+// arrow's or force's flag), or nothing: a matching one for one.
+std::pair<std::optional<std::size_t>, std::optional<std::size_t>> left_over(const Diagram& g, const std::vector<bool>& arrow_in,
+                                                                             const std::vector<bool>& force_in) {
+  // Right when one matching of arrows to forces takes in every arrow and every force that is
+  // not zero (a zero force may be drawn or not). Such a matching exists exactly when one takes
+  // in every arrow and one every such force (Mendelsohn-Dulmage): each is found alone.
+  const std::size_t na = g.arrows.size(), nf = g.forces.size();
+  std::vector<std::vector<bool>> by_arrow(na, std::vector<bool>(nf, false)), by_force(nf, std::vector<bool>(na, false));
+  for (std::size_t i = 0; i < na; ++i)
+    for (std::size_t j = 0; j < nf; ++j) by_arrow[i][j] = by_force[j][i] = arrow_in[i] && force_in[j] && fits(g.arrows[i], g.forces[j], g);
+  std::vector<bool> drawn(nf);
+  for (std::size_t j = 0; j < nf; ++j) drawn[j] = force_in[j] && !g.forces[j].zero;
+  const auto extra = unmatched_rows(by_arrow, nf, arrow_in);
+  const auto missing = unmatched_rows(by_force, na, drawn);
+  return {extra.empty() ? std::nullopt : std::optional(extra.front()), missing.empty() ? std::nullopt : std::optional(missing.front())};
+}
+
+// Whether the diagram is right with each force of unknown direction from `from` on drawn as one
+// arrow or as its components (every group of arrows tried).
+bool right_with_components(const Diagram& g, std::size_t from, std::vector<bool>& arrow_in, std::vector<bool>& force_in) {
+  if (from == g.forces.size()) {
+    const auto [extra, missing] = left_over(g, arrow_in, force_in);
+    return !extra && !missing;
+  }
+  if (right_with_components(g, from + 1, arrow_in, force_in)) return true;
+  const BodyForce& f = g.forces[from];
+  if (f.couple || f.lines.size() < 2) return false;
+  const std::size_t na = g.arrows.size();
+  for (std::size_t mask = 1; na < 16 && mask < (std::size_t{1} << na); ++mask) {
+    std::vector<std::size_t> group;
+    for (std::size_t i = 0; i < na; ++i)
+      if ((mask >> i) & 1) group.push_back(i);
+    if (std::any_of(group.begin(), group.end(), [&](std::size_t i) { return !arrow_in[i]; }) || !components(g, f, group)) continue;
+    for (const std::size_t i : group) arrow_in[i] = false;
+    force_in[from] = false;
+    const bool right = right_with_components(g, from + 1, arrow_in, force_in);
+    for (const std::size_t i : group) arrow_in[i] = true;
+    force_in[from] = true;
+    if (right) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::optional<Variant> make_diagram(const tackle::Description& d, Rng& rng) {
@@ -219,22 +282,13 @@ std::optional<Variant> make_diagram(const tackle::Description& d, Rng& rng) {
 }
 
 Judgement judge_diagram(const Diagram& g) {
-  // Right when one matching of arrows to forces takes in every arrow and every force that is
-  // not zero (a zero force may be drawn or not). Such a matching exists exactly when one takes
-  // in every arrow and one every such force (Mendelsohn-Dulmage): each is found alone.
-  const std::size_t na = g.arrows.size(), nf = g.forces.size();
-  std::vector<std::vector<bool>> by_arrow(na, std::vector<bool>(nf, false)), by_force(nf, std::vector<bool>(na, false));
-  for (std::size_t i = 0; i < na; ++i)
-    for (std::size_t j = 0; j < nf; ++j) by_arrow[i][j] = by_force[j][i] = fits(g.arrows[i], g.forces[j], g);
-  std::vector<bool> drawn(nf);
-  for (std::size_t j = 0; j < nf; ++j) drawn[j] = !g.forces[j].zero;
-  Judgement j;
-  j.truth = Truth::holds;
-  if (const auto extra = unmatched_rows(by_arrow, nf, std::vector<bool>(na, true)); !extra.empty())
-    j = {Truth::fails, "arrow " + g.arrows[extra.front()].name + " is no force on " + g.body, 1};
-  else if (const auto missing = unmatched_rows(by_force, na, drawn); !missing.empty())
-    j = {Truth::fails, "the force of " + g.forces[missing.front()].what + " at " + g.forces[missing.front()].at + " is not drawn", 1};
-  return j;
+  std::vector<bool> arrow_in(g.arrows.size(), true), force_in(g.forces.size(), true);
+  if (right_with_components(g, 0, arrow_in, force_in)) return {Truth::holds, "", 0};
+  // Wrong: said as the one-for-one matching finds it.
+  const auto [extra, missing] = left_over(g, arrow_in, force_in);
+  if (extra) return {Truth::fails, "arrow " + g.arrows[*extra].name + " is no force on " + g.body, 1};
+  const BodyForce& f = g.forces[missing.value_or(0)];
+  return {Truth::fails, "the force of " + f.what + " at " + f.at + " is not drawn", 1};
 }
 
 tackle::CheckResult check_diagram(const tackle::Analysis& a, const std::string& yaml) {

@@ -2,8 +2,9 @@
 // own forces on it at the sketch's position (Model::forces_on), right (each force at its
 // point along its line, the sense where it is known; a force of unknown sense either way, one
 // of unknown direction as `any`), or with an arrow dropped, turned, moved, tilted or added;
-// judged against the model's forces by a matching of arrows to forces, and checked by
-// tackle's check_fbd.
+// judged against the model's forces by a matching of arrows to forces (a force of unknown
+// direction may take its components, drawn at one point, as docs/checking.md allows), and
+// checked by tackle's check_fbd.
 #pragma once
 
 #include <map>

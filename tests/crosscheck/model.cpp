@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <set>
 
 #include "core/units.hpp"  // input reading only: each unit's factor to SI
@@ -67,13 +68,21 @@ int Model::slot(const std::string& name) const {
   return it == slots_.end() ? -1 : it->second;
 }
 
-Expr Model::compile(const tackle::Text& t) const {
+Expr Model::compile_any(const tackle::Text& t) const {
   try {
     Expr e = Expr::compile(t.text, [this](const std::string& n) { return slot(n); });
     return e;
   } catch (const std::runtime_error& e) {
     throw Unsupported(e.what());
   }
+}
+
+Expr Model::compile(const tackle::Text& t) const {
+  Expr e = compile_any(t);
+  // (the steady rate has no value of its own: solve() finds it from a body's acceleration)
+  if (steady_slot_ >= 0 && e.uses(steady_slot_))
+    throw Unsupported("the steady rate '" + slot_names_[static_cast<std::size_t>(steady_slot_)] + "' outside a body's given acceleration");
+  return e;
 }
 
 double Model::number(const tackle::Text& t) const {
@@ -111,6 +120,15 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     slots_[p.name.text] = static_cast<int>(slot_names_.size());
     slot_names_.push_back(p.name.text);
   }
+  // A steady motion at an unknown rate (`steady: {rate: omega}`): the rate is a name of its
+  // own, with no value; only a body's given acceleration may use it (see solve_steady).
+  if (d.steady && !d.steady->rate.text.empty()) {
+    if (d.motion) throw Unsupported("a steady motion at an unknown rate with a motion in time");
+    if (slots_.count(d.steady->rate.text)) throw Unsupported("a steady rate named as a parameter");
+    steady_slot_ = static_cast<int>(slot_names_.size());
+    slots_[d.steady->rate.text] = steady_slot_;
+    slot_names_.push_back(d.steady->rate.text);
+  }
   first_coord_slot_ = static_cast<int>(slot_names_.size());
   for (const auto& b : d.bodies) {
     for (const auto* c : {&b.position, &b.angle}) {
@@ -135,6 +153,12 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     if (nm.rfind("dot(", 0) == 0) base_rate_[nm] = v;
     else if (nm.rfind("ddot(", 0) == 0) given_accel_[nm] = v;
     else base_coord_[nm] = v;
+    // a coordinate or rate given in the parameters (theta: theta_0, dot(theta): v/L): tackle
+    // answers at that value only, so the states keep it
+    const Expr e = compile(*g.value);
+    bool in_parameters = false;
+    for (int k = 0; k < first_coord_slot_; ++k) in_parameters = in_parameters || e.uses(k);
+    if (in_parameters && nm.rfind("ddot(", 0) != 0) pinned_[nm] = v;
   }
   // A problem of kinematics only: no body has a mass, so no balance is written, and the
   // constraints alone give the accelerations from the given ones.
@@ -145,6 +169,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     if (!kinematic_) throw Unsupported("a given acceleration (" + g.name.text + ") of a body with a balance");
     if (!given_accel_.count(g.name.text)) given_accel_[g.name.text] = draw(rng) - 1.25;
   }
+
+  if (steady_slot_ >= 0 && kinematic_) throw Unsupported("a steady motion of bodies without mass");
 
   // Bodies.
   auto eval_vec = [&](const std::vector<Expr>& es, const std::vector<double>& vars) {
@@ -244,10 +270,33 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
         b.kind = Body::driven;
         std::vector<Expr> acc;
         for (const auto& it : bd.acceleration->items) {
-          acc.push_back(compile(it));
+          acc.push_back(compile_any(it));
           if (acc.back().uses(t_slot)) throw Unsupported("a given acceleration that changes in time");
         }
-        b.frame_accel = eval_vec(acc, base_vars());
+        b.frame_accel = eval_vec(acc, base_vars());  // (with the steady rate at 0)
+        if (steady_slot_ >= 0) {
+          // a0 + s w, s the rate squared: linear in s, or the model cannot find s
+          auto at = [&](double sq) {
+            auto vars = base_vars();
+            vars[static_cast<std::size_t>(steady_slot_)] = std::sqrt(sq);
+            return eval_vec(acc, vars);
+          };
+          const Eigen::VectorXd w = at(1) - b.frame_accel;
+          if (w.norm() > 0) {
+            const Eigen::VectorXd bend = at(2.3) - b.frame_accel - 2.3 * w;
+            if (bend.norm() > 1e-12 * (1 + b.frame_accel.norm() + w.norm()))
+              throw Unsupported("a given acceleration that is not linear in the steady rate squared");
+            if (steady_) throw Unsupported("the steady rate in the accelerations of two bodies");
+            Steady st;
+            st.body = static_cast<int>(bodies_.size());
+            st.a0 = b.frame_accel;
+            st.w = w;
+            st.squared = d.steady->rate.text + "^2";
+            st.rate = d.steady->rate.text;
+            st.period = d.steady->period ? d.steady->period->text : "tau";
+            steady_ = st;
+          }
+        }
       } else if (bd.accel_along) {
         b.kind = Body::along;
         std::vector<Expr> dir;
@@ -269,6 +318,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     has_massless_ = has_massless_ || !b.massive;
     bodies_.push_back(b);
   }
+  if (steady_slot_ >= 0 && !steady_) throw Unsupported("a steady rate that no body's acceleration uses");
+  if (steady_) requirements_.push_back({Requirement::real, steady_->squared, "", 0, -1, "the steady rate is real"});
   int next = 0;
   for (auto& b : bodies_) { b.q0 = next; next += n; }
   for (auto& b : bodies_) {
@@ -358,6 +409,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     const Eigen::VectorXd p0 = layout_position(material_point);
     for (int i = 0; i < n; ++i) g.ground.push_back(Expr::constant(p0(i)));
     g.frame_accel = bodies_[static_cast<std::size_t>(body)].frame_accel;
+    g.frame_body = body;
     return g;
   };
   auto add_project = [&](const std::string& name, const PointRef& p, int body, const Eigen::VectorXd& dir) {
@@ -587,6 +639,7 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       PointRef pt = point(to, -1);
       if (pt.body >= 0) throw Unsupported("a rod or cable to a moving point");
       pt.frame_accel = bodies_[static_cast<std::size_t>(b)].frame_accel;
+      pt.frame_body = b;
       s.points = {pf, pt};
       cons_.push_back(s);
     } else if (type == "pin_joint" || type == "ball_joint" || type == "weld_joint" || type == "slider_joint" ||
@@ -650,13 +703,24 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
         if (e.norm() > 1e-6) across.push_back(e.normalized());
       }
     } else {
-      for (int k = 0; k < n; ++k) across.push_back(Eigen::VectorXd::Unit(n, k));
+      // a body in steady motion: its first guide along the part of its acceleration that the
+      // unknown rate gives (solve_steady finds the rate that makes that guide's force 0)
+      const bool steady = steady_ && steady_->body == static_cast<int>(i);
+      if (steady) across.push_back(steady_->w.normalized());
+      for (int k = 0; k < n; ++k) {
+        Eigen::VectorXd e = Eigen::VectorXd::Unit(n, k);
+        for (const auto& a : across) e -= a * a.dot(e);
+        if (e.norm() > 1e-6) across.push_back(e.normalized());
+      }
+      if (steady) steady_->guide = static_cast<int>(cons_.size());
     }
     for (std::size_t k = 0; k < across.size(); ++k) {
       Constraint c;
       c.kind = Constraint::guide_line;
       c.guide = true;
       c.name = "guide on " + b.name + " across its motion (" + std::to_string(k + 1) + ")";
+      if (steady_ && steady_->guide == static_cast<int>(cons_.size()))
+        c.name = "guide on " + b.name + " along its acceleration at the steady rate";
       c.body = static_cast<int>(i);
       c.dir = across[k];
       cons_.push_back(c);
@@ -1253,6 +1317,56 @@ Instant Model::solve_kinematics(const State& s) const {
 }
 
 Instant Model::solve(const State& s) const {
+  return steady_ ? solve_steady(s) : solve_fixed(s);
+}
+
+void Model::set_steady(double squared) {
+  Body& b = bodies_[static_cast<std::size_t>(steady_->body)];
+  b.frame_accel = steady_->a0 + squared * steady_->w;
+  auto follow = [&](PointRef& p) {
+    if (p.frame_body == steady_->body) p.frame_accel = b.frame_accel;
+  };
+  for (auto& c : cons_)
+    for (auto& p : c.points) follow(p);
+  for (auto& e : elements_)
+    for (auto& p : e.points) follow(p);
+  for (auto& l : loads_) follow(l.at);
+  for (auto& [name, p] : points_) follow(p);
+}
+
+Instant Model::solve_steady(const State& s) const {
+  // The body's acceleration is a0 + s w, s the rate squared, unknown. At t = 0 the frame's
+  // acceleration enters only the constraints' second derivatives (the right-hand side), so
+  // everything solved is affine in s, the force of the guide along w too: tackle's model has
+  // no such force, and s is where it vanishes.
+  if (uses_time_) throw Unsupported("a steady motion at an unknown rate in a model that depends on time");
+  Model at0 = *this, at1 = *this;
+  at0.set_steady(0);
+  at1.set_steady(1);
+  const Instant i0 = at0.solve_fixed(s), i1 = at1.solve_fixed(s);
+  const std::string guide = "guide: " + cons_[static_cast<std::size_t>(steady_->guide)].name;
+  const Quantity *g0 = i0.find(guide), *g1 = i1.find(guide);
+  const double slope = g0 && g1 ? g1->value - g0->value : 0.0;
+  if (!g0 || !g1 || !g0->determined || !g1->determined ||
+      std::abs(slope) <= 1e-12 * std::max({1.0, std::abs(g0->value), std::abs(g1->value)})) {
+    // (the balances do not fix the rate: along w something else holds the body)
+    Instant out = i0;
+    out.quantities.push_back({steady_->squared, 0, false, false, {}});
+    return out;
+  }
+  const double squared = -g0->value / slope;
+  Model at = *this;
+  at.set_steady(squared);
+  Instant out = at.solve_fixed(s);
+  out.quantities.push_back({steady_->squared, squared, true, false, {}});
+  if (squared > 0) {
+    out.quantities.push_back({steady_->rate, std::sqrt(squared), true, false, {}});
+    out.quantities.push_back({steady_->period, 2 * std::numbers::pi / std::sqrt(squared), true, false, {}});
+  }
+  return out;
+}
+
+Instant Model::solve_fixed(const State& s) const {
   if (kinematic_) return solve_kinematics(s);
   const Kkt k = system(s);
   const int n = ndof_;
@@ -1442,15 +1556,20 @@ void Model::place_turning(State& s) const {
 std::optional<State> Model::random_state(std::mt19937_64& rng, double spread) const {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   State s = base_state();
+  // (a value given in the parameters stays: the draws are made all the same, so that the
+  // other values drawn do not depend on it)
+  auto kept = [&](const std::string& name) { return pinned_.count(name) != 0; };
   for (const auto& b : bodies_) {
     if (b.kind != Body::line) continue;
-    s.q.segment(b.q0, dims_) += b.b * (spread * u(rng));
-    s.v.segment(b.q0, dims_) = b.b * u(rng);
+    const double dq = spread * u(rng), dv = u(rng);
+    if (!kept(b.coord)) s.q.segment(b.q0, dims_) += b.b * dq;
+    if (!kept("dot(" + b.coord + ")")) s.v.segment(b.q0, dims_) = b.b * dv;
   }
   for (const auto& b : bodies_) {
     if (b.angle.empty()) continue;
-    s.q(b.r0) += spread * u(rng);
-    s.v(b.r0) = u(rng);
+    const double dq = spread * u(rng), dv = u(rng);
+    if (!kept(b.angle)) s.q(b.r0) += dq;
+    if (!kept("dot(" + b.angle + ")")) s.v(b.r0) = dv;
   }
   if (uses_time_) s.t = 0.5 * (1 + u(rng));
   place_turning(s);
@@ -1464,6 +1583,14 @@ std::optional<State> Model::random_state(std::mt19937_64& rng, double spread) co
     const Derivs dv = cons_derivs(c, s);
     if (std::abs(dv.value - c.constant) > 1e-9 * (1 + std::abs(c.constant))) return std::nullopt;
     if (std::abs(dv.grad.dot(s.v) + dv.dt) > 1e-9 * (1 + s.v.norm())) return std::nullopt;
+  }
+  // nor may the projection have moved a value given in the parameters
+  if (!pinned_.empty()) {
+    const auto vals = values_at(s);
+    for (const auto& [name, v] : pinned_) {
+      auto it = vals.find(name);
+      if (it != vals.end() && std::abs(it->second - v) > 1e-9 * (1 + std::abs(v))) return std::nullopt;
+    }
   }
   return s;
 }

@@ -13,8 +13,10 @@
 // It reads the description (tackle's plain Description structs) and takes the SI factor of
 // each parameter's unit from tackle's unit table (src/core/units: input reading); nothing of
 // tackle's model, equations, solver, energy or motion is used. Its requirements (strings pull,
-// contacts push, grips stay within mu N, cords stay taut) and its forces on a body
-// (forces.cpp) are its own, not read from tackle's rules.
+// contacts push, grips stay within mu N, cords stay taut, a steady rate is real) and its
+// forces on a body (forces.cpp) are its own, not read from tackle's rules. A steady motion at
+// an unknown rate (`steady:`, a body's given acceleration a0 + omega^2 w) is solved with the
+// body guided only across w: omega^2 is where the force of a guide along w would vanish.
 //
 // What the rest of the cross-check takes from tackle, beyond what it checks:
 // - compare.cpp, claims.cpp, motion.cpp: tackle's answers (closed forms, the asked quantities,
@@ -89,10 +91,12 @@ struct Instant {
 /// or a cable pulls (its tension is not negative), a contact, a roller or a wheel pushes (its
 /// normal force is not negative), a sticking contact's or a gripping wheel's friction stays
 /// within its cone (|F| <= mu N), an elastic cord is taut (its length at least its rest
-/// length). Nothing here is read from tackle's rules.
+/// length); a steady motion's unknown rate is real (its square is not negative). Nothing here
+/// is read from tackle's rules.
 struct Requirement {
-  enum Kind { pulls, pushes, cone, taut } kind = pulls;
-  std::string force;   // the constraint force (tackle's name for it): T, N_A; cone: the friction F_A
+  enum Kind { pulls, pushes, cone, taut, real } kind = pulls;
+  std::string force;   // the constraint force (tackle's name for it): T, N_A; cone: the friction F_A;
+                       // real: the rate squared (omega^2)
   std::string normal;  // cone: the normal force N_A
   double mu = 0;       // cone
   int element = -1;    // taut: the cord (an element of the model)
@@ -145,7 +149,8 @@ class Model {
   /// The state at the layout (given values, then layout, then 0), projected onto the
   /// constraints.
   [[nodiscard]] State base_state() const;
-  /// A random state near the layout, consistent with the constraints (positions and rates).
+  /// A random state near the layout, consistent with the constraints (positions and rates);
+  /// a coordinate or rate given in the parameters keeps its value.
   [[nodiscard]] std::optional<State> random_state(std::mt19937_64& rng, double spread) const;
   /// The accelerations and constraint forces at a state.
   [[nodiscard]] Instant solve(const State& s) const;
@@ -220,6 +225,7 @@ class Model {
                                      // strand leaves a drum, where a wheel touches the ground)
     std::vector<Expr> ground;        // a ground point's position (parameters, t)
     Eigen::VectorXd frame_accel;     // a ground point that moves with a driven body's frame
+    int frame_body = -1;             // that body (-1: none)
   };
   struct Constraint {
     std::string name;                // tackle's unknown, "" when it has none, "guide ..." for guides
@@ -295,12 +301,26 @@ class Model {
   Eigen::VectorXd origin_q_;                   // every coordinate of tackle's at 0 (a spring's `stretch`)
   std::map<std::string, double> base_coord_, base_rate_;
   std::map<std::string, double> given_accel_;  // kinematics: ddot(q) -> its value
+  std::map<std::string, double> pinned_;       // coordinates and rates given in the parameters: every state keeps them
   bool kinematic_ = false;                     // no body has a mass: the constraints alone
   [[nodiscard]] Instant solve_kinematics(const State& s) const;
+  // A steady motion at an unknown rate: the body whose given acceleration is a0 + s w in the
+  // rate squared s, and the guide along w (whose force solve_steady makes 0).
+  struct Steady {
+    int body = -1, guide = -1;
+    Eigen::VectorXd a0, w;
+    std::string squared, rate, period;  // tackle's names: omega^2, omega, tau
+  };
+  std::optional<Steady> steady_;
+  int steady_slot_ = -1;  // the rate's slot (no value: only a body's acceleration uses it)
+  [[nodiscard]] Instant solve_steady(const State& s) const;
+  [[nodiscard]] Instant solve_fixed(const State& s) const;  // with every given acceleration as it is
+  void set_steady(double squared);  // the body's (and its frame's) acceleration at this rate squared
   [[nodiscard]] Eigen::VectorXd along_line(const Body& b, const Eigen::MatrixXd& nulls) const;
 
   int slot(const std::string& name) const;
-  Expr compile(const tackle::Text& t) const;
+  Expr compile(const tackle::Text& t) const;      // (not the steady rate)
+  Expr compile_any(const tackle::Text& t) const;  // (the steady rate too)
   double number(const tackle::Text& t) const;
   PointRef point(const std::string& name, int body_hint) const;
   PointRef material(const std::string& name, int body) const;

@@ -226,6 +226,19 @@ bool length_sum(const Compiled& c, const World& w) {
   return coordinate && (named || (!parameter && (number_side(c, c.lhs) || number_side(c, c.rhs))));
 }
 
+// An equation in coordinates and parameters alone with a parameter in it (`x_A + x_B = w`):
+// whether it holds is whether the sum of the coordinates is kept (the model decides) and its
+// constant is that one, which the description does not fix where it gives no positions to
+// measure from (the string's length, the origin): unknown when the sum is kept.
+bool parameter_sum(const Compiled& c, const World& w) {
+  bool coordinate = false, parameter = false;
+  for (const auto& n : c.names) {
+    if (n == "const" || is_quantity(w, n) || n.rfind("dot(", 0) == 0 || n.rfind("ddot(", 0) == 0) return false;
+    coordinate = coordinate || (w.values.count("dot(" + n + ")") > 0);
+    parameter = parameter || std::find(w.parameters.begin(), w.parameters.end(), n) != w.parameters.end();
+  }
+  return coordinate && parameter;
+}
 
 std::string state_text(const World& w) {
   std::string out = fmt::format("draw {}", w.draw);
@@ -259,7 +272,8 @@ Judgement decide(const Compiled& c, const std::vector<World>& worlds) {
     j.why = "no state of the model balances";
     return j;
   }
-  const bool sum = length_sum(c, worlds.front());
+  const bool with_parameter = parameter_sum(c, worlds.front());
+  const bool sum = length_sum(c, worlds.front()) || with_parameter;
   std::map<int, Residual> first;  // a length sum's residual at the first state of each draw
   bool fails = false;
   for (const auto& w : worlds) {
@@ -289,6 +303,7 @@ Judgement decide(const Compiled& c, const std::vector<World>& worlds) {
     fails = fails || rel > fails_above;
   }
   if (fails) j.truth = Truth::fails;
+  else if (j.worst <= holds_below && with_parameter) j.why = "a kept sum whose constant is a parameter: the description does not fix the constant";
   else if (j.worst <= holds_below) j.truth = Truth::holds;
   else j.why = fmt::format("too close to call (relative residual {:.3g})", j.worst);
   j.tautology = j.truth == Truth::holds && tautology(c, worlds.back());  // (a drawn world: no coincidence of the given values)

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <random>
 
@@ -83,6 +84,40 @@ struct Canonical : map_function {
   }
 };
 
+// Half a unit in the last digit written: "0.19245" is 0.19245 +- 0.000005.
+double stated_tolerance(const std::string& number) {
+  const auto e = number.find_first_of("eE");
+  const std::string mantissa = number.substr(0, e);
+  const auto dot = mantissa.find('.');
+  const int decimals = dot == std::string::npos ? 0 : static_cast<int>(mantissa.size() - dot - 1);
+  const int exponent = e == std::string::npos ? 0 : std::stoi(number.substr(e + 1));
+  return 0.5 * std::pow(10.0, exponent - decimals);
+}
+
+// The solved form "parameter op bound" among a derivation's conditions (exactly one), its
+// bound compared with tan written as sin/cos and the defined parameters put in; or nullptr.
+template <typename DefinedOut>
+const SolvedFor* expected_form(const Derivation& d, const SymbolTable& table, const std::string& text, DefinedOut defined_out) {
+  const auto sp1 = text.find(' '), sp2 = text.find(' ', sp1 + 1);
+  REQUIRE(sp2 != std::string::npos);
+  const auto parameter = parse_expression(text.substr(0, sp1), table);
+  const std::string op = text.substr(sp1 + 1, sp2 - sp1 - 1);
+  const auto bound = parse_expression(text.substr(sp2 + 1), table);
+  REQUIRE(parameter.value);
+  REQUIRE(bound.value);
+  auto plain = [&](const ex& e) { return defined_out(e).subs(tan(wild()) == sin(wild()) / cos(wild()), subs_options::algebraic); };
+  const SolvedFor* found = nullptr;
+  int count = 0;
+  for (const auto& cr : d.conditions)
+    for (const auto& sv : cr.solved)
+      if (sv.parameter.is_equal(*parameter.value) && sv.op == op && normal(plain(sv.bound - *bound.value)).is_zero()) {
+        found = &sv;
+        ++count;
+      }
+  CHECK(count == 1);
+  return count == 1 ? found : nullptr;
+}
+
 }  // namespace
 
 TEST_CASE("Examples: every example derives its expected closed forms and numbers", "[examples]") {
@@ -144,23 +179,42 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
       }
     }
     // Expected validity conditions solved for a parameter ("a <= mu*g*l_r/(...)"): each is
-    // among the solved forms of some condition, with the same operator and an equal bound.
+    // among the solved forms of some condition, with the same operator and an equal bound. An
+    // entry may be a mapping that also states the bound's number at the given numbers, derived
+    // by hand (`value`: for a square v^2, the bound on v), to the digits it is written with, or
+    // that nothing is asked of a positive parameter from below (`every_value: true`).
     if (const yaml::Node conds = root["expected_conditions"]) {
       for (const auto& c : conds) {
-        const std::string text = yaml_text(c);
+        const std::string text = yaml_text(c.is_map() ? c["condition"] : yaml::Node(c));
         INFO("expected condition " << text);
-        const auto sp1 = text.find(' '), sp2 = text.find(' ', sp1 + 1);
-        REQUIRE(sp2 != std::string::npos);
-        const auto parameter = parse_expression(text.substr(0, sp1), table);
-        const std::string op = text.substr(sp1 + 1, sp2 - sp1 - 1);
-        const auto bound = parse_expression(text.substr(sp2 + 1), table);
-        REQUIRE(parameter.value);
-        REQUIRE(bound.value);
-        int found = 0;
-        for (const auto& cr : d.conditions)
-          for (const auto& sv : cr.solved)
-            if (sv.parameter.is_equal(*parameter.value) && sv.op == op && normal(defined_out(sv.bound - *bound.value)).is_zero()) ++found;
-        CHECK(found == 1);
+        const SolvedFor* form = expected_form(d, table, text, defined_out);
+        REQUIRE(form != nullptr);
+        if (!c.is_map()) continue;
+        if (c["value"]) {
+          REQUIRE(form->number);
+          const NumericValue& got = form->number->root ? *form->number->root : form->number->value;
+          INFO("tackle: " << got.decimal << " " << got.unit);
+          CHECK(std::abs(got.approx - yaml_number(c["value"])) <= stated_tolerance(yaml_text(c["value"])));
+        }
+        if (c["every_value"]) {
+          REQUIRE(form->number);
+          CHECK(form->number->every_value == yaml_flag(c["every_value"]));
+        }
+      }
+    }
+    // Each parameter's range with the others at their given values, by hand: `low` and
+    // `high` (absent: no bound on that side), to the digits written.
+    if (const yaml::Node ranges = root["expected_ranges"]) {
+      CHECK(d.ranges.size() == ranges.size());
+      for (const auto& kv : ranges) {
+        const std::string name = yaml_text(kv.first);
+        INFO("range of " << name);
+        const auto r = std::find_if(d.ranges.begin(), d.ranges.end(), [&](const ParameterRange& x) { return to_text(x.parameter) == name; });
+        REQUIRE(r != d.ranges.end());
+        for (const auto& [key, side] : {std::pair{"low", &r->low}, std::pair{"high", &r->high}}) {
+          REQUIRE(static_cast<bool>(kv.second[key]) == side->has_value());
+          if (*side) CHECK(std::abs((*side)->approx - yaml_number(kv.second[key])) <= stated_tolerance(yaml_text(kv.second[key])));
+        }
       }
     }
     // The power balance, an independent check: it holds for every example, or the example

@@ -352,8 +352,8 @@ void read_layout(BuildContext& ctx) {
       ctx.diags.error(name.at, msg);
       continue;
     }
-    auto v = ctx.parse(value, none, "layout value of '" + name.text + "'");
-    if (v && is_a<numeric>(*v)) ctx.layout[s->sym] = *v;
+    auto v = ctx.number_in_parameters(value, "layout value of '" + name.text + "'", s->dimension);
+    if (v && is_a<numeric>(evalf(*v))) ctx.layout[s->sym] = *v;
   }
   // A coordinate given with a value is at that value in the layout, unless the layout says
   // otherwise (its problems are reported with the other given quantities).
@@ -361,7 +361,10 @@ void read_layout(BuildContext& ctx) {
     const SymbolInfo* s = g.value ? ctx.table->find(g.name.text) : nullptr;
     if (!s || s->role != SymbolRole::coordinate || ctx.layout.count(s->sym)) continue;
     Diagnostics later;
-    if (auto v = given_value(g, *s, later)) ctx.layout[s->sym] = *v;
+    if (auto v = given_value(g, *s, *ctx.table, later)) {
+      const ex at = substituted(*v, ctx.table->values());  // v/R: a number once R has its value
+      if (is_a<numeric>(evalf(at))) ctx.layout[s->sym] = at;
+    }
   }
   // The instant is t = 0 for telling directions (a support that moves with time).
   if (is_a<symbol>(ctx.m.time)) ctx.layout[ctx.m.time] = 0;

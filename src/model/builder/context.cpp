@@ -3,6 +3,8 @@
 #include "model/builder/context.hpp"
 
 #include "core/units.hpp"
+#include "expr/print.hpp"
+#include "expr/rational.hpp"
 
 namespace tackle::build {
 
@@ -30,6 +32,24 @@ std::optional<ex> BuildContext::parse(const Text& t, const NameResolver& names, 
   auto r = parse_expression(t.text, names);
   for (const auto& p : r.problems) diags.error(t.at.shifted(p.column), what + ": " + p.message);
   return r.value;
+}
+
+std::optional<ex> BuildContext::number_in_parameters(const Text& t, const std::string& what, std::optional<Dimension> expected) {
+  const auto v = parse(t, *table, what);
+  if (!v) return std::nullopt;
+  for (const ex& x : distinct_symbols(*v)) {
+    const SymbolInfo* s = table->find(x);
+    if (s && s->role == SymbolRole::parameter) continue;
+    diags.error(t.at, what + ": '" + to_text(x) + "' is not a parameter (expected a number or an expression in the parameters)");
+    return std::nullopt;
+  }
+  if (expected && !is_a<numeric>(*v)) check_dimension(*v, *expected, t.at, what);
+  const ex at = substituted(*v, table->values());
+  if (const auto missing = distinct_symbols(at); !missing.empty()) {
+    diags.error(t.at, what + ": '" + to_text(missing.front()) + "' has no value (expected a number, or parameters with values)");
+    return std::nullopt;
+  }
+  return at;
 }
 
 void BuildContext::check_dimension(const ex& e, const Dimension& expected, const Location& at, const std::string& what) {

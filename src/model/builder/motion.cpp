@@ -265,7 +265,7 @@ void motion(BuildContext& ctx) {
         to_si = ex(unit->to_si);
       }
     }
-    auto v = ctx.parse(*md.until, none, "'until' of 'motion'");
+    auto v = ctx.number_in_parameters(*md.until, "'until' of 'motion'", md.until_unit ? std::nullopt : std::optional(Dimension::time()));
     if (v && to_si) {
       const ex seconds = evalf(*v * *to_si);
       if (!is_a<numeric>(seconds) || !ex_to<numeric>(seconds).is_real() || !ex_to<numeric>(seconds).is_positive())

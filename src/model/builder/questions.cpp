@@ -3,6 +3,8 @@
 #include "model/builder/stages.hpp"
 
 #include "core/placeholders.hpp"
+#include "expr/print.hpp"
+#include "expr/rational.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -32,12 +34,37 @@ std::optional<Unit> output_unit(BuildContext& ctx, const FindDesc& f, std::optio
   return unit;
 }
 
+// A given value names parameters only (another given quantity or an unknown has no value to
+// give), is real at their values, and, without a unit, has the quantity's dimension.
+bool given_in_parameters(const ex& v, const SymbolInfo& s, bool with_unit, const SymbolTable& table, const Location& at,
+                         const std::string& what, Diagnostics& to) {
+  for (const ex& x : distinct_symbols(v)) {
+    const SymbolInfo* info = table.find(x);
+    if (info && info->role == SymbolRole::parameter) continue;
+    to.error(at, what + ": '" + to_text(x) + "' is not a parameter (expected a number or an expression in the parameters)");
+    return false;
+  }
+  const ex approx = evalf(substituted(v, table.values()));
+  if (is_a<numeric>(approx) && !ex_to<numeric>(approx).is_real()) {
+    to.error(at, what + " is not a real number (expected a real value at the parameters' values)");
+    return false;
+  }
+  if (with_unit || is_a<numeric>(v) || !s.dimension) return true;
+  std::string problem;
+  const auto dim = dimension_of(v, table, problem);
+  if (!dim && !problem.empty()) to.error(at, what + " " + problem + " (expected " + with_article(s.dimension->describe()) + ")");
+  else if (dim && !(*dim == *s.dimension))
+    to.error(at, what + " is " + with_article(dim->describe()) + " (expected " + with_article(s.dimension->describe()) + ")");
+  return !dim || *dim == *s.dimension;
+}
+
 }  // namespace
 
-// The value of a `given` entry in SI, checked against the quantity's dimension; nothing
-// (with the problem reported to `to`) when it is not a number in a fitting unit.
-std::optional<ex> given_value(const GivenDesc& g, const SymbolInfo& s, Diagnostics& to, std::string* unit_text,
-                              ex* to_si) {
+// The value of a `given` entry in SI, a number or an expression in the parameters (v/R),
+// checked against the quantity's dimension; nothing (with the problem reported to `to`) when
+// it is neither, or of another dimension.
+std::optional<ex> given_value(const GivenDesc& g, const SymbolInfo& s, const SymbolTable& table, Diagnostics& to,
+                              std::string* unit_text, ex* to_si) {
   const std::string what = "'given' value of '" + g.name.text + "'";
   std::optional<Unit> unit;
   if (g.unit) {
@@ -54,20 +81,50 @@ std::optional<ex> given_value(const GivenDesc& g, const SymbolInfo& s, Diagnosti
       return std::nullopt;
     }
   }
-  auto r = parse_expression(g.value->text, none);
+  auto r = parse_expression(g.value->text, table);
   if (!r.value) {
     for (const auto& p : r.problems) to.error(g.value->at.shifted(p.column), what + ": " + p.message);
     return std::nullopt;
   }
-  const ex approx = evalf(*r.value);
-  if (!is_a<numeric>(approx) || !ex_to<numeric>(approx).is_real()) {
-    to.error(g.value->at, what + " is not a number");
-    return std::nullopt;
-  }
+  if (!given_in_parameters(*r.value, s, unit.has_value(), table, g.value->at, what, to)) return std::nullopt;
   if (unit_text) *unit_text = unit ? g.unit->text : si_unit_name(s.dimension.value_or(Dimension{}));
   if (to_si) *to_si = unit ? ex(unit->to_si) : ex(1);
   return unit ? *r.value * unit->to_si : *r.value;
 }
+
+namespace {
+
+// A given value: a number is the quantity's value; an expression in the parameters is its
+// definition (its value follows from theirs, and what is solved for a parameter in it knows
+// that the quantity moves with it). With a motion the instant's given values are numbers: the
+// motion's coordinates and rates vary, and start from `initial`.
+void set_given(BuildContext& ctx, const SymbolInfo& s, const ex& v, const Text& written) {
+  if (distinct_symbols(v).empty()) {
+    ctx.table->set_value(s.name, v);
+    return;
+  }
+  if (!ctx.d.motion) {
+    ctx.table->set_definition(s.name, v);
+    return;
+  }
+  const ex at = substituted(v, ctx.table->values());
+  if (distinct_symbols(at).empty()) {
+    ctx.table->set_value(s.name, at);
+    return;
+  }
+  ctx.diags.error(written.at, "'given' value of '" + s.name + "': with a 'motion', the instant's given values are numbers, and " +
+                                  to_text(distinct_symbols(at).front()) + " has no value (expected a value for it in 'parameters')");
+}
+
+// The steady rate or its period when a `find` entry names one of them.
+const Wanted* steady_reported(const BuildContext& ctx, const FindDesc& f) {
+  if (!ctx.m.steady || f.expr) return nullptr;
+  for (const auto& w : ctx.m.steady->reported)
+    if (w.name == f.name.text) return &w;
+  return nullptr;
+}
+
+}  // namespace
 
 void given_and_find(BuildContext& ctx) {
   for (const auto& gd : ctx.d.given) {
@@ -86,15 +143,22 @@ void given_and_find(BuildContext& ctx) {
     if (gd.value) {
       std::string unit_text;
       ex to_si = 1;
-      if (auto v = given_value(gd, *s, ctx.diags, &unit_text, &to_si)) {
-        ctx.table->set_value(s->name, *v);
+      if (auto v = given_value(gd, *s, *ctx.table, ctx.diags, &unit_text, &to_si)) {
+        set_given(ctx, *s, *v, *gd.value);
         ctx.table->set_unit(s->name, unit_text, to_si);
       }
     }
     ctx.m.given.push_back(s->sym);
     ctx.m.candidates.erase(std::remove(ctx.m.candidates.begin(), ctx.m.candidates.end(), s->sym), ctx.m.candidates.end());
   }
+  // A steady motion's unknown: its rate's square, after the others; its rate and period are
+  // reported where `find` names them (else after what it asks for).
+  if (ctx.m.steady) ctx.m.candidates.push_back(ctx.m.steady->squared);
   for (const auto& f : ctx.d.find) {
+    if (const Wanted* w = steady_reported(ctx, f)) {
+      ctx.m.wanted.push_back(*w);
+      continue;
+    }
     if (f.expr) {
       if (!ctx.claim(f.name, "quantity")) continue;
       auto e = ctx.parse(*f.expr, *ctx.table, "'" + f.name.text + "' in 'find'");

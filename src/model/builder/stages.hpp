@@ -16,6 +16,9 @@ namespace tackle::build {
 void axes(BuildContext& ctx);
 // The parameters in the symbol table (dimension, unit, sign, value, range); needs nothing.
 void parameters(BuildContext& ctx);
+// m.steady from 'steady': the unknown rate's square, the rate's name read as its root, the
+// rate and period reported, the condition that the rate is real; needs the parameters.
+void steady(BuildContext& ctx);
 // m.bodies (each a point too), their coordinates, accelerations and masses; needs the axes and parameters.
 void bodies(BuildContext& ctx);
 // The named points of m.points (fixed, or on a body); needs the bodies.
@@ -52,8 +55,9 @@ void statement(BuildContext& ctx);
 
 // Helpers one stage lends another.
 
-// The value of a `given` entry in SI (questions.cpp); read_layout uses it too.
-std::optional<GiNaC::ex> given_value(const GivenDesc& g, const SymbolInfo& s, Diagnostics& to,
+// The value of a `given` entry in SI, a number or an expression in the parameters
+// (questions.cpp); read_layout uses it too.
+std::optional<GiNaC::ex> given_value(const GivenDesc& g, const SymbolInfo& s, const SymbolTable& table, Diagnostics& to,
                                      std::string* unit_text = nullptr, GiNaC::ex* to_si = nullptr);
 
 // The path of a points argument, made once (paths.cpp); the connections stage uses it.

@@ -70,6 +70,15 @@ std::string prose(const Step& st, Format f) {
   return out + plain(st.text.substr(from));
 }
 
+std::string note_text(const Step& st) { return st.note_squared ? "(" + st.note + ")^2" : st.note; }
+
+std::string note_latex(const Step& st) {
+  // The note is "decimal unit".
+  const auto sp = st.note.find(' ');
+  const std::string v = sp == std::string::npos ? st.note : st.note.substr(0, sp) + "\\," + unit_latex(st.note.substr(sp + 1));
+  return st.note_squared ? "\\left(" + v + "\\right)^{2}" : v;
+}
+
 std::string markdown_text(const std::string& s) {
   std::string out;
   bool math = false;

@@ -18,6 +18,10 @@ namespace tackle::writers {
 [[nodiscard]] std::string tex_relation(const std::string& op);
 /// A number with its unit ("20 N"), or "".
 [[nodiscard]] std::string value_text(const std::optional<NumericValue>& v);
+/// An equation step's number (its note) as text: "20 N", or "(19.1206 m/s)^2" when squared.
+[[nodiscard]] std::string note_text(const Step& st);
+/// The same in LaTeX: `20\,\mathrm{N}`, `(19.1206\,\mathrm{m/s})^{2}`.
+[[nodiscard]] std::string note_latex(const Step& st);
 /// A step's text with its "{}" placeholders filled from its expressions, in format `f`
 /// (text: as text; LaTeX: escaped prose, $math$; Markdown: $math$; HTML: escaped, KaTeX spans).
 [[nodiscard]] std::string prose(const Step& st, Format f);

@@ -42,12 +42,7 @@ std::string html_statement(const std::string& s) {
 
 // One equation: typeset by KaTeX, its label as a tag, its number as a note.
 std::string html_equation(const Step& st) {
-  std::string note;
-  if (!st.note.empty()) {
-    const auto sp = st.note.find(' ');
-    note = " \\quad \\left(= " + (sp == std::string::npos ? st.note : st.note.substr(0, sp) + "\\," + unit_latex(st.note.substr(sp + 1))) +
-           "\\right)";
-  }
+  const std::string note = st.note.empty() ? "" : " \\quad \\left(= " + note_latex(st) + "\\right)";
   const std::string lhs = to_latex(st.lhs), rel = st.equals_constant ? "=" : tex_relation(st.relation);
   const std::string rhs = st.equals_constant ? "\\text{const}" : to_latex(st.rhs);
   // A formula too wide for the column is broken (a broken one is not boxed).

@@ -13,6 +13,38 @@ using namespace writers;
 
 namespace {
 
+// A number with its unit: the value (in the unit), its exact form and its decimal.
+nlohmann::ordered_json number_json(const NumericValue& v) {
+  return {{"value", v.approx}, {"exact", to_text(v.exact)}, {"decimal", v.decimal}, {"unit", v.unit}};
+}
+
+// A condition solved for a parameter, with its bound's number at the given numbers.
+nlohmann::ordered_json solved_json(const SolvedFor& sv) {
+  using J = nlohmann::ordered_json;
+  J y{{"parameter", to_text(sv.parameter)},
+      {"condition", to_text(sv.parameter) + " " + sv.op + " " + to_text(sv.bound)},
+      {"latex", to_latex(sv.parameter) + " " + tex_relation(sv.op) + " " + to_latex(sv.bound)}};
+  if (!sv.provided.is_zero()) y["while_positive"] = to_text(sv.provided);  // as at the given numbers
+  y["bound_value"] = sv.number ? number_json(sv.number->value) : J(nullptr);
+  if (sv.number && sv.number->root) y["root_value"] = number_json(*sv.number->root);
+  y["every_value"] = sv.number && sv.number->every_value;
+  y["no_value"] = sv.number && sv.number->no_value;
+  return y;
+}
+
+// A parameter's range at the given numbers: each side's bound (null: none asked).
+nlohmann::ordered_json range_json(const ParameterRange& r) {
+  using J = nlohmann::ordered_json;
+  auto side = [](const std::optional<NumericValue>& v, bool strict) {
+    if (!v) return J(nullptr);
+    J x = number_json(*v);
+    x["strict"] = strict;
+    return x;
+  };
+  return J{{"parameter", to_text(r.parameter)}, {"low", side(r.low, r.low_strict)}, {"high", side(r.high, r.high_strict)},
+           {"given", r.given ? number_json(*r.given) : J(nullptr)}, {"empty", r.empty}};
+}
+
 // Motion in time for the JSON: the equations of motion, the response, the quantities and the
 // conditions along it (text and LaTeX for each expression).
 nlohmann::ordered_json motion_json(const Motion& mo) {
@@ -99,7 +131,11 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
     x["extreme"] = c.extreme ? J(to_text(*c.extreme) + " " + op + " 0") : J(nullptr);
     x["extreme_at"] = c.extreme_at ? J(to_text(*c.extreme_at)) : J(nullptr);
     x["for_all_t"] = J::array();
-    for (const auto& sv : c.solved) x["for_all_t"].push_back(to_text(sv.parameter) + " " + sv.op + " " + to_text(sv.bound));
+    x["for_all_t_solved"] = J::array();
+    for (const auto& sv : c.solved) {
+      x["for_all_t"].push_back(to_text(sv.parameter) + " " + sv.op + " " + to_text(sv.bound));
+      x["for_all_t_solved"].push_back(solved_json(sv));
+    }
     x["holds_for_all_t"] = c.holds_for_all_t ? J(*c.holds_for_all_t) : J(nullptr);
     x["first_failure"] = c.first_failure ? J(to_text(*c.first_failure)) : J(nullptr);
     x["first_failure_s"] = c.first_failure_s ? J(*c.first_failure_s) : J(nullptr);
@@ -192,15 +228,11 @@ nlohmann::ordered_json json_object(const Derivation& d, bool full) {
     x["holds"] = c.holds ? nlohmann::ordered_json(*c.holds) : nlohmann::ordered_json(nullptr);
     x["always"] = c.always ? nlohmann::ordered_json(*c.always) : nlohmann::ordered_json(nullptr);
     x["solved"] = nlohmann::ordered_json::array();
-    for (const auto& sv : c.solved) {
-      auto y = nlohmann::ordered_json{{"parameter", to_text(sv.parameter)},
-                                      {"condition", to_text(sv.parameter) + " " + sv.op + " " + to_text(sv.bound)},
-                                      {"latex", to_latex(sv.parameter) + " " + tex_relation(sv.op) + " " + to_latex(sv.bound)}};
-      if (!sv.provided.is_zero()) y["while_positive"] = to_text(sv.provided);  // as at the given numbers
-      x["solved"].push_back(y);
-    }
+    for (const auto& sv : c.solved) x["solved"].push_back(solved_json(sv));
     j["conditions"].push_back(x);
   }
+  j["ranges"] = nlohmann::ordered_json::array();
+  for (const auto& r : d.ranges) j["ranges"].push_back(range_json(r));
   {
     // The power balance: d/dt(E_k) = P, checked with the solution put in.
     static const char* const names[] = {"holds", "fails", "not_applicable"};

@@ -29,12 +29,7 @@ std::string latex_line(const Step& st) {
   const std::string lhs = to_latex(st.lhs);
   const std::string rhs = st.equals_constant ? "\\text{const}" : to_latex(st.rhs);
   const std::string rel = st.equals_constant ? "=" : tex_relation(st.relation);
-  const std::string note = st.note.empty() ? "" : " \\quad \\left(= " + [&] {
-    // note is "decimal unit"
-    const auto sp = st.note.find(' ');
-    if (sp == std::string::npos) return st.note;
-    return st.note.substr(0, sp) + "\\," + unit_latex(st.note.substr(sp + 1));
-  }() + "\\right)";
+  const std::string note = st.note.empty() ? "" : " \\quad \\left(= " + note_latex(st) + "\\right)";
   const std::string tag = st.text.empty() ? "" : " \\tag*{" + prose(st, Format::latex) + "}";
   // A line too long for the page is broken after the relation and at the sum's + and -, the
   // rest indented, as the HTML breaks it (a broken result is not boxed: a box cannot span lines).

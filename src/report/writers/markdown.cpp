@@ -25,7 +25,7 @@ std::string markdown_document(const Derivation& d, bool full) {
                                           : to_latex(st.lhs) + " " + tex_relation(st.relation) + " " + to_latex(st.rhs);
     if (st.boxed) body = "\\boxed{" + body + "}";
     std::string line = "$$" + body + "$$" + (st.text.empty() ? "" : " *(" + prose(st, Format::markdown) + ")*");
-    if (!st.note.empty()) line += " = " + st.note;
+    if (!st.note.empty()) line += " = " + note_text(st);
     return line + "\n\n";
   };
   if (full) {

@@ -51,7 +51,7 @@ void derivation_text(std::ostream& out, const Derivation& d) {
       case Step::Kind::equation: {
         std::string eq = st.equals_constant ? to_text(st.lhs) + " = const"
                                             : to_text(st.lhs) + " " + st.relation + " " + to_text(st.rhs);
-        if (!st.note.empty()) eq += "  = " + st.note;
+        if (!st.note.empty()) eq += "  = " + note_text(st);
         out << "    " << eq << (st.text.empty() ? "" : "    [" + prose(st, Format::text) + "]") << "\n";
         break;
       }

@@ -2,6 +2,8 @@
 // equation holds on a family's solutions. Every value below is worked out by hand.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 #include "algebra/program.hpp"
 #include "algebra/states.hpp"
 #include "algebra/truth.hpp"
@@ -49,6 +51,25 @@ TEST_CASE("Program: an angle at t = tan(angle/2) has an exact sine and cosine, a
   CHECK(at(sin(theta / 2), p, angles).to_double() == Approx(1 / std::sqrt(5.0)));
   // An input that is not an angle: sin of its value, a float.
   CHECK(at(sin(theta), p, {false, false}).to_double() == Approx(std::sin(0.5)));
+}
+
+TEST_CASE("Program: the same values in doubles, a screen that says NaN where it cannot say", "[algebra]") {
+  // The same angles as above (t = 1/2, t = 1/3), in doubles: cos = 0.6, sin(theta - phi) = 7/25,
+  // cos(x + pi/2) = -0.8; a root: sqrt(x^2 + y^2 + a^2) at (2, 3, 6) is 7.
+  const Sample p{{theta, numeric(1, 2)}, {phi, numeric(1, 3)}};
+  const std::vector<bool> angles{true, true};
+  const auto approx = [&](const ex& e) { return Program(e, p, {}, angles).approx(doubles_of(p)); };
+  CHECK(approx(cos(theta)) == Approx(0.6));
+  CHECK(approx(sin(theta - phi)) == Approx(0.28));
+  CHECK(approx(cos(theta + Pi / 2)) == Approx(-0.8));
+  CHECK(approx(theta) == Approx(0.9272952180016122));
+  const Sample q{{x, numeric(2)}, {y, numeric(3)}, {a, numeric(6)}};
+  CHECK(Program(sqrt(pow(x, 2) + pow(y, 2) + pow(a, 2)), q, {}).approx(doubles_of(q)) == Approx(7.0));
+  CHECK(Program(exp(x) / y, q, {}).approx(doubles_of(q)) == Approx(std::exp(2.0) / 3));
+  // 1/0, a symbol without a value, the log of a negative number: NaN, no screen.
+  CHECK(std::isnan(Program(1 / (x - 2), q, {}).approx(doubles_of(q))));
+  CHECK(std::isnan(Program(phi * x, q, {}).approx(doubles_of(q))));
+  CHECK(std::isnan(Program(log(-x), q, {}).approx(doubles_of(q))));
 }
 
 TEST_CASE("Linear algebra: a null space, a combination and a left inverse, exactly", "[algebra]") {

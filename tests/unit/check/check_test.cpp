@@ -675,3 +675,41 @@ TEST_CASE("Check: without the LaTeX echo, no answer gets one, a number with a un
   }
   CHECK(suitcase().check("N_A", "29.43 N").echo_latex == "29.43\\,\\mathrm{N}");
 }
+
+TEST_CASE("Check: rates a string ties are drawn tied, so a right answer in either is correct", "[check]") {
+  // An Atwood machine whose blocks are also joined by a damper c. By hand: the string keeps
+  // y_A + y_B, so dot(y_B) = -dot(y_A) = -v; the damper's length y_A - y_B grows at 2 v and
+  // pulls A down and B up with 2 c v. A: T - m_A g - 2 c v = m_A a; B: T - m_B g + 2 c v =
+  // -m_B a; their difference: a = (g (m_B - m_A) - 4 c v)/(m_A + m_B). Written in dot(y_A)
+  // alone or in dot(y_B) alone it is right; drawn apart, the rates made it wrong.
+  const std::string text = R"(title: "An Atwood machine whose blocks are joined by a damper too"
+parameters:
+  m_A: {value: 3, unit: kg}
+  m_B: {value: 5, unit: kg}
+  g: {value: 9.81, unit: m/s^2}
+  c: {value: 4, unit: N*s/m}
+gravity: -g
+bodies:
+  A: {mass: m_A, position: y_A}
+  B: {mass: m_B, position: y_B}
+  C: {mass: 0, position: y_C}
+strings:
+  - {name: s, path: [A, C, B], tension: T}
+connections:
+  - {type: fixed, body: C}
+  - {type: pulley, at: C}
+  - {type: damper, name: dp, path: [A, B], c: c}
+layout: {y_A: -2, y_B: -3, y_C: 0}
+find: [ddot(y_A), T]
+)";
+  const auto analysis = analyze_text(text, "atwood-damper.yaml", test::rules());
+  const Checker c(*analysis);
+  for (const char* a : {"(g*(m_B - m_A) - 4*c*dot(y_A))/(m_A + m_B)", "(g*(m_B - m_A) + 4*c*dot(y_B))/(m_A + m_B)",
+                        "(g*(m_B - m_A) - 2*c*dot(y_A) + 2*c*dot(y_B))/(m_A + m_B)"}) {
+    INFO(a);
+    CHECK(c.check("ddot(y_A)", a).verdict == Verdict::correct);
+  }
+  // The damper's force counted once (2 c v, not 4 c v): wrong whichever rate it is written in.
+  CHECK(c.check("ddot(y_A)", "(g*(m_B - m_A) - 2*c*dot(y_A))/(m_A + m_B)").verdict == Verdict::incorrect);
+  CHECK(c.check("ddot(y_A)", "(g*(m_B - m_A) + 2*c*dot(y_B))/(m_A + m_B)").verdict == Verdict::incorrect);
+}

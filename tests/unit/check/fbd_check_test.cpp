@@ -69,6 +69,19 @@ struct FbdCase {
 // block 1 hangs below it), the strand s_2 down at E (the right rim). A second arrow down at O
 // named like the weight, or both said to be weights, is the weight again, not the pin's force.
 // The Atwood machine's pulley block C is massless: R_C up and the two strands down, no weight.
+// The sense of a force the sketch knows (issue 41, item 6). The block on the elastic cord: at
+// the sketch y = -1 and t = 0, the support S is at a cos 0 = 0.02 m, so the cord is 1.02 m long,
+// 0.52 m past its rest length: taut, it pulls the block up with k 0.52 = 52 N. Drawn down, it
+// points the other way (the weight, said to be one, is down). The springs in series at the
+// sketch (x = 1.2, x_S = 0.6): sp2 from the wall at 0 to S is 0.6 m long, 0.1 m past l_2, and
+// pulls S toward the wall (-x, 30 N); sp1 from S to A is 0.6 m long, 0.1 m past l_1, and pulls
+// S toward A (+x, 10 N). Both drawn +x: one is sp1, the other is sp2 the wrong way.
+// Figure 12.5b (A at x = -2, B at -1, the pulley C at 0): the load F on B acts at B, the strand
+// C-B pulls B toward C (+x); the load drawn at A is at the wrong point.
+// The box K in the truck T (same_motion, no force asked for): the box accelerates with the
+// truck, a = F/(M + m) = 2 m/s^2, so the bed pushes it forward with m a = 600 N, and it pushes
+// the truck back with 600 N (F - 600 = M a = 3000 N): K's diagram is that one force (its sense
+// an unknown's, either), T's is F and the box's force, the system's is F alone.
 const std::vector<FbdCase> cases{
     {"sample-12.3-two-mass-pulley", "body: B\nforces:\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [-1]}\n",
      Verdict::correct, "", "every force on B is drawn, each along its line and at its point", 3, 3},
@@ -156,6 +169,26 @@ const std::vector<FbdCase> cases{
      Verdict::correct, "", "every force on P is drawn, each along its line and at its point", 4, 4},
     {"atwood-machine", "body: C\nforces:\n  - {name: R, direction: [1], kind: weight}\n  - {name: T, direction: [-1]}\n  - {name: T, direction: [-1]}\n",
      Verdict::incorrect, "missing_force", "the force of the fixed body C is missing", 1, 3},
+    {"cord-driven-support-band", "body: block\nforces:\n  - {name: C, at: block, direction: [-1]}\n  - {name: W, at: block, direction: [-1], kind: weight}\n",
+     Verdict::incorrect, "force_direction", "your C stands for the force of elastic cord c at block, which points the other way", 1.5, 2},
+    {"cord-driven-support-band", "body: block\nforces:\n  - {name: C, at: block, direction: [1]}\n  - {name: W, at: block, direction: [-1]}\n", Verdict::correct,
+     "", "every force on block is drawn, each along its line and at its point", 2, 2},
+    {"springs-in-series-massless-joint", "body: S\nforces:\n  - {name: F, at: S, direction: [1]}\n  - {name: F, at: S, direction: [1]}\n", Verdict::incorrect,
+     "force_direction", "your F stands for the force of spring sp2 at S, which points the other way", 1.5, 2},
+    {"springs-in-series-massless-joint", "body: S\nforces:\n  - {name: F_2, at: S, direction: [-1]}\n  - {name: F_1, at: S, direction: [1]}\n",
+     Verdict::correct, "", "every force on S is drawn, each along its line and at its point", 2, 2},
+    {"figure-12.5b-redirect", "body: B\nforces:\n  - {name: P, at: A, direction: [-1]}\n  - {name: T, at: B, direction: [1]}\n", Verdict::incorrect,
+     "wrong_point", "your P stands for the force on B, which does not act at A", 1.5, 2},
+    {"figure-12.5b-redirect", "body: B\nforces:\n  - {name: P, direction: [-1]}\n  - {name: T, at: B, direction: [1]}\n", Verdict::correct, "",
+     "every force on B is drawn, each along its line and at its point", 2, 2},
+    {"box-in-a-truck-system", "body: K\nforces:\n  - {name: f, at: K, direction: [1]}\n", Verdict::correct, "",
+     "every force on K is drawn, each along its line and at its point", 1, 1},
+    {"box-in-a-truck-system", "body: T\nforces:\n  - {name: F, at: T, direction: [1]}\n", Verdict::incorrect, "missing_force",
+     "the force of K on T (same motion carried) is missing", 1, 2},
+    {"box-in-a-truck-system", "body: T\nforces:\n  - {name: F, at: T, direction: [1]}\n  - {name: f, at: T, direction: [1]}\n", Verdict::correct, "",
+     "every force on T is drawn, each along its line and at its point", 2, 2},
+    {"box-in-a-truck-system", "bodies: [T, K]\nforces:\n  - {name: F, at: T, direction: [1]}\n", Verdict::correct, "",
+     "every force on the system of T and K is drawn, each along its line and at its point", 1, 1},
 };
 
 }  // namespace
@@ -198,6 +231,41 @@ TEST_CASE("FBD: a weight drawn twice is the weight twice, never another force", 
   CHECK(none.extras[0].message == "your R is not one of the forces on C");
 }
 
+TEST_CASE("FBD: a force of unknown direction drawn as its components, at one point", "[check][fbd]") {
+  // By hand (see the cases): the massive pulley's pin force drawn as its components at O, O_x
+  // along x and O_y up (either sense), is right. A second arrow down at P beside them is the
+  // weight again (drawn like W, the second of the two the one too many), not a third component.
+  const std::string drawn = "body: P\nforces:\n  - {name: T_1, at: L, direction: [0, -1]}\n  - {name: T_2, at: E, direction: [0, -1]}\n"
+                            "  - {name: W, at: P, direction: [0, -1]}\n  - {name: O_x, at: O, direction: [1, 0]}\n  - {name: O_y, at: O, direction: [0, 1]}\n";
+  const FbdGrade right = grade("rotation-atwood-massive-pulley", drawn);
+  CHECK(right.summary == "every force on P is drawn, each along its line and at its point");
+  CHECK(right.score == Approx(4));
+  CHECK(fbd_text(grade("rotation-atwood-massive-pulley", drawn + "  - {name: W2, at: P, direction: [0, -1]}\n")) ==
+        "free body diagram of P: incorrect: your W2 counts the weight of P once too often\n"
+        "  the force of the pin at O (O_x, O_y): drawn as your O_x, O_y\n"
+        "  a strand of string s_1 at L (T_1): drawn as your T_1\n"
+        "  a strand of string s_2 at E (T_2): drawn as your T_2\n"
+        "  the weight of P (M*g): drawn as your W\n"
+        "  extra: your W2 counts the weight of P once too often\n"
+        "score: 3 of 4\n");
+  // The two blocks with the pin H put at A's center (by hand, A's forces: the roller's N_A up,
+  // the weight down, the pull F along +x, all at A, and the pin's force of unknown direction at
+  // H, the same point). Five arrows: up, down, +x and down at A, and one 4 degrees below +x at
+  // H. Two of those at A along independent lines are the pin's components, the one at H is the
+  // pull (within 5 degrees of its line, at its point): every force drawn, nothing extra.
+  const auto pinned = test::run_text(test::example_with("two-blocks-joined-by-a-pin.yaml", "H: {on: A, offset: [\"-b\", 0]}", "H: {on: A, offset: [0, 0]}"));
+  std::vector<Diagnostic> problems;
+  const FbdGrade at_a = check_fbd(pinned->model,
+                                  read_fbd_file("body: A\nforces:\n  - {name: W, at: A, direction: [0, -1]}\n  - {name: N, at: A, direction: [0, 1]}\n"
+                                                "  - {name: P, at: A, direction: [1, 0]}\n  - {name: Q, at: H, direction: [1, -0.07]}\n"
+                                                "  - {name: R, at: A, direction: [0, -1]}\n",
+                                                "fbd.yaml", pinned->model),
+                                  FbdRubric{}, problems);
+  CHECK(at_a.summary == "every force on A is drawn, each along its line and at its point");
+  CHECK(at_a.score == Approx(4));
+  CHECK(at_a.extras.empty());
+}
+
 TEST_CASE("FBD: a force that is nothing in the sketch earns its share, drawn at its point or left out", "[check][fbd]") {
   // The block on the incline with the spring at its rest length (by hand: its length D - x =
   // 1.5 - 1 = 0.5 m is l_0): the spring's force is nothing there, the weight points down the
@@ -221,6 +289,41 @@ TEST_CASE("FBD: a force that is nothing in the sketch earns its share, drawn at 
   CHECK(anchor.summary == "your S stands for the force of spring sp at A, which does not act at Q");
   CHECK(anchor.score == Approx(1.5));
   CHECK(anchor.max_score == Approx(2));
+}
+
+TEST_CASE("FBD: a friction with mu = 0 and a couple of 0 are nothing in the sketch", "[check][fbd]") {
+  auto graded = [](const std::string& text, const std::string& yaml) {
+    const auto a = test::run_text(text);
+    std::vector<Diagnostic> problems;
+    return check_fbd(a->model, read_fbd_file(yaml, "fbd.yaml", a->model), FbdRubric{}, problems);
+  };
+  // The suitcase with mu = 0 (by hand): each foot pushes up (N_A, N_B), no friction; the weight
+  // at the center. The three drawn: every point, the frictions earned left out.
+  const FbdGrade smooth = graded(test::example_with("sample-12.7-suitcase.yaml", "mu: {value: 0.3, positive: true}", "mu: {value: 0, positive: false}"),
+                                 "body: suitcase\nforces:\n  - {name: W, at: suitcase, direction: [0, -1]}\n  - {name: N_A, at: A, direction: [0, 1]}\n"
+                                 "  - {name: N_B, at: B, direction: [0, 1]}\n");
+  CHECK(fbd_text(smooth) ==
+        "free body diagram of suitcase: correct: every force on suitcase is drawn, each along its line and at its point\n"
+        "  the force of the sliding contact at A (its N_A part): drawn as your N_A\n"
+        "  the force of the sliding contact at A (its mu*N_A part): nothing at this position (not needed)\n"
+        "  the force of the sliding contact at B (its N_B part): drawn as your N_B\n"
+        "  the force of the sliding contact at B (its mu*N_B part): nothing at this position (not needed)\n"
+        "  the weight of suitcase (g*m): drawn as your W\n"
+        "score: 5 of 5\n");
+  // The wheel with M_0 = 0 (by hand): no couple; the weight, the ground's N_C up and F_C along
+  // x (static friction, either sense). Left out or drawn either way, the couple earns its share.
+  const std::string wheel = test::example_with("rotation-wheel-driven-by-a-couple.yaml", "M_0: {value: 6, unit: N*m}", "M_0: {value: 0, unit: N*m, positive: false}");
+  const std::string forces = "body: wheel\nforces:\n  - {name: W, at: wheel, direction: [0, -1]}\n  - {name: N, at: C, direction: [0, 1]}\n  - {name: F, at: C, direction: [-1, 0]}\n";
+  CHECK(fbd_text(graded(wheel, forces)) ==
+        "free body diagram of wheel: correct: every force on wheel is drawn, each along its line and at its point\n"
+        "  the couple on wheel (-M_0): nothing at this position (not needed)\n"
+        "  the force of the rolling at C (its N_C part): drawn as your N\n"
+        "  the force of the rolling at C (its F_C part): drawn as your F\n"
+        "  the weight of wheel (g*m): drawn as your W\n"
+        "score: 4 of 4\n");
+  const FbdGrade turned = graded(wheel, forces + "couples:\n  - {name: M, sense: counterclockwise}\n");
+  CHECK(verdict_name(turned.verdict) == "correct");
+  CHECK(turned.score == Approx(4));
 }
 
 TEST_CASE("FBD: an arrow's kind, and a rubric's weights, are read with their problems located", "[check][fbd]") {

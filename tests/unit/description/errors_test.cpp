@@ -122,7 +122,7 @@ TEST_CASE("Description: duplicate keys and wrong shapes", "[errors]") {
         Messages{"t.yaml:8:9: 'points' is a scalar (expected a mapping of names)",
                  "t.yaml:9:1: unknown key 'x' in the description (expected one of: title, source, statement, axes, parameters, "
                  "gravity, bodies, points, connections, loads, strings, layout, given, find, derive, expected, "
-                 "expected_combinations, expected_conditions, expected_free, expected_power, notes, sweep, motion, expected_motion, interval, impact)",
+                 "expected_combinations, expected_conditions, expected_ranges, expected_free, expected_power, notes, sweep, motion, expected_motion, interval, impact, steady)",
                  "t.yaml:14:25: unknown point 'C' (known: A, B)", "t.yaml:17:24: unknown point 'C' (known: A, B)"});
 }
 

@@ -114,6 +114,50 @@ TEST_CASE("Given: a coordinate or velocity with its value at the instant", "[giv
   CHECK(text.find("    l_CP = sqrt(h^2 + x^2)  = 5 m    [definition]\n") != std::string::npos);
 }
 
+TEST_CASE("Given: a value may be an expression in the parameters, the quantity's definition", "[given]") {
+  // x = -4 h/3 = -4 m at h = 3 m: the same instant as x = -4 m, so by hand (as the example
+  // with -4) l_CP = sqrt(h^2 + x^2) = 5 m, and every answer has the same number.
+  std::string text = raised_pulley + "find: [T, N_C]\n";
+  const auto plain = test::run_text(text);
+  text.replace(text.find("x: {value: -4, unit: m}"), 23, "x: -4*h/3");
+  const auto a = test::run_text(text);
+  const SymbolTable& t = *a->model.symbols;
+  REQUIRE(t.find("x")->definition);
+  CHECK(to_text(*t.find("x")->definition) == "-4*h/3");
+  const Derivation d = explain(*a), e = explain(*plain);
+  REQUIRE(d.answers.size() == e.answers.size());
+  for (std::size_t i = 0; i < d.answers.size(); ++i) {
+    INFO(d.answers[i].name);
+    REQUIRE(d.answers[i].value);
+    CHECK(d.answers[i].value->approx == Approx(e.answers[i].value->approx));
+  }
+  const std::string report = write(d, Format::text, true);
+  CHECK(report.find("    x = -4*h/3  = -4 m    [given]\n") != std::string::npos);
+  CHECK(report.find("    l_CP = sqrt(h^2 + x^2)  = 5 m    [definition]\n") != std::string::npos);
+  // No condition is solved for h with x held: x moves with h.
+  for (const auto& c : d.conditions)
+    for (const auto& s : c.solved) CHECK(to_text(s.parameter) != "h");
+}
+
+TEST_CASE("Given: with a motion, a value in the parameters is the number it comes to", "[given][motion]") {
+  // The pendulum at 30 deg with dot(theta) = sqrt(g/l) = 3.13209 rad/s: by hand T = m (g
+  // cos(theta) + l dot(theta)^2) = 9.81 (0.866025 + 1) = 18.3056 N. The motion, which starts
+  // from its own 'initial', keeps its coordinates free of the instant's values.
+  const auto a = test::run_text(test::example_with("rotation-pendulum.yaml", "dot(theta): {value: 2, unit: rad/s}",
+                                                   "dot(theta): sqrt(g/l)"));
+  const SymbolInfo* rate = a->model.symbols->find("dot(theta)");
+  REQUIRE(rate->value);
+  CHECK_FALSE(rate->definition);
+  CHECK(to_text(*rate->value) == "sqrt(981)/10");
+  const Derivation d = explain(*a);
+  REQUIRE(d.answers[1].value);
+  CHECK(d.answers[1].value->approx == Approx(18.3056).epsilon(1e-5));
+  const std::string symbolic = test::example_with("rotation-pendulum.yaml", "  l: {value: 1, unit: m}", "  l: {value: 1, unit: m}\n  w: {unit: rad/s}");
+  CHECK(test::errors_of(std::string(symbolic).replace(symbolic.find("{value: 2, unit: rad/s}"), 23, "w")) ==
+        Messages{"t.yaml:31:52: 'given' value of 'dot(theta)': with a 'motion', the instant's given values are numbers, and "
+                 "w has no value (expected a value for it in 'parameters')"});
+}
+
 TEST_CASE("Given: a value must be a number in a unit of the quantity", "[given][errors]") {
   auto with = [](const std::string& from, const std::string& to) {
     std::string text = raised_pulley + "find: [T]\n";
@@ -122,8 +166,15 @@ TEST_CASE("Given: a value must be a number in a unit of the quantity", "[given][
   };
   CHECK(with("x: {value: -4, unit: m}", "x: {value: -4, unit: kg}") ==
         Messages{"t.yaml:21:24: 'x' is a length, but kg is a mass"});
-  CHECK(with("x: {value: -4, unit: m}", "x: {value: h, unit: m}") ==
-        Messages{"t.yaml:21:14: 'given' value of 'x': unknown name 'h'"});
+  CHECK(with("x: {value: -4, unit: m}", "x: {value: k, unit: m}") ==
+        Messages{"t.yaml:21:14: 'given' value of 'x': unknown name 'k' (known: m, M, h, g, t, x, y, N_C, T, l_CP)"});
+  CHECK(with("x: {value: -4, unit: m}", "x: {value: T, unit: m}") ==
+        Messages{"t.yaml:21:14: 'given' value of 'x': 'T' is not a parameter (expected a number or an expression in the "
+                 "parameters)"});
+  CHECK(with("x: {value: -4, unit: m}", "x: g") ==
+        Messages{"t.yaml:21:6: 'given' value of 'x' is an acceleration (expected a length)"});
+  CHECK(with("x: {value: -4, unit: m}", "x: sqrt(-h)") ==
+        Messages{"t.yaml:21:6: 'given' value of 'x' is not a real number (expected a real value at the parameters' values)"});
   CHECK(with("x: {value: -4, unit: m}", "x: {unit: m}") ==
         Messages{"t.yaml:21:13: 'given' value of 'x' has a 'unit' but no 'value'"});
   CHECK(with("x: {value: -4, unit: m}", "x: {value: -4, units: m}") ==
@@ -343,4 +394,41 @@ TEST_CASE("Values: a definition or a point undefined at the given values is a lo
   CHECK(test::errors_of(def) ==
         Messages{"t.yaml:8:16: 'define' of parameter 'd' is undefined at the given values (h^2/(h - c) divides by zero "
                  "there)"});
+}
+
+TEST_CASE("Layout and until: numbers or expressions in parameters with values", "[given][motion]") {
+  // A block on a spring from P at L: the layout puts it at L/4 = 0.5 m, the run lasts 2 T_0 = 3 s.
+  const std::string text = R"(title: layout in parameters
+parameters:
+  m: {value: 2, unit: kg}
+  k: {value: 50, unit: N/m}
+  L: {value: 2, unit: m}
+  T_0: {value: 1.5, unit: s}
+  a: {unit: m}
+bodies:
+  A: {mass: m, position: x}
+points:
+  P: L
+connections:
+  - {type: spring, path: [A, P], k: k, rest_length: L/2}
+layout: {x: L/4}
+given: [x]
+find: [ddot(x)]
+motion:
+  initial: {x: L/4, dot(x): 0}
+  until: 2*T_0
+)";
+  const auto a = test::run_text(text);
+  CHECK(to_text(a->model.layout.at(a->model.symbols->find("x")->sym)) == "1/2");
+  REQUIRE(a->model.motion->until);
+  CHECK(to_text(*a->model.motion->until) == "3");
+  auto with = [&](const std::string& from, const std::string& to) { return test::errors_of(std::string(text).replace(text.find(from), from.size(), to)); };
+  CHECK(with("until: 2*T_0", "until: 2*L") == Messages{"t.yaml:19:10: 'until' of 'motion' is a length (expected a time)"});
+  CHECK(with("layout: {x: L/4}", "layout: {x: a}") ==
+        Messages{"t.yaml:13:5: cannot tell the direction of strand A-P of spring (give 'layout' values for x)",
+                 "t.yaml:14:13: layout value of 'x': 'a' has no value (expected a number, or parameters with values)"});
+  CHECK(with("layout: {x: L/4}", "layout: {x: ddot(x)}") ==
+        Messages{"t.yaml:13:5: cannot tell the direction of strand A-P of spring (give 'layout' values for x)",
+                 "t.yaml:14:13: layout value of 'x': 'ddot(x)' is not a parameter (expected a number or an expression in the "
+                 "parameters)"});
 }

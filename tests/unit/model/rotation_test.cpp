@@ -170,14 +170,14 @@ TEST_CASE("Rotation: rolling needs a turning body and a contact point that keeps
   std::string turning = text;
   turning.replace(turning.find(", turns: false}"), 15, "}");
   CHECK(errors_of(turning) == std::vector<std::string>{
-                                  "t.yaml:35:5: the contact point 'C' of a 'rolling' connection is not a point of body 'cylinder' "
+                                  "t.yaml:37:5: the contact point 'C' of a 'rolling' connection is not a point of body 'cylinder' "
                                   "that keeps the ground's directions (expected a point written {on: cylinder, offset: ..., turns: "
                                   "false}, where the wheel touches the surface)"});
   std::string aside = text;
   const std::string below = "offset: [\"-r*sin(theta)\", \"-r*cos(theta)\"]";
   aside.replace(aside.find(below), below.size(), "offset: [\"-r*cos(theta)\", \"r*sin(theta)\"]");
   CHECK(errors_of(aside) == std::vector<std::string>{
-                                "t.yaml:35:5: the contact point 'C' of a 'rolling' connection is not straight across the surface "
+                                "t.yaml:37:5: the contact point 'C' of a 'rolling' connection is not straight across the surface "
                                 "from the center of body 'cylinder' (expected its offset -r*cos(theta), r*sin(theta) at right "
                                 "angles to the rolling direction)"});
 }

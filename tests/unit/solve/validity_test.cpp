@@ -7,6 +7,7 @@
 #include "expr/normal_form.hpp"
 #include "expr/print.hpp"
 #include "numeric/evaluate.hpp"
+#include "solve/bounds.hpp"
 #include "../../support/helpers.hpp"
 
 using namespace tackle;
@@ -142,4 +143,84 @@ TEST_CASE("Values: a pole hidden in radicals gives no number instead of an inter
   const GiNaC::exmap other{{mu, GiNaC::numeric(1)}};
   REQUIRE(evaluate_with(e, other, std::nullopt));
   CHECK(evaluate_with(e, other, std::nullopt)->approx == Approx(1 / (std::sqrt(80.0) - 2 * std::sqrt(5.0))));
+}
+
+TEST_CASE("Validity in numbers: the banked curve keeps its line from 5.3187 to 19.1206 m/s", "[validity][numbers]") {
+  // By hand (the example's notes): v^2 <= g r (sin(beta) + mu cos(beta))/(cos(beta) - mu
+  // sin(beta)) = 365.60 m^2/s^2 = (19.1206 m/s)^2 and v^2 >= g r (sin(beta) - mu
+  // cos(beta))/(cos(beta) + mu sin(beta)) = 28.289 m^2/s^2 = (5.3187 m/s)^2.
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/rotation-car-on-banked-curve.yaml", test::rules());
+  const Derivation d = explain(*a);
+  const std::string text = write(d, Format::text, true);
+  CHECK(text.find("    v^2 <= g*r*(mu*cos(beta) + sin(beta))/(cos(beta) - mu*sin(beta))  = (19.1206 m/s)^2    [solved for "
+                  "v^2, while cos(beta) - mu*sin(beta) > 0 (as at the given numbers)]\n") != std::string::npos);
+  CHECK(text.find("    v^2 >= g*r*(sin(beta) - mu*cos(beta))/(cos(beta) + mu*sin(beta))  = (5.3187 m/s)^2    [solved for v^2]\n") !=
+        std::string::npos);
+  CHECK(text.find("The bound is below 0, so every value of mu down to 0 satisfies it: nothing is asked of it from below.\n") !=
+        std::string::npos);
+  CHECK(text.find("  - 5.3187 m/s <= v <= 19.1206 m/s (given: 15 m/s)\n") != std::string::npos);
+  const std::string latex = write(d, Format::latex, true);
+  CHECK(latex.find("\\quad \\left(= \\left(19.1206\\,\\mathrm{m/s}\\right)^{2}\\right)") != std::string::npos);
+  CHECK(latex.find("\\item $5.3187\\,\\mathrm{m/s} \\le v \\le 19.1206\\,\\mathrm{m/s}$ (given: 15 m/s)") != std::string::npos);
+  // The square's bound in SI beside its root, in the JSON.
+  const std::string json = write(d, Format::json, false);
+  CHECK(json.find("\"decimal\": \"365.597\",\n            \"unit\": \"m^2*s^-2\"\n          },\n          \"root_value\": {") !=
+        std::string::npos);
+  CHECK(json.find("\"decimal\": \"19.1206\",\n            \"unit\": \"m/s\"") != std::string::npos);
+}
+
+TEST_CASE("Validity in numbers: on a steep, rough curve no speed is too low", "[validity][numbers]") {
+  // By hand, beta = 30 deg and mu = 0.6: the least speed's square, g r (sin(beta) - mu
+  // cos(beta))/(cos(beta) + mu sin(beta)) = 490.5 (0.5 - 0.519615)/(0.866025 + 0.3) = -8.25134
+  // m^2/s^2, is below 0: every speed down to 0 holds the car; the greatest is
+  // sqrt(490.5 (0.5 + 0.519615)/(0.866025 - 0.3)) = 29.7249 m/s.
+  std::string text = test::example_with("rotation-car-on-banked-curve.yaml", "beta: {value: 20,", "beta: {value: 30,");
+  text.replace(text.find("mu: {value: 0.3,"), 16, "mu: {value: 0.6,");
+  const auto a = test::run_text(text);
+  const Derivation d = explain(*a);
+  const SolvedFor* lowest = nullptr;
+  for (const auto& c : d.conditions)
+    for (const auto& s : c.solved)
+      if (to_text(s.parameter) == "v^2" && s.op == ">=") lowest = &s;
+  REQUIRE(lowest);  // said, not dropped
+  REQUIRE(lowest->number);
+  CHECK(lowest->number->every_value);
+  CHECK(lowest->number->value.approx == Approx(-8.25134).epsilon(1e-5));
+  CHECK_FALSE(lowest->number->root);
+  const auto v = std::find_if(d.ranges.begin(), d.ranges.end(), [](const ParameterRange& r) { return to_text(r.parameter) == "v"; });
+  REQUIRE(v != d.ranges.end());
+  CHECK_FALSE(v->low);
+  REQUIRE(v->high);
+  CHECK(v->high->approx == Approx(29.7249).epsilon(1e-5));
+  CHECK(write(d, Format::text, true).find("The bound is below 0, so every value of v down to 0 satisfies it") != std::string::npos);
+}
+
+TEST_CASE("Validity in numbers: a bound in the parameter's own unit, and an upper bound below 0", "[validity][numbers]") {
+  SymbolTable table;
+  const GiNaC::ex h = table.add("h", std::nullopt, SymbolRole::parameter, Dimension::length(), true, Location{}).sym;
+  const GiNaC::ex a = table.add("a", std::nullopt, SymbolRole::parameter, Dimension::length(), true, Location{}).sym;
+  table.set_value("a", GiNaC::numeric(3, 10));     // 0.3 m
+  table.set_unit("h", "cm", GiNaC::numeric(1, 100));
+  // h <= 2 a = 0.6 m, said in h's unit: 60 cm.
+  const auto upper = bound_number({h, "<=", 2 * a, 0, std::nullopt}, table, 6);
+  REQUIRE(upper);
+  CHECK(upper->value.decimal == "60");
+  CHECK(upper->value.unit == "cm");
+  CHECK_FALSE(upper->no_value);
+  // h <= -a: no positive h; h >= -a: every one.
+  CHECK(bound_number({h, "<=", -a, 0, std::nullopt}, table, 6)->no_value);
+  CHECK(bound_number({h, ">=", -a, 0, std::nullopt}, table, 6)->every_value);
+  // A bound that a symbol without a value leaves open has no number.
+  const GiNaC::ex b = table.add("b", std::nullopt, SymbolRole::parameter, Dimension::length(), true, Location{}).sym;
+  CHECK_FALSE(bound_number({h, "<=", a + b, 0, std::nullopt}, table, 6));
+}
+
+TEST_CASE("Validity: a condition in even powers holds (or fails) whatever the values", "[validity][sign]") {
+  const GiNaC::possymbol k("k");
+  const GiNaC::realsymbol x("x");
+  CHECK(holds_always(pow(k, 2) * pow(x, 2), ">=") == std::optional<bool>(true));  // k^2 x_S^2 >= 0
+  CHECK(holds_always(-pow(k, 2) - 1, ">=") == std::optional<bool>(false));
+  CHECK(holds_always(-pow(x, 2), ">") == std::optional<bool>(false));
+  CHECK_FALSE(holds_always(pow(k, 2) * pow(x, 2), ">"));  // 0 where x is
+  CHECK_FALSE(holds_always(x, ">="));
 }
