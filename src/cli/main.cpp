@@ -14,6 +14,7 @@
 #include <optional>
 
 #include <CLI/CLI.hpp>
+#include <cln/malloc.h>
 
 #include "core/diagnostics.hpp"
 #include "core/utf8.hpp"
@@ -692,7 +693,19 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
+namespace {
+
+// CLN's allocator reports a failed allocation as a runtime error ("Out of virtual memory."),
+// which would read as an internal error: here it is out of memory, std::bad_alloc.
+void* cln_allocate(std::size_t size) {
+  if (void* p = std::malloc(size)) return p;
+  throw std::bad_alloc();
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  cln::malloc_hook = cln_allocate;
   int code = 0;
   try {
     code = run(argc, argv);

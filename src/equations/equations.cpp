@@ -85,6 +85,37 @@ Equation amb_along(const Model& m, const std::vector<int>& bodies, bool system, 
   return eq;
 }
 
+namespace {
+
+// A particle: no angle, no moment of inertia, no shape or size to draw, and no load on it
+// away from its center of mass, nor a couple. It does not turn, and no balance of its moments
+// is written (it would read 0 = 0, or ask a single contact to balance a moment it cannot). A
+// force from another particle, at that particle's center (a block pressing on the block
+// under it, both points), gives it no size: two particles touch where they are. A body
+// without inertia whose own points take forces (a suitcase on its two feet), or that is
+// joined to another at a point of that one away from its center (a block pinned to the
+// block in front, a distance behind that one's center), keeps its balance of moments: it
+// says how the forces share.
+bool particle(const Model& m, int body) {
+  const auto bare = [&](const Body& b) {
+    // (A body with an angle turns, inertia or not: a bob on a light rod has its angle's balance.)
+    return b.angle.is_zero() && b.inertia.is_zero() && b.has_cm && b.drawn_shape.empty() && b.drawn_size.empty();
+  };
+  const Body& b = m.bodies[static_cast<std::size_t>(body)];
+  if (!bare(b)) return false;
+  return std::all_of(m.loads.begin(), m.loads.end(), [&](const Load& l) {
+    if (l.body != body) return true;
+    if (!is_zero_vec(l.couple)) return false;
+    if (!l.at || is_zero_vec(*l.at - b.cm)) return true;
+    const auto p = std::find_if(m.points.begin(), m.points.end(), [&](const Point& x) { return x.name == l.at_name; });
+    if (p == m.points.end() || p->body < 0 || p->body == body) return false;
+    const Body& other = m.bodies[static_cast<std::size_t>(p->body)];
+    return bare(other) && is_zero_vec(*l.at - other.cm);
+  });
+}
+
+}  // namespace
+
 EquationSystem build_equations(const Model& m) {
   EquationSystem s;
   exmap still_coordinates;
@@ -152,7 +183,7 @@ EquationSystem build_equations(const Model& m) {
       if (!b.has_mass) continue;
       add_lmb({static_cast<int>(i)}, false);
       // A massless body has no center of mass to speak of: take moments about the origin.
-      if (m.dims() > 1)
+      if (m.dims() > 1 && !particle(m, static_cast<int>(i)))
         add_amb({static_cast<int>(i)}, false, b.has_cm ? b.cm : zero_vec(), b.has_cm ? "its center of mass" : "the origin",
                 std::nullopt, "");
     }

@@ -120,6 +120,10 @@ std::optional<Figure> FigureMaker::sketch_plane() const {
     }
     for (const auto& l : m.loads)
       if (l.body == static_cast<int>(b) && l.at) {
+        // (A force at a point of another body, a contact between two bodies, does not make
+        // this one reach there: the cart under a block is not drawn up to the block's point.)
+        const auto named = std::find_if(m.points.begin(), m.points.end(), [&](const Point& x) { return x.name == l.at_name; });
+        if (named != m.points.end() && named->body >= 0 && named->body != static_cast<int>(b)) continue;
         auto p = point3(m, num, *l.at);
         if (!p) return std::nullopt;
         body_points[b].push_back(*p);

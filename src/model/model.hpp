@@ -195,12 +195,14 @@ struct Model {
   std::vector<std::string> assumptions;
   std::vector<std::string> direction_assumed_by;  // connections whose rule assumes the direction of motion
   // Of those, each one at a point of a turning body: its slip speed, the velocity of the
-  // body's material point at the contact along the assumed sliding direction (v + omega x r).
+  // body's material point at the contact along the assumed sliding direction (v + omega x r);
+  // each one between two bodies: the first's velocity there relative to the other's.
   // The friction opposes the slip while it is positive; at zero the contact stops slipping
   // (a ball thrown without spin starts to roll), and the model no longer holds.
   struct Slip {
     std::string source;
     GiNaC::ex speed;
+    std::vector<int> bodies;  // whose own rates may turn without an event (the slip is watched instead)
   };
   std::vector<Slip> slips;
   // Each strand of a path that changes length and does not turn, with its name ("strand A-P

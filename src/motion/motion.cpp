@@ -370,8 +370,16 @@ std::string against_at_start(const Model& m, const Solution& sol, const Dependen
     if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
     return ex_to<numeric>(v).to_double();
   };
+  // A slip between two bodies: its relative speed against the assumed direction.
+  for (const auto& s : m.slips) {
+    if (s.bodies.size() < 2) continue;
+    const auto v = number(s.speed);
+    if (v && *v < -1e-9) return "at t = 0 the contact of " + s.source + " slips against the direction it assumes (its friction would push the bodies along, not hold them back)";
+  }
   for (const auto& l : m.loads) {
     if (l.body < 0 || std::find(m.direction_assumed_by.begin(), m.direction_assumed_by.end(), l.source) == m.direction_assumed_by.end()) continue;
+    // (Between two bodies, the relative slip above decides, not each body's own motion.)
+    if (std::any_of(m.slips.begin(), m.slips.end(), [&](const Model::Slip& s) { return s.source == l.source && s.bodies.size() > 1; })) continue;
     const Body& b = m.bodies[static_cast<std::size_t>(l.body)];
     // The velocity of the point the friction acts at: the center's, unless the body turns.
     const bool turning = !b.angle.is_zero() && l.at;

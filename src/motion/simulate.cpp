@@ -1,6 +1,7 @@
 #include "motion/simulate.hpp"
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -90,6 +91,7 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
   struct Watched {
     Compiled g;
     std::string op, what;
+    bool slip = false;  // a slip speed (positive while the contact slips the way it assumes)
   };
   std::vector<Watched> conditions;
   for (const auto& [c, e] : mo.conditions_in_state)
@@ -100,7 +102,7 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
       conditions.push_back({*g, ">", what + ": its length reaches zero (a body reaches the point at its end)"});
   for (const auto& [what, e] : mo.slips_in_state)
     if (auto g = compile(e, what))
-      conditions.push_back({*g, ">", what + ": the contact stops slipping (its friction would change; the body may roll from here)"});
+      conditions.push_back({*g, ">", what + ": the contact stops slipping (its friction would change; the body may roll from here)", true});
   // What to tabulate: as asked, else the description's plot, else the coordinates.
   std::vector<std::string> plot = spec.plot;
   if (plot.empty())
@@ -185,9 +187,23 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
   };
   // A model wrong from the start: a condition that fails at t = 0, or a start against the
   // direction a rule assumes.
+  // A slip from rest (two blocks that start at one speed) is no end: it starts, the way it
+  // assumes, where a short step from t = 0 makes it positive.
+  auto starts_slipping = [&](std::size_t k) {
+    load(0, x);
+    double scale = 1;
+    for (std::size_t i = 0; i < n; ++i) scale = std::max(scale, std::fabs(x[n + i]));
+    if (!conditions[k].slip || std::fabs(conditions[k].g(in.data())) > 1e-12 * scale) return false;
+    State dx(2 * n), y(2 * n);
+    rhs(x, dx, 0);
+    const double h = 1e-6 * until;
+    for (std::size_t i = 0; i < 2 * n; ++i) y[i] = x[i] + h * dx[i];
+    load(h, y);
+    return conditions[k].g(in.data()) > 0;
+  };
   std::optional<std::string> wrong_at_start;
   for (std::size_t k = 0; k < conditions.size() && !wrong_at_start; ++k)
-    if (!truth(k, 0, x)) wrong_at_start = conditions[k].what;
+    if (!truth(k, 0, x) && !starts_slipping(k)) wrong_at_start = conditions[k].what;
   if (!wrong_at_start && !mo.direction_against.empty()) wrong_at_start = mo.direction_against;
   if (wrong_at_start) {
     out.events.push_back({0, *wrong_at_start, true});
@@ -198,11 +214,27 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
   }
   const bool direction_assumed = !m.direction_assumed_by.empty();
   // The coordinates of turning bodies when a slip speed is watched: their rates turning is no event.
+  // (Or of a body whose every assumed sliding is a slip on another body, watched: its own
+  // rate turning is no event either.)
   std::vector<bool> slip_watched(n, false);
+  auto watched = [&](int body) {
+    bool any = false;
+    for (const auto& l : m.loads) {
+      if (l.body != body || std::find(m.direction_assumed_by.begin(), m.direction_assumed_by.end(), l.source) == m.direction_assumed_by.end())
+        continue;
+      const bool slip = std::any_of(m.slips.begin(), m.slips.end(), [&](const Model::Slip& s) {
+        return s.source == l.source && std::find(s.bodies.begin(), s.bodies.end(), body) != s.bodies.end();
+      });
+      if (!slip) return false;
+      any = true;
+    }
+    return any;
+  };
   if (!m.slips.empty())
     for (std::size_t i = 0; i < n; ++i)
       for (const auto& c : m.coordinates)
-        if (c.q.is_equal(eom.q[i]) && c.body >= 0 && !m.bodies[static_cast<std::size_t>(c.body)].angle.is_zero()) slip_watched[i] = true;
+        if (c.q.is_equal(eom.q[i]) && c.body >= 0 && (!m.bodies[static_cast<std::size_t>(c.body)].angle.is_zero() || watched(c.body)))
+          slip_watched[i] = true;
 
   namespace odeint = boost::numeric::odeint;
   auto stepper = odeint::make_dense_output(spec.tolerance, spec.tolerance, odeint::runge_kutta_dopri5<State>());

@@ -32,6 +32,42 @@ void sort_by_place(std::vector<Diagnostic>& all) {
   });
 }
 
+// Balances that contradict each other are a description that cannot be right (exit 1), never
+// a derivation: the conflicting equations named, at the first body they balance, with what
+// could supply what is missing.
+InputError contradiction(const Model& m, const EquationSystem& s, const Solution& sol) {
+  Location at{m.file, 0, 0};
+  std::string expected;
+  for (const auto& label : sol.conflicts) {
+    const auto e = std::find_if(s.equations.begin(), s.equations.end(), [&](const Equation& x) { return x.label == label; });
+    if (e == s.equations.end() || e->bodies.empty() || e->system) continue;
+    const Body& b = m.bodies[static_cast<std::size_t>(e->bodies.front())];
+    if (at.line == 0) at = b.at;
+    if (!expected.empty()) continue;
+    if (e->kind == Equation::Kind::amb && b.angle.is_zero())
+      expected = "body '" + b.name + "' does not turn (it has no angle), so the moments on it must cancel: a second contact, "
+                 "its forces through its center of mass, or an angle and a shape or inertia to turn with";
+    else if (e->kind == Equation::Kind::amb && b.inertia.is_zero())
+      expected = "body '" + b.name + "' has no shape or inertia to turn with, so the moments on it must cancel: a second contact, "
+                 "its forces through its center of mass, or a shape or inertia";
+    else if (e->kind == Equation::Kind::lmb && b.mass.is_zero())
+      expected = "body '" + b.name + "' has no mass, so the forces on it must cancel: a support, a string or a contact that "
+                 "balances them, or a mass";
+  }
+  if (expected.empty()) expected = "a support or a contact that balances the forces, or a coordinate that lets the body move that way";
+  // (One equation alone: it reads 0 = a term that is not zero, a force or a moment.)
+  std::string alone = "a term that is not zero";
+  if (sol.conflicts.size() == 1)
+    if (const auto e = std::find_if(s.equations.begin(), s.equations.end(), [&](const Equation& x) { return x.label == sol.conflicts.front(); });
+        e != s.equations.end())
+      alone = e->kind == Equation::Kind::lmb ? "a force that is not zero" : e->kind == Equation::Kind::amb ? "a moment that is not zero" : alone;
+  const std::string which = sol.conflicts.size() == 1
+                                ? sol.conflicts.front() + " reads 0 = " + alone
+                                : join(std::vector<std::string>(sol.conflicts.begin(), sol.conflicts.end() - 1)) + " and " +
+                                      sol.conflicts.back() + " contradict each other";
+  return InputError({{at, "the balances cannot all hold: " + which + " (expected " + expected + ")"}});
+}
+
 // One description (or one phase): model, balances, solve, power, the interval's end or the
 // impact, motion. `prior` are the reading problems, reported with the model's.
 std::unique_ptr<Analysis> analyze_one(const Description& d, const RuleSet& rules, std::vector<Diagnostic> prior) {
@@ -53,12 +89,45 @@ std::unique_ptr<Analysis> analyze_one(const Description& d, const RuleSet& rules
   a->system = build_equations(a->model);
   if (auto problems = check_dimensions(a->model, a->system); !problems.empty()) throw InputError(problems);
   a->solution = solve(a->model, a->system);
+  if (a->solution.status == Solution::Status::inconsistent) throw contradiction(a->model, a->system, a->solution);
   a->power = check_power(a->model, a->system, a->solution);
   if (a->model.interval) {
     a->interval_end = interval_end(a->model, a->solution);
     if (!a->interval_end->problem.empty()) throw InputError({{a->model.interval->at, "'interval': " + a->interval_end->problem}});
   }
   follow_motion(*a);
+  return a;
+}
+
+// A description with connections decided at the numbers: each in its first regime, then the
+// next where that one's validity fails (pipeline/regimes). Others: as they are.
+std::unique_ptr<Analysis> analyze_decided(const Description& d, const RuleSet& rules, std::vector<Diagnostic> prior) {
+  const std::vector<std::size_t> which = decided_connections(d, rules);
+  if (which.empty()) return analyze_one(d, rules, std::move(prior));
+  std::vector<std::size_t> regime(which.size(), 0);
+  std::vector<bool> turn(which.size(), false);
+  // (Decided without the motion: its coordinates are those of the regime chosen, which may
+  // have more degrees of freedom than the first.)
+  Description first = with_regimes(d, rules, which, regime, turn);
+  const bool motion = first.motion.has_value();
+  first.motion.reset();
+  std::unique_ptr<Analysis> a = analyze_one(first, rules, prior);
+  std::vector<RegimeChoice> choices;
+  bool changed = false;
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    bool t = false;
+    choices.push_back(decide_regime(*a, d, rules, which[k], t));
+    if (choices.back().chosen != choices.back().first) {
+      regime[k] = 1;
+      turn[k] = t;
+      changed = true;
+    }
+  }
+  if (changed || motion) {
+    a = analyze_one(with_regimes(d, rules, which, regime, turn), rules, std::move(prior));
+    for (std::size_t k = 0; k < which.size(); ++k) choices[k].connection = a->model.connections.at(which[k]).label;
+  }
+  a->regimes = std::move(choices);
   return a;
 }
 
@@ -74,7 +143,7 @@ std::unique_ptr<Analysis> analyze_phases(const Description& d, const RuleSet& ru
     pd.parameters.insert(pd.parameters.begin() + static_cast<std::ptrdiff_t>(d.parameters.size()), carried.begin(), carried.end());
     std::unique_ptr<Analysis> a;
     try {
-      a = analyze_one(pd, rules, {});
+      a = analyze_decided(pd, rules, {});
     } catch (const InputError& e) {
       // Later phases need what this one carries: the chain stops here.
       prior.insert(prior.end(), e.diagnostics().begin(), e.diagnostics().end());
@@ -128,7 +197,7 @@ std::unique_ptr<Analysis> analyze_phases(const Description& d, const RuleSet& ru
 
 std::unique_ptr<const Analysis> analyze(const Description& d, const RuleSet& rules) {
   if (!d.phases.empty()) return analyze_phases(d, rules, {});
-  return analyze_one(d, rules, {});
+  return analyze_decided(d, rules, {});
 }
 
 std::unique_ptr<const Analysis> analyze_text(const std::string& text, const std::string& file, const RuleSet& rules) {
@@ -142,7 +211,7 @@ std::unique_ptr<const Analysis> analyze_text(const std::string& text, const std:
     }
     return analyze_phases(read.description, rules, {});
   }
-  return analyze_one(read.description, rules, read.problems);
+  return analyze_decided(read.description, rules, read.problems);
 }
 
 const Analysis* pick_phase(const Analysis& a, const std::string& name, std::string& message) {
@@ -196,6 +265,7 @@ Derivation explain(const Analysis& a, const ReportOptions& options) {
   // The answers with the report's digits: a stage of their own (solve/answers), narrated here.
   const Answers answers = answer(a.model, a.system, a.solution, options.digits);
   Derivation d = explain(a.model, a.system, a.solution, answers, a.power, options, a.interval_end ? &*a.interval_end : nullptr);
+  if (!a.regimes.empty()) narrate_regimes(d, a.regimes, *a.model.symbols);
   if (a.impact) {
     narrate_impact(d, a.model, *a.impact, options);
     d.impact_equations = a.impact->equations;

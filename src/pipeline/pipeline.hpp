@@ -11,6 +11,7 @@
 #include "energy/power.hpp"
 #include "motion/motion.hpp"
 #include "motion/phases.hpp"
+#include "pipeline/regimes.hpp"
 #include "report/derivation.hpp"
 #include "ruleset/ruleset.hpp"
 #include "solve/solve.hpp"
@@ -36,6 +37,7 @@ struct Analysis {
   std::optional<Motion> motion;  // motion in time, when the description asks for it (src/motion/)
   std::optional<IntervalEnd> interval_end;  // the rates at the end of the interval (src/motion/phases)
   std::optional<ImpactResult> impact;       // an impact, instead of the balances (src/motion/phases)
+  std::vector<RegimeChoice> regimes;        // connections decided at the numbers (pipeline/regimes)
   // A phased description: the phases in order (the fields above are then empty but for the
   // model's title and file); every command but derive and solve works on one of them.
   std::vector<Phase> phases;

@@ -76,6 +76,7 @@ struct Derivation {
   // the unknowns that are not determined alone.
   std::vector<std::pair<std::string, std::optional<NumericValue>>> minimum_norm;
   PowerCheck power;  // the power balance, checked against the solution
+  std::vector<RegimeChoice> regimes;  // connections decided at the numbers (stick or slip)
   std::vector<ParameterReport> parameters;
   // Motion in time, for the JSON (narrated in the steps): a copy without the simulation's
   // state functions, so that nothing in it points into the analysis.
@@ -102,6 +103,9 @@ struct ReportOptions {
 
 /// The motion in time appended to a derivation (report/motion_narration.cpp).
 void narrate_motion(Derivation& d, const Model& m, const Motion& motion, const ReportOptions& options = {});
+
+/// What was decided at the numbers for each connection with regimes (report/phase_narration.cpp).
+void narrate_regimes(Derivation& d, const std::vector<RegimeChoice>& choices, const SymbolTable& table);
 
 /// The end of an interval whose end rates were found, and an impact (report/phase_narration.cpp).
 void narrate_interval_end(Derivation& d, const Model& m, const IntervalEnd& end, const ReportOptions& options = {});

@@ -115,4 +115,51 @@ void narrate_impact(Derivation& d, const Model& m, const ImpactResult& r, const 
   n.text("The power balance is not checked: " + d.power.reason + ".");
 }
 
+void narrate_regimes(Derivation& d, const std::vector<RegimeChoice>& choices, const SymbolTable& table) {
+  d.regimes = choices;
+  Narrator n{d, table};
+  for (const auto& c : choices) {
+    n.section("Sticking or slipping: " + c.connection);
+    const bool slips = c.chosen != c.first;
+    // Sticking holds while these do; slipping: the ones that fail say why.
+    auto shown = [&](const RegimeChoice::Bound& b, bool coefficient) {
+      return b.coefficient == coefficient && (slips ? b.failed : b.tightest);
+    };
+    auto bounds = [&](bool coefficient, const std::string& lead) {
+      bool any = false;
+      for (const auto& b : c.holds_while) {
+        if (!shown(b, coefficient)) continue;
+        if (!any) n.text(lead);
+        any = true;
+        const std::string name = to_text(b.parameter);
+        const bool lower = b.op[0] == '>';
+        const std::string what = coefficient ? (lower ? "the least " : "the largest ") + name + (slips ? " that would hold them together" : " that holds them together")
+                                              : (lower ? "the least " : "the largest ") + name + " for which they move together";
+        Step* st = n.equation(what, b.parameter, b.bound);
+        st->relation = b.op;
+        st->note = b.value;
+      }
+    };
+    bounds(false, slips ? "Solved sticking (" + c.first + "), the bodies would move together only while:"
+                        : "Solved sticking (" + c.first + "), the bodies move together while:");
+    if (c.friction) {
+      const auto& f = *c.friction;
+      n.text(slips ? "The friction on " + f.body + " that moving together needs, and the most the contact can give:"
+                   : "The friction on " + f.body + " while they do, and the most the contact can give:");
+      n.equation("the friction on " + f.body, f.unknown, f.value)->note = f.value_number;
+      if (!f.limit.is_zero()) n.equation("the most friction at the contact", f.limit, f.limit_value)->note = f.limit_number;
+    }
+    bounds(true, slips ? "The friction coefficient that would hold them together:" : "The friction coefficient that holds them together:");
+    if (c.undecided) {
+      n.text("At the given numbers these have no number (they depend on the time or on a coordinate): the contact is derived "
+             "sticking, and the model holds while they do (a simulation stops where they fail).");
+    } else if (!slips) {
+      n.text("At the given numbers they do: the bodies move together, as derived here.");
+    } else {
+      n.text("At the given numbers they do not (" + join(c.failed, "; ") + " fails): the bodies slip on each other, and the contact is " +
+             "derived here sliding (" + c.chosen + "), with kinetic friction against the slip.");
+    }
+  }
+}
+
 }  // namespace tackle

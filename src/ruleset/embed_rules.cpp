@@ -64,6 +64,12 @@ std::string maker(const Rule& r) {
   os << "  r.summary = " << literal(r.summary) << ";\n";
   for (int i = 0; i < 3; ++i) os << "  r.summary_in[" << i << "] = " << literal(r.summary_in[static_cast<std::size_t>(i)]) << ";\n";
   os << "  r.assumes_direction = " << (r.assumes_direction ? "true" : "false") << ";\n";
+  os << "  r.two_bodies = " << literal(r.two_bodies) << ";\n";
+  for (const auto& g : r.regimes) {
+    os << "  r.regimes.push_back(RegimeSpec{" << literal(g.type) << ", {";
+    for (std::size_t i = 0; i < g.args.size(); ++i) os << (i ? ", " : "") << "{" << literal(g.args[i].first) << ", " << literal(g.args[i].second) << "}";
+    os << "}, " << literal(g.turned) << ", " << literal(g.against) << ", " << literal(g.of) << ", " << location(g.at) << "});\n";
+  }
   os << "  r.sketch = " << literal(r.sketch) << ";\n";
   for (const auto& a : r.args) {
     os << "  r.args.push_back(ArgSpec{" << literal(a.key) << ", " << enumerator("ArgKind", a.kind) << ", "
@@ -81,7 +87,7 @@ std::string maker(const Rule& r) {
        << location(l.at) << "});\n";
   for (const auto& c : r.constraints)
     os << "  r.constraints.push_back(ConstraintSpec{" << enumerator("ConstraintSpec::Kind", c.kind) << ", " << literal(c.arg)
-       << ", " << literal(c.with) << ", " << literal(c.point) << ", " << location(c.at) << "});\n";
+       << ", " << literal(c.with) << ", " << literal(c.point) << ", " << location(c.at) << ", " << literal(c.along) << "});\n";
   for (const auto& v : r.validity)
     os << "  r.validity.push_back(ValiditySpec{" << literal(v.holds) << ", " << literal(v.meaning) << ", "
        << literal(v.otherwise) << ", " << literal(v.when) << ", " << location(v.at) << "});\n";

@@ -53,6 +53,7 @@ Rule made_from(const BuiltinRule& builtin, const std::string& file) {
   for (auto& c : r.constraints) c.at.file = file;
   for (auto& v : r.validity) v.at.file = file;
   for (auto& c : r.checks) c.at.file = file;
+  for (auto& g : r.regimes) g.at.file = file;
   return r;
 }
 
@@ -235,11 +236,40 @@ struct RuleReader {
                           " but the rule declares it as " + names[static_cast<int>(a->kind)]);
   }
 
+  // A regime: {type: RULE, ARG: THIS_RULES_ARG, ..., ARG: {against: UNKNOWN, of: THIS_RULES_VECTOR}}.
+  void read_regime(Rule& r, const yaml::Node& g) {
+    RegimeSpec s;
+    s.at = where(g, file);
+    if (!g.is_map()) {
+      diags.error(s.at, "a regime is not a map (expected {type: RULE, ...})");
+      return;
+    }
+    for (const auto& kv : g) {
+      const std::string key = kv.first.text();
+      if (key == "type") {
+        s.type = kv.second.text();
+      } else if (kv.second.is_map()) {
+        if (!check_map(kv.second, {"against", "of"}, "regime argument '" + key + "'", file, diags)) continue;
+        s.turned = key;
+        s.against = kv.second["against"] ? kv.second["against"].text() : "";
+        s.of = kv.second["of"] ? kv.second["of"].text() : "";
+        if (s.against.empty() || s.of.empty())
+          diags.error(s.at, "regime argument '" + key + "' needs 'against' (an unknown of the regime before) and 'of' (a vector argument)");
+        else check_arg_ref(r, s.of, ArgKind::vector, s.at, "a regime");
+      } else {
+        s.args.emplace_back(key, kv.second.text());
+        check_arg_ref(r, kv.second.text(), r.arg(kv.second.text()) ? r.arg(kv.second.text())->kind : ArgKind::expr, s.at, "a regime");
+      }
+    }
+    if (s.type.empty()) diags.error(s.at, "a regime needs 'type' (the rule the connection becomes)");
+    r.regimes.push_back(std::move(s));
+  }
+
   Rule read(const yaml::Node& root) {
     Rule r;
     r.at = where(root, file);
     if (!check_map(root, {"type", "summary", "needs", "optional", "one_of", "unknowns", "loads", "constraints",
-                          "validity", "checks", "assumptions", "dimensions", "assumes_direction", "sketch"},
+                          "validity", "checks", "assumptions", "dimensions", "assumes_direction", "sketch", "two_bodies", "regimes"},
                    "the rule", file, diags))
       return r;
     r.type = need_scalar(root, "type", "the rule");
@@ -255,6 +285,8 @@ struct RuleReader {
         r.summary = scalar(s, "'summary'", file, diags).value_or(Text{}).text;
       }
     }
+    if (auto s = root["two_bodies"])
+      if (const auto t = scalar(s, "'two_bodies'", file, diags)) r.two_bodies = t->text;
     if (auto s = root["assumes_direction"]) {
       const auto t = scalar(s, "'assumes_direction'", file, diags);
       if (t && (t->text == "true" || t->text == "false")) r.assumes_direction = t->text == "true";
@@ -382,9 +414,9 @@ struct RuleReader {
     }
     if (auto n = root["constraints"]; n && is_list(n, "'constraints'", file, diags)) {
       for (const auto& c : n) {
-        if (!check_map(c, {"length", "length_sum", "still", "together", "with", "rolls", "at", "along"}, "a constraint of the rule", file, diags))
+        if (!check_map(c, {"length", "length_sum", "still", "together", "with", "rolls", "at", "along", "keeps"}, "a constraint of the rule", file, diags))
           continue;
-        auto kind = which(c, {"length", "length_sum", "still", "together", "rolls"}, "a constraint");
+        auto kind = which(c, {"length", "length_sum", "still", "together", "rolls", "keeps"}, "a constraint");
         if (!kind) continue;
         ConstraintSpec s;
         s.at = where(c, file);
@@ -401,6 +433,15 @@ struct RuleReader {
           if (s.with.empty()) diags.error(s.at, "a 'together' constraint needs 'with' (the second body)");
           check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
           if (!s.with.empty()) check_arg_ref(r, s.with, ArgKind::body, s.at, "a constraint");
+        } else if (*kind == "keeps") {
+          s.kind = ConstraintSpec::Kind::keeps;
+          s.with = c["with"] ? c["with"].text() : "";
+          s.along = c["along"] ? c["along"].text() : "";
+          if (s.with.empty() || s.along.empty())
+            diags.error(s.at, "a 'keeps' constraint needs 'with' (the second body) and 'along' (the direction)");
+          check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
+          if (!s.with.empty()) check_arg_ref(r, s.with, ArgKind::body, s.at, "a constraint");
+          if (!s.along.empty()) check_arg_ref(r, s.along, ArgKind::vector, s.at, "a constraint");
         } else if (*kind == "rolls") {
           s.kind = ConstraintSpec::Kind::rolls;
           s.point = c["at"] ? c["at"].text() : "";
@@ -416,6 +457,9 @@ struct RuleReader {
         r.constraints.push_back(std::move(s));
       }
     }
+    // (After the arguments: a regime names them.)
+    if (auto n = root["regimes"]; n && is_list(n, "'regimes'", file, diags))
+      for (const auto& g : n) read_regime(r, g);
     if (auto n = root["validity"]; n && is_list(n, "'validity'", file, diags)) {
       for (const auto& v : n) {
         if (!check_map(v, {"holds", "meaning", "otherwise", "when"}, "a validity condition", file, diags)) continue;

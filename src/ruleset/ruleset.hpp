@@ -56,14 +56,30 @@ struct LoadSpec {
 /// Constraints: `length` holds a path's length constant, `length_sum` a hand-written length
 /// sum, `still` a body's acceleration at zero, `together` (with `with`) the position of one
 /// body relative to another (they share a translation), `rolls` (with `at`, `along`) a body
-/// rolling without slipping at a contact point along a straight surface.
+/// rolling without slipping at a contact point along a straight surface, `keeps` (with
+/// `with`, `along`) the position of one body relative to another along a direction (two
+/// bodies that stay in contact, or do not slip on each other).
 struct ConstraintSpec {
-  enum class Kind { length, length_sum, still, together, rolls } kind;
+  enum class Kind { length, length_sum, still, together, rolls, keeps } kind;
   std::string arg;
-  std::string with;  // together: the second body argument; rolls: the rolling direction (a vector)
+  std::string with;  // together, keeps: the second body argument; rolls: the rolling direction (a vector)
   std::string point;  // rolls: the contact point
   Location at;
+  std::string along;  // keeps: the direction (a vector argument)
   friend bool operator==(const ConstraintSpec&, const ConstraintSpec&) = default;
+};
+
+/// One regime of a connection that is decided at the given numbers (`regimes:`, tried in
+/// order: the first whose validity holds there is the model): the rule the connection becomes
+/// and its arguments, each the one of the same name, or as `args` map it (`mu: mu_s`), or a
+/// vector argument turned against the sign of an unknown of the regime before (`sliding:
+/// {against: F, of: tangent}`: the way friction F could not hold).
+struct RegimeSpec {
+  std::string type;
+  std::vector<std::pair<std::string, std::string>> args;  // the regime's argument -> this rule's
+  std::string turned, against, of;                        // turned: the regime's vector argument
+  Location at;
+  friend bool operator==(const RegimeSpec&, const RegimeSpec&) = default;
 };
 
 struct ValiditySpec {
@@ -108,6 +124,10 @@ struct Rule {
   // The rule's loads assume the direction the body moves in (sliding friction opposite it):
   // past a turn the model no longer holds (a simulation ends there).
   bool assumes_direction = false;
+  // `two_bodies: TYPE`: the rule for the same connection between two moving bodies (a
+  // one-body contact placed at a point of another moving body is refused, naming it).
+  std::string two_bodies;
+  std::vector<RegimeSpec> regimes;  // a connection decided at the numbers (it has no loads of its own)
   // How a mechanism's sketch draws it (`sketch:`): "line" (a string along its path, or a
   // cable between its points), "spring", "damper", "pulley" (a sheave at its point),
   // "support" (its body held by the ground), "arrow" (a force on its body), "contact" (the

@@ -77,6 +77,42 @@ struct CheckedCondition {
 [[nodiscard]] std::vector<SolvedFor> solve_condition(const GiNaC::ex& expr, const std::string& op,
                                                      const std::vector<GiNaC::ex>& parameters);
 
+/// A connection decided at the given numbers (pipeline/regimes): the rule tried first and the
+/// one chosen, with what failed and the first one's conditions solved (for the derivation).
+struct RegimeChoice {
+  std::string connection;  // the connection's label in the chosen model ("sliding between at A")
+  std::string first, chosen;  // the rules tried first and chosen (sticking_between, sliding_between)
+  // The first regime's conditions that fail at the given numbers (their meanings) ...
+  std::vector<std::string> failed;
+  // (... or none, and some have no number there: they depend on the time or on a coordinate
+  // without a value. The first regime is taken; it holds while they do.)
+  bool undecided = false;
+  // ... and each of its conditions solved for a parameter, with the bound's number (when the
+  // parameters have values): `F <= g*mu_s*(m_A + m_B) = 14.715 N`.
+  struct Bound {
+    std::string meaning;
+    GiNaC::ex parameter, bound;
+    std::string op;
+    std::string value;  // the bound's number with its unit, or empty
+    bool failed = false;  // its condition fails at the given numbers
+    // The tightest of the bounds on its parameter the same way at the given numbers (the
+    // largest lower bound, the smallest upper bound; every bound without a number).
+    bool tightest = true;
+    bool coefficient = false;  // on a dimensionless parameter (a friction coefficient)
+    std::optional<double> number;  // the bound at the given numbers (SI)
+  };
+  std::vector<Bound> holds_while;
+  // The first regime's friction (the unknown the next regime's vector is turned against) on
+  // the connection's first body: its closed form, and the most the contact can give (the other
+  // side of its condition), each with its number.
+  struct Friction {
+    std::string body;
+    GiNaC::ex unknown, value, limit, limit_value;
+    std::string value_number, limit_number;
+  };
+  std::optional<Friction> friction;
+};
+
 struct Solution {
   enum class Status { determined, underdetermined, inconsistent } status = Status::determined;
   std::size_t rank = 0;

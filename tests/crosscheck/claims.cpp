@@ -122,15 +122,25 @@ void compare_conditions(const Claims& c, const Model& m, const ClaimState& s, Ou
       if (!v) known = false;
       else all = all && relation(*v, cond.op);
       said += (said.empty() ? "" : ", ") + cond.lhs + " " + cond.op + " " + cond.rhs;
-      // what tackle states of the given numbers, and of every value of the parameters
-      if (s.base && cond.holds && *cond.holds != (mg.value > 0))
+      // what tackle states of the given numbers, and of every value of the parameters (of a
+      // pair, a grip's F <= mu N and -F <= mu N, one fails where the requirement is not met:
+      // the other may hold, even always; the pair as a whole is compared below)
+      const bool alone = groups[r].size() == 1 || mg.value > 0;
+      if (alone && s.base && cond.holds && *cond.holds != (mg.value > 0))
         disagree(out, s, fmt::format("condition {} at the given numbers: tackle says it {}, the model: {} {}", cond.lhs + " " + cond.op + " " + cond.rhs,
                                      *cond.holds ? "holds" : "fails", mg.requirement->what, mg.value > 0 ? "(met)" : "(not met)"),
                  *cond.holds ? 1 : 0, mg.value);
-      if (cond.always && *cond.always != (mg.value > 0))
+      if (alone && cond.always && *cond.always != (mg.value > 0))
         disagree(out, s, fmt::format("condition {}: tackle says it {} holds, the model: {} {}", cond.lhs + " " + cond.op + " " + cond.rhs,
                                      *cond.always ? "always" : "never", mg.requirement->what, mg.value > 0 ? "(met)" : "(not met)"),
                  *cond.always ? 1 : 0, mg.value);
+    }
+    if (groups[r].size() > 1 && mg.value < 0) {
+      bool every = true;
+      for (std::size_t i : groups[r]) every = every && c.conditions[i].always && *c.conditions[i].always;
+      if (every)
+        disagree(out, s, fmt::format("conditions {}: tackle says they always hold, the model: {} (not met)", said, mg.requirement->what), 1,
+                 mg.value);
     }
     if (!known) {
       notes.insert("the conditions on " + mg.requirement->what + " (tackle's is no number at some state)");

@@ -115,20 +115,30 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
   std::unique_ptr<const tackle::Analysis> a;
   try {
     a = tackle::analyze_text(text, file, rules);
+  } catch (const tackle::InputError& e) {
+    // A description whose balances cannot all hold is refused (exit 1, "the balances cannot
+    // all hold: ..."): the model must agree that no state satisfies them, as below. Any other
+    // refusal is one.
+    out.kind = Outcome::Kind::tackle_refused;
+    out.reason = e.what();
+    const auto& all = e.diagnostics();
+    if (all.size() != 1 || all.front().message.rfind("the balances cannot all hold", 0) != 0) return out;
+    out.reason = "tackle finds the equations inconsistent (refused: the balances cannot all hold)";
   } catch (const std::exception& e) {
     out.kind = Outcome::Kind::tackle_refused;
     out.reason = e.what();
     return out;
   }
-  if (a->solution.status == tackle::Solution::Status::inconsistent) {
+  if (a && a->solution.status == tackle::Solution::Status::inconsistent) {
     out.kind = Outcome::Kind::tackle_refused;
     out.reason = "tackle finds the equations inconsistent";
     // The model must agree that no state satisfies them: checked below at the base state.
   }
-  const ClosedForms forms = closed_forms(*a);
-  Claims claims = claims_of(*a, d);
+  // (Refused as inconsistent: nothing of tackle's to compare but that.)
+  const ClosedForms forms = a ? closed_forms(*a) : ClosedForms{};
+  Claims claims = a ? claims_of(*a, d) : Claims{};
   plant(claims, o);
-  const GiNaC::exmap defs = a->model.symbols->definitions(true);
+  const GiNaC::exmap defs = a ? a->model.symbols->definitions(true) : GiNaC::exmap{};
 
   std::vector<State> states;
   states.push_back(model->base_state());
@@ -149,7 +159,8 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
       if (it != vals.end()) at[sym] = GiNaC::numeric(it->second);
     }
     // a length sum's named constant (C_s in a position answer, x_A = C_s - x_B): its value here
-    for (const auto& c : a->system.constraints)
+    if (a)
+      for (const auto& c : a->system.constraints)
       if (!c.constant.is_zero() && GiNaC::is_a<GiNaC::symbol>(c.constant))
         if (auto v = evaluate(written_out(c.quantity, defs), at)) at[c.constant] = GiNaC::numeric(*v);
     std::map<std::string, double> tk;
@@ -226,7 +237,7 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
     out.disagreements.push_back({"consistency (tackle: inconsistent; the model solves the balances at every state)", 1, 0, *model_balanced});
   if (out.kind != Outcome::Kind::tackle_refused) {
     out.kind = out.disagreements.empty() ? Outcome::Kind::agree : Outcome::Kind::disagree;
-    if (o.motion && a->motion && out.kind == Outcome::Kind::agree) {
+    if (o.motion && a && a->motion && out.kind == Outcome::Kind::agree) {
       const Outcome mo = compare_motion(*a, *model, d, o);
       out.motion_points = mo.motion_points;
       out.motion_error = mo.motion_error;

@@ -65,8 +65,12 @@ void Model::constraint_parts(int body, const Constraint& c, const State& s, std:
       break;
     case Constraint::relative:
       for (int side = 0; side < 2; ++side)
-        if (c.points[static_cast<std::size_t>(side)].body == body)
-          out.push_back({c.label, group + c.points[0].name, c.points[0].name, (side == 0 ? 1.0 : -1.0) * c.dir, false, false});
+        if (c.points[static_cast<std::size_t>(side)].body == body) {
+          const double sign = side == 0 ? 1.0 : -1.0;
+          out.push_back({c.label, group + c.points[0].name, c.points[0].name, sign * c.dir, sense, false});
+          // (sliding between two bodies: the friction against the first's slip, opposite on the other)
+          if (c.mu != 0) out.push_back({c.label + " (its friction)", group + "friction", c.points[0].name, -sign * c.sliding, true, false});
+        }
       break;
     case Constraint::slide: {
       const Body& o = bodies_[static_cast<std::size_t>(c.other)];

@@ -37,6 +37,9 @@
 //                 its center or at a point of its rim that turns, a couple, a spring along the slope
 //   pivot-2d      a body pinned at a fixed point, its center written in its angle (a bar, a disk,
 //                 a point), sometimes a spring to a point of it that turns, a force there, a couple
+//   stacked-2d    two stacked blocks with friction between them (friction_between), on a smooth or
+//                 rough floor, level or sloped, a force on either from 0 to twice the one at which
+//                 the top block slips: both regimes
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -974,6 +977,73 @@ std::string pivot_2d(Gen& g) {
   return d.text();
 }
 
+// Two stacked blocks with friction between them (friction_between): A on B, B on a smooth
+// floor (or a rough one, sliding the way the force pulls), on a slope or not, a force on A or
+// on B from 0 to twice the force at which A starts to slip on B (both regimes, and the
+// threshold between). By hand, on a smooth floor: they move together while |F| <= mu_s N_A
+// (m_A + m_B)/m_A pulling B, or mu_s N_A (m_A + m_B)/m_B pulling A, with N_A = m_A g cos(tilt).
+std::string stacked_2d(Gen& g) {
+  Doc d;
+  d.title = "Generated: two stacked blocks with friction between them, one pulled";
+  d.axes = "[x, y]";
+  d.param("g", 9.81, "m/s^2");
+  const int tilt = g.chance(0.5) ? 0 : g.integer(5, 25);
+  if (tilt) {
+    d.param("theta", tilt, "deg");
+    d.gravity = "{magnitude: g, tilt: theta}";
+  } else {
+    d.gravity = "[0, -g]";
+  }
+  const double m_A = g.nice(0.5, 4), m_B = g.nice(0.5, 6), mu_s = std::round(g.real(0.2, 0.6) * 20) / 20;
+  const double mu_k = std::round(mu_s * g.real(0.5, 0.95) * 100) / 100;
+  d.param("m_A", m_A, "kg");
+  d.param("m_B", m_B, "kg");
+  d.param("mu_s", mu_s, "");
+  d.param("mu_k", mu_k, "");
+  d.param("h", g.nice(0.25, 1), "m");
+  d.bodies.push_back("A: {mass: m_A, position: x_A, center_of_mass: [x_A, 3*h/2]}");
+  d.bodies.push_back("B: {mass: m_B, position: x_B, center_of_mass: [x_B, h/2]}");
+  d.connections.push_back("{type: friction_between, body: A, other: B, at: A, normal: [0, 1], tangent: [1, 0], mu_s: mu_s, mu_k: mu_k}");
+  const bool on_a = g.chance(0.4);
+  const bool rough = !tilt && !on_a && g.chance(0.3);
+  const double mu_f = rough ? g.nice(0.05, 0.2) : 0;
+  // By hand, sticking: together they accelerate at a (along x, the slope's gravity aside,
+  // which both share), and the friction on A is what gives A its part, F_A = m_A a (less F
+  // when F pulls A); A slips where |F_A| > mu_s N_A, N_A = m_A g cos(tilt). (On the rough floor,
+  // B slides the way F pulls it: kinetic friction mu_f (m_A + m_B) g against it.)
+  const double n_a = m_A * 9.81 * std::cos(tilt * M_PI / 180);
+  const double scale = mu_s * n_a * (m_A + m_B) / (on_a ? m_B : m_A);  // the threshold on a smooth floor
+  auto friction_on_a = [&](double f) {
+    const double a = (f - (rough ? (f < 0 ? -1 : 1) * mu_f * (m_A + m_B) * 9.81 : 0)) / (m_A + m_B);
+    return m_A * a - (on_a ? f : 0);
+  };
+  double force = 0;
+  do force = std::round(g.real(-2, 2) * (scale + (rough ? mu_f * (m_A + m_B) * 9.81 : 0)) * 4) / 4;
+  while (force == 0 || std::abs(std::abs(friction_on_a(force)) - mu_s * n_a) < 0.02 * mu_s * n_a);  // (either regime clearly)
+  const bool slips = std::abs(friction_on_a(force)) > mu_s * n_a;
+  d.param("F", force, "N");
+  d.connections.push_back(fmt::format("{{type: force, on: {}, at: {}, force: [F, 0]}}", on_a ? "A" : "B", on_a ? "A" : "B"));
+  if (rough) {
+    d.param("mu_f", mu_f, "");
+    d.connections.push_back(fmt::format("{{type: sliding, body: B, at: B, normal: [0, 1], sliding: [{}, 0], mu: mu_f}}", force < 0 ? -1 : 1));
+  } else {
+    d.connections.push_back("{type: roller, body: B, at: B, normal: [0, 1]}");
+  }
+  d.layout.push_back("x_A: 0");
+  d.layout.push_back("x_B: 0");
+  // The motion from rest relative to each other, both at one rate (on the rough floor, the way
+  // B slides): sticking, one coordinate; slipping, both.
+  const double rate = rough ? (force < 0 ? -1 : 1) * std::round(g.real(0.125, 1) * 8) / 8 : std::round(g.real(-1, 1) * 8) / 8;
+  for (const auto& l : d.layout) d.initial.push_back(l);
+  d.coords.push_back("x_A");
+  d.initial.push_back(fmt::format("dot(x_A): {}", num(rate)));
+  if (slips) {
+    d.coords.push_back("x_B");
+    d.initial.push_back(fmt::format("dot(x_B): {}", num(rate)));
+  }
+  return d.text();
+}
+
 }  // namespace
 
 std::string generate(std::uint64_t seed, std::string* kind) {
@@ -983,7 +1053,8 @@ std::string generate(std::uint64_t seed, std::string* kind) {
       {"incline-2d", incline_2d}, {"turning-2d", turning_2d}, {"joints-2d", joints_2d}, {"hoist-3d", hoist_3d},
       {"ring-2d", ring_2d},       {"slope-2d", slope_2d},     {"lengths-1d", lengths_1d}, {"carts-3d", carts_3d},
       {"welds-2d", welds_2d},     {"pulley-block-2d", pulley_block_2d}, {"incline-3d", incline_3d},
-      {"pulley-block-3d", pulley_block_3d}, {"drum-2d", drum_2d}, {"wheel-2d", wheel_2d}, {"pivot-2d", pivot_2d}};
+      {"pulley-block-3d", pulley_block_3d}, {"drum-2d", drum_2d}, {"wheel-2d", wheel_2d}, {"pivot-2d", pivot_2d},
+      {"stacked-2d", stacked_2d}};
   const auto& f = families[seed % (sizeof(families) / sizeof(families[0]))];
   if (kind) *kind = f.first;
   return f.second(g);

@@ -449,6 +449,14 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     if (opt_text(c, "mu"))
       requirements_.push_back({Requirement::cone, "F_" + at, "N_" + at, number(c.arg("mu")->items[0]), -1, what + " grips (|F| <= mu N)"});
   };
+  // Friction between two moving bodies, decided at the layout once the model is whole: sticking
+  // (as built) while its friction stays within mu_s N, else sliding (decide_contacts).
+  struct Undecided {
+    std::string normal, friction;
+    double mu_k = 0;
+    Eigen::VectorXd tangent;
+  };
+  std::vector<Undecided> undecided;
   for (const auto& c : d.connections) {
     const std::string& type = c.type.text;
     const std::string cname = c.name ? c.name->text : "";
@@ -572,6 +580,40 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       add_project("N_" + at, material(at, b), b, unit_vec(c, "normal"));
       add_project("F_" + at, material(at, b), b, unit_vec(c, "tangent"));
       grips(at, c, "the sticking contact at " + at);
+    } else if (type == "sticking_between" || type == "sliding_between" || type == "friction_between") {
+      // Two bodies that touch (stacked blocks): the model keeps their centers' relative
+      // position along the normal (N_<at>: the first is pushed along n, the other along -n) and,
+      // while they stick, along the tangent (F_<at>, the same way); sliding, kinetic friction
+      // mu N on the first against its slip relative to the other, and the opposite on the other.
+      // Point masses: the contact's force acts through each body's center (a block that could
+      // tip, a contact away from the centers, is not modelled).
+      const int b = body_of(c, "body"), o = body_of(c, "other");
+      const std::string at = need_text(c, "at"), first = need_text(c, "body"), other = need_text(c, "other");
+      if (at != first && at != other) throw Unsupported("a contact between two bodies away from their centers ('" + at + "')");
+      for (int k : {b, o})
+        if (!bodies_[static_cast<std::size_t>(k)].angle.empty()) throw Unsupported("a contact between two bodies, one of them turning");
+      auto relative = [&](const std::string& name, const Eigen::VectorXd& dir) {
+        Constraint k;
+        k.kind = Constraint::relative;
+        k.name = name;
+        k.points = {material(first, b), material(other, o)};
+        k.points[0].name = k.points[1].name = at;  // (where the description says it acts)
+        k.dir = dir;
+        cons_.push_back(k);
+      };
+      const std::string what = "the contact between " + first + " and " + other + " at " + at;
+      relative("N_" + at, unit_vec(c, "normal"));
+      requirements_.push_back({Requirement::pushes, "N_" + at, "", 0, -1, what + " pushes"});
+      if (type == "sliding_between") {
+        cons_.back().mu = number(need(c, "mu").items[0]);
+        cons_.back().sliding = unit_vec(c, "sliding");
+      } else {
+        const double mu = number(need(c, type == "friction_between" ? "mu_s" : "mu").items[0]);
+        relative("F_" + at, unit_vec(c, "tangent"));
+        requirements_.push_back({Requirement::cone, "F_" + at, "N_" + at, mu, -1, what + " grips (|F| <= mu N)"});
+        if (type == "friction_between")
+          undecided.push_back({"N_" + at, "F_" + at, number(need(c, "mu_k").items[0]), unit_vec(c, "tangent")});
+      }
     } else if (type == "collar") {
       const int b = body_of(c, "body");
       const std::string at = need_text(c, "at");
@@ -724,6 +766,38 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       const Eigen::VectorXd c = b.kind == Body::line ? b.a : b.kind == Body::turning ? eval_vec(b.cm_expr, vars) : b.cm0;
       origin_q_.segment(b.q0, n) = c;
     }
+  }
+
+  // Friction between two moving bodies, decided at the layout: they stick while the friction
+  // sticking needs is within mu_s N (and they press on each other); else they slip, the first
+  // body the way in which its slip relative to the other then grows (kinetic friction mu_k N
+  // against it): of the two ways, the one whose relative acceleration is not against it.
+  for (const auto& u : undecided) {
+    const Instant inst = solve(base_state());
+    const Quantity* f = inst.find(u.friction);
+    const Quantity* nn = inst.find(u.normal);
+    const auto cone = std::find_if(requirements_.begin(), requirements_.end(),
+                                   [&](const Requirement& r) { return r.kind == Requirement::cone && r.force == u.friction; });
+    if (!f || !nn || !f->determined || !nn->determined || cone == requirements_.end())
+      throw Unsupported("friction between two bodies whose forces the model does not determine");
+    if (nn->value >= 0 && std::abs(f->value) <= cone->mu * nn->value) continue;  // they stick
+    requirements_.erase(cone);
+    cons_.erase(std::find_if(cons_.begin(), cons_.end(), [&](const Constraint& c) { return c.name == u.friction; }));
+    Constraint& k = *std::find_if(cons_.begin(), cons_.end(), [&](const Constraint& c) { return c.name == u.normal; });
+    k.mu = u.mu_k;
+    const Body& first = bodies_[static_cast<std::size_t>(k.points[0].body)];
+    const Body& other = bodies_[static_cast<std::size_t>(k.points[1].body)];
+    double way = 0;
+    for (double sign : {1.0, -1.0}) {
+      k.sliding = sign * u.tangent;
+      const auto acc = accelerations(base_state());
+      if (acc && k.sliding.dot(acc->segment(first.q0, n) - acc->segment(other.q0, n)) >= 0) {
+        way = sign;
+        break;
+      }
+    }
+    if (way == 0) throw Unsupported("friction between two bodies that slip neither way");
+    k.sliding = way * u.tangent;
   }
 }
 
@@ -1087,6 +1161,8 @@ std::optional<double> Model::slip_speed(const std::string& normal, const State& 
       p.offset = rotated(p.offset, -s.q(bodies_[static_cast<std::size_t>(p.body)].r0));
       p.turns = true;
     }
+    // (between two bodies: the first's slip relative to the other)
+    if (c.kind == Constraint::relative) return c.sliding.dot(velocity(p, s) - velocity(c.points[1], s));
     return c.sliding.dot(velocity(p, s));
   }
   return std::nullopt;
@@ -1166,6 +1242,8 @@ Model::Kkt Model::system(const State& s, const std::vector<int>* only) const {
     if (c.mu != 0) {
       // sliding: the contact's force is N (n - mu s) at its point
       g += generalized(c.points[0], -c.mu * c.sliding, s);
+      // (between two bodies, the opposite on the other)
+      if (c.kind == Constraint::relative) g -= generalized(c.points[1], -c.mu * c.sliding, s);
     }
     out.K.block(0, n + j, n, 1) = -g;
     out.K.block(n + j, 0, 1, n) = rows[static_cast<std::size_t>(j)].grad.transpose();

@@ -422,6 +422,63 @@ void roll(BuildContext& ctx, Instance& in, const ConstraintSpec& k) {
   ctx.m.constraints.push_back({in.label, in.c.name ? in.c.name->text : "", q, "travel of " + body.name + " along the surface plus the arc it turns through (it rolls without slipping)"});
 }
 
+// One body's position relative to another along a direction, constant: two bodies that stay
+// in contact (along the normal), or do not slip on each other (along the tangent). For bodies
+// that only translate (a turning one's contact point moves on it: refused). Nothing to keep
+// where the coordinates already keep it (a block's height on a cart written as a constant).
+void keep(BuildContext& ctx, Instance& in, const ConstraintSpec& k) {
+  const auto a = in.body_args.find(k.arg), b = in.body_args.find(k.with);
+  const auto v = in.vector_args.find(k.along);
+  if (a == in.body_args.end() || b == in.body_args.end() || v == in.vector_args.end()) return;
+  const Body& first = ctx.m.bodies[a->second];
+  const Body& second = ctx.m.bodies[b->second];
+  if (a->second == b->second) {
+    ctx.diags.error(in.c.at, "a " + in.what + " joins body '" + first.name + "' to itself (expected two different bodies)");
+    return;
+  }
+  for (const Body* body : {&first, &second})
+    if (!body->angle.is_zero()) {
+      ctx.diags.error(in.c.at, "body '" + body->name + "' of a " + in.what +
+                                   " turns, and its point of contact moves on it (expected two bodies that only translate)");
+      return;
+    }
+  const ex q = fewer_trig_terms(normal(inner(first.cm - second.cm, unit(v->second))).expand());
+  bool moves = false;
+  for (const auto& coordinate : ctx.m.coordinates) moves = moves || q.has(coordinate.q);
+  if (!moves) return;
+  const std::string direction = to_text(v->second[0]) + ", " + to_text(v->second[1]);
+  ctx.m.constraints.push_back({in.label + " (along [" + direction + "])", in.c.name ? in.c.name->text : "", q,
+                               "position of " + first.name + " relative to " + second.name + " along [" + direction + "]"});
+}
+
+// A one-body contact (a body against the ground) placed at a point of another body that
+// moves: the contact's force on the other body would be missing. Refused, naming the rule for
+// two bodies.
+bool at_point_of_another_body(BuildContext& ctx, const Instance& in) {
+  const auto body = in.body_args.find("body");
+  if (body == in.body_args.end() || in.body_args.size() != 1) return false;
+  for (const auto& spec : in.rule.args) {
+    if (spec.kind != ArgKind::point) continue;
+    const auto p = in.point_args.find(spec.key);
+    const ArgDesc* a = in.c.arg(spec.key);
+    if (p == in.point_args.end() || !a || a->items.empty()) continue;
+    const Point& point = ctx.m.points[static_cast<std::size_t>(p->second)];
+    if (point.body < 0 || point.body == body->second) continue;
+    const Body& other = ctx.m.bodies[static_cast<std::size_t>(point.body)];
+    if (other.coord.is_zero() && other.angle.is_zero() && !other.has_mass) continue;  // a body that does not move
+    const std::string& held = ctx.m.bodies[static_cast<std::size_t>(body->second)].name;
+    const std::string instead = in.rule.two_bodies.empty()
+                                    ? "a connection between two bodies"
+                                    : "{type: " + in.rule.two_bodies + ", body: " + held + ", other: " + other.name + ", ...}";
+    ctx.diags.error(a->items[0].at, "'" + spec.key + "' of a " + in.what + " is point '" + point.name + "' of body '" + other.name +
+                                        "', which moves: this connection holds '" + held + "' against the ground, and the force on '" +
+                                        other.name + "' would be missing (expected a fixed point or a point of '" + held + "'; for two bodies: " +
+                                        instead + ")");
+    return true;
+  }
+  return false;
+}
+
 // Two bodies joined at a point P, one of them (or both) turning: for each body, P stays its
 // own point. A body that only translates carries P at a fixed offset from its center; a
 // turning one at a fixed offset in its frame, Rot(angle) r0, with r0 where P sits in the
@@ -494,6 +551,8 @@ void add_constraints(BuildContext& ctx, Instance& in) {
       }
     } else if (k.kind == ConstraintSpec::Kind::rolls) {
       roll(ctx, in, k);
+    } else if (k.kind == ConstraintSpec::Kind::keeps) {
+      keep(ctx, in, k);
     } else if (k.kind == ConstraintSpec::Kind::length_sum) {
       auto it = in.expr_args.find(k.arg);
       if (it == in.expr_args.end()) continue;
@@ -582,13 +641,22 @@ void add_conditions(BuildContext& ctx, Instance& in) {
     // At a point of a turning body the contact slips at the material point's velocity, not
     // the center's (a ball that slides and spins).
     const auto body = in.body_args.find("body");
+    const auto other = in.body_args.find("other");
     const auto at = in.point_args.find("at");
     const auto along = in.vector_args.find("sliding");
     if (body != in.body_args.end() && at != in.point_args.end() && along != in.vector_args.end()) {
       const Body& b = ctx.m.bodies[body->second];
-      if (!b.angle.is_zero())
-        if (const auto v = kinematics::point_velocity(ctx.m, b, ctx.m.points[at->second].position - b.cm))
-          ctx.m.slips.push_back({label, fewer_trig_terms(inner(unit(along->second), *v).expand())});
+      const Vec& p = ctx.m.points[at->second].position;
+      if (other != in.body_args.end()) {
+        // Two bodies: the contact slips at the first's velocity relative to the other's.
+        const Body& o = ctx.m.bodies[other->second];
+        const auto v = kinematics::point_velocity(ctx.m, b, p - b.cm), w = kinematics::point_velocity(ctx.m, o, p - o.cm);
+        if (v && w)
+          ctx.m.slips.push_back({label, fewer_trig_terms(inner(unit(along->second), *v - *w).expand()), {body->second, other->second}});
+      } else if (!b.angle.is_zero()) {
+        if (const auto v = kinematics::point_velocity(ctx.m, b, p - b.cm))
+          ctx.m.slips.push_back({label, fewer_trig_terms(inner(unit(along->second), *v).expand()), {body->second}});
+      }
     }
   }
   for (const auto& chk : rule->checks) {
@@ -624,6 +692,8 @@ void connection(BuildContext& ctx, const ConnectionDesc& c, std::set<std::string
     ctx.diags.error(c.type.at, msg);
     return;
   }
+  if (!found->regimes.empty())  // (the pipeline makes it one of its regimes before the model is built)
+    throw InternalError("a '" + found->type + "' connection reached the model builder undecided");
   Instance in{c, *found, "'" + found->type + "' connection" + (c.name ? " '" + c.name->text + "'" : ""), {}, Scope(*ctx.table),
               {}, {}, {}, {}, {}};
   if (c.name && !connection_names.insert(c.name->text).second)
@@ -632,6 +702,7 @@ void connection(BuildContext& ctx, const ConnectionDesc& c, std::set<std::string
     ctx.connection_failed = true;  // its paths are unknown: points it would run over too
     return;
   }
+  if (at_point_of_another_body(ctx, in)) return;
   in.label = label_of(in);
   if (!make_unknowns(ctx, in)) return;
   add_loads(ctx, in);

@@ -251,6 +251,28 @@ nlohmann::ordered_json json_object(const Derivation& d, bool full) {
     }
     j["power_check"] = p;
   }
+  if (!d.regimes.empty()) {
+    // Connections decided at the numbers: sticking, or slipping where sticking cannot hold.
+    auto& regimes = j["regimes"] = nlohmann::ordered_json::array();
+    for (const auto& c : d.regimes) {
+      nlohmann::ordered_json r{{"connection", c.connection}, {"tried", c.first}, {"chosen", c.chosen}, {"failed", c.failed},
+                                 {"decided", !c.undecided}};
+      auto& bounds = r["holds_while"] = nlohmann::ordered_json::array();
+      auto text_or_null = [](const std::string& t) { return t.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(t); };
+      for (const auto& b : c.holds_while)
+        bounds.push_back({{"meaning", b.meaning}, {"parameter", to_text(b.parameter)}, {"op", b.op}, {"bound", to_text(b.bound)},
+                          {"bound_value", text_or_null(b.value)}, {"tightest", b.tightest}});
+      if (c.friction) {
+        const auto& f = *c.friction;
+        r["friction"] = {{"on", f.body}, {"unknown", to_text(f.unknown)}, {"closed_form", to_text(f.value)}, {"value", text_or_null(f.value_number)},
+                         {"limit", f.limit.is_zero() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(to_text(f.limit_value))},
+                         {"limit_value", text_or_null(f.limit_number)}};
+      } else {
+        r["friction"] = nullptr;
+      }
+      regimes.push_back(std::move(r));
+    }
+  }
   if (d.motion) j["motion"] = motion_json(*d.motion);
   if (full) {
     j["equations"] = nlohmann::ordered_json::array();

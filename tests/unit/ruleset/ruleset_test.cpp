@@ -31,10 +31,10 @@ std::vector<std::string> rule_errors(const std::string& text, const std::string&
 TEST_CASE("Rules: the bundled rules load and declare what they need", "[rules]") {
   const RuleSet rules = load_rules(TACKLE_SOURCE_DIR "/rules");
   CHECK(rules.names() == std::vector<std::string>{"ball_and_socket", "ball_joint", "cable", "collar", "contact", "couple", "damper",
-                                                 "driven_wheel", "elastic_cord", "fixed", "fixed_support", "force", "free_wheel", "hinge",
+                                                 "driven_wheel", "elastic_cord", "fixed", "fixed_support", "force", "free_wheel", "friction_between", "hinge",
                                                  "hinge_with_moments", "link", "pin", "pin_joint", "pulley", "rod", "roller", "rolling",
-                                                 "same_motion", "skidding_wheel", "slider_joint", "sliding", "spring", "sticking",
-                                                 "string", "unknown_force", "weld", "weld_joint"});
+                                                 "same_motion", "skidding_wheel", "slider_joint", "sliding", "sliding_between", "spring", "sticking",
+                                                 "sticking_between", "string", "unknown_force", "weld", "weld_joint"});
   const Rule* s = rules.find("string");
   REQUIRE(s);
   REQUIRE(s->unknowns.size() == 1);
@@ -96,7 +96,7 @@ TEST_CASE("Rules: an argument used as the wrong kind", "[rules]") {
 
 TEST_CASE("Rules: every bundled rule reads without a problem", "[rules]") {
   const RuleSet rules = load_rules(TACKLE_SOURCE_DIR "/rules", RuleLoading::all);
-  CHECK(rules.names().size() == 32);
+  CHECK(rules.names().size() == 35);
   CHECK_NOTHROW(load_rules(TACKLE_SOURCE_DIR "/rules").read_all());
 }
 

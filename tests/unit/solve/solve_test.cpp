@@ -25,14 +25,25 @@ derive: [{lmb: A}]
 }
 
 TEST_CASE("Solve: an inconsistent system names the conflicting equations", "[solve]") {
-  const auto a = test::run_text(R"(
+  const std::string text = R"(
 title: a massless block pulled by a force and nothing else
 parameters: {F: {unit: N}}
 bodies: {A: {mass: 0, position: x_A}}
 loads: [{on: A, force: F}]
-)");
-  CHECK(a->solution.status == Solution::Status::inconsistent);
-  CHECK(a->solution.conflicts == std::vector<std::string>{"LMB A (x)"});
+)";
+  // The solver names the equation that cannot hold ...
+  const Description d = parse_description(text, "t.yaml");
+  const RuleSet& rules = test::rules();
+  const Model m = build_model(d, rules);
+  const EquationSystem s = build_equations(m);
+  const Solution sol = solve(m, s);
+  CHECK(sol.status == Solution::Status::inconsistent);
+  CHECK(sol.conflicts == std::vector<std::string>{"LMB A (x)"});
+  // ... and the pipeline refuses the description (exit 1), at the body, with what could supply it.
+  CHECK(test::errors_of(text) ==
+        std::vector<std::string>{"t.yaml:4:10: the balances cannot all hold: LMB A (x) reads 0 = a force that is not zero (expected "
+                                 "body 'A' has no mass, so the forces on it must cancel: a support, a string or a contact that "
+                                 "balances them, or a mass)"});
 }
 
 TEST_CASE("Solve: a system balance next to the body balances is reported redundant", "[solve]") {
