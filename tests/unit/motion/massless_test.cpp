@@ -485,3 +485,26 @@ motion:
     CHECK(*s.table.y[1].back() == Approx((100 * (x - 0.5) + 150) / 400).epsilon(1e-8));
   }
 }
+
+TEST_CASE("Massless ring: its place given at the instant does not take the block's place in the motion", "[motion][massless]") {
+  // The driven ring with y_S = -0.3 m given: at the instant T = k (y_S + H - l_0) = 40 N; in
+  // time the motion is still described by the block's x (its rate is in 'initial'; before, the
+  // given y_S was chosen and 'initial' was asked for dot(y_S)), with the spring's stiffness,
+  // and simulate follows the ring, y_S = -0.3 - x, not its given place.
+  const auto a = run_text(example_with(driven_ring, "find: [T, ddot(x)]", "given: {y_S: {value: -0.3, unit: m}}\nfind: [T, ddot(x)]"));
+  const Derivation d = explain(*a);
+  REQUIRE(d.answers.size() == 2);
+  REQUIRE(d.answers[0].value);
+  CHECK(d.answers[0].value->approx == Approx(40).epsilon(1e-12));
+  REQUIRE(a->motion);
+  REQUIRE(a->motion->problem.empty());
+  REQUIRE(a->motion->eom.q.size() == 1);
+  CHECK(to_text(a->motion->eom.q[0]) == "x");
+  CHECK(normal(a->motion->eom.K(0, 0) - a->model.symbols->find("k")->sym).is_zero());
+  const Simulation s = simulate(*a, SimulationSpec{1.0, {"x", "y_S", "T"}, 2}, Location{"t.yaml", 1, 1});
+  REQUIRE(s.complete);
+  const double x = driven_x(1.0);
+  CHECK(*s.table.y[0].back() == Approx(x).epsilon(1e-8));
+  CHECK(*s.table.y[1].back() == Approx(-0.3 - x).epsilon(1e-8));
+  CHECK(*s.table.y[2].back() == Approx(200 * (0.2 - x)).epsilon(1e-8));
+}
