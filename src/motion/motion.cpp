@@ -266,12 +266,16 @@ EnergyAnswer work_energy(const Model& m, const EquationsOfMotion& eom, const Mot
 }
 
 // The condition in the steady state: along the forced part alone (see ConditionInTime).
-void steady_state(ConditionInTime& ct, const CheckedCondition& c, const Response& r, const EquationsOfMotion& eom,
-                  const Model& m, const exmap& values) {
+// `in_state` is the condition in the motion's coordinate and rate, the dependent ones put in
+// (a string's T = k (y_S + H - l_0) through the ring's y_S = x_0 + y_0 - x): a dependent
+// coordinate left in would be held at no value, and its square read as a condition that
+// always holds.
+void steady_state(ConditionInTime& ct, const CheckedCondition& c, const ex& in_state, const Response& r,
+                  const EquationsOfMotion& eom, const Model& m, const exmap& values) {
   const ex& t = m.time;
   const ex w = r.forcing_frequency;
   const ex qp = r.particular;
-  const ex g = substituted(substituted(c.expr, m.symbols->definitions()), exmap{{eom.q[0], qp}, {eom.dq[0], qp.diff(ex_to<symbol>(t))}});
+  const ex g = substituted(substituted(in_state, m.symbols->definitions()), exmap{{eom.q[0], qp}, {eom.dq[0], qp.diff(ex_to<symbol>(t))}});
   const symbol cs("cs"), sn("sn");
   const ex p = normal(g).subs(lst{cos(w * t) == cs, sin(w * t) == sn}).expand();
   if (p.has(t) || !p.is_polynomial(lst{cs, sn}) || p.degree(cs) > 1 || p.degree(sn) > 1 || p.coeff(cs, 1).has(sn)) return;
@@ -1047,7 +1051,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
         }
       }
     }
-    if (!r.forcing_frequency.is_zero()) steady_state(ct, c, r, eom, m, values);
+    if (!r.forcing_frequency.is_zero()) steady_state(ct, c, in_state, r, eom, m, values);
     out.conditions.push_back(std::move(ct));
   }
   return out;
