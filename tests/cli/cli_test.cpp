@@ -1093,8 +1093,12 @@ TEST_CASE("CLI: --gradebook: a line without a student is an input error and noth
   const Run no_batch = run_tackle("check " + pulley + " --unknown T --answer '20 N' --gradebook " + (dir / "g.csv").string());
   CHECK(no_batch.code == 2);
   CHECK(no_batch.err == "tackle check: --gradebook needs --batch\n");
-  CHECK(run_tackle("check " + pulley + " --batch " + batch + " --gradebook-format canvas").code == 2);
-  CHECK(run_tackle("check " + pulley + " --batch " + batch + " --gradebook " + (dir / "g.csv").string() + " --gradebook-format blackboard").code == 2);
+  const Run no_gradebook = run_tackle("check " + pulley + " --batch " + batch + " --gradebook-format canvas");
+  CHECK(no_gradebook.code == 2);
+  CHECK(no_gradebook.err == "--gradebook-format requires --gradebook\nRun with --help for more information.\n");
+  const Run other = run_tackle("check " + pulley + " --batch " + batch + " --gradebook " + (dir / "g.csv").string() + " --gradebook-format blackboard");
+  CHECK(other.code == 2);
+  CHECK(other.err == "--gradebook-format: blackboard not in {plain,canvas,moodle}\nRun with --help for more information.\n");
   CHECK_FALSE(fs::exists(dir / "g.csv"));
   fs::remove_all(dir);
 }
