@@ -2,8 +2,10 @@
 // the shape autograders read (Gradescope's results.json and PrairieLearn's external grader).
 #pragma once
 
+#include <functional>
 #include <istream>
 #include <map>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -22,6 +24,16 @@ namespace tackle {
 /// - jsonl: the per-line results again.
 enum class ResultsFormat { gradescope, prairielearn, jsonl };
 
+/// One line of a batch once it is graded, as a gradebook takes it.
+struct GradedLine {
+  std::size_t line = 0;                // its line number in the batch (blank lines counted)
+  bool object = false;                 // whether it was a JSON object at all
+  std::optional<std::string> student;  // `student` as written (a number as its JSON); none when absent or not a string or number
+  std::optional<std::string> id;       // `id` as written; none when absent
+  double points = 0, max_points = 0;
+  Verdict verdict = Verdict::invalid;
+};
+
 struct GradeOptions {
   ResultsFormat format = ResultsFormat::gradescope;
   double points = 1;                          // each line's points, unless its unknown has its own
@@ -34,6 +46,8 @@ struct GradeOptions {
   // The problem's model, for lines with a free body diagram (`{"id", "fbd": {...}}`); none:
   // such a line is invalid.
   const Model* model = nullptr;
+  // Called with each line once it is graded (`--gradebook`); none: not called.
+  std::function<void(const GradedLine&)> graded;
 };
 
 /// At most this many of PrairieLearn's `format_errors` are listed (then how many more): the

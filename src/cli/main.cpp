@@ -26,6 +26,7 @@
 #include "isolate/isolate.hpp"
 #include "pipeline/pipeline.hpp"
 #include "report/isolation_report.hpp"
+#include "report/gradebook.hpp"
 #include "report/key.hpp"
 #include "report/html.hpp"
 #include "report/sheet.hpp"
@@ -141,6 +142,7 @@ struct Options {
   int samples = 201;
   // check
   std::string unknown, answer, equation, steps, fbd, rubric, batch, results, results_format = "gradescope";
+  std::string gradebook, gradebook_format = "plain";
   bool equation_given = false;
   double tolerance = 0.01;
   int sig_figs = 0;
@@ -394,10 +396,18 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
     std::unique_ptr<std::istream> batch_file;
     if (o.batch != "-") batch_file = tackle::open_text_file(o.batch);
     std::istream& batch = batch_file ? *batch_file : std::cin;
-    // Both outputs go through temporary files and are renamed into place only when the
-    // whole batch was graded.
-    std::optional<tackle::AtomicOutput> out_file, results_file;
-    for (auto& [file, path] : {std::pair{&out_file, &o.out}, std::pair{&results_file, &o.results}}) {
+    // A gradebook: each graded line's cell, written when the whole batch was graded.
+    std::optional<tackle::Gradebook> book;
+    if (!o.gradebook.empty()) {
+      book.emplace(o.batch);
+      grade.graded = [&book](const tackle::GradedLine& g) {
+        book->add(g.line, g.object, g.student, g.id, g.points, g.max_points, g.verdict == tackle::Verdict::invalid);
+      };
+    }
+    // The outputs go through temporary files and are renamed into place only when the whole
+    // batch was graded.
+    std::optional<tackle::AtomicOutput> out_file, results_file, gradebook_file;
+    for (auto& [file, path] : {std::pair{&out_file, &o.out}, std::pair{&results_file, &o.results}, std::pair{&gradebook_file, &o.gradebook}}) {
       if (path->empty() || *path == "-") continue;
       file->emplace(*path);
       if (!(*file)->ok()) {
@@ -412,7 +422,21 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
     // Standard output failed part of the way: the batch stopped there, and a results file of
     // part of the batch is not written.
     if (!out_file && !standard_output_written()) return 1;
-    for (auto* file : {&out_file, &results_file})
+    if (book) {
+      // A line whose student or question is not known: no gradebook (and no other output),
+      // rather than one that leaves a student out.
+      if (const auto problems = book->problems(); !problems.empty()) throw tackle::InputError(problems);
+      const auto format = o.gradebook_format == "canvas"   ? tackle::GradebookFormat::canvas
+                          : o.gradebook_format == "moodle" ? tackle::GradebookFormat::moodle
+                                                           : tackle::GradebookFormat::plain;
+      const std::string csv = book->csv(format);
+      if (gradebook_file) gradebook_file->stream() << csv;
+      else if (std::cout << csv; !standard_output_written()) return 1;
+      if (format != tackle::GradebookFormat::plain)
+        for (const auto& cell : book->invalid_cells())
+          std::cerr << "tackle check: " << o.gradebook << ": " << cell << " cannot be graded as typed: its cell is left without a grade\n";
+    }
+    for (auto* file : {&out_file, &results_file, &gradebook_file})
       if (*file && !(*file)->commit()) {
         std::cerr << (*file)->error() << "\n";
         return 1;
@@ -600,6 +624,12 @@ int run(int argc, char** argv) {
         ->check(CLI::IsMember({"gradescope", "prairielearn", "jsonl"}))
         ->capture_default_str()
         ->needs(results_opt);
+    auto* gradebook_opt = check->add_option("--gradebook", o.gradebook, "With --batch: also write the class's gradebook (CSV): a row per line's \"student\", "
+                                                                      "a column per question \"id\", the points and the total");
+    check->add_option("--gradebook-format", o.gradebook_format, "The gradebook's layout: a spreadsheet's, or Canvas's or Moodle's grade import")
+        ->check(CLI::IsMember({"plain", "canvas", "moodle"}))
+        ->capture_default_str()
+        ->needs(gradebook_opt);
     check->add_option("--points", o.points_text, "Points for each answer (N), or for one unknown's answers (NAME=N); repeatable")
         ->needs(batch_opt);
     check->add_flag("--top-level-score", o.top_level_score, "Gradescope: also write the total as the top-level score "
@@ -643,6 +673,10 @@ int run(int argc, char** argv) {
   }
   if (check->parsed() && !o.results.empty() && batch_opt->count() == 0 && steps_opt->count() == 0) {
     std::cerr << "tackle check: --results needs --batch or --steps\n";
+    return 2;
+  }
+  if (check->parsed() && !o.gradebook.empty() && batch_opt->count() == 0) {
+    std::cerr << "tackle check: --gradebook needs --batch\n";
     return 2;
   }
   if (check->parsed() && answer_opt->count() == 0 && batch_opt->count() == 0 && equation_opt->count() == 0 && steps_opt->count() == 0 &&

@@ -1016,3 +1016,89 @@ TEST_CASE("Docs: every YAML block in the README and docs/ reads as YAML, and a w
   CHECK(blocks >= 10);
   CHECK(derived >= 1);
 }
+
+TEST_CASE("CLI: check --batch --gradebook grades a class of five; the line that cannot be read is that student's invalid", "[cli][check][batch][gradebook]") {
+  const fs::path dir = fs::temp_directory_path() / ("tackle-gradebook-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string data = TACKLE_SOURCE_DIR "/tests/data/gradebook/";
+  const std::string base = "check " + examples + "sample-12.3-two-mass-pulley.yaml --batch " + data + "class.jsonl --points T=2";
+  const Run plain = run_tackle(base + " --gradebook " + (dir / "grades.csv").string());
+  REQUIRE(plain.code == 0);
+  CHECK(plain.err.empty());
+  // cy's q1 (2 F m_B/...) cannot be read: cy's cell is invalid, every other cell is graded; eve
+  // answered q1 twice (the last counts) and q2 not at all.
+  CHECK(slurp(dir / "grades.csv") == slurp(data + "plain.csv"));
+  // The results are those of the batch without --gradebook, line for line.
+  const Run without = run_tackle(base);
+  REQUIRE(without.code == 0);
+  CHECK(plain.out == without.out);
+  CHECK(std::count(plain.out.begin(), plain.out.end(), '\n') == 15);
+  std::istringstream lines(plain.out);
+  std::string line;
+  for (int k = 0; k < 7; ++k) std::getline(lines, line);
+  CHECK(nlohmann::json::parse(line)["verdict"] == "invalid");
+
+  const Run canvas = run_tackle(base + " --gradebook " + (dir / "canvas.csv").string() + " --gradebook-format canvas -o " + (dir / "out.jsonl").string());
+  REQUIRE(canvas.code == 0);
+  CHECK(canvas.out.empty());
+  CHECK(canvas.err == "tackle check: " + (dir / "canvas.csv").string() + ": cy: q1 cannot be graded as typed: its cell is left without a grade\n");
+  CHECK(slurp(dir / "canvas.csv") == slurp(data + "canvas.csv"));
+  CHECK(slurp(dir / "out.jsonl") == without.out);
+
+  const Run moodle = run_tackle(base + " --gradebook " + (dir / "moodle.csv").string() + " --gradebook-format moodle -o /dev/null");
+  REQUIRE(moodle.code == 0);
+  CHECK(slurp(dir / "moodle.csv") == slurp(data + "moodle.csv"));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("CLI: --gradebook: the tutorial's class is tests/data/gradebook/class.jsonl, word for word", "[cli][gradebook][docs]") {
+  const std::string tutorial = slurp(TACKLE_SOURCE_DIR "/docs/tutorial.md");
+  const std::string class_file = slurp(TACKLE_SOURCE_DIR "/tests/data/gradebook/class.jsonl");
+  CHECK(tutorial.find("Save this as `class.jsonl`:\n\n```json\n" + class_file + "```\n") != std::string::npos);
+  // And its gradebook, as the tutorial shows it (its lines end in CRLF; the page's in LF).
+  std::string shown = slurp(TACKLE_SOURCE_DIR "/tests/data/gradebook/plain.csv");
+  shown.erase(std::remove(shown.begin(), shown.end(), '\r'), shown.end());
+  CHECK(tutorial.find("$ cat grades.csv\n" + shown + "```\n") != std::string::npos);
+}
+
+TEST_CASE("CLI: --gradebook: a line without a student is an input error and nothing is written; usage errors", "[cli][check][batch][gradebook]") {
+  const fs::path dir = fs::temp_directory_path() / ("tackle-gradebook-errors-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string pulley = examples + "sample-12.3-two-mass-pulley.yaml";
+  const std::string batch = (dir / "class.jsonl").string();
+  std::ofstream(batch) << "{\"student\": \"ada\", \"id\": \"q1\", \"unknown\": \"T\", \"answer\": \"20 N\"}\n"
+                       << "{\"id\": \"q1\", \"unknown\": \"T\", \"answer\": \"20 N\"}\n"
+                       << "\n"
+                       << "not json\n"
+                       << "{\"student\": \"ben\", \"unknown\": \"T\", \"answer\": \"20 N\"}\n";
+  const std::string outputs = " -o " + (dir / "out.jsonl").string() + " --results " + (dir / "results.json").string() + " --gradebook " +
+                              (dir / "grades.csv").string();
+  const Run r = run_tackle("check " + pulley + " --batch " + batch + outputs);
+  CHECK(r.code == 1);
+  CHECK(r.err == batch + ":2: no \"student\" (expected the student's name or id, a string, on every line with --gradebook)\n" + batch +
+                     ":4: the line is not a JSON object, so whose answer it is is not known (expected {\"student\": ..., \"id\": ..., ...} on "
+                     "every line with --gradebook)\n" +
+                     batch + ":5: no \"id\" (expected the question's id on every line with --gradebook)\n");
+  for (const char* name : {"out.jsonl", "results.json", "grades.csv"}) CHECK_FALSE(fs::exists(dir / name));
+  // Without --gradebook the same batch is graded as ever (the lines' own verdicts).
+  CHECK(run_tackle("check " + pulley + " --batch " + batch + " -o " + (dir / "out.jsonl").string()).code == 0);
+
+  // A student's answer that is too long to grade is still that student's, and invalid.
+  std::ofstream(batch) << "{\"student\": \"ada\", \"id\": \"q1\", \"unknown\": \"T\", \"answer\": \"" << std::string(20000, '1') << "\"}\n";
+  const Run long_line = run_tackle("check " + pulley + " --batch " + batch + " -o /dev/null --gradebook " + (dir / "grades.csv").string());
+  CHECK(long_line.code == 0);
+  CHECK(slurp(dir / "grades.csv") == "student,q1,total\r\nada,invalid,0\r\n");
+
+  // Usage: --gradebook needs --batch, --gradebook-format needs --gradebook, and only the three layouts.
+  const Run no_batch = run_tackle("check " + pulley + " --unknown T --answer '20 N' --gradebook " + (dir / "g.csv").string());
+  CHECK(no_batch.code == 2);
+  CHECK(no_batch.err == "tackle check: --gradebook needs --batch\n");
+  const Run no_gradebook = run_tackle("check " + pulley + " --batch " + batch + " --gradebook-format canvas");
+  CHECK(no_gradebook.code == 2);
+  CHECK(no_gradebook.err == "--gradebook-format requires --gradebook\nRun with --help for more information.\n");
+  const Run other = run_tackle("check " + pulley + " --batch " + batch + " --gradebook " + (dir / "g.csv").string() + " --gradebook-format blackboard");
+  CHECK(other.code == 2);
+  CHECK(other.err == "--gradebook-format: blackboard not in {plain,canvas,moodle}\nRun with --help for more information.\n");
+  CHECK_FALSE(fs::exists(dir / "g.csv"));
+  fs::remove_all(dir);
+}
