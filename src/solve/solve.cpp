@@ -738,8 +738,8 @@ AcuteAngles acute_angles(const Model& model) {
 
 // Square roots with the factors of known positive sign taken out of them: sqrt(m^2 r^2
 // (omega^4 + alpha^2)) is m r sqrt(omega^4 + alpha^2) for positive m and r (the size of a
-// friction in the tangent plane, sqrt(F_1^2 + F_2^2)). A root whose radicand has no such
-// factor is left as it is.
+// friction in the tangent plane, sqrt(F_1^2 + F_2^2)), and so are the fourth powers of real
+// factors (sqrt(omega^4) = omega^2). A root whose radicand has no such factor is left as it is.
 struct RootsPulledOut : map_function {
   ex operator()(const ex& e) override {
     if (!is_exactly<power>(e)) return e.map(*this);
@@ -760,6 +760,11 @@ struct RootsPulledOut : map_function {
         if (kk >= 2 && !is_exactly<numeric>(b) && sign_of(b).value_or(0) > 0) {
           side_out *= pow(b, kk / 2);
           side_in *= pow(b, kk % 2);
+          pulled = true;
+        } else if (kk >= 4 && !is_exactly<numeric>(b) && b.info(info_flags::real)) {
+          // A real base of unknown sign: sqrt(omega^4) = omega^2 (an even power under the root).
+          side_out *= pow(b, 2 * (kk / 4));
+          side_in *= pow(b, kk % 4);
           pulled = true;
         } else {
           side_in *= f;
