@@ -17,6 +17,10 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
     c.reason = "the equations are inconsistent";
     return c;
   }
+  if (!sol.unsolved.empty()) {
+    c.reason = "the instant is not solved (nothing is asked at it)";
+    return c;
+  }
   // Each body's velocity: from its coordinate (the center of mass differentiated), or, for a
   // body that moves without one, a speed along its (straight) line of motion.
   std::vector<Vec> velocity(m.bodies.size(), zero_vec());

@@ -1,5 +1,7 @@
 #include "motion/motion.hpp"
 
+#include "motion/mass_form.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -264,12 +266,16 @@ EnergyAnswer work_energy(const Model& m, const EquationsOfMotion& eom, const Mot
 }
 
 // The condition in the steady state: along the forced part alone (see ConditionInTime).
-void steady_state(ConditionInTime& ct, const CheckedCondition& c, const Response& r, const EquationsOfMotion& eom,
-                  const Model& m, const exmap& values) {
+// `in_state` is the condition in the motion's coordinate and rate, the dependent ones put in
+// (a string's T = k (y_S + H - l_0) through the ring's y_S = x_0 + y_0 - x): a dependent
+// coordinate left in would be held at no value, and its square read as a condition that
+// always holds.
+void steady_state(ConditionInTime& ct, const CheckedCondition& c, const ex& in_state, const Response& r,
+                  const EquationsOfMotion& eom, const Model& m, const exmap& values) {
   const ex& t = m.time;
   const ex w = r.forcing_frequency;
   const ex qp = r.particular;
-  const ex g = substituted(substituted(c.expr, m.symbols->definitions()), exmap{{eom.q[0], qp}, {eom.dq[0], qp.diff(ex_to<symbol>(t))}});
+  const ex g = substituted(substituted(in_state, m.symbols->definitions()), exmap{{eom.q[0], qp}, {eom.dq[0], qp.diff(ex_to<symbol>(t))}});
   const symbol cs("cs"), sn("sn");
   const ex p = normal(g).subs(lst{cos(w * t) == cs, sin(w * t) == sn}).expand();
   if (p.has(t) || !p.is_polynomial(lst{cs, sn}) || p.degree(cs) > 1 || p.degree(sn) > 1 || p.coeff(cs, 1).has(sn)) return;
@@ -441,27 +447,9 @@ std::optional<EquationsOfMotion::Linearised> linearised_system(const Model& m, c
       lin.stiffness_matrix(static_cast<unsigned>(i), static_cast<unsigned>(j)) = *k;
     }
   }
-  const exmap values = m.symbols->values();
-  Eigen::MatrixXd Kn(n, n);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j) {
-      ex kij = lin.stiffness_matrix(static_cast<unsigned>(i), static_cast<unsigned>(j));
-      for (int depth = 0; depth < 8 && !kij.is_zero(); ++depth) kij = substituted(kij, m.symbols->definitions());
-      const auto v = kij.is_zero() ? std::optional<double>(0) : NormalForm(kij).approx_at(values);
-      if (!v) return lin;  // no numbers: the matrix alone
-      Kn(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = *v;
-    }
-  const Eigen::EigenSolver<Eigen::MatrixXd> es(Kn);
-  if (es.info() != Eigen::Success) return lin;
-  const double scale = Kn.cwiseAbs().maxCoeff();
-  for (Eigen::Index i = 0; i < es.eigenvalues().size(); ++i) {
-    const auto ev = es.eigenvalues()(i);
-    // A zero eigenvalue is a free mode (a cart that rolls on with no spring): frequency 0.
-    const double tiny = 1e-12 * (1 + scale);
-    if (std::abs(ev.imag()) > 1e-9 * (1 + std::abs(ev.real())) || ev.real() < -tiny) return std::nullopt;  // not a stable rest
-    lin.frequencies.push_back(ev.real() <= tiny ? 0.0 : std::sqrt(ev.real()));
-  }
-  std::sort(lin.frequencies.begin(), lin.frequencies.end());
+  const auto frequencies = small_oscillations(m, lin.stiffness_matrix);
+  if (!frequencies) return std::nullopt;  // not a stable rest
+  lin.frequencies = *frequencies;
   return lin;
 }
 
@@ -561,6 +549,10 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
   eom.ddq = spec.accelerations;
   if (sol.status == Solution::Status::inconsistent) {
     out.problem = "the equations are inconsistent, so there is no motion to follow";
+    return out;
+  }
+  if (!sol.unsolved.empty()) {
+    follow_mass_form(m, sol.mass_form, out);
     return out;
   }
   std::vector<ex> state = eom.q;
@@ -697,6 +689,9 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
       eom.linear = false;
     }
   }
+  // A mass matrix that turns with the coordinates (coupled links): the equations also as a
+  // person writes them, M(q) q'' = F.
+  if (!mass_constant && n > 1) take_mass_form(m, eom);
   if (eom.linear) {
     eom.K = matrix(n, n);
     eom.C = matrix(n, n);
@@ -1056,7 +1051,7 @@ std::optional<Motion> analyze_motion(const Model& m, const EquationSystem& s, co
         }
       }
     }
-    if (!r.forcing_frequency.is_zero()) steady_state(ct, c, r, eom, m, values);
+    if (!r.forcing_frequency.is_zero()) steady_state(ct, c, in_state, r, eom, m, values);
     out.conditions.push_back(std::move(ct));
   }
   return out;

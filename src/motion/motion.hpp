@@ -32,6 +32,9 @@ struct EquationsOfMotion {
   bool linear = false;
   std::string nonlinear;
   GiNaC::matrix M, C, K;  // M is made whenever it is constant (also for nonlinear motion)
+  // The instant left unsolved (instant_left_to_motion): the equations in the mass-matrix
+  // form M(q) q'' = F(q, q', t), M in the coordinates and `forcing` F; no `acceleration`.
+  bool mass_form = false;
   std::vector<GiNaC::ex> forcing;
   std::optional<std::vector<GiNaC::ex>> equilibrium;  // K q = F, when F is constant and K invertible
   // More than one degree of freedom, linear, with numbers: the undamped natural frequencies

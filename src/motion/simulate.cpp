@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 
+#include <Eigen/Dense>
 #include <boost/numeric/odeint.hpp>
 
 #include "expr/parse.hpp"
@@ -77,8 +78,16 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
   };
   const std::size_t n = eom.dof;
   std::vector<Compiled> accel;
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = 0; i < n && !eom.mass_form; ++i)
     if (auto c = compile(eom.acceleration[i], "the acceleration " + to_text(eom.ddq[i]))) accel.push_back(*c);
+  // The mass-matrix form: M(q) and F compiled, M q'' = F solved at every evaluation.
+  std::vector<std::pair<Eigen::Index, Compiled>> mass;  // row * n + column, for the entries that are not 0
+  for (std::size_t i = 0; i < n && eom.mass_form; ++i) {
+    if (auto c = compile(eom.forcing[i], "the forcing of " + to_text(eom.q[i]))) accel.push_back(*c);
+    for (std::size_t j = 0; j < n; ++j)
+      if (const ex& e = eom.M(static_cast<unsigned>(i), static_cast<unsigned>(j)); !e.is_zero())
+        if (auto c = compile(e, "the mass matrix")) mass.emplace_back(static_cast<Eigen::Index>(i * n + j), *c);
+  }
   struct Watched {
     Compiled g;
     std::string op, what;
@@ -144,12 +153,20 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
     in[0] = t;
     for (std::size_t i = 0; i < 2 * n; ++i) in[1 + i] = s[i];
   };
+  const auto size = static_cast<Eigen::Index>(n);
+  Eigen::MatrixXd Mq = Eigen::MatrixXd::Zero(size, size);
+  Eigen::VectorXd Fq(size);
   auto rhs = [&](const State& s, State& dsdt, double t) {
     load(t, s);
     for (std::size_t i = 0; i < n; ++i) {
       dsdt[i] = s[n + i];
       dsdt[n + i] = accel[i](in.data());
     }
+    if (!eom.mass_form) return;
+    for (const auto& [at, c] : mass) Mq(at / size, at % size) = c(in.data());
+    for (Eigen::Index i = 0; i < size; ++i) Fq(i) = dsdt[n + static_cast<std::size_t>(i)];
+    const Eigen::VectorXd a = Mq.ldlt().solve(Fq);
+    for (Eigen::Index i = 0; i < size; ++i) dsdt[n + static_cast<std::size_t>(i)] = a(i);
   };
 
   Simulation out;

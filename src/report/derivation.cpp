@@ -253,7 +253,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   {
     const auto [names, shown] = listed(s.unknowns);
     text_with(count(s.equations.size(), "equation") + " in " + count(s.unknowns.size(), "unknown") + " (" + names +
-                  "); rank " + std::to_string(sol.rank) + ".",
+                  ")" + (sol.unsolved.empty() ? "; rank " + std::to_string(sol.rank) : std::string()) + ".",
               shown);
   }
   {
@@ -283,7 +283,10 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       if (group.size() > 1)
         text("Redundant: " + join(group, ", ") + " are linearly dependent (one follows from the others).");
   }
-  switch (sol.status) {
+  if (!sol.unsolved.empty()) {
+    d.status = "not_solved";
+    text("They are not solved here: " + sol.unsolved + ".");
+  } else switch (sol.status) {
     case Solution::Status::determined: {
       d.status = "determined";
       // The status of each quantity is said once: where an answer asked for still needs a
@@ -338,7 +341,7 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   exmap naming;
   if (shared) naming[shared->second] = shared->first;
   auto named = [&](const ex& e) { return shared ? e.subs(naming, subs_options::no_pattern) : e; };
-  if (sol.status != Solution::Status::inconsistent) {
+  if (sol.status != Solution::Status::inconsistent && sol.unsolved.empty()) {
     section("Results");
     if (shared) equation("a name for the sum the closed forms share", shared->first, shared->second);
     for (const auto& a : d.answers) {

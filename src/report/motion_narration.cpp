@@ -74,6 +74,14 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
         Step* st = equation("equilibrium", eom.q[i], (*eom.equilibrium)[i]);
         st->note = with_unit(number((*eom.equilibrium)[i], Dimension::length()));
       }
+  } else if (eom.mass_form) {
+    text("Equations of motion, the balances projected on each coordinate (the joint forces do no work on the motion the "
+         "coordinates allow, so they drop out), M(q) q'' = F (nonlinear: " + eom.nonlinear + "):");
+    for (std::size_t i = 0; i < eom.dof; ++i) {
+      ex lhs = 0;
+      for (std::size_t j = 0; j < eom.dof; ++j) lhs += eom.M(i, j) * eom.ddq[j];
+      equation("equation of motion ({})", lhs, eom.forcing[i])->math = {eom.q[i]};
+    }
   } else {
     text("Equations of motion, the constraint forces eliminated (nonlinear: " + eom.nonlinear + "):");
     for (std::size_t i = 0; i < eom.dof; ++i) equation("equation of motion ({})", eom.ddq[i], eom.acceleration[i])->math = {eom.q[i]};

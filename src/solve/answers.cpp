@@ -62,6 +62,7 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
   const SymbolTable& table = *m.symbols;
   // Answers: what `find` asks for, or every unknown.
   std::vector<Wanted> wanted = m.wanted;
+  if (!sol.unsolved.empty()) return out;  // nothing is asked, and nothing solved
   if (wanted.empty())
     for (const auto& u : s.unknowns) {
       const SymbolInfo* info = table.find(u);

@@ -12,6 +12,7 @@
 #include "core/diagnostics.hpp"
 #include "expr/pairs.hpp"
 #include "expr/print.hpp"
+#include "motion/mass_form.hpp"
 #include "solve/eliminate.hpp"
 
 namespace tackle {
@@ -304,23 +305,51 @@ std::optional<ex> reciprocal_form(const ex& n, const ex& nd, const ex& best) {
   return r;
 }
 
-ex simplest_uncached(const ex& e) {
-  ex n = normal_remembered(e);
-  const bool large = node_count(n, 301) > 300;
-  auto shorter = [&](const ex& a, const ex& b) { return tackle::shorter(a, b, large); };
-  // sin^2 + cos^2 = 1: the shorter of the two rewritings, when one is shorter (only a power
-  // of a sin or a cos can be rewritten: a long response in cos(omega_d t) has none).
-  if (has_trig_power(n))
-    for (const bool to_cos : {true, false}) {
-      const ex t = normal(pythagoras(n, to_cos));
-      if (shorter(t, n)) n = t;
-    }
+// The shortest form of n without rewriting by sin^2 + cos^2 = 1.
+ex simplest_as_written(const ex& n, bool large) {
   const ex nd = numer_denom_of_normal(n);
   const ex num = factored(nd.op(0)), den = factored(nd.op(1));
   const auto held = evaluated_quotient(num, den);  // (see pairs.hpp)
   const ex best = shorter_form(held ? *held : num / den, n, large);
   if (const auto r = reciprocal_form(n, nd, best)) return *r;
   return best;
+}
+
+// sin^2 + cos^2 = 1: the shortest of the forms of n, of n with every power of a sine written
+// in cosines, and the other way (and each of those back), each made as short as it goes; of
+// two equally short, the first in text order. The forms are compared as they are printed, so
+// that the choice does not depend on which of them the caller's n was, nor on the signs
+// GiNaC's hash order gives a normal form (a double pendulum's acceleration reached as its
+// sine form or its cosine form).
+ex shortest_rewriting(const ex& n, bool large) {
+  std::vector<ex> starts{n};
+  auto add = [&](const ex& e) {
+    if (std::none_of(starts.begin(), starts.end(), [&](const ex& s) { return s.is_equal(e); })) starts.push_back(e);
+  };
+  const ex c = normal(pythagoras(n, true)), s = normal(pythagoras(n, false));
+  add(c);
+  add(s);
+  add(normal(pythagoras(c, false)));
+  add(normal(pythagoras(s, true)));
+  ex best;
+  std::string best_text;
+  for (const ex& start : starts) {
+    const ex f = simplest_as_written(start, large);
+    const std::string text = to_text(f);
+    if (best_text.empty() || text.size() < best_text.size() || (text.size() == best_text.size() && text < best_text)) {
+      best = f;
+      best_text = text;
+    }
+  }
+  return best;
+}
+
+ex simplest_uncached(const ex& e) {
+  const ex n = normal_remembered(e);
+  const bool large = node_count(n, 301) > 300;
+  // (Only a power of a sin or a cos can be rewritten: a long response in cos(omega_d t) has none.)
+  if (has_trig_power(n)) return shortest_rewriting(n, large);
+  return simplest_as_written(n, large);
 }
 
 }  // namespace
@@ -791,6 +820,12 @@ ex roots_pulled_out(const ex& e) {
 }  // namespace
 
 Solution solve(const Model& model, const EquationSystem& s) {
+  if (LeftToMotion left = instant_left_to_motion(model); !left.why.empty()) {
+    Solution unsolved;
+    unsolved.unsolved = std::move(left.why);
+    unsolved.mass_form = std::move(left.form);
+    return unsolved;
+  }
   Solution sol = solve_equations(model.file, s.equations, s.unknowns);
   if (sol.status == Solution::Status::inconsistent) return sol;
   if (auto r = solve_level(model, s.rate_equations, SymbolRole::rate)) sol.rates = std::make_shared<const Solution>(std::move(*r));

@@ -18,6 +18,8 @@
 
 namespace tackle {
 
+struct MassForm;  // motion/mass_form.hpp
+
 struct Determined {
   GiNaC::ex unknown;
   GiNaC::ex value;  // closed form in the parameters
@@ -124,6 +126,10 @@ struct Solution {
   // Velocity and position questions: the constraints' rate (position) equations solved for
   // the rates (coordinates) of the bodies that are not given; only when one is asked for.
   std::shared_ptr<const Solution> rates, positions;
+  // Not solved, and why (instant_left_to_motion): nothing is asked at the instant and the
+  // motion has its equations without it. Empty when solved.
+  std::string unsolved;
+  std::shared_ptr<const MassForm> mass_form;  // unsolved: the motion's equations, made once
 
   [[nodiscard]] std::optional<GiNaC::ex> value_of(const GiNaC::ex& unknown) const;
 };

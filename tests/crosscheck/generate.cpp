@@ -70,6 +70,7 @@ std::string num(double v) { return fmt::format("{:g}", v); }
 struct Doc {
   std::string title, axes = "[y]", gravity;
   std::vector<std::string> params, bodies, points, connections, strings, layout, coords, initial;
+  std::string tail;  // written as it is after the rest (find:, given:)
   void param(const std::string& name, double value, const std::string& unit) {
     params.push_back(fmt::format("  {}: {{value: {}{}{}}}", name, num(value), unit.empty() ? "" : ", unit: " + unit,
                                  value <= 0 ? ", positive: false" : ""));
@@ -107,6 +108,7 @@ struct Doc {
       for (std::size_t i = 0; i < initial.size(); ++i) o << (i ? ", " : "") << initial[i];
       o << "}\n  until: 1\n";
     }
+    o << tail;
     return o.str();
   }
 };
@@ -977,6 +979,75 @@ std::string pivot_2d(Gen& g) {
   return d.text();
 }
 
+// A chain of links pinned end to end (issue 42, item 7): link 1 turns about the fixed pin P,
+// link i hangs from the end of link i - 1 at J_i; each angle from straight down. A link is a
+// bob (a particle at the end of a light rod), a uniform rod (its center at its middle) or a
+// body with its own inertia at the middle; each center is written in the angles above it, so
+// the pins add no constraint (n degrees of freedom). Sometimes a couple on one link, a force
+// at the last link's end.
+std::string links_2d(Gen& g) {
+  Doc d;
+  d.title = "Generated: a chain of links pinned end to end";
+  d.axes = "[x, y]";
+  d.param("g", 9.81, "m/s^2");
+  d.gravity = "[0, -g]";
+  // Two links: a chain of three takes tackle seconds at its instant (its accelerations are
+  // ratios of 3 x 3 determinants in the angles), too long for a family run by the thousand;
+  // longer chains are compared as examples and in bench/chains_vs_sympy.py.
+  const int n = 2;
+  d.points.push_back("P: [0, 0]");
+  std::string above_x, above_y;  // the end of the chain so far
+  std::vector<std::string> ends;  // each link's end, as an offset from its center (body frame)
+  for (int i = 1; i <= n; ++i) {
+    const std::string l = fmt::format("l_{}", i), th = fmt::format("theta_{}", i), body = fmt::format("L{}", i);
+    d.param(l, g.nice(0.5, 1.5), "m");
+    d.param(fmt::format("m_{}", i), g.nice(0.5, 3), "kg");
+    const int kind = g.integer(0, 2);  // 0 bob, 1 rod, 2 inertia at the middle
+    const std::string reach = kind == 0 ? l : l + "/2";
+    const std::string cx = above_x + (above_x.empty() ? "" : " + ") + reach + "*sin(" + th + ")";
+    const std::string cy = above_y + (above_y.empty() ? "-" : " - ") + reach + "*cos(" + th + ")";
+    std::string inertia;
+    if (kind == 1) inertia = ", shape: {rod: " + l + "}";
+    if (kind == 2) {
+      d.param(fmt::format("I_{}", i), g.nice(0.05, 0.5), "kg*m^2");
+      inertia = fmt::format(", inertia: I_{}", i);
+    }
+    d.bodies.push_back(fmt::format(R"~({}: {{mass: m_{}, angle: {}, center_of_mass: ["{}", "{}"]{}}})~", body, i, th, cx,
+                                   cy, inertia));
+    if (i == 1) d.connections.push_back("{type: pin, body: L1, at: P}");
+    else d.connections.push_back(fmt::format("{{type: pin_joint, body: L{}, other: {}, at: J_{}}}", i - 1, body, i));
+    if (i < n)
+      d.points.push_back(fmt::format(R"~(J_{}: {{on: {}, offset: [0, {}]}})~", i + 1, body,
+                                     kind == 0 ? "0" : "\"-" + l + "/2\""));
+    ends.push_back(kind == 0 ? "0" : "\"-" + l + "/2\"");
+    above_x += (above_x.empty() ? "" : " + ") + l + "*sin(" + th + ")";
+    above_y += (above_y.empty() ? "-" : " - ") + l + "*cos(" + th + ")";
+  }
+  if (g.chance(0.3)) {
+    d.param("M_0", g.nice(-5, 5), "N*m");
+    d.connections.push_back(fmt::format("{{type: couple, on: L{}, moment: M_0}}", g.integer(1, n)));
+  }
+  if (g.chance(0.3)) {
+    d.param("F_x", g.nice(-10, 10), "N");
+    d.points.push_back(fmt::format("K: {{on: L{}, offset: [0, {}]}}", n, ends.back()));
+    d.connections.push_back(fmt::format("{{type: force, on: L{}, at: K, force: [F_x, 0]}}", n));
+  }
+  std::vector<std::pair<std::string, double>> independent;
+  for (int i = 1; i <= n; ++i) {
+    const double th = g.nice(-0.8, 0.8);
+    d.layout.push_back(fmt::format("theta_{}: {}", i, num(th)));
+    independent.emplace_back(fmt::format("theta_{}", i), th);
+  }
+  motion_for(d, g, independent);
+  // Asked at the starting instant (tackle solves a chain's instant only when asked: its
+  // accelerations are ratios of determinants of the mass matrix).
+  std::string given, find;
+  for (std::size_t i = 0; i < d.initial.size(); ++i) given += (i ? ", " : "") + d.initial[i];
+  for (int i = 1; i <= n; ++i) find += fmt::format("{}ddot(theta_{})", i > 1 ? ", " : "", i);
+  d.tail = "given: {" + given + "}\nfind: [" + find + "]\n";
+  return d.text();
+}
+
 // Two stacked blocks with friction between them (friction_between): A on B, B on a smooth
 // floor (or a rough one, sliding the way the force pulls), on a slope or not, a force on A or
 // on B from 0 to twice the force at which A starts to slip on B (both regimes, and the
@@ -1054,7 +1125,7 @@ std::string generate(std::uint64_t seed, std::string* kind) {
       {"ring-2d", ring_2d},       {"slope-2d", slope_2d},     {"lengths-1d", lengths_1d}, {"carts-3d", carts_3d},
       {"welds-2d", welds_2d},     {"pulley-block-2d", pulley_block_2d}, {"incline-3d", incline_3d},
       {"pulley-block-3d", pulley_block_3d}, {"drum-2d", drum_2d}, {"wheel-2d", wheel_2d}, {"pivot-2d", pivot_2d},
-      {"stacked-2d", stacked_2d}};
+      {"stacked-2d", stacked_2d}, {"links-2d", links_2d}};
   const auto& f = families[seed % (sizeof(families) / sizeof(families[0]))];
   if (kind) *kind = f.first;
   return f.second(g);

@@ -20,7 +20,8 @@ namespace {
 // The model's first event along its motion (Model::watched): a requirement that is not met
 // (at the start: at t = 0; one that starts at 0 and falls: where it falls; else where it
 // stops being met: a string goes slack, a contact stops pushing, a grip slips), a slip against
-// the sliding direction the description assumes at the start, or a slip that turns.
+// the sliding direction the description assumes at the start (or, from rest, first growing
+// against it), or a slip that turns.
 class Events {
  public:
   Events(const Model& m, const State& start) : m_(m), tol_(1e-7 * std::max(1.0, m.largest_mass() * m.gravity_magnitude())) {
@@ -46,6 +47,9 @@ class Events {
         const double te = locate(k, t0, t1, at);
         if (!first || te < first->first) first = {te, w[k].first};
       } else if (sign_[k] == 0) {
+        // a slip from rest that first grows against the assumed sliding direction: the
+        // friction assumed would push the body along, from the start
+        if (slip_[k] && now < 0 && !first) first = {0.0, w[k].first + ": against the assumed sliding direction"};
         sign_[k] = now;
       }
     }

@@ -262,6 +262,20 @@ TEST_CASE("Examples: every example derives its expected closed forms and numbers
         same(mo.eom.K(0, 0), yaml_text(em["stiffness"]));
         same(mo.eom.forcing[0], yaml_text(em["forcing"]));
       }
+      if (const yaml::Node mm = em["mass_matrix"]) {  // M(q) q'' = F(q, q', t), row by row
+        REQUIRE(mo.eom.mass_form);
+        REQUIRE(mo.eom.M.rows() == mm.size());
+        for (std::size_t i = 0; i < mm.size(); ++i) {
+          REQUIRE(mo.eom.M.cols() == mm[i].size());
+          for (std::size_t j = 0; j < mm[i].size(); ++j)
+            same(mo.eom.M(static_cast<unsigned>(i), static_cast<unsigned>(j)), yaml_text(mm[i][j]));
+        }
+      }
+      if (const yaml::Node fv = em["forcing_vector"]) {
+        REQUIRE(mo.eom.mass_form);
+        REQUIRE(mo.eom.forcing.size() == fv.size());
+        for (std::size_t i = 0; i < fv.size(); ++i) same(mo.eom.forcing[i], yaml_text(fv[i]));
+      }
       if (em["acceleration"]) {  // a nonlinear equation of motion, ddot(q) = f(q, dot(q), t)
         REQUIRE(mo.eom.acceleration.size() == 1);
         same(mo.eom.acceleration[0], yaml_text(em["acceleration"]));

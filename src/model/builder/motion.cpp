@@ -133,10 +133,12 @@ void motion(BuildContext& ctx) {
     }
     if (!ok) usable = false;
   } else {
-    // Given coordinates first, then those `initial` gives, then those of bodies with mass,
-    // then the others in body order, each when it is independent of those chosen before it
-    // (a massless ring tied to a block by a string is described by the block's coordinate).
+    // Given coordinates of bodies with mass first, then those `initial` gives, then those of
+    // bodies with mass, then the others in body order, each when it is independent of those
+    // chosen before it (a massless ring tied to a block by a string is described by the
+    // block's coordinate, also when the ring's place is given at the instant).
     std::vector<std::size_t> order;
+    auto massive = [&](const Coordinate& c) { return m.bodies[c.body].has_mass && !m.bodies[c.body].mass.is_zero(); };
     auto in_initial = [&](const ex& q) {
       return std::any_of(md.initial.begin(), md.initial.end(), [&](const auto& kv) {
         const auto r = parse_expression(kv.first.text, *ctx.table);
@@ -145,10 +147,10 @@ void motion(BuildContext& ctx) {
     };
     // (Only the motion's own rates may be given: a rate in `initial` names its coordinate.)
     const std::vector<std::function<bool(const Coordinate&)>> preferences = {
-        [&](const Coordinate& c) { return contains(m.given, c.q); },
+        [&](const Coordinate& c) { return contains(m.given, c.q) && massive(c); },
         [&](const Coordinate& c) { return in_initial(c.rate); },
         [&](const Coordinate& c) { return in_initial(c.q); },
-        [&](const Coordinate& c) { return m.bodies[c.body].has_mass && !m.bodies[c.body].mass.is_zero(); },
+        massive,
         [&](const Coordinate&) { return true; }};
     for (const auto& preferred : preferences)
       for (std::size_t j = 0; j < n; ++j)

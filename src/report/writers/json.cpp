@@ -72,8 +72,13 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
                        {"lambda_squared", expr(e.linearised->stiffness)},
                        {"lambda", e.linearised->lambda ? J(*e.linearised->lambda) : J(nullptr)}};
   j["accelerations"] = J::array();
-  for (std::size_t i = 0; i < e.dof; ++i)
+  for (std::size_t i = 0; i < e.acceleration.size(); ++i)  // (none in the mass-matrix form)
     j["accelerations"].push_back({{"coordinate", to_text(e.q[i])}, {"acceleration", expr(e.acceleration[i])}});
+  if (e.mass_form) {  // M(q) q'' = F: the mass matrix in the coordinates, and F
+    j["mass"] = mat(e.M);
+    j["forcing"] = J::array();
+    for (const auto& f : e.forcing) j["forcing"].push_back(to_text(f));
+  }
   if (e.linear) {
     j["mass"] = mat(e.M);
     j["damping"] = mat(e.C);

@@ -4,11 +4,14 @@
 // motion by an independent Runge-Kutta integration of the hand-derived equation.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
 #include "motion/simulate.hpp"
 #include "numeric/evaluate.hpp"
+#include "report/derivation.hpp"
+#include "solve/solve.hpp"
 #include "../../support/helpers.hpp"
 
 using namespace tackle;
@@ -319,4 +322,189 @@ TEST_CASE("Massless ring: the motion is described by the coordinate 'initial' gi
   REQUIRE(a->motion);
   REQUIRE(a->motion->eom.q.size() == 1);
   CHECK(to_text(a->motion->eom.q[0]) == "x");
+}
+
+namespace {
+
+// Issue 42, item 3: examples/string-and-spring-at-a-massless-ring-forced.yaml. Block A (m) on
+// a smooth table at (x, 0), pulled back by -P - F_0 cos(w t); the string from A over the pulley
+// P_1 at (L, 0) straight down to the massless ring S at (L, y_S); a spring (k, l_0) from S down
+// to G at (L, -H). By hand: the string keeps (L - x) - y_S, so y_S = y_0 - x from x(0) = 0;
+// S's balance, T = k (y_S + H - l_0); A's, m x'' + k x = k (y_0 + H - l_0) - P - F_0 cos(w t).
+// With m = 2, k = 200, P = 20, F_0 = 10, w = 5, H = 1, l_0 = 0.5, y_0 = -0.3: lambda = 10,
+// x_e = 0.1, X = -F_0/(k - m w^2) = -1/15, and from rest at 0,
+// x(t) = 0.1 - cos(5 t)/15 - cos(10 t)/30, y_S = -0.3 - x, T = 200 (0.2 - x).
+const std::string driven_ring = "string-and-spring-at-a-massless-ring-forced.yaml";
+
+double driven_x(double t) { return 0.1 - std::cos(5 * t) / 15 - std::cos(10 * t) / 30; }
+
+// The string's T >= 0 along the closed-form response.
+const ConditionInTime* string_in_time(const Analysis& a) {
+  REQUIRE(a.motion);
+  REQUIRE(a.motion->response);
+  const auto c = std::find_if(a.motion->conditions.begin(), a.motion->conditions.end(),
+                              [](const ConditionInTime& x) { return x.condition.source == "string s"; });
+  REQUIRE(c != a.motion->conditions.end());
+  return &*c;
+}
+
+}  // namespace
+
+TEST_CASE("Massless ring: the spring acts on a driven block through the string and the ring, in time (2-D)", "[motion][massless][trust]") {
+  const auto a = run_text(read_example(driven_ring));
+  REQUIRE(a->motion);
+  REQUIRE(a->motion->problem.empty());
+  const EquationsOfMotion& eom = a->motion->eom;
+  REQUIRE(eom.dof == 1);
+  CHECK(to_text(eom.q[0]) == "x");
+  REQUIRE(eom.linear);
+  const SymbolTable& t = *a->model.symbols;
+  const ex m = t.find("m")->sym, k = t.find("k")->sym, P = t.find("P")->sym, F_0 = t.find("F_0")->sym, w = t.find("w")->sym,
+           H = t.find("H")->sym, l_0 = t.find("l_0")->sym, y_0 = t.find("y_0")->sym, time = a->model.time;
+  // The stiffness is the spring's (not 0, as when the ring was held at its start).
+  CHECK(normal(eom.M(0, 0) - m).is_zero());
+  CHECK(normal(eom.K(0, 0) - k).is_zero());
+  CHECK(normal(eom.forcing[0] - (k * (y_0 + H - l_0) - P - F_0 * cos(w * time))).is_zero());
+  REQUIRE(a->motion->response);
+  CHECK(a->motion->response->verified);
+  for (const double tt : {0.0, 0.3, 1.0}) {
+    const exmap at{{time, numeric(tt)}, {a->model.motion->lambda, numeric(10)}};
+    CHECK(number(a->motion->response->q, t, at) == Approx(driven_x(tt)).epsilon(1e-12).margin(1e-14));
+  }
+  // simulate follows the same motion: x, the ring's y_S = -0.3 - x and T = 200 (0.2 - x).
+  for (const double tt : {0.3, 0.7, 1.0}) {
+    INFO("t = " << tt);
+    const Simulation s = simulate(*a, SimulationSpec{tt, {"x", "y_S", "T"}, 2}, Location{"t.yaml", 1, 1});
+    REQUIRE(s.complete);
+    const double x = driven_x(tt);
+    CHECK(*s.table.y[0].back() == Approx(x).epsilon(1e-8));
+    CHECK(*s.table.y[1].back() == Approx(-0.3 - x).epsilon(1e-8));
+    CHECK(*s.table.y[2].back() == Approx(200 * (0.2 - x)).epsilon(1e-8));
+  }
+}
+
+TEST_CASE("Massless ring: the string's steady-state condition goes through the ring's coordinate", "[motion][massless][trust]") {
+  // T = P + k F_0/(k - m w^2) cos(w t) in the steady state: it holds for all t iff
+  // P^2 (k - m w^2)^2 - k^2 F_0^2 >= 0, which fails in the band k (P - F_0)/(m P) < w^2 <
+  // k (P + F_0)/(m P) (50 to 150 rad^2/s^2). Before, the condition kept y_S and read
+  // k^2 (...)^2 >= 0, a condition that always holds, also where the string goes slack.
+  auto check = [](const std::string& yaml, bool holds) {
+    const auto a = run_text(yaml);
+    const ConditionInTime* c = string_in_time(*a);
+    const SymbolTable& t = *a->model.symbols;
+    const ex m = t.find("m")->sym, k = t.find("k")->sym, P = t.find("P")->sym, F_0 = t.find("F_0")->sym, w = t.find("w")->sym;
+    REQUIRE(c->steady_offset);
+    CHECK(normal(*c->steady_offset - P).is_zero());
+    REQUIRE(c->steady_amplitude_condition);
+    CHECK_FALSE(c->steady_amplitude_condition->has(t.find("y_S")->sym));
+    CHECK_FALSE(holds_always(*c->steady_amplitude_condition, ">=").has_value());
+    const ex by_hand = pow(P, 2) * pow(k - m * pow(w, 2), 2) - pow(k, 2) * pow(F_0, 2);
+    CHECK(normal(*c->steady_amplitude_condition - by_hand).is_zero());
+    REQUIRE(c->band);
+    CHECK(c->band->fails_between);
+    CHECK(normal(c->band->low - k * (P - F_0) / (m * P)).is_zero());
+    CHECK(normal(c->band->high - k * (P + F_0) / (m * P)).is_zero());
+    REQUIRE(c->steady_holds);
+    CHECK(*c->steady_holds == holds);
+  };
+  SECTION("w = 5 rad/s (w^2 = 25, below the band): the string stays taut") { check(read_example(driven_ring), true); }
+  SECTION("w = 8 rad/s (w^2 = 64, in the band): the string goes slack in the steady state") {
+    check(example_with(driven_ring, "w: {value: 5,", "w: {value: 8,"), false);
+  }
+}
+
+TEST_CASE("Massless ring: a condition through the ring that always holds is said in words", "[motion][massless][report]") {
+  // Undriven, from rest at x = 0 with the ring at y_S(0) = l_0 - H + P/(2 k) (the spring
+  // stretched by P/(2 k)): T = k (y_S + H - l_0) = P/2 at the start, and with y_S = y_S(0) - x,
+  // T = P/2 - k x and m x'' + k x = P/2 - P: x(t) = -P/(2 k) (1 - cos(lambda t)), so
+  // T(t) = P - (P/2) cos(lambda t), least P/2 > 0 for every value of P (declared positive: a
+  // force may be negative otherwise, and then P - sqrt(P^2)/2 >= 0 is a condition, P >= 0).
+  std::string yaml = example_with(driven_ring, "\"-P - F_0*cos(w*t)\"", "\"-P\"");
+  yaml = yaml.replace(yaml.find("y_S: y_0}"), 9, "y_S: l_0 - H + P/(2*k)}");
+  yaml = yaml.replace(yaml.find("unit: N}"), 8, "unit: N, positive: true}");
+  const auto a = run_text(yaml);
+  const ConditionInTime* c = string_in_time(*a);
+  const SymbolTable& t = *a->model.symbols;
+  const ex P = t.find("P")->sym;
+  REQUIRE(c->extreme);
+  CHECK(normal(*c->extreme - P / 2).is_zero());
+  const std::string text = write(explain(*a), Format::text, true);
+  CHECK(text.find("Its least value over time, P/2, is never negative: this holds for every value of P.") != std::string::npos);
+  CHECK(text.find(">= 0    [least value over time]") == std::string::npos);
+}
+
+TEST_CASE("Massless ring: two springs in series oscillate at sqrt(k1 k2/(m (k1 + k2))) (2-D)", "[motion][massless][trust]") {
+  // The springs in series on the x axis of a plane: block A on a smooth floor at (x, 0), the
+  // massless ring S at (x_S, 0) between a spring k_2 (rest l_2) to the wall W at the origin and
+  // a spring k_1 (rest l_1) to A. By hand: S's balance, k_1 (x - x_S - l_1) = k_2 (x_S - l_2),
+  // at every instant; A's, m x'' = -k_1 (x - x_S - l_1) = -k (x - l_1 - l_2) with
+  // k = k_1 k_2/(k_1 + k_2) = 75 N/m, lambda^2 = k/m = 37.5; from rest at 1.2 m,
+  // x(t) = 1 + 0.2 cos(lambda t) and x_S = (100 (x - 0.5) + 150)/400.
+  const auto a = run_text(R"(title: two springs in series in a plane
+axes: [x, y]
+parameters:
+  m: {value: 2, unit: kg}
+  g: {value: 9.81, unit: m/s^2}
+  k_1: {value: 100, unit: N/m}
+  k_2: {value: 300, unit: N/m}
+  l_1: {value: 0.5, unit: m}
+  l_2: {value: 0.5, unit: m}
+gravity: [0, -g]
+bodies:
+  A: {mass: m, position: x, center_of_mass: [x, 0]}
+  S: {mass: 0, position: x_S, center_of_mass: [x_S, 0]}
+points:
+  W: [0, 0]
+connections:
+  - {type: roller, body: A, at: A, normal: [0, 1]}
+  - {type: spring, name: sp2, path: [W, S], k: k_2, rest_length: l_2}
+  - {type: spring, name: sp1, path: [S, A], k: k_1, rest_length: l_1}
+layout: {x: 1.2, x_S: 0.6}
+motion:
+  initial: {x: 1.2, dot(x): 0}
+  until: 1
+)");
+  REQUIRE(a->motion);
+  REQUIRE(a->motion->problem.empty());
+  const EquationsOfMotion& eom = a->motion->eom;
+  REQUIRE(eom.dof == 1);
+  REQUIRE(eom.linear);
+  const SymbolTable& t = *a->model.symbols;
+  const ex k_1 = t.find("k_1")->sym, k_2 = t.find("k_2")->sym;
+  CHECK(normal(eom.K(0, 0) - k_1 * k_2 / (k_1 + k_2)).is_zero());
+  REQUIRE(a->motion->response);
+  const double lambda = std::sqrt(37.5);
+  for (const double time : {0.2, 0.5, 0.9}) {
+    INFO("t = " << time);
+    const double x = 1 + 0.2 * std::cos(lambda * time);
+    const exmap at{{a->model.time, numeric(time)}, {a->model.motion->lambda, sqrt(numeric(75, 2))}};
+    CHECK(number(a->motion->response->q, t, at) == Approx(x).epsilon(1e-12));
+    const Simulation s = simulate(*a, SimulationSpec{time, {"x", "x_S"}, 2}, Location{"t.yaml", 1, 1});
+    REQUIRE(s.complete);
+    CHECK(*s.table.y[0].back() == Approx(x).epsilon(1e-8));
+    CHECK(*s.table.y[1].back() == Approx((100 * (x - 0.5) + 150) / 400).epsilon(1e-8));
+  }
+}
+
+TEST_CASE("Massless ring: its place given at the instant does not take the block's place in the motion", "[motion][massless]") {
+  // The driven ring with y_S = -0.3 m given: at the instant T = k (y_S + H - l_0) = 40 N; in
+  // time the motion is still described by the block's x (its rate is in 'initial'; before, the
+  // given y_S was chosen and 'initial' was asked for dot(y_S)), with the spring's stiffness,
+  // and simulate follows the ring, y_S = -0.3 - x, not its given place.
+  const auto a = run_text(example_with(driven_ring, "find: [T, ddot(x)]", "given: {y_S: {value: -0.3, unit: m}}\nfind: [T, ddot(x)]"));
+  const Derivation d = explain(*a);
+  REQUIRE(d.answers.size() == 2);
+  REQUIRE(d.answers[0].value);
+  CHECK(d.answers[0].value->approx == Approx(40).epsilon(1e-12));
+  REQUIRE(a->motion);
+  REQUIRE(a->motion->problem.empty());
+  REQUIRE(a->motion->eom.q.size() == 1);
+  CHECK(to_text(a->motion->eom.q[0]) == "x");
+  CHECK(normal(a->motion->eom.K(0, 0) - a->model.symbols->find("k")->sym).is_zero());
+  const Simulation s = simulate(*a, SimulationSpec{1.0, {"x", "y_S", "T"}, 2}, Location{"t.yaml", 1, 1});
+  REQUIRE(s.complete);
+  const double x = driven_x(1.0);
+  CHECK(*s.table.y[0].back() == Approx(x).epsilon(1e-8));
+  CHECK(*s.table.y[1].back() == Approx(-0.3 - x).epsilon(1e-8));
+  CHECK(*s.table.y[2].back() == Approx(200 * (0.2 - x)).epsilon(1e-8));
 }
