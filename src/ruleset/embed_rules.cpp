@@ -80,7 +80,7 @@ std::string maker(const Rule& r) {
   for (const auto& u : r.unknowns)
     os << "  r.unknowns.push_back(UnknownSpec{" << literal(u.local) << ", " << literal(u.name_template) << ", "
        << (u.rename_arg ? "std::optional<std::string>(" + literal(*u.rename_arg) + ")" : std::string("std::nullopt")) << ", "
-       << dimension(u.dimension) << "});\n";
+       << dimension(u.dimension) << ", " << literal(u.when) << "});\n";
   for (const auto& l : r.loads)
     os << "  r.loads.push_back(LoadSpec{" << enumerator("LoadSpec::Kind", l.kind) << ", " << literal(l.arg) << ", "
        << literal(l.expr) << ", " << literal(l.at_arg) << ", " << literal(l.couple) << ", " << literal(l.when) << ", "
@@ -93,7 +93,7 @@ std::string maker(const Rule& r) {
        << literal(v.otherwise) << ", " << literal(v.when) << ", " << location(v.at) << "});\n";
   for (const auto& c : r.checks)
     os << "  r.checks.push_back(CheckSpec{" << enumerator("CheckSpec::Kind", c.kind) << ", " << literal(c.arg) << ", "
-       << location(c.at) << ", " << literal(c.when) << "});\n";
+       << location(c.at) << ", " << literal(c.when) << ", " << literal(c.to) << "});\n";
   for (const auto& a : r.assumptions)
     os << "  r.assumptions.push_back(Assumption{" << literal(a.text) << ", " << literal(a.when) << "});\n";
   os << "  r.dimensions = {";

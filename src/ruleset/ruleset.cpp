@@ -14,6 +14,13 @@
 
 namespace tackle {
 
+std::optional<int> when_axes(const std::string& when) {
+  if (when == "1-D") return 1;
+  if (when == "2-D") return 2;
+  if (when == "3-D") return 3;
+  return std::nullopt;
+}
+
 const ArgSpec* Rule::arg(const std::string& key) const {
   for (const auto& a : args)
     if (a.key == key) return &a;
@@ -223,6 +230,16 @@ struct RuleReader {
     return found;
   }
 
+  // `when: ARG` names an argument of the rule; `when: 3-D` a number of axes the rule is for.
+  void check_when(const Rule& r, const std::string& when, const Location& at) {
+    if (const auto axes = when_axes(when)) {
+      if (std::find(r.dimensions.begin(), r.dimensions.end(), *axes) == r.dimensions.end())
+        diags.error(at, "'when' is '" + when + "', but the rule is not for " + when + " problems (see its 'dimensions')");
+      return;
+    }
+    if (!r.arg(when)) diags.error(at, "'when' names argument '" + when + "', which the rule does not declare");
+  }
+
   void check_arg_ref(const Rule& r, const std::string& key, ArgKind expected, const Location& at,
                      const std::string& what) {
     const ArgSpec* a = r.arg(key);
@@ -332,8 +349,12 @@ struct RuleReader {
         locals.push_back(a.key);
     if (auto n = root["unknowns"]; n && is_list(n, "'unknowns'", file, diags)) {
       for (const auto& u : n) {
-        if (!check_map(u, {"local", "name", "rename", "dimension"}, "an unknown of the rule", file, diags)) continue;
+        if (!check_map(u, {"local", "name", "rename", "dimension", "when"}, "an unknown of the rule", file, diags)) continue;
         UnknownSpec s;
+        if (u["when"]) {
+          s.when = u["when"].text();
+          check_when(r, s.when, where(u, file));
+        }
         s.local = need_scalar(u, "local", "an unknown");
         s.name_template = need_scalar(u, "name", "an unknown");
         if (auto rn = u["rename"]) {
@@ -381,7 +402,7 @@ struct RuleReader {
         s.arg = l[*kind].text();
         if (l["when"]) {
           s.when = l["when"].text();
-          if (!r.arg(s.when)) diags.error(s.at, "'when' names argument '" + s.when + "', which the rule does not declare");
+          check_when(r, s.when, s.at);
         }
         if (*kind == "on") {
           s.kind = LoadSpec::Kind::on;
@@ -467,7 +488,7 @@ struct RuleReader {
         s.at = where(v, file);
         if (v["when"]) {
           s.when = v["when"].text();
-          if (!r.arg(s.when)) diags.error(s.at, "'when' names argument '" + s.when + "', which the rule does not declare");
+          check_when(r, s.when, s.at);
         }
         s.holds = need_scalar(v, "holds", "a validity condition");
         s.meaning = need_scalar(v, "meaning", "a validity condition");
@@ -482,17 +503,26 @@ struct RuleReader {
     }
     if (auto n = root["checks"]; n && is_list(n, "'checks'", file, diags)) {
       for (const auto& c : n) {
-        if (!check_map(c, {"passes_over", "positive", "steady_at", "when"}, "a check of the rule", file, diags)) continue;
-        auto kind = which(c, {"passes_over", "positive", "steady_at"}, "a check");
+        if (!check_map(c, {"passes_over", "positive", "steady_at", "across", "to", "when"}, "a check of the rule", file, diags)) continue;
+        auto kind = which(c, {"passes_over", "positive", "steady_at", "across"}, "a check");
         if (!kind) continue;
         const CheckSpec::Kind k = *kind == "passes_over" ? CheckSpec::Kind::passes_over
                                   : *kind == "positive"  ? CheckSpec::Kind::positive
+                                  : *kind == "across"    ? CheckSpec::Kind::across
                                                          : CheckSpec::Kind::steady_at;
-        CheckSpec s{k, c[*kind].text(), where(c, file), {}};
-        check_arg_ref(r, s.arg, k == CheckSpec::Kind::positive ? ArgKind::expr : ArgKind::point, s.at, "a check");
+        CheckSpec s{k, c[*kind].text(), where(c, file), {}, {}};
+        if (k == CheckSpec::Kind::across) {
+          s.to = c["to"] ? c["to"].text() : "";
+          if (s.to.empty()) diags.error(s.at, "an 'across' check needs 'to' (the vector it is at right angles to)");
+          else check_arg_ref(r, s.to, ArgKind::vector, s.at, "a check");
+        }
+        check_arg_ref(r, s.arg, k == CheckSpec::Kind::positive ? ArgKind::expr
+                                : k == CheckSpec::Kind::across ? ArgKind::vector
+                                                               : ArgKind::point,
+                      s.at, "a check");
         if (c["when"]) {
           s.when = c["when"].text();
-          if (!r.arg(s.when)) diags.error(s.at, "'when' names argument '" + s.when + "', which the rule does not declare");
+          check_when(r, s.when, s.at);
         }
         r.checks.push_back(std::move(s));
       }
@@ -505,8 +535,7 @@ struct RuleReader {
           Assumption as{need_scalar(a, "text", "an assumption"), ""};
           if (a["when"]) {
             as.when = a["when"].text();
-            if (!r.arg(as.when))
-              diags.error(where(a, file), "'when' names argument '" + as.when + "', which the rule does not declare");
+            check_when(r, as.when, where(a, file));
           }
           r.assumptions.push_back(std::move(as));
         } else if (auto t = scalar(a, "an assumption", file, diags)) {

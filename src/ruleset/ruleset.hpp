@@ -30,11 +30,19 @@ struct ArgSpec {
   friend bool operator==(const ArgSpec&, const ArgSpec&) = default;
 };
 
+/// `when:` of a rule entry (an unknown, a load, a validity condition, a check, an
+/// assumption): empty (always), an optional argument (only when the connection gives it), or
+/// "1-D", "2-D", "3-D" (only in a problem with that many axes: a contact's friction is along
+/// one tangent in 2-D and anywhere in its tangent plane in 3-D). The number of axes of such a
+/// `when`, or nothing for an argument's name.
+[[nodiscard]] std::optional<int> when_axes(const std::string& when);
+
 struct UnknownSpec {
   std::string local;          // name inside the rule's expressions, e.g. T
   std::string name_template;  // e.g. "T_{name}": {key} is replaced by the argument's text
   std::optional<std::string> rename_arg;  // a `name` argument that overrides the template
   Dimension dimension;
+  std::string when;  // see when_axes()
   friend bool operator==(const UnknownSpec&, const UnknownSpec&) = default;
 };
 
@@ -94,13 +102,15 @@ struct ValiditySpec {
 /// Checks on the description: `passes_over` requires a string path to run over the point;
 /// `positive` requires an expression argument to be positive where its value is known;
 /// `steady_at` requires every strand at the point to keep its direction (a pulley with a
-/// radius: the wrapped arc keeps its length only then). `when`: only when that optional
-/// argument is given.
+/// radius: the wrapped arc keeps its length only then); `across` (with `to`) requires a vector
+/// argument at right angles to another, neither zero (a contact's tangent to its normal).
+/// `when`: only when that optional argument is given, or in that many axes (`3-D`).
 struct CheckSpec {
-  enum class Kind { passes_over, positive, steady_at } kind;
+  enum class Kind { passes_over, positive, steady_at, across } kind;
   std::string arg;
   Location at;
   std::string when;
+  std::string to;  // across: the vector argument `arg` must be at right angles to (both not zero)
   friend bool operator==(const CheckSpec&, const CheckSpec&) = default;
 };
 

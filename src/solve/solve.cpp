@@ -482,7 +482,9 @@ std::vector<SolvedFor> solve_reduced(const ex& rest, const std::string& reduced_
   if (!nd.op(1).is_equal(1)) return out;  // a denominator of unknown sign remains
   const ex poly = nd.op(0).expand();
   for (const ex& p : parameters) {
-    if (!poly.has(p)) continue;
+    // (Not in p where p is inside a root, a function or a power of a non-integer exponent:
+    // a normal written in a parameter, [a, 0, 1], has it in sqrt(a^2 + 1).)
+    if (!poly.has(p) || !poly.is_polynomial(p)) continue;
     const int degree = poly.degree(p);
     // a p + b, or a p^2 + b for a positive p (a speed v: v^2 <= r g tan(beta) gives v <=
     // sqrt(r g tan(beta)) where that root is real).
@@ -763,6 +765,58 @@ AcuteAngles acute_angles(const Model& model) {
   return out;
 }
 
+// Square roots with the factors of known positive sign taken out of them: sqrt(m^2 r^2
+// (omega^4 + alpha^2)) is m r sqrt(omega^4 + alpha^2) for positive m and r (the size of a
+// friction in the tangent plane, sqrt(F_1^2 + F_2^2)), and so are the fourth powers of real
+// factors (sqrt(omega^4) = omega^2). A root whose radicand has no such factor is left as it is.
+struct RootsPulledOut : map_function {
+  ex operator()(const ex& e) override {
+    if (!is_exactly<power>(e)) return e.map(*this);
+    const ex expo = e.op(1);
+    if (!is_exactly<numeric>(expo) || !(2 * ex_to<numeric>(expo)).is_odd()) return e.map(*this);
+    const ex base = (*this)(e.op(0));
+    const ex nd = normal(base).numer_denom();
+    ex out = 1, in = 1;
+    bool pulled = false;
+    for (int side = 0; side < 2; ++side) {
+      const ex factored = factor(nd.op(side));
+      const exvector factors = is_exactly<mul>(factored) ? exvector(factored.begin(), factored.end()) : exvector{factored};
+      ex side_out = 1, side_in = 1;
+      for (const ex& f : factors) {
+        ex b = f, k = 1;
+        if (is_exactly<power>(f) && f.op(1).info(info_flags::posint)) b = f.op(0), k = f.op(1);
+        const int kk = static_cast<int>(ex_to<numeric>(k).to_int());
+        if (kk >= 2 && !is_exactly<numeric>(b) && sign_of(b).value_or(0) > 0) {
+          side_out *= pow(b, kk / 2);
+          side_in *= pow(b, kk % 2);
+          pulled = true;
+        } else if (kk >= 4 && !is_exactly<numeric>(b) && b.info(info_flags::real)) {
+          // A real base of unknown sign: sqrt(omega^4) = omega^2 (an even power under the root).
+          side_out *= pow(b, 2 * (kk / 4));
+          side_in *= pow(b, kk % 4);
+          pulled = true;
+        } else {
+          side_in *= f;
+        }
+      }
+      out = side == 0 ? side_out : out / side_out;
+      in = side == 0 ? side_in : in / side_in;
+    }
+    if (!pulled) return pow(base, expo);
+    // (out^2 in)^(k/2) = out^k in^(k/2), out being positive.
+    return pow(out, 2 * expo) * pow(in, expo);
+  }
+};
+
+ex roots_pulled_out(const ex& e) {
+  bool root = false;
+  for (const_preorder_iterator it = e.preorder_begin(); it != e.preorder_end() && !root; ++it)
+    root = is_exactly<power>(*it) && is_exactly<numeric>(it->op(1)) && !it->op(1).info(info_flags::integer);
+  if (!root) return e;
+  RootsPulledOut pull;
+  return pull(e);
+}
+
 }  // namespace
 
 Solution solve(const Model& model, const EquationSystem& s) {
@@ -790,7 +844,7 @@ Solution solve(const Model& model, const EquationSystem& s) {
   for (const auto& c : model.conditions) {
     CheckedCondition cc;
     cc.condition = &c;
-    const ex normal_form = normal_remembered(given_put_in(substituted(c.lhs - c.rhs, sol.general)));
+    const ex normal_form = normal_remembered(roots_pulled_out(given_put_in(substituted(c.lhs - c.rhs, sol.general))));
     cc.expr = simplest(normal_form);
     // The symbols are gathered once (has() of each symbol would be quadratic per condition),
     // by hash: they are only looked up.

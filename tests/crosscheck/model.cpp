@@ -575,6 +575,9 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       }
       grips(at, c, "the rolling contact at " + at);
     } else if (type == "sticking") {
+      // (In 3-D tackle's friction lies anywhere in the tangent plane, two components and a
+      // cone |F| <= mu N on both: not modelled here yet.)
+      if (dims_ == 3) throw Unsupported("a 3-D sticking contact (friction in its tangent plane)");
       const int b = body_of(c, "body");
       const std::string at = need_text(c, "at");
       add_project("N_" + at, material(at, b), b, unit_vec(c, "normal"));

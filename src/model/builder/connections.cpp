@@ -4,6 +4,7 @@
 #include "model/builder/stages.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include <fmt/format.h>
@@ -18,6 +19,14 @@ namespace tackle::build {
 using namespace GiNaC;
 
 namespace {
+
+// Whether a rule entry with this `when` applies to the connection: always, when it gives the
+// optional argument named, or in a problem with the number of axes named ("3-D").
+bool applies(const BuildContext& ctx, const ConnectionDesc& c, const std::string& when) {
+  if (when.empty()) return true;
+  if (const auto axes = when_axes(when)) return *axes == ctx.m.dims();
+  return c.arg(when) != nullptr;
+}
 
 std::string substitute(BuildContext& ctx, std::string tmpl, const ConnectionDesc& c, bool& ok) {
   std::size_t pos;
@@ -233,9 +242,62 @@ std::string label_of(const Instance& in) {
   return label;
 }
 
+// `across` checks, before the loads are made of the vectors: a direction that is not zero, at
+// right angles to another (a contact's tangent to its normal), whatever the parameters it is
+// written in, or at least at their given numbers.
+bool vectors_fit(BuildContext& ctx, const Instance& in) {
+  bool ok = true;
+  const exmap values = ctx.table->values();
+  auto where = [&](const std::string& key) {
+    const ArgDesc* a = in.c.arg(key);
+    return a && !a->items.empty() ? a->items[0].at : a ? a->key.at : in.c.at;
+  };
+  // "" when not zero, else how: zero, or zero at the given numbers.
+  auto zero = [&](const Vec& v) -> std::string {
+    bool symbolic = true, numeric_zero = true;
+    for (const ex& x : v) {
+      const ex n = fewer_trig_terms(normal(x.expand()));
+      symbolic = symbolic && n.is_zero();
+      const ex at = evalf(substituted(n, values));
+      numeric_zero = numeric_zero && is_a<numeric>(at) && std::abs(ex_to<numeric>(at).to_double()) < 1e-12;
+    }
+    return symbolic ? "the zero vector" : numeric_zero ? "the zero vector at the given numbers" : "";
+  };
+  for (const auto& chk : in.rule.checks) {
+    if (chk.kind != CheckSpec::Kind::across || !applies(ctx, in.c, chk.when)) continue;
+    const auto v = in.vector_args.find(chk.arg), w = in.vector_args.find(chk.to);
+    if (v == in.vector_args.end() || w == in.vector_args.end()) continue;
+    bool nonzero = true;
+    for (const auto& [key, vec] : {std::pair{chk.to, w->second}, std::pair{chk.arg, v->second}})
+      if (const std::string how = zero(vec); !how.empty()) {
+        ctx.diags.error(where(key), "'" + key + "' of a " + in.what + " is " + how +
+                                        (key == chk.to ? std::string(" (expected a direction)")
+                                                       : " (expected a direction at right angles to '" + chk.to + "')"));
+        ok = nonzero = false;
+      }
+    if (!nonzero) continue;
+    const ex dot = fewer_trig_terms(normal(inner(v->second, w->second).expand()));
+    if (dot.is_zero()) continue;
+    const ex at = evalf(substituted(dot, values));
+    const bool number = is_a<numeric>(at) && ex_to<numeric>(at).is_real();
+    if (number && std::abs(ex_to<numeric>(at).to_double()) < 1e-12) continue;  // at right angles at the given numbers
+    std::string vs;
+    for (int i = 0; i < ctx.m.dims(); ++i) vs += (i ? ", " : "") + to_text(v->second[i]);
+    std::string ws;
+    for (int i = 0; i < ctx.m.dims(); ++i) ws += (i ? ", " : "") + to_text(w->second[i]);
+    ctx.diags.error(where(chk.arg), "'" + chk.arg + "' of a " + in.what + ", [" + vs + "], is not at right angles to its '" + chk.to +
+                                        "', [" + ws + "]: their dot product is " + to_text(dot) +
+                                        (number && !is_a<numeric>(dot) ? fmt::format(" = {:g} at the given numbers", ex_to<numeric>(at).to_double()) : std::string()) +
+                                        " (expected a direction at right angles to '" + chk.to + "')");
+    ok = false;
+  }
+  return ok;
+}
+
 bool make_unknowns(BuildContext& ctx, Instance& in) {
   const ConnectionDesc& c = in.c;
   for (const auto& u : in.rule.unknowns) {
+    if (!applies(ctx, c, u.when)) continue;
     std::string name;
     Location at = c.at;
     if (u.rename_arg && c.arg(*u.rename_arg)) {
@@ -281,7 +343,7 @@ void add_loads(BuildContext& ctx, Instance& in) {
   auto& body_args = in.body_args;
   auto& expr_args = in.expr_args;
   for (const auto& l : rule->loads) {
-    if (!l.when.empty() && !c.arg(l.when)) continue;  // for an optional argument not given
+    if (!applies(ctx, c, l.when)) continue;  // for an optional argument not given, or another number of axes
     if (l.kind == LoadSpec::Kind::on) {
       auto it = point_args.find(l.arg);
       if (it == point_args.end()) continue;  // optional argument not given
@@ -589,13 +651,13 @@ void add_conditions(BuildContext& ctx, Instance& in) {
   const Rule* rule = &in.rule;
   const std::string& label = in.label;
   for (const auto& v : rule->validity) {
-    if (!v.when.empty() && !c.arg(v.when)) continue;
+    if (!applies(ctx, c, v.when)) continue;
     auto r = parse_relation(v.holds, in.scope);
     for (const auto& p : r.problems) ctx.diags.error(v.at, "rule '" + rule->type + "': " + p.message);
     if (r.value) ctx.m.conditions.push_back({r.value->lhs, r.value->rhs, r.value->op, v.meaning, v.otherwise, label});
   }
   for (const auto& a : rule->assumptions) {
-    if (!a.when.empty() && !c.arg(a.when)) continue;
+    if (!applies(ctx, c, a.when)) continue;
     if (std::find(ctx.m.assumptions.begin(), ctx.m.assumptions.end(), a.text) == ctx.m.assumptions.end()) ctx.m.assumptions.push_back(a.text);
   }
   {
@@ -660,7 +722,7 @@ void add_conditions(BuildContext& ctx, Instance& in) {
     }
   }
   for (const auto& chk : rule->checks) {
-    if (!chk.when.empty() && !c.arg(chk.when)) continue;
+    if (!applies(ctx, c, chk.when) || chk.kind == CheckSpec::Kind::across) continue;  // (across: vectors_fit)
     if (chk.kind == CheckSpec::Kind::positive) {
       // A stiffness or damping coefficient: positive where its value is known.
       auto it = in.expr_args.find(chk.arg);
@@ -704,6 +766,7 @@ void connection(BuildContext& ctx, const ConnectionDesc& c, std::set<std::string
   }
   if (at_point_of_another_body(ctx, in)) return;
   in.label = label_of(in);
+  if (!vectors_fit(ctx, in)) return;
   if (!make_unknowns(ctx, in)) return;
   add_loads(ctx, in);
   add_constraints(ctx, in);
