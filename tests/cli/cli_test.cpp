@@ -114,7 +114,7 @@ TEST_CASE("CLI: exit codes: 0 ok, 1 input error, 2 usage", "[cli]") {
   CHECK(missing.err == "no/such/file.yaml: cannot read the file\n");
 }
 
-TEST_CASE("CLI: page writes one self-contained page; a bad endpoint is a usage error, a bad file an input error", "[cli][page]") {
+TEST_CASE("CLI: page writes one self-contained page, a bad endpoint is a usage error, a bad file an input error", "[cli][page]") {
   const Run page = run_tackle("page " + examples + "sample-12.3-two-mass-pulley.yaml --endpoint /tackle");
   CHECK(page.code == 0);
   CHECK(page.out.rfind("<!DOCTYPE html>", 0) == 0);
@@ -280,7 +280,7 @@ TEST_CASE("CLI: check one answer, as text and JSON, and usage errors exit 2", "[
   CHECK(run_tackle("check " + board + " --unknown T_HI --answer x --tolerance 2").code == 2);
 }
 
-TEST_CASE("CLI: check a free body diagram, as text and JSON; bad diagrams exit 1, usage 2", "[cli][check][fbd]") {
+TEST_CASE("CLI: check a free body diagram, as text and JSON, bad diagrams exit 1, usage 2", "[cli][check][fbd]") {
   const fs::path dir = fs::temp_directory_path() / ("tackle-fbd-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   // By hand (sample 12.3): three strands of the string pull B toward C, along -x.
@@ -1017,7 +1017,7 @@ TEST_CASE("Docs: every YAML block in the README and docs/ reads as YAML, and a w
   CHECK(derived >= 1);
 }
 
-TEST_CASE("CLI: check --batch --gradebook grades a class of five; the line that cannot be read is that student's invalid", "[cli][check][batch][gradebook]") {
+TEST_CASE("CLI: check --batch --gradebook grades a class of five, the line that cannot be read is that student's invalid", "[cli][check][batch][gradebook]") {
   const fs::path dir = fs::temp_directory_path() / ("tackle-gradebook-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string data = TACKLE_SOURCE_DIR "/tests/data/gradebook/";
@@ -1061,7 +1061,7 @@ TEST_CASE("CLI: --gradebook: the tutorial's class is tests/data/gradebook/class.
   CHECK(tutorial.find("$ cat grades.csv\n" + shown + "```\n") != std::string::npos);
 }
 
-TEST_CASE("CLI: --gradebook: a line without a student is an input error and nothing is written; usage errors", "[cli][check][batch][gradebook]") {
+TEST_CASE("CLI: --gradebook: a line without a student is an input error and nothing is written, usage errors", "[cli][check][batch][gradebook]") {
   const fs::path dir = fs::temp_directory_path() / ("tackle-gradebook-errors-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string pulley = examples + "sample-12.3-two-mass-pulley.yaml";

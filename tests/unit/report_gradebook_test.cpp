@@ -42,7 +42,7 @@ Gradebook small_class() {
 
 }  // namespace
 
-TEST_CASE("gradebook: plain: a row per student, a column per question, the total; invalid and unanswered cells", "[report][gradebook]") {
+TEST_CASE("gradebook: plain: a row per student, a column per question, the total, invalid and unanswered cells", "[report][gradebook]") {
   const Gradebook book = small_class();
   CHECK(book.problems().empty());
   CHECK(book.students() == 3);
@@ -55,7 +55,7 @@ TEST_CASE("gradebook: plain: a row per student, a column per question, the total
   CHECK(book.invalid_cells() == std::vector<std::string>{"Doe, \"Bo\": q2"});
 }
 
-TEST_CASE("gradebook: canvas: the student columns, a Points Possible row, Final Points; no text in a grade", "[report][gradebook]") {
+TEST_CASE("gradebook: canvas: the student columns, a Points Possible row, Final Points, no text in a grade", "[report][gradebook]") {
   CHECK(small_class().csv(GradebookFormat::canvas) ==
         "Student,ID,SIS User ID,SIS Login ID,Section,q1,q2,Final Points\r\n"
         "Points Possible,,,,,2,1,\r\n"
@@ -64,7 +64,7 @@ TEST_CASE("gradebook: canvas: the student columns, a Points Possible row, Final 
         "cy,,cy,cy,,,0.5,0.5\r\n");
 }
 
-TEST_CASE("gradebook: moodle: an identifier column, the questions, the total; no grade is -", "[report][gradebook]") {
+TEST_CASE("gradebook: moodle: an identifier column, the questions, the total, no grade is -", "[report][gradebook]") {
   CHECK(small_class().csv(GradebookFormat::moodle) ==
         "student,q1,q2,total\r\n"
         "ada,2,1,3\r\n"

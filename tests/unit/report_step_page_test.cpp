@@ -85,7 +85,7 @@ TEST_CASE("Step page: its hints are the problem's own, never another example's",
   CHECK(pushed.find("<code>... = const</code>") == std::string::npos);
 }
 
-TEST_CASE("Step page: a 2-D problem's form asks for angles; an endpoint elsewhere is the one other source", "[page]") {
+TEST_CASE("Step page: a 2-D problem's form asks for angles, an endpoint elsewhere is the one other source", "[page]") {
   const std::string page = page_of("sample-12.7-suitcase.yaml", "http://127.0.0.1:8123/tackle/");
   const auto c = config_of(page);
   CHECK(c["dims"] == 2);

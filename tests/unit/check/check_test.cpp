@@ -355,7 +355,7 @@ TEST_CASE("Grading: PrairieLearn lists the first 100 answers that cannot be grad
   CHECK(j["message"] == "150 of 150 answers cannot be graded as typed: fix them and submit again");
 }
 
-TEST_CASE("Grading: a line longer than 1 MiB stops the batch at that line; a long line under it is invalid", "[check][batch][limits]") {
+TEST_CASE("Grading: a line longer than 1 MiB stops the batch at that line, a long line under it is invalid", "[check][batch][limits]") {
   // Exactly 1 MiB (1048576 bytes) is read, and is an invalid answer (past the checker's bound).
   GradeOptions options;
   options.source = "batch.jsonl";

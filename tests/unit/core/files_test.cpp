@@ -170,7 +170,7 @@ TEST_CASE("Files: a write that fails (/dev/full) is an error that says why", "[f
   CHECK(S_ISCHR(st.st_mode));
 }
 
-TEST_CASE("Files: a symbolic link stays a link; its target is replaced, with its mode", "[files]") {
+TEST_CASE("Files: a symbolic link stays a link, its target is replaced, with its mode", "[files]") {
   const TempDir dir("links");
   const auto target = dir.path / "target.txt";
   std::ofstream(target) << "old\n";

@@ -30,7 +30,7 @@ std::string at(const yaml::Node& n) {
 
 }  // namespace
 
-TEST_CASE("YAML: empty values and the null words are null; quoted ones are text", "[yaml]") {
+TEST_CASE("YAML: empty values and the null words are null, quoted ones are text", "[yaml]") {
   const auto l = load("{a: , b: ~, c: null, d: Null, e: NULL, f: \"\", g: 'null', h: nil}");
   REQUIRE(l.errors.empty());
   const yaml::Node r = l.doc.root();
@@ -76,7 +76,7 @@ TEST_CASE("YAML: a mapping keeps its entries in order, a repeated key too", "[ya
   CHECK(format(diags.items()[0]) == "t.yaml:1:14: duplicate key 'b' in the map");
 }
 
-TEST_CASE("YAML: a list is walked item by item; asking a list for a key gives nothing", "[yaml]") {
+TEST_CASE("YAML: a list is walked item by item, asking a list for a key gives nothing", "[yaml]") {
   const auto l = load("[1, [2, 3], {k: v}]");
   REQUIRE(l.errors.empty());
   const yaml::Node r = l.doc.root();
@@ -121,7 +121,7 @@ TEST_CASE("YAML: a syntax error is located, with what libyaml was reading", "[ya
   CHECK(load("a: b\n\xff").errors == std::vector<std::string>{"t.yaml:2:1: invalid UTF-8 byte 0xFF (expected UTF-8 text)"});
 }
 
-TEST_CASE("YAML: an empty text is null; only the first document is read", "[yaml]") {
+TEST_CASE("YAML: an empty text is null, only the first document is read", "[yaml]") {
   const auto empty = load("# nothing but a comment\n");
   REQUIRE(empty.errors.empty());
   CHECK(empty.doc.root().is_null());

@@ -223,7 +223,7 @@ connections:
                       "its forces through its center of mass, or an angle and a shape or inertia to turn with)"});
 }
 
-TEST_CASE("Particles: no balance of moments for a block without shape, size or angle; one for a bob, a pinned block, a suitcase", "[regimes]") {
+TEST_CASE("Particles: no balance of moments for a block without shape, size or angle, one for a bob, a pinned block, a suitcase", "[regimes]") {
   auto ambs = [](const Analysis& a) {
     std::vector<std::string> out;
     for (const auto& e : a.system.equations)
