@@ -225,7 +225,6 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
     std::string problem;
     GradedLine graded;
     graded.line = physical;
-    // Bounded before parsing: a submission line is at most a few answers long.
     // Whose answer and which question, for the gradebook.
     const auto read_who = [&](const nlohmann::json& j) {
       graded.object = true;
@@ -233,6 +232,7 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
         graded.student = j["student"].is_string() ? j["student"].get<std::string>() : j["student"].dump();
       if (j.contains("id")) graded.id = j["id"].is_string() ? j["id"].get<std::string>() : j["id"].dump(-1, ' ', false, J::error_handler_t::replace);
     };
+    // Bounded before parsing: a submission line is at most a few answers long.
     if (line.size() > 4 * checker.options().limits.max_length + 1024) {
       problem = "the line is too long (" + std::to_string(line.size()) + " characters)";
       // Still the student's: read for whom it is (the line is at most max_batch_line_bytes).

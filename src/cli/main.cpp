@@ -426,9 +426,7 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
       // A line whose student or question is not known: no gradebook (and no other output),
       // rather than one that leaves a student out.
       if (const auto problems = book->problems(); !problems.empty()) throw tackle::InputError(problems);
-      const auto format = o.gradebook_format == "canvas"   ? tackle::GradebookFormat::canvas
-                          : o.gradebook_format == "moodle" ? tackle::GradebookFormat::moodle
-                                                           : tackle::GradebookFormat::plain;
+      const auto format = tackle::gradebook_format(o.gradebook_format);
       const std::string csv = book->csv(format);
       if (gradebook_file) gradebook_file->stream() << csv;
       else if (std::cout << csv; !standard_output_written()) return 1;

@@ -7,6 +7,12 @@
 
 namespace tackle {
 
+GradebookFormat gradebook_format(std::string_view name) {
+  if (name == "canvas") return GradebookFormat::canvas;
+  if (name == "moodle") return GradebookFormat::moodle;
+  return GradebookFormat::plain;
+}
+
 std::string csv_field(std::string_view text) {
   if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
   std::string out = "\"";

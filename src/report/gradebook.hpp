@@ -24,6 +24,8 @@ namespace tackle {
 ///   column per question, `total`; an `invalid` cell and a question not answered are `-` (no
 ///   grade; text would stop Moodle's import).
 enum class GradebookFormat { plain, canvas, moodle };
+/// The layout named `plain`, `canvas` or `moodle` (the command line checks the name first).
+[[nodiscard]] GradebookFormat gradebook_format(std::string_view name);
 
 /// At most this many lines without a student or an id are reported (then how many more).
 inline constexpr std::size_t max_gradebook_problems = 100;
