@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <tuple>
 
 #include <Eigen/Dense>
 
@@ -265,6 +266,25 @@ EnergyAnswer work_energy(const Model& m, const EquationsOfMotion& eom, const Mot
   return e;
 }
 
+// `g` as alpha + beta cos(w t) + gamma sin(w t), each part free of t (nothing when it is not
+// one). Where `g` is affine in the cosine and the sine as written (its derivatives in them
+// free of both), each part is put over one denominator alone: normal() of the whole, with
+// the particular solution's coefficients over theirs, was most of a driven slope's run.
+std::tuple<std::optional<ex>, std::optional<ex>, std::optional<ex>> harmonic_parts(const ex& g, const ex& cos_wt, const ex& sin_wt,
+                                                                                 const ex& t) {
+  const symbol cs("cs"), sn("sn");
+  const ex in_cs = g.subs(lst{cos_wt == cs, sin_wt == sn});
+  const ex d_cs = in_cs.diff(cs), d_sn = in_cs.diff(sn);
+  if (!d_cs.has(cs) && !d_cs.has(sn) && !d_sn.has(cs) && !d_sn.has(sn)) {
+    const ex alpha = normal(in_cs.subs(lst{cs == 0, sn == 0})), beta = normal(d_cs), gamma = normal(d_sn);
+    if (alpha.has(t) || beta.has(t) || gamma.has(t)) return {};
+    return {alpha, beta, gamma};
+  }
+  const ex p = normal(g).subs(lst{cos_wt == cs, sin_wt == sn}).expand();
+  if (p.has(t) || !p.is_polynomial(lst{cs, sn}) || p.degree(cs) > 1 || p.degree(sn) > 1 || p.coeff(cs, 1).has(sn)) return {};
+  return {p.subs(lst{cs == 0, sn == 0}), p.coeff(cs, 1), p.coeff(sn, 1)};
+}
+
 // The condition in the steady state: along the forced part alone (see ConditionInTime).
 // `in_state` is the condition in the motion's coordinate and rate, the dependent ones put in
 // (a string's T = k (y_S + H - l_0) through the ring's y_S = x_0 + y_0 - x): a dependent
@@ -276,11 +296,9 @@ void steady_state(ConditionInTime& ct, const CheckedCondition& c, const ex& in_s
   const ex w = r.forcing_frequency;
   const ex qp = r.particular;
   const ex g = substituted(substituted(in_state, m.symbols->definitions()), exmap{{eom.q[0], qp}, {eom.dq[0], qp.diff(ex_to<symbol>(t))}});
-  const symbol cs("cs"), sn("sn");
-  const ex p = normal(g).subs(lst{cos(w * t) == cs, sin(w * t) == sn}).expand();
-  if (p.has(t) || !p.is_polynomial(lst{cs, sn}) || p.degree(cs) > 1 || p.degree(sn) > 1 || p.coeff(cs, 1).has(sn)) return;
-  const ex alpha = simplest(p.subs(lst{cs == 0, sn == 0}));
-  const ex beta = simplest(p.coeff(cs, 1)), gamma = simplest(p.coeff(sn, 1));
+  const auto [alpha0, beta0, gamma0] = harmonic_parts(g, cos(w * t), sin(w * t), t);
+  if (!alpha0) return;
+  const ex alpha = simplest(*alpha0), beta = simplest(*beta0), gamma = simplest(*gamma0);
   const std::string& op = c.condition->op;
   const bool lower = op == ">=" || op == ">";
   ct.steady_of_t = simplest(g);
@@ -492,10 +510,20 @@ void sliding_interval(Motion& out, const Model& m, const MotionSpec& spec) {
   if (from_rest && r.regime == Response::Regime::underdamped) out.direction_until = Pi / spec.omega_d;
   exmap values = m.symbols->values();
   for (const auto& [sym, def] : out.definitions) values[sym] = substituted(substituted(def, values), values);
+  // The rate in time alone, compiled for doubles: the scan below evaluates it thousands of
+  // times, and each exact substitution cost 30 million instructions on a driven slope.
+  // (Not compiled, a symbol or function it cannot evaluate: each time exactly.)
+  std::string problem;
+  const auto compiled = Compiled::compile(evalf(substituted(r.rate, values)), {m.time}, problem);
+  const NormalForm exact_rate(r.rate);
   auto rate_at = [&](double time) -> std::optional<double> {
+    if (compiled && time != 0) {  // (at the start exactly: a rest is 0, not a rounding)
+      const double v = (*compiled)(&time);
+      return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+    }
     exmap at = values;
     at[m.time] = numeric(time);
-    return NormalForm(r.rate).approx_at(at);
+    return exact_rate.approx_at(at);
   };
   if (out.direction_until) {
     if (auto v = NormalForm(*out.direction_until).approx_at(values)) out.direction_until_s = *v;

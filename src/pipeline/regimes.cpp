@@ -117,7 +117,13 @@ RegimeChoice decide_regime(const Analysis& a, const Description& d, const RuleSe
     if (fails) out.failed.push_back(cc.condition->meaning);
     if (!v) out.undecided = true;
     for (const auto& s : cc.solved) {
-      RegimeChoice::Bound b{cc.condition->meaning, s.parameter, s.bound, s.op, number_of(s.bound, s.parameter), fails};
+      RegimeChoice::Bound b;
+      b.meaning = cc.condition->meaning;
+      b.parameter = s.parameter;
+      b.bound = s.bound;
+      b.op = s.op;
+      b.value = number_of(s.bound, s.parameter);
+      b.failed = fails;
       std::string problem;
       const auto dim = dimension_of(s.parameter, table, problem);
       b.coefficient = dim && *dim == Dimension{};
