@@ -89,7 +89,8 @@ std::vector<std::vector<std::size_t>> matched(const Claims& c, const Model& m) {
       if (next_cord < cords.size()) out[r].push_back(cords[next_cord++]);
       continue;
     }
-    const std::set<std::string> forces = q.kind == Requirement::cone ? std::set<std::string>{q.force, q.normal} : std::set<std::string>{q.force};
+    std::set<std::string> forces = q.kind == Requirement::cone ? std::set<std::string>{q.force, q.normal} : std::set<std::string>{q.force};
+    if (!q.force_too.empty()) forces.insert(q.force_too);  // (a 3-D grip: sqrt(F_1^2 + F_2^2) <= mu N)
     for (std::size_t i = 0; i < c.conditions.size(); ++i)
       if (c.conditions[i].forces == forces) out[r].push_back(i);
   }

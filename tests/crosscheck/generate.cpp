@@ -40,6 +40,14 @@
 //   stacked-2d    two stacked blocks with friction between them (friction_between), on a smooth or
 //                 rough floor, level or sloped, a force on either from 0 to twice the one at which
 //                 the top block slips: both regimes
+//   links-2d      two links pinned end to end (bobs, rods, bodies with their own inertia), asked
+//                 for their accelerations at a state, followed in time
+//   friction-3d   a block held by friction in 3-D (a sticking contact, friction anywhere in its
+//                 tangent plane): on a tilted plane, pushed in a general direction, the plane
+//                 still or accelerating; or on a turntable that turns and speeds up; friction
+//                 off both tangent directions, mu drawn so that it holds with margin (four in
+//                 five) or clearly not
+#include <array>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -1115,6 +1123,105 @@ std::string stacked_2d(Gen& g) {
   return d.text();
 }
 
+// A block held by friction in 3-D: a `sticking` contact whose friction lies anywhere in the
+// tangent plane (F_A1 along the tangent t, F_A2 along n x t). Either on a tilted plane (an
+// integer normal, z up, t an integer vector across it), pushed by a force in a general
+// direction, the plane still or accelerating (the block's acceleration given); or on a
+// horizontal turntable that turns at omega and speeds up at alpha, the block at the angle phi
+// (its acceleration -omega^2 r towards the axis and alpha r along its path), t any integer
+// direction in the table. By hand in the generator: the contact's force is m a - m g - P, its
+// part along n is N and the rest is the friction, which must stay within mu N; t is drawn
+// again until the friction has both components (at least a tenth of its size each), the
+// force until N is clearly positive (and the least mu below 1), and mu is drawn as the least
+// mu that holds times 1.15 to 2.5 (four in five) or times 0.3 to 0.85 (the condition clearly
+// fails). The plane's tilt and the tangent are integer vectors: tackle checks that t is across
+// n exactly.
+std::string friction_3d(Gen& g) {
+  using V = std::array<double, 3>;
+  auto dot = [](const V& a, const V& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  auto cross = [](const V& a, const V& b) { return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; };
+  auto unit = [&](const V& a) {
+    const double l = std::sqrt(dot(a, a));
+    return V{a[0] / l, a[1] / l, a[2] / l};
+  };
+  auto vec = [](const V& a) { return fmt::format("[{}, {}, {}]", num(a[0]), num(a[1]), num(a[2])); };
+  Doc d;
+  d.axes = "[x, y, z]";
+  d.param("g", 9.81, "m/s^2");
+  const double m = g.nice(0.5, 5), grav = 9.81;
+  d.param("m", m, "kg");
+  d.gravity = "[0, 0, -g]";
+  const bool turntable = g.chance(0.4);
+  V n{0, 0, 1}, a{0, 0, 0}, p{0, 0, 0};
+  std::string body;
+  if (turntable) {
+    d.title = "Generated: a block held by friction on a turntable that turns and speeds up (3-D)";
+    const double r = g.nice(0.25, 2), omega = g.nice(0.5, 3), alpha = g.chance(0.25) ? 0 : g.nice(-4, 4);
+    const int phi = g.integer(0, 359);
+    d.param("r", r, "m");
+    d.param("omega", omega, "rad/s");
+    d.param("alpha", alpha, "rad/s^2");
+    d.param("phi", phi, "deg");
+    const double c = std::cos(phi * M_PI / 180), sn = std::sin(phi * M_PI / 180);
+    a = {-omega * omega * r * c - alpha * r * sn, -omega * omega * r * sn + alpha * r * c, 0};
+    body = "A: {mass: m, acceleration: [\"-omega^2*r*cos(phi) - alpha*r*sin(phi)\", \"-omega^2*r*sin(phi) + alpha*r*cos(phi)\", 0], "
+           "center_of_mass: [\"r*cos(phi)\", \"r*sin(phi)\", 0]}";
+  } else {
+    d.title = "Generated: a block held by friction on a tilted plane, pushed in a general direction (3-D)";
+    do n = {static_cast<double>(g.integer(-2, 2)), static_cast<double>(g.integer(-2, 2)), static_cast<double>(g.integer(2, 5))};
+    while (n[0] == 0 && n[1] == 0);  // (tilted, 11 to 55 degrees)
+    if (g.chance(0.4)) {  // the plane accelerates (a platform on a truck, a lift)
+      a = {g.nice(-3, 3), g.nice(-3, 3), g.nice(-2, 2)};
+      d.param("a_x", a[0], "m/s^2");
+      d.param("a_y", a[1], "m/s^2");
+      d.param("a_z", a[2], "m/s^2");
+      body = "A: {mass: m, acceleration: [a_x, a_y, a_z], center_of_mass: [0, 0, 0]}";
+    } else {
+      body = "A: {mass: m, center_of_mass: [0, 0, 0]}";
+    }
+  }
+  d.bodies.push_back(body);
+  const V nu = unit(n);
+  // the contact's force F = m (a - gravity) - P: N = F . n, the friction F - N n
+  V contact{}, friction{};
+  double normal = 0;
+  const bool pushed = !turntable || g.chance(0.5);
+  // (unpushed, on the turntable: N = m g, the friction m r sqrt(omega^4 + alpha^2), not 0)
+  for (int tries = 0; tries < 1000; ++tries) {
+    if (pushed)  // (in steps of 0.25 N: exact in binary)
+      p = {std::round(g.real(-1, 1) * m * grav * 4) / 4, std::round(g.real(-1, 1) * m * grav * 4) / 4,
+           std::round(g.real(-0.5, 0.5) * m * grav * 4) / 4};
+    contact = {m * a[0] - p[0], m * a[1] - p[1], m * (a[2] + grav) - p[2]};
+    normal = dot(contact, nu);
+    for (int i = 0; i < 3; ++i) friction[i] = contact[i] - normal * nu[i];
+    const double size = std::sqrt(dot(friction, friction));
+    if (!pushed || (normal > 0.2 * m * grav && size > 0.05 * m * grav && size < normal)) break;  // (the least mu below 1)
+  }
+  if (pushed) {
+    d.param("P_x", p[0], "N");
+    d.param("P_y", p[1], "N");
+    d.param("P_z", p[2], "N");
+    d.connections.push_back("{type: force, on: A, at: A, force: [P_x, P_y, P_z]}");
+  }
+  // a tangent across n with the friction off both directions (t and n x t)
+  const double size = std::sqrt(dot(friction, friction));
+  V t{};
+  for (int tries = 0; tries < 1000; ++tries) {
+    const V w{static_cast<double>(g.integer(-3, 3)), static_cast<double>(g.integer(-3, 3)), static_cast<double>(g.integer(-3, 3))};
+    t = cross(n, w);
+    if (dot(t, t) == 0) continue;
+    const V tu = unit(t), su = cross(nu, tu);
+    if (std::abs(dot(friction, tu)) > 0.1 * size && std::abs(dot(friction, su)) > 0.1 * size) break;
+  }
+  const double least = size / normal;
+  const bool holds = g.chance(0.8);
+  const double mu = std::max(0.001, std::round(least * (holds ? g.real(1.15, 2.5) : g.real(0.3, 0.85)) * 1000) / 1000);
+  d.param("mu", mu, "");
+  d.connections.push_back(fmt::format("{{type: sticking, body: A, at: A, normal: {}, tangent: {}, mu: mu}}", vec(n), vec(t)));
+  d.tail = "find: [N_A, F_A1, F_A2]\n";
+  return d.text();
+}
+
 }  // namespace
 
 std::string generate(std::uint64_t seed, std::string* kind) {
@@ -1125,7 +1232,7 @@ std::string generate(std::uint64_t seed, std::string* kind) {
       {"ring-2d", ring_2d},       {"slope-2d", slope_2d},     {"lengths-1d", lengths_1d}, {"carts-3d", carts_3d},
       {"welds-2d", welds_2d},     {"pulley-block-2d", pulley_block_2d}, {"incline-3d", incline_3d},
       {"pulley-block-3d", pulley_block_3d}, {"drum-2d", drum_2d}, {"wheel-2d", wheel_2d}, {"pivot-2d", pivot_2d},
-      {"stacked-2d", stacked_2d}, {"links-2d", links_2d}};
+      {"stacked-2d", stacked_2d}, {"links-2d", links_2d}, {"friction-3d", friction_3d}};
   const auto& f = families[seed % (sizeof(families) / sizeof(families[0]))];
   if (kind) *kind = f.first;
   return f.second(g);

@@ -443,11 +443,14 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     for (std::size_t k = elements_from; k < elements_.size(); ++k) elements_[k].label = label;
     for (std::size_t k = loads_from; k < loads_.size(); ++k) loads_[k].label = label;
   };
-  // A contact that grips: it pushes, and its friction stays within mu N (mu when given).
-  auto grips = [&](const std::string& at, const tackle::ConnectionDesc& c, const std::string& what) {
+  // A contact that grips: it pushes, and its friction stays within mu N (mu when given); in
+  // 3-D its friction has two components in the tangent plane (F_<at>1, F_<at>2), and the cone
+  // bounds their resultant.
+  auto grips = [&](const std::string& at, const tackle::ConnectionDesc& c, const std::string& what, bool plane = false) {
     requirements_.push_back({Requirement::pushes, "N_" + at, "", 0, -1, what + " pushes"});
     if (opt_text(c, "mu"))
-      requirements_.push_back({Requirement::cone, "F_" + at, "N_" + at, number(c.arg("mu")->items[0]), -1, what + " grips (|F| <= mu N)"});
+      requirements_.push_back({Requirement::cone, plane ? "F_" + at + "1" : "F_" + at, "N_" + at, number(c.arg("mu")->items[0]), -1,
+                               what + " grips (|F| <= mu N)", plane ? "F_" + at + "2" : ""});
   };
   // Friction between two moving bodies, decided at the layout once the model is whole: sticking
   // (as built) while its friction stays within mu_s N, else sliding (decide_contacts).
@@ -575,14 +578,24 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       }
       grips(at, c, "the rolling contact at " + at);
     } else if (type == "sticking") {
-      // (In 3-D tackle's friction lies anywhere in the tangent plane, two components and a
-      // cone |F| <= mu N on both: not modelled here yet.)
-      if (dims_ == 3) throw Unsupported("a 3-D sticking contact (friction in its tangent plane)");
+      // The contact's material point does not move along the normal nor, in 2-D, along the
+      // tangent; in 3-D not anywhere in the tangent plane: two rows, along the tangent t
+      // (F_<at>1) and along n x t (F_<at>2), the two directions spanning the plane that the
+      // description's normal and tangent give (its friction may point anywhere in it).
       const int b = body_of(c, "body");
       const std::string at = need_text(c, "at");
-      add_project("N_" + at, material(at, b), b, unit_vec(c, "normal"));
-      add_project("F_" + at, material(at, b), b, unit_vec(c, "tangent"));
-      grips(at, c, "the sticking contact at " + at);
+      const Eigen::VectorXd normal = unit_vec(c, "normal"), tangent = unit_vec(c, "tangent");
+      add_project("N_" + at, material(at, b), b, normal);
+      if (dims_ == 3) {
+        if (std::abs(normal.dot(tangent)) > 1e-9)
+          throw Unsupported("a sticking contact whose tangent is not at right angles to its normal (at " + at + ")");
+        const Eigen::Vector3d across = Eigen::Vector3d(normal(0), normal(1), normal(2)).cross(Eigen::Vector3d(tangent(0), tangent(1), tangent(2)));
+        add_project("F_" + at + "1", material(at, b), b, tangent);
+        add_project("F_" + at + "2", material(at, b), b, Eigen::VectorXd(across));
+      } else {
+        add_project("F_" + at, material(at, b), b, tangent);
+      }
+      grips(at, c, "the sticking contact at " + at, dims_ == 3);
     } else if (type == "sticking_between" || type == "sliding_between" || type == "friction_between") {
       // Two bodies that touch (stacked blocks): the model keeps their centers' relative
       // position along the normal (N_<at>: the first is pushed along n, the other along -n) and,
@@ -1131,13 +1144,14 @@ std::vector<Margin> Model::margins(const State& s, const Instant& inst) const {
     Margin m{&r, 0, true};
     const Quantity* f = inst.find(r.force);
     const Quantity* n = r.kind == Requirement::cone ? inst.find(r.normal) : nullptr;
+    const Quantity* f2 = r.force_too.empty() ? nullptr : inst.find(r.force_too);  // (3-D: the friction's second component)
     if (r.kind == Requirement::taut) {
       m.value = element_tension(elements_[static_cast<std::size_t>(r.element)], s);
-    } else if (!f || (r.kind == Requirement::cone && !n)) {
+    } else if (!f || (r.kind == Requirement::cone && !n) || (!r.force_too.empty() && !f2)) {
       m.determined = false;
     } else {
-      m.value = r.kind == Requirement::cone ? r.mu * n->value - std::abs(f->value) : f->value;
-      m.determined = f->determined && (!n || n->determined);
+      m.value = r.kind == Requirement::cone ? r.mu * n->value - std::hypot(f->value, f2 ? f2->value : 0.0) : f->value;
+      m.determined = f->determined && (!n || n->determined) && (!f2 || f2->determined);
     }
     out.push_back(m);
   }

@@ -90,17 +90,19 @@ struct Instant {
 /// What the model's own physics requires of a solution, connection by connection: a string
 /// or a cable pulls (its tension is not negative), a contact, a roller or a wheel pushes (its
 /// normal force is not negative), a sticking contact's or a gripping wheel's friction stays
-/// within its cone (|F| <= mu N), an elastic cord is taut (its length at least its rest
+/// within its cone (|F| <= mu N; in 3-D F has two components in the tangent plane), an elastic cord is taut (its length at least its rest
 /// length); a steady motion's unknown rate is real (its square is not negative). Nothing here
 /// is read from tackle's rules.
 struct Requirement {
   enum Kind { pulls, pushes, cone, taut, real } kind = pulls;
-  std::string force;   // the constraint force (tackle's name for it): T, N_A; cone: the friction F_A;
-                       // real: the rate squared (omega^2)
+  std::string force;   // the constraint force (tackle's name for it): T, N_A; cone: the friction F_A
+                       // (3-D: its first component F_A1); real: the rate squared (omega^2)
   std::string normal;  // cone: the normal force N_A
   double mu = 0;       // cone
   int element = -1;    // taut: the cord (an element of the model)
   std::string what;    // in words: "string s pulls"
+  std::string force_too{};  // cone in 3-D: the friction's second component in the tangent plane (F_A2);
+                            // its size is then sqrt(F_A1^2 + F_A2^2)
 };
 
 /// How far a requirement is met at a state: a force (N), not negative when it is met.
