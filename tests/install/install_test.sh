@@ -30,6 +30,9 @@ for page in "$source"/docs/*.md; do
   cmp -s "$page" "$doc/$(basename "$page")" || { echo "not installed: docs/$(basename "$page")"; exit 1; }
 done
 [ -f "$doc/bench/RESULTS.md" ] || { echo "not installed: bench/RESULTS.md"; exit 1; }
+for sketch in "$source"/docs/cookbook/*.svg; do
+  [ -f "$doc/cookbook/$(basename "$sketch")" ] || { echo "not installed: docs/cookbook/$(basename "$sketch")"; exit 1; }
+done
 for example in "$source"/examples/*.yaml; do
   [ -f "$doc/examples/$(basename "$example")" ] || { echo "not installed: examples/$(basename "$example")"; exit 1; }
 done

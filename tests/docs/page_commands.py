@@ -1,5 +1,6 @@
-"""The tutorial (docs/tutorial.md) as a script: its files are written and its commands run, in
-the page's order, in an empty directory, and every output line it shows must be there.
+"""A page of the documentation as a script (docs/tutorial.md, docs/cookbook.md, docs/syntax.md):
+its files are written and its commands run, in the page's order, in an empty directory, and
+every output line it shows must be there.
 
 The page's conventions, which this test reads:
 - A fenced block right after a line that ends with `NAME`: (a file name in backticks, then a
@@ -14,10 +15,15 @@ The page's conventions, which this test reads:
   other command may be shown in a console block (the test could not run it).
 - A command exits with 0, or with 1 when what it shows is a located error (`FILE:LINE:COL: `).
 
-At the end the finished description must give the answers of the bundled example it
-rebuilds (examples/sample-12.3-two-mass-pulley.yaml).
+- A line `![...](cookbook/NAME.svg)` shows the sketch of the file NAME.yaml written before it:
+  the SVG in docs/cookbook/ must be the one `tackle sheet NAME.yaml --format markdown` draws
+  now (`--write-sketches` writes them instead).
 
-Usage: tutorial_commands.py TACKLE_PROGRAM SOURCE_DIR"""
+Each page adds its own checks: the tutorial's finished description must give the answers of
+the bundled example it rebuilds (examples/sample-12.3-two-mass-pulley.yaml); every
+description the cookbook writes must solve (`tackle solve` exits with 0) and be shown solved.
+
+Usage: page_commands.py TACKLE_PROGRAM SOURCE_DIR [PAGE [--write-sketches]]   (PAGE: docs/tutorial.md)"""
 import os
 import re
 import shlex
@@ -26,7 +32,12 @@ import sys
 import tempfile
 
 TACKLE, SOURCE = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
-PAGE = os.path.join(SOURCE, "docs", "tutorial.md")
+PAGE_NAME = sys.argv[3] if len(sys.argv) > 3 else "docs/tutorial.md"
+PAGE = os.path.join(SOURCE, PAGE_NAME)
+WRITE_SKETCHES = "--write-sketches" in sys.argv[4:]
+SKETCH = re.compile(r"!\[[^\]]*\]\((cookbook/([A-Za-z0-9_-]+)\.svg)\)")
+# The least a page must hold (commands, files, excerpts): a page that lost its blocks would pass.
+LEAST = {"docs/tutorial.md": (20, 4, 2), "docs/cookbook.md": (24, 12, 0), "docs/syntax.md": (6, 2, 0)}
 LOCATED = re.compile(r"^\S+:\d+:\d+: ")
 failures = []
 
@@ -70,9 +81,11 @@ def shown_in(shown, output):
     return None
 
 
-def run(command, shown, where, work):
+def run(command, shown, where, work, solved):
     """Runs one console command; checks its status and the output shown."""
     words = shlex.split(command)
+    if words[:2] == ["tackle", "solve"] and len(words) > 2:
+        solved.add(words[2])
     if words[0] == "cat" and len(words) == 2:
         with open(os.path.join(work, words[1]), encoding="utf-8") as f:
             streams = [f.read()]
@@ -94,20 +107,48 @@ def run(command, shown, where, work):
              + "--- output:\n" + "".join(streams)[:3000])
 
 
+def check_sketches(page, work):
+    """Each sketch the page shows is the one tackle draws now from the file it names."""
+    count = 0
+    for match in SKETCH.finditer(page):
+        svg_path, name = os.path.join(SOURCE, "docs", match.group(1)), match.group(2)
+        r = subprocess.run([TACKLE, "sheet", name + ".yaml", "--format", "markdown"], cwd=work,
+                           capture_output=True, text=True, stdin=subprocess.DEVNULL)
+        drawn = re.search(r"<svg.*?</svg>", r.stdout, re.S)
+        if r.returncode != 0 or not drawn:
+            fail(f"{PAGE_NAME}: tackle draws no sketch of {name}.yaml:\n{r.stderr[-2000:]}")
+            continue
+        count += 1
+        if WRITE_SKETCHES:
+            with open(svg_path, "w", encoding="utf-8") as f:
+                f.write(drawn.group(0) + "\n")
+            continue
+        try:
+            with open(svg_path, encoding="utf-8") as f:
+                shown = f.read()
+        except OSError:
+            shown = None
+        if shown != drawn.group(0) + "\n":
+            fail(f"{PAGE_NAME}: docs/{match.group(1)} is not the sketch tackle draws now of {name}.yaml "
+                 f"(run tests/docs/page_commands.py TACKLE . {PAGE_NAME} --write-sketches)")
+    return count
+
+
 def main():
     with open(PAGE, encoding="utf-8") as f:
         page = f.read()
     commands = files = excerpts = 0
+    written, solved = [], set()
     with tempfile.TemporaryDirectory() as work:
         for info, body, before, line in blocks(page):
-            where = f"docs/tutorial.md:{line}"
+            where = f"{PAGE_NAME}:{line}"
             named = re.search(r"`([^`\s]+)`:\s*$", before)
             if info == "console":
                 command, shown = None, []
                 for text in body + ["$ "]:
                     if text.startswith("$ "):
                         if command:
-                            run(command, shown, where, work)
+                            run(command, shown, where, work, solved)
                             commands += 1
                         command, shown = text[2:].strip(), []
                     else:
@@ -129,17 +170,28 @@ def main():
                 with open(os.path.join(work, named.group(1)), mode, encoding="utf-8") as f:
                     f.write("\n".join(body) + "\n")
                 files += 1
-        # The finished description is sample 12.3: the same answers as the bundled example.
-        mine = subprocess.run([TACKLE, "solve", "pulley.yaml"], cwd=work, capture_output=True, text=True)
-        bundled = subprocess.run([TACKLE, "solve", os.path.join(SOURCE, "examples/sample-12.3-two-mass-pulley.yaml")],
-                                 capture_output=True, text=True)
-        if mine.returncode != 0 or mine.stdout != bundled.stdout:
-            fail("the tutorial's pulley.yaml does not solve as examples/sample-12.3-two-mass-pulley.yaml:\n"
-                 + mine.stdout + mine.stderr + "--- the example:\n" + bundled.stdout)
+                written.append(named.group(1))
+        sketches = check_sketches(page, work)
+        if PAGE_NAME == "docs/tutorial.md":
+            # The finished description is sample 12.3: the same answers as the bundled example.
+            mine = subprocess.run([TACKLE, "solve", "pulley.yaml"], cwd=work, capture_output=True, text=True)
+            bundled = subprocess.run([TACKLE, "solve", os.path.join(SOURCE, "examples/sample-12.3-two-mass-pulley.yaml")],
+                                     capture_output=True, text=True)
+            if mine.returncode != 0 or mine.stdout != bundled.stdout:
+                fail("the tutorial's pulley.yaml does not solve as examples/sample-12.3-two-mass-pulley.yaml:\n"
+                     + mine.stdout + mine.stderr + "--- the example:\n" + bundled.stdout)
+        if PAGE_NAME == "docs/cookbook.md":
+            # Every description solves, and the page shows it solved (with the numbers it states).
+            for name in written:
+                if name not in solved:
+                    fail(f"{PAGE_NAME}: {name} is written but never shown solved ('$ tackle solve {name}')")
+            if sketches < len(written):
+                fail(f"{PAGE_NAME}: {sketches} sketches for {len(written)} descriptions")
     # A page that lost its blocks would pass everything above.
-    if commands < 20 or files < 4 or excerpts < 2:
-        fail(f"only {commands} commands, {files} files and {excerpts} excerpts found in docs/tutorial.md")
-    print(f"docs/tutorial.md: {commands} commands run, {files} files written, {excerpts} excerpts checked, "
+    least = LEAST.get(PAGE_NAME, (1, 0, 0))
+    if commands < least[0] or files < least[1] or excerpts < least[2]:
+        fail(f"only {commands} commands, {files} files and {excerpts} excerpts found in {PAGE_NAME}")
+    print(f"{PAGE_NAME}: {commands} commands run, {files} files written, {excerpts} excerpts checked, "
           f"{len(failures)} failures")
     return 1 if failures else 0
 
