@@ -533,17 +533,29 @@ Sample Checker::draw_point(std::mt19937& rng) const {
 
 const std::vector<Sample>& Checker::FreshPoints::get() {
   if (points_) return *points_;
-  points_.emplace();
-  std::mt19937 rng = States::generator(checker_.options_.seed);
-  // Where the reference is defined (a point on a pole is drawn again).
-  for (int k = 0; k < checker_.options_.points; ++k)
-    for (int attempt = 0; attempt < 16; ++attempt) {
-      Sample p = checker_.draw_point(rng);
-      if (ref_.program(p)) {
-        points_->push_back(std::move(p));
-        break;
+  Reference::Lazy& lazy = *ref_.lazy;
+  const std::lock_guard<std::mutex> lock(lazy.fresh_mutex);
+  Reference::Fresh& pool = lazy.fresh;
+  const bool seeded = checker_.options_.seed.has_value();
+  if (!pool.rng) pool.rng = States::generator(checker_.options_.seed);
+  if (pool.uses == 0 || (!seeded && pool.uses >= fresh_renewal)) {
+    pool.points.clear();
+    pool.values.clear();
+    pool.uses = 0;
+    // Where the reference is defined (a point on a pole is drawn again).
+    for (int k = 0; k < checker_.options_.points; ++k)
+      for (int attempt = 0; attempt < 16; ++attempt) {
+        Sample p = checker_.draw_point(*pool.rng);
+        if (const auto v = ref_.program(p)) {
+          pool.points.push_back(std::move(p));
+          pool.values.push_back(*v);
+          break;
+        }
       }
-    }
+  }
+  ++pool.uses;
+  points_ = pool.points;
+  values_ = pool.values;
   return *points_;
 }
 
@@ -579,9 +591,13 @@ Checker::Agreement Checker::compare(const ex& answer, const ex& reference, const
   // (No points, or fewer than asked where the reference is defined: nothing to go on.)
   if (points.empty() || points.size() < static_cast<std::size_t>(options_.points)) return Agreement::unevaluable;
   exact_values = true;
-  for (const Sample& p : points) {
+  // (The reference's own closed form: its values came with the points.)
+  const bool own = &reference_at == &fresh.reference().program;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Sample& p = points[k];
     if (over_budget()) return Agreement::budget;
-    const auto a = answer_at(p), b = reference_at(p);
+    const auto a = answer_at(p);
+    const auto b = own ? std::optional<numeric>(fresh.reference_at(k)) : reference_at(p);
     if (!a || !b) return Agreement::unevaluable;
     if (!same(*a, *b)) return Agreement::differs;
     exact_values = exact_values && a->is_rational() && b->is_rational();

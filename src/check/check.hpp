@@ -39,9 +39,10 @@ struct CheckOptions {
   std::size_t exact_size_budget = 2000;        // largest expanded size normal() is given
   std::chrono::milliseconds time_budget{250};  // per answer
   int points = 4;                              // fixed random points: the first comparison and the diagnoses
-  // Points a verdict of `correct` rests on when no proof decides it are drawn afresh for each
-  // check from std::random_device, so that no answer can be built to vanish at them; a seed
-  // makes them reproducible (tests, `tackle check --seed`), and must never be used to grade.
+  // Points a verdict of `correct` rests on when no proof decides it are drawn at random, from
+  // a generator seeded from std::random_device once per process and drawn again every 64
+  // checks of an unknown, so that no answer can be built to vanish at them; a seed makes them
+  // reproducible (tests, `tackle check --seed`), and must never be used to grade.
   std::optional<std::uint64_t> seed;
   int digits = 40;                             // precision of the numeric comparison (CLN)
   bool echo_latex = true;                      // echo the answer as read in LaTeX too
@@ -167,9 +168,21 @@ class Checker {
       std::map<std::size_t, std::vector<std::optional<GiNaC::numeric>>> zeroed;
       std::map<std::pair<std::size_t, std::size_t>, std::vector<std::optional<GiNaC::numeric>>> equalled;
     };
+    // The points a verdict of `correct` rests on beyond the fixed ones (see FreshPoints):
+    // drawn from the reference's own generator, where the reference is defined, with its
+    // values there. With a seed, drawn once (every check had the same ones); without, drawn
+    // again every `fresh_renewal` checks, the generator seeded once from std::random_device.
+    struct Fresh {
+      std::optional<std::mt19937> rng;
+      std::vector<Sample> points;
+      std::vector<GiNaC::numeric> values;  // the reference at each point
+      int uses = 0;
+    };
     struct Lazy {
       std::once_flag made;
       Diagnosis diagnosis;
+      std::mutex fresh_mutex;
+      Fresh fresh;
     };
     std::shared_ptr<Lazy> lazy = std::make_shared<Lazy>();
   };
@@ -182,18 +195,27 @@ class Checker {
   // What a comparison beyond the fixed points found: a proof either way (normal()), the same
   // or different values at the points drawn for this check, or nothing to go on.
   enum class Agreement { proved, refuted, agrees, differs, unevaluable, budget };
-  // The points drawn for one check (unpredictable unless options_.seed is set), where the
-  // reference is defined; drawn when first wanted.
+  // The points for one check (unpredictable unless options_.seed is set), where the
+  // reference is defined, and the reference's values there: the reference's pool (see
+  // Reference::Fresh), taken when first wanted. Drawing them for each check (seeding a
+  // generator from the device, the points, the reference at each) was 40 % of the check of a
+  // correct answer.
   class FreshPoints {
    public:
     explicit FreshPoints(const Checker& checker, const Reference& ref) : checker_(checker), ref_(ref) {}
     const std::vector<Sample>& get();
+    /// The reference's closed form at get()'s k-th point.
+    [[nodiscard]] const GiNaC::numeric& reference_at(std::size_t k) const { return values_[k]; }
+    [[nodiscard]] const Reference& reference() const { return ref_; }
 
    private:
     const Checker& checker_;
     const Reference& ref_;
     std::optional<std::vector<Sample>> points_;
+    std::vector<GiNaC::numeric> values_;
   };
+  // How many checks one unseeded pool of fresh points serves before it is drawn again.
+  static constexpr int fresh_renewal = 64;
   // A verdict reached beyond the fixed points.
   struct Decision {
     Verdict verdict = Verdict::undecided;
