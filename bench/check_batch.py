@@ -22,7 +22,7 @@ equations', by exact rank in Fractions at two random points.
 Prints the whole-process time (best of --repeat runs, with the machine's load average before
 each), the time per check, and how many verdicts disagree (there must be none).
 With --each, every problem gets N lines of its own (a batch of N per example).
-Usage: bench/check_batch.py [--build DIR] [-n 10000] [--repeat 5] [--seed 1] [--each] [--equations | --both]
+Usage: bench/check_batch.py [--build DIR] [-n 10000] [--repeat 5] [--seed 1] [--each] [--jobs N] [--equations | --both]
 """
 import argparse
 import math
@@ -399,6 +399,7 @@ def main():
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--no-latex", action="store_true", help="pass --no-latex (no LaTeX echo of each answer)")
+    ap.add_argument("--jobs", type=int, default=1, help="pass --jobs N (grading processes side by side; 1: one)")
     ap.add_argument("--each", action="store_true",
                     help="n lines for each problem (one batch of n per example) rather than n in all")
     ap.add_argument("--write", metavar="DIR", help="write each problem's batch (PROBLEM.jsonl) to DIR and stop (to profile)")
@@ -437,6 +438,8 @@ def run(args, equations):
             cmd = [tackle, "check", os.path.join(ROOT, "examples", problem + ".yaml"), "--batch", path]
             if args.no_latex:
                 cmd.append("--no-latex")
+            if args.jobs != 1:
+                cmd += ["--jobs", str(args.jobs)]
             best, loads, output = None, [], None
             for _ in range(args.repeat):
                 loads.append(os.getloadavg()[0])

@@ -48,7 +48,13 @@ struct GradeOptions {
   const Model* model = nullptr;
   // Called with each line once it is graded (`--gradebook`); none: not called.
   std::function<void(const GradedLine&)> graded;
+  // Processes grading side by side (`--jobs`): this one and jobs - 1 children forked for each
+  // block of lines, each a run of consecutive lines, their results written in the batch's
+  // order. 1: one line at a time, in this process.
+  int jobs = 1;
 };
+/// With several jobs, the lines of a block for each (a fork per child and block).
+inline constexpr std::size_t block_lines_per_job = 512;
 
 /// At most this many of PrairieLearn's `format_errors` are listed (then how many more): the
 /// results file is written as the batch is graded, and only totals are kept in memory.

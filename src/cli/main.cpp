@@ -2,6 +2,7 @@
 // output that cannot be written, 2 usage error, 3 internal error or out of memory.
 #include <system_error>
 #include <algorithm>
+#include <thread>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -143,6 +144,7 @@ struct Options {
   // check
   std::string unknown, answer, equation, steps, fbd, rubric, batch, results, results_format = "gradescope";
   std::string gradebook, gradebook_format = "plain";
+  int jobs = 1;  // check --batch: processes grading side by side (0: one per core)
   bool equation_given = false;
   double tolerance = 0.01;
   int sig_figs = 0;
@@ -391,8 +393,9 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
     }
     grade.source = o.batch;
     grade.model = &analysis->model;
-    // Read and graded line by line, each result written as it goes: memory stays bounded
-    // whatever the size of the batch.
+    grade.jobs = o.jobs > 0 ? o.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    // Read and graded line by line (or by blocks of lines with several jobs), each result
+    // written as it goes: memory stays bounded whatever the size of the batch.
     std::unique_ptr<std::istream> batch_file;
     if (o.batch != "-") batch_file = tackle::open_text_file(o.batch);
     std::istream& batch = batch_file ? *batch_file : std::cin;
@@ -628,6 +631,10 @@ int run(int argc, char** argv) {
         ->check(CLI::IsMember({"plain", "canvas", "moodle"}))
         ->capture_default_str()
         ->needs(gradebook_opt);
+    check->add_option("--jobs", o.jobs, "With --batch: grade with N processes side by side (0: one per core); the results are the same, in the batch's order")
+        ->check(CLI::Range(0, 256))
+        ->capture_default_str()
+        ->needs(batch_opt);
     check->add_option("--points", o.points_text, "Points for each answer (N), or for one unknown's answers (NAME=N); repeatable")
         ->needs(batch_opt);
     check->add_flag("--top-level-score", o.top_level_score, "Gradescope: also write the total as the top-level score "

@@ -1102,3 +1102,61 @@ TEST_CASE("CLI: --gradebook: a line without a student is an input error and noth
   CHECK_FALSE(fs::exists(dir / "g.csv"));
   fs::remove_all(dir);
 }
+
+TEST_CASE("CLI: check --batch --jobs grades in several processes and writes what one process writes, in the batch's order", "[cli][check][batch]") {
+  const fs::path dir = fs::temp_directory_path() / ("tackle-jobs-" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  // Every kind of line (answers, equations, diagrams, numbers, params, lines that are not
+  // answers, the poisoned ones), 2,600 lines, 2,400 of them not blank: with 2 jobs, three
+  // blocks of at most 1,024 lines.
+  std::string kinds;
+  for (const char* seed : {"01-mixed.jsonl", "02-equations.jsonl", "03-poisoned.jsonl"})
+    kinds += slurp(fs::path(TACKLE_SOURCE_DIR) / "tests/fuzz/seeds/batch" / seed);
+  kinds += "\n   \n{\"id\": \"f1\", \"fbd\": {\"body\": \"A\", \"forces\": []}}\nnot json\n[1, 2]\n"
+           "{\"id\": \"p\", \"unknown\": \"N_A\", \"answer\": \"30 N\", \"params\": {\"m\": 12}}\n";
+  std::size_t lines = 0;
+  std::string batch_text;
+  while (lines < 2600) {
+    batch_text += kinds;
+    lines += static_cast<std::size_t>(std::count(kinds.begin(), kinds.end(), '\n'));
+  }
+  const std::string batch = (dir / "batch.jsonl").string();
+  std::ofstream(batch) << batch_text;
+  const std::string suitcase = examples + "sample-12.7-suitcase.yaml";
+  for (const char* format : {"gradescope", "prairielearn", "jsonl"}) {
+    int run = 0;
+    const auto graded = [&](const std::string& jobs) {
+      const std::string results = (dir / ("results-" + std::to_string(++run) + ".json")).string();
+      const Run r = run_tackle("check " + suitcase + " --seed 1 --batch " + batch + " --results " + results + " --results-format " + format + jobs);
+      return std::tuple{r.code, r.out, r.err, slurp(results)};
+    };
+    const auto one = graded("");
+    CHECK(std::get<0>(one) == 0);
+    CHECK(std::count(std::get<1>(one).begin(), std::get<1>(one).end(), '\n') > 2048);
+    for (const std::string jobs : {" --jobs 2", " --jobs 3", " --jobs 0"}) CHECK(graded(jobs) == one);
+  }
+  // A class's gradebook, the same.
+  const std::string pulley = examples + "sample-12.3-two-mass-pulley.yaml";
+  const std::string class_batch = TACKLE_SOURCE_DIR "/tests/data/gradebook/class.jsonl";
+  for (const std::string jobs : {"1", "4"})
+    CHECK(run_tackle("check " + pulley + " --seed 1 --batch " + class_batch + " -o /dev/null --gradebook " + (dir / ("grades-" + jobs + ".csv")).string() +
+                     " --jobs " + jobs)
+              .code == 0);
+  CHECK(slurp(dir / "grades-1.csv") == slurp(dir / "grades-4.csv"));
+  // A line too long to read: the lines before it are graded and written, then the error.
+  std::ofstream(batch) << "{\"id\": \"a\", \"unknown\": \"a_C\", \"answer\": \"-mu*g\"}\n{\"id\": \"b\", \"answer\": \""
+                       << std::string(std::size_t{2} << 20, 'x') << "\"}\n{\"id\": \"c\", \"unknown\": \"a_C\", \"answer\": \"mu*g\"}\n";
+  const Run stopped = run_tackle("check " + suitcase + " --batch " + batch + " --jobs 2");
+  CHECK(stopped.code == 1);
+  CHECK(stopped.out.rfind("{\"id\":\"a\",\"unknown\":\"a_C\",\"answer\":\"-mu*g\",\"verdict\":\"correct\"", 0) == 0);
+  CHECK(std::count(stopped.out.begin(), stopped.out.end(), '\n') == 1);
+  CHECK(stopped.err == batch + ":2: the line is longer than 1 MiB (expected JSON Lines: one object with id, unknown and answer per line)\n");
+  // Usage: a number of processes from 0 to 256, with --batch.
+  const Run many = run_tackle("check " + suitcase + " --batch " + batch + " --jobs 257");
+  CHECK(many.code == 2);
+  CHECK(many.err == "--jobs: Value 257 not in range 0 to 256\nRun with --help for more information.\n");
+  const Run alone = run_tackle("check " + suitcase + " --unknown a_C --answer '-mu*g' --jobs 2");
+  CHECK(alone.code == 2);
+  CHECK(alone.err == "--jobs requires --batch\nRun with --help for more information.\n");
+  fs::remove_all(dir);
+}
