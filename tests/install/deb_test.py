@@ -72,8 +72,8 @@ class PackageTest(unittest.TestCase):
     def test_control(self):
         deb = debs["tackle"]
         self.assertEqual(field(deb, "Section"), "science")
-        self.assertEqual(field(deb, "Version"), re.search(r"project\(tackle VERSION ([0-9.]+)",
-                                                          open(os.path.join(SOURCE, "CMakeLists.txt")).read()).group(1))
+        with open(os.path.join(SOURCE, "CMakeLists.txt")) as f:
+            self.assertEqual(field(deb, "Version"), re.search(r"project\(tackle VERSION ([0-9.]+)", f.read()).group(1))
         self.assertTrue(field(deb, "Maintainer"))
         depends = field(deb, "Depends")
         self.assertIsNone(DOCUMENT_TOOLS.search(depends), depends)
@@ -195,8 +195,11 @@ class PlatformTest(unittest.TestCase):
         steps = ("steps:\n  - equation: \"2*T - F = m_A*ddot(x_A)\"\n  - equation: \"-3*T = m_B*ddot(x_B)\"\n"
                  "  - equation: \"3*ddot(x_B) = 2*ddot(x_A)\"\n  - {answer: \"%s\", unknown: T}\n" % T_CLOSED)
         graded = self.gradescope("pulley-solution", "solution.yaml", steps)
-        answers = [t for t in graded["tests"] if t["name"].startswith("answers")]
-        self.assertTrue(answers and all(t["score"] == t["max_score"] for t in answers), graded)
+        # The rubric's parts (diagrams 2, balances 3, constraints 2, answers 3): every part but
+        # the diagrams, which were not drawn.
+        parts = {t["name"]: (t["score"], t["max_score"]) for t in graded["tests"] if not t["name"].startswith("step ")}
+        self.assertEqual(parts, {"fbds": (0, 2), "balances": (3, 3), "constraints": (2, 2), "answers": (3, 3)})
+        self.assertEqual(graded["score"], 8)
         broken = self.gradescope("pulley-solution", "solution.yaml", "steps: [{fbd: {body: Q}}]\n")
         self.assertEqual((broken["score"], broken["tests"]), (0, []))
         self.assertIn("solution.yaml:", broken["output"])
@@ -257,7 +260,8 @@ class PlatformTest(unittest.TestCase):
         self.assertEqual(self.prairielearn({"T": "20 N"}, variant)["score"], 0.0)
 
     def test_prairielearn_files(self):
-        info = json.load(open(examples("prairielearn/pulley-tension-external/info.json")))
+        with open(examples("prairielearn/pulley-tension-external/info.json")) as f:
+            info = json.load(f)
         self.assertEqual(info["gradingMethod"], "External")
         options = info["externalGradingOptions"]
         self.assertTrue(options["enabled"])
