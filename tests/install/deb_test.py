@@ -1,6 +1,8 @@
-"""The Debian package: cpack -G DEB from the build directory (into a temporary directory, so
-that tests running beside it see nothing), its control fields and contents, and the package
-unpacked into a fresh root with dpkg -x, where the program, finding its rules in that root,
+"""The Debian package: cpack -G DEB from the build directory (the packages and cpack's staging
+in a temporary directory of each run, so that two runs do not meet; cpack leaves only its
+install_manifest_*.txt in the build directory, which nothing reads), its control fields and
+contents, and the package unpacked into a fresh root with dpkg -x, where the program,
+finding its rules in that root,
 grades a batch and the Python module checks an answer. Then the graders of the platforms,
 run from the unpacked package against a scratch directory laid out as each platform lays it
 out: Gradescope's setup.sh and run_autograder (/autograder), PrairieLearn's external grader
