@@ -53,8 +53,10 @@ struct GradeOptions {
   // order. 1: one line at a time, in this process.
   int jobs = 1;
 };
-/// With several jobs, the lines of a block for each (a fork per child and block).
-inline constexpr std::size_t block_lines_per_job = 512;
+/// With several jobs, the lines of a block for each (a fork per child and block: a child's
+/// caches go with it, and the pages GiNaC's reference counts write to are copied into it, so
+/// blocks are large; 512 lines were slower than one process on 2 cores).
+inline constexpr std::size_t block_lines_per_job = 4096;
 
 /// At most this many of PrairieLearn's `format_errors` are listed (then how many more): the
 /// results file is written as the batch is graded, and only totals are kept in memory.

@@ -1107,8 +1107,8 @@ TEST_CASE("CLI: check --batch --jobs grades in several processes and writes what
   const fs::path dir = fs::temp_directory_path() / ("tackle-jobs-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   // Every kind of line (answers, equations, diagrams, numbers, params, lines that are not
-  // answers, the poisoned ones), 2,600 lines, 2,400 of them not blank: with 2 jobs, three
-  // blocks of at most 1,024 lines.
+  // answers, the poisoned ones), 10,000 lines, over 9,000 of them not blank: with 2 jobs, two
+  // blocks (of 8,192 lines and the rest).
   std::string kinds;
   for (const char* seed : {"01-mixed.jsonl", "02-equations.jsonl", "03-poisoned.jsonl"})
     kinds += slurp(fs::path(TACKLE_SOURCE_DIR) / "tests/fuzz/seeds/batch" / seed);
@@ -1116,7 +1116,7 @@ TEST_CASE("CLI: check --batch --jobs grades in several processes and writes what
            "{\"id\": \"p\", \"unknown\": \"N_A\", \"answer\": \"30 N\", \"params\": {\"m\": 12}}\n";
   std::size_t lines = 0;
   std::string batch_text;
-  while (lines < 2600) {
+  while (lines < 10000) {
     batch_text += kinds;
     lines += static_cast<std::size_t>(std::count(kinds.begin(), kinds.end(), '\n'));
   }
@@ -1132,7 +1132,7 @@ TEST_CASE("CLI: check --batch --jobs grades in several processes and writes what
     };
     const auto one = graded("");
     CHECK(std::get<0>(one) == 0);
-    CHECK(std::count(std::get<1>(one).begin(), std::get<1>(one).end(), '\n') > 2048);
+    CHECK(std::count(std::get<1>(one).begin(), std::get<1>(one).end(), '\n') > 8192);
     for (const std::string jobs : {" --jobs 2", " --jobs 3", " --jobs 0"}) CHECK(graded(jobs) == one);
   }
   // A class's gradebook, the same.
