@@ -1159,8 +1159,7 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
       }
       return finish(Verdict::invalid, "unknown_name", where + hint);
     }
-    const bool limit = p.message.find("too ") != std::string::npos || p.message.find("at most") != std::string::npos;
-    return finish(Verdict::invalid, limit ? "too_large" : "syntax", where + p.message);
+    return finish(Verdict::invalid, p.limit ? "too_large" : "syntax", where + p.message);
   }
   const ex answer = *parsed.value;
   if (is_vector(answer)) return finish(Verdict::invalid, "syntax", "the answer is a vector; a single value was expected");

@@ -350,8 +350,7 @@ CheckResult EquationChecker::check(std::string_view text) const {
     const ParseResult parsed = parse_expression(sides[k], names, options_.limits);
     if (!parsed.value) {
       const ParseProblem& p = parsed.problems.front();
-      const bool limit = p.message.find("too ") != std::string::npos || p.message.find("at most") != std::string::npos;
-      return finish(Verdict::invalid, limit ? "too_large" : "syntax",
+        return finish(Verdict::invalid, p.limit ? "too_large" : "syntax",
                     "at column " + std::to_string(p.column + 1 + (k == 0 ? 0 : static_cast<int>(eq) + 1)) + ": " + p.message);
     }
     if (is_vector(*parsed.value)) return finish(Verdict::invalid, "syntax", "a side is a vector; write one component at a time");

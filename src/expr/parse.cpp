@@ -57,11 +57,14 @@ class Parser {
   [[noreturn]] void fail(int column, std::string message) {
     throw Failure{{column, std::move(message)}};
   }
+  [[noreturn]] void fail_limit(int column, std::string message) {
+    throw Failure{{column, std::move(message), true}};
+  }
 
  private:
   void tokenize() {
     if (text_.size() > limits_.max_length)
-      fail(0, "expression is too long (" + std::to_string(text_.size()) + " characters; at most " +
+      fail_limit(0, "expression is too long (" + std::to_string(text_.size()) + " characters; at most " +
                   std::to_string(limits_.max_length) + ")");
     std::size_t i = 0;
     while (i < text_.size()) {
@@ -111,7 +114,7 @@ class Parser {
 
   void push(Tok kind, std::string_view text, int col) {
     if (tokens_.size() >= limits_.max_tokens)
-      fail(col, "expression has too many tokens (at most " + std::to_string(limits_.max_tokens) + ")");
+      fail_limit(col, "expression has too many tokens (at most " + std::to_string(limits_.max_tokens) + ")");
     tokens_.push_back({kind, std::string(text), col});
   }
 
@@ -119,7 +122,7 @@ class Parser {
     Parser& p;
     DepthGuard(Parser& parser, int column) : p(parser) {
       if (++p.depth_ > p.limits_.max_depth)
-        p.fail(column, "expression is nested too deeply (at most " +
+        p.fail_limit(column, "expression is nested too deeply (at most " +
                            std::to_string(p.limits_.max_depth) + " levels)");
     }
     ~DepthGuard() { --p.depth_; }
@@ -207,7 +210,7 @@ class Parser {
       const numeric n = ex_to<numeric>(expo);
       if (!n.is_rational()) fail(col, "exponent must be a rational number");
       if (abs(n.numer()) > limits_.max_exponent || n.denom() > limits_.max_exponent)
-        fail(col, "exponent is too large (at most " + std::to_string(limits_.max_exponent) + ")");
+        fail_limit(col, "exponent is too large (at most " + std::to_string(limits_.max_exponent) + ")");
       // GiNaC throws for these from inside a new object, and that object then leaks.
       if (base.is_zero() && n.is_zero()) fail(col, "0^0 is undefined");
       if (base.is_zero() && n.is_negative()) fail(col, "division by zero");
@@ -215,7 +218,7 @@ class Parser {
         // Bound the size of the number the power would make (in bits) before making it.
         const numeric b = ex_to<numeric>(base);
         const long bits = b.is_rational() ? b.numer().int_length() + b.denom().int_length() : 64;
-        if (bits * std::abs(n.numer().to_long()) > 4096) fail(col, "number is too large");
+        if (bits * std::abs(n.numer().to_long()) > 4096) fail_limit(col, "number is too large");
       }
     }
     return pow(base, expo);
@@ -226,7 +229,7 @@ class Parser {
     for (char c : t.text)
       if (std::isdigit(static_cast<unsigned char>(c))) ++digits;
     if (digits > limits_.max_number_digits)
-      fail(t.column, "number has too many digits (at most " +
+      fail_limit(t.column, "number has too many digits (at most " +
                          std::to_string(limits_.max_number_digits) + ")");
     // Exact: mantissa digits over a power of ten, times 10^exponent.
     std::string mant = t.text;
@@ -234,9 +237,9 @@ class Parser {
     if (auto e = mant.find_first_of("eE"); e != std::string::npos) {
       const std::string es = mant.substr(e + 1);
       mant = mant.substr(0, e);
-      if (es.size() > 4) fail(t.column, "number exponent is too large");
+      if (es.size() > 4) fail_limit(t.column, "number exponent is too large");
       exp10 = std::stol(es);
-      if (exp10 > 30 || exp10 < -30) fail(t.column, "number exponent is too large (at most 30)");
+      if (exp10 > 30 || exp10 < -30) fail_limit(t.column, "number exponent is too large (at most 30)");
     }
     std::string intdigits = mant;
     if (auto dot = mant.find('.'); dot != std::string::npos) {

@@ -41,6 +41,7 @@ class NameResolver {
 struct ParseProblem {
   int column = 0;  // 0-based offset within the text
   std::string message;
+  bool limit = false;  // past one of ExprLimits (too long, too deep, too large a number), not a syntax error
 };
 
 struct ParseResult {

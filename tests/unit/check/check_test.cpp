@@ -713,3 +713,16 @@ find: [ddot(y_A), T]
   CHECK(c.check("ddot(y_A)", "(g*(m_B - m_A) - 2*c*dot(y_A))/(m_A + m_B)").verdict == Verdict::incorrect);
   CHECK(c.check("ddot(y_A)", "(g*(m_B - m_A) + 2*c*dot(y_B))/(m_A + m_B)").verdict == Verdict::incorrect);
 }
+
+TEST_CASE("Check: an answer that ends too early is a syntax error, one past a limit is too large", "[check][limits]") {
+  const auto early = suitcase().check("a_C", "((((((");
+  CHECK(early.verdict == Verdict::invalid);
+  CHECK(early.summary == "at column 7: expression ends too early");
+  CHECK(early.findings.front().code == "syntax");
+  const auto deep = suitcase().check("a_C", "mu*g^1000000");
+  CHECK(deep.verdict == Verdict::invalid);
+  CHECK(deep.findings.front().code == "too_large");
+  const auto step = suitcase().check_equation("N_A + N_B = (((");
+  CHECK(step.verdict == Verdict::invalid);
+  CHECK(step.findings.front().code == "syntax");
+}
