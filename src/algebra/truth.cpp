@@ -148,14 +148,16 @@ Truth::Values Truth::values(const std::vector<ex>& parts, bool fixed_only, std::
 }
 
 Truth::Decision Truth::holds(const std::vector<Row>& values) const {
-  bool exact = true;
+  bool exact = true, fresh_checked = false;
   for (std::size_t k = 0; k < values.size() && k < null_.size(); ++k) {
+    if (!allowed_point(k)) continue;
+    fresh_checked = fresh_checked || k >= fixed_;
     const bool rational = std::all_of(values[k].begin(), values[k].end(), [](const numeric& x) { return x.is_rational(); });
     for (const Row& x : null_[k])
       if (!orthogonal(values[k], x, tolerance_)) return {Answer::fails, rational && all_rational(null_[k])};
     exact = exact && rational && all_rational(null_[k]);
   }
-  return {values.size() > fixed_ ? Answer::holds : Answer::unknown, exact};
+  return {fresh_checked ? Answer::holds : Answer::unknown, exact};
 }
 
 std::optional<Row> Truth::solution(std::size_t k, std::mt19937& rng) const {
@@ -209,31 +211,81 @@ std::vector<Program> term_programs(const ex& residual, const Sample& layout, con
 
 }  // namespace
 
+void Truth::restrict_to(const std::vector<Condition>& conditions) {
+  for (const auto& c : conditions) {
+    const int sign = c.op == ">=" || c.op == ">" ? 1 : c.op == "<=" || c.op == "<" ? -1 : 0;
+    if (sign != 0) conditions_.push_back({Program(c.lhs - c.rhs, layout_, definitions_, angles_), sign});
+  }
+  if (conditions_.empty() || !usable_) return;
+  // A point where the unknowns are determined is a state, allowed or not; elsewhere the
+  // random solutions are screened one by one (holds_anyhow).
+  std::mt19937 rng(3);
+  allowed_points_.assign(points_.size(), true);
+  bool any_fresh = false;
+  for (std::size_t k = 0; k < points_.size(); ++k) {
+    if (null_[k].size() == 1)
+      if (const auto u = solution(k, rng)) allowed_points_[k] = allowed(k, *u);
+    any_fresh = any_fresh || (k >= fixed_ && allowed_points_[k]);
+  }
+  // None of the fresh states meets the conditions (they fail near the given numbers): the
+  // equations alone decide.
+  if (!any_fresh) {
+    allowed_points_.clear();
+    conditions_.clear();
+  }
+}
+
+bool Truth::allowed(std::size_t k, const Row& unknowns) const {
+  if (conditions_.empty()) return true;
+  const Sample p = extended(k, unknowns);
+  for (const auto& c : conditions_) {
+    const auto v = c.difference(p);
+    if (!v || !v->is_real()) continue;
+    const numeric x = c.sign > 0 ? *v : -*v;
+    if (x.is_negative() && !tolerance_.negligible(x, size_of(unknowns) + abs(x))) return false;
+  }
+  return true;
+}
+
 Truth::Decision Truth::holds_anyhow(const ex& residual) const {
   const std::vector<Program> terms = term_programs(residual, layout_, definitions_, angles_);
   std::mt19937 rng(7);
   bool exact = true, any = false;
   for (std::size_t k = 0; k < points_.size(); ++k)
-    for (int draw = 0; draw < 2; ++draw) {
+    for (int draw = 0, kept = 0; draw < 8 && kept < 2; ++draw) {
+      if (!allowed_point(k)) break;
       const auto u = solution(k, rng);
       if (!u) continue;
+      if (!allowed(k, *u)) {
+        if (null_[k].size() <= 1) break;  // the one solution there: a state the model leaves out
+        continue;
+      }
+      ++kept;
       const auto v = evaluate_terms(terms, extended(k, *u));
       if (!v) continue;
-      any = true;
+      any = any || k >= fixed_;  // a fresh state: the fixed ones alone never settle it
       if (!tolerance_.negligible(v->value, v->scale)) return {Answer::fails, v->value.is_rational()};
       exact = exact && v->value.is_rational();
     }
-  return {any && fresh() ? Answer::holds : Answer::unknown, exact};
+  return {any ? Answer::holds : Answer::unknown, exact};
 }
 
 Truth::Decision Truth::vanishes(const ex& residual) const {
   const std::vector<Program> terms = term_programs(residual, layout_, definitions_, angles_);
   std::mt19937 rng(11);
-  std::uniform_int_distribution<int> pick(1, 10000);
+  // Either sign, where the stated conditions allow it: sqrt(T^2) = T says nothing where T >= 0
+  // is stated, and says T >= 0 where it is not.
+  std::uniform_int_distribution<int> pick(1, 10000), sign(0, 1);
   bool exact = true, any = false;
   for (std::size_t k = 0; k < points_.size(); ++k) {
     Row u;
-    for (std::size_t j = 0; j < family_.unknowns.size(); ++j) u.push_back(numeric(pick(rng), 1000));
+    // (The last attempt all positive: forces that the conditions keep from pulling or pushing.)
+    for (int attempt = 0; attempt < 8 && (attempt == 0 || !allowed(k, u)); ++attempt) {
+      u.clear();
+      for (std::size_t j = 0; j < family_.unknowns.size(); ++j)
+        u.push_back(numeric(attempt == 7 || sign(rng) ? pick(rng) : -pick(rng), 1000));
+    }
+    if (!allowed(k, u)) continue;
     const auto v = evaluate_terms(terms, extended(k, u));
     if (!v) continue;
     any = true;

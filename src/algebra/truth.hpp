@@ -77,8 +77,16 @@ class Truth {
   /// those points: it fails at one, or holds at all of them; unknown when it holds there and
   /// they are not past the fixed ones.
   [[nodiscard]] Decision holds(const std::vector<Row>& values) const;
+  /// The model's stated conditions (`lhs op rhs`, op one of >=, <=, >, <), so that a random
+  /// solution where one fails (a suitcase that tips: N_A < 0) is not a state the model
+  /// allows; an equality or a condition that cannot be evaluated there restricts nothing.
+  struct Condition {
+    GiNaC::ex lhs, rhs;
+    std::string op;
+  };
+  void restrict_to(const std::vector<Condition>& conditions);
   /// Whether `residual` (any expression in the unknowns and the inputs) vanishes at random
-  /// solutions at every point.
+  /// solutions at every point, those where a stated condition fails left out.
   [[nodiscard]] Decision holds_anyhow(const GiNaC::ex& residual) const;
   /// Whether `residual` vanishes whatever the unknowns are (random values, not solutions).
   [[nodiscard]] Decision vanishes(const GiNaC::ex& residual) const;
@@ -111,7 +119,18 @@ class Truth {
   // kept first), and at each point their left inverse (none where they are not independent).
   std::vector<std::size_t> basis_;
   std::vector<std::optional<LeftInverse>> inverses_;
+  struct Stated {
+    Program difference;  // lhs - rhs
+    int sign;            // +1: >= or > (the difference must not be negative), -1: <= or <
+  };
+  std::vector<Stated> conditions_;
+  // Whether each point is a state the model allows (its one solution meets the stated
+  // conditions); empty: every point (no conditions, or none of the points meets them).
+  std::vector<bool> allowed_points_;
   bool usable_ = false;
+  [[nodiscard]] bool allowed_point(std::size_t k) const { return allowed_points_.empty() || allowed_points_[k]; }
+  // Whether the stated conditions hold (within the tolerance) at point k with these unknowns.
+  [[nodiscard]] bool allowed(std::size_t k, const Row& unknowns) const;
   void prepare_basis();
 
   [[nodiscard]] std::size_t width() const { return family_.unknowns.size() + 1; }

@@ -308,7 +308,7 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
     inputs.push_back(input_near(p.symbol, value, angles.count(p.symbol) != 0));
   }
   states_ = States(std::move(inputs));
-  for (int k = 0; k < options_.points; ++k) points_.push_back(states_.fixed(k));
+  choose_fixed_points(analysis);
   for (const Sample& p : points_) point_doubles_.push_back(doubles_of(p));
   extend_points();
   for (const Sample& p : extended_points_) extended_doubles_.push_back(doubles_of(p));
@@ -524,6 +524,79 @@ constexpr std::size_t max_kinks = 4;  // arguments up to their sign: 16 combinat
 
 }  // namespace
 
+void Checker::choose_fixed_points(const Analysis& analysis) {
+  for (const auto& c : analysis.solution.conditions) {
+    if (c.depends_on_free || !c.condition) continue;
+    const std::string& op = c.condition->op;
+    const int sign = op == ">=" || op == ">" ? 1 : op == "<=" || op == "<" ? -1 : 0;
+    const ex form = substituted(c.expr, definitions_);
+    if (sign != 0) conditions_.push_back({form, program(form), sign});
+  }
+  const auto n = static_cast<std::size_t>(std::max(options_.points, 0));
+  for (int k = 0; k < 4 * options_.points && points_.size() < n && !conditions_.empty(); ++k)
+    if (Sample p = states_.fixed(k); allowed(p)) points_.push_back(std::move(p));
+  if (points_.size() == n) return;
+  // Too few states meet the conditions (they fail near the given numbers): every state is
+  // compared at.
+  conditions_.clear();
+  points_.clear();
+  for (int k = 0; k < options_.points; ++k) points_.push_back(states_.fixed(k));
+}
+
+bool Checker::allowed(const Sample& p) const {
+  for (const auto& c : conditions_) {
+    const auto v = c.at(p);
+    if (!v || !v->is_real()) continue;
+    const numeric x = c.sign > 0 ? *v : -*v;
+    if (x.is_negative() && !same(x, numeric(0))) return false;
+  }
+  return true;
+}
+
+std::optional<bool> Checker::negative_factor(const ex& e) const {
+  if (is_exactly<numeric>(e)) {
+    const numeric& x = ex_to<numeric>(e);
+    if (!x.is_real() || x.is_zero()) return std::nullopt;
+    return x.is_negative();
+  }
+  if (is_exactly<symbol>(e)) {
+    // A parameter (a mass, a length, g: drawn positive), not an angle or a coordinate.
+    const SymbolInfo* s = symbols_->find(e);
+    const auto& layout = states_.layout();
+    for (std::size_t i = 0; i < layout.size(); ++i)
+      if (layout[i].first.is_equal(e)) {
+        if (!s || s->role != SymbolRole::parameter || states_.angles()[i]) return std::nullopt;
+        return false;
+      }
+    return std::nullopt;
+  }
+  if (is_exactly<power>(e) && is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_rational()) {
+    if (ex_to<numeric>(e.op(1)).is_even()) return false;
+    return negative_factor(e.op(0));
+  }
+  if (is_exactly<mul>(e)) {
+    bool negative = false;
+    for (const auto& f : e) {
+      const auto n = negative_factor(f);
+      if (!n) return std::nullopt;
+      negative = negative != *n;
+    }
+    return negative;
+  }
+  return std::nullopt;
+}
+
+bool Checker::excluded(const ex& argument, bool negative) const {
+  for (const auto& c : conditions_) {
+    // argument = ratio * form, ratio of a known sign, and the condition says sign * form >= 0.
+    const auto ratio_negative = negative_factor(normal(argument / c.form));
+    if (!ratio_negative) continue;
+    const bool says_negative = (c.sign < 0) != *ratio_negative;
+    if (says_negative != negative) return true;
+  }
+  return false;
+}
+
 Sample Checker::draw_point(std::mt19937& rng) const {
   // Finer than the fixed points (1.5 million values between half and twice each value): an
   // answer built to vanish at some values meets one of them by a chance of its degree over
@@ -542,10 +615,12 @@ const std::vector<Sample>& Checker::FreshPoints::get() {
     pool.points.clear();
     pool.values.clear();
     pool.uses = 0;
-    // Where the reference is defined (a point on a pole is drawn again).
+    // Where the reference is defined (a point on a pole is drawn again) and the model's
+    // conditions hold.
     for (int k = 0; k < checker_.options_.points; ++k)
       for (int attempt = 0; attempt < 16; ++attempt) {
         Sample p = checker_.draw_point(*pool.rng);
+        if (!checker_.allowed(p)) continue;
         if (const auto v = ref_.program(p)) {
           pool.points.push_back(std::move(p));
           pool.values.push_back(*v);
@@ -687,6 +762,12 @@ Checker::Decision Checker::decide(const Reference& ref, const ex& typed, const s
       default: differing.push_back(signs);
     }
   }
+  // A sign the model's conditions leave out (abs(N_A) where N_A >= 0 is stated) is no state.
+  std::erase_if(differing, [&](std::size_t signs) {
+    for (std::size_t j = 0; j < args.size(); ++j)
+      if (excluded(args[j], ((signs >> j) & 1) != 0)) return true;
+    return false;
+  });
   if (differing.empty()) return correct(all_proved, all_exact);
   // Along each parameter of the kinks' arguments, from each fixed point: values from 2^-64 to
   // 3 * 2^63 times the point's, so both sides of a kink within them are met.
@@ -712,7 +793,7 @@ Checker::Decision Checker::decide(const Reference& ref, const ex& typed, const s
             clear = v && !v->is_zero();
             if (clear && v->is_negative()) signs |= std::size_t{1} << k;
           }
-          if (!clear || std::find(differing.begin(), differing.end(), signs) == differing.end()) continue;
+          if (!clear || std::find(differing.begin(), differing.end(), signs) == differing.end() || !allowed(p)) continue;
           const auto a = answer_at(p), b = ref.program(p);
           if (a && b && !same(*a, *b)) return Decision{wrong.verdict, "numeric", wrong.code, wrong.message};
         }
@@ -1547,14 +1628,18 @@ void Checker::diagnose(const Reference& ref, const ex& answer, const Program& an
       if (matches_at(swap, at_points))
         r.findings.push_back({"swapped", to_text(params[i]) + " and " + to_text(params[j]) + " are swapped"});
     }
-  // Correct only in a special case: a parameter at zero, or two parameters equal.
-  for (std::size_t i = 0; i < params.size(); ++i) {
+  // Correct only in a special case: a parameter at zero, or two parameters equal. Only: an
+  // answer right at some of the points (|a| for a, where a > 0) is no special case.
+  bool differs_everywhere = true;
+  for (std::size_t k = 0; k < n && differs_everywhere; ++k) differs_everywhere = !same(values[k], ref.at_points[k]);
+  for (std::size_t i = 0; i < params.size() && differs_everywhere; ++i) {
     const ex& p = params[i];
     const auto zeroed = diag.zeroed.find(i);
     if (zeroed == diag.zeroed.end() || used.count(p)) continue;
     if (matches_at([](Sample&) {}, zeroed->second)) r.findings.push_back({"special_case", "this is correct only " + describe(p)});
   }
   for (const auto& [pair, reference] : diag.equalled) {
+    if (!differs_everywhere) break;
     const std::size_t i = pair.first, j = pair.second;  // (clang 14: a lambda cannot capture a structured binding)
     const auto equal_values = [&](Sample& pt) {
       numeric* x = value_of(pt, params[i]);

@@ -253,6 +253,18 @@ class Checker {
   /// lengths too).
   [[nodiscard]] Program program(const GiNaC::ex& e) const;
   void extend_points();
+  /// The fixed points: the first of the states drawn with a fixed seed that the model's
+  /// stated conditions allow (all the first ones when too few do).
+  void choose_fixed_points(const Analysis& analysis);
+  /// Whether the model's stated conditions (their closed forms) hold at `p`; true where one
+  /// cannot be evaluated.
+  [[nodiscard]] bool allowed(const Sample& p) const;
+  /// Whether the conditions leave out every state where `argument` has this sign (negative or
+  /// not): a condition that is `argument` times a number, and says the other sign.
+  [[nodiscard]] bool excluded(const GiNaC::ex& argument, bool negative) const;
+  /// Whether `e` is negative, where its sign is known whatever the point (a number times
+  /// powers of parameters, which are positive); none where it is not.
+  [[nodiscard]] std::optional<bool> negative_factor(const GiNaC::ex& e) const;
   bool same(const GiNaC::numeric& a, const GiNaC::numeric& b) const;
   std::string describe(const GiNaC::ex& parameter) const;
 
@@ -267,6 +279,15 @@ class Checker {
   // points are drawn near (an angle's: its tan(angle/2)); the fixed points.
   States states_;
   std::vector<Sample> points_;
+  // The model's stated conditions in closed form (`expr op 0`, op's sign: +1 for >= and >,
+  // -1 for <= and <): a state where one fails is not one the model allows, and no answer is
+  // compared there. Empty when they fail at most fixed points (near the given numbers).
+  struct StatedCondition {
+    GiNaC::ex form;  // its closed form, definitions put in
+    Program at;
+    int sign;
+  };
+  std::vector<StatedCondition> conditions_;
   // The points with each defined parameter's value added (l = sqrt(b^2 + d^2 + e^2) at the
   // point), its layout's angles: a diagnosis swaps a defined parameter's value there rather
   // than substitute the answer anew for each pair. Empty when a definition has no value.

@@ -232,6 +232,7 @@ void EquationChecker::build_levels(const Analysis& analysis) {
   level(acceleration_, "balances and constraints", pointers(equations_), accelerations);
   level(position_, "length sums", pointers(position_equations_), positions);
   derivation_size_ = analysis.system.equations.size();
+  for (const auto& c : m.conditions) conditions_.push_back({c.lhs, c.rhs, c.op});
 }
 
 // The states, then each level's algebra over them (a checker made for answers alone never
@@ -267,6 +268,7 @@ void EquationChecker::prepare() const {
     // The complete set cannot decide (it contradicts itself at the states): the derivation's own.
     if (acceleration_.truth && !acceleration_.truth->usable() && acceleration_.equations.size() > derivation_size_)
       make(acceleration_, derivation_size_, false);
+    if (acceleration_.truth) acceleration_.truth->restrict_to(conditions_);
     make(position_, position_.equations.size(), true);
   });
 }

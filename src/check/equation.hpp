@@ -93,6 +93,7 @@ class EquationChecker {
   mutable Level acceleration_, rate_, position_;
   std::size_t derivation_size_ = 0;  // the derivation's own equations, first among the acceleration level's
   std::vector<StateInput> inputs_;
+  std::vector<Truth::Condition> conditions_;  // the model's stated conditions: the states it allows
   mutable std::once_flag prepared_;
 };
 

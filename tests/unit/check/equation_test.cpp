@@ -191,6 +191,14 @@ const std::vector<EquationStep> steps{
     // (A tension is not negative: sqrt(T^2) = T holds whatever T is, saying nothing.)
     {"sample-12.3-two-mass-pulley", "sqrt(T^2) = T", Verdict::incorrect, "trivial", ""},
     {"sample-12.3-two-mass-pulley", "sqrt(T^2) = -T", Verdict::incorrect, "value", ""},
+    // An acceleration has either sign: sqrt(a^2) = a says something, and it is false.
+    {"sample-12.3-two-mass-pulley", "sqrt(ddot(x_B)^2) = ddot(x_B)", Verdict::incorrect, "value", ""},
+    // Sample 12.7: N_A < 0 (the suitcase tips) at some parameters near the given ones, which
+    // the model's N_A >= 0 leaves out: as T above, whatever the states drawn.
+    {"sample-12.7-suitcase", "sqrt(N_A^2) = N_A", Verdict::incorrect, "trivial", ""},
+    {"sample-12.7-suitcase", "N_A*abs(N_A) = N_A^2", Verdict::incorrect, "trivial", ""},
+    {"sample-12.7-suitcase", "N_A = sqrt((m*g*(1/2 - mu*h/l))^2)", Verdict::correct, "", ""},
+    {"sample-12.7-suitcase", "N_A = -sqrt((m*g*(1/2 - mu*h/l))^2)", Verdict::incorrect, "value", ""},
     {"sample-12.3-two-mass-pulley", "log(F/T) = 0", Verdict::incorrect, "value", ""},
     {"sample-12.3-two-mass-pulley", "sin(ddot(x_A)/ddot(x_B)) = 0", Verdict::incorrect, "value", ""},
     {"sample-12.3-two-mass-pulley", "sin(ddot(x_A)/ddot(x_B)) = sin(3/2)", Verdict::correct, "", ""},
