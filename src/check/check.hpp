@@ -24,7 +24,7 @@
 #include "algebra/states.hpp"
 #include "core/limits.hpp"
 #include "core/units.hpp"
-#include "pipeline/pipeline.hpp"
+#include "analysis/analysis.hpp"
 
 namespace tackle {
 

@@ -135,6 +135,7 @@ struct Options {
   int variants = 0;
   unsigned long long seed = 1;
   bool seeded = false;  // check: --seed given
+  int time_budget_ms = 250;  // check: per answer
   // sweep and simulate
   std::string vary, plot, csv_out, svg_out, pgf_out, sim_plot;
   std::vector<std::string> fixes;
@@ -352,6 +353,7 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
   options.echo_latex = !o.no_latex;
   options.reveal = o.reveal;
   if (o.seeded) options.seed = o.seed;
+  options.time_budget = std::chrono::milliseconds(o.time_budget_ms);
   const tackle::Checker checker(*analysis, options);
   std::vector<std::pair<std::string, std::string>> set;
   for (const auto& v : o.set_values) {
@@ -653,6 +655,11 @@ int run(int argc, char** argv) {
                                         "a student who knows the points can build a wrong answer that passes)")
         ->check(seed_number)
         ->each([&](const std::string&) { o.seeded = true; });
+    check->add_option("--time-budget", o.time_budget_ms,
+                      "Milliseconds to check one answer in; past them it is undecided (code budget). A slow or busy "
+                      "machine may need more")
+        ->check(CLI::Range(1, 600000))
+        ->capture_default_str();
     check->add_flag("--require-simplified", o.require_simplified, "A correct answer that is not simplified is incorrect");
     check->add_flag("--no-latex", o.no_latex, "Do not echo answers in LaTeX (faster batches)");
     check->add_option("--format", o.format, "Output format (single answers)")->check(CLI::IsMember({"text", "json"}))->capture_default_str();

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/pipeline.hpp"
-#include "report/sweep.hpp"
+#include "analysis/analysis.hpp"
+#include "numeric/plot.hpp"
 
 namespace tackle {
 
@@ -44,8 +44,5 @@ struct Simulation {
 /// Runs the motion; problems with the spec (a plot name it does not know, no 'until') are
 /// located InputErrors (`where` names the option or the description key).
 [[nodiscard]] Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Location& where);
-
-/// The run as text: the events, then the table.
-[[nodiscard]] std::string simulation_text(const Simulation& s);
 
 }  // namespace tackle

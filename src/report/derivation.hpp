@@ -12,7 +12,7 @@
 
 #include "energy/power.hpp"
 #include "figure/figure.hpp"
-#include "report/plot.hpp"
+#include "numeric/plot.hpp"
 #include "equations/equations.hpp"
 #include "model/model.hpp"
 #include "motion/motion.hpp"

@@ -470,4 +470,19 @@ std::string sweep_pgfplots(const SweepResult& r) {
   return out + "\\end{tikzpicture}\n";
 }
 
+std::string simulation_text(const Simulation& s) {
+  std::string out = s.table.title + "\n";
+  out += "Simulated to t = " + decimal_string(numeric(s.reached), 6) + " s (" + std::to_string(s.steps) +
+         " steps, Dormand-Prince 5(4))";
+  if (s.complete && s.not_followed.empty()) out += "; the model holds throughout.\n";
+  else if (s.complete) out += "; what it follows holds throughout.\n";
+  else out += ".\n";
+  for (const auto& [source, why] : s.not_followed) out += "Not followed: " + source + " (" + why + ").\n";
+  if (!s.stopped.empty()) out += "Stopped: " + s.stopped + ".\n";
+  for (const auto& e : s.events)
+    out += "Event at t = " + decimal_string(numeric(e.t), 6) + " s: " + e.what + (e.ends ? " (the run ends)" : "") + "\n";
+  out += "\n" + sweep_csv(s.table);
+  return out;
+}
+
 }  // namespace tackle

@@ -9,7 +9,8 @@
 
 #include "model/model.hpp"
 #include "report/derivation.hpp"
-#include "report/plot.hpp"
+#include "motion/simulate.hpp"
+#include "numeric/plot.hpp"
 
 namespace tackle {
 
@@ -29,5 +30,8 @@ struct SweepSpec {
 [[nodiscard]] std::string sweep_csv(const SweepResult& r);
 [[nodiscard]] std::string sweep_svg(const SweepResult& r);
 [[nodiscard]] std::string sweep_pgfplots(const SweepResult& r);
+
+/// A numeric run (motion/simulate.hpp) as text: the events, then the table as CSV.
+[[nodiscard]] std::string simulation_text(const Simulation& s);
 
 }  // namespace tackle

@@ -77,7 +77,7 @@ struct CheckedCondition {
 [[nodiscard]] std::vector<SolvedFor> solve_condition(const GiNaC::ex& expr, const std::string& op,
                                                      const std::vector<GiNaC::ex>& parameters);
 
-/// A connection decided at the given numbers (pipeline/regimes): the rule tried first and the
+/// A connection decided at the given numbers (analysis/regimes): the rule tried first and the
 /// one chosen, with what failed and the first one's conditions solved (for the derivation).
 struct RegimeChoice {
   std::string connection;  // the connection's label in the chosen model ("sliding between at A")

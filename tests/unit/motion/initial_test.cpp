@@ -5,7 +5,7 @@
 // Expected values by hand.
 #include <catch2/catch.hpp>
 
-#include "motion/simulate.hpp"
+#include "report/sweep.hpp"
 #include "numeric/evaluate.hpp"
 #include "../../support/helpers.hpp"
 

@@ -1,10 +1,10 @@
-#include "pipeline/regimes.hpp"
+#include "analysis/regimes.hpp"
 
 #include <algorithm>
 
 #include "expr/rational.hpp"
 #include "numeric/evaluate.hpp"
-#include "pipeline/pipeline.hpp"
+#include "analysis/analysis.hpp"
 
 namespace tackle {
 
