@@ -48,6 +48,7 @@ import sys
 from datetime import datetime
 
 LIMIT = 64 * 1024
+DRAIN = 1024 * 1024  # a body too long is read and dropped up to this (then answered 413)
 READ_TIMEOUT = 10  # seconds a client has to send its request (else 408 and dropped)
 DEFAULT_TIME_LIMIT = 5.0
 HARD_TIMEOUT_MARGIN = 25  # gunicorn kills a worker silent for the time limit and this
@@ -283,11 +284,22 @@ def read_body(environ):
         raise BadRequest(411, "send the body with a Content-Length")
     if not re.fullmatch(r"[0-9]{1,12}", length):
         raise BadRequest(400, "the Content-Length is not one whole number")
-    if int(length) > LIMIT:
-        raise BadRequest(413, "the request is longer than %d bytes" % LIMIT)
     sock = environ.get("gunicorn.socket")
     if sock is not None:
         sock.settimeout(READ_TIMEOUT)  # a client that stops sending mid-request is answered 408
+    if int(length) > LIMIT:
+        # Read (up to DRAIN bytes) and dropped: a connection closed with a body unread is reset,
+        # and a client still sending would see the reset rather than the 413.
+        left = min(int(length), DRAIN)
+        try:
+            while left > 0:
+                chunk = environ["wsgi.input"].read(min(left, 65536))
+                if not chunk:
+                    break
+                left -= len(chunk)
+        except OSError:
+            pass
+        raise BadRequest(413, "the request is longer than %d bytes" % LIMIT)
     try:
         body = environ["wsgi.input"].read(int(length))
     except OSError:  # (socket.timeout, or the client gone)
