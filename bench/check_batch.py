@@ -22,13 +22,18 @@ equations', by exact rank in Fractions at two random points.
 Prints the whole-process time (best of --repeat runs, with the machine's load average before
 each), the time per check, and how many verdicts disagree (there must be none).
 With --each, every problem gets N lines of its own (a batch of N per example).
-Usage: bench/check_batch.py [--build DIR] [-n 10000] [--repeat 5] [--seed 1] [--each] [--jobs N] [--equations | --both]
+With --module, the same lines are also checked through the Python module (a Problem loaded once,
+one call a line) and its time a check printed beside the batch's; with --instructions too, the
+instructions a check of both under callgrind (valgrind), which a loaded machine does not move.
+Usage: bench/check_batch.py [--build DIR] [-n 10000] [--repeat 5] [--seed 1] [--each] [--jobs N] [--module [--instructions]] [--equations | --both]
 """
 import argparse
 import math
 import json
 import os
 import random
+import re
+import resource
 import subprocess
 import sys
 import tempfile
@@ -402,6 +407,12 @@ def main():
     ap.add_argument("--jobs", type=int, default=1, help="pass --jobs N (grading processes side by side; 1: one)")
     ap.add_argument("--each", action="store_true",
                     help="n lines for each problem (one batch of n per example) rather than n in all")
+    ap.add_argument("--module", action="store_true",
+                    help="also check the same lines through the Python module (Problem.check / check_equation, one call a "
+                         "line, the problem loaded once), in process, and print its time a check beside the batch's")
+    ap.add_argument("--instructions", action="store_true",
+                    help="with --module: count instructions a check under callgrind too (each problem's first 500 lines; "
+                         "the batch's and the module's, each less the same run with no check)")
     ap.add_argument("--write", metavar="DIR", help="write each problem's batch (PROBLEM.jsonl) to DIR and stop (to profile)")
     kind = ap.add_mutually_exclusive_group()
     kind.add_argument("--equations", action="store_true", help="distinct equations instead of answers")
@@ -426,7 +437,7 @@ def run(args, equations):
                 f.write("".join(l + "\n" for p, l, _ in lines if p == problem))
         return 0
     total_time, total_checks, wrong = 0.0, 0, 0
-    rows = []
+    rows, module_rows, instruction_rows = [], [], []
     with tempfile.TemporaryDirectory() as tmp:
         for problem in PROBLEMS:
             mine = [(l, e) for p, l, e in lines if p == problem]
@@ -440,13 +451,14 @@ def run(args, equations):
                 cmd.append("--no-latex")
             if args.jobs != 1:
                 cmd += ["--jobs", str(args.jobs)]
-            best, loads, output = None, [], None
+            best, best_cpu, loads, output = None, None, [], None
             for _ in range(args.repeat):
                 loads.append(os.getloadavg()[0])
-                start = time.perf_counter()
+                start, cpu = time.perf_counter(), children_cpu()
                 done = subprocess.run(cmd, stdout=subprocess.PIPE, check=True)
-                elapsed = time.perf_counter() - start
+                elapsed, cpu = time.perf_counter() - start, children_cpu() - cpu
                 best = elapsed if best is None else min(best, elapsed)
+                best_cpu = cpu if best_cpu is None else min(best_cpu, cpu)
                 output = done.stdout
             got = [json.loads(x)["verdict"] for x in output.decode().splitlines()]
             bad = [(l, e, g) for (l, e), g in zip(mine, got) if e != g]
@@ -457,6 +469,11 @@ def run(args, equations):
             wrong += len(bad)
             right_share = sum(e == "correct" for _, e in mine) / max(1, len(mine))
             rows.append((problem, len(mine), right_share, best, loads))
+            if args.module:
+                module_rows.append((problem, len(mine), best, best_cpu) + module_time(args, problem, mine))
+                wrong += module_rows[-1][-1]
+                if args.instructions:
+                    instruction_rows.append((problem,) + instructions_a_check(args, problem, mine[:500], tmp))
             total_time += best
             total_checks += len(mine)
     print(f"\n| problem | {what} (right share) | whole process, best of {args.repeat} | per check | load before runs |")
@@ -464,10 +481,94 @@ def run(args, equations):
     for problem, count, share, best, loads in rows:
         print(f"| {problem} | {count} ({share:.0%}) | {best * 1000:.0f} ms | {best / count * 1e6:.1f} us | "
               f"{min(loads):.1f} to {max(loads):.1f} |")
+    if module_rows:
+        print(f"\n| problem | {what} | batch, whole process, a check: wall (CPU) | module, in process, a check: wall (CPU) "
+              f"| module / batch: wall (CPU) |")
+        print("|---|---|---|---|---|")
+        for problem, count, batch, batch_cpu, module, module_cpu, first, _ in module_rows:
+            print(f"| {problem} | {count} | {batch / count * 1e6:.1f} us ({batch_cpu / count * 1e6:.1f} us) | "
+                  f"{module / count * 1e6:.1f} us ({module_cpu / count * 1e6:.1f} us; first call {first * 1e6:.0f} us) | "
+                  f"{module / batch:.2f} ({module_cpu / batch_cpu:.2f}) |")
+        print(f"(best of {args.repeat} each; CPU: user and system time, the batch's of its process, the module's of this one)")
+    if instruction_rows:
+        print(f"\n| problem | {what} | batch: instructions a check | module: instructions a check | module / batch |")
+        print("|---|---|---|---|---|")
+        for problem, count, batch, module in instruction_rows:
+            print(f"| {problem} | {count} | {batch / 1000:.0f}k | {module / 1000:.0f}k | {module / batch:.2f} |")
+        print("(callgrind; each run less the same run with no check: the batch with an empty file, the module with its "
+              "lines read and not checked)")
     print(f"\n{total_checks} distinct {what}: {total_time * 1000:.0f} ms whole process in all "
           f"({total_time / total_checks * 1e6:.1f} us a check); verdicts that disagree with the "
           f"independent evaluation: {wrong}")
     return wrong
+
+
+def children_cpu():
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
+
+
+MODULE_RUN = """
+import json, sys
+sys.path.insert(0, sys.argv[1])
+import tackle
+p = tackle.Problem(sys.argv[2])
+lines = [json.loads(l) for l in open(sys.argv[3])]
+if sys.argv[4] == "check":
+    for d in lines:
+        p.check_equation(d["equation"]) if "equation" in d else p.check(d["unknown"], d["answer"])
+"""
+
+
+def callgrind(cmd):
+    out = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null"] + cmd,
+                         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, check=True).stderr
+    return int(re.search(r"Collected : (\d+)", out).group(1))
+
+
+def instructions_a_check(args, problem, lines, tmp):
+    """(lines, the batch's instructions a check, the module's), each less its run with no check."""
+    path = os.path.join(tmp, problem + ".head.jsonl")
+    with open(path, "w") as f:
+        f.write("".join(l + "\n" for l, _ in lines))
+    empty = os.path.join(tmp, "empty.jsonl")
+    open(empty, "w").close()
+    yaml = os.path.join(ROOT, "examples", problem + ".yaml")
+    batch = [os.path.join(args.build, "tackle"), "check", yaml, "--batch"]
+    module = [sys.executable, "-c", MODULE_RUN, os.path.join(args.build, "python"), yaml, path]
+    n = len(lines)
+    return (n, (callgrind(batch + [path]) - callgrind(batch + [empty])) / n,
+            (callgrind(module + ["check"]) - callgrind(module + ["read"])) / n)
+
+
+def module_time(args, problem, lines):
+    """The lines checked through the Python module, one call each, the problem loaded once
+    (outside the time): (best of args.repeat in seconds, wall and CPU, the first call's,
+    verdicts wrong)."""
+    sys.path.insert(0, os.path.join(args.build, "python"))
+    import tackle  # noqa: E402
+    calls = []
+    for line, expected in lines:
+        d = json.loads(line)
+        calls.append(((d["equation"],) if "equation" in d else (d["unknown"], d["answer"]), expected))
+    best, best_cpu, first_call, wrong = None, None, None, 0
+    for _ in range(args.repeat):
+        p = tackle.Problem(os.path.join(ROOT, "examples", problem + ".yaml"))
+        check = p.check_equation if "equation" in json.loads(lines[0][0]) else p.check
+        got = []
+        start, cpu = time.perf_counter(), time.process_time()
+        for i, (call, _) in enumerate(calls):
+            got.append(check(*call)["verdict"])
+            if i == 0 and first_call is None:
+                first_call = time.perf_counter() - start
+        elapsed, cpu = time.perf_counter() - start, time.process_time() - cpu
+        best = elapsed if best is None else min(best, elapsed)
+        best_cpu = cpu if best_cpu is None else min(best_cpu, cpu)
+        bad = [(c, e, g) for (c, e), g in zip(calls, got) if e != g]
+        for b in bad[:5]:
+            print("MODULE DISAGREES:", b, file=sys.stderr)
+        wrong = max(wrong, len(bad))
+    return best, best_cpu, first_call, wrong
 
 
 if __name__ == "__main__":

@@ -61,7 +61,8 @@ enum class Verdict { correct, incorrect, invalid, undecided };
 /// Codes: unknown_name, syntax, too_large, not_an_answer, wrong_unknown, no_unit, unit,
 /// dimension, sign, factor, other_unknown, swapped, special_case, extra_parameter,
 /// missing_parameter, trig_swapped, term_sign, missing_term, extra_term, value, not_simplified, tolerance,
-/// budget, evaluation, internal (an item that made tackle fail: undecided). Equations
+/// budget, evaluation, internal (an item that made tackle fail: undecided), time_limit (a worked
+/// solution's step not checked: its time limit was past). Equations
 /// (check/equation.hpp) also: not_an_equation, trivial, not_linear, model, points, missing_force, force_sign, extra_force, missing_inertia, inertia_sign, wrong_mass,
 /// wrong_acceleration, length_sum. Free body diagrams (check/fbd.hpp): missing_force,
 /// force_direction, wrong_point, extra_force, other_body, internal_force.

@@ -290,11 +290,20 @@ void take_penalty(SolutionGrade& g, const Rubric& rubric) {
 
 }  // namespace
 
-SolutionGrade grade_solution(const Checker& checker, const Model& model, const std::vector<SolutionStep>& steps, const Rubric& rubric) {
+SolutionGrade grade_solution(const Checker& checker, const Model& model, const std::vector<SolutionStep>& steps, const Rubric& rubric,
+                             std::optional<std::chrono::steady_clock::time_point> deadline) {
   SolutionGrade g;
   Given given;
   for (std::size_t i = 0; i < steps.size(); ++i) {
-    g.steps.push_back(grade_step(checker, model, steps[i], rubric.fbd, given));
+    if (deadline && std::chrono::steady_clock::now() >= *deadline) {
+      CheckResult late;
+      late.unknown = steps[i].unknown;
+      late.equation = steps[i].kind == SolutionStep::Kind::equation;
+      late.conclude(Verdict::undecided, "time_limit", "not checked: the solution took longer than its time limit to check");
+      g.steps.push_back({steps[i], std::move(late), ""});
+    } else {
+      g.steps.push_back(grade_step(checker, model, steps[i], rubric.fbd, given));
+    }
     if (g.steps.back().result.verdict != Verdict::correct && !g.first_wrong) g.first_wrong = i + 1;
   }
   const Needs needs = needs_of(checker);

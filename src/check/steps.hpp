@@ -6,6 +6,7 @@
 // step. A part whose needed equations cannot be determined is not awarded, and says why.
 #pragma once
 
+#include <chrono>
 #include <optional>
 #include <string>
 #include <vector>
@@ -84,8 +85,12 @@ struct SolutionGrade {
 /// eliminating unknowns), or when what it combines is not known.
 [[nodiscard]] std::vector<std::string> equations_given(const CheckResult& r);
 
-/// Grades the steps; a free body diagram's against `model` (the checker's problem).
-[[nodiscard]] SolutionGrade grade_solution(const Checker& checker, const Model& model, const std::vector<SolutionStep>& steps, const Rubric& rubric);
+/// Grades the steps; a free body diagram's against `model` (the checker's problem). With a
+/// deadline, a step not begun by then is not checked: its verdict is undecided (code
+/// `time_limit`), it gives nothing, and the parts are graded on the steps checked (a step
+/// begun finishes within its own budget: an answer's 250 ms, an equation's size limits).
+[[nodiscard]] SolutionGrade grade_solution(const Checker& checker, const Model& model, const std::vector<SolutionStep>& steps, const Rubric& rubric,
+                                           std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt);
 
 /// The grade as text (what a student reads) and as JSON.
 [[nodiscard]] std::string solution_text(const SolutionGrade& g);

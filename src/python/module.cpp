@@ -5,8 +5,10 @@
 
 #include <dlfcn.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <regex>
 #include <sstream>
@@ -39,7 +41,12 @@ std::string module_rules_dir() {
   return tackle::default_rules_dir();
 }
 
-// A problem: one description (or one phase of a phased one), analyzed once.
+// A problem: one description (or one phase of a phased one), analyzed once, and its checkers,
+// each prepared once (on first use) and kept: a Checker's set-up (the references made into
+// code, the equations' basis, the points) was 4 to 9 times a check's own cost when it was made
+// anew at every call. Thread safety: every method runs with the GIL held (none releases it,
+// and nothing here calls back into Python while a checker is at work), so one call at a time
+// touches the checkers and GiNaC's reference counts; a Checker's own lazy parts are guarded too.
 class Problem {
  public:
   Problem(const std::string& path, const std::string& phase, const std::string& rules_dir)
@@ -94,14 +101,15 @@ class Problem {
   // One answer; `params`: the student's own numbers ({"F": 120}, in the stated units).
   [[nodiscard]] py::dict check(const std::string& unknown, const std::string& answer, const py::dict& params, double tolerance,
                                bool reveal) const {
-    const tackle::Checker checker(*analysis_, options(tolerance, reveal));
+    const auto set = settings(params);  // (Python's str() of each: before a checker is taken)
+    const auto checker = checker_for(tolerance, reveal);
     std::optional<GiNaC::exmap> values;
-    if (!params.empty()) {
+    if (!set.empty()) {
       std::string problem;
-      values = checker.values_for(settings(params), problem);
+      values = checker->values_for(set, problem);
       if (!values) throw py::value_error("params: " + problem);
     }
-    const tackle::CheckResult r = checker.check(unknown, answer, values ? &*values : nullptr);
+    const tackle::CheckResult r = checker->check(unknown, answer, values ? &*values : nullptr);
     py::list findings;
     for (const auto& f : r.findings) findings.append(py::dict(py::arg("code") = f.code, py::arg("message") = f.message));
     return py::dict(py::arg("unknown") = r.unknown, py::arg("verdict") = tackle::verdict_name(r.verdict), py::arg("score") = r.score,
@@ -111,8 +119,7 @@ class Problem {
 
   // One equation a student wrote: is it one of the derivation's, or does it follow from them?
   [[nodiscard]] py::dict check_equation(const std::string& equation) const {
-    const tackle::Checker checker(*analysis_, options(0.01, false));
-    const tackle::CheckResult r = checker.check_equation(equation);
+    const tackle::CheckResult r = checker_for(0.01, false)->check_equation(equation);
     py::list findings, identified, follows;
     for (const auto& f : r.findings) findings.append(py::dict(py::arg("code") = f.code, py::arg("message") = f.message));
     for (const auto& n : r.identified_as) identified.append(n);
@@ -136,14 +143,21 @@ class Problem {
 
   // A worked solution (the YAML of `tackle check --steps`) with an optional rubric (YAML): the
   // grade as `--steps --format json` gives it, as a dict, and the platform's results file.
-  [[nodiscard]] py::tuple check_solution(const std::string& solution, const std::string& rubric, const std::string& results_format) const {
-    const tackle::Checker checker(*analysis_, options(0.01, false));
+  // A time_limit (seconds, 0: none): a step not begun within it is not checked (undecided,
+  // code time_limit; see grade_solution).
+  [[nodiscard]] py::tuple check_solution(const std::string& solution, const std::string& rubric, const std::string& results_format,
+                                         double time_limit) const {
+    if (!(time_limit >= 0 && time_limit <= 86400)) throw py::value_error("time_limit must be from 0 to 86400 seconds (0: none)");
+    std::optional<std::chrono::steady_clock::time_point> deadline;
+    if (time_limit > 0)
+      deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(time_limit));
+    const auto checker = checker_for(0.01, false);
     tackle::ResultsFormat format = tackle::ResultsFormat::gradescope;
     if (results_format == "prairielearn") format = tackle::ResultsFormat::prairielearn;
     else if (results_format != "gradescope") throw py::value_error("results_format '" + results_format + "' (expected gradescope or prairielearn)");
     const auto steps = tackle::read_solution(solution, "solution", analysis_->model);
     const tackle::Rubric r = rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(rubric, "rubric", analysis_->model);
-    const tackle::SolutionGrade g = tackle::grade_solution(checker, analysis_->model, steps, r);
+    const tackle::SolutionGrade g = tackle::grade_solution(*checker, analysis_->model, steps, r, deadline);
     return py::make_tuple(py::module_::import("json").attr("loads")(tackle::solution_json(g)), tackle::solution_results(g, format));
   }
 
@@ -154,7 +168,7 @@ class Problem {
   // JSON Lines in; (the results a line, the platform's results file) out.
   [[nodiscard]] py::tuple check_batch(const std::string& lines, const std::string& results_format, double points,
                                       const py::dict& params, double tolerance, bool reveal) const {
-    const tackle::Checker checker(*analysis_, options(tolerance, reveal));
+    const auto checker = checker_for(tolerance, reveal);
     tackle::GradeOptions grade;
     if (results_format == "gradescope") grade.format = tackle::ResultsFormat::gradescope;
     else if (results_format == "prairielearn") grade.format = tackle::ResultsFormat::prairielearn;
@@ -165,11 +179,22 @@ class Problem {
     grade.model = &analysis_->model;
     std::istringstream in(lines);
     std::ostringstream out;
-    const tackle::BatchSummary s = tackle::check_batch(checker, in, out, grade);
+    const tackle::BatchSummary s = tackle::check_batch(*checker, in, out, grade);
     return py::make_tuple(out.str(), s.results);
   }
 
  private:
+  // The checker for these options, made on first use and kept (a few: past them, a checker is
+  // made for the call alone). Shared, so that a call holds its own even when Python code run
+  // between (a parameter's str()) lets another thread call in.
+  std::shared_ptr<const tackle::Checker> checker_for(double tolerance, bool reveal) const {
+    const tackle::CheckOptions o = options(tolerance, reveal);
+    const auto key = std::make_pair(tolerance, reveal);
+    if (const auto found = checkers_.find(key); found != checkers_.end()) return found->second;
+    auto made = std::make_shared<const tackle::Checker>(*analysis_, o);
+    if (checkers_.size() < max_checkers) checkers_.emplace(key, made);
+    return made;
+  }
   static tackle::CheckOptions options(double tolerance, bool reveal) {
     if (!(tolerance >= 0 && tolerance <= 1)) throw py::value_error("tolerance must be from 0 to 1");
     tackle::CheckOptions o;
@@ -187,6 +212,8 @@ class Problem {
   std::unique_ptr<const tackle::Analysis> whole_;
   const tackle::Analysis* analysis_ = nullptr;
   tackle::Derivation derivation_;
+  static constexpr std::size_t max_checkers = 8;
+  mutable std::map<std::pair<double, bool>, std::shared_ptr<const tackle::Checker>> checkers_;
 };
 
 }  // namespace
@@ -223,7 +250,9 @@ PYBIND11_MODULE(tackle, m) {
            "Check a free body diagram the student drew (YAML/JSON text or a dict: body, forces, couples): "
            "verdict, summary, each force's status, extras, findings, score")
       .def("check_solution", &Problem::check_solution, py::arg("solution"), py::arg("rubric") = "", py::arg("results_format") = "gradescope",
-           "Grade a worked solution (YAML: steps of fbd, equation and answer): (the grade as a dict, the platform's results file)")
+           py::arg("time_limit") = 0.0,
+           "Grade a worked solution (YAML: steps of fbd, equation and answer): (the grade as a dict, the platform's results file); "
+           "with a time_limit (seconds), steps not begun within it are undecided (time_limit)")
       .def("page", &Problem::page, py::arg("endpoint") = "",
            "A self-contained HTML page: the problem and a worked-solution form whose steps it posts to "
            "{endpoint}/step and {endpoint}/solution (the page's own location by default)")

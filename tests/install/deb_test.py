@@ -20,6 +20,7 @@ import subprocess
 import sys
 import tempfile
 import unittest
+import urllib.request
 
 BUILD = os.path.abspath(sys.argv.pop(1))
 SOURCE = os.path.abspath(sys.argv.pop(1))
@@ -84,6 +85,8 @@ class PackageTest(unittest.TestCase):
         for needed in ("libginac11", "libcln6", "libyaml-0-2", "libc6", "python3"):
             self.assertIn(needed, names, depends)
         self.assertRegex(depends, r"python3 \(>= 3\.\d+~\), python3 \(<< 3\.\d+\)")
+        # The step service runs under gunicorn, which grading does not need.
+        self.assertEqual(field(deb, "Recommends"), "gunicorn")
         # scripts/setup --runtime installs every one of them, and nothing of the documents.
         runtime = subprocess.run([os.path.join(SOURCE, "scripts/setup"), "--runtime", "--dry-run"],
                                  check=True, capture_output=True, text=True).stdout.split()
@@ -101,6 +104,7 @@ class PackageTest(unittest.TestCase):
                      "./usr/share/doc/tackle/examples/prairielearn/grader-image/Dockerfile"):
             self.assertIn(path, files)
         self.assertTrue(any(re.fullmatch(r"\./usr/lib/python3/dist-packages/tackle\.cpython-\d+-.*\.so", f) for f in files))
+        self.assertIn("./usr/lib/python3/dist-packages/tackle_step_service.py", files)
         # The development files are tackle-dev's, not the runtime's.
         self.assertFalse([f for f in files if f.endswith(".a") or "/include/" in f or "/cmake/" in f])
         # Owned by root, the program executable by all.
@@ -162,6 +166,29 @@ print(json.dumps({"file": tackle.__file__, "rules": tackle.rules_dir(),
         self.assertTrue(got["file"].startswith(site + "/"), got["file"])
         self.assertEqual(got["rules"], os.path.join(root, "usr/share/tackle/rules"))
         self.assertEqual((got["right"], got["wrong"]), ("correct", "incorrect"))
+
+    @unittest.skipUnless(os.path.exists("/usr/bin/gunicorn"), "gunicorn is not installed")
+    def test_step_service(self):
+        # The step service of the installed package (python3 -m tackle_step_service) under
+        # Debian's python3 and gunicorn, one worker: its address first, then a step judged.
+        site = os.path.join(root, "usr/lib/python3/dist-packages")
+        env = {k: v for k, v in os.environ.items() if k not in ("TACKLE_RULES", "PYTHONHOME", "TACKLE_BUILD_DIR")}
+        env["PYTHONPATH"] = site
+        problem = os.path.join(root, "usr/share/doc/tackle/examples/sample-12.3-two-mass-pulley.yaml")
+        server = subprocess.Popen(["/usr/bin/python3", "-s", "-m", "tackle_step_service", problem, "--workers", "1", "--quiet"],
+                                  env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        try:
+            url = server.stdout.readline().strip()
+            self.assertRegex(url, r"^http://127\.0\.0\.1:\d+/$")
+            request = urllib.request.Request(url + "step", data=json.dumps({"kind": "answer", "unknown": "T", "answer": T_CLOSED}).encode(),
+                                             headers={"Content-Type": "application/json"})
+            with urllib.request.urlopen(request, timeout=60) as r:
+                self.assertEqual(json.load(r)["verdict"], "correct")
+        finally:
+            server.terminate()
+            server.wait(timeout=30)
+            server.stdout.close()
+            server.stderr.close()
 
 
 def examples(*parts):

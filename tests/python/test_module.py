@@ -92,6 +92,32 @@ class ModuleTest(unittest.TestCase):
         self.assertEqual([p["name"] for p in grade["parts"]], ["fbds", "balances"])
         self.assertEqual(json.loads(results)["tests"][0]["name"], "step 1: free body diagram of B")
 
+    def test_checkers_kept_across_calls(self):
+        # One problem, many calls, with tolerances and reveal changing between them (a checker
+        # each, kept; past eight, one made for the call): every verdict as by hand, and the
+        # same answer the same verdict each time.
+        for k in range(12):
+            tolerance = 0.01 + k / 1000
+            self.assertEqual(self.p.check("T", "20 N", tolerance=tolerance, reveal=k % 2 == 1)["verdict"], "correct")
+            self.assertEqual(self.p.check("T", "30 N", tolerance=tolerance)["verdict"], "incorrect")
+            self.assertEqual(self.p.check_equation("%d*T - %d*F = %d*m_A*ddot(x_A)" % (2 * k + 2, k + 1, k + 1))["verdict"], "correct")
+            self.assertEqual(self.p.check("T", "2*F*m_B/(9*m_A + 4*m_B)")["verdict"], "correct")
+        self.assertEqual(self.p.check("T", "20.5 N", tolerance=0.05)["verdict"], "correct")
+        self.assertEqual(self.p.check("T", "20.5 N", tolerance=0.01)["verdict"], "incorrect")
+        with self.assertRaises(ValueError):
+            self.p.check("T", "20 N", tolerance=2)
+
+    def test_solution_time_limit(self):
+        # A limit no check fits in leaves each step not begun undecided (time_limit), none
+        # wrong; a generous one grades as without.
+        solution = "steps:\n" + "".join("  - equation: '%d*T - %d*F = %d*m_A*ddot(x_A)'\n" % (2 * k, k, k) for k in range(1, 101))
+        grade, _ = self.p.check_solution(solution, time_limit=1e-6)
+        self.assertEqual((grade["steps"][-1]["verdict"], grade["steps"][-1]["findings"][0]["code"]), ("undecided", "time_limit"))
+        self.assertEqual(grade["wrong"], 0)
+        self.assertEqual(self.p.check_solution(solution, time_limit=3600)[0], self.p.check_solution(solution)[0])
+        with self.assertRaises(ValueError):
+            self.p.check_solution(solution, time_limit=-1)
+
     def test_batch_for_prairielearn(self):
         lines = ('{"id": "a", "unknown": "T", "answer": "2*F*m_B/(9*m_A + 4*m_B)"}\n'
                  '{"id": "b", "unknown": "T", "answer": "3*"}\n')

@@ -236,11 +236,11 @@ class GradescopeSolutionTest(unittest.TestCase):
 
 
 class StepServer:
-    """scripts/step-server on a free port of 127.0.0.1, with every request it saw."""
+    """scripts/step-server (gunicorn's workers) on a free port of 127.0.0.1, with every request it saw."""
 
-    def __init__(self, problem):
+    def __init__(self, problem, *options):
         self.process = subprocess.Popen([sys.executable, os.path.join(SOURCE, "scripts/step-server"), problem, "--port", "0",
-                                         "--build", os.path.dirname(TACKLE)],
+                                         "--build", os.path.dirname(TACKLE), *options],
                                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         self.url = self.process.stdout.readline().strip()
         if not self.url:
@@ -264,6 +264,22 @@ class StepServer:
     def post(self, path, obj):
         status, _, data = self.request("POST", path, json.dumps(obj), {"Content-Type": "application/json"})
         return status, json.loads(data)
+
+    def raw(self, request, sock=None):
+        """`request` sent as bytes (on `sock`, else a new connection), the sending side then
+        closed: the answer's head and body."""
+        c = sock or socket.create_connection(("127.0.0.1", self.port), timeout=30)
+        c.sendall(request)
+        c.shutdown(socket.SHUT_WR)
+        answer = b""
+        while True:
+            chunk = c.recv(65536)
+            if not chunk:
+                break
+            answer += chunk
+        c.close()
+        head, _, body = answer.partition(b"\r\n\r\n")
+        return head, body
 
     def close(self):
         self.process.terminate()
@@ -344,23 +360,17 @@ class StepServerTest(unittest.TestCase):
         return json.loads(data)["error"]
 
     def raw(self, request):
-        """`request` sent as bytes, the sending side then closed: the status line and the body."""
-        c = socket.create_connection(("127.0.0.1", self.server.port), timeout=30)
-        c.sendall(request)
-        c.shutdown(socket.SHUT_WR)
-        answer = b""
-        while True:
-            chunk = c.recv(4096)
-            if not chunk:
-                break
-            answer += chunk
-        c.close()
-        head, _, body = answer.partition(b"\r\n\r\n")
-        return head.split(b"\r\n")[0], body
+        """`request` sent as bytes, the sending side then closed: the status line's code and
+        reason (its HTTP version is the server's: gunicorn answers 1.1) and the body."""
+        head, body = self.server.raw(request)
+        return re.sub(rb"^HTTP/1\.[01] ", b"", head.split(b"\r\n")[0]), body
 
     def test_bad_requests(self):
         s = self.server
         self.refused(413, "POST", "/step", "x" * (64 * 1024 + 1))
+        # A megabyte: read and dropped before the 413, which the client, still sending, then
+        # reads (a connection closed with a body unread would be reset under it).
+        self.refused(413, "POST", "/step", "x" * (1024 * 1024))
         self.assertEqual(self.refused(400, "POST", "/step", "{not json"), "the request is not JSON (UTF-8)")
         self.assertEqual(self.refused(400, "POST", "/step", "[1, 2]"), "the request is not a JSON object")
         self.refused(400, "POST", "/step", b"\xff\xfe")
@@ -388,14 +398,14 @@ class StepServerTest(unittest.TestCase):
         # No Content-Length, two of them, or one that is not a number: refused, not waited for;
         # a body shorter than it says, or a request line that cannot be read: refused too.
         status, body = self.raw(b"POST /step HTTP/1.1\r\nHost: 127.0.0.1\r\nTransfer-Encoding: chunked\r\n\r\n5\r\nhello\r\n0\r\n\r\n")
-        self.assertEqual((status, json.loads(body)["error"]), (b"HTTP/1.0 411 Length Required", "send the body with a Content-Length"))
+        self.assertEqual((status, json.loads(body)["error"]), (b"411 Length Required", "send the body with a Content-Length"))
         for lengths in (b"Content-Length: 2\r\nContent-Length: 2\r\n", b"Content-Length: -1\r\n", b"Content-Length: 1e3\r\n"):
             status, body = self.raw(b"POST /step HTTP/1.1\r\nHost: 127.0.0.1\r\n" + lengths + b"\r\n{}")
-            self.assertEqual((status, json.loads(body)["error"]), (b"HTTP/1.0 400 Bad Request", "the Content-Length is not one whole number"))
+            self.assertEqual((status, json.loads(body)["error"]), (b"400 Bad Request", "the Content-Length is not one whole number"))
         status, body = self.raw(b"POST /step HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: 100\r\n\r\n{}")
-        self.assertEqual((status, json.loads(body)["error"]), (b"HTTP/1.0 408 Request Timeout", "the request's body is shorter than its Content-Length"))
+        self.assertEqual((status, json.loads(body)["error"]), (b"408 Request Timeout", "the request's body is shorter than its Content-Length"))
         status, body = self.raw(b"POST /step HTTP/1.1 extra\r\n\r\n")
-        self.assertEqual(status, b"HTTP/1.0 400 Bad Request")
+        self.assertEqual(status, b"400 Bad Request")
         self.assertIn("error", json.loads(body))
         # The server is still there.
         self.assertEqual(self.step({"kind": "equation", "equation": LMB_A})["verdict"], "correct")
@@ -411,6 +421,115 @@ class StepServerTest(unittest.TestCase):
                         {"Sec-Fetch-Site": "same-origin"}, {}):
             status, _, data = self.server.request("POST", "/step", body, headers)
             self.assertEqual((status, json.loads(data)["verdict"]), (200, "correct"), headers)
+
+
+class StepServiceTest(unittest.TestCase):
+    """The step service with two gunicorn workers: the verdicts of sample 12.3's steps by hand,
+    requests side by side, one worker held by a request in flight while the other answers, and
+    a solution's time limit. Nothing here is timed: what is asserted is each answer, and the
+    order in which things happen."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.server = StepServer(os.path.join(SOURCE, "examples/sample-12.3-two-mass-pulley.yaml"), "--workers", "2", "--quiet")
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.server.close()
+
+    def test_two_workers(self):
+        # The launcher (gunicorn's arbiter) and its two workers, each a process of its own.
+        children = subprocess.run(["ps", "-o", "pid=", "--ppid", str(self.server.process.pid)],
+                                  capture_output=True, text=True).stdout.split()
+        self.assertEqual(len(children), 2, children)
+
+    def test_verdicts(self):
+        steps = [({"kind": "equation", "equation": LMB_A}, "correct"), ({"kind": "equation", "equation": LMB_B_TWO_STRANDS}, "incorrect"),
+                 ({"kind": "answer", "unknown": "T", "answer": "20 N"}, "correct"),
+                 ({"kind": "answer", "unknown": "T", "answer": "30 N"}, "incorrect"),
+                 ({"kind": "fbd", "fbd": FBD_B}, "correct"), ({"kind": "fbd", "fbd": dict(FBD_B, forces=FBD_B["forces"][:2])}, "incorrect")]
+        for step, verdict in steps:
+            status, r = self.server.post("/step", step)
+            self.assertEqual((status, r["verdict"]), (200, verdict), step)
+        status, g = self.server.post("/solution", {"steps": [{"equation": LMB_A}, {"equation": LMB_B}, {"equation": ACCELERATION},
+                                                            {"answer": T_CLOSED, "unknown": "T"}]})
+        self.assertEqual((status, g["missing"], g["score"]), (200, [], 2 + 1 / 3))
+        self.assertEqual([s["verdict"] for s in g["steps"]], ["correct"] * 4)
+
+    def test_side_by_side(self):
+        # 20 students at once, each an equation and an answer, half of them wrong: every
+        # request answered, each with its own verdict.
+        results = {}
+        start = threading.Barrier(20)
+
+        def student(k):
+            start.wait()
+            wrong = k % 2 == 1
+            a = self.server.post("/step", {"kind": "equation", "equation": LMB_B_TWO_STRANDS if wrong else LMB_B})
+            b = self.server.post("/step", {"kind": "answer", "unknown": "T", "answer": "30 N" if wrong else "20 N"})
+            results[k] = (a[0], a[1]["verdict"], b[0], b[1]["verdict"])
+
+        threads = [threading.Thread(target=student, args=(k,)) for k in range(20)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join(120)
+        expected = {k: (200, "incorrect", 200, "incorrect") if k % 2 else (200, "correct", 200, "correct") for k in range(20)}
+        self.assertEqual(results, expected)
+
+    def test_request_in_flight_holds_one_worker_only(self):
+        # A solution whose body is still coming holds the worker that took it (a sync worker
+        # answers one request at a time, as it would while checking a long solution); the other
+        # worker answers a step meanwhile; then the rest of the body comes and the solution is
+        # graded.
+        body = json.dumps({"steps": [{"equation": LMB_A}, {"equation": LMB_B}, {"equation": ACCELERATION}]}).encode()
+        slow = socket.create_connection(("127.0.0.1", self.server.port), timeout=30)
+        self.addCleanup(slow.close)
+        slow.sendall(b"POST /solution HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/json\r\n"
+                     b"Content-Length: %d\r\n\r\n" % len(body) + body[:10])
+        # (Connections are accepted in the order they came: by the time the first step is
+        # answered, a worker has taken the solution and waits for the rest of its body.)
+        for _ in range(3):
+            status, r = self.server.post("/step", {"kind": "equation", "equation": LMB_A})
+            self.assertEqual((status, r["verdict"]), (200, "correct"))
+        slow.setblocking(False)
+        with self.assertRaises(BlockingIOError):  # still in flight: nothing answered yet
+            slow.recv(1)
+        slow.setblocking(True)
+        head, data = self.server.raw(body[10:], slow)
+        self.assertRegex(head, rb"^HTTP/1\.1 200 OK")
+        self.assertEqual([s["verdict"] for s in json.loads(data)["steps"]], ["correct"] * 3)
+
+    def test_time_limit(self):
+        # A time limit of a millisecond: 200 distinct equations (each check some tens of
+        # microseconds at the least) are not all checked within it; those not begun are
+        # undecided (time_limit), never a dropped connection; the answer still says the parts.
+        server = StepServer(os.path.join(SOURCE, "examples/sample-12.3-two-mass-pulley.yaml"), "--workers", "1", "--quiet",
+                            "--time-limit", "0.001")
+        self.addCleanup(server.close)
+        steps = [{"equation": "%d*T - %d*F = %d*m_A*ddot(x_A)" % (2 * k, k, k)} for k in range(1, 201)]
+        status, g = server.post("/solution", {"steps": steps})
+        self.assertEqual(status, 200)
+        self.assertEqual(len(g["steps"]), 200)
+        last = g["steps"][-1]
+        self.assertEqual((last["verdict"], last["findings"][0]["code"]), ("undecided", "time_limit"))
+        self.assertIn("time limit", last["summary"])
+        self.assertEqual({s["verdict"] for s in g["steps"]} - {"correct"}, {"undecided"})
+        self.assertEqual(g["wrong"], 0)  # not checked is not wrong
+        # A step alone is checked whole (its own budget bounds it).
+        status, r = server.post("/step", {"kind": "equation", "equation": LMB_A})
+        self.assertEqual((status, r["verdict"]), (200, "correct"))
+
+    def test_gunicorn_refusals_are_json(self):
+        # What gunicorn itself refuses (before the application sees the request) is said as the
+        # application says its own: two Content-Lengths, a header it cannot read.
+        for request in (b"POST /step HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: 2\r\nContent-Length: 2\r\n\r\n{}",
+                        b"POST /step HTTP/1.1\r\nHost: 127.0.0.1\r\nBad Header: x\r\nContent-Length: 2\r\n\r\n{}",
+                        b"GET / HTTP/one\r\nHost: 127.0.0.1\r\n\r\n"):
+            head, body = self.server.raw(request)
+            self.assertRegex(head, rb"^HTTP/1\.1 400 Bad Request\r\n", request)
+            self.assertIn(b"Content-Type: application/json", head)
+            self.assertTrue(json.loads(body)["error"])
 
 
 class RecordingProxy:

@@ -161,6 +161,32 @@ TEST_CASE("Steps: a worked solution graded as a whole, with the rubric's points"
   CHECK(json["score"] == 2.25);
 }
 
+TEST_CASE("Steps: past the deadline a step is not checked, and gives nothing", "[check][steps]") {
+  // The step service's time limit: a deadline already past leaves every step undecided
+  // (time_limit); none is used, so the three equations sample 12.3 needs are all missing.
+  const Made& m = made(pulley);
+  const Model& model = m.analysis->model;
+  const auto steps = read_solution(R"Y(steps:
+  - equation: "2*T - F = m_A*ddot(x_A)"
+  - {answer: "2*m_B*F/(9*m_A + 4*m_B)", unknown: T}
+)Y", "s.yaml", model);
+  const Rubric rubric = read_rubric(rubric10, "r.yaml", model);
+  const SolutionGrade late = grade_solution(*m.checker, model, steps, rubric, std::chrono::steady_clock::now());
+  REQUIRE(late.steps.size() == 2);
+  for (const auto& s : late.steps) {
+    CHECK(s.result.verdict == Verdict::undecided);
+    CHECK(s.result.findings.front().code == "time_limit");
+  }
+  CHECK(late.used.empty());
+  CHECK(late.missing.size() == 3);
+  CHECK(late.wrong == 0);  // not checked is not wrong: no penalty
+  CHECK(late.score == 0);
+  // A deadline far off: the grade without one.
+  const SolutionGrade in_time = grade_solution(*m.checker, model, steps, rubric, std::chrono::steady_clock::now() + std::chrono::hours(1));
+  CHECK(solution_text(in_time) == solution_text(grade_solution(*m.checker, model, steps, rubric)));
+  CHECK(in_time.steps[0].result.verdict == Verdict::correct);
+}
+
 TEST_CASE("Steps: an empty solution scores 0, and a part with nothing needed is not awarded", "[check][steps]") {
   const SolutionGrade g = grade(pulley, "steps: []\n", rubric10);
   CHECK(solution_text(g) == "missing (needed for the unknowns asked): LMB A (x), LMB B (x), string s: acceleration\n"
