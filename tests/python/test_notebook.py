@@ -1,6 +1,7 @@
 """The tutorial notebook (docs/tutorial.ipynb), executed as Jupyter executes it: nbclient runs
 its cells in a Python kernel (ipykernel) with the build tree's module on PYTHONPATH, and the
-outputs are what a notebook's page would show. Cells are found by their tags.
+outputs are what a notebook's page would show. Cells are found by their tags. Then the math of
+those outputs is typeset in Chromium, as the notebook's page would typeset it.
 
 Sample 12.3 by hand (the example's notes): T = 2 F m_B/(9 m_A + 4 m_B) = 20 N at F = 130 N and
 m_A = m_B = 40 kg, so 20 N and that closed form are right, and 30 N and half of it
@@ -38,11 +39,18 @@ def setUpModule():
     global executed
     executed = nbformat.read(NOTEBOOK, as_version=4)
     os.environ["PYDEVD_DISABLE_FILE_VALIDATION"] = "1"  # ipykernel's debugger: no warning on stderr
+    # The kernel's connection file and IPython's profile in a directory of this run's, not $HOME.
+    scratch = tempfile.mkdtemp(prefix="tackle-notebook-")
+    os.environ["JUPYTER_RUNTIME_DIR"] = os.path.join(scratch, "runtime")
+    os.environ["IPYTHONDIR"] = os.path.join(scratch, "ipython")
     # The kernel inherits this environment (PYTHONPATH: the build tree's module) and starts in
     # docs/, as Jupyter starts a notebook's kernel in the notebook's directory.
     client = nbclient.NotebookClient(executed, timeout=300, kernel_name="python3", allow_errors=False,
                                      resources={"metadata": {"path": os.path.dirname(NOTEBOOK)}})
-    client.execute()
+    try:
+        client.execute()
+    finally:
+        shutil.rmtree(scratch, ignore_errors=True)
 
 
 def cell(tag):
