@@ -74,11 +74,12 @@ def _checked(result, written, name_latex=None):
     equation, typeset as tackle read it (as typed when it could not be read)."""
     latex, unknown = result.get("latex"), result.get("unknown")
     typed = "<code>" + _e(written) + "</code>"
+    shown = "\\displaystyle " + latex if latex else ""  # a fraction as in a display, in its line
     if not unknown:  # an equation
-        return _math(latex) if latex else typed
+        return _math(shown) if latex else typed
     if name_latex and latex:
-        return _math(name_latex + " = " + latex)
-    return (_math(name_latex) if name_latex else "<code>" + _e(unknown) + "</code>") + " = " + (_math(latex) if latex else typed)
+        return _math("\\displaystyle " + name_latex + " = " + latex)
+    return (_math(name_latex) if name_latex else "<code>" + _e(unknown) + "</code>") + " = " + (_math(shown) if latex else typed)
 
 
 class CheckResult(dict):

@@ -131,14 +131,14 @@ class ExecutedTest(unittest.TestCase):
 
     def test_checks_show_their_verdicts(self):
         html = self.assertVerdict("check-right", "correct")
-        self.assertIn("\\(T = 20\\,\\mathrm{N}\\)", html)
+        self.assertIn("\\(\\displaystyle T = 20\\,\\mathrm{N}\\)", html)
         self.assertVerdict("check-right-closed-form", "correct")
         html = self.assertVerdict("check-wrong", "incorrect")
         self.assertIn("not within 1 % of the correct value", html)
         self.assertVerdict("check-wrong-closed-form", "incorrect")
         self.assertEqual(json.loads(cell("check-json").outputs[0].text)["verdict"], "incorrect")
         html = self.assertVerdict("equation-right", "correct")
-        self.assertIn("\\(2 T - F = m_{A} \\ddot{x}_{A}\\)", html)
+        self.assertIn("\\(\\displaystyle 2 T - F = m_{A} \\ddot{x}_{A}\\)", html)
         html = self.assertVerdict("equation-wrong", "incorrect")
         self.assertIn("missing", html)
         html = self.assertVerdict("fbd", "correct")
