@@ -115,8 +115,10 @@ class FigureMaker {
 
 /// The figure as a tikzpicture (needs \usepackage{tikz}).
 [[nodiscard]] std::string to_tikz(const Figure& f);
-/// The figure as a standalone <svg> element (labels as text with sub- and superscripts).
-[[nodiscard]] std::string to_svg(const Figure& f);
+/// The figure as a standalone <svg> element (labels as text with sub- and superscripts). Its
+/// one id (the arrowhead's) begins with `ids`: distinct prefixes for figures that share a page
+/// with other documents' figures of the same caption.
+[[nodiscard]] std::string to_svg(const Figure& f, const std::string& ids = "");
 /// A label's LaTeX as SVG text content (<tspan>s for sub- and superscripts, Greek letters as
 /// characters, dots as combining accents), XML-escaped.
 [[nodiscard]] std::string svg_text(const std::string& tex);

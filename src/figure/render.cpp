@@ -248,10 +248,10 @@ std::string to_tikz(const Figure& f) {
   return out + "\\end{tikzpicture}\n";
 }
 
-std::string to_svg(const Figure& f) {
+std::string to_svg(const Figure& f, const std::string& ids) {
   const double px = 40;  // pixels per drawing unit
   const double w = (f.max_x - f.min_x) * px, h = (f.max_y - f.min_y) * px;
-  std::string id = "head";
+  std::string id = ids + "head";
   for (char c : f.caption) id += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
   std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"fbd\" width=\"" + num(w + 8) + "\" height=\"" + num(h + 8) +
                     "\" viewBox=\"-4 -4 " + num(w + 8) + " " + num(h + 8) + "\" role=\"img\" aria-label=\"" + f.caption + "\">\n";

@@ -19,6 +19,7 @@
 #include "check/steps.hpp"
 #include "expr/print.hpp"
 #include "pipeline/pipeline.hpp"
+#include "python/display.hpp"
 #include "report/key.hpp"
 #include "report/step_page.hpp"
 #include "ruleset/builtin_rules.hpp"
@@ -60,6 +61,9 @@ class Problem {
   }
 
   [[nodiscard]] std::string title() const { return derivation_.title; }
+  // What a notebook shows (python/display.hpp).
+  [[nodiscard]] const tackle::Derivation& derivation() const { return derivation_; }
+  [[nodiscard]] const tackle::Model& model() const { return analysis_->model; }
 
   [[nodiscard]] std::string derive(const std::string& format, bool full) const {
     static const std::map<std::string, tackle::Format> formats{{"text", tackle::Format::text},
@@ -259,4 +263,6 @@ PYBIND11_MODULE(tackle, m) {
       .def("check_batch", &Problem::check_batch, py::arg("lines"), py::arg("results_format") = "gradescope",
            py::arg("points") = 1.0, py::arg("params") = py::dict(), py::arg("tolerance") = 0.01, py::arg("reveal") = false,
            "Check JSON Lines of answers: (results a line, the platform's results file)");
+  // Rich display in notebooks: Problem's HTML and LaTeX, results that show themselves.
+  tackle::python::add_display<Problem>(m);
 }

@@ -5,6 +5,7 @@
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #ifndef TACKLE_KATEX_DIR
 #define TACKLE_KATEX_DIR "/usr/share/javascript/katex"
@@ -88,9 +89,11 @@ const Assets& assets() {
   return a;
 }
 
-const char* const style = R"(body{font-family:"Latin Modern Roman","CMU Serif",Georgia,serif;max-width:52em;margin:2em auto;padding:0 1em;line-height:1.45;color:#111}
+// The page's own style, then its content's (a hosted fragment's too, scoped to it).
+const char* const page_style = R"(body{font-family:"Latin Modern Roman","CMU Serif",Georgia,serif;max-width:52em;margin:2em auto;padding:0 1em;line-height:1.45;color:#111}
 h1{font-size:1.6em}h2{font-size:1.25em;margin-top:1.6em;border-bottom:1px solid #ccc}
-.eq{display:flex;align-items:center;gap:1em;margin:.5em 0}.eq .math{flex:1;text-align:center}
+)";
+const char* const style = R"(.eq{display:flex;align-items:center;gap:1em;margin:.5em 0}.eq .math{flex:1;text-align:center}
 .eq .tag{color:#555;font-size:.9em;white-space:nowrap}
 figure{text-align:center;margin:1em 0;break-inside:avoid;page-break-inside:avoid}figure svg{max-width:100%;height:auto}figcaption{font-size:.9em;color:#444}
 .katex-error{color:#b00;border-bottom:1px dotted #b00}
@@ -121,14 +124,44 @@ std::string html_escape(const std::string& s) {
   return out;
 }
 
+namespace {
+thread_local const HostedHtml* hosted = nullptr;
+}  // namespace
+
+HostedHtml::HostedHtml(std::string ids) : ids_(std::move(ids)), outer_(hosted) { hosted = this; }
+HostedHtml::~HostedHtml() { hosted = outer_; }
+const HostedHtml* HostedHtml::current() { return hosted; }
+
 std::string html_math(const std::string& tex, bool display) {
-  return std::string("<span class=\"math") + (display ? " display" : "") + "\">" + html_escape(tex) + "</span>";
+  const std::string open = !hosted ? "" : display ? "\\[" : "\\(", close = !hosted ? "" : display ? "\\]" : "\\)";
+  return std::string("<span class=\"math") + (display ? " display" : "") + "\">" + open + html_escape(tex) + close + "</span>";
+}
+
+std::string content_style(const std::string& scope) {
+  // Each rule "a,b{...}" as "scope a,scope b{...}" (the style has no nested rules).
+  const std::string css = style;
+  std::string out;
+  for (std::size_t from = 0, open; (open = css.find('{', from)) != std::string::npos;) {
+    const std::size_t close = css.find('}', open);
+    std::string selectors = css.substr(from, open - from), scoped;
+    for (std::size_t at = 0; at <= selectors.size();) {
+      std::size_t comma = selectors.find(',', at);
+      if (comma == std::string::npos) comma = selectors.size();
+      std::string one = selectors.substr(at, comma - at);
+      one.erase(0, one.find_first_not_of(" \n"));
+      scoped += (scoped.empty() ? "" : ",") + scope + " " + one;
+      at = comma + 1;
+    }
+    out += scoped + css.substr(open, close + 1 - open) + "\n";
+    from = close + 1;
+  }
+  return out;
 }
 
 std::string html_page(const std::string& title, const std::string& body, const std::string& head) {
   const Assets& a = assets();
   return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
-         html_escape(title) + "</title>\n<style>\n" + a.css + "\n</style>\n<style>\n" + style + "</style>\n<script>\n" + a.js +
+         html_escape(title) + "</title>\n<style>\n" + a.css + "\n</style>\n<style>\n" + page_style + style + "</style>\n<script>\n" + a.js +
          "\n</script>\n<script>\n" + render + "</script>\n" + head + "</head>\n<body>\n" + body + "</body>\n</html>\n";
 }
 

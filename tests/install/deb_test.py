@@ -27,7 +27,7 @@ SOURCE = os.path.abspath(sys.argv.pop(1))
 T_CLOSED = "2*F*m_B/(9*m_A + 4*m_B)"
 # Nothing of what builds the documents or tests the reports may be needed to run tackle.
 DOCUMENT_TOOLS = re.compile(r"\b(texlive[\w-]*|lmodern|chromium[\w-]*|poppler-utils|libjs-katex|mkdocs|cmark-gfm|"
-                            r"python3-jsonschema|groff[\w-]*)\b")
+                            r"python3-jsonschema|python3-nbclient|python3-ipykernel|python3-nbformat|groff[\w-]*)\b")
 
 work = None
 debs = {}

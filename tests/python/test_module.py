@@ -3,6 +3,8 @@ on PYTHONPATH). Sample 12.3: T = 2 F m_B/(9 m_A + 4 m_B) = 20 N at F = 130 N, m_
 at F = 120 N it is 9600/520 = 18.4615 N."""
 import json
 import os
+import pickle
+import re
 import sys
 import unittest
 
@@ -135,6 +137,112 @@ class ModuleTest(unittest.TestCase):
             tackle.Problem(os.path.join(EXAMPLES, "sample-12.5-pile-driver.yaml"))
         stop = tackle.Problem(os.path.join(EXAMPLES, "sample-12.5-pile-driver.yaml"), phase="stop")
         self.assertAlmostEqual(next(a for a in stop.answers() if a["name"] == "F_s")["value"], 16938.6, places=1)
+
+
+class DisplayTest(unittest.TestCase):
+    """The display in notebooks (Jupyter calls _repr_html_ and _repr_latex_): the problem as one
+    HTML fragment with math for the notebook's MathJax, its equations as LaTeX, and results that
+    show themselves while staying the dicts and lists they were."""
+
+    def setUp(self):
+        self.p = tackle.Problem(os.path.join(EXAMPLES, "sample-12.3-two-mass-pulley.yaml"))
+
+    def test_html_is_a_fragment_of_its_own(self):
+        html = self.p._repr_html_()
+        own = re.match(r'<div class="tackle" id="(tackle-[0-9a-f]{16})">\n<style>\n', html)
+        self.assertIsNotNone(own, html[:80])
+        self.assertTrue(html.endswith("</div>\n"))
+        self.assertNotRegex(html, r"(?i)<(html|head|body|script|link)\b")
+        # Its style and its figures' ids are its own: two problems on one page meet nowhere.
+        self.assertTrue(all(line.startswith("#" + own.group(1)) for line in html.split("<style>\n")[1].split("</style>")[0].splitlines()))
+        ids = re.findall(r'\bid="([^"]+)"', html)
+        self.assertGreater(len(ids), 3)  # the fragment's, the sketch's and two diagrams' arrowheads
+        self.assertTrue(all(i.startswith(own.group(1)) for i in ids), ids)
+        self.assertEqual(len(set(re.findall(r'url\(#([^)]+)\)', html)) - set(ids)), 0)
+        self.assertNotEqual(own.group(1), re.match(r'<div class="tackle" id="([^"]+)"', self.p._repr_html_()).group(1))
+        # The title, the sketch and both free body diagrams, the statement's numbers and the
+        # answers as math for MathJax (T = 2 F m_B/(9 m_A + 4 m_B) = 20 N by hand).
+        self.assertIn("<h3>Sample 12.3: a two-mass pulley system</h3>", html)
+        self.assertEqual(html.count('<svg xmlns="http://www.w3.org/2000/svg" class="fbd"'), 4)  # the sketch twice
+        self.assertIn("<title>Free body diagram of A</title>", html)
+        self.assertIn('<span class="math">\\(130\\,\\mathrm{N}\\)</span>', html)
+        self.assertIn('<span class="math display">\\[\\boxed{T = \\frac{2 m_{B} F}{9 m_{A} + 4 m_{B}}} \\quad \\left(= 20\\,\\mathrm{N}\\right)\\]</span>', html)
+        self.assertEqual(html.count("<details>"), 1)
+        # The page of `derive --format html` is as it was: KaTeX's spans, no delimiters.
+        body = self.p.derive("html").split("<body>")[1]
+        self.assertIn('<span class="math">F</span>', body)
+        self.assertNotIn("\\(", body)
+        self.assertIn('<marker id="headFree-body-diagram-of-A"', body)
+
+    def test_latex_is_the_equations(self):
+        tex = self.p._repr_latex_()
+        self.assertTrue(tex.startswith("\\begin{align*}\n") and tex.endswith("\\end{align*}\n"), tex)
+        self.assertIn("  2 T - F &= m_{A} \\ddot{x}_{A} \\tag*{LMB A (x)} \\\\\n", tex)
+        self.assertIn("  -3 T &= m_{B} \\ddot{x}_{B} \\tag*{LMB B (x)} \\\\\n", tex)
+        self.assertIn("  0 &= 3 \\ddot{x}_{B} - 2 \\ddot{x}_{A} \\tag*{string s: acceleration} \\\\\n", tex)
+        answers = self.p.derivation(full=False)._repr_latex_()
+        self.assertEqual(answers.count("\\boxed{"), 3)
+        self.assertNotIn("\\tag*", answers)
+
+    def test_results_show_themselves_and_stay_dicts(self):
+        right = self.p.check("T", "20 N")
+        self.assertIsInstance(right, dict)
+        self.assertIsInstance(right, tackle.CheckResult)
+        plain = dict(right)
+        self.assertEqual(right, plain)
+        self.assertEqual(json.loads(json.dumps(right)), plain)
+        self.assertEqual(pickle.loads(pickle.dumps(right)), plain)
+        html = right._repr_html_()
+        self.assertIn('data-verdict="correct"', html)
+        self.assertIn("#2e7d32", html)
+        self.assertIn("\\(\\displaystyle T = 20\\,\\mathrm{N}\\)", html)
+        wrong = self.p.check("T", "30 N")._repr_html_()
+        self.assertIn('data-verdict="incorrect"', wrong)
+        self.assertIn("not within 1 % of the correct value (got 30 N)", wrong)
+        # What cannot be read is shown as typed, escaped.
+        typed = self.p.check("T", "<b>3*</b>")
+        self.assertEqual(typed["verdict"], "invalid")
+        self.assertIn("<code>&lt;b&gt;3*&lt;/b&gt;</code>", typed._repr_html_())
+        self.assertNotIn("<b>3*", typed._repr_html_())
+        equation = self.p.check_equation("T - F = m_A*ddot(x_A)")._repr_html_()
+        self.assertIn("\\(\\displaystyle T - F = m_{A} \\ddot{x}_{A}\\)", equation)
+        self.assertIn("a strand of string s at pA is missing (LMB A (x))", equation)
+        fbd = self.p.check_fbd({"body": "B", "forces": [{"name": "T", "at": "pB", "direction": [-1]}] * 2})
+        self.assertIsInstance(fbd, tackle.FbdGrade)
+        self.assertEqual(fbd._repr_html_().count(">drawn as your T</td>"), 2)
+        self.assertEqual(fbd._repr_html_().count(">missing</td>"), 1)
+        grade, results = self.p.check_solution("steps:\n  - equation: '-3*T = m_B*ddot(x_B)'\n  - {unknown: T, answer: 20 N}\n")
+        self.assertIsInstance(grade, tackle.SolutionGrade)
+        self.assertIsInstance(results, str)
+        self.assertEqual(grade._repr_html_().count('data-verdict="correct"'), 2)
+
+    def test_answers_variant_and_derivation(self):
+        answers = self.p.answers()
+        self.assertIsInstance(answers, list)
+        self.assertEqual([a["name"] for a in answers], ["T", "ddot(x_A)", "ddot(x_B)"])
+        html = answers._repr_html_()
+        self.assertEqual(html.count("<tr>"), 4)
+        self.assertIn("\\(\\ddot{x}_{A}\\)", html)
+        self.assertIn("\\(-2.25\\,\\mathrm{m/s^{2}}\\)", html)
+        v = self.p.variant(3)
+        self.assertEqual(v, self.p.variant(seed=3))
+        self.assertIn("variant of seed 3", v._repr_html_())
+        self.assertIn("\\(170\\,\\mathrm{N}\\)", v._repr_html_())
+        self.assertIsNone(tackle.Problem(os.path.join(EXAMPLES, "incline-and-hanging-block.yaml")).variant(seed=1))
+        d = self.p.derivation()
+        self.assertEqual(str(d), self.p.derive("text"))
+        self.assertEqual(repr(d), self.p.derive("text"))
+        self.assertNotIn("<details>", d._repr_html_())
+        self.assertEqual(d._repr_html_().count('class="fbd"'), 3)
+        self.assertEqual(self.p.derivation(full=False)._repr_html_().count("\\boxed{"), 3)
+        with self.assertRaises(ValueError):
+            self.p._notebook_html("page")
+        self.assertEqual(repr(self.p), "<tackle.Problem: Sample 12.3: a two-mass pulley system>")
+
+    def test_a_phase_shows_itself(self):
+        stop = tackle.Problem(os.path.join(EXAMPLES, "sample-12.5-pile-driver.yaml"), phase="stop")
+        self.assertIn("<h3>Sample 12.5", stop._repr_html_())
+        self.assertIn("stop", re.search(r"<h3>.*</h3>", stop._repr_html_()).group(0))
 
 
 if __name__ == "__main__":

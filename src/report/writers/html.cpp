@@ -4,6 +4,7 @@
 #include "expr/print.hpp"
 #include "figure/figure.hpp"
 #include "report/html.hpp"
+#include "report/notebook.hpp"
 #include "report/sweep.hpp"
 #include "report/writer.hpp"
 #include "report/writers/common.hpp"
@@ -17,7 +18,8 @@ using namespace writers;
 namespace {
 
 std::string html_figure(const Step& st) {
-  return "<figure>\n" + to_svg(*st.figure) + "<figcaption>" + html_escape(st.text) + "</figcaption>\n</figure>\n";
+  const HostedHtml* hosted = HostedHtml::current();
+  return "<figure>\n" + to_svg(*st.figure, hosted ? hosted->ids() + "-" : "") + "<figcaption>" + html_escape(st.text) + "</figcaption>\n</figure>\n";
 }
 
 // A statement's text for HTML: its $math$ for KaTeX, the rest escaped.
@@ -54,10 +56,11 @@ std::string html_equation(const Step& st) {
   return out + "</div>\n";
 }
 
-// The body of one derivation (its title a heading of `level`), without the page around it.
+// The body of one derivation (its title a heading of `level`, none when empty), without the
+// page around it.
 std::string html_body(const Derivation& d, bool full, const std::string& title, int level) {
   const std::string h = std::to_string(level), h2 = std::to_string(level + 1);
-  std::string out = "<h" + h + ">" + html_escape(title) + "</h" + h + ">\n";
+  std::string out = title.empty() ? "" : "<h" + h + ">" + html_escape(title) + "</h" + h + ">\n";
   if (!full) {
     for (const auto& st : result_steps(d)) out += html_equation(st);
     return out;
@@ -176,6 +179,24 @@ std::string sheet_problem_html(const SheetEntry& e, bool figures) {
   if (problems.empty()) return "";
   writers::Ordered order({e.derivation});
   return html_problem(problems.front(), figures);
+}
+
+std::string notebook_html(const Derivation& d, const Model& m, const std::string& id, NotebookView view) {
+  const HostedHtml hosted(id);
+  writers::Ordered order({&d});
+  std::string out = "<div class=\"tackle\" id=\"" + id + "\">\n<style>\n#" + id +
+                    "{line-height:1.45}\n#" + id + " details>summary{cursor:pointer;font-weight:600;margin:.6em 0}\n" +
+                    content_style("#" + id) + "</style>\n";
+  if (view == NotebookView::problem) {
+    out += "<h3>" + html_escape(heading(d)) + "</h3>\n" + sheet_problem_html(SheetEntry{&d, &m, {}});
+    const std::vector<Step> results = result_steps(d);
+    for (const auto& st : results) out += html_equation(st);
+    out += "<details>\n<summary>Derivation: the free body diagrams and equations</summary>\n" + html_body(d, true, "", 3) +
+           "</details>\n";
+  } else {
+    out += html_body(d, view == NotebookView::derivation, heading(d), 3);
+  }
+  return out + "</div>\n";
 }
 
 const Writer& html_writer() {

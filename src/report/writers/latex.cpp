@@ -2,6 +2,7 @@
 // TikZ figures, siunitx tables): the derivation, the phases, the answer key, the sheets.
 #include "expr/print.hpp"
 #include "figure/figure.hpp"
+#include "report/notebook.hpp"
 #include "report/sweep.hpp"
 #include "report/tex.hpp"
 #include "report/writer.hpp"
@@ -207,6 +208,15 @@ class LatexWriter final : public Writer {
 };
 
 }  // namespace
+
+std::string notebook_latex(const Derivation& d, bool full) {
+  writers::Ordered order({&d});
+  const std::vector<Step> results = full ? std::vector<Step>{} : result_steps(d);
+  std::vector<const Step*> run;
+  for (const auto& st : full ? d.steps : results)
+    if (st.kind == Step::Kind::equation) run.push_back(&st);
+  return run.empty() ? "" : latex_equations(run);
+}
 
 const Writer& latex_writer() {
   static const LatexWriter w;
