@@ -11,6 +11,19 @@ count=0
 overfull() {
   grep -o 'Overfull \\hbox ([0-9.]*pt' "$1" | grep -o '[0-9.]*' | awk '$1 > 10' | wc -l
 }
+# Words printed past the text block's left or right edge by more than 10 pt (2.5 cm margins),
+# from pdftotext's word boxes: what no Overfull warning reports, such as an equation's tag too
+# wide to sit beside it, which amsmath puts below the equation and out into the margin.
+past_margins() {
+  pdftotext -bbox "$1" - | awk -v margin=70.87 '
+    /<page / { match($0, /width="[0-9.]+"/); w = substr($0, RSTART + 7, RLENGTH - 8) + 0 }
+    /<word / {
+      match($0, /xMin="[0-9.]+"/); x0 = substr($0, RSTART + 6, RLENGTH - 7) + 0
+      match($0, /xMax="[0-9.]+"/); x1 = substr($0, RSTART + 6, RLENGTH - 7) + 0
+      if (x0 < margin - 10 || x1 > w - margin + 10) { n++; sub(/.*">/, ""); sub(/<.*/, ""); print "  past the margin: " $0 > "/dev/stderr" }
+    }
+    END { print n + 0 }'
+}
 for f in "$examples"/*.yaml; do
   name=$(basename "$f" .yaml)
   "$tackle" derive "$f" --format latex -o "$work/$name.tex"
@@ -23,6 +36,9 @@ for f in "$examples"/*.yaml; do
   fi
   if [ "$(overfull "$work/$name.log")" -gt 0 ]; then
     echo "lines past the margin by more than 10 pt in the derivation of $f:"; grep -A3 'Overfull' "$work/$name.log"; exit 1
+  fi
+  if command -v pdftotext > /dev/null && [ "$(past_margins "$work/$name.pdf")" -gt 0 ]; then
+    echo "words past the margin in the derivation of $f (above)"; exit 1
   fi
   "$tackle" solve "$f" --format latex -o "$work/$name-key.tex"
   (cd "$work" && pdflatex -interaction=nonstopmode -halt-on-error "$name-key.tex" >"$name-key.out" 2>&1) \

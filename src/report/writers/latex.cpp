@@ -31,7 +31,14 @@ std::string latex_line(const Step& st) {
   const std::string rhs = st.equals_constant ? "\\text{const}" : to_latex(st.rhs);
   const std::string rel = st.equals_constant ? "=" : tex_relation(st.relation);
   const std::string note = st.note.empty() ? "" : " \\quad \\left(= " + note_latex(st) + "\\right)";
-  const std::string tag = st.text.empty() ? "" : " \\tag*{" + prose(st, Format::latex) + "}";
+  // A long label is set in a box at most half the line wide (as narrow as its text), on as
+  // many lines as it needs, beside the equation: a tag wider than the room beside it went
+  // below the equation, past the left margin.
+  const std::string label = prose(st, Format::latex);
+  const std::string tag =
+      st.text.empty()          ? ""
+      : st.text.size() <= 40 ? " \\tag*{" + label + "}"
+                             : " \\tag*{\\begin{varwidth}[t]{0.5\\linewidth}\\raggedleft " + label + "\\end{varwidth}}";
   // A line too long for the page is broken after the relation and at the sum's + and -, the
   // rest indented, as the HTML breaks it (a broken result is not boxed: a box cannot span lines).
   const auto lines = displayed_lines(lhs, rel, rhs, note, std::max(30.0, 62.0 - 0.6 * static_cast<double>(st.text.size())));
@@ -49,7 +56,7 @@ std::string latex_equations(const std::vector<const Step*>& steps) {
 
 std::string latex_preamble(bool plots) {
   return "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{lmodern}\n\\usepackage{amsmath}\n"
-         "\\allowdisplaybreaks\n\\usepackage{graphicx}\n\\setlength{\\emergencystretch}{3em}\n"
+         "\\allowdisplaybreaks\n\\usepackage{graphicx}\n\\usepackage{varwidth}\n\\setlength{\\emergencystretch}{3em}\n"
          "\\usepackage[margin=2.5cm]{geometry}\n\\usepackage{tikz}\n\\usepackage{siunitx}\n" +
          std::string(plots ? "\\usepackage{pgfplots}\n\\pgfplotsset{compat=1.16}\n" : "") + "\\begin{document}\n";
 }
