@@ -211,9 +211,11 @@ std::vector<Program> term_programs(const ex& residual, const Sample& layout, con
 
 }  // namespace
 
+int Truth::sign_asked(const std::string& op) { return op == ">=" || op == ">" ? 1 : op == "<=" || op == "<" ? -1 : 0; }
+
 void Truth::restrict_to(const std::vector<Condition>& conditions) {
   for (const auto& c : conditions) {
-    const int sign = c.op == ">=" || c.op == ">" ? 1 : c.op == "<=" || c.op == "<" ? -1 : 0;
+    const int sign = sign_asked(c.op);
     if (sign != 0) conditions_.push_back({Program(c.lhs - c.rhs, layout_, definitions_, angles_), sign});
   }
   if (conditions_.empty() || !usable_) return;

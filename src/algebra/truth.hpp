@@ -85,6 +85,9 @@ class Truth {
     std::string op;
   };
   void restrict_to(const std::vector<Condition>& conditions);
+  /// Which sign of lhs - rhs a condition's `op` asks for: +1 for >= and >, -1 for <= and <, 0
+  /// for an equality (which restricts no state).
+  [[nodiscard]] static int sign_asked(const std::string& op);
   /// Whether `residual` (any expression in the unknowns and the inputs) vanishes at random
   /// solutions at every point, those where a stated condition fails left out.
   [[nodiscard]] Decision holds_anyhow(const GiNaC::ex& residual) const;

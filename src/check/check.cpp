@@ -537,8 +537,7 @@ constexpr std::size_t max_kinks = 4;  // arguments up to their sign: 16 combinat
 void Checker::choose_fixed_points(const Analysis& analysis) {
   for (const auto& c : analysis.solution.conditions) {
     if (c.depends_on_free || !c.condition) continue;
-    const std::string& op = c.condition->op;
-    const int sign = op == ">=" || op == ">" ? 1 : op == "<=" || op == "<" ? -1 : 0;
+    const int sign = Truth::sign_asked(c.condition->op);
     const ex form = substituted(c.expr, definitions_);
     if (sign != 0) conditions_.push_back({form, program(form), sign});
   }
