@@ -1253,6 +1253,26 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
   }
   const ex answer = *parsed.value;
   if (is_vector(answer)) return finish(Verdict::invalid, "syntax", "the answer is a vector; a single value was expected");
+  // What the expression settles is the same however it was typed (2*m*g/4 and m*g/2): kept
+  // from an earlier answer when there was one, else settled and kept (a budget run out is
+  // not kept: another run may have the time).
+  const std::string unknown = r.unknown;
+  std::optional<SettledAnswers::Entry> entry = settled_->find(ref.name, answer);
+  if (!entry) {
+    entry.emplace(SettledAnswers::Entry{settle(ref, answer, std::move(r), over_budget), std::nullopt});
+    const auto& findings = entry->result.findings;
+    if (findings.empty() || findings.front().code != "budget") settled_->keep(ref.name, answer, *entry);
+  }
+  CheckResult settled = std::move(entry->result);
+  settled.unknown = unknown;
+  if (settled.verdict == Verdict::correct) note_simplified(ref, answer, text, settled);
+  return settled;
+}
+
+// The answer's expression checked, as far as its spelling does not matter: the echo, the
+// dimension, the values at the fixed points, then a decision (equal there) or a diagnosis.
+CheckResult Checker::settle(const Reference& ref, const ex& answer, CheckResult r, const std::function<bool()>& over_budget) const {
+  auto finish = [&](Verdict v, std::string code, std::string message) { return r.conclude(v, std::move(code), std::move(message)); };
   if (options_.echo_latex)
     std::tie(r.echo_text, r.echo_latex) = to_text_and_latex(answer);
   else
@@ -1287,23 +1307,6 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
     r.verdict = Verdict::correct;
     r.score = 1.0;
     r.summary = d.message;
-    // Simplified? Only a typed answer much longer than its canonical form can be.
-    std::string typed;
-    for (char c : text)
-      if (!std::isspace(static_cast<unsigned char>(c))) typed += c;
-    const auto longer = [](std::size_t a, std::size_t b) { return a > b + b / 2 + 4; };
-    if (longer(typed.size(), r.echo_text.size()) || longer(typed.size(), ref.text_size)) {
-      const std::string simple = to_text(simplest(answer));
-      if (longer(typed.size(), simple.size())) {
-        const std::string msg = "correct, but it simplifies to " + simple;
-        r.findings.push_back({"not_simplified", msg});
-        if (options_.require_simplified) {
-          r.verdict = Verdict::incorrect;
-          r.score = 0.0;
-          r.summary = msg + " (a simplified answer is required)";
-        }
-      }
-    }
     return r;
   }
   r.method = "numeric";
@@ -1313,6 +1316,26 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
   if (r.findings.empty()) r.findings.push_back({"value", "the answer differs from the correct one"});
   r.summary = r.findings.front().message;
   return r;
+}
+
+// A correct answer typed much longer than its canonical form: said (and with
+// require_simplified, incorrect). Only such an answer is simplified (its simplest form is kept
+// with what the expression settles).
+void Checker::note_simplified(const Reference& ref, const ex& answer, std::string_view text, CheckResult& r) const {
+  std::string typed;
+  for (char c : text)
+    if (!std::isspace(static_cast<unsigned char>(c))) typed += c;
+  const auto longer = [](std::size_t a, std::size_t b) { return a > b + b / 2 + 4; };
+  if (!longer(typed.size(), r.echo_text.size()) && !longer(typed.size(), ref.text_size)) return;
+  const std::string simple = settled_->simplest(ref.name, answer, [&] { return to_text(simplest(answer)); });
+  if (!longer(typed.size(), simple.size())) return;
+  const std::string msg = "correct, but it simplifies to " + simple;
+  r.findings.push_back({"not_simplified", msg});
+  if (options_.require_simplified) {
+    r.verdict = Verdict::incorrect;
+    r.score = 0.0;
+    r.summary = msg + " (a simplified answer is required)";
+  }
 }
 
 const Checker::Reference::Diagnosis& Checker::diagnosis(const Reference& ref) const {

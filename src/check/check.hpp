@@ -16,6 +16,7 @@
 #include <random>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -98,6 +99,31 @@ struct CheckResult {
   /// Sets the verdict and its summary, the finding too when there is a code; the score follows
   /// the verdict (1 when correct, else 0).
   CheckResult& conclude(Verdict v, std::string code, std::string message);
+};
+
+/// What checks settled about answers' expressions, remembered by the expression (per unknown):
+/// 2*m*g/4 and m*g/2 are one expression once read, and a class types the same few answers in
+/// many spellings. An entry is the result as far as the spelling does not matter (see
+/// Checker::settle) and, once made, the answer's simplest form. Bounded: at `capacity`
+/// entries it starts again empty. Safe from threads.
+class SettledAnswers {
+ public:
+  struct Entry {
+    CheckResult result;
+    std::optional<std::string> simplest;
+  };
+  static constexpr std::size_t capacity = 4096;
+  [[nodiscard]] std::optional<Entry> find(const std::string& unknown, const GiNaC::ex& e) const;
+  void keep(const std::string& unknown, const GiNaC::ex& e, const Entry& entry);
+  /// The kept simplest form of `e`, made by `make` (and kept, where `e` has an entry) when
+  /// there is none.
+  [[nodiscard]] std::string simplest(const std::string& unknown, const GiNaC::ex& e, const std::function<std::string()>& make);
+
+ private:
+  using Entries = std::unordered_map<GiNaC::ex, Entry, std::hash<GiNaC::ex>, GiNaC::ex_is_equal>;
+  mutable std::mutex mutex_;
+  std::map<std::string, Entries, std::less<>> by_unknown_;
+  std::size_t size_ = 0;
 };
 
 class EquationChecker;
@@ -229,6 +255,12 @@ class Checker {
                            CheckResult r, const GiNaC::exmap* values) const;
   CheckResult check_expression(const Reference& ref, std::string_view text, CheckResult r,
                                std::chrono::steady_clock::time_point start, const std::function<int(int)>& column) const;
+  /// What the answer's expression settles whatever its spelling (see SettledAnswers): its
+  /// echo, dimension, values, then the decision or the diagnosis.
+  CheckResult settle(const Reference& ref, const GiNaC::ex& answer, CheckResult r, const std::function<bool()>& over_budget) const;
+  /// A correct answer typed much longer than its simplest form: a finding (incorrect with
+  /// require_simplified).
+  void note_simplified(const Reference& ref, const GiNaC::ex& answer, std::string_view text, CheckResult& r) const;
   void diagnose(const Reference& ref, const GiNaC::ex& answer, const Program& answer_at, const std::vector<GiNaC::numeric>& values,
                 CheckResult& r) const;
   // The quotient answer/reference as the values show it: a product of powers of the
@@ -299,6 +331,7 @@ class Checker {
   std::map<std::string, Reference, std::less<>> references_;
   std::shared_ptr<const EquationChecker> equations_;
   std::vector<std::string> asked_;
+  std::shared_ptr<SettledAnswers> settled_ = std::make_shared<SettledAnswers>();
 };
 
 }  // namespace tackle

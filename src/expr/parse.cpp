@@ -231,6 +231,8 @@ class Parser {
     if (digits > limits_.max_number_digits)
       fail_limit(t.column, "number has too many digits (at most " +
                          std::to_string(limits_.max_number_digits) + ")");
+    // A whole number that fits a long (most numbers typed): as it is.
+    if (digits == t.text.size() && digits <= 18) return numeric(std::stol(t.text));
     // Exact: mantissa digits over a power of ten, times 10^exponent.
     std::string mant = t.text;
     long exp10 = 0;
@@ -333,7 +335,13 @@ class Parser {
     // then leaks): tan at an odd multiple of pi/2, log at 0.
     if (f == "tan") {
       const ex a = one_arg();
-      if (const ex k = normal(a / Pi - numeric(1, 2)); is_a<numeric>(k) && ex_to<numeric>(k).is_integer())
+      // (Only an argument with pi in it can be one: normal() of every tan's argument was a
+      // fifth of reading an answer with a tan.)
+      const auto pole = [&] {
+        const ex k = normal(a / Pi - numeric(1, 2));
+        return is_a<numeric>(k) && ex_to<numeric>(k).is_integer();
+      };
+      if (a.has(Pi) && pole())
         fail(name.column, "tan is undefined at an odd multiple of pi/2");
       return tan(a);
     }

@@ -213,6 +213,34 @@ TEST_CASE("Check: a correct answer that is not simplified is said so, and can be
   CHECK(r.verdict == Verdict::incorrect);
 }
 
+TEST_CASE("Check: an expression is settled once whatever its spelling, and the spelling's own note stays its own", "[check]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.8-sign-board.yaml", test::rules());
+  const Checker checker(*a);
+  // One expression once read (a*l*m/(2*d)), typed three ways: the first two short, the third
+  // much longer than its simplest form. Each is correct; only the long one is told to simplify.
+  const auto short_one = checker.check("T_HI", "m*a*l/(2*d)");
+  const auto again = checker.check("T_HI", "(l*m*a)/(d*2)");
+  const auto long_one = checker.check("T_HI", "2*m*a*l*d*d/(4*d*d*d) + 0*m");
+  for (const auto* r : {&short_one, &again, &long_one}) {
+    CHECK(r->verdict == Verdict::correct);
+    CHECK(r->unknown == "T_HI");
+    CHECK(r->echo_text == "a*l*m/(2*d)");
+  }
+  CHECK(short_one.findings.empty());
+  CHECK(again.findings.empty());
+  REQUIRE(long_one.findings.size() == 1);
+  CHECK(long_one.findings[0].message == "correct, but it simplifies to a*l*m/(2*d)");
+  // And the short one after the long one: no note carried over.
+  CHECK(checker.check("T_HI", "a*m*l/(2*d)").findings.empty());
+  // A wrong expression in two spellings: the same findings, worked out once.
+  const auto wrong = checker.check("T_HI", "m*a*l/d");
+  const auto wrong_again = checker.check("T_HI", "2*m*a*l/(2*d)");
+  CHECK(wrong.verdict == Verdict::incorrect);
+  REQUIRE(wrong.findings.size() == wrong_again.findings.size());
+  for (std::size_t i = 0; i < wrong.findings.size(); ++i) CHECK(wrong.findings[i].message == wrong_again.findings[i].message);
+  CHECK(wrong.findings[0].message == "off by a factor of 2 (the answer is twice the correct answer)");
+}
+
 TEST_CASE("Check: a batch grades every line and writes the grader shape", "[check][batch]") {
   std::istringstream in(
       "{\"id\": \"s1\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/(2*d)\"}\n"
