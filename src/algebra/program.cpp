@@ -68,15 +68,15 @@ std::vector<double> doubles_of(const Sample& point) {
   return out;
 }
 
-double Program::approx(const std::vector<double>& point) const {
+double Program::approx(const std::vector<double>& point, bool sin_cos_swapped) const {
   if (nodes_.empty()) return std::nan("");
   std::size_t at = 0;
-  return run_double(at, point);
+  return run_double(at, point, sin_cos_swapped);
 }
 
 // The node at `at` and what follows it, in doubles (NaN for nothing); `at` moves past them
 // always (a NaN operand does not stop the walk: the value is NaN anyway).
-double Program::run_double(std::size_t& at, const std::vector<double>& point) const {
+double Program::run_double(std::size_t& at, const std::vector<double>& point, bool swapped) const {
   const Node& node = nodes_[at++];
   switch (node.op) {
     case Op::number: return node.approx;
@@ -88,24 +88,24 @@ double Program::run_double(std::size_t& at, const std::vector<double>& point) co
       const bool sum = node.op == Op::add;
       double out = sum ? 0 : 1;
       for (std::size_t i = 0; i < node.n; ++i) {
-        const double v = run_double(at, point);
+        const double v = run_double(at, point, swapped);
         out = sum ? out + v : out * v;
       }
       return out;
     }
     case Op::power: {
-      const double b = run_double(at, point), x = run_double(at, point);
+      const double b = run_double(at, point, swapped), x = run_double(at, point, swapped);
       if (b == 0 && x <= 0) return std::nan("");
       return x == 0.5 ? std::sqrt(b) : std::pow(b, x);
     }
     case Op::function: {
-      const double a = run_double(at, point);
+      const double a = run_double(at, point, swapped);
       if (node.serial == abs_SERIAL::serial) return std::fabs(a);
       if (node.serial == csgn_SERIAL::serial) return a > 0 ? 1.0 : a < 0 ? -1.0 : 0.0;
       if (node.serial == exp_SERIAL::serial) return std::exp(a);
       if (node.serial == log_SERIAL::serial) return a > 0 ? std::log(a) : std::nan("");
-      if (node.serial == sin_SERIAL::serial) return std::sin(a);
-      if (node.serial == cos_SERIAL::serial) return std::cos(a);
+      if (node.serial == sin_SERIAL::serial) return swapped ? std::cos(a) : std::sin(a);
+      if (node.serial == cos_SERIAL::serial) return swapped ? std::sin(a) : std::cos(a);
       if (node.serial == tan_SERIAL::serial) return std::tan(a);
       if (node.serial == asin_SERIAL::serial) return std::asin(a);
       if (node.serial == acos_SERIAL::serial) return std::acos(a);
@@ -121,8 +121,8 @@ double Program::run_double(std::size_t& at, const std::vector<double>& point) co
         const Node& pair = nodes_[at++];
         angle += static_cast<double>(pair.multiple) * 2 * std::atan(point[pair.index]);
       }
-      if (node.serial == sin_SERIAL::serial) return std::sin(angle);
-      if (node.serial == cos_SERIAL::serial) return std::cos(angle);
+      if (node.serial == sin_SERIAL::serial) return swapped ? std::cos(angle) : std::sin(angle);
+      if (node.serial == cos_SERIAL::serial) return swapped ? std::sin(angle) : std::cos(angle);
       return std::tan(angle);
     }
   }

@@ -37,7 +37,9 @@ class Program {
   [[nodiscard]] std::optional<GiNaC::numeric> operator()(const Sample& point) const;
   /// The value at `point` in doubles (each input's value as a double, in the layout's order),
   /// NaN for nothing: a screen, never a verdict (an exact evaluation confirms what it passes).
-  [[nodiscard]] double approx(const std::vector<double>& point) const;
+  /// With `sin_cos_swapped`, the value of `e` with sin written for cos and cos for sin
+  /// everywhere (a diagnosis's screen, without making that expression).
+  [[nodiscard]] double approx(const std::vector<double>& point, bool sin_cos_swapped = false) const;
   [[nodiscard]] bool empty() const { return nodes_.empty(); }
 
  private:
@@ -60,7 +62,7 @@ class Program {
   bool run_power(std::size_t& at, const Sample& point, Value& out) const;
   bool run_function(const Node& node, std::size_t& at, const Sample& point, Value& out) const;
   bool run_trig(const Node& node, std::size_t& at, const Sample& point, Value& out) const;
-  double run_double(std::size_t& at, const std::vector<double>& point) const;
+  double run_double(std::size_t& at, const std::vector<double>& point, bool swapped) const;
 };
 
 /// A point's values as doubles, in its order (for Program::approx).

@@ -72,6 +72,23 @@ TEST_CASE("Program: the same values in doubles, a screen that says NaN where it 
   CHECK(std::isnan(Program(log(-x), q, {}).approx(doubles_of(q))));
 }
 
+TEST_CASE("Program: sin and cos swapped in doubles, as the swapped expression's value", "[algebra]") {
+  // t = 1/2: sin = 0.8, cos = 0.6; phi: t = 1/3, sin = 0.6, cos = 0.8. Swapped: each sine a
+  // cosine and each cosine a sine, of the same argument (whole multiples, an offset of pi/2, half
+  // an angle alike); tan and everything else as they are.
+  const Sample p{{theta, numeric(1, 2)}, {phi, numeric(1, 3)}};
+  const std::vector<bool> angles{true, true};
+  const auto swapped = [&](const ex& e) { return Program(e, p, {}, angles).approx(doubles_of(p), true); };
+  CHECK(swapped(sin(theta)) == Approx(0.6));
+  CHECK(swapped(cos(theta)) == Approx(0.8));
+  CHECK(swapped(2 * sin(theta) + cos(phi)) == Approx(2 * 0.6 + 0.6));
+  CHECK(swapped(sin(theta - phi)) == Approx(0.6 * 0.8 + 0.8 * 0.6));  // cos(theta - phi)
+  CHECK(swapped(cos(theta + Pi / 2)) == Approx(0.6));                  // sin(theta + pi/2)
+  CHECK(swapped(sin(theta / 2)) == Approx(2 / std::sqrt(5.0)));        // cos of half of it
+  CHECK(swapped(tan(theta)) == Approx(0.8 / 0.6));
+  CHECK(swapped(sin(cos(theta))) == Approx(std::cos(std::sin(2 * std::atan(0.5)))));
+}
+
 TEST_CASE("Linear algebra: a null space, a combination and a left inverse, exactly", "[algebra]") {
   const Tolerance tol{numeric(1, 1000000)};
   // x + 2y + 3z = 0: two free columns, (-2, 1, 0) and (-3, 0, 1).
