@@ -101,9 +101,9 @@ struct CheckResult {
   CheckResult& conclude(Verdict v, std::string code, std::string message);
 };
 
-/// What checks settled about answers' expressions, remembered by the expression (per unknown):
-/// 2*m*g/4 and m*g/2 are one expression once read, and a class types the same few answers in
-/// many spellings. An entry is the result as far as the spelling does not matter (see
+/// What checks settled about answers' expressions, remembered by the expression (per unknown;
+/// an equation's by its two sides, under "="): 2*m*g/4 and m*g/2 are one expression once read,
+/// and a class types the same few answers in many spellings. An entry is the result as far as the spelling does not matter (see
 /// Checker::settle) and, once made, the answer's simplest form. Bounded: at `capacity`
 /// entries it starts again empty. Safe from threads.
 class SettledAnswers {

@@ -358,6 +358,18 @@ CheckResult EquationChecker::check(std::string_view text) const {
     if (is_vector(*parsed.value)) return finish(Verdict::invalid, "syntax", "a side is a vector; write one component at a time");
     side[k] = *parsed.value;
   }
+  // What the two sides settle is the same however they were typed (see SettledAnswers).
+  const ex key = lst{side[0], side[1]};
+  if (auto kept = settled_->find("=", key)) return std::move(kept->result);
+  CheckResult settled = settle(side, names.constants(), std::move(r));
+  settled_->keep("=", key, {settled, std::nullopt});
+  return settled;
+}
+
+// The equation's two sides checked: its echo, its size, which level it is at, its dimensions,
+// then the verdict there. `constants`: the names read as a length sum's constants.
+CheckResult EquationChecker::settle(const ex (&side)[2], const std::vector<ex>& constants, CheckResult r) const {
+  auto finish = [&](Verdict v, std::string code, std::string message) { return r.conclude(v, std::move(code), std::move(message)); };
   r.echo_text = to_text(side[0]) + " = " + to_text(side[1]);
   if (options_.echo_latex) r.echo_latex = to_latex(side[0]) + " = " + to_latex(side[1]);
   const ex unexpanded = substituted(substituted(side[0] - side[1], defined_), symbols_->definitions());
@@ -372,7 +384,6 @@ CheckResult EquationChecker::check(std::string_view text) const {
   const bool has_acceleration = has_any(residual, acceleration_.unknowns);
   const bool has_rate = has_any(residual, rate_.unknowns);
   const bool has_coordinate = has_any(residual, position_.unknowns);
-  const std::vector<ex> constants = names.constants();
   const bool position = has_coordinate && !has_acceleration && !has_rate && !position_.equations.empty();
   if (!constants.empty() && !position)
     return finish(Verdict::invalid, "syntax", "'" + to_text(constants.front()) +

@@ -61,6 +61,9 @@ class EquationChecker {
   };
   using Rows = std::vector<Row>;
 
+  /// The equation read as `side[0] = side[1]` checked (see check()); `constants`: the names read
+  /// as a length sum's constants.
+  CheckResult settle(const GiNaC::ex (&side)[2], const std::vector<GiNaC::ex>& constants, CheckResult r) const;
   CheckResult decide(const Level& level, const GiNaC::ex& residual, CheckResult r) const;
   CheckResult decide_linear(const Level& level, const std::vector<GiNaC::ex>& parts, CheckResult r) const;
   CheckResult incorrect(const Level& level, const Rows& values, CheckResult r) const;
@@ -95,6 +98,7 @@ class EquationChecker {
   std::vector<StateInput> inputs_;
   std::vector<Truth::Condition> conditions_;  // the model's stated conditions: the states it allows
   mutable std::once_flag prepared_;
+  std::shared_ptr<SettledAnswers> settled_ = std::make_shared<SettledAnswers>();  // by the two sides as read
 };
 
 }  // namespace tackle

@@ -243,6 +243,25 @@ TEST_CASE("Equations: each step's verdict and finding, from the examples' hand d
   CHECK(incorrect >= 30);
 }
 
+TEST_CASE("Equations: one equation typed two ways is one verdict, its sides kept as typed", "[check][equation]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/incline-and-hanging-block.yaml", test::rules());
+  const Checker checker(*a);
+  const CheckResult first = checker.check_equation("T - g*m_A*sin(theta) = m_A*ddot(s)");
+  const CheckResult again = checker.check_equation("T - m_A*g*sin(theta) = ddot(s)*m_A");
+  const CheckResult turned = checker.check_equation("m_A*ddot(s) = T - g*m_A*sin(theta)");
+  for (const auto* r : {&first, &again, &turned}) {
+    CHECK(r->verdict == Verdict::correct);
+    CHECK(r->follows_from == std::vector<std::string>{"LMB A (x)", "LMB A (y)"});
+  }
+  CHECK(first.echo_text == "T - g*m_A*sin(theta) = m_A*ddot(s)");
+  CHECK(again.echo_text == first.echo_text);
+  CHECK(turned.echo_text == "m_A*ddot(s) = T - g*m_A*sin(theta)");
+  // The sign of the weight's component turned, after the right one: incorrect.
+  const CheckResult wrong = checker.check_equation("T + g*m_A*sin(theta) = m_A*ddot(s)");
+  CHECK(wrong.verdict == Verdict::incorrect);
+  CHECK(wrong.echo_text == "T + g*m_A*sin(theta) = m_A*ddot(s)");
+}
+
 TEST_CASE("Equations: feedback never shows the correct equation", "[check][equation]") {
   // No finding writes an equation or a balance's terms: only the names of the forces and of
   // the balance. Each incorrect step's messages are searched for '=' and for the unknowns.
