@@ -261,8 +261,10 @@ class Checker {
   /// A correct answer typed much longer than its simplest form: a finding (incorrect with
   /// require_simplified).
   void note_simplified(const Reference& ref, const GiNaC::ex& answer, std::string_view text, CheckResult& r) const;
+  /// A wrong answer's findings, in terms a student can act on (see Diagnosing in diagnose.cpp).
   void diagnose(const Reference& ref, const GiNaC::ex& answer, const Program& answer_at, const std::vector<GiNaC::numeric>& values,
                 CheckResult& r) const;
+  struct Diagnosing;
   // The quotient answer/reference as the values show it: a product of powers of the
   // parameters (c p^e q^f..., exponents up to 4) when it is one, and how many parameters it
   // depends on. None when the values are not all exact.
@@ -278,6 +280,15 @@ class Checker {
   /// point, decided: proved or refuted by normal() where GiNaC can, else at fresh points (and
   /// for abs(), on each side of every kink).
   [[nodiscard]] Decision decide(const Reference& ref, const GiNaC::ex& answer, const std::function<bool()>& over_budget) const;
+  /// A correct answer's decision: proved, or agreeing at the points (exactly or not).
+  [[nodiscard]] Decision correct_decision(bool proved, bool exact_values) const;
+  /// The decision for an answer or a reference with kinks (abs(), csgn(), step()).
+  [[nodiscard]] Decision decide_across_kinks(const Reference& ref, const GiNaC::ex& answer, const std::vector<GiNaC::ex>& kinks,
+                                             FreshPoints& fresh, const std::function<bool()>& over_budget) const;
+  /// Incorrect where a state on a side of the kinks where they differ is found (see decide.cpp).
+  [[nodiscard]] std::optional<Decision> differing_side(const Reference& ref, const GiNaC::ex& answer, const std::vector<GiNaC::ex>& args,
+                                                       const std::vector<std::size_t>& differing,
+                                                       const std::function<bool()>& over_budget) const;
   [[nodiscard]] Agreement compare(const GiNaC::ex& answer, const GiNaC::ex& reference, const Program& reference_at,
                                   const Shape& shape, FreshPoints& fresh, const std::function<bool()>& over_budget, bool& exact_values) const;
   /// A point near the parameters' values drawn from `rng`, finer than the fixed points.
