@@ -29,6 +29,7 @@
 #include "report/isolation_report.hpp"
 #include "report/gradebook.hpp"
 #include "report/key.hpp"
+#include "report/writer.hpp"
 #include "report/html.hpp"
 #include "report/sheet.hpp"
 #include "report/step_page.hpp"
@@ -155,11 +156,12 @@ struct Options {
   std::vector<std::string> points_text, set_values;
 };
 
-const std::map<std::string, tackle::Format> formats{{"text", tackle::Format::text},
-                                                   {"latex", tackle::Format::latex},
-                                                   {"markdown", tackle::Format::markdown},
-                                                   {"json", tackle::Format::json},
-                                                   {"html", tackle::Format::html}};
+// A format's name, as --format checked it (report/writer.hpp lists them).
+tackle::Format format_of(const std::string& name) {
+  const auto f = tackle::format_named(name);
+  if (!f) throw tackle::InternalError("no format named '" + name + "'");
+  return *f;
+}
 
 // The analysis of one phase (or of the whole description when it has none); nullptr, with
 // the usage problem said, when the phase named is not there.
@@ -174,7 +176,7 @@ const tackle::Analysis* the_phase(const tackle::Analysis& whole, const Options& 
 int run_report(const Options& o, const tackle::RuleSet& rules, bool full) {
   const auto whole = tackle::analyze_file(o.file, rules);
   // solve prints no steps, figures or plots; text and JSON show no figures.
-  const tackle::Format format = formats.at(o.format);
+  const tackle::Format format = format_of(o.format);
   const tackle::ReportOptions options{.digits = o.digits, .narrate = full,
                                       .figures = format != tackle::Format::text && format != tackle::Format::json};
   // Written as it is made: the answers of a chain of 2048 blocks are 88 MB of text.
@@ -242,7 +244,7 @@ int run_key(const Options& o, const tackle::RuleSet& rules) {
   for (std::size_t i = 0; i < p.derivations.size(); ++i)
     for (std::size_t k = 0; k < p.derivations[i].size(); ++k)
       entries.push_back({&p.derivations[i][k], p.variants[i][k], o.variants > 0});
-  return emit(tackle::write_key(entries, formats.at(o.key_format)), o.out);
+  return emit(tackle::write_key(entries, format_of(o.key_format)), o.out);
 }
 
 int run_sheet(const Options& o, const tackle::RuleSet& rules) {
@@ -259,7 +261,7 @@ int run_sheet(const Options& o, const tackle::RuleSet& rules) {
     std::cerr << "tackle: warning: " << (generated.size() == 1 ? generated[0] + " has" : std::to_string(generated.size()) + " files have")
               << " no 'statement'; the sheet states the problem from the description (its bodies, connections and given "
                  "values)\n";
-  return emit(tackle::write_sheet(entries, formats.at(o.key_format), o.figures), o.out);
+  return emit(tackle::write_sheet(entries, format_of(o.key_format), o.figures), o.out);
 }
 
 // A page to try the step checker: the problem and a worked-solution form posting to a checker.
@@ -300,7 +302,7 @@ int run_isolate(const Options& o, const tackle::RuleSet& rules) {
   const auto candidates = tackle::candidate_equations(model);
   std::vector<tackle::Isolation> found;
   for (const auto& u : wanted) found.push_back(tackle::isolate(model, candidates, u));
-  return emit(tackle::write_isolations(model, found, formats.at(o.format)), o.out);
+  return emit(tackle::write_isolations(model, found, format_of(o.format)), o.out);
 }
 
 int run_sweep(const Options& o, const tackle::RuleSet& rules) {
@@ -505,7 +507,7 @@ int run(int argc, char** argv) {
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
     sub->add_option("--format", o.format, "Output format")
-        ->check(CLI::IsMember({"text", "latex", "markdown", "json", "html"}))
+        ->check(CLI::IsMember(tackle::format_names()))
         ->capture_default_str();
     sub->add_option("-o,--output", o.out, "Write to this file instead of standard output");
   };

@@ -21,6 +21,7 @@
 #include "pipeline/pipeline.hpp"
 #include "python/display.hpp"
 #include "report/key.hpp"
+#include "report/writer.hpp"
 #include "report/step_page.hpp"
 #include "ruleset/builtin_rules.hpp"
 
@@ -66,14 +67,12 @@ class Problem {
   [[nodiscard]] const tackle::Model& model() const { return analysis_->model; }
 
   [[nodiscard]] std::string derive(const std::string& format, bool full) const {
-    static const std::map<std::string, tackle::Format> formats{{"text", tackle::Format::text},
-                                                               {"latex", tackle::Format::latex},
-                                                               {"markdown", tackle::Format::markdown},
-                                                               {"json", tackle::Format::json},
-                                                               {"html", tackle::Format::html}};
-    const auto f = formats.find(format);
-    if (f == formats.end()) throw py::value_error("format '" + format + "' (expected text, latex, markdown, json or html)");
-    return tackle::write(derivation_, f->second, full);
+    const auto f = tackle::format_named(format);
+    if (!f) {
+      const auto names = tackle::format_names();
+      throw py::value_error("format '" + format + "' (expected " + tackle::join({names.begin(), names.end() - 1}) + " or " + names.back() + ")");
+    }
+    return tackle::write(derivation_, *f, full);
   }
 
   // Each answer: name, status, closed form (text and LaTeX), value and unit when numbers are given.

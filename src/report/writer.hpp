@@ -5,8 +5,11 @@
 // SheetEntry, Isolation): writers only format them.
 #pragma once
 
+#include <optional>
 #include <ostream>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "isolate/isolate.hpp"
@@ -36,6 +39,13 @@ class Writer {
   [[nodiscard]] virtual std::string isolations(const Model& m, const std::vector<Isolation>& found) const;
 };
 
+/// Every format with its writer, in the order the help lists them (writers/formats.cpp): a new
+/// format is its writer's file, its Format and its line there.
+[[nodiscard]] const std::vector<std::pair<Format, const Writer*>>& writers();
 [[nodiscard]] const Writer& writer_for(Format f);
+/// The format whose writer has this name (text, latex, markdown, json, html), or none.
+[[nodiscard]] std::optional<Format> format_named(std::string_view name);
+/// The formats' names, in the order of writers().
+[[nodiscard]] std::vector<std::string> format_names();
 
 }  // namespace tackle

@@ -402,20 +402,4 @@ const Writer& json_writer() {
   return w;
 }
 
-const Writer& text_writer();
-const Writer& latex_writer();
-const Writer& markdown_writer();
-const Writer& html_writer();
-
-const Writer& writer_for(Format f) {
-  switch (f) {
-    case Format::text: return text_writer();
-    case Format::latex: return latex_writer();
-    case Format::markdown: return markdown_writer();
-    case Format::html: return html_writer();
-    case Format::json: return json_writer();
-  }
-  throw std::logic_error("no writer for this format");
-}
-
 }  // namespace tackle
