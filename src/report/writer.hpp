@@ -41,11 +41,11 @@ class Writer {
 
 /// Every format with its writer, in the order the help lists them (writers/formats.cpp): a new
 /// format is its writer's file, its Format and its line there.
-[[nodiscard]] const std::vector<std::pair<Format, const Writer*>>& writers();
+[[nodiscard]] const std::vector<std::pair<Format, const Writer*>>& all_formats();
 [[nodiscard]] const Writer& writer_for(Format f);
 /// The format whose writer has this name (text, latex, markdown, json, html), or none.
 [[nodiscard]] std::optional<Format> format_named(std::string_view name);
-/// The formats' names, in the order of writers().
+/// The formats' names, in the order of all_formats().
 [[nodiscard]] std::vector<std::string> format_names();
 
 }  // namespace tackle

@@ -13,7 +13,7 @@ const Writer& markdown_writer();
 const Writer& json_writer();
 const Writer& html_writer();
 
-const std::vector<std::pair<Format, const Writer*>>& writers() {
+const std::vector<std::pair<Format, const Writer*>>& all_formats() {
   static const std::vector<std::pair<Format, const Writer*>> all{{Format::text, &text_writer()},
                                                                  {Format::latex, &latex_writer()},
                                                                  {Format::markdown, &markdown_writer()},
@@ -23,20 +23,20 @@ const std::vector<std::pair<Format, const Writer*>>& writers() {
 }
 
 const Writer& writer_for(Format f) {
-  for (const auto& [format, writer] : writers())
+  for (const auto& [format, writer] : all_formats())
     if (format == f) return *writer;
   throw std::logic_error("no writer for this format");
 }
 
 std::optional<Format> format_named(std::string_view name) {
-  for (const auto& [format, writer] : writers())
+  for (const auto& [format, writer] : all_formats())
     if (name == writer->name()) return format;
   return std::nullopt;
 }
 
 std::vector<std::string> format_names() {
   std::vector<std::string> names;
-  for (const auto& [format, writer] : writers()) names.emplace_back(writer->name());
+  for (const auto& [format, writer] : all_formats()) names.emplace_back(writer->name());
   return names;
 }
 
