@@ -120,15 +120,23 @@ class FigureMaker {
 /// with other documents' figures of the same caption.
 [[nodiscard]] std::string to_svg(const Figure& f, const std::string& ids = "");
 /// A label's LaTeX as SVG text content (<tspan>s for sub- and superscripts, Greek letters as
-/// characters, dots as combining accents), XML-escaped.
+/// characters), XML-escaped. Dots (\dot, \ddot) are not in it: svg_label places them, and
+/// to_svg draws them as small circles (browsers draw combining dots over an italic serif
+/// letter unevenly, Chromium not at all).
 [[nodiscard]] std::string svg_text(const std::string& tex);
 /// How to_svg writes a label (drawing units, y up): its text centred at x in the box the
 /// layout kept, on a baseline that centres the text's ascent and descent in the box, held to
 /// `width` (textLength): so the text fills [x - width/2, x + width/2] across and
 /// [baseline - svg_descent * font_size, baseline + svg_ascent * font_size] up the page, inside
-/// the label's box.
+/// the label's box. `dots`: the dots of its dotted letters (\dot{\theta}, \ddot{x}_{A}), one
+/// or two over each, centred over the letter's estimated advance (leaning as an italic letter
+/// does) and above its top (x-height or capital), smaller over a sub- or superscript.
+struct SvgDot {
+  double x = 0, y = 0, r = 0;
+};
 struct SvgLabel {
   double x = 0, baseline = 0, width = 0, font_size = 0;
+  std::vector<SvgDot> dots;
 };
 constexpr double svg_font_size = 0.35;               // as TikZ's \small (10 pt) in a 1 cm unit
 constexpr double svg_ascent = 0.8, svg_descent = 0.3;  // of the font size: capitals with a dot or a superscript, a subscript

@@ -77,7 +77,9 @@ class SvgText {
       }
       if (name == "left" || name == "right") return i_ < s_.size() ? (s_[i_] == '.' ? (++i_, "") : item()) : "";
       if (auto g = greek().find(name); g != greek().end()) return g->second;
-      if (name == "dot" || name == "ddot") return group() + (name == "dot" ? "\u0307" : "\u0308");
+      // The dotted group between a mark (a private-use character) and its combining dot(s):
+      // svg_shown takes both out and keeps where the dots go.
+      if (name == "dot" || name == "ddot") return "\uE000" + group() + (name == "dot" ? "\u0307" : "\u0308");
       if (name == "frac") {
         // a/b, with parentheses only where they are needed (a sum above, a sum or product below).
         const std::string a = group(), b = group();
@@ -109,40 +111,87 @@ class SvgText {
   std::size_t i_ = 0;
 };
 
-// The advance of a label's shown text (svg_text's output) in ems of its font, an italic
-// serif: sub- and superscripts at 70%, combining dots taking no room. An estimate, which
-// the SVG then holds the text to (textLength), so that the box it fills is known.
-double shown_ems(const std::string& svg) {
-  double ems = 0, size = 1;
-  std::vector<double> sizes;
+// A dot accent as svg_shown finds it: over a letter whose advance runs from `from` to `to`
+// (ems of the label's font, along its text), of `size` (1, or 0.7 in a sub- or superscript)
+// on a baseline `rise` ems above the label's, italic or not, tall (a capital, a digit, an
+// ascender: θ, d) or not (x-height: x, ω), with one dot or two.
+struct ShownAccent {
+  double from = 0, to = 0, size = 1, rise = 0;
+  bool italic = true, tall = false;
+  int dots = 1;
+};
+// A label's shown text (svg_text's output) with its accents taken out: the text, its advance
+// in ems of its font, an italic serif (sub- and superscripts at 70 % of the size, shifted
+// 0.4 ems of the text around them: Chromium's shift, half the small font's height), and
+// where its dots go. An estimate, which the SVG then holds the text to (textLength), so that
+// the box it fills is known.
+struct Shown {
+  std::string text;
+  double ems = 0;
+  std::vector<ShownAccent> accents;
+};
+
+bool tall_letter(const std::string& ch) {
+  if (ch.size() == 1) {
+    const auto c = static_cast<unsigned char>(ch[0]);
+    return std::isupper(c) || std::isdigit(c) || std::string("bdfhklt").find(static_cast<char>(c)) != std::string::npos;
+  }
+  return std::string("ΓΔΘΛΞΠΣΦΨΩβδζθϑλξℓ").find(ch) != std::string::npos;
+}
+
+Shown svg_shown(const std::string& svg) {
+  Shown out;
+  struct Level {
+    double size, rise;
+    bool italic;
+  };
+  Level level{1, 0, true};
+  std::vector<Level> levels;
+  std::vector<std::size_t> open;  // accents whose group is still being read
   for (std::size_t i = 0; i < svg.size();) {
     const auto c = static_cast<unsigned char>(svg[i]);
     if (c == '<') {
       const std::size_t close = svg.find('>', i);
-      const std::string tag = svg.substr(i, close - i);
+      const std::string tag = svg.substr(i, close - i + 1);
+      out.text += tag;
       if (tag.rfind("</", 0) == 0) {
-        size = sizes.empty() ? 1 : sizes.back();
-        if (!sizes.empty()) sizes.pop_back();
+        level = levels.empty() ? Level{1, 0, true} : levels.back();
+        if (!levels.empty()) levels.pop_back();
       } else {
-        sizes.push_back(size);
-        if (tag.find("font-size=\"70%\"") != std::string::npos) size *= 0.7;
+        levels.push_back(level);
+        if (tag.find("baseline-shift=\"sub\"") != std::string::npos) level.rise -= 0.4 * level.size;
+        if (tag.find("baseline-shift=\"super\"") != std::string::npos) level.rise += 0.4 * level.size;
+        if (tag.find("font-size=\"70%\"") != std::string::npos) level.size *= 0.7;
+        if (tag.find("font-style=\"normal\"") != std::string::npos) level.italic = false;
       }
       i = close + 1;
       continue;
     }
-    if (c == '&') {  // an escaped character: &lt; &gt; &amp; &quot;
-      ems += 0.6 * size;
-      i = svg.find(';', i) + 1;
-      continue;
-    }
     std::size_t n = 1;
-    if (c >= 0xF0) n = 4;
+    if (c == '&') n = svg.find(';', i) + 1 - i;  // an escaped character: &lt; &gt; &amp; &quot;
+    else if (c >= 0xF0) n = 4;
     else if (c >= 0xE0) n = 3;
     else if (c >= 0xC0) n = 2;
     const std::string ch = svg.substr(i, n);
     i += n;
+    if (ch == "\uE000") {  // a dotted group begins
+      open.push_back(out.accents.size());
+      out.accents.push_back({out.ems, out.ems, level.size, level.rise, level.italic, false, 1});
+      continue;
+    }
+    if (ch == "\u0307" || ch == "\u0308") {  // and ends: its dots over what it shows
+      if (!open.empty()) {
+        out.accents[open.back()].dots = ch == "\u0307" ? 1 : 2;
+        open.pop_back();
+      }
+      continue;
+    }
+    out.text += ch;
+    // The first letter of a dotted group gives its dots' height.
+    for (const std::size_t a : open)
+      if (out.accents[a].to == out.accents[a].from) out.accents[a] = {out.ems, out.ems, level.size, level.rise, level.italic, tall_letter(ch), 1};
     double w = 0.52;
-    if (ch == "\u0307" || ch == "\u0308") w = 0;  // a dot over the letter before
+    if (c == '&') w = 0.6;
     else if (ch == "\u2009") w = 0.17;
     else if (ch == " ") w = 0.25;
     else if (n > 1) w = 0.6;  // Greek, minus, root, dot, times
@@ -151,9 +200,10 @@ double shown_ems(const std::string& svg) {
     else if (std::isupper(c)) w = 0.7;
     else if (std::isdigit(c)) w = 0.5;
     else if (c == '+' || c == '=') w = 0.6;
-    ems += w * size;
+    out.ems += w * level.size;
+    for (const std::size_t a : open) out.accents[a].to = out.ems;  // the group so far
   }
-  return ems;
+  return out;
 }
 
 std::string svg_point(double x, double y, const Figure& f, double px) {
@@ -162,18 +212,28 @@ std::string svg_point(double x, double y, const Figure& f, double px) {
 
 }  // namespace
 
-std::string svg_text(const std::string& tex) { return SvgText(tex).run(); }
+std::string svg_text(const std::string& tex) { return svg_shown(SvgText(tex).run()).text; }
 
 SvgLabel svg_label(const FigureLabel& l) {
   SvgLabel b;
-  const std::string text = svg_text(l.tex);
-  const double natural = shown_ems(text) * svg_font_size;
+  const Shown shown = svg_shown(SvgText(l.tex).run());
+  const double natural = shown.ems * svg_font_size;
   b.x = l.at.x;
   // The font as large as TikZ's \small where the box is as high as the layout makes it,
   // smaller in a lower box; the text as wide as it is, or the box's width less a margin.
   b.font_size = l.height > 0 ? std::min(svg_font_size, l.height / (svg_ascent + svg_descent)) : svg_font_size;
   b.width = l.width > 0 ? std::min(natural * b.font_size / svg_font_size, l.width - 2 * svg_margin) : natural;
   b.baseline = l.at.y - 0.5 * (svg_ascent - svg_descent) * b.font_size;
+  // Each dot over its letter's advance as the text is held to its width (leaning with an
+  // italic letter), clear of its top: x-height 0.52 ems and capitals 0.77 in DejaVu Serif,
+  // less in Times.
+  const double across = b.width / std::max(shown.ems, 1e-9);  // one em of the text, as it is held to its width
+  for (const auto& a : shown.accents) {
+    const double em = a.size * b.font_size;
+    const double centre = b.x - b.width / 2 + (a.from + a.to) / 2 * across + (a.italic ? (a.tall ? 0.08 : 0.05) * em : 0);
+    const double y = b.baseline + a.rise * b.font_size + (a.tall ? 0.9 : 0.7) * em;
+    for (int k = 0; k < a.dots; ++k) b.dots.push_back({centre + (a.dots == 1 ? 0 : (k ? 0.13 : -0.13) * em), y, 0.075 * em});
+  }
   return b;
 }
 
@@ -190,10 +250,7 @@ std::size_t shown_length(const std::string& tex) {
       ++n;
       i = s.find(';', i);
       if (i == std::string::npos) break;
-    } else if ((c & 0xC0) != 0x80) {
-      // a combining dot (U+0307, U+0308: CC 87, CC 88) takes no room
-      if (!(c == 0xCC && i + 1 < s.size() && (static_cast<unsigned char>(s[i + 1]) == 0x87 || static_cast<unsigned char>(s[i + 1]) == 0x88))) ++n;
-    }
+    } else if ((c & 0xC0) != 0x80) ++n;  // dots are drawn apart: no combining characters
   }
   return n;
 }
@@ -271,9 +328,12 @@ std::string to_svg(const Figure& f, const std::string& ids) {
   // A label centred in the box the layout kept for it: its text held to the box's width.
   auto label = [&](const FigureLabel& l) {
     const SvgLabel b = svg_label(l);
+    std::string dots;  // its accents' dots, drawn apart from the text
+    for (const auto& d : b.dots)
+      dots += "<circle cx=\"" + num((d.x - f.min_x) * px) + "\" cy=\"" + num((f.max_y - d.y) * px) + "\" r=\"" + num(d.r * px) + "\" fill=\"black\"/>\n";
     return "<text x=\"" + num((b.x - f.min_x) * px) + "\" y=\"" + num((f.max_y - b.baseline) * px) + "\" textLength=\"" +
            num(b.width * px) + "\" lengthAdjust=\"spacingAndGlyphs\" text-anchor=\"middle\" font-family=\"serif\" font-style=\"italic\" font-size=\"" +
-           num(b.font_size * px) + "\">" + svg_text(l.tex) + "</text>\n";
+           num(b.font_size * px) + "\">" + svg_text(l.tex) + "</text>\n" + dots;
   };
   for (const auto& l : f.lines) {
     out += "<polyline points=\"";

@@ -237,10 +237,73 @@ TEST_CASE("FBD: in every example no label lies on another or on an arrow, in Tik
 
 TEST_CASE("FBD: labels in SVG keep their subscripts, Greek letters and dots", "[figure]") {
   CHECK(svg_text("\\mu N_{A}") == "μ\u2009N<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>");
+  // A dotted letter's text has no combining dot: the dots are drawn apart (below).
   CHECK(svg_text("m_{A} \\ddot{x}_{A}") ==
-        "m<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>\u2009x\u0308<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>");
+        "m<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>\u2009x<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>");
   CHECK(svg_text("a < b & c") == "a\u2009&lt;\u2009b\u2009&amp;\u2009c");
   CHECK(shown_length("m_{A} \\ddot{x}_{A}") == 5);
+  // The SVG: the label's text, then a small filled circle for its dot, over the theta.
+  Figure f;
+  f.max_x = 2;
+  f.max_y = 1;
+  f.texts.push_back({{1, 0.5}, "\\dot{\\theta}^{2}"});
+  const std::string svg = to_svg(f);
+  CHECK(svg.find("<text x=\"40\" y=\"23.5\" textLength=\"13.3\" lengthAdjust=\"spacingAndGlyphs\" text-anchor=\"middle\" font-family=\"serif\" "
+                 "font-style=\"italic\" font-size=\"14\">θ<tspan baseline-shift=\"super\" font-size=\"70%\"><tspan font-style=\"normal\">2</tspan></tspan></text>\n"
+                 "<circle cx=\"38.67\" cy=\"10.9\" r=\"1.05\" fill=\"black\"/>\n</svg>\n") != std::string::npos);
+  CHECK(svg.find("\u0307") == std::string::npos);
+  CHECK(to_tikz(f).find("{$\\dot{\\theta}^{2}$}") != std::string::npos);
+}
+
+TEST_CASE("FBD: an SVG label's dots sit over their letters, above them, in the label's box", "[figure]") {
+  // The estimate the label is held to: theta 0.6 ems, x 0.52, A 0.7, a digit 0.5, sub- and
+  // superscripts at 70 %; the text spans [x - width/2, x + width/2].
+  struct Case {
+    std::string tex, plain;                  // with its dots, and without
+    double letter_from, letter_to, total;  // the dotted letter's advance, the text's (ems)
+    double top;                              // the letter's top (ems of its size; DejaVu Serif)
+    std::size_t dots;
+    double size = 1, rise = 0;  // the letter's size and baseline (ems of the label)
+  };
+  const std::vector<Case> cases{{"\\dot{\\theta}^{2}", "\\theta^{2}", 0, 0.6, 0.6 + 0.7 * 0.5, 0.77, 1},
+                                {"\\ddot{x}_{A}", "x_{A}", 0, 0.52, 0.52 + 0.7 * 0.7, 0.55, 2},
+                                {"m \\ddot{\\theta}", "m \\theta", 0.85 + 0.17, 0.85 + 0.17 + 0.6, 0.85 + 0.17 + 0.6, 0.77, 2},
+                                {"v_{\\dot{s}}", "v_{s}", 0.52, 0.52 + 0.7 * 0.52, 0.52 + 0.7 * 0.52, 0.55, 1, 0.7, -0.4}};
+  for (const auto& c : cases) {
+    INFO(c.tex);
+    FigureLabel l;
+    l.at = {2, 3};
+    l.tex = c.tex;
+    const SvgLabel b = svg_label(l);
+    const std::string text = svg_text(c.tex);
+    CHECK(text.find("\u0307") == std::string::npos);
+    CHECK(text.find("\u0308") == std::string::npos);
+    CHECK(text == svg_text(c.plain));
+    // The box is the one the letters without their dots fill.
+    l.tex = c.plain;
+    const SvgLabel plain = svg_label(l);
+    CHECK(std::fabs(b.width - plain.width) < 1e-12);
+    CHECK(std::fabs(b.baseline - plain.baseline) < 1e-12);
+    CHECK(b.font_size == plain.font_size);
+    CHECK(plain.dots.empty());
+    REQUIRE(b.dots.size() == c.dots);
+    const double across = b.width / c.total, left = b.x - b.width / 2, em = c.size * b.font_size;
+    const double letter_centre = left + (c.letter_from + c.letter_to) / 2 * across;
+    double mean = 0;
+    for (const auto& d : b.dots) {
+      mean += d.x / static_cast<double>(b.dots.size());
+      CHECK(d.x - d.r > left + c.letter_from * across);  // over the letter
+      CHECK(d.x + d.r < left + c.letter_to * across);
+      CHECK(d.y - d.r > b.baseline + (c.rise + c.size * c.top) * b.font_size);  // above its top
+      CHECK(d.y + d.r < b.baseline + (c.rise + c.size * 1.1) * b.font_size);    // and not far
+      CHECK(std::fabs(d.r - 0.075 * em) < 1e-12);  // smaller over a subscript
+      CHECK(std::fabs(d.y - b.dots[0].y) < 1e-12);
+    }
+    // Centred over the letter, leaning right a little as the italic letter does.
+    CHECK(mean >= letter_centre);
+    CHECK(mean - letter_centre <= 0.1 * em);
+    if (c.dots == 2) CHECK(std::fabs(b.dots[1].x - b.dots[0].x - 0.26 * em) < 1e-12);
+  }
 }
 
 TEST_CASE("FBD: an SVG label is centred in its box and no wider or higher than it, and TikZ scales its label into the box", "[figure]") {
