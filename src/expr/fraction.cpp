@@ -1,4 +1,5 @@
 #include "expr/fraction.hpp"
+#include "expr/memory.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -56,7 +57,7 @@ ex with_shared_numbers(const ex& e) {
 }
 
 bool linear_irreducible(const ex& p) {
-  thread_local ExMemory<bool> memory;
+  auto& memory = thread_memory<struct coprime_memory, ExMemory<bool>>();
   return remembered(memory, p, 1024, [&] { return linear_and_coprime(p); });
 }
 
@@ -103,7 +104,7 @@ bool may_divide(const ex& p, const ex& g) {
   // By degree first: g (a sum) divides p only if p's total degree is at least g's, and when
   // the two are equal, only if p is a number times g, term for term (a chain's partial sums
   // of masses against the sum of all of them).
-  thread_local ExMemory<long> degrees;
+  auto& degrees = thread_memory<struct total_degree_memory, ExMemory<long>>();
   const long dg = remembered(degrees, g, 1024, [&] { return total_degree(g); });
   if (const long dp = total_degree(p); dp >= 0 && dg >= 0 && !p.is_zero()) {
     if (dp < dg) return false;
@@ -114,7 +115,7 @@ bool may_divide(const ex& p, const ex& g) {
     ex x;
     std::uint64_t value;
   };
-  thread_local ExMemory<std::optional<Root>> roots;
+  auto& roots = thread_memory<struct root_memory, ExMemory<std::optional<Root>>>();
   const std::optional<Root> root = remembered(roots, g, 1024, [&]() -> std::optional<Root> {
     for (const ex& x : symbols_in(g)) {
       if (g.degree(x) != 1) continue;

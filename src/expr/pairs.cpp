@@ -1,4 +1,5 @@
 #include "expr/pairs.hpp"
+#include "expr/memory.hpp"
 
 #include <numeric>
 #include <unordered_map>
@@ -72,8 +73,8 @@ bool primitive_sum(const ex& s) {
   // partial sums met once each while a chain of 2048 blocks is solved (a million terms,
   // each with a number of its own) were 120 MB kept for nothing. Deciding again costs one
   // pass over the terms.
-  thread_local ExMemory<bool> memory;
-  thread_local std::size_t terms = 0;  // in the sums remembered
+  auto& memory = thread_memory<struct pairs_memory, ExMemory<bool>>();
+  auto& terms = thread_memory<struct pairs_memory_terms, std::size_t>();  // in the sums remembered
   if (auto it = memory.find(s); it != memory.end()) return it->second;
   const bool v = primitive_sum_uncached(s);
   const std::size_t k = Pairs::of(s).size();

@@ -1,4 +1,5 @@
 #include "expr/print.hpp"
+#include "expr/memory.hpp"
 
 #include "core/kind.hpp"
 #include "expr/pairs.hpp"
@@ -70,17 +71,19 @@ void print_factor(const ex& e, const print_context& c, unsigned level) {
 // Prints with a fresh context of the same kind (text or LaTeX) as `like`, into a string.
 // Renders nest (a key needs its factors' keys), so streams are reused from a per-depth pool
 // rather than constructed each time.
-thread_local std::vector<std::unique_ptr<std::ostringstream>> stream_pool;
-thread_local std::size_t stream_depth = 0;
+std::vector<std::unique_ptr<std::ostringstream>>& stream_pool() {
+  return thread_memory<struct stream_pool_memory, std::vector<std::unique_ptr<std::ostringstream>>>();
+}
+std::size_t& stream_depth() { return thread_memory<struct stream_depth_memory, std::size_t>(); }
 
 template <class Body>
 std::string in_context(const print_context& like, Body body) {
-  if (stream_pool.size() <= stream_depth) stream_pool.push_back(std::make_unique<std::ostringstream>());
-  std::ostringstream& os = *stream_pool[stream_depth++];
+  if (stream_pool().size() <= stream_depth()) stream_pool().push_back(std::make_unique<std::ostringstream>());
+  std::ostringstream& os = *stream_pool()[stream_depth()++];
   os.str(std::string());
   os.clear();
   struct Release {
-    ~Release() { --stream_depth; }
+    ~Release() { --stream_depth(); }
   } release;
   if (latex_ctx(like)) {
     tackle_latex c(os);
@@ -125,12 +128,12 @@ struct KeyCache {
   std::unordered_map<ex, std::shared_ptr<const Fraction>, std::hash<ex>, ex_is_equal> splits;
   static constexpr std::size_t limit = 16384;
 };
-thread_local KeyCache key_cache;
+KeyCache& key_cache() { return thread_memory<KeyCache, KeyCache>(); }
 
 // At the start of a print: the memory forgets everything once it is past its limit.
 void trim_key_cache() {
-  if (key_cache.keys.size() >= KeyCache::limit) key_cache.keys.clear();
-  if (key_cache.splits.size() >= KeyCache::limit) key_cache.splits.clear();
+  if (key_cache().keys.size() >= KeyCache::limit) key_cache().keys.clear();
+  if (key_cache().splits.size() >= KeyCache::limit) key_cache().splits.clear();
 }
 
 std::string key_of_uncached(const ex& e);
@@ -170,9 +173,9 @@ std::string key_of(const ex& e) {
   if (is_exactly<symbol>(e)) return ex_to<symbol>(e).get_name();
   if (is_exactly<power>(e) && is_exactly<symbol>(e.op(0)) && is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_pos_integer())
     return ex_to<symbol>(e.op(0)).get_name() + "^" + std::to_string(ex_to<numeric>(e.op(1)).to_int());
-  if (auto it = key_cache.keys.find(e); it != key_cache.keys.end()) return it->second;
+  if (auto it = key_cache().keys.find(e); it != key_cache().keys.end()) return it->second;
   std::string k = key_of_uncached(e);
-  key_cache.keys.emplace(e, k);
+  key_cache().keys.emplace(e, k);
   return k;
 }
 
@@ -282,7 +285,7 @@ std::size_t index_run(const Terms& terms, std::size_t i, SameCoefficient same_co
 void print_add_terms(const add& s, const print_context& c);
 
 // The person order of LaTeX products in force (see PersonOrder), if any.
-thread_local const FactorRank* person_rank = nullptr;
+const FactorRank*& person_rank() { return thread_memory<struct person_rank_memory, const FactorRank*>(); }
 
 // A long sum's terms are printed once per kind of context and remembered (per thread, up to
 // 16 MB of text): a chain's m_1 + ... + m_256 is in every one of its 511 closed forms, and
@@ -292,28 +295,28 @@ struct LongSums {
   std::unordered_map<ex, std::string, std::hash<ex>, ex_is_equal> text[2];
   std::size_t bytes = 0;
 };
-thread_local LongSums long_sums;
+LongSums& long_sums() { return thread_memory<LongSums, LongSums>(); }
 
 void print_add(const add& s, const print_context& c, unsigned level) {
   const bool latex = latex_ctx(c);
   const bool paren = level >= add_prec;
-  if (s.nops() < long_sum_terms || (latex && person_rank)) {
+  if (s.nops() < long_sum_terms || (latex && person_rank())) {
     if (paren) c.s << (latex ? "\\left(" : "(");
     print_add_terms(s, c);
     if (paren) c.s << (latex ? "\\right)" : ")");
     return;
   }
-  auto& memory = long_sums.text[latex ? 1 : 0];
+  auto& memory = long_sums().text[latex ? 1 : 0];
   const ex e(s);
   auto it = memory.find(e);
   if (it == memory.end()) {
     std::string body = in_context(c, [&](const print_context& inner) { print_add_terms(s, inner); });
-    if (long_sums.bytes + body.size() > (std::size_t{16} << 20)) {
-      long_sums.text[0].clear();
-      long_sums.text[1].clear();
-      long_sums.bytes = 0;
+    if (long_sums().bytes + body.size() > (std::size_t{16} << 20)) {
+      long_sums().text[0].clear();
+      long_sums().text[1].clear();
+      long_sums().bytes = 0;
     }
-    long_sums.bytes += body.size();
+    long_sums().bytes += body.size();
     it = memory.emplace(e, std::move(body)).first;
   }
   if (paren) c.s << (latex ? "\\left(" : "(");
@@ -484,9 +487,9 @@ Fraction split_uncached(const ex& e);
 // Splits a product into sign, |coefficient|, numerator factors and denominator factors (once
 // per node within a top-level print).
 Fraction split(const ex& e) {
-  if (auto it = key_cache.splits.find(e); it != key_cache.splits.end()) return *it->second;
+  if (auto it = key_cache().splits.find(e); it != key_cache().splits.end()) return *it->second;
   auto f = std::make_shared<const Fraction>(split_uncached(e));
-  key_cache.splits.emplace(e, f);
+  key_cache().splits.emplace(e, f);
   return *f;
 }
 
@@ -618,10 +621,10 @@ void print_product(const numeric& coeff, const std::vector<ex>& factors, const p
 // LaTeX writes a product's factors in the order a person does (m a, mu N_A) when the names'
 // kinds are known; the name order stays the tie-break.
 std::vector<ex> person_order(const std::vector<ex>& xs) {
-  if (!person_rank || xs.size() < 2) return xs;
+  if (!person_rank() || xs.size() < 2) return xs;
   std::vector<std::pair<int, ex>> ranked;
   ranked.reserve(xs.size());
-  for (const auto& x : xs) ranked.emplace_back((*person_rank)(is_exactly<power>(x) ? x.op(0) : x), x);
+  for (const auto& x : xs) ranked.emplace_back((*person_rank())(is_exactly<power>(x) ? x.op(0) : x), x);
   std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<ex> out;
   out.reserve(xs.size());
@@ -632,12 +635,12 @@ std::vector<ex> person_order(const std::vector<ex>& xs) {
 void print_fraction(const Fraction& given, const print_context& c, unsigned level) {
   const bool latex = latex_ctx(c);
   Fraction reordered;
-  if (latex && person_rank) {
+  if (latex && person_rank()) {
     reordered = given;
     reordered.num = person_order(given.num);
     reordered.den = person_order(given.den);
   }
-  const Fraction& f = latex && person_rank ? reordered : given;
+  const Fraction& f = latex && person_rank() ? reordered : given;
   std::ostream& os = c.s;
   const bool has_den = f.den_c != 1 || !f.den.empty();
   const bool paren = (f.negative && level > add_prec) || (!latex && has_den && level >= pow_prec) ||
@@ -730,7 +733,7 @@ void ensure_registered() { static Registration once; }
 std::string to_text(const ex& e) {
   ensure_registered();
   if (is_exactly<symbol>(e)) return ex_to<symbol>(e).get_name();
-  thread_local std::unordered_map<ex, std::string, std::hash<ex>, ex_is_equal> memory;
+  auto& memory = thread_memory<struct text_memory, std::unordered_map<ex, std::string, std::hash<ex>, ex_is_equal>>();
   if (auto it = memory.find(e); it != memory.end()) return it->second;
   trim_key_cache();
   static const tackle_text text_like(std::cout);
@@ -741,8 +744,8 @@ std::string to_text(const ex& e) {
   return out;
 }
 
-PersonOrder::PersonOrder(FactorRank rank) : rank_(std::move(rank)), previous_(person_rank) { person_rank = &rank_; }
-PersonOrder::~PersonOrder() { person_rank = previous_; }
+PersonOrder::PersonOrder(FactorRank rank) : rank_(std::move(rank)), previous_(person_rank()) { person_rank() = &rank_; }
+PersonOrder::~PersonOrder() { person_rank() = previous_; }
 
 std::string to_latex(const ex& e) {
   ensure_registered();

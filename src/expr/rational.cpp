@@ -1,4 +1,5 @@
 #include "expr/rational.hpp"
+#include "expr/memory.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -26,7 +27,7 @@ using Memory = std::unordered_map<ex, ex, ExHash, ex_is_equal>;
 }  // namespace
 
 ex numer_denom_remembered(const ex& e) {
-  thread_local Memory memory;
+  auto& memory = thread_memory<struct normal_memory, Memory>();
   if (auto it = memory.find(e); it != memory.end()) return it->second;
   // From the remembered normal form: the same numerator and denominator as numer_denom()
   // makes, and the closed forms' normal forms are usually made already.
@@ -37,8 +38,7 @@ ex numer_denom_remembered(const ex& e) {
 }
 
 Memory& normal_memory() {
-  thread_local Memory memory;
-  return memory;
+  return thread_memory<struct fraction_memory, Memory>();
 }
 
 void remember_normal(const ex& e, const ex& n) {
@@ -685,7 +685,7 @@ ex common_monomial(const std::vector<ex>& terms) {
 // Remembered per thread (the last 1024 polynomials): a chain's closed forms share one
 // denominator, and a numerator's degrees are asked for by each step of its factoring.
 Degrees degrees_of(const ex& expanded) {
-  thread_local ExMemory<Degrees> memory;
+  auto& memory = thread_memory<struct degrees_memory, ExMemory<Degrees>>();
   return remembered(memory, expanded, 1024, [&] { return degrees_of_uncached(expanded); });
 }
 

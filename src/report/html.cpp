@@ -1,4 +1,5 @@
 #include "report/html.hpp"
+#include "expr/memory.hpp"
 
 #include <cstdlib>
 #include <fstream>
@@ -125,15 +126,16 @@ std::string html_escape(const std::string& s) {
 }
 
 namespace {
-thread_local const HostedHtml* hosted = nullptr;
+// The hosted fragment being written on this thread, if any.
+const HostedHtml*& hosted() { return thread_memory<struct hosted_memory, const HostedHtml*>(); }
 }  // namespace
 
-HostedHtml::HostedHtml(std::string ids) : ids_(std::move(ids)), outer_(hosted) { hosted = this; }
-HostedHtml::~HostedHtml() { hosted = outer_; }
-const HostedHtml* HostedHtml::current() { return hosted; }
+HostedHtml::HostedHtml(std::string ids) : ids_(std::move(ids)), outer_(hosted()) { hosted() = this; }
+HostedHtml::~HostedHtml() { hosted() = outer_; }
+const HostedHtml* HostedHtml::current() { return hosted(); }
 
 std::string html_math(const std::string& tex, bool display) {
-  const std::string open = !hosted ? "" : display ? "\\[" : "\\(", close = !hosted ? "" : display ? "\\]" : "\\)";
+  const std::string open = !hosted() ? "" : display ? "\\[" : "\\(", close = !hosted() ? "" : display ? "\\]" : "\\)";
   return std::string("<span class=\"math") + (display ? " display" : "") + "\">" + open + html_escape(tex) + close + "</span>";
 }
 

@@ -1,4 +1,5 @@
 #include "solve/solve.hpp"
+#include "expr/memory.hpp"
 
 #include "expr/trig.hpp"
 
@@ -75,7 +76,7 @@ std::optional<int> sign_of(const ex& e) {
   // sum of its 256 masses).
   if (is_exactly<add>(e)) {
     if (Pairs::of(e).size() <= long_sum_terms) return sign_of_sum(e);
-    thread_local ExMemory<std::optional<int>> memory;
+    auto& memory = thread_memory<struct sum_sign_memory, ExMemory<std::optional<int>>>();
     return remembered(memory, e, 1024, [&] { return sign_of_sum(e); });
   }
   if (is_exactly<mul>(e)) {
@@ -219,7 +220,7 @@ std::vector<ex> canonical_factors_uncached(const ex& polynomial) {
 // denominator are factored again after simplest() factored them, and a chain's 255 tensions
 // share one denominator. Equal polynomials give equal factors, so nothing printed changes.
 std::vector<ex> canonical_factors(const ex& polynomial) {
-  thread_local ExMemory<std::vector<ex>> memory;
+  auto& memory = thread_memory<struct canonical_factors_memory, ExMemory<std::vector<ex>>>();
   return remembered(memory, polynomial, 4096, [&] { return canonical_factors_uncached(polynomial); });
 }
 
@@ -230,7 +231,7 @@ namespace {
 // memory is per thread and forgets everything past 4096 polynomials; an equal polynomial
 // always gives an equal product, so what is remembered changes no output.
 ex factored(const ex& polynomial) {
-  thread_local ExMemory<ex> memory;
+  auto& memory = thread_memory<struct polynomial_memory, ExMemory<ex>>();
   return remembered(memory, polynomial, 4096, [&] {
     ex out = 1;
     for (const ex& x : canonical_factors(polynomial)) out = times(out, x);
@@ -271,7 +272,7 @@ ex simplest_uncached(const ex& e);
 // tensions share one denominator of 256 terms, and telling that it has not the shape was a
 // set of 256 symbols made for each.
 std::optional<ex> reciprocal_denominator(const ex& d) {
-  thread_local ExMemory<std::optional<ex>> memory;
+  auto& memory = thread_memory<struct denominator_memory, ExMemory<std::optional<ex>>>();
   return remembered(memory, d, 1024, [&]() -> std::optional<ex> {
     if (!is_exactly<add>(d) || !is_polynomial_in_symbols(d)) return std::nullopt;
     std::set<ex, ex_is_less> inverted;
@@ -357,7 +358,7 @@ ex simplest_uncached(const ex& e) {
 // Remembered per thread like factored(): the solver, the conditions and the report ask for
 // the same closed forms.
 ex simplest(const ex& e) {
-  thread_local std::unordered_map<ex, ex, ExHash, ex_is_equal> memory;
+  auto& memory = thread_memory<struct simplest_memory, std::unordered_map<ex, ex, ExHash, ex_is_equal>>();
   if (auto it = memory.find(e); it != memory.end()) return it->second;
   // Keyed by the normal form too: simplest(e) and simplest(normal(e)) are one form, made once.
   const ex n = normal_remembered(e);

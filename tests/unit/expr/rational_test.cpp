@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cstdint>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <cln/integer.h>
 #include <cln/modinteger.h>
 
+#include "expr/memory.hpp"
 #include "expr/rational.hpp"
 #include "expr/trig.hpp"
 
@@ -310,4 +312,26 @@ TEST_CASE("Normal form: sums over and under the line cancelled through their con
     CHECK(got.is_equal(normal(q)));
     CHECK(normal(got - want).is_zero());
   }
+}
+
+TEST_CASE("Memory: each kind of memory is its own, one per thread, made empty", "[expr]") {
+  struct first_kind;
+  struct second_kind;
+  auto& a = tackle::thread_memory<first_kind, std::vector<int>>();
+  auto& b = tackle::thread_memory<second_kind, std::vector<int>>();
+  CHECK(&a != &b);
+  CHECK(&a == &tackle::thread_memory<first_kind, std::vector<int>>());
+  a.push_back(7);
+  CHECK(b.empty());
+  CHECK(tackle::thread_memory<struct a_count, std::size_t>() == 0);
+  // Another thread gets its own, empty.
+  std::size_t seen = 99;
+  const std::vector<int>* theirs = nullptr;
+  std::thread([&] {
+    seen = tackle::thread_memory<first_kind, std::vector<int>>().size();
+    theirs = &tackle::thread_memory<first_kind, std::vector<int>>();
+  }).join();
+  CHECK(seen == 0);
+  CHECK(theirs != &a);
+  CHECK(a == std::vector<int>{7});
 }
