@@ -27,7 +27,8 @@ const Case cases[] = {
 };
 
 const tackle::Checker& checker_for(const std::string& example, bool latex = true) {
-  static std::map<std::string, std::pair<std::unique_ptr<const tackle::Analysis>, std::unique_ptr<tackle::Checker>>> made;
+  static std::map<std::string, std::pair<std::unique_ptr<const tackle::Analysis>, std::unique_ptr<tackle::Checker>>>
+      made;
   const std::string key = example + (latex ? "" : " (no latex)");
   auto it = made.find(key);
   if (it == made.end()) {
@@ -63,7 +64,8 @@ int register_cases() {
   for (const auto& c : cases) {
     benchmark::RegisterBenchmark((std::string("check/") + c.unknown + "/" + c.answer).c_str(), check_one, c, true)
         ->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark((std::string("check-no-latex/") + c.unknown + "/" + c.answer).c_str(), check_one, c, false)
+    benchmark::RegisterBenchmark((std::string("check-no-latex/") + c.unknown + "/" + c.answer).c_str(), check_one, c,
+                                 false)
         ->Unit(benchmark::kMicrosecond);
   }
   benchmark::RegisterBenchmark("check/batch", check_batch)->Unit(benchmark::kMicrosecond);

@@ -6,7 +6,9 @@
 #include "core/files.hpp"
 using namespace tackle;
 using clk = std::chrono::steady_clock;
-static double ms(clk::time_point a, clk::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
+static double ms(clk::time_point a, clk::time_point b) {
+  return std::chrono::duration<double, std::milli>(b - a).count();
+}
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: tackle_stages FILE\n");
@@ -35,6 +37,9 @@ int main(int argc, char** argv) {
   auto t10 = clk::now();
   std::string out = write(der, Format::text, false);
   auto t11 = clk::now();
-  std::printf("rules %.1f read %.1f model %.1f equations %.1f dims %.1f linsolve %.1f solve(all) %.1f power %.1f | analyze %.1f explain %.1f write %.1f ms\n",
-              ms(t0,t1), ms(t1,t2), ms(t2,t3), ms(t3,t4), ms(t4,t5), ms(t5,t6), ms(t6,t7), ms(t7,t8), ms(t8,t9), ms(t9,t10), ms(t10,t11));
+  std::printf(
+      "rules %.1f read %.1f model %.1f equations %.1f dims %.1f linsolve %.1f solve(all) %.1f power %.1f | analyze "
+      "%.1f explain %.1f write %.1f ms\n",
+      ms(t0, t1), ms(t1, t2), ms(t2, t3), ms(t3, t4), ms(t4, t5), ms(t5, t6), ms(t6, t7), ms(t7, t8), ms(t8, t9),
+      ms(t9, t10), ms(t10, t11));
 }

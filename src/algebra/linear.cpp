@@ -13,8 +13,9 @@ bool Tolerance::negligible(const numeric& x, const numeric& scale) const {
 }
 
 bool all_rational(const std::vector<Row>& rows) {
-  return std::all_of(rows.begin(), rows.end(),
-                     [](const Row& r) { return std::all_of(r.begin(), r.end(), [](const numeric& x) { return x.is_rational(); }); });
+  return std::all_of(rows.begin(), rows.end(), [](const Row& r) {
+    return std::all_of(r.begin(), r.end(), [](const numeric& x) { return x.is_rational(); });
+  });
 }
 
 namespace {
@@ -187,7 +188,8 @@ std::optional<LeftInverse> left_inverse(const std::vector<Row>& rows, std::size_
   return out;
 }
 
-std::vector<std::size_t> independent_rows(const std::vector<Row>& rows, std::size_t columns, const Tolerance& tolerance) {
+std::vector<std::size_t> independent_rows(const std::vector<Row>& rows, std::size_t columns,
+                                          const Tolerance& tolerance) {
   // Each row reduced by those kept (each kept one with its pivot 1 and its pivot column
   // cleared from those kept after it): what is left not zero, it is kept.
   const bool exact = all_rational(rows);

@@ -23,7 +23,8 @@ struct Tolerance {
 
 /// A basis of { x : rows x = 0 } (each vector as long as a row), by elimination; `columns`:
 /// the rows' length (for an empty list of rows).
-[[nodiscard]] std::vector<Row> null_space(const std::vector<Row>& rows, std::size_t columns, const Tolerance& tolerance);
+[[nodiscard]] std::vector<Row> null_space(const std::vector<Row>& rows, std::size_t columns,
+                                          const Tolerance& tolerance);
 
 /// The sum of the entries' sizes.
 [[nodiscard]] GiNaC::numeric size_of(const Row& v);
@@ -42,10 +43,12 @@ struct LeftInverse {
   /// lambda for v (meaningful only where v is a combination of the rows).
   [[nodiscard]] Row coefficients(const Row& v) const;
 };
-[[nodiscard]] std::optional<LeftInverse> left_inverse(const std::vector<Row>& rows, std::size_t columns, const Tolerance& tolerance);
+[[nodiscard]] std::optional<LeftInverse> left_inverse(const std::vector<Row>& rows, std::size_t columns,
+                                                      const Tolerance& tolerance);
 /// The rows (their places) that are independent, each one kept when it is not a combination
 /// of those before it.
-[[nodiscard]] std::vector<std::size_t> independent_rows(const std::vector<Row>& rows, std::size_t columns, const Tolerance& tolerance);
+[[nodiscard]] std::vector<std::size_t> independent_rows(const std::vector<Row>& rows, std::size_t columns,
+                                                        const Tolerance& tolerance);
 /// Some lambda with sum lambda_i rows_i = v, or none when v is not a combination of the rows.
 [[nodiscard]] std::optional<Row> combination_of(const std::vector<Row>& rows, const Row& v, const Tolerance& tolerance);
 

@@ -27,15 +27,15 @@ constexpr long max_bits = 8192;
 long bits_of(const cln::cl_R& v) {
   if (cln::zerop(v)) return 0;
   // (What numer().int_length() and denom().int_length() say, without making either.)
-  if (cln::instanceof(v, cln::cl_I_ring)) return std::max<long>(cln::integer_length(cln::the<cln::cl_I>(v)), 1);
-  if (cln::instanceof(v, cln::cl_RA_ring)) {
+  if (cln:: instanceof (v, cln::cl_I_ring)) return std::max<long>(cln::integer_length(cln::the<cln::cl_I>(v)), 1);
+  if (cln:: instanceof (v, cln::cl_RA_ring)) {
     const cln::cl_RA& q = cln::the<cln::cl_RA>(v);
     return std::max<long>(cln::integer_length(cln::numerator(q)), cln::integer_length(cln::denominator(q)));
   }
   return std::labs(cln::float_exponent(cln::the<cln::cl_F>(v)));
 }
 
-bool integral(const cln::cl_R& v) { return cln::instanceof(v, cln::cl_I_ring); }
+bool integral(const cln::cl_R& v) { return cln:: instanceof (v, cln::cl_I_ring); }
 
 std::optional<cln::cl_R> real_of(const numeric& v) {
   if (!v.is_real()) return std::nullopt;
@@ -129,10 +129,13 @@ double Program::run_double(std::size_t& at, const std::vector<double>& point, bo
   return std::nan("");
 }
 
-void Program::emit(const ex& e, const Sample& layout, const exmap& definitions, const std::vector<bool>& angles, int depth) {
+void Program::emit(const ex& e, const Sample& layout, const exmap& definitions, const std::vector<bool>& angles,
+                   int depth) {
   if (is_exactly<numeric>(e)) {
-    if (const auto v = real_of(ex_to<numeric>(e))) nodes_.push_back({Op::number, *v});
-    else nodes_.push_back({Op::nothing, 0});
+    if (const auto v = real_of(ex_to<numeric>(e)))
+      nodes_.push_back({Op::number, *v});
+    else
+      nodes_.push_back({Op::nothing, 0});
     return;
   }
   if (is_exactly<constant>(e)) {  // pi in an answer: a float at the current Digits
@@ -150,8 +153,10 @@ void Program::emit(const ex& e, const Sample& layout, const exmap& definitions, 
         nodes_.push_back({i < angles.size() && angles[i] ? Op::angle : Op::input, 0, i});
         return;
       }
-    if (const auto d = definitions.find(e); d != definitions.end() && depth < 8) emit(d->second, layout, definitions, angles, depth + 1);
-    else nodes_.push_back({Op::nothing, 0});
+    if (const auto d = definitions.find(e); d != definitions.end() && depth < 8)
+      emit(d->second, layout, definitions, angles, depth + 1);
+    else
+      nodes_.push_back({Op::nothing, 0});
     return;
   }
   if (is_exactly<add>(e) || is_exactly<mul>(e)) {
@@ -184,7 +189,7 @@ struct Program::Value {
   cln::cl_R f;
 
   void set(const cln::cl_R& v) {
-    exact = cln::instanceof(v, cln::cl_RA_ring);
+    exact = cln:: instanceof (v, cln::cl_RA_ring);
     if (exact) {
       const cln::cl_RA& q = cln::the<cln::cl_RA>(v);
       n = cln::numerator(q);
@@ -276,9 +281,7 @@ bool Program::emit_trig(const ex& e, const Sample& layout, const std::vector<boo
 bool Program::run(std::size_t& at, const Sample& point, Value& out) const {
   const Node& node = nodes_[at++];
   switch (node.op) {
-    case Op::number:
-      out.set(node.number);
-      return true;
+    case Op::number: out.set(node.number); return true;
     case Op::input: {
       const auto v = real_of(point[node.index].second);
       if (!v) return false;
@@ -346,7 +349,8 @@ bool Program::run_power(std::size_t& at, const Sample& point, Value& out) const 
     }
     // The result's size in bits is about |k| * log2|base|: bound it before making it.
     const auto bits = [&] {
-      return static_cast<double>(m) * static_cast<double>(std::max(cln::integer_length(b.n), cln::integer_length(b.d)) + 1);
+      return static_cast<double>(m) *
+             static_cast<double>(std::max(cln::integer_length(b.n), cln::integer_length(b.d)) + 1);
     };
     if (bits() > max_bits) {
       b.reduce();
@@ -380,7 +384,7 @@ bool Program::run_power(std::size_t& at, const Sample& point, Value& out) const 
   }
   // A rational power of a rational: exact when the base is a perfect power (sqrt(m^2) at a
   // point), else in floats at the current Digits, as evalf() would make it.
-  if (cln::instanceof(base, cln::cl_RA_ring) && cln::instanceof(expo, cln::cl_RA_ring)) {
+  if (cln:: instanceof (base, cln::cl_RA_ring) && cln:: instanceof (expo, cln::cl_RA_ring)) {
     const cln::cl_RA& q = cln::the<cln::cl_RA>(expo);
     cln::cl_RA root;
     if (cln::rootp(cln::the<cln::cl_RA>(base), cln::denominator(q), &root)) {
@@ -393,7 +397,7 @@ bool Program::run_power(std::size_t& at, const Sample& point, Value& out) const 
     return true;
   }
   const cln::cl_N v = cln::expt(cln::cl_N(cln::cl_float(base, cln::default_float_format)), cln::cl_N(expo));
-  if (!cln::instanceof(v, cln::cl_R_ring)) return false;
+  if (!cln:: instanceof (v, cln::cl_R_ring)) return false;
   out.set(cln::the<cln::cl_R>(v));
   return true;
 }
@@ -434,7 +438,7 @@ bool Program::run_trig(const Node& node, std::size_t& at, const Sample& point, V
     // fraction kept unreduced; a quarter turn added takes (cos, sin) to (-sin, cos).
     const Node& angle = nodes_[at++];
     const auto t = real_of(point[angle.index].second);
-    if (!t || !cln::instanceof(*t, cln::cl_RA_ring)) {
+    if (!t || !cln:: instanceof (*t, cln::cl_RA_ring)) {
       --at;
     } else {
       const cln::cl_RA& q = cln::the<cln::cl_RA>(*t);
@@ -477,10 +481,14 @@ bool Program::run_trig(const Node& node, std::size_t& at, const Sample& point, V
   static const cln::cl_N turns[4] = {1, cln::complex(0, 1), -1, cln::complex(0, -1)};
   z = z * turns[node.multiple];
   const cln::cl_R re = cln::realpart(z), im = cln::imagpart(z);
-  if (node.serial == sin_SERIAL::serial) out.set(im);
-  else if (node.serial == cos_SERIAL::serial) out.set(re);
-  else if (cln::zerop(re)) return false;
-  else out.set(im / re);
+  if (node.serial == sin_SERIAL::serial)
+    out.set(im);
+  else if (node.serial == cos_SERIAL::serial)
+    out.set(re);
+  else if (cln::zerop(re))
+    return false;
+  else
+    out.set(im / re);
   return true;
 }
 

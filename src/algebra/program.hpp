@@ -31,7 +31,8 @@ class Program {
   /// `e` over the inputs of `layout` (their values there do not matter); a symbol that is not
   /// an input is replaced by its entry in `definitions` (to 8 levels), else the program gives
   /// nothing. `angles`: the inputs (by their place in `layout`) that are angles.
-  Program(const GiNaC::ex& e, const Sample& layout, const GiNaC::exmap& definitions, const std::vector<bool>& angles = {});
+  Program(const GiNaC::ex& e, const Sample& layout, const GiNaC::exmap& definitions,
+          const std::vector<bool>& angles = {});
   /// The value at `point` (same inputs as the layout), or nothing: a symbol without a value, a
   /// division by zero, a complex value, a number past the bounds.
   [[nodiscard]] std::optional<GiNaC::numeric> operator()(const Sample& point) const;
@@ -53,7 +54,7 @@ class Program {
     long multiple = 0;      // trig: pi/2 added this many times; a pair: the angle's multiple
     double approx = 0;      // number: as a double
   };
-  struct Value;  // a fraction kept unreduced, or a float
+  struct Value;              // a fraction kept unreduced, or a float
   std::vector<Node> nodes_;  // in preorder
   void emit(const GiNaC::ex& e, const Sample& layout, const GiNaC::exmap& definitions, const std::vector<bool>& angles,
             int depth);

@@ -71,9 +71,12 @@ StateInput input_near(const ex& symbol, const std::optional<ex>& value, bool ang
   const ex f = evalf(*value);
   if (!is_a<numeric>(f) || f.is_zero() || !ex_to<numeric>(f).is_real()) return in;
   const double d = ex_to<numeric>(f).to_double();
-  if (angle) in.base = half_tangent(d);
-  else if (is_a<numeric>(*value) && ex_to<numeric>(*value).is_rational()) in.base = ex_to<numeric>(*value);
-  else in.base = numeric(std::llround(d * 1e6), 1000000);
+  if (angle)
+    in.base = half_tangent(d);
+  else if (is_a<numeric>(*value) && ex_to<numeric>(*value).is_rational())
+    in.base = ex_to<numeric>(*value);
+  else
+    in.base = numeric(std::llround(d * 1e6), 1000000);
   return in;
 }
 

@@ -27,8 +27,10 @@ bool put_term(const ex& t, const std::vector<ex>& unknowns, std::vector<exvector
   if (!is_exactly<mul>(t)) {
     const int place = unknown_place(t, unknowns);
     if (place == -2) return false;
-    if (place >= 0) parts[static_cast<std::size_t>(place)].push_back(1);
-    else parts.back().push_back(t);
+    if (place >= 0)
+      parts[static_cast<std::size_t>(place)].push_back(1);
+    else
+      parts.back().push_back(t);
     return true;
   }
   int found = -1;
@@ -37,8 +39,10 @@ bool put_term(const ex& t, const std::vector<ex>& unknowns, std::vector<exvector
     const ex f = t.op(i);
     const int place = unknown_place(f, unknowns);
     if (place == -2 || (place >= 0 && found >= 0)) return false;
-    if (place >= 0) found = place;
-    else rest.push_back(f);
+    if (place >= 0)
+      found = place;
+    else
+      rest.push_back(f);
   }
   (found >= 0 ? parts[static_cast<std::size_t>(found)] : parts.back()).push_back(mul(rest));
   return true;
@@ -66,8 +70,8 @@ std::optional<std::vector<ex>> linear_parts(const ex& residual, const std::vecto
   }
 }
 
-Truth::Truth(Family family, const States& states, std::vector<Sample> points, std::size_t fixed, const exmap& definitions,
-             Tolerance tolerance)
+Truth::Truth(Family family, const States& states, std::vector<Sample> points, std::size_t fixed,
+             const exmap& definitions, Tolerance tolerance)
     : family_(std::move(family)),
       layout_(states.layout()),
       angles_(states.angles()),
@@ -97,9 +101,9 @@ Truth::Truth(Family family, const States& states, std::vector<Sample> points, st
     for (const auto& r : at_rows_) rows.push_back(r[k]);
     null_.push_back(null_space(rows, width(), tolerance_));
     // Consistent: some solution has the constant's place not zero (free constants: always).
-    const bool consistent = family_.free_constants || std::any_of(null_.back().begin(), null_.back().end(), [&](const Row& x) {
-                              return !tolerance_.negligible(x.back(), size_of(x));
-                            });
+    const bool consistent = family_.free_constants ||
+                            std::any_of(null_.back().begin(), null_.back().end(),
+                                        [&](const Row& x) { return !tolerance_.negligible(x.back(), size_of(x)); });
     if (!consistent) return;
   }
   usable_ = !points_.empty();
@@ -152,7 +156,8 @@ Truth::Decision Truth::holds(const std::vector<Row>& values) const {
   for (std::size_t k = 0; k < values.size() && k < null_.size(); ++k) {
     if (!allowed_point(k)) continue;
     fresh_checked = fresh_checked || k >= fixed_;
-    const bool rational = std::all_of(values[k].begin(), values[k].end(), [](const numeric& x) { return x.is_rational(); });
+    const bool rational =
+        std::all_of(values[k].begin(), values[k].end(), [](const numeric& x) { return x.is_rational(); });
     for (const Row& x : null_[k])
       if (!orthogonal(values[k], x, tolerance_)) return {Answer::fails, rational && all_rational(null_[k])};
     exact = exact && rational && all_rational(null_[k]);
@@ -199,7 +204,8 @@ std::optional<Evaluated> evaluate_terms(const std::vector<Program>& terms, const
   return out;
 }
 
-std::vector<Program> term_programs(const ex& residual, const Sample& layout, const exmap& definitions, const std::vector<bool>& angles) {
+std::vector<Program> term_programs(const ex& residual, const Sample& layout, const exmap& definitions,
+                                   const std::vector<bool>& angles) {
   std::vector<Program> out;
   if (is_exactly<add>(residual)) {
     for (const auto& t : residual) out.emplace_back(t, layout, definitions, angles);

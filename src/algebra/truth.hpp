@@ -34,7 +34,8 @@ namespace tackle {
 
 /// `e`'s coefficients of each unknown, then the rest (free of them); none when `e` is not a
 /// polynomial of degree at most one in them.
-[[nodiscard]] std::optional<std::vector<GiNaC::ex>> linear_parts(const GiNaC::ex& e, const std::vector<GiNaC::ex>& unknowns);
+[[nodiscard]] std::optional<std::vector<GiNaC::ex>> linear_parts(const GiNaC::ex& e,
+                                                                 const std::vector<GiNaC::ex>& unknowns);
 
 struct Family {
   std::vector<std::string> labels;
@@ -59,8 +60,8 @@ class Truth {
   Truth() = default;
   /// `points`: the states, the first `fixed` of them the fixed ones (the diagnoses use those
   /// alone, so that what a student is told does not change from run to run).
-  Truth(Family family, const States& states, std::vector<Sample> points, std::size_t fixed, const GiNaC::exmap& definitions,
-        Tolerance tolerance);
+  Truth(Family family, const States& states, std::vector<Sample> points, std::size_t fixed,
+        const GiNaC::exmap& definitions, Tolerance tolerance);
 
   [[nodiscard]] const Family& family() const { return family_; }
   /// Every equation linear in the unknowns, defined and consistent at every point: the family
@@ -70,7 +71,8 @@ class Truth {
   [[nodiscard]] std::size_t fixed() const { return fixed_; }
 
   /// The parts' values at the points from `first` (all of them, or the fixed ones only).
-  [[nodiscard]] Values values(const std::vector<GiNaC::ex>& parts, bool fixed_only = false, std::size_t first = 0) const;
+  [[nodiscard]] Values values(const std::vector<GiNaC::ex>& parts, bool fixed_only = false,
+                              std::size_t first = 0) const;
   /// The equation `i`'s parts' values at every point.
   [[nodiscard]] const std::vector<Row>& equation_values(std::size_t i) const { return at_rows_[i]; }
   /// Whether the linear equation with these values (at the first points, or all) holds at
@@ -109,7 +111,7 @@ class Truth {
 
  private:
   Family family_;
-  Sample layout_;               // the states' inputs, then the unknowns that are not inputs
+  Sample layout_;  // the states' inputs, then the unknowns that are not inputs
   std::vector<bool> angles_;
   std::vector<std::size_t> unknown_at_;  // each unknown's place in layout_
   GiNaC::exmap definitions_;

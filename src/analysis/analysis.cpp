@@ -17,7 +17,8 @@ namespace {
 // the description's 'motion'.
 void follow_motion(Analysis& a) {
   a.motion = analyze_motion(a.model, a.system, a.solution);
-  if (a.motion && !a.motion->problem.empty()) throw InputError({{a.motion->problem_at.value_or(a.model.motion->at), a.motion->problem}});
+  if (a.motion && !a.motion->problem.empty())
+    throw InputError({{a.motion->problem_at.value_or(a.model.motion->at), a.motion->problem}});
 }
 
 }  // namespace
@@ -37,32 +38,40 @@ InputError contradiction(const Model& m, const EquationSystem& s, const Solution
   Location at{m.file, 0, 0};
   std::string expected;
   for (const auto& label : sol.conflicts) {
-    const auto e = std::find_if(s.equations.begin(), s.equations.end(), [&](const Equation& x) { return x.label == label; });
+    const auto e =
+        std::find_if(s.equations.begin(), s.equations.end(), [&](const Equation& x) { return x.label == label; });
     if (e == s.equations.end() || e->bodies.empty() || e->system) continue;
     const Body& b = m.bodies[static_cast<std::size_t>(e->bodies.front())];
     if (at.line == 0) at = b.at;
     if (!expected.empty()) continue;
     if (e->kind == Equation::Kind::amb && b.angle.is_zero())
-      expected = "body '" + b.name + "' does not turn (it has no angle), so the moments on it must cancel: a second contact, "
+      expected = "body '" + b.name +
+                 "' does not turn (it has no angle), so the moments on it must cancel: a second contact, "
                  "its forces through its center of mass, or an angle and a shape or inertia to turn with";
     else if (e->kind == Equation::Kind::amb && b.inertia.is_zero())
-      expected = "body '" + b.name + "' has no shape or inertia to turn with, so the moments on it must cancel: a second contact, "
+      expected = "body '" + b.name +
+                 "' has no shape or inertia to turn with, so the moments on it must cancel: a second contact, "
                  "its forces through its center of mass, or a shape or inertia";
     else if (e->kind == Equation::Kind::lmb && b.mass.is_zero())
-      expected = "body '" + b.name + "' has no mass, so the forces on it must cancel: a support, a string or a contact that "
+      expected = "body '" + b.name +
+                 "' has no mass, so the forces on it must cancel: a support, a string or a contact that "
                  "balances them, or a mass";
   }
-  if (expected.empty()) expected = "a support or a contact that balances the forces, or a coordinate that lets the body move that way";
+  if (expected.empty())
+    expected = "a support or a contact that balances the forces, or a coordinate that lets the body move that way";
   // (One equation alone: it reads 0 = a term that is not zero, a force or a moment.)
   std::string alone = "a term that is not zero";
   if (sol.conflicts.size() == 1)
-    if (const auto e = std::find_if(s.equations.begin(), s.equations.end(), [&](const Equation& x) { return x.label == sol.conflicts.front(); });
+    if (const auto e = std::find_if(s.equations.begin(), s.equations.end(),
+                                    [&](const Equation& x) { return x.label == sol.conflicts.front(); });
         e != s.equations.end())
-      alone = e->kind == Equation::Kind::lmb ? "a force that is not zero" : e->kind == Equation::Kind::amb ? "a moment that is not zero" : alone;
+      alone = e->kind == Equation::Kind::lmb   ? "a force that is not zero"
+              : e->kind == Equation::Kind::amb ? "a moment that is not zero"
+                                               : alone;
   const std::string which = sol.conflicts.size() == 1
                                 ? sol.conflicts.front() + " reads 0 = " + alone
-                                : join(std::vector<std::string>(sol.conflicts.begin(), sol.conflicts.end() - 1)) + " and " +
-                                      sol.conflicts.back() + " contradict each other";
+                                : join(std::vector<std::string>(sol.conflicts.begin(), sol.conflicts.end() - 1)) +
+                                      " and " + sol.conflicts.back() + " contradict each other";
   return InputError({{at, "the balances cannot all hold: " + which + " (expected " + expected + ")"}});
 }
 
@@ -91,7 +100,8 @@ std::unique_ptr<Analysis> analyze_one(const Description& d, const RuleSet& rules
   a->power = check_power(a->model, a->system, a->solution);
   if (a->model.interval) {
     a->interval_end = interval_end(a->model, a->solution);
-    if (!a->interval_end->problem.empty()) throw InputError({{a->model.interval->at, "'interval': " + a->interval_end->problem}});
+    if (!a->interval_end->problem.empty())
+      throw InputError({{a->model.interval->at, "'interval': " + a->interval_end->problem}});
   }
   follow_motion(*a);
   return a;
@@ -138,7 +148,8 @@ std::unique_ptr<Analysis> analyze_phases(const Description& d, const RuleSet& ru
   std::vector<ParameterDesc> carried;
   for (const auto& ph : d.phases) {
     Description pd = ph.d;
-    pd.parameters.insert(pd.parameters.begin() + static_cast<std::ptrdiff_t>(d.parameters.size()), carried.begin(), carried.end());
+    pd.parameters.insert(pd.parameters.begin() + static_cast<std::ptrdiff_t>(d.parameters.size()), carried.begin(),
+                         carried.end());
     std::unique_ptr<Analysis> a;
     try {
       a = analyze_decided(pd, rules, {});
@@ -154,7 +165,8 @@ std::unique_ptr<Analysis> analyze_phases(const Description& d, const RuleSet& ru
     for (const auto& [name, value] : ph.carry) {
       const auto parsed = parse_expression(value.text, table);
       if (!parsed.value) {
-        for (const auto& p : parsed.problems) prior.push_back({value.at.shifted(p.column), "'carry' of phase '" + ph.name.text + "': " + p.message});
+        for (const auto& p : parsed.problems)
+          prior.push_back({value.at.shifted(p.column), "'carry' of phase '" + ph.name.text + "': " + p.message});
         ok = false;
         continue;
       }
@@ -168,7 +180,8 @@ std::unique_ptr<Analysis> analyze_phases(const Description& d, const RuleSet& ru
         std::sort(known.begin(), known.end());
         prior.push_back({value.at, "'carry' of phase '" + ph.name.text + "': " + join(missing) +
                                        " is not known at the end of the phase (known there: " +
-                                       (known.empty() ? std::string("nothing but the parameters") : join(known)) + ")"});
+                                       (known.empty() ? std::string("nothing but the parameters") : join(known)) +
+                                       ")"});
         ok = false;
         continue;
       }
@@ -221,8 +234,8 @@ const Analysis* pick_phase(const Analysis& a, const std::string& name, std::stri
   }
   for (const auto& p : a.phases)
     if (p.name == name) return p.analysis.get();
-  message = (name.empty() ? std::string("the description has phases") : "there is no phase '" + name + "'") + " (expected --phase with one of: " +
-            join(names) + ")";
+  message = (name.empty() ? std::string("the description has phases") : "there is no phase '" + name + "'") +
+            " (expected --phase with one of: " + join(names) + ")";
   return nullptr;
 }
 

@@ -36,8 +36,8 @@ struct Analysis {
   Model model;
   EquationSystem system;
   Solution solution;
-  PowerCheck power;  // the power balance checked against the solution (src/energy/)
-  std::optional<Motion> motion;  // motion in time, when the description asks for it (src/motion/)
+  PowerCheck power;                         // the power balance checked against the solution (src/energy/)
+  std::optional<Motion> motion;             // motion in time, when the description asks for it (src/motion/)
   std::optional<IntervalEnd> interval_end;  // the rates at the end of the interval (src/motion/phases)
   std::optional<ImpactResult> impact;       // an impact, instead of the balances (src/motion/phases)
   std::vector<RegimeChoice> regimes;        // connections decided at the numbers (analysis/regimes)

@@ -65,7 +65,10 @@ std::string unknown_name(const Rule& rule, const ConnectionDesc& c, const std::s
       if (close == std::string::npos) break;
       const std::string key = name.substr(open + 1, close - open - 1);
       const ArgDesc* a = key == "name" ? nullptr : c.arg(key);
-      name.replace(open, close - open + 1, key == "name" && c.name ? c.name->text : a && !a->items.empty() ? a->items[0].text : key);
+      name.replace(open, close - open + 1,
+                   key == "name" && c.name  ? c.name->text
+                   : a && !a->items.empty() ? a->items[0].text
+                                            : key);
     }
     return name;
   }
@@ -142,7 +145,9 @@ RegimeChoice decide_regime(const Analysis& a, const Description& d, const RuleSe
   }
   // The friction the first regime needs, on the first body, and the most it can be.
   const std::string friction = rule->regimes.size() > 1 ? rule->regimes[1].against : "";
-  const SymbolInfo* f = friction.empty() ? nullptr : table.find(unknown_name(*first_rule, as_regime(c, first, *first_rule, false), friction));
+  const SymbolInfo* f = friction.empty()
+                            ? nullptr
+                            : table.find(unknown_name(*first_rule, as_regime(c, first, *first_rule, false), friction));
   if (f) {
     exmap solved;
     for (const auto& v : a.solution.values) solved[v.unknown] = v.value;
@@ -154,7 +159,8 @@ RegimeChoice decide_regime(const Analysis& a, const Description& d, const RuleSe
       fr.value = *value;
       fr.value_number = number_of(*value, f->sym);
       for (const auto& cc : a.solution.conditions)
-        if (cc.condition && cc.condition->source == out.connection && cc.condition->lhs.is_equal(f->sym) && cc.condition->op[0] == '<') {
+        if (cc.condition && cc.condition->source == out.connection && cc.condition->lhs.is_equal(f->sym) &&
+            cc.condition->op[0] == '<') {
           fr.limit = cc.condition->rhs;
           fr.limit_value = normal(substituted(cc.condition->rhs, solved));
           fr.limit_number = number_of(fr.limit_value, f->sym);

@@ -65,8 +65,10 @@ void append_quoted(std::string& out, std::string_view s) {
       case '\r': out += "\\r"; break;
       case '\t': out += "\\t"; break;
       default:
-        if (c < 0x20) out += fmt::format("\\u{:04x}", c);
-        else out += ch;
+        if (c < 0x20)
+          out += fmt::format("\\u{:04x}", c);
+        else
+          out += ch;
     }
   }
   out += '"';
@@ -101,10 +103,11 @@ std::string json_number(double v) {
 std::string platform_test(ResultsFormat format, const std::string& name, double score, double max, bool passed,
                           const std::string& output) {
   if (format == ResultsFormat::gradescope)
-    return "{\"name\":" + json_quoted(name) + ",\"score\":" + json_number(score) + ",\"max_score\":" + json_number(max) +
-           ",\"status\":\"" + (passed ? "passed" : "failed") + "\",\"output\":" + json_quoted(output) + ",\"visibility\":\"visible\"}";
-  return "{\"name\":" + json_quoted(name) + ",\"points\":" + json_number(score) + ",\"max_points\":" + json_number(max) +
-         ",\"message\":" + json_quoted(output) + "}";
+    return "{\"name\":" + json_quoted(name) + ",\"score\":" + json_number(score) +
+           ",\"max_score\":" + json_number(max) + ",\"status\":\"" + (passed ? "passed" : "failed") +
+           "\",\"output\":" + json_quoted(output) + ",\"visibility\":\"visible\"}";
+  return "{\"name\":" + json_quoted(name) + ",\"points\":" + json_number(score) +
+         ",\"max_points\":" + json_number(max) + ",\"message\":" + json_quoted(output) + "}";
 }
 
 std::string result_line(const CheckResult& r, const std::string& answer, const std::string& id) {
@@ -141,7 +144,8 @@ std::string result_line(const CheckResult& r, const std::string& answer, const s
   out += ",\"latex\":";
   append_quoted(out, r.echo_latex);
   if (r.equation)
-    for (const auto& [name, list] : {std::pair{"identified_as", &r.identified_as}, std::pair{"follows_from", &r.follows_from}}) {
+    for (const auto& [name, list] :
+         {std::pair{"identified_as", &r.identified_as}, std::pair{"follows_from", &r.follows_from}}) {
       out += std::string(",\"") + name + "\":[";
       for (std::size_t k = 0; k < list->size(); ++k) {
         if (k) out += ',';
@@ -223,8 +227,8 @@ struct ReadLine {
   std::vector<std::pair<std::string, std::string>> params;
 };
 
-ReadLine read_answer_line(const std::string& line, std::size_t number, const Checker& checker, const GradeOptions& options,
-                          GradedLine& graded) {
+ReadLine read_answer_line(const std::string& line, std::size_t number, const Checker& checker,
+                          const GradeOptions& options, GradedLine& graded) {
   using J = nlohmann::ordered_json;
   ReadLine l;
   l.id = "line " + std::to_string(number);
@@ -234,7 +238,9 @@ ReadLine read_answer_line(const std::string& line, std::size_t number, const Che
     graded.object = true;
     if (j.contains("student") && (j["student"].is_string() || j["student"].is_number()))
       graded.student = j["student"].is_string() ? j["student"].get<std::string>() : j["student"].dump();
-    if (j.contains("id")) graded.id = j["id"].is_string() ? j["id"].get<std::string>() : j["id"].dump(-1, ' ', false, J::error_handler_t::replace);
+    if (j.contains("id"))
+      graded.id =
+          j["id"].is_string() ? j["id"].get<std::string>() : j["id"].dump(-1, ' ', false, J::error_handler_t::replace);
   };
   // Bounded before parsing: a submission line is at most a few answers long.
   if (line.size() > 4 * checker.options().limits.max_length + 1024) {
@@ -258,29 +264,40 @@ ReadLine read_answer_line(const std::string& line, std::size_t number, const Che
     if (graded.id) l.id = *graded.id;
     if (j.contains("fbd")) {
       // A free body diagram, as `check --fbd` reads it (JSON is YAML).
-      if (!j["fbd"].is_object()) l.problem = "\"fbd\" is not an object (expected {\"body\": ..., \"forces\": [...]})";
-      else l.fbd = j["fbd"].dump(-1, ' ', false, J::error_handler_t::replace);
-      if (j.contains("answer") || j.contains("equation")) l.problem = "a line has one of \"fbd\", \"equation\" and \"answer\"";
+      if (!j["fbd"].is_object())
+        l.problem = "\"fbd\" is not an object (expected {\"body\": ..., \"forces\": [...]})";
+      else
+        l.fbd = j["fbd"].dump(-1, ' ', false, J::error_handler_t::replace);
+      if (j.contains("answer") || j.contains("equation"))
+        l.problem = "a line has one of \"fbd\", \"equation\" and \"answer\"";
       if (l.fbd) l.answer = *l.fbd;
     } else if (j.contains("equation")) {
       // A step of a worked solution: an equation, checked against the derivation's.
-      if (!j["equation"].is_string()) l.problem = "\"equation\" is not a string";
-      else l.answer = j["equation"].get<std::string>();
+      if (!j["equation"].is_string())
+        l.problem = "\"equation\" is not a string";
+      else
+        l.answer = j["equation"].get<std::string>();
       if (j.contains("answer")) l.problem = "a line has an \"equation\" or an \"answer\", not both";
       l.equation = true;
     } else {
-      if (!j.contains("unknown") || !j["unknown"].is_string()) l.problem = "no \"unknown\" (a string)";
-      else l.unknown = j["unknown"].get<std::string>();
-      if (!j.contains("answer")) l.problem = "no \"answer\"";
-      else l.answer = j["answer"].is_string() ? j["answer"].get<std::string>() : j["answer"].dump(-1, ' ', false, J::error_handler_t::replace);
+      if (!j.contains("unknown") || !j["unknown"].is_string())
+        l.problem = "no \"unknown\" (a string)";
+      else
+        l.unknown = j["unknown"].get<std::string>();
+      if (!j.contains("answer"))
+        l.problem = "no \"answer\"";
+      else
+        l.answer = j["answer"].is_string() ? j["answer"].get<std::string>()
+                                           : j["answer"].dump(-1, ' ', false, J::error_handler_t::replace);
     }
     if (j.contains("params")) {
       if (!j["params"].is_object()) {
         l.problem = "\"params\" is not an object of parameter values";
       } else {
         for (auto it = j["params"].begin(); it != j["params"].end(); ++it)
-          l.params.emplace_back(it.key(), it.value().is_string() ? it.value().get<std::string>()
-                                                                 : it.value().dump(-1, ' ', false, J::error_handler_t::replace));
+          l.params.emplace_back(it.key(), it.value().is_string()
+                                              ? it.value().get<std::string>()
+                                              : it.value().dump(-1, ' ', false, J::error_handler_t::replace));
       }
     }
   } catch (const std::bad_alloc&) {
@@ -308,7 +325,8 @@ CheckResult checked_diagram(const std::string& fbd, std::size_t number, const Gr
     if (!problems.empty()) r.summary = problems.front().message;
     return r;
   } catch (const InputError& e) {
-    return not_an_answer(number, e.diagnostics().empty() ? std::string("not a free body diagram") : e.diagnostics().front().message);
+    return not_an_answer(
+        number, e.diagnostics().empty() ? std::string("not a free body diagram") : e.diagnostics().front().message);
   }
 }
 
@@ -421,8 +439,9 @@ std::vector<LineOutcome> finish_child(Child& c) {
   while (waitpid(c.pid, &status, 0) < 0)
     if (errno != EINTR) throw InternalError("cannot wait for a grading process");
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw InternalError("a grading process ended with " +
-                        (WIFEXITED(status) ? "status " + std::to_string(WEXITSTATUS(status)) : "signal " + std::to_string(WTERMSIG(status))));
+    throw InternalError("a grading process ended with " + (WIFEXITED(status)
+                                                               ? "status " + std::to_string(WEXITSTATUS(status))
+                                                               : "signal " + std::to_string(WTERMSIG(status))));
   std::rewind(c.file.get());
   std::vector<LineOutcome> out(c.to - c.from);
   for (auto& o : out)
@@ -437,7 +456,8 @@ std::vector<LineOutcome> grade_block(const Checker& checker, const std::vector<P
   const std::size_t n = block.size(), parts = std::min<std::size_t>(static_cast<std::size_t>(std::max(jobs, 1)), n);
   std::vector<LineOutcome> out(n);
   std::vector<Child> children;
-  for (std::size_t k = 1; k < parts; ++k) children.push_back(start_child(checker, block, k * n / parts, (k + 1) * n / parts, options));
+  for (std::size_t k = 1; k < parts; ++k)
+    children.push_back(start_child(checker, block, k * n / parts, (k + 1) * n / parts, options));
   const auto here = [&](std::size_t from, std::size_t to) {
     for (std::size_t i = from; i < to; ++i) out[i] = grade_line(checker, block[i], options);
   };
@@ -458,8 +478,12 @@ std::vector<LineOutcome> grade_block(const Checker& checker, const std::vector<P
 class BatchWriter {
  public:
   BatchWriter(std::ostream& out, std::ostream& results, const GradeOptions& options)
-      : out_(out), results_(results), options_(options), platform_(options.format != ResultsFormat::jsonl),
-        spooled_(options.format == ResultsFormat::prairielearn), spool_(spooled_ ? std::tmpfile() : nullptr, &std::fclose) {
+      : out_(out),
+        results_(results),
+        options_(options),
+        platform_(options.format != ResultsFormat::jsonl),
+        spooled_(options.format == ResultsFormat::prairielearn),
+        spool_(spooled_ ? std::tmpfile() : nullptr, &std::fclose) {
     // PrairieLearn's tests wait in a temporary file (memory stays bounded): a result that is
     // not gradable must not tell which of the other answers were right, and that is known
     // only at the end.
@@ -496,7 +520,9 @@ void BatchWriter::line(LineOutcome& o, std::size_t number) {
     const std::string place = "line " + std::to_string(number) + ": ";
     const bool named_by_place = o.id + ": " == place;
     if (format_errors_.size() < max_format_errors)
-      format_errors_.push_back(name + ": " + (named_by_place && o.summary.rfind(place, 0) == 0 ? o.summary.substr(place.size()) : o.summary));
+      format_errors_.push_back(
+          name + ": " +
+          (named_by_place && o.summary.rfind(place, 0) == 0 ? o.summary.substr(place.size()) : o.summary));
   }
   const auto own = options_.points_for.find(o.unknown);
   const double max_points = own != options_.points_for.end() ? own->second : options_.points;
@@ -512,7 +538,8 @@ void BatchWriter::line(LineOutcome& o, std::size_t number) {
   out_ << o.result << "\n";
   if (options_.format == ResultsFormat::jsonl) results_ << o.result << "\n";
   if (platform_)
-    tests() << (number == 1 ? "\n    " : ",\n    ") << platform_test(options_.format, name, points, max_points, o.verdict == Verdict::correct, feedback);
+    tests() << (number == 1 ? "\n    " : ",\n    ")
+            << platform_test(options_.format, name, points, max_points, o.verdict == Verdict::correct, feedback);
 }
 
 BatchSummary BatchWriter::finish() {
@@ -526,7 +553,8 @@ BatchSummary BatchWriter::finish() {
       throw InternalError("cannot read back the temporary file of the PrairieLearn tests");
     results_ << "  \"tests\": [";
     char chunk[1 << 16];
-    for (std::size_t n; (n = std::fread(chunk, 1, sizeof chunk, spool_.get())) > 0;) results_.write(chunk, static_cast<std::streamsize>(n));
+    for (std::size_t n; (n = std::fread(chunk, 1, sizeof chunk, spool_.get())) > 0;)
+      results_.write(chunk, static_cast<std::streamsize>(n));
   }
   if (!spooled_ || s_.invalid == 0) results_ << (s_.lines == 0 ? "],\n" : "\n  ],\n");
   const std::string said = std::to_string(s_.correct) + " of " + std::to_string(s_.lines) + " answers correct";
@@ -544,8 +572,9 @@ BatchSummary BatchWriter::finish() {
         format_errors_.push_back("and " + std::to_string(s_.invalid - format_errors_.size()) + " more");
       totals["format_errors"] = format_errors_;
     }
-    totals["message"] = s_.invalid == 0 ? said : std::to_string(s_.invalid) + " of " + std::to_string(s_.lines) +
-                                                    " answers cannot be graded as typed: fix them and submit again";
+    totals["message"] = s_.invalid == 0 ? said
+                                        : std::to_string(s_.invalid) + " of " + std::to_string(s_.lines) +
+                                              " answers cannot be graded as typed: fix them and submit again";
   }
   // The totals' fields, indented as the rest, after the tests.
   std::size_t k = 0;

@@ -26,19 +26,20 @@ enum class ResultsFormat { gradescope, prairielearn, jsonl };
 
 /// One line of a batch once it is graded, as a gradebook takes it.
 struct GradedLine {
-  std::size_t line = 0;                // its line number in the batch (blank lines counted)
-  bool object = false;                 // whether it was a JSON object at all
-  std::optional<std::string> student;  // `student` as written (a number as its JSON); none when absent or not a string or number
-  std::optional<std::string> id;       // `id` as written; none when absent
+  std::size_t line = 0;  // its line number in the batch (blank lines counted)
+  bool object = false;   // whether it was a JSON object at all
+  std::optional<std::string>
+      student;  // `student` as written (a number as its JSON); none when absent or not a string or number
+  std::optional<std::string> id;  // `id` as written; none when absent
   double points = 0, max_points = 0;
   Verdict verdict = Verdict::invalid;
 };
 
 struct GradeOptions {
   ResultsFormat format = ResultsFormat::gradescope;
-  double points = 1;                          // each line's points, unless its unknown has its own
-  std::map<std::string, double> points_for;   // by unknown
-  bool top_level_score = false;               // gradescope: also a top-level score (the sum)
+  double points = 1;                         // each line's points, unless its unknown has its own
+  std::map<std::string, double> points_for;  // by unknown
+  bool top_level_score = false;              // gradescope: also a top-level score (the sum)
   // Values for every line (`--set F=120`), in each parameter's stated unit; a line's own
   // `params` object adds to them.
   std::vector<std::pair<std::string, std::string>> set;
@@ -87,8 +88,8 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
 [[nodiscard]] std::string json_number(double v);
 /// One test of a platform's results file (Gradescope: score, max_score, status, output;
 /// PrairieLearn: points, max_points, message), on one line.
-[[nodiscard]] std::string platform_test(ResultsFormat format, const std::string& name, double score, double max, bool passed,
-                                        const std::string& output);
+[[nodiscard]] std::string platform_test(ResultsFormat format, const std::string& name, double score, double max,
+                                        bool passed, const std::string& output);
 /// One result as one line of JSON, as a batch writes it (no newline).
 [[nodiscard]] std::string result_line(const CheckResult& r, const std::string& answer, const std::string& id = {});
 /// One result as a JSON object (the single-answer `--format json` output).

@@ -122,7 +122,8 @@ std::optional<std::pair<std::string, std::string>> number_and_unit(const std::st
   // The rest must look like a unit: letters, digits, / ^ * . - and spaces.
   for (std::size_t j = k; j < t.size(); ++j) {
     const char c = t[j];
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '/' || c == '^' || c == '*' || c == '.' || c == '-' || c == ' '))
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '/' || c == '^' || c == '*' || c == '.' || c == '-' ||
+          c == ' '))
       return std::nullopt;
   }
   return std::make_pair(number, trim(t.substr(k)));
@@ -324,8 +325,15 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   // References: every determined unknown, and the defined quantities of `find`.
   auto add_reference = [&](const std::string& name, const ex& closed_form, std::optional<Dimension> dim) {
     const ex closed = substituted(closed_form, definitions_);
-    Reference ref{name, closed, program(closed), dim, std::nullopt, {}, to_text(closed_form).size(),
-                  {rational_function(closed, lengths_), expanded_size(closed), std::nullopt}, {}};
+    Reference ref{name,
+                  closed,
+                  program(closed),
+                  dim,
+                  std::nullopt,
+                  {},
+                  to_text(closed_form).size(),
+                  {rational_function(closed, lengths_), expanded_size(closed), std::nullopt},
+                  {}};
     if (ref.shape.rational && ref.shape.size <= static_cast<double>(options_.exact_size_budget))
       ref.shape.expanded = closed.expand();
     kinks_of(closed, ref.kinks);
@@ -334,8 +342,10 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
     bool ok = true;
     for (std::size_t k = 0; k < points_.size() && ok; ++k) {
       auto v = ref.program(points_[k]);
-      if (v) ref.at_points.push_back(*v);
-      else ok = false;
+      if (v)
+        ref.at_points.push_back(*v);
+      else
+        ok = false;
     }
     if (ok) references_.emplace(name, std::move(ref));
   };
@@ -346,7 +356,8 @@ Checker::Checker(const Analysis& analysis, CheckOptions options) : options_(opti
   for (const auto& w : m.wanted) {
     if (!w.defined) continue;
     const ex general = substituted(w.expr, analysis.solution.general);
-    if (std::none_of(analysis.solution.free.begin(), analysis.solution.free.end(), [&](const ex& f) { return general.has(f); }))
+    if (std::none_of(analysis.solution.free.begin(), analysis.solution.free.end(),
+                     [&](const ex& f) { return general.has(f); }))
       add_reference(w.name, simplest(general), w.dimension);
   }
   equations_ = std::make_shared<const EquationChecker>(analysis, options_);
@@ -378,7 +389,8 @@ CheckResult guarded(const std::string& unknown, bool equation, const std::functi
     r.unknown = unknown;
     r.equation = equation;
     return r.conclude(Verdict::undecided, "internal",
-                      std::string("tackle failed while checking this (an internal error: ") + e.what() + "), so it is left undecided");
+                      std::string("tackle failed while checking this (an internal error: ") + e.what() +
+                          "), so it is left undecided");
   }
 }
 
@@ -426,8 +438,8 @@ std::string Checker::describe(const ex& parameter) const {
   return "for " + name + " = 0";
 }
 
-std::optional<exmap> Checker::values_for(const std::vector<std::pair<std::string, std::string>>& set, std::string& problem,
-                                         bool* out_of_domain) const {
+std::optional<exmap> Checker::values_for(const std::vector<std::pair<std::string, std::string>>& set,
+                                         std::string& problem, bool* out_of_domain) const {
   if (out_of_domain) *out_of_domain = false;
   exmap values = symbols_->values();
   for (const auto& [name, text] : set) {
@@ -442,14 +454,18 @@ std::optional<exmap> Checker::values_for(const std::vector<std::pair<std::string
     const auto parsed = parse_expression(text, numbers_only(), answer_limits());
     const ex v = parsed.value ? evalf(*parsed.value) : ex(0);
     if (!parsed.value || !is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) {
-      problem = "the value of '" + name + "' is '" + printable(text) + "' (expected a number in " + (s->unit.empty() ? "SI" : s->unit) + ")";
+      problem = "the value of '" + name + "' is '" + printable(text) + "' (expected a number in " +
+                (s->unit.empty() ? "SI" : s->unit) + ")";
       return std::nullopt;
     }
     // A mass, a length, a stiffness... is a positive symbol: every closed form was simplified
     // with that, so a value it does not hold for would be graded against a wrong answer.
     if (s->positive && !ex_to<numeric>(v).is_positive()) {
-      problem = "the value of '" + name + "' is " + printable(trim(text)) + (s->unit.empty() ? "" : " " + s->unit) + ", but '" + name +
-                "' is assumed positive" + (s->dimension && !(*s->dimension == Dimension::none()) ? " (" + with_article(s->dimension->describe()) + ")" : "");
+      problem =
+          "the value of '" + name + "' is " + printable(trim(text)) + (s->unit.empty() ? "" : " " + s->unit) +
+          ", but '" + name + "' is assumed positive" +
+          (s->dimension && !(*s->dimension == Dimension::none()) ? " (" + with_article(s->dimension->describe()) + ")"
+                                                                 : "");
       if (out_of_domain) *out_of_domain = true;
       return std::nullopt;
     }
@@ -457,8 +473,10 @@ std::optional<exmap> Checker::values_for(const std::vector<std::pair<std::string
   }
   for (const auto& s : symbols_->all())
     if (s->definition && !s->geometric) {
-      if (auto v = tackle::value_at(*s->definition, values)) values[s->sym] = *v;
-      else values.erase(s->sym);
+      if (auto v = tackle::value_at(*s->definition, values))
+        values[s->sym] = *v;
+      else
+        values.erase(s->sym);
     }
   return values;
 }
@@ -481,8 +499,10 @@ CheckResult Checker::check_answer(const std::string& unknown, std::string_view a
   if (ref_it == references_.end()) {
     std::string msg = "'" + printable(unknown) + "' is not an unknown tackle can check for this problem";
     const auto known = unknowns();
-    if (auto near = nearest(unknown, known); !near.empty()) msg += " (did you mean '" + near + "'?)";
-    else msg += " (checkable: " + join(known) + ")";
+    if (auto near = nearest(unknown, known); !near.empty())
+      msg += " (did you mean '" + near + "'?)";
+    else
+      msg += " (checkable: " + join(known) + ")";
     return invalid("wrong_unknown", msg);
   }
   const Reference& ref = ref_it->second;
@@ -507,7 +527,8 @@ CheckResult Checker::check_answer(const std::string& unknown, std::string_view a
       if (std::find(problem_unknowns_.begin(), problem_unknowns_.end(), lhs) != problem_unknowns_.end() ||
           references_.count(lhs))
         return invalid("wrong_unknown", "this is an answer for " + lhs + ", but " + unknown + " was asked for");
-      return invalid("not_an_answer", "write '" + unknown + " = ...' or just the expression (found '" + printable(lhs) + " = ')");
+      return invalid("not_an_answer",
+                     "write '" + unknown + " = ...' or just the expression (found '" + printable(lhs) + " = ')");
     }
     offset = i + 1;
     while (offset < text.size() && std::isspace(static_cast<unsigned char>(text[offset]))) ++offset;
@@ -558,22 +579,25 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
   if (unit_text.empty()) {
     // (Zero is zero in every unit: 0 for a force that vanishes needs none.)
     if (!(expected == Dimension::none()) && !value.is_zero())
-      return finish(Verdict::invalid, "no_unit", "give the unit: the answer is " + with_article(expected.describe()) + " (in SI, " +
-                                                     si_unit_name(expected) + ")");
+      return finish(Verdict::invalid, "no_unit",
+                    "give the unit: the answer is " + with_article(expected.describe()) + " (in SI, " +
+                        si_unit_name(expected) + ")");
   } else {
     std::string err;
     int col = 0;
     auto unit = parse_unit(unit_text, err, col);
-    if (!unit) return finish(Verdict::invalid, "unit", err + " (expected a unit such as " + si_unit_name(expected) + ")");
+    if (!unit)
+      return finish(Verdict::invalid, "unit", err + " (expected a unit such as " + si_unit_name(expected) + ")");
     if (!(unit->dimension == expected))
-      return finish(Verdict::incorrect, "dimension", "the unit " + std::string(unit_text) + " is " +
-                                                         with_article(unit->dimension.describe()) + "; " +
-                                                         with_article(expected.describe()) + " was expected");
+      return finish(Verdict::incorrect, "dimension",
+                    "the unit " + std::string(unit_text) + " is " + with_article(unit->dimension.describe()) + "; " +
+                        with_article(expected.describe()) + " was expected");
     const ex si = value * unit->to_si;  // exact for rational factors; degrees go through pi
     value = ex_to<numeric>(is_a<numeric>(si) ? si : evalf(si));
   }
   r.echo_text = std::string(number) + (unit_text.empty() ? "" : " " + std::string(unit_text));
-  if (options_.echo_latex) r.echo_latex = std::string(number) + (unit_text.empty() ? "" : "\\," + unit_latex(unit_text));
+  if (options_.echo_latex)
+    r.echo_latex = std::string(number) + (unit_text.empty() ? "" : "\\," + unit_latex(unit_text));
   // The student's own numbers, when given: the closed form evaluated there (exactly, then
   // to the comparison's precision).
   std::optional<numeric> at_values = ref.value;
@@ -606,7 +630,10 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
   if (ok) {
     r.verdict = Verdict::correct;
     r.score = 1.0;
-    r.summary = "correct " + how + (options_.reveal ? " (the answer is " + decimal_string(expect, 6) + (unit.empty() ? "" : " " + unit) + ")" : "");
+    r.summary =
+        "correct " + how +
+        (options_.reveal ? " (the answer is " + decimal_string(expect, 6) + (unit.empty() ? "" : " " + unit) + ")"
+                         : "");
     return r;
   }
   r.verdict = Verdict::incorrect;
@@ -627,14 +654,20 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
     else
       for (const double f : {2.0, 0.5, 3.0, 1.0 / 3, 4.0, 0.25})
         if (near(std::abs(ratio), f)) {
-          r.findings.push_back({"factor", "off by a factor of " + std::string(f == 2.0 ? "2" : f == 0.5 ? "1/2" : f == 3.0 ? "3" : f == 4.0 ? "4" : f == 0.25 ? "1/4" : "1/3")});
+          r.findings.push_back({"factor", "off by a factor of " + std::string(f == 2.0    ? "2"
+                                                                              : f == 0.5  ? "1/2"
+                                                                              : f == 3.0  ? "3"
+                                                                              : f == 4.0  ? "4"
+                                                                              : f == 0.25 ? "1/4"
+                                                                                          : "1/3")});
           break;
         }
   }
   const std::string got_text = decimal_string(value, 6) + (unit.empty() ? "" : " " + unit);
-  r.findings.push_back({"tolerance", options_.reveal ? "expected " + decimal_string(expect, 6) + (unit.empty() ? "" : " " + unit) + " " +
-                                                           how + "; got " + got_text
-                                                     : "not " + how + " of the correct value (got " + got_text + ")"});
+  r.findings.push_back({"tolerance", options_.reveal
+                                         ? "expected " + decimal_string(expect, 6) + (unit.empty() ? "" : " " + unit) +
+                                               " " + how + "; got " + got_text
+                                         : "not " + how + " of the correct value (got " + got_text + ")"});
   r.summary = r.findings.front().message;
   return r;
 }
@@ -643,7 +676,9 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
                                       std::chrono::steady_clock::time_point start,
                                       const std::function<int(int)>& column) const {
   auto over_budget = [&] { return std::chrono::steady_clock::now() - start > options_.time_budget; };
-  auto finish = [&](Verdict v, std::string code, std::string message) { return r.conclude(v, std::move(code), std::move(message)); };
+  auto finish = [&](Verdict v, std::string code, std::string message) {
+    return r.conclude(v, std::move(code), std::move(message));
+  };
   AnswerNames resolver(answer_names_);
   const ParseResult parsed = parse_expression(text, resolver, options_.limits);
   if (!parsed.value) {
@@ -660,7 +695,8 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
       } else {
         for (const auto& k : known)
           if (lower_without_underscores(k) == lower_without_underscores(bad)) {
-            hint = "unknown name '" + bad + "': did you mean '" + k + "'? (names are case-sensitive; subscripts are written with _)";
+            hint = "unknown name '" + bad + "': did you mean '" + k +
+                   "'? (names are case-sensitive; subscripts are written with _)";
             break;
           }
         if (hint.empty())
@@ -679,7 +715,8 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
     return finish(Verdict::invalid, p.limit ? "too_large" : "syntax", where + p.message);
   }
   const ex answer = *parsed.value;
-  if (is_vector(answer)) return finish(Verdict::invalid, "syntax", "the answer is a vector; a single value was expected");
+  if (is_vector(answer))
+    return finish(Verdict::invalid, "syntax", "the answer is a vector; a single value was expected");
   // What the expression settles is the same however it was typed (2*m*g/4 and m*g/2): kept
   // from an earlier answer when there was one, else settled and kept (a budget run out is
   // not kept: another run may have the time).
@@ -698,8 +735,11 @@ CheckResult Checker::check_expression(const Reference& ref, std::string_view tex
 
 // The answer's expression checked, as far as its spelling does not matter: the echo, the
 // dimension, the values at the fixed points, then a decision (equal there) or a diagnosis.
-CheckResult Checker::settle(const Reference& ref, const ex& answer, CheckResult r, const std::function<bool()>& over_budget) const {
-  auto finish = [&](Verdict v, std::string code, std::string message) { return r.conclude(v, std::move(code), std::move(message)); };
+CheckResult Checker::settle(const Reference& ref, const ex& answer, CheckResult r,
+                            const std::function<bool()>& over_budget) const {
+  auto finish = [&](Verdict v, std::string code, std::string message) {
+    return r.conclude(v, std::move(code), std::move(message));
+  };
   if (options_.echo_latex)
     std::tie(r.echo_text, r.echo_latex) = to_text_and_latex(answer);
   else
@@ -707,10 +747,12 @@ CheckResult Checker::settle(const Reference& ref, const ex& answer, CheckResult 
   // Dimensions, from the parameters' own.
   std::string problem;
   const auto dim = dimension_of(answer, *symbols_, problem);
-  if (!dim && !problem.empty()) return finish(Verdict::incorrect, "dimension", "the answer is dimensionally inconsistent: it " + problem);
+  if (!dim && !problem.empty())
+    return finish(Verdict::incorrect, "dimension", "the answer is dimensionally inconsistent: it " + problem);
   if (dim && ref.dimension && !(*dim == *ref.dimension))
-    return finish(Verdict::incorrect, "dimension",
-                  "this is " + with_article(dim->describe()) + "; " + with_article(ref.dimension->describe()) + " was expected");
+    return finish(
+        Verdict::incorrect, "dimension",
+        "this is " + with_article(dim->describe()) + "; " + with_article(ref.dimension->describe()) + " was expected");
   // Numeric first (cheap, and it settles every wrong answer): the answer at the random points,
   // exactly in rationals where it can be, else in CLN floats to `digits`.
   const Program answer_at = program(answer);
@@ -720,7 +762,8 @@ CheckResult Checker::settle(const Reference& ref, const ex& answer, CheckResult 
     auto v = answer_at(points_[k]);
     if (!v)
       return finish(Verdict::undecided, "evaluation",
-                    "the answer could not be evaluated at the test values (a division by zero, a negative square root, or a number too large to work with?)");
+                    "the answer could not be evaluated at the test values (a division by zero, a negative square root, "
+                    "or a number too large to work with?)");
     values.push_back(*v);
   }
   bool equal = true;

@@ -45,8 +45,8 @@ struct CheckOptions {
   // checks of an unknown, so that no answer can be built to vanish at them; a seed makes them
   // reproducible (tests, `tackle check --seed`), and must never be used to grade.
   std::optional<std::uint64_t> seed;
-  int digits = 40;                             // precision of the numeric comparison (CLN)
-  bool echo_latex = true;                      // echo the answer as read in LaTeX too
+  int digits = 40;         // precision of the numeric comparison (CLN)
+  bool echo_latex = true;  // echo the answer as read in LaTeX too
   // Feedback names the correct value ("expected 35.316 N within 1 %") only when asked: a
   // grader's results go to students, who would see the answer after one try.
   bool reveal = false;
@@ -61,11 +61,12 @@ enum class Verdict { correct, incorrect, invalid, undecided };
 /// One thing found about an answer: a code for machines, a sentence for students.
 /// Codes: unknown_name, syntax, too_large, not_an_answer, wrong_unknown, no_unit, unit,
 /// dimension, sign, factor, other_unknown, swapped, special_case, extra_parameter,
-/// missing_parameter, trig_swapped, term_sign, missing_term, extra_term, value, not_simplified, tolerance,
-/// budget, evaluation, internal (an item that made tackle fail: undecided), time_limit (a worked
-/// solution's step not checked: its time limit was past). Equations
-/// (check/equation.hpp) also: not_an_equation, trivial, not_linear, model, points, missing_force, force_sign, extra_force, missing_inertia, inertia_sign, wrong_mass,
-/// wrong_acceleration, length_sum. Free body diagrams (check/fbd.hpp): missing_force,
+/// missing_parameter, trig_swapped, term_sign, missing_term, extra_term, value, not_simplified,
+/// tolerance, budget, evaluation, internal (an item that made tackle fail: undecided), time_limit
+/// (a worked solution's step not checked: its time limit was past). Equations (check/equation.hpp)
+/// also: not_an_equation, trivial, not_linear, model, points, missing_force, force_sign,
+/// extra_force, missing_inertia, inertia_sign, wrong_mass, wrong_acceleration, length_sum. Free
+/// body diagrams (check/fbd.hpp): missing_force,
 /// force_direction, wrong_point, extra_force, other_body, internal_force.
 struct Finding {
   std::string code;
@@ -77,8 +78,8 @@ struct CheckResult {
   Verdict verdict = Verdict::undecided;
   std::string summary;  // the first thing to tell the student
   std::vector<Finding> findings;
-  std::string method;   // exact, numeric, number (with unit), or empty
-  std::string echo_text;   // the answer as tackle read it
+  std::string method;     // exact, numeric, number (with unit), or empty
+  std::string echo_text;  // the answer as tackle read it
   std::string echo_latex;
   double score = 0.0;
   // An equation checked (check_equation): the derivation's equations it is (up to a non-zero
@@ -103,8 +104,9 @@ struct CheckResult {
 
 /// What checks settled about answers' expressions, remembered by the expression (per unknown;
 /// an equation's by its two sides, under "="): 2*m*g/4 and m*g/2 are one expression once read,
-/// and a class types the same few answers in many spellings. An entry is the result as far as the spelling does not matter (see
-/// Checker::settle) and, once made, the answer's simplest form. Bounded: at `capacity`
+/// and a class types the same few answers in many spellings. An entry is the result as far as
+/// the spelling does not matter (see Checker::settle) and, once made, the answer's simplest form.
+/// Bounded: at `capacity`
 /// entries it starts again empty. Safe from threads.
 class SettledAnswers {
  public:
@@ -117,7 +119,8 @@ class SettledAnswers {
   void keep(const std::string& unknown, const GiNaC::ex& e, const Entry& entry);
   /// The kept simplest form of `e`, made by `make` (and kept, where `e` has an entry) when
   /// there is none.
-  [[nodiscard]] std::string simplest(const std::string& unknown, const GiNaC::ex& e, const std::function<std::string()>& make);
+  [[nodiscard]] std::string simplest(const std::string& unknown, const GiNaC::ex& e,
+                                     const std::function<std::string()>& make);
 
  private:
   using Entries = std::unordered_map<GiNaC::ex, Entry, std::hash<GiNaC::ex>, GiNaC::ex_is_equal>;
@@ -165,8 +168,8 @@ class Checker {
  private:
   // What deciding an equality with an expression needs to know of it.
   struct Shape {
-    bool rational = false;  // a rational function of independent symbols
-    double size = 0;        // an upper bound on its expansion's terms
+    bool rational = false;              // a rational function of independent symbols
+    double size = 0;                    // an upper bound on its expansion's terms
     std::optional<GiNaC::ex> expanded;  // a rational one's expansion, made once
   };
   struct Reference {
@@ -174,15 +177,15 @@ class Checker {
     GiNaC::ex closed_form;
     Program program;  // the closed form, made once
     std::optional<Dimension> dimension;
-    std::optional<GiNaC::numeric> value;     // SI, when every parameter has a value
-    std::vector<GiNaC::numeric> at_points;   // the closed form at each random point
-    std::size_t text_size = 0;               // length of its printed closed form
+    std::optional<GiNaC::numeric> value;    // SI, when every parameter has a value
+    std::vector<GiNaC::numeric> at_points;  // the closed form at each random point
+    std::size_t text_size = 0;              // length of its printed closed form
     Shape shape;
-    std::vector<GiNaC::ex> kinks;            // its abs() and csgn()
+    std::vector<GiNaC::ex> kinks;  // its abs() and csgn()
     // What diagnosing a wrong answer needs of the reference alone, made when first wanted
     // (once per batch, not per answer).
     struct Diagnosis {
-      GiNaC::ex expanded;                           // the closed form expanded
+      GiNaC::ex expanded;                             // the closed form expanded
       std::set<GiNaC::ex, GiNaC::ex_is_less> needed;  // its parameters
       // As c times powers of coprime factors (see Factored in check.cpp), when it is one.
       std::optional<std::pair<GiNaC::numeric, std::map<GiNaC::ex, int, GiNaC::ex_is_less>>> factored;
@@ -251,19 +254,21 @@ class Checker {
   };
 
   CheckResult check_answer(const std::string& unknown, std::string_view answer, const GiNaC::exmap* values) const;
-  CheckResult check_number(const Reference& ref, std::string_view number, std::string_view unit_text,
-                           CheckResult r, const GiNaC::exmap* values) const;
+  CheckResult check_number(const Reference& ref, std::string_view number, std::string_view unit_text, CheckResult r,
+                           const GiNaC::exmap* values) const;
   CheckResult check_expression(const Reference& ref, std::string_view text, CheckResult r,
-                               std::chrono::steady_clock::time_point start, const std::function<int(int)>& column) const;
+                               std::chrono::steady_clock::time_point start,
+                               const std::function<int(int)>& column) const;
   /// What the answer's expression settles whatever its spelling (see SettledAnswers): its
   /// echo, dimension, values, then the decision or the diagnosis.
-  CheckResult settle(const Reference& ref, const GiNaC::ex& answer, CheckResult r, const std::function<bool()>& over_budget) const;
+  CheckResult settle(const Reference& ref, const GiNaC::ex& answer, CheckResult r,
+                     const std::function<bool()>& over_budget) const;
   /// A correct answer typed much longer than its simplest form: a finding (incorrect with
   /// require_simplified).
   void note_simplified(const Reference& ref, const GiNaC::ex& answer, std::string_view text, CheckResult& r) const;
   /// A wrong answer's findings, in terms a student can act on (see Diagnosing in diagnose.cpp).
-  void diagnose(const Reference& ref, const GiNaC::ex& answer, const Program& answer_at, const std::vector<GiNaC::numeric>& values,
-                CheckResult& r) const;
+  void diagnose(const Reference& ref, const GiNaC::ex& answer, const Program& answer_at,
+                const std::vector<GiNaC::numeric>& values, CheckResult& r) const;
   struct Diagnosing;
   // The quotient answer/reference as the values show it: a product of powers of the
   // parameters (c p^e q^f..., exponents up to 4) when it is one, and how many parameters it
@@ -279,18 +284,22 @@ class Checker {
   /// The answer (its definitions put in), which agrees with the reference at every fixed
   /// point, decided: proved or refuted by normal() where GiNaC can, else at fresh points (and
   /// for abs(), on each side of every kink).
-  [[nodiscard]] Decision decide(const Reference& ref, const GiNaC::ex& answer, const std::function<bool()>& over_budget) const;
+  [[nodiscard]] Decision decide(const Reference& ref, const GiNaC::ex& answer,
+                                const std::function<bool()>& over_budget) const;
   /// A correct answer's decision: proved, or agreeing at the points (exactly or not).
   [[nodiscard]] Decision correct_decision(bool proved, bool exact_values) const;
   /// The decision for an answer or a reference with kinks (abs(), csgn(), step()).
-  [[nodiscard]] Decision decide_across_kinks(const Reference& ref, const GiNaC::ex& answer, const std::vector<GiNaC::ex>& kinks,
-                                             FreshPoints& fresh, const std::function<bool()>& over_budget) const;
+  [[nodiscard]] Decision decide_across_kinks(const Reference& ref, const GiNaC::ex& answer,
+                                             const std::vector<GiNaC::ex>& kinks, FreshPoints& fresh,
+                                             const std::function<bool()>& over_budget) const;
   /// Incorrect where a state on a side of the kinks where they differ is found (see decide.cpp).
-  [[nodiscard]] std::optional<Decision> differing_side(const Reference& ref, const GiNaC::ex& answer, const std::vector<GiNaC::ex>& args,
+  [[nodiscard]] std::optional<Decision> differing_side(const Reference& ref, const GiNaC::ex& answer,
+                                                       const std::vector<GiNaC::ex>& args,
                                                        const std::vector<std::size_t>& differing,
                                                        const std::function<bool()>& over_budget) const;
   [[nodiscard]] Agreement compare(const GiNaC::ex& answer, const GiNaC::ex& reference, const Program& reference_at,
-                                  const Shape& shape, FreshPoints& fresh, const std::function<bool()>& over_budget, bool& exact_values) const;
+                                  const Shape& shape, FreshPoints& fresh, const std::function<bool()>& over_budget,
+                                  bool& exact_values) const;
   /// A point near the parameters' values drawn from `rng`, finer than the fixed points.
   [[nodiscard]] Sample draw_point(std::mt19937& rng) const;
   /// `e` made into code for the points, every defined parameter put in (the turning strands'
@@ -314,11 +323,11 @@ class Checker {
 
   CheckOptions options_;
   std::shared_ptr<const SymbolTable> symbols_;
-  std::vector<Parameter> parameters_;       // names an answer may use
+  std::vector<Parameter> parameters_;                           // names an answer may use
   std::map<std::string, GiNaC::ex, std::less<>> answer_names_;  // the same, by name
   std::vector<std::string> problem_unknowns_;
-  GiNaC::exmap definitions_;                // defined parameters, expanded before comparing
-  GiNaC::exmap lengths_;                    // the turning strands' lengths too: for numbers only
+  GiNaC::exmap definitions_;  // defined parameters, expanded before comparing
+  GiNaC::exmap lengths_;      // the turning strands' lengths too: for numbers only
   // The states answers are compared at (algebra/states.hpp): each parameter, and the value
   // points are drawn near (an angle's: its tan(angle/2)); the fixed points.
   States states_;
@@ -338,7 +347,7 @@ class Checker {
   std::vector<Sample> extended_points_;
   std::vector<std::vector<double>> point_doubles_, extended_doubles_;  // the same in doubles
   std::vector<bool> extended_angles_;
-  GiNaC::numeric tolerance_;                // relative, for values that are not exact: 10^-(digits - 8)
+  GiNaC::numeric tolerance_;  // relative, for values that are not exact: 10^-(digits - 8)
   std::map<std::string, Reference, std::less<>> references_;
   std::shared_ptr<const EquationChecker> equations_;
   std::vector<std::string> asked_;

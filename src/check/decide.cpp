@@ -81,8 +81,9 @@ const std::vector<Sample>& Checker::FreshPoints::get() {
   return *points_;
 }
 
-Checker::Agreement Checker::compare(const ex& answer, const ex& reference, const Program& reference_at, const Shape& shape,
-                                    FreshPoints& fresh, const std::function<bool()>& over_budget, bool& exact_values) const {
+Checker::Agreement Checker::compare(const ex& answer, const ex& reference, const Program& reference_at,
+                                    const Shape& shape, FreshPoints& fresh, const std::function<bool()>& over_budget,
+                                    bool& exact_values) const {
   exact_values = false;
   if (answer.is_equal(reference)) return Agreement::proved;  // the closed form as GiNaC writes it
   const double budget = static_cast<double>(options_.exact_size_budget);
@@ -140,12 +141,15 @@ Checker::Decision Checker::correct_decision(bool proved, bool exact_values) cons
   const std::string count = std::to_string(points_.size() + static_cast<std::size_t>(options_.points));
   if (proved) return Decision{Verdict::correct, "exact", "", "equal to the closed form"};
   if (exact_values)
-    return Decision{Verdict::correct, "exact rationals", "", "equal to the closed form (in exact arithmetic at " + count + " random points)"};
-  return Decision{Verdict::correct, "numeric", "", "equal to the closed form at " + count + " random points, to " +
-                                                       std::to_string(options_.digits - 8) + " digits"};
+    return Decision{Verdict::correct, "exact rationals", "",
+                    "equal to the closed form (in exact arithmetic at " + count + " random points)"};
+  return Decision{
+      Verdict::correct, "numeric", "",
+      "equal to the closed form at " + count + " random points, to " + std::to_string(options_.digits - 8) + " digits"};
 }
 
-Checker::Decision Checker::decide(const Reference& ref, const ex& typed, const std::function<bool()>& over_budget) const {
+Checker::Decision Checker::decide(const Reference& ref, const ex& typed,
+                                  const std::function<bool()>& over_budget) const {
   FreshPoints fresh(*this, ref);
   EvenRootsAsAbs as_abs;
   const ex answer = as_abs.rewrite(typed);
@@ -162,7 +166,8 @@ Checker::Decision Checker::decide(const Reference& ref, const ex& typed, const s
     case Agreement::differs: return Decision{Verdict::incorrect, "numeric", "value", only_some_values};
     case Agreement::unevaluable:
       return Decision{Verdict::undecided, "numeric", "evaluation",
-                      "the answer could not be evaluated at the test values (a division by zero, a negative square root, or a number too large to work with?)"};
+                      "the answer could not be evaluated at the test values (a division by zero, a negative square "
+                      "root, or a number too large to work with?)"};
     case Agreement::budget: break;
   }
   return Decision{Verdict::undecided, "", "budget", took_too_long};
@@ -205,13 +210,14 @@ Checker::Decision Checker::decide_across_kinks(const Reference& ref, const ex& a
       const bool negative = (((signs >> arg_of[i].first) & 1) != 0) != arg_of[i].second;
       const ex& arg = kinks[i].op(0);
       const unsigned serial = ex_to<function>(kinks[i]).get_serial();
-      side[kinks[i]] = serial == abs_SERIAL::serial ? (negative ? -arg : arg)
+      side[kinks[i]] = serial == abs_SERIAL::serial    ? (negative ? -arg : arg)
                        : serial == csgn_SERIAL::serial ? ex(negative ? -1 : 1)
                                                        : ex(negative ? 0 : 1);
     }
     const ex a = answer.subs(side), b = ref.closed_form.subs(side);
     bool exact_values = false;
-    switch (compare(a, b, program(b), Shape{rational_function(b, lengths_), expanded_size(b), std::nullopt}, fresh, over_budget, exact_values)) {
+    switch (compare(a, b, program(b), Shape{rational_function(b, lengths_), expanded_size(b), std::nullopt}, fresh,
+                    over_budget, exact_values)) {
       case Agreement::proved: break;
       case Agreement::agrees:
         all_proved = false;
@@ -235,7 +241,8 @@ Checker::Decision Checker::decide_across_kinks(const Reference& ref, const ex& a
 // signs of the arguments there), looked for along each parameter of the kinks' arguments from
 // each fixed point: values from 2^-64 to 3 * 2^63 times the point's, so both sides of a kink
 // within them are met. Found: incorrect; the budget run out: undecided; else nothing.
-std::optional<Checker::Decision> Checker::differing_side(const Reference& ref, const ex& answer, const std::vector<ex>& args,
+std::optional<Checker::Decision> Checker::differing_side(const Reference& ref, const ex& answer,
+                                                         const std::vector<ex>& args,
                                                          const std::vector<std::size_t>& differing,
                                                          const std::function<bool()>& over_budget) const {
   std::vector<Program> args_at;
@@ -260,7 +267,8 @@ std::optional<Checker::Decision> Checker::differing_side(const Reference& ref, c
             clear = v && !v->is_zero();
             if (clear && v->is_negative()) signs |= std::size_t{1} << k;
           }
-          if (!clear || std::find(differing.begin(), differing.end(), signs) == differing.end() || !allowed(p)) continue;
+          if (!clear || std::find(differing.begin(), differing.end(), signs) == differing.end() || !allowed(p))
+            continue;
           const auto a = answer_at(p), b = ref.program(p);
           if (a && b && !same(*a, *b)) return Decision{Verdict::incorrect, "numeric", "value", only_some_values};
         }

@@ -31,7 +31,8 @@ std::string factor_words(const numeric& c) {
 // A float as the simple fraction it is within 10^-9 (a denominator up to 12), if it is one.
 std::optional<numeric> simple_fraction(const numeric& c) {
   if (c.is_rational()) return c;
-  if (!c.is_real() || std::abs(c.to_double()) >= 1e12) return std::nullopt;  // (a larger one does not fit a long: fuzzing)
+  if (!c.is_real() || std::abs(c.to_double()) >= 1e12)
+    return std::nullopt;  // (a larger one does not fit a long: fuzzing)
   const double x = c.to_double();
   for (int den = 1; den <= 12; ++den)
     if (std::abs(x * den - std::round(x * den)) < 1e-9 * std::max(1.0, std::abs(x * den)))
@@ -126,7 +127,8 @@ struct SinCosSwapped : map_function {
 std::vector<double> doubles_from(const Sample& changed, const Sample& from, const std::vector<double>& from_doubles) {
   std::vector<double> out = from_doubles;
   for (std::size_t i = 0; i < changed.size() && i < out.size(); ++i)
-    if (!changed[i].second.is_equal(from[i].second)) out[i] = changed[i].second.is_real() ? changed[i].second.to_double() : std::nan("");
+    if (!changed[i].second.is_equal(from[i].second))
+      out[i] = changed[i].second.is_real() ? changed[i].second.to_double() : std::nan("");
   return out;
 }
 
@@ -189,11 +191,13 @@ const Checker::Reference::Diagnosis& Checker::diagnosis(const Reference& ref) co
         if (!(a.dimension == b.dimension) || !ref.closed_form.has(a.symbol) || !ref.closed_form.has(b.symbol)) continue;
         // (An angle's input is its half-angle's tangent: equal to another's value it is not the same.)
         const auto angle = [&](const ex& x) {
-          return std::any_of(states_.inputs().begin(), states_.inputs().end(), [&](const StateInput& in) { return in.angle && in.symbol.is_equal(x); });
+          return std::any_of(states_.inputs().begin(), states_.inputs().end(),
+                             [&](const StateInput& in) { return in.angle && in.symbol.is_equal(x); });
         };
         if (angle(a.symbol) || angle(b.symbol)) continue;
         d.equalled[{i, j}] = at_points(ref.program, [&](Sample& pt) {
-          if (const auto x = value_of(pt, a.symbol); x && value_of(pt, b.symbol)) set(pt, b.symbol, [&](const Sample&) { return *x; });
+          if (const auto x = value_of(pt, a.symbol); x && value_of(pt, b.symbol))
+            set(pt, b.symbol, [&](const Sample&) { return *x; });
         });
       }
   });
@@ -209,8 +213,9 @@ std::optional<Checker::QuotientShape> Checker::quotient_shape(const Reference& r
   if (values.empty() || ref.at_points.empty() || ref.at_points[0].is_zero() || values[0].is_zero() ||
       diag.doubled.size() != points_[0].size())
     return std::nullopt;
-  static const std::vector<std::pair<int, numeric>> powers_of_two{{1, 2}, {-1, numeric(1, 2)}, {2, 4}, {-2, numeric(1, 4)},
-                                                                  {3, 8}, {-3, numeric(1, 8)}, {4, 16}, {-4, numeric(1, 16)}};
+  static const std::vector<std::pair<int, numeric>> powers_of_two{
+      {1, 2}, {-1, numeric(1, 2)}, {2, 4},  {-2, numeric(1, 4)},
+      {3, 8}, {-3, numeric(1, 8)}, {4, 16}, {-4, numeric(1, 16)}};
   const Sample& p0 = points_[0];
   const numeric q0 = values[0] / ref.at_points[0];
   QuotientShape shape;
@@ -281,15 +286,20 @@ struct Checker::Diagnosing {
   const Program& answer_at;            // the answer over the points
   const std::vector<numeric>& values;  // the answer at the fixed points
   CheckResult& r;
-  std::size_t n = 0;                   // the points with both values
+  std::size_t n = 0;  // the points with both values
   const Reference::Diagnosis* diag = nullptr;
-  ex expanded;                         // the answer with the definitions put in
+  ex expanded;  // the answer with the definitions put in
   std::set<ex, ex_is_less> typed_symbols, used;
-  std::vector<ex> params;              // the parameters' symbols, in the problem's order
+  std::vector<ex> params;  // the parameters' symbols, in the problem's order
 
   Diagnosing(const Checker& checker, const Reference& reference, const ex& typed, const Program& typed_at,
              const std::vector<numeric>& at_points, CheckResult& result)
-      : c(checker), ref(reference), answer(typed), answer_at(typed_at), values(at_points), r(result),
+      : c(checker),
+        ref(reference),
+        answer(typed),
+        answer_at(typed_at),
+        values(at_points),
+        r(result),
         n(std::min(at_points.size(), reference.at_points.size())) {}
   void found(std::string code, std::string message) { r.findings.push_back({std::move(code), std::move(message)}); }
   bool found_any(std::initializer_list<const char*> codes) const {
@@ -299,7 +309,8 @@ struct Checker::Diagnosing {
   }
   bool constant_ratio();
   void prepare();
-  bool matches_at(const std::function<void(Sample&)>& change, const std::vector<std::optional<numeric>>& reference) const;
+  bool matches_at(const std::function<void(Sample&)>& change,
+                  const std::vector<std::optional<numeric>>& reference) const;
   bool equals_at_points(const std::vector<std::optional<numeric>>& other) const;
   void other_unknown();
   void trig_swapped();
@@ -324,7 +335,8 @@ numeric* value_in(Sample& p, const ex& s) {
 
 }  // namespace
 
-void Checker::diagnose(const Reference& ref, const ex& answer, const Program& answer_at, const std::vector<numeric>& values, CheckResult& r) const {
+void Checker::diagnose(const Reference& ref, const ex& answer, const Program& answer_at,
+                       const std::vector<numeric>& values, CheckResult& r) const {
   Diagnosing d(*this, ref, answer, answer_at, values, r);
   // The sign or a constant factor says it all; else, most specific first: another unknown's
   // value, sin for cos, swapped parameters, special cases, one term, then the factor in the
@@ -350,8 +362,10 @@ bool Checker::Diagnosing::constant_ratio() {
   for (std::size_t k = 0; k < n && constant; ++k) {
     if (ref.at_points[k].is_zero()) return false;
     const numeric q = values[k] / ref.at_points[k];
-    if (!ratio) ratio = q;
-    else constant = c.same(q, *ratio);
+    if (!ratio)
+      ratio = q;
+    else
+      constant = c.same(q, *ratio);
   }
   if (!constant || !ratio) return false;
   // Exact when the values are; else the ratio rounded to a simple fraction.
@@ -364,12 +378,15 @@ bool Checker::Diagnosing::constant_ratio() {
     for (int den = 1; den <= 12; ++den)
       if (std::abs(x2 * den - std::round(x2 * den)) < 1e-9 * std::max(1.0, x2 * den)) {
         const ex root = (k.is_positive() ? 1 : -1) * sqrt(ex(numeric(static_cast<long>(std::round(x2 * den)), den)));
-        found("factor", "off by a factor of " + to_text(root) + " (the answer is " + to_text(root) + " times the correct answer)");
+        found("factor", "off by a factor of " + to_text(root) + " (the answer is " + to_text(root) +
+                            " times the correct answer)");
         return true;
       }
   }
-  if (k == -1) found("sign", "the sign is wrong");
-  else found("factor", "off by a factor of " + to_text(k) + " (the answer is " + factor_words(k) + ")");
+  if (k == -1)
+    found("sign", "the sign is wrong");
+  else
+    found("factor", "off by a factor of " + to_text(k) + " (the answer is " + factor_words(k) + ")");
   return true;
 }
 
@@ -388,11 +405,12 @@ void Checker::Diagnosing::prepare() {
 // (at the same points changed as the diagnosis says)? Swapping two parameters or setting one
 // to zero changes the point, not the expression.
 bool Checker::Diagnosing::matches_at(const std::function<void(Sample&)>& change,
-                                      const std::vector<std::optional<numeric>>& reference) const {
+                                     const std::vector<std::optional<numeric>>& reference) const {
   if (!c.points_.empty() && !reference.empty() && reference[0]) {  // most fail here, in doubles
     Sample first = c.points_[0];
     change(first);
-    if (!maybe_same(answer_at.approx(doubles_from(first, c.points_[0], c.point_doubles_[0])), *reference[0])) return false;
+    if (!maybe_same(answer_at.approx(doubles_from(first, c.points_[0], c.point_doubles_[0])), *reference[0]))
+      return false;
   }
   for (std::size_t k = 0; k < c.points_.size(); ++k) {
     Sample pa = c.points_[k];
@@ -507,7 +525,8 @@ void Checker::Diagnosing::swapped_parameters() {
 
 // A defined parameter's value is in the extended points: swapped there, in the answer as typed
 // (the same as substituting the swap, then the definitions).
-bool Checker::Diagnosing::swapped_in_extended_points(std::size_t i, std::size_t j, std::optional<Program>& raw_at) const {
+bool Checker::Diagnosing::swapped_in_extended_points(std::size_t i, std::size_t j,
+                                                     std::optional<Program>& raw_at) const {
   if (!raw_at) raw_at.emplace(answer, c.extended_points_.front(), c.lengths_, c.extended_angles_);
   const Sample& first = c.extended_points_.front();
   const auto in = [&](const ex& x) {
@@ -550,7 +569,8 @@ void Checker::Diagnosing::special_cases() {
   for (std::size_t i = 0; i < params.size(); ++i) {
     const auto zeroed = diag->zeroed.find(i);
     if (zeroed == diag->zeroed.end() || used.count(params[i])) continue;
-    if (matches_at([](Sample&) {}, zeroed->second)) found("special_case", "this is correct only " + c.describe(params[i]));
+    if (matches_at([](Sample&) {}, zeroed->second))
+      found("special_case", "this is correct only " + c.describe(params[i]));
   }
   for (const auto& [pair, reference] : diag->equalled) {
     const std::size_t i = pair.first, j = pair.second;  // (clang 14: a lambda cannot capture a structured binding)
@@ -569,7 +589,8 @@ void Checker::Diagnosing::special_cases() {
 void Checker::Diagnosing::terms() {
   for (std::size_t i = 0; i < diag->term_turned.size(); ++i) {
     if (equals_at_points(diag->term_turned[i])) return found("term_sign", "the sign of one term is wrong");
-    if (equals_at_points(diag->term_left_out[i])) return found("missing_term", "one term of the correct answer is missing");
+    if (equals_at_points(diag->term_left_out[i]))
+      return found("missing_term", "one term of the correct answer is missing");
   }
 }
 
@@ -594,8 +615,10 @@ void Checker::Diagnosing::parameters_used() {
     if (names.size() == 1) return names[0];
     return join(std::vector<std::string>(names.begin(), names.end() - 1)) + " and " + names.back();
   };
-  if (!extra.empty()) found("extra_parameter", "the answer depends on " + words(extra) + ", which the correct answer does not");
-  if (!missing.empty()) found("missing_parameter", "the correct answer depends on " + words(missing) + ", and this one does not");
+  if (!extra.empty())
+    found("extra_parameter", "the answer depends on " + words(extra) + ", which the correct answer does not");
+  if (!missing.empty())
+    found("missing_parameter", "the correct answer depends on " + words(missing) + ", and this one does not");
 }
 
 }  // namespace tackle

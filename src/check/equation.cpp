@@ -29,7 +29,8 @@ constexpr std::size_t fixed_points = 2;
 // the problem has no such name: a symbol of its own, made once per name.
 class WithConstants : public NameResolver {
  public:
-  WithConstants(const NameResolver& base, const std::map<std::string, ex, std::less<>>& defined) : base_(base), defined_(defined) {}
+  WithConstants(const NameResolver& base, const std::map<std::string, ex, std::less<>>& defined)
+      : base_(base), defined_(defined) {}
   std::optional<ex> resolve(std::string_view name) const override {
     if (auto e = base_.resolve(name)) return e;
     if (const auto d = defined_.find(name); d != defined_.end()) return d->second;
@@ -39,7 +40,8 @@ class WithConstants : public NameResolver {
     for (const auto& [n, s] : made_)
       if (n == name) return s;
     // Written upright in LaTeX when it is the word const.
-    made_.emplace_back(std::string(name), name == "const" ? symbol("const", "\\mathrm{const}") : symbol(std::string(name)));
+    made_.emplace_back(std::string(name),
+                       name == "const" ? symbol("const", "\\mathrm{const}") : symbol(std::string(name)));
     return made_.back().second;
   }
   std::vector<std::string> known_names() const override {
@@ -77,16 +79,15 @@ std::string force_phrase(const std::string& source) {
   return "the force of the " + source;
 }
 
-
-
 namespace {
 
 using Rows = std::vector<Row>;
 
 // The unknowns of a level: the symbols of these roles that its equations hold, and `more`
 // (those the balances fix, a massless joint's coordinate), in the table's order.
-std::vector<ex> unknowns_of(const SymbolTable& table, const std::vector<Equation>& equations, const std::vector<SymbolRole>& roles,
-                            const std::vector<ex>& more, const std::vector<ex>& given) {
+std::vector<ex> unknowns_of(const SymbolTable& table, const std::vector<Equation>& equations,
+                            const std::vector<SymbolRole>& roles, const std::vector<ex>& more,
+                            const std::vector<ex>& given) {
   std::set<ex, ex_is_less> present;
   for (const auto& e : equations)
     for (const ex& s : symbols_in(e.lhs - e.rhs)) present.insert(s);
@@ -106,7 +107,8 @@ void add_new(std::vector<Equation>& to, const std::vector<Equation>& from) {
 
 // A constraint's constant quantity as an equation in the positions (the length sum 3 x_B - 2 x_A).
 Equation position_equation(const ConstraintSteps& c) {
-  const bool named = c.meaning.size() >= c.label.size() && c.meaning.compare(c.meaning.size() - c.label.size(), c.label.size(), c.label) == 0;
+  const bool named = c.meaning.size() >= c.label.size() &&
+                     c.meaning.compare(c.meaning.size() - c.label.size(), c.label.size(), c.label) == 0;
   Equation e;
   e.kind = Equation::Kind::constraint_position;
   e.label = named ? c.meaning : c.label + ": " + c.meaning;
@@ -132,7 +134,8 @@ std::optional<EquationSystem> complete_set(const Model& m) {
   }
 }
 
-Family family_of(const std::vector<const Equation*>& equations, std::vector<ex> unknowns, const exmap& definitions, bool free_constants) {
+Family family_of(const std::vector<const Equation*>& equations, std::vector<ex> unknowns, const exmap& definitions,
+                 bool free_constants) {
   Family f;
   for (const Equation* e : equations) {
     f.labels.push_back(e->label);
@@ -159,7 +162,8 @@ StateInput state_input(const SymbolInfo& s, const exmap& layout, bool angle) {
 
 // Whether x a + y b is a multiple of v at every point v has values at (made point by point:
 // most candidates of a diagnosis fail at the first).
-bool combined_matches(const Truth& truth, const Rows& a, const numeric& x, const Rows& b, const numeric& y, const Rows& v) {
+bool combined_matches(const Truth& truth, const Rows& a, const numeric& x, const Rows& b, const numeric& y,
+                      const Rows& v) {
   for (std::size_t k = 0; k < v.size(); ++k) {
     if (k >= a.size() || k >= b.size()) return false;
     Row c(a[k].size());
@@ -198,7 +202,8 @@ void EquationChecker::build_levels(const Analysis& analysis) {
     add_new(equations_, complete->equations);
     add_new(rate_equations_, complete->rate_equations);
     for (const auto& c : complete->constraints)
-      if (std::none_of(constraints.begin(), constraints.end(), [&](const ConstraintSteps& x) { return x.label == c.label; }))
+      if (std::none_of(constraints.begin(), constraints.end(),
+                       [&](const ConstraintSteps& x) { return x.label == c.label; }))
         constraints.push_back(c);
   }
   for (const auto& c : constraints) {
@@ -249,8 +254,10 @@ void EquationChecker::prepare() const {
     // A level decides with its equations (none past the bound: its checks are undecided).
     auto make = [&](Level& level, std::size_t count, bool free_constants) {
       if (level.equations.size() > max_family) return;
-      const std::vector<const Equation*> used(level.equations.begin(), level.equations.begin() + static_cast<std::ptrdiff_t>(count));
-      level.truth.emplace(family_of(used, level.unknowns, plain, free_constants), states, points, fixed_points, definitions_, tolerance);
+      const std::vector<const Equation*> used(level.equations.begin(),
+                                              level.equations.begin() + static_cast<std::ptrdiff_t>(count));
+      level.truth.emplace(family_of(used, level.unknowns, plain, free_constants), states, points, fixed_points,
+                          definitions_, tolerance);
       if (count < level.equations.size()) level.equations = used;
     };
     // Rates: the constraints' in rates, solved at each point, so that the states are motions
@@ -311,7 +318,8 @@ std::optional<std::string> dimension_problem(const ex (&side)[2], const SymbolTa
   }
   const bool zero_side = side[0].is_zero() || side[1].is_zero();
   if (dim[0] && dim[1] && !(*dim[0] == *dim[1]) && !zero_side)
-    return "the left side is " + with_article(dim[0]->describe()) + " and the right side " + with_article(dim[1]->describe());
+    return "the left side is " + with_article(dim[0]->describe()) + " and the right side " +
+           with_article(dim[1]->describe());
   return std::nullopt;
 }
 
@@ -325,37 +333,46 @@ CheckResult EquationChecker::check(std::string_view text) const {
   prepare();
   CheckResult r;
   r.equation = true;
-  auto finish = [&](Verdict v, std::string code, std::string message) { return r.conclude(v, std::move(code), std::move(message)); };
+  auto finish = [&](Verdict v, std::string code, std::string message) {
+    return r.conclude(v, std::move(code), std::move(message));
+  };
   if (text.size() > options_.limits.max_length)
-    return finish(Verdict::invalid, "too_large", "the equation is too long (" + std::to_string(text.size()) +
-                                                     " characters; at most " + std::to_string(options_.limits.max_length) + ")");
+    return finish(Verdict::invalid, "too_large",
+                  "the equation is too long (" + std::to_string(text.size()) + " characters; at most " +
+                      std::to_string(options_.limits.max_length) + ")");
   if (const auto bad = invalid_utf8_at(text))
-    return finish(Verdict::invalid, "syntax", "at column " + std::to_string(*bad + 1) + ": the equation is not valid UTF-8 text");
+    return finish(Verdict::invalid, "syntax",
+                  "at column " + std::to_string(*bad + 1) + ": the equation is not valid UTF-8 text");
   // One '=' at the top: "lhs = rhs".
   std::vector<std::size_t> equals;
   for (std::size_t i = 0; i < text.size(); ++i)
     if (text[i] == '=') equals.push_back(i);
   const bool relation = std::any_of(equals.begin(), equals.end(), [&](std::size_t i) {
-    return (i > 0 && (text[i - 1] == '<' || text[i - 1] == '>' || text[i - 1] == '!')) || (i + 1 < text.size() && text[i + 1] == '=');
+    return (i > 0 && (text[i - 1] == '<' || text[i - 1] == '>' || text[i - 1] == '!')) ||
+           (i + 1 < text.size() && text[i + 1] == '=');
   });
   if (equals.size() != 1 || relation)
     return finish(Verdict::invalid, "not_an_equation",
-                  equals.empty() ? "this is not an equation (expected one '=' between two sides, e.g. 2*T - F = m_A*ddot(x_A))"
-                                 : "write one '=' between the two sides (found " + std::to_string(equals.size()) + ")");
+                  equals.empty()
+                      ? "this is not an equation (expected one '=' between two sides, e.g. 2*T - F = m_A*ddot(x_A))"
+                      : "write one '=' between the two sides (found " + std::to_string(equals.size()) + ")");
   const std::size_t eq = equals.front();
   const std::string_view sides[2] = {text.substr(0, eq), text.substr(eq + 1)};
   ex side[2];
   const WithConstants names(*symbols_, defined_names_);
   for (int k = 0; k < 2; ++k) {
     if (sides[k].find_first_not_of(" \t") == std::string_view::npos)
-      return finish(Verdict::invalid, "not_an_equation", std::string(k == 0 ? "the left" : "the right") + " side is empty");
+      return finish(Verdict::invalid, "not_an_equation",
+                    std::string(k == 0 ? "the left" : "the right") + " side is empty");
     const ParseResult parsed = parse_expression(sides[k], names, options_.limits);
     if (!parsed.value) {
       const ParseProblem& p = parsed.problems.front();
-        return finish(Verdict::invalid, p.limit ? "too_large" : "syntax",
-                    "at column " + std::to_string(p.column + 1 + (k == 0 ? 0 : static_cast<int>(eq) + 1)) + ": " + p.message);
+      return finish(
+          Verdict::invalid, p.limit ? "too_large" : "syntax",
+          "at column " + std::to_string(p.column + 1 + (k == 0 ? 0 : static_cast<int>(eq) + 1)) + ": " + p.message);
     }
-    if (is_vector(*parsed.value)) return finish(Verdict::invalid, "syntax", "a side is a vector; write one component at a time");
+    if (is_vector(*parsed.value))
+      return finish(Verdict::invalid, "syntax", "a side is a vector; write one component at a time");
     side[k] = *parsed.value;
   }
   // What the two sides settle is the same however they were typed (see SettledAnswers).
@@ -369,16 +386,21 @@ CheckResult EquationChecker::check(std::string_view text) const {
 // The equation's two sides checked: its echo, its size, which level it is at, its dimensions,
 // then the verdict there. `constants`: the names read as a length sum's constants.
 CheckResult EquationChecker::settle(const ex (&side)[2], const std::vector<ex>& constants, CheckResult r) const {
-  auto finish = [&](Verdict v, std::string code, std::string message) { return r.conclude(v, std::move(code), std::move(message)); };
+  auto finish = [&](Verdict v, std::string code, std::string message) {
+    return r.conclude(v, std::move(code), std::move(message));
+  };
   r.echo_text = to_text(side[0]) + " = " + to_text(side[1]);
   if (options_.echo_latex) r.echo_latex = to_latex(side[0]) + " = " + to_latex(side[1]);
   const ex unexpanded = substituted(substituted(side[0] - side[1], defined_), symbols_->definitions());
   if (expanded_size(unexpanded) > static_cast<double>(options_.exact_size_budget))
-    return finish(Verdict::undecided, "too_large", "the equation expands into too many terms to be checked (at most " +
-                                                       std::to_string(options_.exact_size_budget) + ")");
+    return finish(Verdict::undecided, "too_large",
+                  "the equation expands into too many terms to be checked (at most " +
+                      std::to_string(options_.exact_size_budget) + ")");
   const ex residual = unexpanded.expand();
   if (residual.is_zero())
-    return finish(Verdict::incorrect, "trivial", "the equation holds whatever the forces and the motion are (it reads 0 = 0 once simplified): it says nothing about this problem");
+    return finish(Verdict::incorrect, "trivial",
+                  "the equation holds whatever the forces and the motion are (it reads 0 = 0 once simplified): it says "
+                  "nothing about this problem");
   // Which level: the rates' equations when it has rates and no accelerations or forces; the
   // length sums' when it has neither, only coordinates (and a constant).
   const bool has_acceleration = has_any(residual, acceleration_.unknowns);
@@ -386,10 +408,14 @@ CheckResult EquationChecker::settle(const ex (&side)[2], const std::vector<ex>& 
   const bool has_coordinate = has_any(residual, position_.unknowns);
   const bool position = has_coordinate && !has_acceleration && !has_rate && !position_.equations.empty();
   if (!constants.empty() && !position)
-    return finish(Verdict::invalid, "syntax", "'" + to_text(constants.front()) +
-                                                  "' is not a name of this problem: a constant is for a length sum, an equation in the positions alone");
-  const ex compared[2] = {position ? without_constants(side[0], constants) : side[0], position ? without_constants(side[1], constants) : side[1]};
-  if (const auto problem = dimension_problem(compared, *symbols_)) return finish(Verdict::incorrect, "dimension", *problem);
+    return finish(
+        Verdict::invalid, "syntax",
+        "'" + to_text(constants.front()) +
+            "' is not a name of this problem: a constant is for a length sum, an equation in the positions alone");
+  const ex compared[2] = {position ? without_constants(side[0], constants) : side[0],
+                          position ? without_constants(side[1], constants) : side[1]};
+  if (const auto problem = dimension_problem(compared, *symbols_))
+    return finish(Verdict::incorrect, "dimension", *problem);
   if (position) return position_verdict(position_, residual, r);
   return decide(has_rate && !has_acceleration ? rate_ : acceleration_, residual, r);
 }
@@ -403,12 +429,14 @@ std::optional<Rows> EquationChecker::values_of(const Level& level, const ex& e, 
 namespace {
 
 bool all_zero(const Rows& rows) {
-  return std::all_of(rows.begin(), rows.end(),
-                     [](const Row& r) { return std::all_of(r.begin(), r.end(), [](const numeric& x) { return x.is_zero(); }); });
+  return std::all_of(rows.begin(), rows.end(), [](const Row& r) {
+    return std::all_of(r.begin(), r.end(), [](const numeric& x) { return x.is_zero(); });
+  });
 }
 
 const char* const trivial_message =
-    "the equation holds whatever the forces and the motion are (it reads 0 = 0 once simplified): it says nothing about this problem";
+    "the equation holds whatever the forces and the motion are (it reads 0 = 0 once simplified): it says nothing about "
+    "this problem";
 
 }  // namespace
 
@@ -422,16 +450,20 @@ CheckResult EquationChecker::decide_linear(const Level& level, const std::vector
       r.method = d.exact ? "exact rationals" : "numeric";
       return incorrect(level, *values, r);
     }
-    if (const auto more = truth.values(parts, false, values->size())) values->insert(values->end(), more->begin(), more->end());
-    else values.reset();
+    if (const auto more = truth.values(parts, false, values->size()))
+      values->insert(values->end(), more->begin(), more->end());
+    else
+      values.reset();
   }
   if (!values)
     return r.conclude(Verdict::undecided, "evaluation",
-                      "the equation could not be evaluated at the test values (a division by zero, a negative square root, or a number too large to work with?)");
+                      "the equation could not be evaluated at the test values (a division by zero, a negative square "
+                      "root, or a number too large to work with?)");
   const Truth::Decision d = truth.holds(*values);
   r.method = d.exact ? "exact rationals" : "numeric";
   if (d.answer == Truth::Answer::fails) return incorrect(level, *values, r);
-  if (d.answer == Truth::Answer::unknown) return r.conclude(Verdict::undecided, "points", "there are no random points to decide the equation at");
+  if (d.answer == Truth::Answer::unknown)
+    return r.conclude(Verdict::undecided, "points", "there are no random points to decide the equation at");
   if (all_zero(*values)) return r.conclude(Verdict::incorrect, "trivial", trivial_message);
   r.verdict = Verdict::correct;
   r.score = 1.0;
@@ -451,11 +483,13 @@ CheckResult EquationChecker::incorrect(const Level& level, const Rows& values, C
 
 CheckResult EquationChecker::decide(const Level& level, const ex& residual, CheckResult r) const {
   if (level.equations.size() > max_family)
-    return r.conclude(Verdict::undecided, "too_large", "this problem has too many equations to decide a combination of them (" +
-                                                           std::to_string(level.equations.size()) + ")");
+    return r.conclude(Verdict::undecided, "too_large",
+                      "this problem has too many equations to decide a combination of them (" +
+                          std::to_string(level.equations.size()) + ")");
   if (!level.truth || !level.truth->usable())
-    return r.conclude(Verdict::undecided, "model", "tackle cannot decide an equation for this problem: its " + level.name +
-                                                       " are not linear in the unknowns, or contradict each other");
+    return r.conclude(Verdict::undecided, "model",
+                      "tackle cannot decide an equation for this problem: its " + level.name +
+                          " are not linear in the unknowns, or contradict each other");
   if (const auto parts = linear_parts(residual, level.unknowns)) return decide_linear(level, *parts, r);
   // Not linear in the unknowns: at random solutions (a ratio of accelerations, a root).
   const Truth& truth = *level.truth;
@@ -463,10 +497,13 @@ CheckResult EquationChecker::decide(const Level& level, const ex& residual, Chec
   r.method = d.exact ? "exact rationals" : "numeric";
   if (d.answer == Truth::Answer::unknown)
     return r.conclude(Verdict::undecided, "evaluation",
-                      "the equation could not be evaluated at the motions the model allows (a division by zero, a negative square root?)");
+                      "the equation could not be evaluated at the motions the model allows (a division by zero, a "
+                      "negative square root?)");
   if (d.answer == Truth::Answer::fails)
-    return r.conclude(Verdict::incorrect, "value", "the equation does not follow from the balances and constraints of this problem");
-  if (truth.vanishes(residual).answer == Truth::Answer::holds) return r.conclude(Verdict::incorrect, "trivial", trivial_message);
+    return r.conclude(Verdict::incorrect, "value",
+                      "the equation does not follow from the balances and constraints of this problem");
+  if (truth.vanishes(residual).answer == Truth::Answer::holds)
+    return r.conclude(Verdict::incorrect, "trivial", trivial_message);
   r.verdict = Verdict::correct;
   r.score = 1.0;
   r.summary = "it holds wherever the " + level.name + " do (it is not linear in the unknowns)";
@@ -475,7 +512,8 @@ CheckResult EquationChecker::decide(const Level& level, const ex& residual, Chec
 
 void EquationChecker::name_it(const Level& level, const Rows& values, CheckResult& r) const {
   for (std::size_t i = 0; i < level.equations.size(); ++i)
-    if (level.truth->proportional(level.truth->equation_values(i), values)) r.identified_as.push_back(level.equations[i]->label);
+    if (level.truth->proportional(level.truth->equation_values(i), values))
+      r.identified_as.push_back(level.equations[i]->label);
   if (!r.identified_as.empty()) {
     r.follows_from = {r.identified_as.front()};
     r.combination = {{r.identified_as.front(), true}};
@@ -491,9 +529,11 @@ void EquationChecker::name_it(const Level& level, const Rows& values, CheckResul
   } else if (r.follows_from.empty()) {
     r.summary = "it holds wherever the " + level.name + " do";
   } else {
-    r.summary = "it follows from " + (r.follows_from.size() == 1 ? r.follows_from.front()
-                                                                  : join(std::vector<std::string>(r.follows_from.begin(), r.follows_from.end() - 1)) +
-                                                                        " and " + r.follows_from.back());
+    r.summary =
+        "it follows from " + (r.follows_from.size() == 1
+                                  ? r.follows_from.front()
+                                  : join(std::vector<std::string>(r.follows_from.begin(), r.follows_from.end() - 1)) +
+                                        " and " + r.follows_from.back());
   }
 }
 
@@ -510,15 +550,18 @@ std::vector<std::string> EquationChecker::needed_for(const ex& unknown, const ex
 
 CheckResult EquationChecker::position_verdict(const Level& level, const ex& residual, CheckResult r) const {
   if (level.equations.size() > max_family)
-    return r.conclude(Verdict::undecided, "too_large", "this problem has too many constraints to decide a combination of them (" +
-                                                           std::to_string(level.equations.size()) + ")");
+    return r.conclude(Verdict::undecided, "too_large",
+                      "this problem has too many constraints to decide a combination of them (" +
+                          std::to_string(level.equations.size()) + ")");
   const auto parts = linear_parts(residual, level.unknowns);
   if (!level.truth || !level.truth->usable() || !parts)
     return r.conclude(Verdict::undecided, "not_linear",
-                      "tackle decides an equation in the positions when it and the problem's length sums are linear in the positions");
+                      "tackle decides an equation in the positions when it and the problem's length sums are linear in "
+                      "the positions");
   const auto values = level.truth->values(*parts);
   if (!values)
-    return r.conclude(Verdict::undecided, "evaluation", "the equation could not be evaluated at the test values (a division by zero?)");
+    return r.conclude(Verdict::undecided, "evaluation",
+                      "the equation could not be evaluated at the test values (a division by zero?)");
   const Truth::Decision d = level.truth->holds(*values);
   r.method = d.exact ? "exact rationals" : "numeric";
   if (d.answer == Truth::Answer::holds) {
@@ -530,8 +573,10 @@ CheckResult EquationChecker::position_verdict(const Level& level, const ex& resi
     for (const ex& s : symbols_in(parts->back()))
       if (symbols_->find(s))
         return r.conclude(Verdict::undecided, "constant",
-                          "the constant a length sum keeps depends on where the positions are measured from, so tackle cannot tell whether it is " +
-                              to_text(parts->back().is_zero() ? ex(0) : -parts->back()) + ": write it as const, C or a number");
+                          "the constant a length sum keeps depends on where the positions are measured from, so tackle "
+                          "cannot tell whether it is " +
+                              to_text(parts->back().is_zero() ? ex(0) : -parts->back()) +
+                              ": write it as const, C or a number");
     r.verdict = Verdict::correct;
     r.score = 1.0;
     name_it(level, *values, r);
@@ -545,15 +590,19 @@ CheckResult EquationChecker::position_verdict(const Level& level, const ex& resi
     bool inside = true, shares = false;
     for (std::size_t j = 0; j + 1 < parts->size(); ++j) {
       if ((*parts)[j].is_zero()) continue;
-      if ((*own)[j].is_zero()) inside = false;
-      else shares = true;
+      if ((*own)[j].is_zero())
+        inside = false;
+      else
+        shares = true;
     }
     if (inside && shares) sharing.push_back(level.equations[i]);
   }
   if (sharing.size() == 1) {
     const std::string& what = sharing.front()->label;
-    r.findings.push_back({"length_sum", "this is not the " + what + " kept constant" +
-                                            (what.rfind("length of string", 0) == 0 ? ": count the strands at each point the string passes" : "")});
+    r.findings.push_back(
+        {"length_sum",
+         "this is not the " + what + " kept constant" +
+             (what.rfind("length of string", 0) == 0 ? ": count the strands at each point the string passes" : "")});
   } else {
     r.findings.push_back({"value", "the equation does not follow from the constraints of this problem"});
   }
@@ -583,7 +632,8 @@ void EquationChecker::other_bodies(const Level& level, const Equation& e, Level:
     const BodyTerms& other = bodies_[i];
     if (&other == &own) continue;
     if (!own.mass.is_zero() && !other.mass.is_zero() && !other.mass.is_equal(own.mass))
-      if (auto w = values_of(level, e.lhs - e.rhs.subs(own.mass == other.mass), true)) t.other_mass.emplace_back(i, std::move(*w));
+      if (auto w = values_of(level, e.lhs - e.rhs.subs(own.mass == other.mass), true))
+        t.other_mass.emplace_back(i, std::move(*w));
     if (is_a<symbol>(own.accel) && is_a<symbol>(other.accel) && !other.accel.is_equal(own.accel))
       if (auto w = values_of(level, e.lhs - e.rhs.subs(own.accel == other.accel), true))
         t.other_acceleration.emplace_back(i, std::move(*w));
@@ -591,7 +641,8 @@ void EquationChecker::other_bodies(const Level& level, const Equation& e, Level:
 }
 
 void EquationChecker::diagnose(const Level& level, const Rows& values, CheckResult& r) const {
-  const Rows v(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(std::min(values.size(), level.truth->fixed())));
+  const Rows v(values.begin(),
+               values.begin() + static_cast<std::ptrdiff_t>(std::min(values.size(), level.truth->fixed())));
   for (std::size_t ei = 0; ei < level.equations.size(); ++ei) {
     const Equation* e = level.equations[ei];
     if (e->kind != Equation::Kind::lmb && e->kind != Equation::Kind::amb) continue;
@@ -601,12 +652,15 @@ void EquationChecker::diagnose(const Level& level, const Rows& values, CheckResu
   // A force missing or turned is more specific than the inertial term (N_A + N_B = 0 is the
   // vertical balance without the weight, and also the horizontal one without m a).
   const auto rank = [](const Finding& x) { return x.code == "missing_inertia" || x.code == "inertia_sign" ? 1 : 0; };
-  std::stable_sort(r.findings.begin(), r.findings.end(), [&](const Finding& a, const Finding& b) { return rank(a) < rank(b); });
+  std::stable_sort(r.findings.begin(), r.findings.end(),
+                   [&](const Finding& a, const Finding& b) { return rank(a) < rank(b); });
 }
 
 namespace {
 
-Rows first_rows(const Rows& all, std::size_t n) { return Rows(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(std::min(all.size(), n))); }
+Rows first_rows(const Rows& all, std::size_t n) {
+  return Rows(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(std::min(all.size(), n)));
+}
 
 void say(CheckResult& r, const std::string& code, const std::string& message) {
   for (const auto& f : r.findings)
@@ -627,25 +681,30 @@ void EquationChecker::diagnose_balance(const Level& level, std::size_t ei, const
   for (std::size_t j = 0; j < t.terms.size() && j < e->sources.size(); ++j) {
     if (!t.terms[j]) continue;
     const std::string what = force_phrase(e->sources[j]);
-    if (combined_matches(*level.truth, whole, 1, *t.terms[j], -1, v)) say(r, "missing_force", what + " is missing (" + name + ")");
+    if (combined_matches(*level.truth, whole, 1, *t.terms[j], -1, v))
+      say(r, "missing_force", what + " is missing (" + name + ")");
     else if (combined_matches(*level.truth, whole, 1, *t.terms[j], -2, v))
       say(r, "force_sign", what + " has the wrong sign or direction (" + name + ")");
   }
   if (e->rhs.is_zero() || !t.lhs) return;
   if (level.truth->proportional(*t.lhs, v))
-    say(r, "missing_inertia", lmb ? "the mass times acceleration term is missing (" + name + ")"
-                                  : "the rate of change of angular momentum is missing (" + name + ")");
+    say(r, "missing_inertia",
+        lmb ? "the mass times acceleration term is missing (" + name + ")"
+            : "the rate of change of angular momentum is missing (" + name + ")");
   if (lmb && !e->system && e->bodies.size() == 1) {
     const BodyTerms& own = bodies_[static_cast<std::size_t>(e->bodies.front())];
     for (const auto& [i, w] : t.other_mass)
-      if (level.truth->proportional(w, v)) say(r, "wrong_mass", "the mass is " + bodies_[i].name + "'s, not " + own.name + "'s (" + name + ")");
+      if (level.truth->proportional(w, v))
+        say(r, "wrong_mass", "the mass is " + bodies_[i].name + "'s, not " + own.name + "'s (" + name + ")");
     for (const auto& [i, w] : t.other_acceleration)
       if (level.truth->proportional(w, v))
-        say(r, "wrong_acceleration", "the acceleration is " + bodies_[i].name + "'s, not " + own.name + "'s (" + name + ")");
+        say(r, "wrong_acceleration",
+            "the acceleration is " + bodies_[i].name + "'s, not " + own.name + "'s (" + name + ")");
   }
   if (combined_matches(*level.truth, *t.lhs, 2, whole, -1, v))
-    say(r, "inertia_sign", lmb ? "the mass times acceleration term has the wrong sign (" + name + ")"
-                               : "the rate of change of angular momentum has the wrong sign (" + name + ")");
+    say(r, "inertia_sign",
+        lmb ? "the mass times acceleration term has the wrong sign (" + name + ")"
+            : "the rate of change of angular momentum has the wrong sign (" + name + ")");
 }
 
 // The balance `ei` with a force of another balance added: it acts on another body (or, the same
@@ -658,7 +717,8 @@ void EquationChecker::diagnose_other_forces(const Level& level, std::size_t ei, 
     if (other == e || other->kind != e->kind) continue;
     const Level::Terms& t = terms_of(level)[oi];
     for (std::size_t j = 0; j < other->terms.size() && j < other->sources.size() && j < t.terms.size(); ++j) {
-      if (!t.terms[j] || std::find(e->sources.begin(), e->sources.end(), other->sources[j]) != e->sources.end()) continue;
+      if (!t.terms[j] || std::find(e->sources.begin(), e->sources.end(), other->sources[j]) != e->sources.end())
+        continue;
       for (const int sign : {1, -1}) {
         if (!combined_matches(*level.truth, whole, 1, *t.terms[j], sign, v)) continue;
         // Taking away one of the balance's own forces is a force missing (said above); the
@@ -672,8 +732,10 @@ void EquationChecker::diagnose_other_forces(const Level& level, std::size_t ei, 
           if (again.empty() && (e->terms[i] - added).is_zero()) again = force_phrase(e->sources[i]);
         }
         if (removal) continue;
-        if (!again.empty()) say(r, "extra_force", "one force too many: " + again + " is counted once too often (" + e->label + ")");
-        else say(r, "extra_force", force_phrase(other->sources[j]) + " does not act on what " + e->label + " balances");
+        if (!again.empty())
+          say(r, "extra_force", "one force too many: " + again + " is counted once too often (" + e->label + ")");
+        else
+          say(r, "extra_force", force_phrase(other->sources[j]) + " does not act on what " + e->label + " balances");
       }
     }
   }

@@ -82,7 +82,7 @@ class EquationChecker {
   std::shared_ptr<const SymbolTable> symbols_;
   GiNaC::exmap definitions_;  // the defined parameters, and the turning strands' lengths
   std::map<std::string, GiNaC::ex, std::less<>> defined_names_;  // the defined quantities' names
-  GiNaC::exmap defined_;                                          // and their definitions
+  GiNaC::exmap defined_;                                         // and their definitions
   // The model's equations (copies: a checker may outlive its analysis): the derivation's, then
   // those of the complete set of balances that the derivation's `derive:` left out.
   std::vector<Equation> equations_, rate_equations_, position_equations_;

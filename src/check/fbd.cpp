@@ -34,7 +34,8 @@ std::optional<double> number_of(const std::string& text) {
 
 // The names a message offers: at most a dozen of them.
 std::string some(const std::vector<std::string>& names) {
-  std::vector<std::string> first(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(names.size(), 12)));
+  std::vector<std::string> first(names.begin(),
+                                 names.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(names.size(), 12)));
   return join(first) + (names.size() > 12 ? ", ..." : "");
 }
 
@@ -68,7 +69,9 @@ std::string read_kind(const yaml::Node& node, const std::string& file, Diagnosti
   const auto t = yaml::scalar(node, "'kind'", file, diags);
   if (!t) return "";
   if (std::find(kinds.begin(), kinds.end(), t->text) != kinds.end()) return t->text;
-  diags.error(yaml::where(node, file), "'" + t->text + "' is not a kind of force (expected weight, tension, spring, damper, applied or support)");
+  diags.error(
+      yaml::where(node, file),
+      "'" + t->text + "' is not a kind of force (expected weight, tension, spring, damper, applied or support)");
   return "";
 }
 
@@ -92,7 +95,8 @@ StudentFbd read_fbd_data(const yaml::Node& node, int dims, const std::string& fi
           fbd.bodies.push_back(t->text);
           fbd.body_where.push_back(yaml::where(b, file));
         }
-    if (fbd.bodies.empty() && node["bodies"].is_sequence()) diags.error(yaml::where(node["bodies"], file), "'bodies' is empty (expected the system's bodies)");
+    if (fbd.bodies.empty() && node["bodies"].is_sequence())
+      diags.error(yaml::where(node["bodies"], file), "'bodies' is empty (expected the system's bodies)");
   } else {
     diags.error(fbd.where, "the free body diagram has no 'body' (expected body: NAME, or bodies: [A, B] for a system)");
   }
@@ -118,17 +122,22 @@ StudentFbd read_fbd_data(const yaml::Node& node, int dims, const std::string& fi
         diags.error(yaml::where(angle, file), "a force has 'direction' or 'angle', not both");
       } else if (angle) {
         if (dims != 2) {
-          diags.error(yaml::where(angle, file), "'angle' is for a plane problem (expected 'direction' with " + std::to_string(dims) + " number" + (dims == 1 ? "" : "s") + ")");
+          diags.error(yaml::where(angle, file), "'angle' is for a plane problem (expected 'direction' with " +
+                                                    std::to_string(dims) + " number" + (dims == 1 ? "" : "s") + ")");
         } else if (auto t = yaml::scalar(angle, "'angle'", file, diags)) {
-          if (auto v = number_of(t->text)) f.direction = Triple{std::cos(*v * pi / 180), std::sin(*v * pi / 180), 0};
-          else diags.error(yaml::where(angle, file), "'angle' is not a number (expected degrees from the " + std::string("first axis, counterclockwise)"));
+          if (auto v = number_of(t->text))
+            f.direction = Triple{std::cos(*v * pi / 180), std::sin(*v * pi / 180), 0};
+          else
+            diags.error(yaml::where(angle, file), "'angle' is not a number (expected degrees from the " +
+                                                      std::string("first axis, counterclockwise)"));
         }
       } else if (dir && dir.is_scalar() && dir.text() == "any") {
         // no direction: the student does not know it (a pin's force)
       } else if (dir && dir.is_sequence()) {
         if (dir.size() != static_cast<std::size_t>(dims)) {
-          diags.error(yaml::where(dir, file), "'direction' has " + std::to_string(dir.size()) + " number" + (dir.size() == 1 ? "" : "s") +
-                                                  " (expected " + std::to_string(dims) + ", one per axis)");
+          diags.error(yaml::where(dir, file), "'direction' has " + std::to_string(dir.size()) + " number" +
+                                                  (dir.size() == 1 ? "" : "s") + " (expected " + std::to_string(dims) +
+                                                  ", one per axis)");
         } else {
           Triple d{0, 0, 0};
           bool ok = true;
@@ -138,26 +147,32 @@ StudentFbd read_fbd_data(const yaml::Node& node, int dims, const std::string& fi
               ok = false;
               continue;
             }
-            if (auto v = number_of(t->text)) d[k] = *v;
+            if (auto v = number_of(t->text))
+              d[k] = *v;
             else {
-              diags.error(yaml::where(dir[k], file), "'" + t->text + "' is not a number (expected a number from -10^6 to 10^6)");
+              diags.error(yaml::where(dir[k], file),
+                          "'" + t->text + "' is not a number (expected a number from -10^6 to 10^6)");
               ok = false;
             }
           }
-          if (ok && norm3(d) < 1e-12) diags.error(yaml::where(dir, file), "'direction' is zero (expected a direction along the force)");
-          else if (ok) f.direction = d;
+          if (ok && norm3(d) < 1e-12)
+            diags.error(yaml::where(dir, file), "'direction' is zero (expected a direction along the force)");
+          else if (ok)
+            f.direction = d;
         }
       } else {
         diags.error(dir ? yaml::where(dir, file) : f.where,
-                    "a force needs its 'direction' (expected a list of " + std::to_string(dims) + " number" + (dims == 1 ? "" : "s") +
-                        (dims == 2 ? ", 'angle' in degrees," : ",") + " or 'any')");
+                    "a force needs its 'direction' (expected a list of " + std::to_string(dims) + " number" +
+                        (dims == 1 ? "" : "s") + (dims == 2 ? ", 'angle' in degrees," : ",") + " or 'any')");
       }
       fbd.forces.push_back(std::move(f));
     }
   }
   if (const yaml::Node couples = node["couples"]; couples && yaml::is_list(couples, "'couples'", file, diags)) {
     count += couples.size();
-    if (dims != 2 && couples.size() > 0) diags.error(yaml::where(couples, file), "'couples' are for a plane problem (this one has " + std::to_string(dims) + (dims == 1 ? " axis)" : " axes)"));
+    if (dims != 2 && couples.size() > 0)
+      diags.error(yaml::where(couples, file), "'couples' are for a plane problem (this one has " +
+                                                  std::to_string(dims) + (dims == 1 ? " axis)" : " axes)"));
     for (const yaml::Node item : couples) {
       if (!yaml::check_map(item, {"name", "sense"}, "a couple", file, diags)) continue;
       StudentCouple c;
@@ -168,15 +183,20 @@ StudentFbd read_fbd_data(const yaml::Node& node, int dims, const std::string& fi
       if (!item["sense"]) {
         diags.error(c.where, "a couple needs its 'sense' (expected counterclockwise, clockwise or any)");
       } else if (auto t = yaml::scalar(item["sense"], "'sense'", file, diags)) {
-        if (t->text == "counterclockwise") c.sense = 1;
-        else if (t->text == "clockwise") c.sense = -1;
-        else if (t->text != "any") diags.error(yaml::where(item["sense"], file), "'" + t->text + "' is not a sense (expected counterclockwise, clockwise or any)");
+        if (t->text == "counterclockwise")
+          c.sense = 1;
+        else if (t->text == "clockwise")
+          c.sense = -1;
+        else if (t->text != "any")
+          diags.error(yaml::where(item["sense"], file),
+                      "'" + t->text + "' is not a sense (expected counterclockwise, clockwise or any)");
       }
       fbd.couples.push_back(std::move(c));
     }
   }
   if (count > max_arrows)
-    diags.error(fbd.where, "the free body diagram has " + std::to_string(count) + " forces and couples (at most " + std::to_string(max_arrows) + ")");
+    diags.error(fbd.where, "the free body diagram has " + std::to_string(count) + " forces and couples (at most " +
+                               std::to_string(max_arrows) + ")");
   return fbd;
 }
 
@@ -191,10 +211,12 @@ std::vector<Diagnostic> fbd_name_problems(const Model& m, const StudentFbd& fbd)
     if (b.has_cm && std::find(names.begin(), names.end(), b.name) == names.end()) names.push_back(b.name);
   for (std::size_t i = 0; i < fbd.bodies.size(); ++i)
     if (std::find(body_names.begin(), body_names.end(), fbd.bodies[i]) == body_names.end())
-      problems.push_back({fbd.body_where[i], "'" + fbd.bodies[i] + "' is not a body of the problem (expected one of: " + some(body_names) + ")"});
+      problems.push_back({fbd.body_where[i], "'" + fbd.bodies[i] + "' is not a body of the problem (expected one of: " +
+                                                 some(body_names) + ")"});
   for (const auto& f : fbd.forces)
     if (!f.at.empty() && std::find(names.begin(), names.end(), f.at) == names.end())
-      problems.push_back({f.at_where, "'" + f.at + "' is not a point or body of the problem (expected one of: " + some(names) + ")"});
+      problems.push_back(
+          {f.at_where, "'" + f.at + "' is not a point or body of the problem (expected one of: " + some(names) + ")"});
   // In the file's order.
   in_file_order(problems);
   return problems;
@@ -211,19 +233,25 @@ StudentFbd read_fbd_file(const std::string& text, const std::string& file, const
 
 FbdRubric read_fbd_rubric(const yaml::Node& node, const std::string& file, Diagnostics& diags) {
   FbdRubric r;
-  if (!yaml::check_map(node, {"wrong_direction", "wrong_point", "extra", "tolerance", "weights"}, "'fbd'", file, diags)) return r;
+  if (!yaml::check_map(node, {"wrong_direction", "wrong_point", "extra", "tolerance", "weights"}, "'fbd'", file, diags))
+    return r;
   auto read = [&](const yaml::Node& n, const std::string& what, double high, double& into) {
     const auto t = yaml::scalar(n, what, file, diags);
     if (!t) return;
     const auto v = number_of(t->text);
-    if (!v || *v < 0 || *v > high) diags.error(yaml::where(n, file), what + " is not a number from 0 to " + fmt::format("{:g}", high));
-    else into = *v;
+    if (!v || *v < 0 || *v > high)
+      diags.error(yaml::where(n, file), what + " is not a number from 0 to " + fmt::format("{:g}", high));
+    else
+      into = *v;
   };
-  for (const auto& [key, field, high] : {std::tuple{"wrong_direction", &r.wrong_direction, 1.0}, std::tuple{"wrong_point", &r.wrong_point, 1.0},
-                                         std::tuple{"extra", &r.extra, 1000.0}, std::tuple{"tolerance", &r.tolerance, 45.0}})
+  for (const auto& [key, field, high] :
+       {std::tuple{"wrong_direction", &r.wrong_direction, 1.0}, std::tuple{"wrong_point", &r.wrong_point, 1.0},
+        std::tuple{"extra", &r.extra, 1000.0}, std::tuple{"tolerance", &r.tolerance, 45.0}})
     if (node[key]) read(node[key], std::string("'") + key + "'", high, *field);
   if (const yaml::Node w = node["weights"]) {
-    if (!w.is_map()) diags.error(yaml::where(w, file), "'weights' is " + yaml::kind_name(w) + " (expected a mapping from a force's source or unknown to its points)");
+    if (!w.is_map())
+      diags.error(yaml::where(w, file), "'weights' is " + yaml::kind_name(w) +
+                                            " (expected a mapping from a force's source or unknown to its points)");
     else
       for (const auto& e : w) {
         double v = 1;
@@ -254,12 +282,15 @@ std::vector<Diagnostic> fbd_rubric_problems(const Model& m, const FbdRubric& r) 
   std::vector<Diagnostic> problems;
   for (const auto& [name, where] : r.weight_where)
     if (std::find(names.begin(), names.end(), name) == names.end() && !a_source(name))
-      problems.push_back({where, "'" + name + "' names no force of the problem (expected a force's unknown or source: " + some(names) + ")"});
+      problems.push_back(
+          {where,
+           "'" + name + "' names no force of the problem (expected a force's unknown or source: " + some(names) + ")"});
   in_file_order(problems);
   return problems;
 }
 
-CheckResult checked_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& rubric, std::vector<Diagnostic>& problems) {
+CheckResult checked_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& rubric,
+                        std::vector<Diagnostic>& problems) {
   try {
     return fbd_result(check_fbd(m, fbd, rubric, problems));
   } catch (const std::bad_alloc&) {
@@ -270,7 +301,8 @@ CheckResult checked_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& 
     CheckResult r;
     r.unknown = "free body diagram of " + join(fbd.bodies);
     return r.conclude(Verdict::undecided, "internal",
-                      std::string("tackle failed while checking this diagram (an internal error: ") + e.what() + "), so it is left undecided");
+                      std::string("tackle failed while checking this diagram (an internal error: ") + e.what() +
+                          "), so it is left undecided");
   }
 }
 
@@ -288,40 +320,49 @@ CheckResult fbd_result(const FbdGrade& g) {
 std::string fbd_text(const FbdGrade& g) {
   std::string out = fmt::format("free body diagram of {}: {}: {}\n", g.of, verdict_name(g.verdict), g.summary);
   for (const auto& f : g.forces) {
-    std::string status = f.status == "drawn" ? "drawn" : f.status == "wrong_direction" ? "drawn the wrong way" : f.status == "wrong_point" ? "drawn at the wrong point"
-                         : f.status == "off_line"                                    ? "drawn off its line"
-                         : f.status == "zero"                                        ? "nothing at this position (not needed)"
-                                                                                     : "missing";
+    std::string status = f.status == "drawn"             ? "drawn"
+                         : f.status == "wrong_direction" ? "drawn the wrong way"
+                         : f.status == "wrong_point"     ? "drawn at the wrong point"
+                         : f.status == "off_line"        ? "drawn off its line"
+                         : f.status == "zero"            ? "nothing at this position (not needed)"
+                                                         : "missing";
     std::vector<std::string> names;
     for (const auto& n : f.drawn_as) names.push_back(n.empty() ? "(no name)" : n);
     if (!names.empty()) status += " as your " + join(names);
-    out += fmt::format("  {}{}: {}\n", f.phrase, f.label.empty() || f.phrase.find(" part)") != std::string::npos ? "" : " (" + f.label + ")", status);
+    out += fmt::format("  {}{}: {}\n", f.phrase,
+                       f.label.empty() || f.phrase.find(" part)") != std::string::npos ? "" : " (" + f.label + ")",
+                       status);
   }
   for (const auto& e : g.extras) out += "  extra: " + e.message + "\n";
-  if (g.verdict == Verdict::correct || g.verdict == Verdict::incorrect) out += fmt::format("score: {:g} of {:g}\n", g.score, g.max_score);
+  if (g.verdict == Verdict::correct || g.verdict == Verdict::incorrect)
+    out += fmt::format("score: {:g} of {:g}\n", g.score, g.max_score);
   return out;
 }
 
 std::string fbd_json(const FbdGrade& g) {
-  std::string out = "{\n  \"version\": 1,\n  \"of\": " + json_quoted(g.of) + ",\n  \"verdict\": " + json_quoted(verdict_name(g.verdict)) +
+  std::string out = "{\n  \"version\": 1,\n  \"of\": " + json_quoted(g.of) +
+                    ",\n  \"verdict\": " + json_quoted(verdict_name(g.verdict)) +
                     ",\n  \"summary\": " + json_quoted(g.summary) + ",\n  \"forces\": [";
   for (std::size_t i = 0; i < g.forces.size(); ++i) {
     const auto& f = g.forces[i];
     std::string names = "[";
     for (std::size_t k = 0; k < f.drawn_as.size(); ++k) names += (k ? ", " : "") + json_quoted(f.drawn_as[k]);
-    out += fmt::format("{}\n    {{\"source\": {}, \"phrase\": {}, \"label\": {}, \"status\": {}, \"drawn_as\": {}], \"weight\": {}, \"score\": {}}}", i ? "," : "",
-                       json_quoted(f.source), json_quoted(f.phrase), json_quoted(f.label), json_quoted(f.status), names, json_number(f.weight),
-                       json_number(f.score));
+    out += fmt::format(
+        "{}\n    {{\"source\": {}, \"phrase\": {}, \"label\": {}, \"status\": {}, \"drawn_as\": {}], \"weight\": {}, "
+        "\"score\": {}}}",
+        i ? "," : "", json_quoted(f.source), json_quoted(f.phrase), json_quoted(f.label), json_quoted(f.status), names,
+        json_number(f.weight), json_number(f.score));
   }
   out += g.forces.empty() ? "],\n" : "\n  ],\n";
   out += "  \"extras\": [";
   for (std::size_t i = 0; i < g.extras.size(); ++i)
-    out += fmt::format("{}\n    {{\"name\": {}, \"code\": {}, \"message\": {}}}", i ? "," : "", json_quoted(g.extras[i].name), json_quoted(g.extras[i].code),
-                       json_quoted(g.extras[i].message));
+    out += fmt::format("{}\n    {{\"name\": {}, \"code\": {}, \"message\": {}}}", i ? "," : "",
+                       json_quoted(g.extras[i].name), json_quoted(g.extras[i].code), json_quoted(g.extras[i].message));
   out += g.extras.empty() ? "],\n" : "\n  ],\n";
   out += "  \"findings\": [";
   for (std::size_t i = 0; i < g.findings.size(); ++i)
-    out += fmt::format("{}\n    {{\"code\": {}, \"message\": {}}}", i ? "," : "", json_quoted(g.findings[i].code), json_quoted(g.findings[i].message));
+    out += fmt::format("{}\n    {{\"code\": {}, \"message\": {}}}", i ? "," : "", json_quoted(g.findings[i].code),
+                       json_quoted(g.findings[i].message));
   out += g.findings.empty() ? "],\n" : "\n  ],\n";
   out += "  \"score\": " + json_number(g.score) + ",\n  \"max_score\": " + json_number(g.max_score) + "\n}\n";
   return out;

@@ -107,14 +107,16 @@ struct FbdGrade {
 /// body that is not the problem's, a 2-D couple in 1-D) are put in `problems` and the grade is
 /// then `invalid`; a diagram whose directions depend on a parameter without a value is
 /// `undecided` (the student's numbers cannot be compared).
-[[nodiscard]] FbdGrade check_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& rubric, std::vector<Diagnostic>& problems);
+[[nodiscard]] FbdGrade check_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& rubric,
+                                 std::vector<Diagnostic>& problems);
 
 /// The grade as a check result (for a worked solution's step and a platform's test): its
 /// verdict, summary, findings and score (a fraction of 1).
 [[nodiscard]] CheckResult fbd_result(const FbdGrade& g);
 /// check_fbd() as a check result, guarded as Checker::check is: what goes wrong inside is the
 /// verdict undecided, code `internal` (one diagram's, never a batch's or a solution's end).
-[[nodiscard]] CheckResult checked_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& rubric, std::vector<Diagnostic>& problems);
+[[nodiscard]] CheckResult checked_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& rubric,
+                                      std::vector<Diagnostic>& problems);
 [[nodiscard]] std::string fbd_text(const FbdGrade& g);
 [[nodiscard]] std::string fbd_json(const FbdGrade& g);
 

@@ -71,7 +71,8 @@ struct Diagram {
   Diagram(const Model& model, const StudentFbd& f, const FbdRubric& r) : m(model), fbd(f), rubric(r) {}
   [[nodiscard]] std::optional<double> num(const ex& e) const { return real_at(e, values); }
   [[nodiscard]] std::optional<Triple> position(const Vec& v) const {
-    return point_at(m, [&](const ex& e) { return num(e); }, v);
+    return point_at(
+        m, [&](const ex& e) { return num(e); }, v);
   }
 };
 
@@ -97,7 +98,9 @@ std::vector<Diagnostic> place_names(Diagram& d, FbdGrade& g) {
   for (const auto& p : d.m.points) point_names.push_back(p.name);
   std::vector<Diagnostic> problems = fbd_name_problems(d.m, d.fbd);
   if (d.fbd.bodies.empty())
-    problems.insert(problems.begin(), {d.fbd.where, "the free body diagram has no 'body' (expected body: NAME, or bodies: [A, B] for a system)"});
+    problems.insert(
+        problems.begin(),
+        {d.fbd.where, "the free body diagram has no 'body' (expected body: NAME, or bodies: [A, B] for a system)"});
   for (const auto& name : d.fbd.bodies)
     if (auto it = std::find(body_names.begin(), body_names.end(), name); it != body_names.end())
       d.bodies.push_back(static_cast<int>(it - body_names.begin()));
@@ -159,12 +162,14 @@ bool point_matters(const Diagram& d, const Load& l, const Entry& e) {
   const double far = 1e-9 * std::max(1.0, norm3(*cm));
   if (norm3(r) <= far) return false;
   if (e.free || e.lines.empty()) return true;
-  return std::any_of(e.lines.begin(), e.lines.end(), [&](const Triple& line) { return norm3(cross3(r, line)) > far * norm3(line); });
+  return std::any_of(e.lines.begin(), e.lines.end(),
+                     [&](const Triple& line) { return norm3(cross3(r, line)) > far * norm3(line); });
 }
 
 // One part of a load as an entry (and its force in `g`); `undecided_by` names a force whose
 // direction cannot be had in numbers. False when the part is left out.
-bool part_entry(Diagram& d, const Load& l, const ForcePart& p, Entry& e, FbdGrade::Force& f, std::string& undecided_by) {
+bool part_entry(Diagram& d, const Load& l, const ForcePart& p, Entry& e, FbdGrade::Force& f,
+                std::string& undecided_by) {
   ex all = p.key;
   for (int k = 0; k < d.m.dims(); ++k) all += p.coefficients[k];
   const auto uses_defaulted = [&](const ex& x) {
@@ -188,8 +193,10 @@ bool part_entry(Diagram& d, const Load& l, const ForcePart& p, Entry& e, FbdGrad
     return false;
   }
   e.zero = norm3(*n) < 1e-12;
-  if (!e.zero) e.lines.push_back(*n);
-  else if (const auto line = zero_line(d, p.coefficients)) e.lines.push_back(*line);  // either sense
+  if (!e.zero)
+    e.lines.push_back(*n);
+  else if (const auto line = zero_line(d, p.coefficients))
+    e.lines.push_back(*line);  // either sense
   // Known at the sketch's position (a spring's stretch there, a given force at t = 0), so is
   // its sense: pulling or pushing as its value says.
   e.fixed = !e.zero;
@@ -244,16 +251,23 @@ void couple_entry(Diagram& d, FbdGrade& g, std::size_t li, std::string& undecide
   e.at_name = l.at_name;
   e.couple = true;
   e.kind = kind_of(d.m, l.source);
-  FbdGrade::Force f{l.source, l.source.rfind("couple", 0) == 0 ? "the " + l.source : "the couple of the " + l.source, to_text(l.couple[2]),
-                    "missing", {}, 1, 0};
+  FbdGrade::Force f{l.source,
+                    l.source.rfind("couple", 0) == 0 ? "the " + l.source : "the couple of the " + l.source,
+                    to_text(l.couple[2]),
+                    "missing",
+                    {},
+                    1,
+                    0};
   if (const auto v = d.num(l.couple[2])) {  // its value at the sketch's position
-    const bool has_unknown = std::any_of(d.unknowns.begin(), d.unknowns.end(), [&](const ex& u) { return l.couple[2].has(u); });
+    const bool has_unknown =
+        std::any_of(d.unknowns.begin(), d.unknowns.end(), [&](const ex& u) { return l.couple[2].has(u); });
     if (!has_unknown) {
       e.couple_sense = *v > 0 ? 1 : *v < 0 ? -1 : 0;
       e.zero = *v == 0;  // nothing in the sketch (a couple of 0)
     }
   }
-  if (std::any_of(d.defaulted.begin(), d.defaulted.end(), [&](const ex& s) { return l.couple[2].has(s); }) && undecided_by.empty())
+  if (std::any_of(d.defaulted.begin(), d.defaulted.end(), [&](const ex& s) { return l.couple[2].has(s); }) &&
+      undecided_by.empty())
     undecided_by = f.phrase;
   d.entries.push_back(e);
   g.forces.push_back(f);
@@ -277,7 +291,8 @@ int carrier_of(const Model& m, const Constraint& c, std::size_t b) {
   for (std::size_t o = 0; o < m.bodies.size(); ++o)
     for (int k = 0; o != b && k < m.dims(); ++k) {
       const ex offset = (m.bodies[b].cm[k] - m.bodies[o].cm[k]).expand();
-      if (!offset.is_zero() && ((offset - c.quantity).expand().is_zero() || (offset + c.quantity).expand().is_zero())) return static_cast<int>(o);
+      if (!offset.is_zero() && ((offset - c.quantity).expand().is_zero() || (offset + c.quantity).expand().is_zero()))
+        return static_cast<int>(o);
     }
   return -1;
 }
@@ -292,15 +307,18 @@ void carried_entries(Diagram& d, FbdGrade& g) {
     for (const int b : d.bodies) {
       const Body& body = d.m.bodies[static_cast<std::size_t>(b)];
       const int o = key.empty() || !body.has_cm ? -1 : carrier_of(d.m, c, static_cast<std::size_t>(b));
-      if (o < 0 || std::find(d.bodies.begin(), d.bodies.end(), o) != d.bodies.end() || !made.insert({key, b}).second) continue;
+      if (o < 0 || std::find(d.bodies.begin(), d.bodies.end(), o) != d.bodies.end() || !made.insert({key, b}).second)
+        continue;
       Entry e;
       e.at = d.position(body.cm);
       e.at_name = body.name;
       e.kind = "support";
-      for (int k = 0; k < d.m.dims(); ++k) e.lines.push_back(Triple{k == 0 ? 1.0 : 0.0, k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0});
+      for (int k = 0; k < d.m.dims(); ++k)
+        e.lines.push_back(Triple{k == 0 ? 1.0 : 0.0, k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0});
       e.free = d.m.dims() > 1;
       d.entries.push_back(e);
-      const std::string phrase = "the force of " + d.m.bodies[static_cast<std::size_t>(o)].name + " on " + body.name + " (" + key + ")";
+      const std::string phrase =
+          "the force of " + d.m.bodies[static_cast<std::size_t>(o)].name + " on " + body.name + " (" + key + ")";
       g.forces.push_back({key, phrase, "", "missing", {}, 1, 0});
     }
   }
@@ -310,14 +328,17 @@ void carried_entries(Diagram& d, FbdGrade& g) {
 std::string own_diagram(Diagram& d, FbdGrade& g) {
   d.unknowns = {d.m.candidates.begin(), d.m.candidates.end()};
   for (const auto& c : d.m.conditions) {  // unknowns a condition keeps from being negative (T >= 0, N >= 0)
-    if (c.op == ">=" || c.op == ">") d.positive.insert((c.lhs - c.rhs).expand());
-    else if (c.op == "<=" || c.op == "<") d.positive.insert((c.rhs - c.lhs).expand());
+    if (c.op == ">=" || c.op == ">")
+      d.positive.insert((c.lhs - c.rhs).expand());
+    else if (c.op == "<=" || c.op == "<")
+      d.positive.insert((c.rhs - c.lhs).expand());
   }
   d.internal = internal_forces(d.m, d.bodies);
   std::string undecided_by;
   for (std::size_t li = 0; li < d.m.loads.size(); ++li) {
     const Load& l = d.m.loads[li];
-    if (std::find(d.bodies.begin(), d.bodies.end(), l.body) == d.bodies.end() || d.internal.count(force_key(l.source))) continue;
+    if (std::find(d.bodies.begin(), d.bodies.end(), l.body) == d.bodies.end() || d.internal.count(force_key(l.source)))
+      continue;
     std::vector<Entry> of_load;
     for (const ForcePart& p : split_force(d.m, l.force, d.unknowns, [&](const ex& e) { return d.num(e); })) {
       Entry e;
@@ -332,7 +353,8 @@ std::string own_diagram(Diagram& d, FbdGrade& g) {
     merge_parts(of_load, g.forces);
     for (auto& e : of_load) e.point_matters = point_matters(d, l, e);
     d.entries.insert(d.entries.end(), of_load.begin(), of_load.end());
-    if (d.m.dims() == 3 && !is_zero_vec(l.couple) && undecided_by.empty()) undecided_by = "the couple of the " + l.source;
+    if (d.m.dims() == 3 && !is_zero_vec(l.couple) && undecided_by.empty())
+      undecided_by = "the couple of the " + l.source;
     if (d.m.dims() == 2 && !l.couple[2].is_zero()) couple_entry(d, g, li, undecided_by);
   }
   carried_entries(d, g);
@@ -344,8 +366,10 @@ void weigh(const Diagram& d, FbdGrade& g) {
   const auto& w = d.rubric.weights;
   for (std::size_t k = 0; k < d.entries.size(); ++k) {
     auto& f = g.forces[k];
-    if (auto it = w.find(f.source); it != w.end()) f.weight = it->second;
-    else if (auto it2 = w.find(force_key(f.source)); it2 != w.end()) f.weight = it2->second;
+    if (auto it = w.find(f.source); it != w.end())
+      f.weight = it->second;
+    else if (auto it2 = w.find(force_key(f.source)); it2 != w.end())
+      f.weight = it2->second;
     else
       for (const auto& n : d.entries[k].names)
         if (auto it3 = w.find(n); it3 != w.end()) {
@@ -421,8 +445,10 @@ double fit_value(const Diagram& d, const FbdGrade& g, std::size_t i, std::size_t
   const Fit f = fit(d, i, d.entries[k]);
   if (f == none) return 0;
   double base = f == good ? 10 : f == wrong_direction ? 6 : f == wrong_point ? 5 : 4;
-  if (d.entries[k].zero) base /= 4;
-  else if (d.entries[k].free && f == good) base -= 0.5;
+  if (d.entries[k].zero)
+    base /= 4;
+  else if (d.entries[k].free && f == good)
+    base -= 0.5;
   const std::string& name = d.fbd.forces[i].name;
   return base + (!name.empty() && name == label_of(d, g, k) ? 1 : 0);
 }
@@ -476,7 +502,8 @@ std::vector<int> assign(const std::vector<std::vector<double>>& value, std::size
     } while (j0 != 0);
   }
   for (std::size_t j = 1; j <= n; ++j)
-    if (p[j] != 0 && p[j] - 1 < rows && j - 1 < columns && value[p[j] - 1][j - 1] > 0) out[p[j] - 1] = static_cast<int>(j - 1);
+    if (p[j] != 0 && p[j] - 1 < rows && j - 1 < columns && value[p[j] - 1][j - 1] > 0)
+      out[p[j] - 1] = static_cast<int>(j - 1);
   return out;
 }
 
@@ -489,13 +516,15 @@ struct Matching {
 
 // The best assignment of arrows to forces, the arrows `held` (where given) and the force `taken`
 // (where given) left out of it: a force's components chosen already.
-Matching match_once(const Diagram& d, const FbdGrade& g, const std::vector<std::size_t>& held = {}, std::optional<std::size_t> taken = {}) {
+Matching match_once(const Diagram& d, const FbdGrade& g, const std::vector<std::size_t>& held = {},
+                    std::optional<std::size_t> taken = {}) {
   const std::size_t na = d.fbd.forces.size(), ne = d.entries.size();
   std::vector<std::vector<double>> value(na, std::vector<double>(ne, 0));
   for (std::size_t i = 0; i < na; ++i)
     for (std::size_t k = 0; k < ne; ++k)
       if (k != taken && std::find(held.begin(), held.end(), i) == held.end()) value[i][k] = fit_value(d, g, i, k);
-  Matching mt{assign(value, ne), std::vector<int>(ne, -1), std::vector<Fit>(ne, none), std::vector<std::vector<std::size_t>>(ne), 0};
+  Matching mt{assign(value, ne), std::vector<int>(ne, -1), std::vector<Fit>(ne, none),
+              std::vector<std::vector<std::size_t>>(ne), 0};
   for (std::size_t i = 0; i < na; ++i) {
     if (mt.entry_of[i] < 0) continue;
     const auto k = static_cast<std::size_t>(mt.entry_of[i]);
@@ -573,10 +602,12 @@ void more_lines(const Diagram& d, const FbdGrade& g, Matching& mt) {
     if (mt.entry_of[i] >= 0 || !d.fbd.forces[i].direction) continue;
     for (std::size_t k = 0; k < ne; ++k) {
       const Entry& en = d.entries[k];
-      if (!en.free || mt.fitted[k] != good || 1 + mt.more[k].size() >= en.lines.size() || fit(d, i, en) != good) continue;
+      if (!en.free || mt.fitted[k] != good || 1 + mt.more[k].size() >= en.lines.size() || fit(d, i, en) != good)
+        continue;
       const StudentForce& drawn_first = d.fbd.forces[static_cast<std::size_t>(mt.arrow_of[k])];
       const auto& first = drawn_first.direction;
-      if (!first || drawn_first.at != d.fbd.forces[i].at) continue;  // drawn as one force of unknown direction already, or elsewhere
+      if (!first || drawn_first.at != d.fbd.forces[i].at)
+        continue;  // drawn as one force of unknown direction already, or elsewhere
       std::vector<Triple> drawn{*first};
       for (auto j : mt.more[k]) drawn.push_back(*d.fbd.forces[j].direction);
       if (in_span(d, *d.fbd.forces[i].direction, drawn)) continue;  // not a new line
@@ -666,22 +697,25 @@ void grade_forces(const Diagram& d, const Matching& mt, FbdGrade& g, std::vector
       case wrong_point:
         f.status = "wrong_point";
         f.score = f.weight * d.rubric.wrong_point;
-        wrong.push_back({"wrong_point", d.fbd.forces[i].at.empty() ? who + ", but is drawn at no point (where it acts sets its moment)"
-                                                                    : who + ", which does not act at " + d.fbd.forces[i].at});
+        wrong.push_back({"wrong_point", d.fbd.forces[i].at.empty()
+                                            ? who + ", but is drawn at no point (where it acts sets its moment)"
+                                            : who + ", which does not act at " + d.fbd.forces[i].at});
         break;
       default:
         f.status = mt.fitted[k] == off_line ? "off_line" : "wrong_direction";
         f.score = f.weight * d.rubric.wrong_direction;
-        wrong.push_back({"force_direction", !d.fbd.forces[i].direction ? who + ", whose line is known: draw it along that line"
-                                            : mt.fitted[k] == off_line  ? who + ", but is not along its line"
-                                                                        : who + ", which points the other way"});
+        wrong.push_back({"force_direction", !d.fbd.forces[i].direction
+                                                ? who + ", whose line is known: draw it along that line"
+                                            : mt.fitted[k] == off_line ? who + ", but is not along its line"
+                                                                       : who + ", which points the other way"});
         break;
     }
   }
 }
 
 // Couples: by their sense; each couple of the student stands for one of tackle's.
-void grade_couples(const Diagram& d, const Matching& mt, FbdGrade& g, std::vector<Finding>& wrong, std::vector<Finding>& extra) {
+void grade_couples(const Diagram& d, const Matching& mt, FbdGrade& g, std::vector<Finding>& wrong,
+                   std::vector<Finding>& extra) {
   for (const StudentCouple& sc : d.fbd.couples) {
     std::optional<std::size_t> best;
     bool right = false;
@@ -695,7 +729,8 @@ void grade_couples(const Diagram& d, const Matching& mt, FbdGrade& g, std::vecto
       }
     }
     if (!best) {
-      extra.push_back({"extra_force", (sc.name.empty() ? std::string("a couple") : "your couple " + sc.name) + ": no couple acts on " + g.of});
+      extra.push_back({"extra_force", (sc.name.empty() ? std::string("a couple") : "your couple " + sc.name) +
+                                          ": no couple acts on " + g.of});
       g.extras.push_back({sc.name, "extra_force", extra.back().message});
       continue;
     }
@@ -703,7 +738,9 @@ void grade_couples(const Diagram& d, const Matching& mt, FbdGrade& g, std::vecto
     f.drawn_as.push_back(sc.name);
     f.status = right ? "drawn" : "wrong_direction";
     f.score = f.weight * (right ? 1 : d.rubric.wrong_direction);
-    if (!right) wrong.push_back({"force_direction", "your couple " + sc.name + " stands for " + f.phrase + ", which turns the other way"});
+    if (!right)
+      wrong.push_back(
+          {"force_direction", "your couple " + sc.name + " stands for " + f.phrase + ", which turns the other way"});
   }
 }
 
@@ -715,9 +752,9 @@ Finding extra_finding(const Diagram& d, const Matching& mt, const FbdGrade& g, s
   for (std::size_t k = 0; k < d.entries.size(); ++k) {
     if (mt.arrow_of[k] < 0 || d.entries[k].zero || fit(d, i, d.entries[k]) != good) continue;
     const auto j = static_cast<std::size_t>(mt.arrow_of[k]);
-    const bool same = a.name == d.fbd.forces[j].name || a.name == label_of(d, g, k) || !d.arrow_kind[i].empty() || drawn_alike(d, i, j);
-    if (same)
-      return {"extra_force", said(d, i) + " counts " + g.forces[k].phrase + " once too often"};
+    const bool same = a.name == d.fbd.forces[j].name || a.name == label_of(d, g, k) || !d.arrow_kind[i].empty() ||
+                      drawn_alike(d, i, j);
+    if (same) return {"extra_force", said(d, i) + " counts " + g.forces[k].phrase + " once too often"};
   }
   for (std::size_t li = 0; li < d.m.loads.size(); ++li) {
     const Load& l = d.m.loads[li];
@@ -727,17 +764,24 @@ Finding extra_finding(const Diagram& d, const Matching& mt, const FbdGrade& g, s
     e.load = li;
     place_at(d, l, e);
     for (const ForcePart& p : split_force(d.m, l.force, d.unknowns, [&](const ex& x) { return d.num(x); }))
-      if (!p.unknown.is_zero()) e.lines.push_back(p.numbers);
-      else if (auto n = d.position(p.coefficients)) e.lines.push_back(*n);
-    if (e.lines.empty() || a.at.empty() || !same_point(d, i, e) || (a.direction && !in_span(d, *a.direction, e.lines))) continue;
+      if (!p.unknown.is_zero())
+        e.lines.push_back(p.numbers);
+      else if (auto n = d.position(p.coefficients))
+        e.lines.push_back(*n);
+    if (e.lines.empty() || a.at.empty() || !same_point(d, i, e) || (a.direction && !in_span(d, *a.direction, e.lines)))
+      continue;
     if (ours)
-      return {"internal_force", said(d, i) + " is " + force_phrase(l.source) + ", which is internal to " + g.of + " (its forces on the system's bodies cancel)"};
-    return {"other_body", said(d, i) + " is " + force_phrase(l.source) + ", which acts on " + d.m.bodies[static_cast<std::size_t>(l.body)].name + ", not on " + g.of};
+      return {"internal_force", said(d, i) + " is " + force_phrase(l.source) + ", which is internal to " + g.of +
+                                    " (its forces on the system's bodies cancel)"};
+    return {"other_body", said(d, i) + " is " + force_phrase(l.source) + ", which acts on " +
+                              d.m.bodies[static_cast<std::size_t>(l.body)].name + ", not on " + g.of};
   }
-  return {"extra_force", said(d, i) + " is not one of the forces on " + g.of + (a.at.empty() ? std::string("") : " at " + a.at)};
+  return {"extra_force",
+          said(d, i) + " is not one of the forces on " + g.of + (a.at.empty() ? std::string("") : " at " + a.at)};
 }
 
-void conclude(const Diagram& d, FbdGrade& g, std::vector<Finding> missing, const std::vector<Finding>& wrong, const std::vector<Finding>& extra) {
+void conclude(const Diagram& d, FbdGrade& g, std::vector<Finding> missing, const std::vector<Finding>& wrong,
+              const std::vector<Finding>& extra) {
   g.findings = std::move(missing);
   g.findings.insert(g.findings.end(), wrong.begin(), wrong.end());
   g.findings.insert(g.findings.end(), extra.begin(), extra.end());
@@ -771,7 +815,8 @@ FbdGrade check_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& rubri
     g.verdict = Verdict::undecided;
     g.summary = undecided_by.rfind("the couple of", 0) == 0
                     ? undecided_by + " is a couple in space, which a drawn diagram is not checked for"
-                    : "the direction of " + undecided_by + " depends on a parameter without a value, so a drawing cannot be compared with it";
+                    : "the direction of " + undecided_by +
+                          " depends on a parameter without a value, so a drawing cannot be compared with it";
     g.findings.push_back({"evaluation", g.summary});
     return g;
   }

@@ -88,7 +88,8 @@ bool Checker::excluded(const ex& argument, bool negative) const {
 void Checker::extend_points() {
   std::vector<std::pair<ex, Program>> defined;
   for (const auto& p : parameters_)
-    if (const auto d = definitions_.find(p.symbol); d != definitions_.end()) defined.emplace_back(p.symbol, program(d->second));
+    if (const auto d = definitions_.find(p.symbol); d != definitions_.end())
+      defined.emplace_back(p.symbol, program(d->second));
   if (defined.empty()) return;
   std::vector<Sample> out;
   for (const Sample& point : points_) {

@@ -21,12 +21,14 @@ void SettledAnswers::keep(const std::string& unknown, const GiNaC::ex& e, const 
   if (by_unknown_[unknown].emplace(e, entry).second) ++size_;
 }
 
-std::string SettledAnswers::simplest(const std::string& unknown, const GiNaC::ex& e, const std::function<std::string()>& make) {
+std::string SettledAnswers::simplest(const std::string& unknown, const GiNaC::ex& e,
+                                     const std::function<std::string()>& make) {
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     const auto of = by_unknown_.find(unknown);
     if (of != by_unknown_.end())
-      if (const auto it = of->second.find(e); it != of->second.end() && it->second.simplest) return *it->second.simplest;
+      if (const auto it = of->second.find(e); it != of->second.end() && it->second.simplest)
+        return *it->second.simplest;
   }
   std::string made = make();  // (outside the lock: it may take long)
   const std::lock_guard<std::mutex> lock(mutex_);

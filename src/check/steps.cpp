@@ -40,16 +40,21 @@ std::vector<SolutionStep> read_solution(const std::string& text, const std::stri
     return out;
   }
   const yaml::Node steps = root["steps"];
-  if (!steps) diags.error(yaml::where(root, file), "the solution has no 'steps' (expected a list of {equation: ...}, {answer: ..., unknown: ...} and {fbd: ...})");
+  if (!steps)
+    diags.error(
+        yaml::where(root, file),
+        "the solution has no 'steps' (expected a list of {equation: ...}, {answer: ..., unknown: ...} and {fbd: ...})");
   else if (yaml::is_list(steps, "'steps'", file, diags)) {
     if (steps.size() > max_steps)
-      diags.error(yaml::where(steps, file), "'steps' has " + std::to_string(steps.size()) + " steps (at most " + std::to_string(max_steps) + ")");
+      diags.error(yaml::where(steps, file),
+                  "'steps' has " + std::to_string(steps.size()) + " steps (at most " + std::to_string(max_steps) + ")");
     for (const yaml::Node item : steps) {
       if (!yaml::check_map(item, {"equation", "answer", "unknown", "fbd"}, "a step", file, diags)) continue;
       SolutionStep s;
       if (item["fbd"]) {
         if (item["equation"] || item["answer"] || item["unknown"]) {
-          diags.error(yaml::where(item, file), "a free body diagram is a step of its own (expected {fbd: {body: ..., forces: [...]}})");
+          diags.error(yaml::where(item, file),
+                      "a free body diagram is a step of its own (expected {fbd: {body: ..., forces: [...]}})");
           continue;
         }
         s.kind = SolutionStep::Kind::fbd;
@@ -59,7 +64,9 @@ std::vector<SolutionStep> read_solution(const std::string& text, const std::stri
         continue;
       }
       if (item["equation"] && (item["answer"] || item["unknown"])) {
-        diags.error(yaml::where(item, file), "a step is an equation or an answer, not both (expected {equation: ...} or {answer: ..., unknown: ...})");
+        diags.error(
+            yaml::where(item, file),
+            "a step is an equation or an answer, not both (expected {equation: ...} or {answer: ..., unknown: ...})");
         continue;
       }
       if (item["equation"]) {
@@ -67,8 +74,11 @@ std::vector<SolutionStep> read_solution(const std::string& text, const std::stri
       } else if (item["answer"]) {
         s.kind = SolutionStep::Kind::answer;
         if (auto t = yaml::scalar(item["answer"], "'answer'", file, diags)) s.text = t->text;
-        if (!item["unknown"]) diags.error(yaml::where(item, file), "an answer needs its 'unknown' (e.g. {answer: \"2*m_B*F/(9*m_A + 4*m_B)\", unknown: T})");
-        else if (auto u = yaml::scalar(item["unknown"], "'unknown'", file, diags)) s.unknown = u->text;
+        if (!item["unknown"])
+          diags.error(yaml::where(item, file),
+                      "an answer needs its 'unknown' (e.g. {answer: \"2*m_B*F/(9*m_A + 4*m_B)\", unknown: T})");
+        else if (auto u = yaml::scalar(item["unknown"], "'unknown'", file, diags))
+          s.unknown = u->text;
       } else {
         diags.error(yaml::where(item, file), "a step needs 'equation', 'answer' or 'fbd'");
         continue;
@@ -86,13 +96,15 @@ Rubric read_rubric(const std::string& text, const std::string& file, const Model
   diags.throw_if_any();
   const yaml::Node root = doc.root();
   Rubric r;
-  if (!yaml::check_map(root, {"fbds", "balances", "constraints", "answers", "penalty", "fbd"}, "the rubric", file, diags)) {
+  if (!yaml::check_map(root, {"fbds", "balances", "constraints", "answers", "penalty", "fbd"}, "the rubric", file,
+                       diags)) {
     diags.throw_if_any();
     return r;
   }
   double fbds = 0, penalty = 0;
-  for (const auto& [key, field] : {std::pair{"fbds", &fbds}, std::pair{"balances", &r.balances}, std::pair{"constraints", &r.constraints},
-                                   std::pair{"answers", &r.answers}, std::pair{"penalty", &penalty}}) {
+  for (const auto& [key, field] :
+       {std::pair{"fbds", &fbds}, std::pair{"balances", &r.balances}, std::pair{"constraints", &r.constraints},
+        std::pair{"answers", &r.answers}, std::pair{"penalty", &penalty}}) {
     const yaml::Node n = root[key];
     if (!n) {
       *field = 0;  // a part the rubric does not name is not graded
@@ -103,7 +115,8 @@ Rubric read_rubric(const std::string& text, const std::string& file, const Model
     char* end = nullptr;
     const double v = std::strtod(t->text.c_str(), &end);
     if (t->text.empty() || *end != '\0' || !(v >= 0) || v > 1000)
-      diags.error(yaml::where(n, file), std::string("'") + key + "' is not a number of points (expected a number from 0 to 1000)");
+      diags.error(yaml::where(n, file),
+                  std::string("'") + key + "' is not a number of points (expected a number from 0 to 1000)");
     else
       *field = v;
   }
@@ -118,7 +131,8 @@ Rubric read_rubric(const std::string& text, const std::string& file, const Model
 }
 
 std::vector<std::string> equations_given(const CheckResult& r) {
-  if (r.combination.empty()) return r.identified_as.empty() ? std::vector<std::string>{} : std::vector<std::string>{r.identified_as.front()};
+  if (r.combination.empty())
+    return r.identified_as.empty() ? std::vector<std::string>{} : std::vector<std::string>{r.identified_as.front()};
   std::vector<std::string> out;
   for (const auto& p : r.combination) {
     if (!p.plain) return {};  // derived by eliminating unknowns
@@ -133,7 +147,8 @@ namespace {
 struct Given {
   std::set<std::string> equations;  // the derivation's labels
   std::set<std::string> answered;
-  std::map<std::vector<std::string>, double> diagrams;  // sorted bodies -> the best score of a diagram of them (a fraction)
+  std::map<std::vector<std::string>, double>
+      diagrams;  // sorted bodies -> the best score of a diagram of them (a fraction)
   bool any_diagram = false;
 };
 
@@ -156,13 +171,16 @@ CheckResult grade_diagram(const Model& model, const SolutionStep& s, const FbdRu
   if (!problems.empty()) r.summary = format(problems.front());
   std::vector<std::string> key = s.fbd.bodies;
   std::sort(key.begin(), key.end());
-  if (r.verdict == Verdict::correct || r.verdict == Verdict::incorrect) given.diagrams[key] = std::max(given.diagrams[key], r.score);
+  if (r.verdict == Verdict::correct || r.verdict == Verdict::incorrect)
+    given.diagrams[key] = std::max(given.diagrams[key], r.score);
   return r;
 }
 
-SolutionGrade::Step grade_step(const Checker& checker, const Model& model, const SolutionStep& s, const FbdRubric& rubric, Given& given) {
+SolutionGrade::Step grade_step(const Checker& checker, const Model& model, const SolutionStep& s,
+                               const FbdRubric& rubric, Given& given) {
   if (s.kind == SolutionStep::Kind::fbd) return {s, grade_diagram(model, s, rubric, given), ""};
-  CheckResult r = s.kind == SolutionStep::Kind::equation ? checker.check_equation(s.text) : checker.check(s.unknown, s.text);
+  CheckResult r =
+      s.kind == SolutionStep::Kind::equation ? checker.check_equation(s.text) : checker.check(s.unknown, s.text);
   if (r.verdict != Verdict::correct) return {s, std::move(r), ""};
   if (s.kind == SolutionStep::Kind::answer) {
     given.answered.insert(s.unknown);
@@ -194,9 +212,11 @@ Needs needs_of(const Checker& checker) {
     for (const auto& l : labels)
       if (std::find(n.equations.begin(), n.equations.end(), l) == n.equations.end()) n.equations.push_back(l);
   }
-  if (checker.asked().empty()) n.why_not = "the problem asks for no unknown that can be checked";
+  if (checker.asked().empty())
+    n.why_not = "the problem asks for no unknown that can be checked";
   else if (!n.undetermined.empty())
-    n.why_not = "tackle cannot tell which equations " + and_list(n.undetermined) + (n.undetermined.size() == 1 ? " needs" : " need");
+    n.why_not = "tackle cannot tell which equations " + and_list(n.undetermined) +
+                (n.undetermined.size() == 1 ? " needs" : " need");
   return n;
 }
 
@@ -208,15 +228,19 @@ SolutionGrade::Part not_graded(const std::string& name, const std::string& why) 
 }
 
 // `earned` (a sum of fractions) of `of` items, for `points`.
-SolutionGrade::Part graded(const std::string& name, double points, double earned, std::size_t done, std::size_t of, std::vector<std::string> missing) {
+SolutionGrade::Part graded(const std::string& name, double points, double earned, std::size_t done, std::size_t of,
+                           std::vector<std::string> missing) {
   return {name, points * earned / static_cast<double>(of), points, done, of, std::move(missing), ""};
 }
 
-std::string group_name(const std::vector<std::string>& key) { return key.size() == 1 ? key.front() : "the system of " + and_list(key); }
+std::string group_name(const std::vector<std::string>& key) {
+  return key.size() == 1 ? key.front() : "the system of " + and_list(key);
+}
 
 // The diagrams the needed balances are written from: one per body or system balanced, each
 // earning in proportion to its best diagram's score.
-SolutionGrade::Part diagrams_part(const Checker& checker, const Model& model, const Needs& needs, const Given& given, double points) {
+SolutionGrade::Part diagrams_part(const Checker& checker, const Model& model, const Needs& needs, const Given& given,
+                                  double points) {
   if (!needs.why_not.empty()) return not_graded("fbds", needs.why_not);
   std::vector<std::vector<std::string>> wanted;
   for (const auto& l : needs.equations) {
@@ -244,24 +268,31 @@ SolutionGrade::Part diagrams_part(const Checker& checker, const Model& model, co
 }
 
 // The balances' and the constraints' parts: the needed ones the steps give.
-void equation_parts(const Checker& checker, const Needs& needs, const Given& given, const Rubric& rubric, std::vector<SolutionGrade::Part>& out) {
+void equation_parts(const Checker& checker, const Needs& needs, const Given& given, const Rubric& rubric,
+                    std::vector<SolutionGrade::Part>& out) {
   std::size_t of[2] = {0, 0}, done[2] = {0, 0};
   std::vector<std::string> missing[2];
   for (const auto& l : needs.equations) {
     const Equation* e = checker.derivation_equation(l);
     const int k = e && is_balance(*e) ? 0 : 1;
     ++of[k];
-    if (given.equations.count(l)) ++done[k];
-    else missing[k].push_back(l);
+    if (given.equations.count(l))
+      ++done[k];
+    else
+      missing[k].push_back(l);
   }
   const char* names[2] = {"balances", "constraints"};
   const double points[2] = {rubric.balances, rubric.constraints};
-  const char* none[2] = {"no balance is needed for the unknowns asked", "no constraint is needed for the unknowns asked"};
+  const char* none[2] = {"no balance is needed for the unknowns asked",
+                         "no constraint is needed for the unknowns asked"};
   for (int k = 0; k < 2; ++k) {
     if (points[k] <= 0) continue;
-    if (!needs.why_not.empty()) out.push_back(not_graded(names[k], needs.why_not));
-    else if (of[k] == 0) out.push_back(not_graded(names[k], none[k]));
-    else out.push_back(graded(names[k], points[k], static_cast<double>(done[k]), done[k], of[k], missing[k]));
+    if (!needs.why_not.empty())
+      out.push_back(not_graded(names[k], needs.why_not));
+    else if (of[k] == 0)
+      out.push_back(not_graded(names[k], none[k]));
+    else
+      out.push_back(graded(names[k], points[k], static_cast<double>(done[k]), done[k], of[k], missing[k]));
   }
 }
 
@@ -270,8 +301,10 @@ SolutionGrade::Part answers_part(const Checker& checker, const Given& given, dou
   std::size_t done = 0;
   std::vector<std::string> missing;
   for (const auto& u : checker.asked()) {
-    if (given.answered.count(u)) ++done;
-    else missing.push_back(u);
+    if (given.answered.count(u))
+      ++done;
+    else
+      missing.push_back(u);
   }
   return graded("answers", points, static_cast<double>(done), done, checker.asked().size(), missing);
 }
@@ -290,8 +323,8 @@ void take_penalty(SolutionGrade& g, const Rubric& rubric) {
 
 }  // namespace
 
-SolutionGrade grade_solution(const Checker& checker, const Model& model, const std::vector<SolutionStep>& steps, const Rubric& rubric,
-                             std::optional<std::chrono::steady_clock::time_point> deadline) {
+SolutionGrade grade_solution(const Checker& checker, const Model& model, const std::vector<SolutionStep>& steps,
+                             const Rubric& rubric, std::optional<std::chrono::steady_clock::time_point> deadline) {
   SolutionGrade g;
   Given given;
   for (std::size_t i = 0; i < steps.size(); ++i) {
@@ -299,7 +332,8 @@ SolutionGrade grade_solution(const Checker& checker, const Model& model, const s
       CheckResult late;
       late.unknown = steps[i].unknown;
       late.equation = steps[i].kind == SolutionStep::Kind::equation;
-      late.conclude(Verdict::undecided, "time_limit", "not checked: the solution took longer than its time limit to check");
+      late.conclude(Verdict::undecided, "time_limit",
+                    "not checked: the solution took longer than its time limit to check");
       g.steps.push_back({steps[i], std::move(late), ""});
     } else {
       g.steps.push_back(grade_step(checker, model, steps[i], rubric.fbd, given));
@@ -332,7 +366,8 @@ std::string part_line(const SolutionGrade::Part& p) {
 
 // What the wrong steps took: "2 incorrect steps, 0.5 points each".
 std::string penalty_phrase(const SolutionGrade& g) {
-  std::string out = fmt::format("{} incorrect step{}, {:g} points each", g.wrong, g.wrong == 1 ? "" : "s", g.penalty_each);
+  std::string out =
+      fmt::format("{} incorrect step{}, {:g} points each", g.wrong, g.wrong == 1 ? "" : "s", g.penalty_each);
   if (g.penalty < g.penalty_each * static_cast<double>(g.wrong) - 1e-12) out += "; no more than the parts earned";
   return out;
 }
@@ -375,12 +410,14 @@ std::string solution_json(const SolutionGrade& g) {
   out += "  \"parts\": [";
   for (std::size_t i = 0; i < g.parts.size(); ++i) {
     const auto& p = g.parts[i];
-    out += fmt::format("{}{{\"name\": {}, \"graded\": {}, \"score\": {}, \"max_score\": {}, \"done\": {}, \"of\": {}{}}}", i ? ", " : "",
-                       json_quoted(p.name), p.not_graded.empty() ? "true" : "false", json_number(p.score), json_number(p.max), p.done, p.of,
-                       p.not_graded.empty() ? "" : ", \"not_graded\": " + json_quoted(p.not_graded));
+    out += fmt::format(
+        "{}{{\"name\": {}, \"graded\": {}, \"score\": {}, \"max_score\": {}, \"done\": {}, \"of\": {}{}}}",
+        i ? ", " : "", json_quoted(p.name), p.not_graded.empty() ? "true" : "false", json_number(p.score),
+        json_number(p.max), p.done, p.of, p.not_graded.empty() ? "" : ", \"not_graded\": " + json_quoted(p.not_graded));
   }
   out += "],\n";
-  out += fmt::format("  \"wrong\": {},\n  \"penalty_each\": {},\n  \"penalty\": {},\n", g.wrong, json_number(g.penalty_each), json_number(g.penalty));
+  out += fmt::format("  \"wrong\": {},\n  \"penalty_each\": {},\n  \"penalty\": {},\n", g.wrong,
+                     json_number(g.penalty_each), json_number(g.penalty));
   out += "  \"score\": " + json_number(g.score) + ",\n  \"max_score\": " + json_number(g.max_score) + "\n}\n";
   return out;
 }
@@ -410,9 +447,11 @@ std::string solution_results(const SolutionGrade& g, ResultsFormat format) {
   if (g.wrong > 0 && g.penalty_each > 0) test("wrong steps", -g.penalty, 0, false, penalty_phrase(g));
   std::string out = "{\n  \"tests\": [" + tests + (tests.empty() ? "],\n" : "\n  ],\n");
   const std::string said = fmt::format("{:g} of {:g} points", g.score, g.max_score);
-  if (gradescope) out += "  \"score\": " + json_number(g.score) + ",\n  \"output\": " + json_quoted(said) + "\n}\n";
-  else out += "  \"gradable\": true,\n  \"score\": " + json_number(g.max_score > 0 ? g.score / g.max_score : 0.0) +
-              ",\n  \"message\": " + json_quoted(said) + "\n}\n";
+  if (gradescope)
+    out += "  \"score\": " + json_number(g.score) + ",\n  \"output\": " + json_quoted(said) + "\n}\n";
+  else
+    out += "  \"gradable\": true,\n  \"score\": " + json_number(g.max_score > 0 ? g.score / g.max_score : 0.0) +
+           ",\n  \"message\": " + json_quoted(said) + "\n}\n";
   return out;
 }
 

@@ -53,12 +53,12 @@ struct SolutionGrade {
   // a sum of them the student wrote (every coefficient a plain number); a length sum gives its
   // derivatives too.
   std::vector<std::string> used;
-  std::vector<std::string> missing;  // those the asked unknowns need that no correct step gives
+  std::vector<std::string> missing;        // those the asked unknowns need that no correct step gives
   std::optional<std::size_t> first_wrong;  // 1-based: the first step that is not correct
   struct Part {
     std::string name;  // balances, constraints, answers
     double score = 0, max = 0;
-    std::size_t done = 0, of = 0;  // equations (or answers) given, of those wanted
+    std::size_t done = 0, of = 0;      // equations (or answers) given, of those wanted
     std::vector<std::string> missing;  // the needed equations of this part no step gives (unknowns not answered)
     // Why the part is not awarded (nothing is needed of it, or what is needed cannot be
     // determined): its points are then neither given nor counted in max_score. Empty: graded.
@@ -89,8 +89,9 @@ struct SolutionGrade {
 /// deadline, a step not begun by then is not checked: its verdict is undecided (code
 /// `time_limit`), it gives nothing, and the parts are graded on the steps checked (a step
 /// begun finishes within its own budget: an answer's 250 ms, an equation's size limits).
-[[nodiscard]] SolutionGrade grade_solution(const Checker& checker, const Model& model, const std::vector<SolutionStep>& steps, const Rubric& rubric,
-                                           std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt);
+[[nodiscard]] SolutionGrade grade_solution(
+    const Checker& checker, const Model& model, const std::vector<SolutionStep>& steps, const Rubric& rubric,
+    std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt);
 
 /// The grade as text (what a student reads) and as JSON.
 [[nodiscard]] std::string solution_text(const SolutionGrade& g);

@@ -16,15 +16,15 @@ namespace tackle::check_detail {
 // result, the character (0-based) of the input it comes from, for columns in messages.
 std::string as_typed(std::string_view in, std::vector<int>& origin) {
   static const std::vector<std::pair<std::string_view, std::string_view>> table{
-      {"\u00b7", "*"}, {"\u00d7", "*"}, {"\u22c5", "*"}, {"\u2217", "*"}, {"\u2212", "-"}, {"\u2013", "-"}, {"\u00f7", "/"},
-      {"\u2215", "/"}, {"\u00a0", " "}, {"\u2009", " "}, {"\u202f", " "}, {"\u00b0", " deg"},
-      {"\u03b1", "alpha"}, {"\u03b2", "beta"}, {"\u03b3", "gamma"}, {"\u03b4", "delta"}, {"\u03b5", "epsilon"},
-      {"\u03b6", "zeta"}, {"\u03b7", "eta"}, {"\u03b8", "theta"}, {"\u03d1", "theta"}, {"\u03b9", "iota"},
-      {"\u03ba", "kappa"}, {"\u03bb", "lambda"}, {"\u03bc", "mu"}, {"\u00b5", "mu"}, {"\u03bd", "nu"}, {"\u03be", "xi"},
-      {"\u03c0", "pi"}, {"\u03c1", "rho"}, {"\u03c3", "sigma"}, {"\u03c4", "tau"}, {"\u03c6", "phi"}, {"\u03d5", "phi"},
-      {"\u03c7", "chi"}, {"\u03c8", "psi"}, {"\u03c9", "omega"}, {"\u0393", "Gamma"}, {"\u0394", "Delta"},
-      {"\u0398", "Theta"}, {"\u039b", "Lambda"}, {"\u03a3", "Sigma"}, {"\u03a6", "Phi"}, {"\u03a8", "Psi"},
-      {"\u03a9", "Omega"}};
+      {"\u00b7", "*"},      {"\u00d7", "*"},       {"\u22c5", "*"},     {"\u2217", "*"},      {"\u2212", "-"},
+      {"\u2013", "-"},      {"\u00f7", "/"},       {"\u2215", "/"},     {"\u00a0", " "},      {"\u2009", " "},
+      {"\u202f", " "},      {"\u00b0", " deg"},    {"\u03b1", "alpha"}, {"\u03b2", "beta"},   {"\u03b3", "gamma"},
+      {"\u03b4", "delta"},  {"\u03b5", "epsilon"}, {"\u03b6", "zeta"},  {"\u03b7", "eta"},    {"\u03b8", "theta"},
+      {"\u03d1", "theta"},  {"\u03b9", "iota"},    {"\u03ba", "kappa"}, {"\u03bb", "lambda"}, {"\u03bc", "mu"},
+      {"\u00b5", "mu"},     {"\u03bd", "nu"},      {"\u03be", "xi"},    {"\u03c0", "pi"},     {"\u03c1", "rho"},
+      {"\u03c3", "sigma"},  {"\u03c4", "tau"},     {"\u03c6", "phi"},   {"\u03d5", "phi"},    {"\u03c7", "chi"},
+      {"\u03c8", "psi"},    {"\u03c9", "omega"},   {"\u0393", "Gamma"}, {"\u0394", "Delta"},  {"\u0398", "Theta"},
+      {"\u039b", "Lambda"}, {"\u03a3", "Sigma"},   {"\u03a6", "Phi"},   {"\u03a8", "Psi"},    {"\u03a9", "Omega"}};
   static const std::vector<std::string_view> superscripts{"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
                                                           "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
   static const std::string_view super_minus = "\u207b", root = "\u221a";

@@ -57,7 +57,8 @@ bool standard_output_written() {
   const int err = errno;
   if (flushed && std::cout && !std::ferror(stdout)) return true;
   if (!said)
-    std::cerr << "tackle: cannot write to standard output" << (err != 0 ? std::string(" (") + std::strerror(err) + ")" : "") << "\n";
+    std::cerr << "tackle: cannot write to standard output"
+              << (err != 0 ? std::string(" (") + std::strerror(err) + ")" : "") << "\n";
   said = true;
   return false;
 }
@@ -99,21 +100,22 @@ std::vector<std::string> split_commas(const std::string& list) {
   return out;
 }
 
-
 // CLI11's ranges let NaN through (every comparison with it is false), and its conversion of
 // an unsigned number wraps -1 and saturates past 2^64 - 1: these check the text first.
 const CLI::Validator finite_number(
     [](std::string& text) -> std::string {
       char* end = nullptr;
       const double v = std::strtod(text.c_str(), &end);
-      if (text.empty() || *end != '\0' || !std::isfinite(v)) return "'" + tackle::printable(text) + "' is not a finite number";
+      if (text.empty() || *end != '\0' || !std::isfinite(v))
+        return "'" + tackle::printable(text) + "' is not a finite number";
       return {};
     },
     "NUMBER");
 const CLI::Validator seed_number(
     [](std::string& text) -> std::string {
       const std::string max = std::to_string(std::numeric_limits<std::uint64_t>::max());
-      const bool digits = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+      const bool digits =
+          !text.empty() && std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
       const std::string significant = text.substr(std::min(text.find_first_not_of('0'), text.size()));
       if (!digits || significant.size() > max.size() || (significant.size() == max.size() && significant > max))
         return "'" + tackle::printable(text) + "' is not a seed (expected a whole number from 0 to " + max + ")";
@@ -135,7 +137,7 @@ struct Options {
   std::string key_format = "markdown";
   int variants = 0;
   unsigned long long seed = 1;
-  bool seeded = false;  // check: --seed given
+  bool seeded = false;       // check: --seed given
   int time_budget_ms = 250;  // check: per answer
   // sweep and simulate
   std::string vary, plot, csv_out, svg_out, pgf_out, sim_plot;
@@ -177,8 +179,8 @@ int run_report(const Options& o, const tackle::RuleSet& rules, bool full) {
   const auto whole = tackle::analyze_file(o.file, rules);
   // solve prints no steps, figures or plots; text and JSON show no figures.
   const tackle::Format format = format_of(o.format);
-  const tackle::ReportOptions options{.digits = o.digits, .narrate = full,
-                                      .figures = format != tackle::Format::text && format != tackle::Format::json};
+  const tackle::ReportOptions options{
+      .digits = o.digits, .narrate = full, .figures = format != tackle::Format::text && format != tackle::Format::json};
   // Written as it is made: the answers of a chain of 2048 blocks are 88 MB of text.
   if (o.phase.empty() && !whole->phases.empty()) {
     const auto phases = tackle::explain_phases(*whole, options);
@@ -231,8 +233,9 @@ Parts analyze_parts(const Options& o, const tackle::RuleSet& rules) {
   if (o.variants > 0 && !any) {
     std::vector<tackle::Diagnostic> none;
     for (const auto& f : o.key_files)
-      none.push_back({{f, 1, 1}, "variants were asked for, but no parameter has a 'range' to draw them from "
-                                 "(expected, for instance, F: {value: 130, unit: N, range: [100, 160]})"});
+      none.push_back({{f, 1, 1},
+                      "variants were asked for, but no parameter has a 'range' to draw them from "
+                      "(expected, for instance, F: {value: 130, unit: N, range: [100, 160]})"});
     throw tackle::InputError(none);
   }
   return p;
@@ -254,13 +257,16 @@ int run_sheet(const Options& o, const tackle::RuleSet& rules) {
   for (std::size_t i = 0; i < p.derivations.size(); ++i)
     for (std::size_t k = 0; k < p.derivations[i].size(); ++k) {
       entries.push_back({&p.derivations[i][k], &p.phases[i][k]->model, p.variants[i][k]});
-      if (!p.phases[i][k]->model.statement && (generated.empty() || generated.back() != o.key_files[i])) generated.push_back(o.key_files[i]);
+      if (!p.phases[i][k]->model.statement && (generated.empty() || generated.back() != o.key_files[i]))
+        generated.push_back(o.key_files[i]);
     }
   // Said once: a sheet whose statements tackle wrote from the descriptions.
   if (!generated.empty())
-    std::cerr << "tackle: warning: " << (generated.size() == 1 ? generated[0] + " has" : std::to_string(generated.size()) + " files have")
-              << " no 'statement'; the sheet states the problem from the description (its bodies, connections and given "
-                 "values)\n";
+    std::cerr
+        << "tackle: warning: "
+        << (generated.size() == 1 ? generated[0] + " has" : std::to_string(generated.size()) + " files have")
+        << " no 'statement'; the sheet states the problem from the description (its bodies, connections and given "
+           "values)\n";
   return emit(tackle::write_sheet(entries, format_of(o.key_format), o.figures), o.out);
 }
 
@@ -293,8 +299,8 @@ int run_isolate(const Options& o, const tackle::RuleSet& rules) {
     if (!parsed.value || !tackle::contains(unknowns, *parsed.value)) {
       std::vector<std::string> names;
       for (const auto& u : unknowns) names.push_back(model.symbols->find(u)->name);
-      std::cerr << o.file << ": '" << o.target << "' is not an unknown of this problem (unknowns: "
-                << tackle::join(names) << ")\n";
+      std::cerr << o.file << ": '" << o.target
+                << "' is not an unknown of this problem (unknowns: " << tackle::join(names) << ")\n";
       return 1;
     }
     wanted = {*parsed.value};
@@ -324,7 +330,8 @@ int run_sweep(const Options& o, const tackle::RuleSet& rules) {
   }
   const tackle::Derivation d = tackle::explain(*analysis, tackle::ReportOptions{.narrate = false});
   const auto result = tackle::run_sweep(analysis->model, d, spec, tackle::Location{"--vary/--plot", 0, 0});
-  for (const auto& [path, text] : {std::pair{o.svg_out, tackle::sweep_svg(result)}, std::pair{o.pgf_out, tackle::sweep_pgfplots(result)}})
+  for (const auto& [path, text] :
+       {std::pair{o.svg_out, tackle::sweep_svg(result)}, std::pair{o.pgf_out, tackle::sweep_pgfplots(result)}})
     if (!path.empty() && emit(text, path) != 0) return 1;
   return emit(tackle::sweep_csv(result), o.csv_out);
 }
@@ -338,8 +345,9 @@ int run_simulate(const Options& o, const tackle::RuleSet& rules) {
   spec.samples = o.samples;
   if (!o.sim_plot.empty()) spec.plot = split_commas(o.sim_plot);
   const auto result = tackle::simulate(*analysis, spec, tackle::Location{"--until/--plot", 0, 0});
-  for (const auto& [path, text] : {std::pair{o.csv_out, tackle::sweep_csv(result.table)}, std::pair{o.svg_out, tackle::sweep_svg(result.table)},
-                                   std::pair{o.pgf_out, tackle::sweep_pgfplots(result.table)}})
+  for (const auto& [path, text] :
+       {std::pair{o.csv_out, tackle::sweep_csv(result.table)}, std::pair{o.svg_out, tackle::sweep_svg(result.table)},
+        std::pair{o.pgf_out, tackle::sweep_pgfplots(result.table)}})
     if (!path.empty() && emit(text, path) != 0) return 1;
   return emit(tackle::simulation_text(result), o.out);
 }
@@ -380,7 +388,7 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
     tackle::GradeOptions grade;
     grade.format = o.results_format == "prairielearn" ? tackle::ResultsFormat::prairielearn
                    : o.results_format == "jsonl"      ? tackle::ResultsFormat::jsonl
-                                                    : tackle::ResultsFormat::gradescope;
+                                                      : tackle::ResultsFormat::gradescope;
     grade.top_level_score = o.top_level_score;
     grade.set = set;
     for (const auto& p : o.points_text) {
@@ -392,8 +400,10 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
         std::cerr << "tackle check: --points " << p << ": expected a number of points from 0 to 10^6, or NAME=N\n";
         return 2;
       }
-      if (eq == std::string::npos) grade.points = v;
-      else grade.points_for[p.substr(0, eq)] = v;
+      if (eq == std::string::npos)
+        grade.points = v;
+      else
+        grade.points_for[p.substr(0, eq)] = v;
     }
     grade.source = o.batch;
     grade.model = &analysis->model;
@@ -414,7 +424,8 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
     // The outputs go through temporary files and are renamed into place only when the whole
     // batch was graded.
     std::optional<tackle::AtomicOutput> out_file, results_file, gradebook_file;
-    for (auto& [file, path] : {std::pair{&out_file, &o.out}, std::pair{&results_file, &o.results}, std::pair{&gradebook_file, &o.gradebook}}) {
+    for (auto& [file, path] : {std::pair{&out_file, &o.out}, std::pair{&results_file, &o.results},
+                               std::pair{&gradebook_file, &o.gradebook}}) {
       if (path->empty() || *path == "-") continue;
       file->emplace(*path);
       if (!(*file)->ok()) {
@@ -435,11 +446,14 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
       if (const auto problems = book->problems(); !problems.empty()) throw tackle::InputError(problems);
       const auto format = tackle::gradebook_format(o.gradebook_format);
       const std::string csv = book->csv(format);
-      if (gradebook_file) gradebook_file->stream() << csv;
-      else if (std::cout << csv; !standard_output_written()) return 1;
+      if (gradebook_file)
+        gradebook_file->stream() << csv;
+      else if (std::cout << csv; !standard_output_written())
+        return 1;
       if (format != tackle::GradebookFormat::plain)
         for (const auto& cell : book->invalid_cells())
-          std::cerr << "tackle check: " << o.gradebook << ": " << cell << " cannot be graded as typed: its cell is left without a grade\n";
+          std::cerr << "tackle check: " << o.gradebook << ": " << cell
+                    << " cannot be graded as typed: its cell is left without a grade\n";
     }
     for (auto* file : {&out_file, &results_file, &gradebook_file})
       if (*file && !(*file)->commit()) {
@@ -450,7 +464,9 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
   }
   if (!o.fbd.empty()) {
     const tackle::StudentFbd fbd = tackle::read_fbd_file(tackle::read_text_file(o.fbd), o.fbd, analysis->model);
-    const tackle::Rubric rubric = o.rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(tackle::read_text_file(o.rubric), o.rubric, analysis->model);
+    const tackle::Rubric rubric =
+        o.rubric.empty() ? tackle::Rubric{}
+                         : tackle::read_rubric(tackle::read_text_file(o.rubric), o.rubric, analysis->model);
     std::vector<tackle::Diagnostic> problems;
     const tackle::FbdGrade grade = tackle::check_fbd(analysis->model, fbd, rubric.fbd, problems);
     if (!problems.empty()) throw tackle::InputError(problems);  // a name the problem does not have
@@ -458,12 +474,16 @@ int run_check(const Options& o, const tackle::RuleSet& rules) {
   }
   if (!o.steps.empty()) {
     const auto solution = tackle::read_solution(tackle::read_text_file(o.steps), o.steps, analysis->model);
-    const tackle::Rubric rubric = o.rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(tackle::read_text_file(o.rubric), o.rubric, analysis->model);
+    const tackle::Rubric rubric =
+        o.rubric.empty() ? tackle::Rubric{}
+                         : tackle::read_rubric(tackle::read_text_file(o.rubric), o.rubric, analysis->model);
     const tackle::SolutionGrade grade = tackle::grade_solution(checker, analysis->model, solution, rubric);
     if (!o.results.empty()) {
-      const auto format = o.results_format == "prairielearn" ? tackle::ResultsFormat::prairielearn : tackle::ResultsFormat::gradescope;
+      const auto format =
+          o.results_format == "prairielearn" ? tackle::ResultsFormat::prairielearn : tackle::ResultsFormat::gradescope;
       if (o.results_format == "jsonl") {
-        std::cerr << "tackle check: --steps writes gradescope or prairielearn results, not jsonl (its --format json is the lines' form)\n";
+        std::cerr << "tackle check: --steps writes gradescope or prairielearn results, not jsonl (its --format json is "
+                     "the lines' form)\n";
         return 2;
       }
       if (const int rc = emit(tackle::solution_results(grade, format), o.results); rc != 0) return rc;
@@ -497,9 +517,12 @@ int run(int argc, char** argv) {
   Options o;
   CLI::App app{"tackle: free-body-diagram equations for constrained straight-line motion, solved in closed form"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("tackle ") + TACKLE_VERSION + " (rules: " + tackle::default_rules_dir() + ")");
+  app.set_version_flag("--version",
+                       std::string("tackle ") + TACKLE_VERSION + " (rules: " + tackle::default_rules_dir() + ")");
   app.add_option("--rules", o.rules_dir, "Directory of connection rules (rules/*.yaml)")->capture_default_str();
-  auto with_phase = [&](CLI::App* sub) { sub->add_option("--phase", o.phase, "A phase of a description with 'phases', by name"); };
+  auto with_phase = [&](CLI::App* sub) {
+    sub->add_option("--phase", o.phase, "A phase of a description with 'phases', by name");
+  };
   auto with_common_options = [&](CLI::App* sub) {
     sub->add_option("file", o.file, "Problem description (YAML)")->required();
     with_phase(sub);
@@ -523,17 +546,21 @@ int run(int argc, char** argv) {
   auto* derive = add("derive", "Print the derivation: FBD equations, constraints, solve, results", with_common_options);
   add("solve", "Print the answers only: closed forms and numbers", with_common_options);
 
-  auto* isolate = add("isolate", "Find one balance equation (LMB along a direction, AMB about a point "
-                                 "and axis) that contains an unknown alone",
+  auto* isolate = add("isolate",
+                      "Find one balance equation (LMB along a direction, AMB about a point "
+                      "and axis) that contains an unknown alone",
                       [&](CLI::App* isolate) {
-    isolate->add_option("file", o.file, "Problem description (YAML)")->required();
-    auto* target_opt = isolate->add_option("unknown", o.target, "The unknown, e.g. T_HI");
-    auto* all_opt = isolate->add_flag("--all", o.all, "Report for every unknown whether one equation gives it");
-    target_opt->excludes(all_opt);
-    isolate->add_option("--format", o.format, "Output format")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
-    isolate->add_option("-o,--output", o.out, "Write to this file instead of standard output");
-    with_phase(isolate);
-  });
+                        isolate->add_option("file", o.file, "Problem description (YAML)")->required();
+                        auto* target_opt = isolate->add_option("unknown", o.target, "The unknown, e.g. T_HI");
+                        auto* all_opt =
+                            isolate->add_flag("--all", o.all, "Report for every unknown whether one equation gives it");
+                        target_opt->excludes(all_opt);
+                        isolate->add_option("--format", o.format, "Output format")
+                            ->check(CLI::IsMember({"text", "json"}))
+                            ->capture_default_str();
+                        isolate->add_option("-o,--output", o.out, "Write to this file instead of standard output");
+                        with_phase(isolate);
+                      });
 
   auto* key = add("key", "An answer key for one or more problems, with numeric variants if asked", [&](CLI::App* key) {
     key->add_option("files", o.key_files, "Problem descriptions (YAML)")->required();
@@ -549,133 +576,194 @@ int run(int argc, char** argv) {
     key->add_option("-o,--output", o.out, "Write to this file instead of standard output");
   });
 
-  auto* sheet = add("sheet", "Problem sheets: each problem's statement with its numbers, per variant "
-                             "(the same numbers as key with the same seed)",
-                    [&](CLI::App* sheet) {
-    sheet->add_option("files", o.key_files, "Problem descriptions (YAML)")->required();
-    sheet->add_option("--format", o.key_format, "Output format")->check(CLI::IsMember({"latex", "markdown", "html"}))->capture_default_str();
-    sheet->add_flag("--figures", o.figures, "Also draw each problem's free body diagrams under its statement (a 1-D or 2-D mechanism's sketch is always drawn)");
-    sheet->add_option("--variants", o.variants, "Numeric variants per problem, drawn from the parameters' 'range'")
-        ->check(CLI::Range(0, 10000));
-    sheet->add_option("--seed", o.seed, "Seed for the variants (as for key)")->check(seed_number)->capture_default_str();
-    sheet->add_option("--digits", o.digits, "Significant digits of the numbers")->check(CLI::Range(1, 1000));
-    sheet->add_option("-o,--output", o.out, "Write to this file instead of standard output");
-  });
+  auto* sheet = add(
+      "sheet",
+      "Problem sheets: each problem's statement with its numbers, per variant "
+      "(the same numbers as key with the same seed)",
+      [&](CLI::App* sheet) {
+        sheet->add_option("files", o.key_files, "Problem descriptions (YAML)")->required();
+        sheet->add_option("--format", o.key_format, "Output format")
+            ->check(CLI::IsMember({"latex", "markdown", "html"}))
+            ->capture_default_str();
+        sheet->add_flag("--figures", o.figures,
+                        "Also draw each problem's free body diagrams under its statement (a 1-D or 2-D mechanism's "
+                        "sketch is always drawn)");
+        sheet->add_option("--variants", o.variants, "Numeric variants per problem, drawn from the parameters' 'range'")
+            ->check(CLI::Range(0, 10000));
+        sheet->add_option("--seed", o.seed, "Seed for the variants (as for key)")
+            ->check(seed_number)
+            ->capture_default_str();
+        sheet->add_option("--digits", o.digits, "Significant digits of the numbers")->check(CLI::Range(1, 1000));
+        sheet->add_option("-o,--output", o.out, "Write to this file instead of standard output");
+      });
 
-  auto* page = add("page", "A page to try the step checker: the problem, its sketch and a worked-solution form whose "
-                           "steps a checker (scripts/step-server) judges as they are typed",
+  auto* page = add("page",
+                   "A page to try the step checker: the problem, its sketch and a worked-solution form whose "
+                   "steps a checker (scripts/step-server) judges as they are typed",
                    [&](CLI::App* page) {
-    page->add_option("file", o.file, "Problem description (YAML)")->required();
-    page->add_option("--endpoint", o.endpoint, "Where the checker answers (POST {endpoint}/step and {endpoint}/solution): "
-                                               "a path or an http(s) URL; default: the page's own location")
-        ->check(CLI::Validator(
-            [](std::string& text) -> std::string {
-              const std::string problem = tackle::endpoint_problem(text);
-              return problem.empty() ? std::string() : "'" + tackle::printable(text) + "' " + problem;
-            },
-            "URL"));
-    page->add_option("-o,--output", o.out, "Write to this file instead of standard output");
-    with_phase(page);
-  });
+                     page->add_option("file", o.file, "Problem description (YAML)")->required();
+                     page->add_option("--endpoint", o.endpoint,
+                                      "Where the checker answers (POST {endpoint}/step and {endpoint}/solution): "
+                                      "a path or an http(s) URL; default: the page's own location")
+                         ->check(CLI::Validator(
+                             [](std::string& text) -> std::string {
+                               const std::string problem = tackle::endpoint_problem(text);
+                               return problem.empty() ? std::string() : "'" + tackle::printable(text) + "' " + problem;
+                             },
+                             "URL"));
+                     page->add_option("-o,--output", o.out, "Write to this file instead of standard output");
+                     with_phase(page);
+                   });
 
-  auto* sweep = add("sweep", "Evaluate the closed forms over a range of one parameter: CSV, SVG plot, pgfplots", [&](CLI::App* sweep) {
-    sweep->add_option("file", o.file, "Problem description (YAML)")->required();
-    sweep->add_option("--vary", o.vary, "name=start:end:count, in the parameter's unit (default: the description's sweep)");
-    sweep->add_option("--fix", o.fixes, "name=value, in the parameter's unit (repeatable)");
-    sweep->add_option("--against", o.against, "The horizontal axis: an expression in the parameters, e.g. h/l (default: the varied parameter)");
-    sweep->add_option("--plot", o.plot, "Comma-separated expressions in the answers and parameters, e.g. N_A,N_B,N_A-N_B");
-    sweep->add_option("--csv", o.csv_out, "Write the data as CSV here (default: standard output)");
-    sweep->add_option("--svg", o.svg_out, "Write an SVG plot here");
-    sweep->add_option("--pgfplots", o.pgf_out, "Write a pgfplots figure (LaTeX) here");
-    with_phase(sweep);
-  });
+  auto* sweep =
+      add("sweep", "Evaluate the closed forms over a range of one parameter: CSV, SVG plot, pgfplots",
+          [&](CLI::App* sweep) {
+            sweep->add_option("file", o.file, "Problem description (YAML)")->required();
+            sweep->add_option("--vary", o.vary,
+                              "name=start:end:count, in the parameter's unit (default: the description's sweep)");
+            sweep->add_option("--fix", o.fixes, "name=value, in the parameter's unit (repeatable)");
+            sweep->add_option(
+                "--against", o.against,
+                "The horizontal axis: an expression in the parameters, e.g. h/l (default: the varied parameter)");
+            sweep->add_option("--plot", o.plot,
+                              "Comma-separated expressions in the answers and parameters, e.g. N_A,N_B,N_A-N_B");
+            sweep->add_option("--csv", o.csv_out, "Write the data as CSV here (default: standard output)");
+            sweep->add_option("--svg", o.svg_out, "Write an SVG plot here");
+            sweep->add_option("--pgfplots", o.pgf_out, "Write a pgfplots figure (LaTeX) here");
+            with_phase(sweep);
+          });
 
-  auto* simulate = add("simulate", "Integrate the motion in time numerically, with events (a string going slack, "
-                                   "a contact lost, a body turning): a table, CSV, SVG, pgfplots",
-                       [&](CLI::App* simulate) {
-    simulate->add_option("file", o.file, "Problem description (YAML) with a 'motion' section")->required();
-    simulate->add_option("--until", o.until, "End time in seconds (default: the description's 'until')")
-        ->check(finite_number)
-        ->check(CLI::PositiveNumber);
-    simulate->add_option("--plot", o.sim_plot, "Comma-separated expressions in the answers, coordinates, rates, parameters and t, e.g. y,N");
-    simulate->add_option("--samples", o.samples, "Rows of the table, evenly spaced in time")->check(CLI::Range(2, 100000))->capture_default_str();
-    simulate->add_option("--csv", o.csv_out, "Write the table as CSV here");
-    simulate->add_option("--svg", o.svg_out, "Write an SVG plot here");
-    simulate->add_option("--pgfplots", o.pgf_out, "Write a pgfplots figure (LaTeX) here");
-    simulate->add_option("-o,--output", o.out, "Write the report (events and table) here instead of standard output");
-    with_phase(simulate);
-  });
+  auto* simulate =
+      add("simulate",
+          "Integrate the motion in time numerically, with events (a string going slack, "
+          "a contact lost, a body turning): a table, CSV, SVG, pgfplots",
+          [&](CLI::App* simulate) {
+            simulate->add_option("file", o.file, "Problem description (YAML) with a 'motion' section")->required();
+            simulate->add_option("--until", o.until, "End time in seconds (default: the description's 'until')")
+                ->check(finite_number)
+                ->check(CLI::PositiveNumber);
+            simulate->add_option(
+                "--plot", o.sim_plot,
+                "Comma-separated expressions in the answers, coordinates, rates, parameters and t, e.g. y,N");
+            simulate->add_option("--samples", o.samples, "Rows of the table, evenly spaced in time")
+                ->check(CLI::Range(2, 100000))
+                ->capture_default_str();
+            simulate->add_option("--csv", o.csv_out, "Write the table as CSV here");
+            simulate->add_option("--svg", o.svg_out, "Write an SVG plot here");
+            simulate->add_option("--pgfplots", o.pgf_out, "Write a pgfplots figure (LaTeX) here");
+            simulate->add_option("-o,--output", o.out,
+                                 "Write the report (events and table) here instead of standard output");
+            with_phase(simulate);
+          });
 
-  CLI::Option *answer_opt = nullptr, *batch_opt = nullptr, *equation_opt = nullptr, *steps_opt = nullptr, *fbd_opt = nullptr;
-  auto* check = add("check", "Check a student's answer (or a batch of them) against the closed form", [&](CLI::App* check) {
-    check->add_option("file", o.file, "Problem description (YAML)")->required();
-    auto* unknown_opt = check->add_option("--unknown", o.unknown, "The unknown the answer is for, e.g. T_HI");
-    answer_opt = check->add_option("--answer", o.answer, "The answer: an expression, 'T = ...', or a number with a unit");
-    equation_opt = check->add_option("--equation", o.equation,
-                                     "An equation the student wrote, e.g. '2*T - F = m_A*ddot(x_A)': is it one of the balances and "
-                                     "constraints, or does it follow from them?")
-                       ->each([&](const std::string&) { o.equation_given = true; });
-    steps_opt = check->add_option("--steps", o.steps,
-                                  "A worked solution (YAML: steps: [{fbd: ...}, {equation: ...}, {answer: ..., unknown: T}]) graded as a whole: "
-                                  "each step, the equations used and missing, the first wrong step, a score");
-    fbd_opt = check->add_option("--fbd", o.fbd,
-                                "A free body diagram the student drew (YAML: body: B, forces: [{name: T, at: pB, direction: [-1]}]): "
-                                "each force drawn, missing, extra or the wrong way, and a score");
-    check->add_option("--rubric", o.rubric, "With --steps or --fbd: points for FBDs, balances, constraints and answers, what a wrong step costs, and how an FBD is scored (YAML)");
-    batch_opt = check->add_option("--batch", o.batch, "JSON Lines file of {\"id\", \"unknown\", \"answer\"}, {\"id\", \"equation\"} or {\"id\", \"fbd\"} "
-                                                      "(- for standard input)");
-    auto* results_opt = check->add_option("--results", o.results, "With --batch or --steps: also write a grading platform's results file");
-    check->add_option("--results-format", o.results_format, "The results file's platform")
-        ->check(CLI::IsMember({"gradescope", "prairielearn", "jsonl"}))
-        ->capture_default_str()
-        ->needs(results_opt);
-    auto* gradebook_opt = check->add_option("--gradebook", o.gradebook, "With --batch: also write the class's gradebook (CSV): a row per line's \"student\", "
-                                                                      "a column per question \"id\", the points and the total");
-    check->add_option("--gradebook-format", o.gradebook_format, "The gradebook's layout: a spreadsheet's, or Canvas's or Moodle's grade import")
-        ->check(CLI::IsMember({"plain", "canvas", "moodle"}))
-        ->capture_default_str()
-        ->needs(gradebook_opt);
-    check->add_option("--jobs", o.jobs, "With --batch: grade with N processes side by side (0: one per core); the results are the same, in the batch's order")
-        ->check(CLI::Range(0, 256))
-        ->capture_default_str()
-        ->needs(batch_opt);
-    check->add_option("--points", o.points_text, "Points for each answer (N), or for one unknown's answers (NAME=N); repeatable")
-        ->needs(batch_opt);
-    check->add_flag("--top-level-score", o.top_level_score, "Gradescope: also write the total as the top-level score "
-                                                             "(it overrides the tests' sum)")
-        ->needs(results_opt);
-    check->add_option("--set", o.set_values, "A parameter's value for this check, in its stated unit (NAME=VALUE, repeatable): "
-                                             "a student's own variant");
-    check->add_flag("--reveal", o.reveal, "Name the correct value in the feedback (never, without it)");
-    check->add_option("--tolerance", o.tolerance, "Relative tolerance for numbers with units")
-        ->check(finite_number)
-        ->check(CLI::Range(0.0, 1.0))
-        ->capture_default_str();
-    check->add_option("--sig-figs", o.sig_figs, "Instead of the tolerance: numbers must match to this many significant figures")
-        ->check(CLI::Range(1, 15));
-    check->add_option("--seed", o.seed, "Draw the check's own random points from this seed (reproducible tests only: "
-                                        "a student who knows the points can build a wrong answer that passes)")
-        ->check(seed_number)
-        ->each([&](const std::string&) { o.seeded = true; });
-    check->add_option("--time-budget", o.time_budget_ms,
-                      "Milliseconds to check one answer in; past them it is undecided (code budget). A slow or busy "
-                      "machine may need more")
-        ->check(CLI::Range(1, 600000))
-        ->capture_default_str();
-    check->add_flag("--require-simplified", o.require_simplified, "A correct answer that is not simplified is incorrect");
-    check->add_flag("--no-latex", o.no_latex, "Do not echo answers in LaTeX (faster batches)");
-    check->add_option("--format", o.format, "Output format (single answers)")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
-    check->add_option("-o,--output", o.out, "Write to this file instead of standard output");
-    with_phase(check);
-    answer_opt->needs(unknown_opt);
-    unknown_opt->needs(answer_opt);
-    batch_opt->excludes(answer_opt);
-    equation_opt->excludes(answer_opt)->excludes(batch_opt)->excludes(unknown_opt);
-    steps_opt->excludes(answer_opt)->excludes(batch_opt)->excludes(unknown_opt)->excludes(equation_opt);
-    fbd_opt->excludes(answer_opt)->excludes(batch_opt)->excludes(unknown_opt)->excludes(equation_opt)->excludes(steps_opt);
-  });
+  CLI::Option *answer_opt = nullptr, *batch_opt = nullptr, *equation_opt = nullptr, *steps_opt = nullptr,
+              *fbd_opt = nullptr;
+  auto* check =
+      add("check", "Check a student's answer (or a batch of them) against the closed form", [&](CLI::App* check) {
+        check->add_option("file", o.file, "Problem description (YAML)")->required();
+        auto* unknown_opt = check->add_option("--unknown", o.unknown, "The unknown the answer is for, e.g. T_HI");
+        answer_opt =
+            check->add_option("--answer", o.answer, "The answer: an expression, 'T = ...', or a number with a unit");
+        equation_opt =
+            check
+                ->add_option(
+                    "--equation", o.equation,
+                    "An equation the student wrote, e.g. '2*T - F = m_A*ddot(x_A)': is it one of the balances and "
+                    "constraints, or does it follow from them?")
+                ->each([&](const std::string&) { o.equation_given = true; });
+        steps_opt = check->add_option("--steps", o.steps,
+                                      "A worked solution (YAML: steps: [{fbd: ...}, {equation: ...}, {answer: ..., "
+                                      "unknown: T}]) graded as a whole: "
+                                      "each step, the equations used and missing, the first wrong step, a score");
+        fbd_opt = check->add_option(
+            "--fbd", o.fbd,
+            "A free body diagram the student drew (YAML: body: B, forces: [{name: T, at: pB, direction: [-1]}]): "
+            "each force drawn, missing, extra or the wrong way, and a score");
+        check->add_option("--rubric", o.rubric,
+                          "With --steps or --fbd: points for FBDs, balances, constraints and answers, what a wrong "
+                          "step costs, and how an FBD is scored (YAML)");
+        batch_opt = check->add_option(
+            "--batch", o.batch,
+            "JSON Lines file of {\"id\", \"unknown\", \"answer\"}, {\"id\", \"equation\"} or {\"id\", \"fbd\"} "
+            "(- for standard input)");
+        auto* results_opt = check->add_option("--results", o.results,
+                                              "With --batch or --steps: also write a grading platform's results file");
+        check->add_option("--results-format", o.results_format, "The results file's platform")
+            ->check(CLI::IsMember({"gradescope", "prairielearn", "jsonl"}))
+            ->capture_default_str()
+            ->needs(results_opt);
+        auto* gradebook_opt =
+            check->add_option("--gradebook", o.gradebook,
+                              "With --batch: also write the class's gradebook (CSV): a row per line's \"student\", "
+                              "a column per question \"id\", the points and the total");
+        check
+            ->add_option("--gradebook-format", o.gradebook_format,
+                         "The gradebook's layout: a spreadsheet's, or Canvas's or Moodle's grade import")
+            ->check(CLI::IsMember({"plain", "canvas", "moodle"}))
+            ->capture_default_str()
+            ->needs(gradebook_opt);
+        check
+            ->add_option("--jobs", o.jobs,
+                         "With --batch: grade with N processes side by side (0: one per core); the results are the "
+                         "same, in the batch's order")
+            ->check(CLI::Range(0, 256))
+            ->capture_default_str()
+            ->needs(batch_opt);
+        check
+            ->add_option("--points", o.points_text,
+                         "Points for each answer (N), or for one unknown's answers (NAME=N); repeatable")
+            ->needs(batch_opt);
+        check
+            ->add_flag("--top-level-score", o.top_level_score,
+                       "Gradescope: also write the total as the top-level score "
+                       "(it overrides the tests' sum)")
+            ->needs(results_opt);
+        check->add_option("--set", o.set_values,
+                          "A parameter's value for this check, in its stated unit (NAME=VALUE, repeatable): "
+                          "a student's own variant");
+        check->add_flag("--reveal", o.reveal, "Name the correct value in the feedback (never, without it)");
+        check->add_option("--tolerance", o.tolerance, "Relative tolerance for numbers with units")
+            ->check(finite_number)
+            ->check(CLI::Range(0.0, 1.0))
+            ->capture_default_str();
+        check
+            ->add_option("--sig-figs", o.sig_figs,
+                         "Instead of the tolerance: numbers must match to this many significant figures")
+            ->check(CLI::Range(1, 15));
+        check
+            ->add_option("--seed", o.seed,
+                         "Draw the check's own random points from this seed (reproducible tests only: "
+                         "a student who knows the points can build a wrong answer that passes)")
+            ->check(seed_number)
+            ->each([&](const std::string&) { o.seeded = true; });
+        check
+            ->add_option("--time-budget", o.time_budget_ms,
+                         "Milliseconds to check one answer in; past them it is undecided (code budget). A slow or busy "
+                         "machine may need more")
+            ->check(CLI::Range(1, 600000))
+            ->capture_default_str();
+        check->add_flag("--require-simplified", o.require_simplified,
+                        "A correct answer that is not simplified is incorrect");
+        check->add_flag("--no-latex", o.no_latex, "Do not echo answers in LaTeX (faster batches)");
+        check->add_option("--format", o.format, "Output format (single answers)")
+            ->check(CLI::IsMember({"text", "json"}))
+            ->capture_default_str();
+        check->add_option("-o,--output", o.out, "Write to this file instead of standard output");
+        with_phase(check);
+        answer_opt->needs(unknown_opt);
+        unknown_opt->needs(answer_opt);
+        batch_opt->excludes(answer_opt);
+        equation_opt->excludes(answer_opt)->excludes(batch_opt)->excludes(unknown_opt);
+        steps_opt->excludes(answer_opt)->excludes(batch_opt)->excludes(unknown_opt)->excludes(equation_opt);
+        fbd_opt->excludes(answer_opt)
+            ->excludes(batch_opt)
+            ->excludes(unknown_opt)
+            ->excludes(equation_opt)
+            ->excludes(steps_opt);
+      });
   const std::string asked = asked_subcommand(argc, argv);
-  const bool named = std::any_of(definitions.begin(), definitions.end(), [&](const auto& d) { return d.first->get_name() == asked; });
+  const bool named =
+      std::any_of(definitions.begin(), definitions.end(), [&](const auto& d) { return d.first->get_name() == asked; });
   for (const auto& [sub, define] : definitions)
     if (!named || sub->get_name() == asked) define(sub);
 
@@ -693,8 +781,8 @@ int run(int argc, char** argv) {
     std::cerr << "tackle check: --gradebook needs --batch\n";
     return 2;
   }
-  if (check->parsed() && answer_opt->count() == 0 && batch_opt->count() == 0 && equation_opt->count() == 0 && steps_opt->count() == 0 &&
-      fbd_opt->count() == 0) {
+  if (check->parsed() && answer_opt->count() == 0 && batch_opt->count() == 0 && equation_opt->count() == 0 &&
+      steps_opt->count() == 0 && fbd_opt->count() == 0) {
     std::cerr << "tackle check: give --unknown and --answer, --equation, --fbd, --steps or --batch\n";
     return 2;
   }
@@ -707,7 +795,8 @@ int run(int argc, char** argv) {
     return 2;
   }
   try {
-    const tackle::RuleSet rules = tackle::load_rules(o.rules_dir, tackle::RuleLoading::when_used, tackle::builtin_rules());
+    const tackle::RuleSet rules =
+        tackle::load_rules(o.rules_dir, tackle::RuleLoading::when_used, tackle::builtin_rules());
     if (key->parsed()) return run_key(o, rules);
     if (sheet->parsed()) return run_sheet(o, rules);
     if (page->parsed()) return run_page(o, rules);

@@ -32,8 +32,10 @@ std::string read_text_file(const std::string& path, std::size_t max_bytes) {
   if (::fstat(fd, &st) != 0) throw InputError({{{path, 0, 0}, "cannot read the file"}});
   if (S_ISDIR(st.st_mode)) throw InputError({{{path, 0, 0}, "is a directory (expected a file)"}});
   auto too_long = [&] {
-    const std::string mib = max_bytes % (1 << 20) == 0 ? std::to_string(max_bytes >> 20) + " MiB" : std::to_string(max_bytes) + " bytes";
-    return InputError({{{path, 0, 0}, "is longer than " + mib + " (expected a description or rule file of at most " + mib + ")"}});
+    const std::string mib =
+        max_bytes % (1 << 20) == 0 ? std::to_string(max_bytes >> 20) + " MiB" : std::to_string(max_bytes) + " bytes";
+    return InputError(
+        {{{path, 0, 0}, "is longer than " + mib + " (expected a description or rule file of at most " + mib + ")"}});
   };
   if (S_ISREG(st.st_mode) && static_cast<std::size_t>(st.st_size) > max_bytes) throw too_long();
   std::string text;
@@ -57,7 +59,8 @@ std::string read_text_file(const std::string& path, std::size_t max_bytes) {
 
 std::unique_ptr<std::istream> open_text_file(const std::string& path) {
   struct stat st {};
-  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) throw InputError({{{path, 0, 0}, "is a directory (expected a file)"}});
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+    throw InputError({{{path, 0, 0}, "is a directory (expected a file)"}});
   auto in = std::make_unique<std::ifstream>(path, std::ios::binary);
   if (!*in) throw InputError({{{path, 0, 0}, "cannot read the file"}});
   return in;
@@ -191,7 +194,8 @@ std::string follow_links(std::string path, bool& system) {
 }  // namespace
 
 void AtomicOutput::fail(int err) {
-  error_ = path_ + ": cannot write the file" + (err != 0 ? std::string(" (") + std::strerror(err) + ")" : std::string());
+  error_ =
+      path_ + ": cannot write the file" + (err != 0 ? std::string(" (") + std::strerror(err) + ")" : std::string());
 }
 
 AtomicOutput::AtomicOutput(std::string path) : path_(std::move(path)) {

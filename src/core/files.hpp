@@ -74,7 +74,7 @@ class AtomicOutput {
   std::string path_, temp_, error_;
   std::string target_;  // what the temporary file replaces: the path with its links followed
   int fd_ = -1;
-  int slot_ = -1;       // in the registry of temporary files removed on a signal
+  int slot_ = -1;  // in the registry of temporary files removed on a signal
   std::unique_ptr<FdBuffer> buffer_;
   std::ostream stream_{nullptr};
   bool committed_ = false;

@@ -55,9 +55,8 @@ const std::map<std::string, Atom, std::less<>>& atoms() {
 
 const std::vector<std::pair<std::string, numeric>>& prefixes() {
   static const std::vector<std::pair<std::string, numeric>> table = {
-      {"G", numeric(1000000000)}, {"M", numeric(1000000)}, {"k", numeric(1000)},
-      {"c", numeric(1, 100)},     {"m", numeric(1, 1000)}, {"u", numeric(1, 1000000)},
-      {"µ", numeric(1, 1000000)}, {"n", numeric(1, 1000000000)},
+      {"G", numeric(1000000000)}, {"M", numeric(1000000)},    {"k", numeric(1000)},       {"c", numeric(1, 100)},
+      {"m", numeric(1, 1000)},    {"u", numeric(1, 1000000)}, {"µ", numeric(1, 1000000)}, {"n", numeric(1, 1000000000)},
   };
   return table;
 }
@@ -75,8 +74,7 @@ std::optional<Atom> find_atom(std::string_view name) {
     if (name.size() > p.size() && name.substr(0, p.size()) == p) {
       auto it = atoms().find(name.substr(p.size()));
       // Prefixes go on SI units, not on kg, min, h or a bare number.
-      if (it != atoms().end() && is_si_atom(it->first))
-        return Atom{f * it->second.to_si, it->second.dim};
+      if (it != atoms().end() && is_si_atom(it->first)) return Atom{f * it->second.to_si, it->second.dim};
     }
   }
   return std::nullopt;
@@ -246,8 +244,7 @@ std::string unit_latex(std::string_view unit_text) {
       std::size_t j = i + 1;
       std::string e;
       if (j < unit_text.size() && unit_text[j] == '-') e += unit_text[j++];
-      while (j < unit_text.size() && std::isdigit(static_cast<unsigned char>(unit_text[j])))
-        e += unit_text[j++];
+      while (j < unit_text.size() && std::isdigit(static_cast<unsigned char>(unit_text[j]))) e += unit_text[j++];
       out += "^{" + e + "}";
       i = j - 1;
     } else if (c == '*' || c == '.') {
@@ -265,8 +262,7 @@ std::string with_article(const std::string& noun) {
   return (vowel ? "an " : "a ") + noun;
 }
 
-std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup& lookup,
-                                      std::string& problem) {
+std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup& lookup, std::string& problem) {
   using namespace GiNaC;
   // Class by class-info (is_a<> is a dynamic_cast: a check spent a tenth of its time there).
   if (is_exactly<numeric>(e) || is_exactly<GiNaC::constant>(e)) return Dimension::none();
@@ -279,9 +275,12 @@ std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup&
     bool unknown = false;
     for (const auto& part : e) {
       std::string p;
-      if (auto d = dimension_of(part, lookup, p)) dims.push_back(*d);
-      else if (p.empty()) unknown = true;
-      else if (!first_problem || p < *first_problem) first_problem = p;
+      if (auto d = dimension_of(part, lookup, p))
+        dims.push_back(*d);
+      else if (p.empty())
+        unknown = true;
+      else if (!first_problem || p < *first_problem)
+        first_problem = p;
     }
     if (first_problem) problem = *first_problem;
     return !first_problem && !unknown;
@@ -293,7 +292,8 @@ std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup&
       return dims.front();
     std::vector<std::string> names;
     for (std::size_t i = 0; i < dims.size(); ++i)  // each distinct dimension once
-      if (std::none_of(dims.begin(), dims.begin() + static_cast<std::ptrdiff_t>(i), [&](const Dimension& x) { return x == dims[i]; }))
+      if (std::none_of(dims.begin(), dims.begin() + static_cast<std::ptrdiff_t>(i),
+                       [&](const Dimension& x) { return x == dims[i]; }))
         names.push_back(dims[i].describe());
     std::sort(names.begin(), names.end());
     problem = "adds " + with_article(names[0]) + " to " + with_article(names[1]);

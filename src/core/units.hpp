@@ -45,9 +45,9 @@ struct Dimension {
 };
 
 struct Unit {
-  GiNaC::ex to_si;       // value in SI = value in this unit * to_si (exact; pi/180 for deg)
+  GiNaC::ex to_si;  // value in SI = value in this unit * to_si (exact; pi/180 for deg)
   Dimension dimension;
-  std::string text;      // as the user wrote it, or the canonical SI name
+  std::string text;  // as the user wrote it, or the canonical SI name
 };
 
 /// Parses "kg", "m/s^2", "kN", "N*m", "kg*m/s^2". Returns nullopt with `error` set when it
@@ -75,7 +75,6 @@ struct DimensionLookup {
   virtual ~DimensionLookup() = default;
   virtual std::optional<Dimension> dimension_of(const GiNaC::symbol& s) const = 0;
 };
-std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup& lookup,
-                                      std::string& problem);
+std::optional<Dimension> dimension_of(const GiNaC::ex& e, const DimensionLookup& lookup, std::string& problem);
 
 }  // namespace tackle

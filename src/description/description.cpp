@@ -51,8 +51,10 @@ struct Reader {
       return std::nullopt;
     }
     for (const auto& item : n) {
-      if (auto t = scalar(item, "an entry of " + what, file, diags)) v.items.push_back(*t);
-      else return std::nullopt;
+      if (auto t = scalar(item, "an entry of " + what, file, diags))
+        v.items.push_back(*t);
+      else
+        return std::nullopt;
     }
     if (v.items.empty()) {
       diags.error(v.at, what + " is an empty list (expected one entry per axis)");
@@ -89,7 +91,8 @@ struct Reader {
         // symbolic only
       } else if (v.is_scalar()) {
         p.value = Text{v.text(), where(v, file)};
-      } else if (check_map(v, {"value", "unit", "dimension", "tex", "positive", "description", "define", "range", "round"},
+      } else if (check_map(v,
+                           {"value", "unit", "dimension", "tex", "positive", "description", "define", "range", "round"},
                            what, file, diags)) {
         if (const yaml::Node r = v["range"]) {
           if (auto items = scalar_list(r, "'range' of " + what, file, diags)) {
@@ -104,7 +107,9 @@ struct Reader {
         p.value = opt_scalar(v, "value", what);
         p.define = opt_scalar(v, "define", what);
         if (p.define && (p.value || p.unit || p.dimension))
-          diags.error(p.define->at, what + " has 'define' with 'value', 'unit' or 'dimension' (a defined name takes all of them from its expression)");
+          diags.error(p.define->at, what +
+                                        " has 'define' with 'value', 'unit' or 'dimension' (a defined name takes all "
+                                        "of them from its expression)");
         p.unit = opt_scalar(v, "unit", what);
         p.dimension = opt_scalar(v, "dimension", what);
         p.tex = opt_scalar(v, "tex", what);
@@ -157,14 +162,16 @@ struct Reader {
       b.name = key_text(kv.first);
       b.at = where(kv.second, file);
       const std::string what = "body '" + b.name.text + "'";
-      if (check_map(kv.second, {"mass", "position", "angle", "center_of_mass", "acceleration", "inertia", "shape", "draw"}, what,
+      if (check_map(kv.second,
+                    {"mass", "position", "angle", "center_of_mass", "acceleration", "inertia", "shape", "draw"}, what,
                     file, diags)) {
         b.mass = opt_scalar(kv.second, "mass", what);
         b.position = opt_scalar(kv.second, "position", what);
         b.angle = opt_scalar(kv.second, "angle", what);
         b.inertia = opt_scalar(kv.second, "inertia", what);
         if (const yaml::Node sh = kv.second["shape"]) {
-          const std::string expected = " (expected one of {disk: R}, {ring: R}, {rod: L}, {sphere: R}, {box: [a, b]}, point)";
+          const std::string expected =
+              " (expected one of {disk: R}, {ring: R}, {rod: L}, {sphere: R}, {box: [a, b]}, point)";
           if (sh.is_scalar()) {
             b.shape_kind = opt_scalar(kv.second, "shape", what);
           } else if (!sh.is_map() || sh.size() != 1) {
@@ -183,7 +190,8 @@ struct Reader {
               b.accel_along = opt_vector(acc, "along", "'acceleration' of " + what);
               b.accel_name = opt_scalar(acc, "name", "'acceleration' of " + what);
               if (!b.accel_along)
-                diags.error(where(acc, file), "'acceleration' of " + what + " has no 'along' (expected the direction of motion)");
+                diags.error(where(acc, file),
+                            "'acceleration' of " + what + " has no 'along' (expected the direction of motion)");
             }
           } else {
             b.acceleration = vector(acc, "'acceleration' of " + what);
@@ -191,11 +199,15 @@ struct Reader {
         }
         if (const yaml::Node dr = kv.second["draw"]) {
           if (!dr.is_map())
-            diags.error(where(dr, file), "'draw' of " + what + " is not a mapping (expected {shape: rectangle, size: [w, h]} or {shape: circle, size: [d]})");
+            diags.error(
+                where(dr, file),
+                "'draw' of " + what +
+                    " is not a mapping (expected {shape: rectangle, size: [w, h]} or {shape: circle, size: [d]})");
           else if (check_map(dr, {"shape", "size"}, "'draw' of " + what, file, diags)) {
             b.draw_shape = opt_scalar(dr, "shape", "'draw' of " + what);
             b.draw_size = opt_vector(dr, "size", "'draw' of " + what);
-            if (!b.draw_shape) diags.error(where(dr, file), "'draw' of " + what + " has no 'shape' (expected rectangle or circle)");
+            if (!b.draw_shape)
+              diags.error(where(dr, file), "'draw' of " + what + " has no 'shape' (expected rectangle or circle)");
           }
         }
       }
@@ -223,12 +235,15 @@ struct Reader {
             p.turns = false;
           else if (turns->text != "true")
             diags.error(turns->at, "'turns' of " + what + " is '" + turns->text + "' (expected true or false)");
-          if (!p.on) diags.error(turns->at, "'turns' of " + what + " needs 'on' (only a point on a body turns with it)");
+          if (!p.on)
+            diags.error(turns->at, "'turns' of " + what + " needs 'on' (only a point on a body turns with it)");
         }
         if (p.at && p.on)
-          diags.error(where(kv.second, file), what + " has both 'at' and 'on' (expected a fixed point or a point on a body)");
+          diags.error(where(kv.second, file),
+                      what + " has both 'at' and 'on' (expected a fixed point or a point on a body)");
         else if (!p.at && !p.on)
-          diags.error(where(kv.second, file), what + " has neither 'at' nor 'on' (expected a fixed position or a body)");
+          diags.error(where(kv.second, file),
+                      what + " has neither 'at' nor 'on' (expected a fixed position or a body)");
         if (p.offset && !p.on)
           diags.error(p.offset->at, "'offset' of " + what + " needs 'on' (an offset is measured from a body)");
       }
@@ -288,7 +303,8 @@ struct Reader {
 
   void read_layout(const yaml::Node& n) {
     if (!n.is_map()) {
-      diags.error(where(n, file), "'layout' is " + yaml::kind_name(n) + " (expected a mapping of coordinates to numbers)");
+      diags.error(where(n, file),
+                  "'layout' is " + yaml::kind_name(n) + " (expected a mapping of coordinates to numbers)");
       return;
     }
     yaml::check_unique_keys(n, "'layout'", file, diags);
@@ -331,8 +347,9 @@ struct Reader {
       if (auto items = scalar_list(c, "'coordinates' of 'motion'", file, diags)) mo.coordinates = *items;
     if (auto init = n["initial"]) {
       if (!init.is_map()) {
-        diags.error(where(init, file), "'initial' of 'motion' is " + yaml::kind_name(init) +
-                                           " (expected a mapping of coordinates and rates to values, e.g. {y: y_0, dot(y): 0})");
+        diags.error(where(init, file),
+                    "'initial' of 'motion' is " + yaml::kind_name(init) +
+                        " (expected a mapping of coordinates and rates to values, e.g. {y: y_0, dot(y): 0})");
       } else {
         yaml::check_unique_keys(init, "'initial' of 'motion'", file, diags);
         std::set<std::string> seen;
@@ -342,8 +359,11 @@ struct Reader {
           if (kv.second.is_map()) {  // {value: 60, unit: deg}
             if (check_map(kv.second, {"value", "unit"}, what, file, diags)) {
               auto v = opt_scalar(kv.second, "value", what);
-              if (!v) diags.error(where(kv.second, file), what + " has no 'value' (expected, e.g., {value: 60, unit: deg})");
-              else mo.initial.emplace_back(key_text(kv.first), *v), mo.initial_units.push_back(opt_scalar(kv.second, "unit", what));
+              if (!v)
+                diags.error(where(kv.second, file), what + " has no 'value' (expected, e.g., {value: 60, unit: deg})");
+              else
+                mo.initial.emplace_back(key_text(kv.first), *v),
+                    mo.initial_units.push_back(opt_scalar(kv.second, "unit", what));
             }
           } else if (auto v = scalar(kv.second, what, file, diags)) {
             mo.initial.emplace_back(key_text(kv.first), *v);
@@ -352,14 +372,17 @@ struct Reader {
         }
       }
     } else {
-      diags.error(mo.at, "'motion' has no 'initial' (expected the coordinates' values and rates at t = 0, e.g. {y: y_0, dot(y): 0})");
+      diags.error(
+          mo.at,
+          "'motion' has no 'initial' (expected the coordinates' values and rates at t = 0, e.g. {y: y_0, dot(y): 0})");
     }
     if (auto u = n["until"]) {
       if (u.is_map()) {
         if (check_map(u, {"value", "unit"}, "'until' of 'motion'", file, diags)) {
           mo.until = opt_scalar(u, "value", "'until' of 'motion'");
           mo.until_unit = opt_scalar(u, "unit", "'until' of 'motion'");
-          if (!mo.until) diags.error(where(u, file), "'until' of 'motion' has no 'value' (expected, e.g., {value: 2, unit: s})");
+          if (!mo.until)
+            diags.error(where(u, file), "'until' of 'motion' has no 'value' (expected, e.g., {value: 2, unit: s})");
         }
       } else {
         mo.until = scalar(u, "'until' of 'motion'", file, diags);
@@ -370,9 +393,11 @@ struct Reader {
     if (auto sa = n["speed_at"]) {
       std::vector<std::pair<Text, Text>> values;
       read_values(sa, "'speed_at' of 'motion'", values);
-      if (values.size() == 1) mo.speed_at = values.front();
-      else if (sa.is_map()) diags.error(where(sa, file), "'speed_at' of 'motion' names " + std::to_string(values.size()) +
-                                                            " coordinates (expected one, e.g. {x: 0})");
+      if (values.size() == 1)
+        mo.speed_at = values.front();
+      else if (sa.is_map())
+        diags.error(where(sa, file), "'speed_at' of 'motion' names " + std::to_string(values.size()) +
+                                         " coordinates (expected one, e.g. {x: 0})");
     }
     d.motion = std::move(mo);
   }
@@ -400,9 +425,12 @@ struct Reader {
     iv.duration = opt_scalar(n, "duration", "'interval'");
     iv.distance = opt_scalar(n, "distance", "'interval'");
     if (iv.duration.has_value() == iv.distance.has_value())
-      diags.error(iv.at, "'interval' needs exactly one of 'duration' and 'distance' (expected, e.g., duration: Delta_t)");
-    if (auto f = n["from"]) read_values(f, "'from' of 'interval'", iv.from);
-    else diags.error(iv.at, "'interval' has no 'from' (expected the rates at its start, e.g. {dot(x): v_1})");
+      diags.error(iv.at,
+                  "'interval' needs exactly one of 'duration' and 'distance' (expected, e.g., duration: Delta_t)");
+    if (auto f = n["from"])
+      read_values(f, "'from' of 'interval'", iv.from);
+    else
+      diags.error(iv.at, "'interval' has no 'from' (expected the rates at its start, e.g. {dot(x): v_1})");
     if (auto t = n["to"]) read_values(t, "'to' of 'interval'", iv.to);
     d.interval = std::move(iv);
   }
@@ -411,8 +439,10 @@ struct Reader {
     if (!check_map(n, {"rate", "unit", "period"}, "'steady'", file, diags)) return;
     SteadyDesc st;
     st.at = where(n, file);
-    if (auto r = opt_scalar(n, "rate", "'steady'")) st.rate = *r;
-    else diags.error(st.at, "'steady' has no 'rate' (expected the name of the unknown rate, e.g. rate: omega)");
+    if (auto r = opt_scalar(n, "rate", "'steady'"))
+      st.rate = *r;
+    else
+      diags.error(st.at, "'steady' has no 'rate' (expected the name of the unknown rate, e.g. rate: omega)");
     st.unit = opt_scalar(n, "unit", "'steady'");
     st.period = opt_scalar(n, "period", "'steady'");
     d.steady = std::move(st);
@@ -422,15 +452,19 @@ struct Reader {
     if (!check_map(n, {"from", "plastic", "restitution"}, "'impact'", file, diags)) return;
     ImpactDesc im;
     im.at = where(n, file);
-    if (auto f = n["from"]) read_values(f, "'from' of 'impact'", im.from);
-    else diags.error(im.at, "'impact' has no 'from' (expected the rates just before it, e.g. {dot(x_A): v, dot(x_B): 0})");
+    if (auto f = n["from"])
+      read_values(f, "'from' of 'impact'", im.from);
+    else
+      diags.error(im.at, "'impact' has no 'from' (expected the rates just before it, e.g. {dot(x_A): v, dot(x_B): 0})");
     im.plastic = opt_scalar(n, "plastic", "'impact'");
     im.restitution = opt_scalar(n, "restitution", "'impact'");
     if (im.plastic && im.plastic->text != "true")
-      diags.error(im.plastic->at, "'plastic' of 'impact' is '" + im.plastic->text + "' (expected true, or 'restitution: e' instead)");
+      diags.error(im.plastic->at,
+                  "'plastic' of 'impact' is '" + im.plastic->text + "' (expected true, or 'restitution: e' instead)");
     if (im.plastic.has_value() == im.restitution.has_value())
-      diags.error(im.at, "'impact' needs exactly one of 'plastic: true' (the bodies stick together) and 'restitution' "
-                         "(a coefficient, two bodies)");
+      diags.error(im.at,
+                  "'impact' needs exactly one of 'plastic: true' (the bodies stick together) and 'restitution' "
+                  "(a coefficient, two bodies)");
     d.impact = std::move(im);
   }
 
@@ -438,14 +472,16 @@ struct Reader {
   // stay those of the file); the shared parameters come first in each.
   void read_phases(const yaml::Node& n) {
     if (!n.is_sequence() || n.size() == 0) {
-      diags.error(where(n, file), "'phases' is " + (n.is_sequence() ? std::string("an empty list") : yaml::kind_name(n)) +
+      diags.error(where(n, file), "'phases' is " +
+                                      (n.is_sequence() ? std::string("an empty list") : yaml::kind_name(n)) +
                                       " (expected a list of phases, each a mapping with a name, its bodies, ...)");
       return;
     }
     std::set<std::string> names;
     for (const auto& item : n) {
       if (!item.is_map()) {
-        diags.error(where(item, file), "a phase is " + yaml::kind_name(item) + " (expected a mapping with a name, its bodies, ...)");
+        diags.error(where(item, file),
+                    "a phase is " + yaml::kind_name(item) + " (expected a mapping with a name, its bodies, ...)");
         continue;
       }
       PhaseDesc ph;
@@ -455,7 +491,8 @@ struct Reader {
       if (auto nm = item["name"]) {
         if (auto t = scalar(nm, "'name' of a phase", file, diags)) {
           ph.name = *t;
-          if (!names.insert(t->text).second) diags.error(t->at, "a second phase named '" + t->text + "' (expected phase names to differ)");
+          if (!names.insert(t->text).second)
+            diags.error(t->at, "a second phase named '" + t->text + "' (expected phase names to differ)");
         }
       } else {
         diags.error(ph.at, "a phase has no 'name' (expected, e.g., name: fall)");
@@ -464,16 +501,39 @@ struct Reader {
       if (d.phases.empty()) ph.d.statement = d.statement;  // the problem's statement goes with its first phase
       Reader inner{file, diags, ph.d};
       inner.read_root(item, true);
-      if (auto c = item["carry"]) read_values(c, "'carry' of phase '" + ph.name.text + "'", ph.carry,
-                                          "a mapping of new names to quantities at the phase's end, e.g. {v: dot(y)}");
+      if (auto c = item["carry"])
+        read_values(c, "'carry' of phase '" + ph.name.text + "'", ph.carry,
+                    "a mapping of new names to quantities at the phase's end, e.g. {v: dot(y)}");
       d.phases.push_back(std::move(ph));
     }
   }
 
   void read_root(const yaml::Node& root, bool phase) {
-    std::vector<std::string> keys{"axes", "parameters", "gravity", "bodies", "points", "connections", "loads",
-               "strings", "layout", "given", "find", "derive", "expected", "expected_combinations", "expected_conditions", "expected_ranges", "expected_free", "expected_power",
-               "notes", "sweep", "motion", "expected_motion", "interval", "impact", "steady"};
+    std::vector<std::string> keys{"axes",
+                                  "parameters",
+                                  "gravity",
+                                  "bodies",
+                                  "points",
+                                  "connections",
+                                  "loads",
+                                  "strings",
+                                  "layout",
+                                  "given",
+                                  "find",
+                                  "derive",
+                                  "expected",
+                                  "expected_combinations",
+                                  "expected_conditions",
+                                  "expected_ranges",
+                                  "expected_free",
+                                  "expected_power",
+                                  "notes",
+                                  "sweep",
+                                  "motion",
+                                  "expected_motion",
+                                  "interval",
+                                  "impact",
+                                  "steady"};
     if (phase) {
       keys.insert(keys.begin(), {"name", "carry"});
     } else {
@@ -498,15 +558,20 @@ struct Reader {
           d.gravity_magnitude = opt_scalar(g, "magnitude", "'gravity'");
           d.gravity_tilt = opt_scalar(g, "tilt", "'gravity'");
           if (!d.gravity_magnitude || !d.gravity_tilt)
-            diags.error(where(g, file), "'gravity' as a mapping needs 'magnitude' and 'tilt' (the angle the first axis rises above the horizontal)");
+            diags.error(where(g, file),
+                        "'gravity' as a mapping needs 'magnitude' and 'tilt' (the angle the first axis rises above the "
+                        "horizontal)");
         }
       } else {
         d.gravity = vector(g, "'gravity'");
       }
     }
-    if (auto b = root["bodies"]) read_bodies(b);
-    else diags.error(phase ? where(root, file) : Location{file, 1, 1},
-                     std::string(phase ? "the phase" : "the description") + " has no 'bodies' (expected at least one body)");
+    if (auto b = root["bodies"])
+      read_bodies(b);
+    else
+      diags.error(
+          phase ? where(root, file) : Location{file, 1, 1},
+          std::string(phase ? "the phase" : "the description") + " has no 'bodies' (expected at least one body)");
     if (auto p = root["points"]) read_points(p);
     if (auto c = root["connections"]) read_list(c, "connections", std::nullopt);
     if (auto l = root["loads"]) read_list(l, "loads", std::string("force"));
@@ -544,7 +609,8 @@ struct Reader {
       return;
     }
     for (const auto& item : n) {
-      if (!check_map(item, {"lmb", "amb", "constraint", "about", "axis"}, "an entry of 'derive'", file, diags)) continue;
+      if (!check_map(item, {"lmb", "amb", "constraint", "about", "axis"}, "an entry of 'derive'", file, diags))
+        continue;
       DeriveDesc dd;
       int kinds = 0;
       yaml::Node value;
@@ -565,7 +631,8 @@ struct Reader {
       dd.about = opt_scalar(item, "about", "an entry of 'derive'");
       dd.axis = opt_vector(item, "axis", "an entry of 'derive'");
       if (dd.kind.text == "amb" && !dd.about)
-        diags.error(where(item, file), "an 'amb' entry of 'derive' has no 'about' (expected the point the moments are taken about)");
+        diags.error(where(item, file),
+                    "an 'amb' entry of 'derive' has no 'about' (expected the point the moments are taken about)");
       if (dd.kind.text != "amb" && (dd.about || dd.axis))
         diags.error(where(item, file), "'about' and 'axis' belong to an 'amb' entry of 'derive'");
       if (dd.is_list && dd.items.empty()) {
@@ -577,7 +644,6 @@ struct Reader {
   }
 };
 
-
 // Text that goes into LaTeX as LaTeX: a statement (prose with $math$) and a `tex:` name. A
 // description is the instructor's, but the sheets and keys made from it are compiled by
 // others, often by a script, and LaTeX reads and writes files (`\input{/etc/passwd}` prints
@@ -586,13 +652,48 @@ struct Reader {
 // any of them): not a sandbox (compile sheets with openin_any=p and without shell escape),
 // but no sheet made by tackle asks LaTeX to do any of it. See docs/grading.md.
 bool forbidden_control_word(const std::string& word) {
-  static const std::set<std::string> exact{
-      "def", "edef", "gdef", "xdef", "let", "glet", "futurelet", "newcommand", "renewcommand", "providecommand",
-      "DeclareRobustCommand", "NewDocumentCommand", "RenewDocumentCommand", "ProvideDocumentCommand",
-      "DeclareDocumentCommand", "newenvironment", "renewenvironment", "usepackage", "RequirePackage",
-      "documentclass", "LoadClass", "immediate", "special", "scantokens", "scantextokens", "makeatletter",
-      "ExplSyntaxOn", "directlua", "latelua", "luaexec", "luadirect", "ShellEscape", "import", "subimport",
-      "subfile", "bibliography", "addbibresource", "everyeof", "uccode", "lccode", "endlinechar", "newlinechar"};
+  static const std::set<std::string> exact{"def",
+                                           "edef",
+                                           "gdef",
+                                           "xdef",
+                                           "let",
+                                           "glet",
+                                           "futurelet",
+                                           "newcommand",
+                                           "renewcommand",
+                                           "providecommand",
+                                           "DeclareRobustCommand",
+                                           "NewDocumentCommand",
+                                           "RenewDocumentCommand",
+                                           "ProvideDocumentCommand",
+                                           "DeclareDocumentCommand",
+                                           "newenvironment",
+                                           "renewenvironment",
+                                           "usepackage",
+                                           "RequirePackage",
+                                           "documentclass",
+                                           "LoadClass",
+                                           "immediate",
+                                           "special",
+                                           "scantokens",
+                                           "scantextokens",
+                                           "makeatletter",
+                                           "ExplSyntaxOn",
+                                           "directlua",
+                                           "latelua",
+                                           "luaexec",
+                                           "luadirect",
+                                           "ShellEscape",
+                                           "import",
+                                           "subimport",
+                                           "subfile",
+                                           "bibliography",
+                                           "addbibresource",
+                                           "everyeof",
+                                           "uccode",
+                                           "lccode",
+                                           "endlinechar",
+                                           "newlinechar"};
   if (exact.count(word)) return true;
   std::string lower;
   for (char c : word) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -616,7 +717,8 @@ bool forbidden_environment(const std::string& name) {
 
 // Where `needle` is first written in the file at or after `from` (a byte offset), as a
 // location; `fallback` when it is not there as typed (a quoted scalar's escapes spell it).
-Location locate_in_source(const std::string& source, std::size_t& from, const std::string& needle, const Location& fallback) {
+Location locate_in_source(const std::string& source, std::size_t& from, const std::string& needle,
+                          const Location& fallback) {
   std::size_t at = source.find(needle, from);
   if (at == std::string::npos) return fallback;
   from = at + needle.size();
@@ -624,7 +726,8 @@ Location locate_in_source(const std::string& source, std::size_t& from, const st
   const std::size_t line_start = source.rfind('\n', at) == std::string::npos ? 0 : source.rfind('\n', at) + 1;
   int line = 1, column = 1;
   for (std::size_t i = 0; i < line_start; ++i) line += source[i] == '\n';
-  for (std::size_t i = line_start; i < at; ++i) column += (static_cast<unsigned char>(source[i]) & 0xC0) != 0x80;  // characters, as libyaml counts
+  for (std::size_t i = line_start; i < at; ++i)
+    column += (static_cast<unsigned char>(source[i]) & 0xC0) != 0x80;  // characters, as libyaml counts
   return {fallback.file, line, column};
 }
 
@@ -633,15 +736,16 @@ std::size_t offset_of(const std::string& source, const Location& at) {
   std::size_t i = 0;
   for (int line = 1; line < at.line && i < source.size(); ++i)
     if (source[i] == '\n') ++line;
-  for (int column = 1; column < at.column && i < source.size(); ++column)
-    do ++i;
+  for (int column = 1; column < at.column && i < source.size(); ++column) do
+      ++i;
     while (i < source.size() && (static_cast<unsigned char>(source[i]) & 0xC0) == 0x80);
   return i;
 }
 
 void check_latex(const std::string& source, const Text& t, const std::string& what, Diagnostics& diags) {
-  const std::string expected = " (expected LaTeX that reads and writes no files: no \\input, \\include, \\openin, \\write, \\read, "
-                               "\\catcode, \\def, \\usepackage, ^^, ...; see docs/grading.md)";
+  const std::string expected =
+      " (expected LaTeX that reads and writes no files: no \\input, \\include, \\openin, \\write, \\read, "
+      "\\catcode, \\def, \\usepackage, ^^, ...; see docs/grading.md)";
   std::size_t from = t.at.line > 0 ? offset_of(source, t.at) : 0;
   const std::string& s = t.text;
   for (std::size_t i = 0; i < s.size(); ++i) {
@@ -670,7 +774,8 @@ void check_latex(const std::string& source, const Text& t, const std::string& wh
       }
     }
     if (bad) {
-      diags.error(locate_in_source(source, from, "\\" + word, t.at), shown + " in " + what + " is not allowed" + expected);
+      diags.error(locate_in_source(source, from, "\\" + word, t.at),
+                  shown + " in " + what + " is not allowed" + expected);
       return;  // one per text: the rest may follow from it
     }
     i = j - 1;
@@ -688,13 +793,17 @@ void check_texts(const std::string& source, const Description& d, Diagnostics& d
     if (p.tex) {
       check_latex(source, *p.tex, "'tex' of parameter '" + p.name.text + "'", diags);
       if (p.tex->text.find_first_of("<>\r\n") != std::string::npos)
-        diags.error(p.tex->at, "'tex' of parameter '" + p.name.text + "' has '<', '>' or a line break (expected one line of LaTeX math; \\lt and \\gt for < and >)");
+        diags.error(p.tex->at,
+                    "'tex' of parameter '" + p.name.text +
+                        "' has '<', '>' or a line break (expected one line of LaTeX math; \\lt and \\gt for < and >)");
     }
   for (const auto& f : d.find)
     if (f.tex) {
       check_latex(source, *f.tex, "'tex' of '" + f.name.text + "' in 'find'", diags);
       if (f.tex->text.find_first_of("<>\r\n") != std::string::npos)
-        diags.error(f.tex->at, "'tex' of '" + f.name.text + "' in 'find' has '<', '>' or a line break (expected one line of LaTeX math; \\lt and \\gt for < and >)");
+        diags.error(f.tex->at, "'tex' of '" + f.name.text +
+                                   "' in 'find' has '<', '>' or a line break (expected one line of LaTeX math; \\lt "
+                                   "and \\gt for < and >)");
     }
 }
 
@@ -708,7 +817,8 @@ DescriptionRead read_description_text(const std::string& text, const std::string
   const yaml::Document doc = yaml::load(text, file, diags);
   const yaml::Node root = doc.root();
   if (diags.empty() && !root.is_map())
-    diags.error({file, 1, 1}, "the description is " + yaml::kind_name(root) + " (expected a mapping with title, bodies, ...)");
+    diags.error({file, 1, 1},
+                "the description is " + yaml::kind_name(root) + " (expected a mapping with title, bodies, ...)");
   if (!diags.empty()) {
     out.problems = diags.items();
     out.usable = false;
@@ -716,7 +826,8 @@ DescriptionRead read_description_text(const std::string& text, const std::string
   }
   Reader r{file, diags, d};
   if (root["phases"]) {
-    check_map(root, {"title", "source", "notes", "statement", "parameters", "phases"}, "a description with 'phases'", file, diags);
+    check_map(root, {"title", "source", "notes", "statement", "parameters", "phases"}, "a description with 'phases'",
+              file, diags);
     if (auto st = root["statement"]) d.statement = scalar(st, "'statement'", file, diags);
     if (auto t = root["title"]) {
       if (auto s = scalar(t, "'title'", file, diags)) d.title = *s;
@@ -732,11 +843,14 @@ DescriptionRead read_description_text(const std::string& text, const std::string
   // A phase's parameters are the shared ones, already checked; its own come after them.
   for (const auto& ph : d.phases) {
     if (ph.name.text.find_first_of("\r\n") != std::string::npos)
-      diags.error(ph.name.at, "'name' of a phase has a line break (expected one line: it is part of the phase's title)");
+      diags.error(ph.name.at,
+                  "'name' of a phase has a line break (expected one line: it is part of the phase's title)");
     Description own = ph.d;
     own.title = {};
     own.statement.reset();
-    own.parameters.erase(own.parameters.begin(), own.parameters.begin() + static_cast<std::ptrdiff_t>(std::min(d.parameters.size(), own.parameters.size())));
+    own.parameters.erase(
+        own.parameters.begin(),
+        own.parameters.begin() + static_cast<std::ptrdiff_t>(std::min(d.parameters.size(), own.parameters.size())));
     check_texts(text, own, diags);
   }
   out.problems = diags.items();
@@ -749,8 +863,6 @@ Description parse_description(const std::string& text, const std::string& file) 
   return std::move(r.description);
 }
 
-Description read_description(const std::string& path) {
-  return parse_description(read_text_file(path), path);
-}
+Description read_description(const std::string& path) { return parse_description(read_text_file(path), path); }
 
 }  // namespace tackle

@@ -39,9 +39,9 @@ struct VectorDesc {
 
 struct BodyDesc {
   Text name;
-  std::optional<Text> mass;      // expression; 0 for an ideal pulley block
-  std::optional<Text> position;  // the body's coordinate (a new name): in 1-D along the axis,
-                                 // in 2-D and 3-D the variable its center_of_mass is written in
+  std::optional<Text> mass;                  // expression; 0 for an ideal pulley block
+  std::optional<Text> position;              // the body's coordinate (a new name): in 1-D along the axis,
+                                             // in 2-D and 3-D the variable its center_of_mass is written in
   std::optional<VectorDesc> center_of_mass;  // 2-D and 3-D
   // 2-D and 3-D straight-line motion: a given acceleration vector, or an unknown scalar
   // acceleration `accel_name` along `accel_along`; neither means at rest.
@@ -63,14 +63,14 @@ struct BodyDesc {
 
 struct PointDesc {
   Text name;
-  std::optional<VectorDesc> at;  // fixed point: position (an expression in 1-D, a list else)
-  std::optional<Text> on;              // a point on a body
-  std::optional<VectorDesc> offset;    // with `on`: constant offset from the body's coordinate
-                                       // (1-D) or center of mass (2-D, 3-D)
-  bool turns = true;                   // with `on`: the offset turns with the body (false: it
-                                       // keeps the ground's directions - where a string leaves a
-                                       // drum, where a wheel touches the ground)
-  std::optional<Location> turns_at;    // where `turns` was written
+  std::optional<VectorDesc> at;      // fixed point: position (an expression in 1-D, a list else)
+  std::optional<Text> on;            // a point on a body
+  std::optional<VectorDesc> offset;  // with `on`: constant offset from the body's coordinate
+                                     // (1-D) or center of mass (2-D, 3-D)
+  bool turns = true;                 // with `on`: the offset turns with the body (false: it
+                                     // keeps the ground's directions - where a string leaves a
+                                     // drum, where a wheel touches the ground)
+  std::optional<Location> turns_at;  // where `turns` was written
 };
 
 /// An argument of a connection: a scalar or a list of scalars.
@@ -104,17 +104,17 @@ struct FindDesc {
 };
 
 struct DeriveDesc {
-  Text kind;                // lmb | amb | constraint
-  std::vector<Text> items;  // bodies (lmb, amb), or a connection name (constraint)
-  bool is_list = false;     // a list of bodies: one balance for the system of those bodies
-  std::optional<Text> about;         // amb: the point
-  std::optional<VectorDesc> axis;    // amb: a direction, or two point names
+  Text kind;                       // lmb | amb | constraint
+  std::vector<Text> items;         // bodies (lmb, amb), or a connection name (constraint)
+  bool is_list = false;            // a list of bodies: one balance for the system of those bodies
+  std::optional<Text> about;       // amb: the point
+  std::optional<VectorDesc> axis;  // amb: a direction, or two point names
 };
 
 struct SweepDesc {
-  Text vary;               // "h=0:2:41"
-  std::vector<Text> fix;   // "l=1"
-  std::vector<Text> plot;  // "N_A - N_B"
+  Text vary;                    // "h=0:2:41"
+  std::vector<Text> fix;        // "l=1"
+  std::vector<Text> plot;       // "N_A - N_B"
   std::optional<Text> against;  // "h/l": the horizontal axis, when not the varied parameter
   Location at;
 };
@@ -122,12 +122,12 @@ struct SweepDesc {
 /// Motion in time (`motion:`): the coordinates the motion is described by, their values and
 /// rates at t = 0, and the defaults of `tackle simulate`.
 struct MotionDesc {
-  std::vector<Text> coordinates;                 // empty: the given coordinates
-  std::vector<std::pair<Text, Text>> initial;    // coordinate or rate -> expression in the parameters (SI)
+  std::vector<Text> coordinates;                   // empty: the given coordinates
+  std::vector<std::pair<Text, Text>> initial;      // coordinate or rate -> expression in the parameters (SI)
   std::vector<std::optional<Text>> initial_units;  // one per entry of `initial`: {value, unit} gave one
-  std::optional<Text> until;                     // simulate: the end time (a number in s, or value + unit)
+  std::optional<Text> until;                       // simulate: the end time (a number in s, or value + unit)
   std::optional<Text> until_unit;
-  std::vector<Text> plot;                        // simulate: quantities to tabulate and plot
+  std::vector<Text> plot;                         // simulate: quantities to tabulate and plot
   std::optional<std::pair<Text, Text>> speed_at;  // work-energy: the speed where a coordinate has this value
   Location at;
 };
@@ -181,9 +181,9 @@ struct Description {
   std::vector<std::pair<Text, Text>> layout;
   std::vector<GivenDesc> given;
   std::vector<FindDesc> find;
-  std::vector<DeriveDesc> derive;  // empty: tackle chooses a complete set
-  std::optional<SweepDesc> sweep;  // a default for `tackle sweep`, and a figure in LaTeX reports
-  std::optional<MotionDesc> motion;  // motion in time (equations of motion, response, simulate)
+  std::vector<DeriveDesc> derive;        // empty: tackle chooses a complete set
+  std::optional<SweepDesc> sweep;        // a default for `tackle sweep`, and a figure in LaTeX reports
+  std::optional<MotionDesc> motion;      // motion in time (equations of motion, response, simulate)
   std::optional<IntervalDesc> interval;  // constant acceleration over an interval
   std::optional<ImpactDesc> impact;      // an impact: momentum conserved, rates before -> after
   std::optional<SteadyDesc> steady;      // a steady motion whose rate is solved from the balances

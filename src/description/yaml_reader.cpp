@@ -127,7 +127,9 @@ class Loader {
 
   static Mark mark_of(const yaml_mark_t& m) { return {static_cast<int>(m.line), static_cast<int>(m.column)}; }
 
-  Location location(const yaml_mark_t& m) const { return {file_, static_cast<int>(m.line) + 1, static_cast<int>(m.column) + 1}; }
+  Location location(const yaml_mark_t& m) const {
+    return {file_, static_cast<int>(m.line) + 1, static_cast<int>(m.column) + 1};
+  }
 
   NodeData* make(Document& doc, NodeType type, const yaml_mark_t& m) {
     NodeData& d = doc.nodes_->emplace_back();
@@ -168,8 +170,9 @@ class Loader {
         const std::string name(text_of(ev.data.alias.anchor));
         const auto it = anchors_.find(name);
         if (it == anchors_.end()) {
-          diags_.error(location(ev.start_mark), "invalid YAML: the alias *" + name + " names no anchor before it (expected &" +
-                                                    name + " on a complete node earlier in the file)");
+          diags_.error(location(ev.start_mark), "invalid YAML: the alias *" + name +
+                                                    " names no anchor before it (expected &" + name +
+                                                    " on a complete node earlier in the file)");
           failed_ = true;
           return true;
         }
@@ -249,8 +252,8 @@ class Loader {
 Document load(const std::string& text, const std::string& file, Diagnostics& diags) {
   if (const auto bad = invalid_utf8_at(text)) {
     const Mark m = mark_at(text, *bad);
-    diags.error({file, m.line + 1, m.column + 1},
-                fmt::format("invalid UTF-8 byte 0x{:02X} (expected UTF-8 text)", static_cast<unsigned char>(text[*bad])));
+    diags.error({file, m.line + 1, m.column + 1}, fmt::format("invalid UTF-8 byte 0x{:02X} (expected UTF-8 text)",
+                                                              static_cast<unsigned char>(text[*bad])));
     return Document();
   }
   return Loader(text, file, diags).run();
@@ -309,8 +312,7 @@ void check_unique_keys(const Node& map, const std::string& what, const std::stri
       diags.error(where(kv.first, file), "duplicate key '" + kv.first.text() + "' in " + what);
 }
 
-std::optional<Text> scalar(const Node& n, const std::string& what, const std::string& file,
-                           Diagnostics& diags) {
+std::optional<Text> scalar(const Node& n, const std::string& what, const std::string& file, Diagnostics& diags) {
   if (!n.is_scalar()) {
     diags.error(where(n, file), what + " is " + kind_name(n) + " (expected a scalar)");
     return std::nullopt;
@@ -318,8 +320,8 @@ std::optional<Text> scalar(const Node& n, const std::string& what, const std::st
   return Text{n.text(), where(n, file)};
 }
 
-std::optional<std::vector<Text>> scalar_list(const Node& n, const std::string& what,
-                                             const std::string& file, Diagnostics& diags) {
+std::optional<std::vector<Text>> scalar_list(const Node& n, const std::string& what, const std::string& file,
+                                             Diagnostics& diags) {
   std::vector<Text> out;
   if (n.is_scalar()) {
     out.push_back({n.text(), where(n, file)});

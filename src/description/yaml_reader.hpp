@@ -133,12 +133,11 @@ bool check_map(const Node& map, const std::vector<std::string>& allowed, const s
 void check_unique_keys(const Node& map, const std::string& what, const std::string& file, Diagnostics& diags);
 
 /// A scalar as located text; reports and returns nullopt when the node is not a scalar.
-std::optional<Text> scalar(const Node& n, const std::string& what, const std::string& file,
-                           Diagnostics& diags);
+std::optional<Text> scalar(const Node& n, const std::string& what, const std::string& file, Diagnostics& diags);
 
 /// A scalar or a list of scalars.
-std::optional<std::vector<Text>> scalar_list(const Node& n, const std::string& what,
-                                             const std::string& file, Diagnostics& diags);
+std::optional<std::vector<Text>> scalar_list(const Node& n, const std::string& what, const std::string& file,
+                                             Diagnostics& diags);
 
 /// "a mapping", "a list", "a scalar" for messages.
 std::string kind_name(const Node& n);

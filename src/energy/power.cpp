@@ -38,8 +38,10 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
         if (!b.acceleration[k].is_zero()) ++nonzero, axis = k;
       const symbol v("v_" + b.name, "v_{" + b.name + "}");
       c.speeds.push_back(v);
-      if (nonzero == 1) velocity[i][axis] = v;
-      else velocity[i] = v * b.acceleration;
+      if (nonzero == 1)
+        velocity[i][axis] = v;
+      else
+        velocity[i] = v * b.acceleration;
       moving = true;
     }
   }
@@ -52,9 +54,11 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
   exvector kinetic, power;
   for (std::size_t i = 0; i < m.bodies.size(); ++i)
     if (m.bodies[i].has_mass)
-      kinetic.push_back(kinematics::kinetic_energy_rate(m, m.bodies[i], velocity[i], kinematics::omega(m, m.bodies[i])));
+      kinetic.push_back(
+          kinematics::kinetic_energy_rate(m, m.bodies[i], velocity[i], kinematics::omega(m, m.bodies[i])));
   for (const auto& l : m.loads)
-    if (l.body >= 0) power.push_back(kinematics::power(m.bodies[l.body], l, velocity[l.body], kinematics::omega(m, m.bodies[l.body])));
+    if (l.body >= 0)
+      power.push_back(kinematics::power(m.bodies[l.body], l, velocity[l.body], kinematics::omega(m, m.bodies[l.body])));
   c.kinetic_rate = add(kinetic);
   c.power = add(power);
   // sin^2 + cos^2 = 1 where that leaves fewer terms (a block on an incline: m v a, not

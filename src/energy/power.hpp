@@ -19,11 +19,11 @@ namespace tackle {
 
 struct PowerCheck {
   enum class Status { holds, fails, not_applicable } status = Status::not_applicable;
-  std::string reason;            // not_applicable: why, in words
-  GiNaC::ex kinetic_rate = 0;    // sum of m v.a, in the rates and accelerations
-  GiNaC::ex power = 0;           // sum of F.v, in the forces and rates
-  std::vector<GiNaC::ex> speeds; // speed symbols made for bodies moving without a coordinate
-  GiNaC::ex residual = 0;        // fails: d/dt(E_k) - P with everything solved put in
+  std::string reason;             // not_applicable: why, in words
+  GiNaC::ex kinetic_rate = 0;     // sum of m v.a, in the rates and accelerations
+  GiNaC::ex power = 0;            // sum of F.v, in the forces and rates
+  std::vector<GiNaC::ex> speeds;  // speed symbols made for bodies moving without a coordinate
+  GiNaC::ex residual = 0;         // fails: d/dt(E_k) - P with everything solved put in
 };
 
 [[nodiscard]] PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& sol);

@@ -153,12 +153,28 @@ EquationSystem build_equations(const Model& m) {
     eq.terms = {steps.acceleration};
     eq.sources = {"second time derivative of the " + c.meaning};
     s.equations.push_back(eq);
-    Equation rate{Equation::Kind::constraint_rate, c.label + ": rate", steps.rate, 0,
-                  {"first time derivative of the " + c.meaning}, {steps.rate}, "", {}, false, {}};
+    Equation rate{Equation::Kind::constraint_rate,
+                  c.label + ": rate",
+                  steps.rate,
+                  0,
+                  {"first time derivative of the " + c.meaning},
+                  {steps.rate},
+                  "",
+                  {},
+                  false,
+                  {}};
     s.rate_equations.push_back(rate);
     if (!c.constant.is_zero())
-      s.position_equations.push_back({Equation::Kind::constraint_position, c.label + ": position", varying, c.constant,
-                                      {"the " + c.meaning + " is constant"}, {varying}, "", {}, false, {}});
+      s.position_equations.push_back({Equation::Kind::constraint_position,
+                                      c.label + ": position",
+                                      varying,
+                                      c.constant,
+                                      {"the " + c.meaning + " is constant"},
+                                      {varying},
+                                      "",
+                                      {},
+                                      false,
+                                      {}});
   };
   // One equation per axis; a 2-D moment has only a z component.
   auto add_lmb = [&](const std::vector<int>& bodies, bool system) {
@@ -184,8 +200,8 @@ EquationSystem build_equations(const Model& m) {
       add_lmb({static_cast<int>(i)}, false);
       // A massless body has no center of mass to speak of: take moments about the origin.
       if (m.dims() > 1 && !particle(m, static_cast<int>(i)))
-        add_amb({static_cast<int>(i)}, false, b.has_cm ? b.cm : zero_vec(), b.has_cm ? "its center of mass" : "the origin",
-                std::nullopt, "");
+        add_amb({static_cast<int>(i)}, false, b.has_cm ? b.cm : zero_vec(),
+                b.has_cm ? "its center of mass" : "the origin", std::nullopt, "");
     }
     for (const auto& c : m.constraints) add_constraint(c);
   } else {
@@ -211,7 +227,8 @@ EquationSystem build_equations(const Model& m) {
       if (m.interval->duration) {
         eq.lhs = b.accel * *m.interval->duration;
         eq.rhs = *c.to - c.from;
-        eq.sources = {"impulse and momentum: the constant acceleration times the duration is the change of " + to_text(b.rate)};
+        eq.sources = {"impulse and momentum: the constant acceleration times the duration is the change of " +
+                      to_text(b.rate)};
       } else {
         eq.lhs = 2 * b.accel * *m.interval->distance;
         eq.rhs = pow(*c.to, 2) - pow(c.from, 2);
@@ -230,20 +247,23 @@ EquationSystem build_equations(const Model& m) {
     for (const ex& x : symbols_in(residuals.back())) present.insert(x);
   }
   for (const auto& u : m.candidates) {
-    const bool held = is_a<symbol>(u) ? present.count(u) != 0
-                                      : std::any_of(residuals.begin(), residuals.end(), [&](const ex& r) { return r.has(u); });
+    const bool held = is_a<symbol>(u)
+                          ? present.count(u) != 0
+                          : std::any_of(residuals.begin(), residuals.end(), [&](const ex& r) { return r.has(u); });
     if (held) s.unknowns.push_back(u);
   }
   // A massless body that no constraint ties: its balance fixes its coordinate (linearly, or
   // the problem is refused: a balance through a turning strand is not solved for it).
   for (const auto& q : balance_coordinates(m)) {
-    const auto body = std::find_if(m.bodies.begin(), m.bodies.end(), [&](const Body& b) { return b.coord.is_equal(q); });
+    const auto body =
+        std::find_if(m.bodies.begin(), m.bodies.end(), [&](const Body& b) { return b.coord.is_equal(q); });
     for (const auto& r : residuals)
       if (m.symbols->hidden_in_lengths(r, q))
-        throw InputError({{body->at, "body '" + body->name + "' has no mass and no constraint ties " + to_text(q) +
-                                         " to the other coordinates, so its balance fixes it; but a strand that turns with it "
-                                         "makes that balance nonlinear in " + to_text(q) +
-                                         " (expected a string or a joint that ties it, or a mass)"}});
+        throw InputError(
+            {{body->at, "body '" + body->name + "' has no mass and no constraint ties " + to_text(q) +
+                            " to the other coordinates, so its balance fixes it; but a strand that turns with it "
+                            "makes that balance nonlinear in " +
+                            to_text(q) + " (expected a string or a joint that ties it, or a mass)"}});
     if (present.count(q) != 0) s.unknowns.push_back(q);
   }
   return s;
@@ -283,15 +303,18 @@ std::vector<Diagnostic> check_dimensions(const Model& m, const EquationSystem& s
     if (eq.kind != Equation::Kind::lmb) continue;
     for (std::size_t i = 0; i < eq.terms.size(); ++i) {
       std::string problem;
-      const auto dim = dimension_of(without_plain_summands(i < eq.built.size() ? eq.built[i] : eq.terms[i]), table, problem);
+      const auto dim =
+          dimension_of(without_plain_summands(i < eq.built.size() ? eq.built[i] : eq.terms[i]), table, problem);
       if (!dim) {
         if (!problem.empty())
-          out.push_back({{m.file, 0, 0}, "equation '" + eq.label + "': the term from " + eq.sources[i] + " " + problem});
+          out.push_back(
+              {{m.file, 0, 0}, "equation '" + eq.label + "': the term from " + eq.sources[i] + " " + problem});
         continue;
       }
       if (!(*dim == Dimension::force()) && !(*dim == Dimension::none()))
-        out.push_back({{m.file, 0, 0}, "equation '" + eq.label + "' is not dimensionally consistent: the term from " +
-                                           eq.sources[i] + " is " + with_article(dim->describe()) + " (expected a force)"});
+        out.push_back({{m.file, 0, 0},
+                       "equation '" + eq.label + "' is not dimensionally consistent: the term from " + eq.sources[i] +
+                           " is " + with_article(dim->describe()) + " (expected a force)"});
     }
   }
   return out;

@@ -15,14 +15,14 @@ namespace tackle {
 
 struct Equation {
   enum class Kind { lmb, amb, constraint_acceleration, constraint_rate, constraint_position, interval, impact } kind;
-  std::string label;                // "LMB A (x)", "AMB board about G (axis OG)", "string s: acceleration"
+  std::string label;  // "LMB A (x)", "AMB board about G (axis OG)", "string s: acceleration"
   GiNaC::ex lhs, rhs;
-  std::vector<std::string> sources; // where each term of the lhs comes from
-  std::vector<GiNaC::ex> terms;     // the lhs terms, one per source
-  std::string why;                  // amb: what the choice of point or axis eliminates
-  std::vector<int> bodies;          // lmb, amb: the body or the system balanced
+  std::vector<std::string> sources;  // where each term of the lhs comes from
+  std::vector<GiNaC::ex> terms;      // the lhs terms, one per source
+  std::string why;                   // amb: what the choice of point or axis eliminates
+  std::vector<int> bodies;           // lmb, amb: the body or the system balanced
   bool system = false;
-  std::vector<GiNaC::ex> built;     // lmb: the same terms as built, not expanded (for units)
+  std::vector<GiNaC::ex> built;  // lmb: the same terms as built, not expanded (for units)
 };
 
 /// A constraint as the derivation shows it: the constant quantity, its rate, its acceleration.
@@ -36,9 +36,9 @@ struct ConstraintSteps {
 };
 
 struct EquationSystem {
-  std::vector<Equation> equations;         // what is solved
+  std::vector<Equation> equations;  // what is solved
   std::vector<ConstraintSteps> constraints;
-  std::vector<GiNaC::ex> unknowns;         // candidates that appear in the equations, in order
+  std::vector<GiNaC::ex> unknowns;  // candidates that appear in the equations, in order
   // The same constraints once differentiated (rates) and undifferentiated (positions, equal
   // to their constant), for velocity and position questions.
   std::vector<Equation> rate_equations;
@@ -57,6 +57,7 @@ struct EquationSystem {
 /// Angular momentum balance about a point, along a unit direction (the axis, or a coordinate
 /// direction for one component of the vector balance).
 [[nodiscard]] Equation amb_along(const Model& m, const std::vector<int>& bodies, bool system, const Vec& about,
-                                 const std::string& about_label, const Vec& direction, const std::string& direction_label);
+                                 const std::string& about_label, const Vec& direction,
+                                 const std::string& direction_label);
 
 }  // namespace tackle

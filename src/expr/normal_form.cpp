@@ -77,7 +77,8 @@ std::optional<ex> NormalForm::denominator_at(const exmap& values) const {
   // not a zero test anyway: the numeric look for a cancelling sum decides.
   const bool rational = is_rational_number(ds);
   const ex d = rational ? normal(ds) : ds;
-  if (d.is_zero() || has_hidden_pole(d) || (!rational && has_hidden_pole(1 / d)) || has_hidden_pole(substituted(num, values)))
+  if (d.is_zero() || has_hidden_pole(d) || (!rational && has_hidden_pole(1 / d)) ||
+      has_hidden_pole(substituted(num, values)))
     return std::nullopt;
   return d;
 }

@@ -21,8 +21,10 @@ bool primitive_sum_uncached(const ex& s) {
     if (!c.is_integer()) return false;
     if (g == 1) return true;
     if (c.is_zero()) return true;
-    if (!big && c.numer().int_length() < 62) g = std::gcd(g, std::labs(c.to_long()));
-    else big = true;
+    if (!big && c.numer().int_length() < 62)
+      g = std::gcd(g, std::labs(c.to_long()));
+    else
+      big = true;
     return true;
   };
   for (const auto& p : seq)

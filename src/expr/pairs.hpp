@@ -17,9 +17,7 @@ namespace tackle {
 struct Pairs : GiNaC::expairseq {
   /// The pairs (rest, numeric coeff) of a sum or product: a term rest*coeff, a factor
   /// rest^coeff.
-  static const GiNaC::epvector& of(const GiNaC::ex& e) {
-    return GiNaC::ex_to<GiNaC::expairseq>(e).*(&Pairs::seq);
-  }
+  static const GiNaC::epvector& of(const GiNaC::ex& e) { return GiNaC::ex_to<GiNaC::expairseq>(e).*(&Pairs::seq); }
   /// The numeric term of a sum (0 if none) or coefficient of a product (1 if none).
   static const GiNaC::numeric& overall(const GiNaC::ex& e) {
     return GiNaC::ex_to<GiNaC::numeric>(GiNaC::ex_to<GiNaC::expairseq>(e).*(&Pairs::overall_coeff));

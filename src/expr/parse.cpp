@@ -22,9 +22,7 @@ struct Token {
 };
 
 bool is_name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
-bool is_name_char(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
-}
+bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; }
 
 struct Failure {
   ParseProblem problem;
@@ -54,18 +52,14 @@ class Parser {
   const Token& peek() const { return tokens_[pos_]; }
   void advance() { ++pos_; }
 
-  [[noreturn]] void fail(int column, std::string message) {
-    throw Failure{{column, std::move(message)}};
-  }
-  [[noreturn]] void fail_limit(int column, std::string message) {
-    throw Failure{{column, std::move(message), true}};
-  }
+  [[noreturn]] void fail(int column, std::string message) { throw Failure{{column, std::move(message)}}; }
+  [[noreturn]] void fail_limit(int column, std::string message) { throw Failure{{column, std::move(message), true}}; }
 
  private:
   void tokenize() {
     if (text_.size() > limits_.max_length)
       fail_limit(0, "expression is too long (" + std::to_string(text_.size()) + " characters; at most " +
-                  std::to_string(limits_.max_length) + ")");
+                        std::to_string(limits_.max_length) + ")");
     std::size_t i = 0;
     while (i < text_.size()) {
       const char c = text_[i];
@@ -74,8 +68,8 @@ class Parser {
         ++i;
         continue;
       }
-      if (std::isdigit(static_cast<unsigned char>(c)) || (c == '.' && i + 1 < text_.size() &&
-                                                          std::isdigit(static_cast<unsigned char>(text_[i + 1])))) {
+      if (std::isdigit(static_cast<unsigned char>(c)) ||
+          (c == '.' && i + 1 < text_.size() && std::isdigit(static_cast<unsigned char>(text_[i + 1])))) {
         const std::size_t j = scan_number(text_, i);
         push(Tok::number, text_.substr(i, j - i), col);
         i = j;
@@ -89,21 +83,42 @@ class Parser {
         continue;
       }
       switch (c) {
-        case '+': case '-': case '*': case '/': case '^':
+        case '+':
+        case '-':
+        case '*':
+        case '/':
+        case '^':
           push(Tok::op, text_.substr(i, 1), col);
           ++i;
           continue;
-        case '>': case '<': case '=': {
+        case '>':
+        case '<':
+        case '=': {
           std::size_t len = (i + 1 < text_.size() && text_[i + 1] == '=') ? 2 : 1;
           push(Tok::op, text_.substr(i, len), col);
           i += len;
           continue;
         }
-        case '(': push(Tok::lparen, "(", col); ++i; continue;
-        case '[': push(Tok::lbracket, "[", col); ++i; continue;
-        case ']': push(Tok::rbracket, "]", col); ++i; continue;
-        case ')': push(Tok::rparen, ")", col); ++i; continue;
-        case ',': push(Tok::comma, ",", col); ++i; continue;
+        case '(':
+          push(Tok::lparen, "(", col);
+          ++i;
+          continue;
+        case '[':
+          push(Tok::lbracket, "[", col);
+          ++i;
+          continue;
+        case ']':
+          push(Tok::rbracket, "]", col);
+          ++i;
+          continue;
+        case ')':
+          push(Tok::rparen, ")", col);
+          ++i;
+          continue;
+        case ',':
+          push(Tok::comma, ",", col);
+          ++i;
+          continue;
         default: break;
       }
       // The whole character (not one byte of it), and a control character escaped.
@@ -122,8 +137,8 @@ class Parser {
     Parser& p;
     DepthGuard(Parser& parser, int column) : p(parser) {
       if (++p.depth_ > p.limits_.max_depth)
-        p.fail_limit(column, "expression is nested too deeply (at most " +
-                           std::to_string(p.limits_.max_depth) + " levels)");
+        p.fail_limit(column,
+                     "expression is nested too deeply (at most " + std::to_string(p.limits_.max_depth) + " levels)");
     }
     ~DepthGuard() { --p.depth_; }
   };
@@ -229,8 +244,7 @@ class Parser {
     for (char c : t.text)
       if (std::isdigit(static_cast<unsigned char>(c))) ++digits;
     if (digits > limits_.max_number_digits)
-      fail_limit(t.column, "number has too many digits (at most " +
-                         std::to_string(limits_.max_number_digits) + ")");
+      fail_limit(t.column, "number has too many digits (at most " + std::to_string(limits_.max_number_digits) + ")");
     // A whole number that fits a long (most numbers typed): as it is.
     if (digits == t.text.size() && digits <= 18) return numeric(std::stol(t.text));
     // Exact: mantissa digits over a power of ten, times 10^exponent.
@@ -260,7 +274,8 @@ class Parser {
     // expression may use (an answer may use ddot(y_B) without y_B).
     if (name.text == "dot" || name.text == "ddot") {
       const Token q = peek();
-      if (q.kind != Tok::name) fail(q.column, "'" + name.text + "' takes the name of a coordinate, as in " + name.text + "(x_A)");
+      if (q.kind != Tok::name)
+        fail(q.column, "'" + name.text + "' takes the name of a coordinate, as in " + name.text + "(x_A)");
       advance();
       if (peek().kind != Tok::rparen) fail(peek().column, "expected ')' to close '" + name.text + "('");
       advance();
@@ -293,7 +308,8 @@ class Parser {
       return args[i];
     };
     auto arity = [&](std::size_t n) {
-      if (args.size() != n) fail(name.column, "'" + f + "' takes " + std::to_string(n) + (n == 1 ? " argument" : " arguments"));
+      if (args.size() != n)
+        fail(name.column, "'" + f + "' takes " + std::to_string(n) + (n == 1 ? " argument" : " arguments"));
     };
     if (f == "unit" || f == "norm" || f == "perp1" || f == "perp2") {
       arity(1);
@@ -314,7 +330,8 @@ class Parser {
       const ex e = make_vector(least == 0 ? 1 : 0, least == 1 ? 1 : 0, least == 2 ? 1 : 0);
       const ex c = cross3(v, e);
       const ex cn = sqrt(c.op(0) * c.op(0) + c.op(1) * c.op(1) + c.op(2) * c.op(2));
-      if (normal(cn).is_zero()) fail(first_tokens[0].column, "'" + f + "' of a vector along the z axis is taken with its numbers given");
+      if (normal(cn).is_zero())
+        fail(first_tokens[0].column, "'" + f + "' of a vector along the z axis is taken with its numbers given");
       const ex p1 = scaled(c, 1 / cn);
       if (f == "perp1") return p1;
       return cross3(scaled(v, 1 / n), p1);
@@ -341,8 +358,7 @@ class Parser {
         const ex k = normal(a / Pi - numeric(1, 2));
         return is_a<numeric>(k) && ex_to<numeric>(k).is_integer();
       };
-      if (a.has(Pi) && pole())
-        fail(name.column, "tan is undefined at an odd multiple of pi/2");
+      if (a.has(Pi) && pole()) fail(name.column, "tan is undefined at an odd multiple of pi/2");
       return tan(a);
     }
     if (f == "exp") return exp(one_arg());
@@ -356,15 +372,15 @@ class Parser {
       if (a.is_zero()) fail(name.column, "log is undefined at 0");
       return log(a);
     }
-    fail(name.column, "unknown function '" + f + "' (known: sqrt, abs, sin, cos, tan, asin, acos, atan, sinh, cosh, exp, log, dot, ddot, unit, norm, cross, inner, perp1, perp2)");
+    fail(name.column, "unknown function '" + f +
+                          "' (known: sqrt, abs, sin, cos, tan, asin, acos, atan, sinh, cosh, exp, log, dot, ddot, "
+                          "unit, norm, cross, inner, perp1, perp2)");
   }
 
   ex primary() {
     const Token t = peek();
     switch (t.kind) {
-      case Tok::number:
-        advance();
-        return number(t);
+      case Tok::number: advance(); return number(t);
       case Tok::name: {
         advance();
         if (peek().kind == Tok::lparen) {
@@ -411,15 +427,13 @@ class Parser {
         DepthGuard guard(*this, t.column);
         advance();
         ex e = sum();
-        if (peek().kind != Tok::rparen) fail(peek().column, "expected ')' to close the '(' at column " +
-                                                              std::to_string(t.column + 1));
+        if (peek().kind != Tok::rparen)
+          fail(peek().column, "expected ')' to close the '(' at column " + std::to_string(t.column + 1));
         advance();
         return e;
       }
-      case Tok::end:
-        fail(t.column, "expression ends too early");
-      default:
-        fail(t.column, "unexpected '" + t.text + "'");
+      case Tok::end: fail(t.column, "expression ends too early");
+      default: fail(t.column, "unexpected '" + t.text + "'");
     }
   }
 
@@ -453,8 +467,8 @@ RelationResult parse_relation(std::string_view text, const NameResolver& names, 
     p.tokenize_only();
     ex lhs = p.sum_only();
     const Token op = p.peek();
-    if (op.kind != Tok::op || (op.text != ">=" && op.text != "<=" && op.text != ">" && op.text != "<" &&
-                               op.text != "=" && op.text != "=="))
+    if (op.kind != Tok::op ||
+        (op.text != ">=" && op.text != "<=" && op.text != ">" && op.text != "<" && op.text != "=" && op.text != "=="))
       p.fail(op.column, "expected a relation such as 'T >= 0'");
     p.advance();
     ex rhs = p.sum_only();

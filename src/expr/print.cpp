@@ -143,7 +143,8 @@ std::string key_of_uncached(const ex& e);
 bool natural_less(const std::string& a, const std::string& b) {
   std::size_t i = 0, j = 0;
   while (i < a.size() && j < b.size()) {
-    const bool da = std::isdigit(static_cast<unsigned char>(a[i])) != 0, db = std::isdigit(static_cast<unsigned char>(b[j])) != 0;
+    const bool da = std::isdigit(static_cast<unsigned char>(a[i])) != 0,
+               db = std::isdigit(static_cast<unsigned char>(b[j])) != 0;
     if (da && db) {
       std::size_t ie = i, je = j;
       while (ie < a.size() && std::isdigit(static_cast<unsigned char>(a[ie]))) ++ie;
@@ -171,7 +172,8 @@ std::string key_of(const ex& e) {
   if (is_exactly<numeric>(e)) return "~";  // numbers after names in sums
   // Fast paths for the common keys: a name, a name to an integer power.
   if (is_exactly<symbol>(e)) return ex_to<symbol>(e).get_name();
-  if (is_exactly<power>(e) && is_exactly<symbol>(e.op(0)) && is_exactly<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_pos_integer())
+  if (is_exactly<power>(e) && is_exactly<symbol>(e.op(0)) && is_exactly<numeric>(e.op(1)) &&
+      ex_to<numeric>(e.op(1)).is_pos_integer())
     return ex_to<symbol>(e.op(0)).get_name() + "^" + std::to_string(ex_to<numeric>(e.op(1)).to_int());
   if (auto it = key_cache().keys.find(e); it != key_cache().keys.end()) return it->second;
   std::string k = key_of_uncached(e);
@@ -464,8 +466,10 @@ void print_add_terms(const add& s, const print_context& c) {
   auto print_terms = [&](const std::vector<Term>& terms, const char* sign) {
     for (std::size_t i = 0; i < terms.size();) {
       const std::size_t run =
-          latex ? index_run(terms, i, [](const Term& a, const Term& b) { return a.f.num_c == b.f.num_c && a.f.den_c == b.f.den_c; })
-                : 1;
+          latex
+              ? index_run(terms, i,
+                          [](const Term& a, const Term& b) { return a.f.num_c == b.f.num_c && a.f.den_c == b.f.den_c; })
+              : 1;
       os << (first ? (sign[1] == '-' ? "-" : "") : sign);
       print_fraction(terms[i].f, c, add_prec);
       first = false;
@@ -602,7 +606,8 @@ Fraction split_uncached(const ex& e) {
 }
 
 // Writes a product of a coefficient and factors straight into the context's stream.
-void print_product(const numeric& coeff, const std::vector<ex>& factors, const print_context& c, bool standalone_parens) {
+void print_product(const numeric& coeff, const std::vector<ex>& factors, const print_context& c,
+                   bool standalone_parens) {
   const bool latex = latex_ctx(c);
   std::ostream& os = c.s;
   bool first = true;
@@ -643,8 +648,8 @@ void print_fraction(const Fraction& given, const print_context& c, unsigned leve
   const Fraction& f = latex && person_rank() ? reordered : given;
   std::ostream& os = c.s;
   const bool has_den = f.den_c != 1 || !f.den.empty();
-  const bool paren = (f.negative && level > add_prec) || (!latex && has_den && level >= pow_prec) ||
-                     (!has_den && level >= pow_prec);
+  const bool paren =
+      (f.negative && level > add_prec) || (!latex && has_den && level >= pow_prec) || (!has_den && level >= pow_prec);
   if (paren) os << (latex ? "\\left(" : "(");
   if (f.negative) os << "-";
   if (!has_den) {
@@ -689,15 +694,17 @@ void print_power(const power& p, const print_context& c, unsigned level) {
   }
   const bool paren = level >= pow_prec;
   if (paren) os << (latex ? "\\left(" : "(");
-  const bool base_paren = !(is_exactly<symbol>(base) || (is_exactly<numeric>(base) && ex_to<numeric>(base).is_pos_integer()) ||
-                            is_exactly<function>(base));
+  const bool base_paren =
+      !(is_exactly<symbol>(base) || (is_exactly<numeric>(base) && ex_to<numeric>(base).is_pos_integer()) ||
+        is_exactly<function>(base));
   if (base_paren) os << (latex ? "\\left(" : "(");
   os << render(base, c, base_paren ? 0 : pow_prec);
   if (base_paren) os << (latex ? "\\right)" : ")");
   if (latex) {
     os << "^{" << render(expo, c, 0) << "}";
   } else {
-    const bool simple = is_exactly<symbol>(expo) || (is_exactly<numeric>(expo) && ex_to<numeric>(expo).is_pos_integer());
+    const bool simple =
+        is_exactly<symbol>(expo) || (is_exactly<numeric>(expo) && ex_to<numeric>(expo).is_pos_integer());
     os << "^" << (simple ? "" : "(") << render(expo, c, 0) << (simple ? "" : ")");
   }
   if (paren) os << (latex ? "\\right)" : ")");
@@ -705,8 +712,10 @@ void print_power(const power& p, const print_context& c, unsigned level) {
 
 // pi as the parser reads it (GiNaC's own text form is "Pi").
 void print_constant_text(const constant& k, const print_context& c, unsigned) {
-  if (ex(k).is_equal(Pi)) c.s << "pi";
-  else k.print(print_dflt(c.s));
+  if (ex(k).is_equal(Pi))
+    c.s << "pi";
+  else
+    k.print(print_dflt(c.s));
 }
 
 struct Registration {

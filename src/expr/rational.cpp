@@ -37,9 +37,7 @@ ex numer_denom_remembered(const ex& e) {
   return nd;
 }
 
-Memory& normal_memory() {
-  return thread_memory<struct fraction_memory, Memory>();
-}
+Memory& normal_memory() { return thread_memory<struct fraction_memory, Memory>(); }
 
 void remember_normal(const ex& e, const ex& n) {
   Memory& memory = normal_memory();
@@ -59,7 +57,8 @@ ex with_common_sums_cancelled(const ex& e) {
   if (!is_exactly<mul>(e)) return e;
   bool over = false, under = false;
   for (const auto& p : Pairs::of(e))
-    if (is_exactly<add>(p.rest) && ex_to<numeric>(p.coeff).is_integer()) (ex_to<numeric>(p.coeff).is_positive() ? over : under) = true;
+    if (is_exactly<add>(p.rest) && ex_to<numeric>(p.coeff).is_integer())
+      (ex_to<numeric>(p.coeff).is_positive() ? over : under) = true;
   if (!over || !under) return e;
   std::size_t sums = 0;
   ex out = Pairs::overall(e);
@@ -382,7 +381,8 @@ namespace {
 // remembered by its hash, so a sum over 256 masses met again costs no comparisons of names.
 // Only the symbols `keep` says yes to are gathered.
 template <class Keep>
-void gather_symbols(const ex& e, std::unordered_set<ex, ExHash, ex_is_equal>& seen, std::vector<ex>& out, const Keep& keep) {
+void gather_symbols(const ex& e, std::unordered_set<ex, ExHash, ex_is_equal>& seen, std::vector<ex>& out,
+                    const Keep& keep) {
   if (is_exactly<symbol>(e)) {
     if (keep(e) && seen.insert(e).second) out.push_back(e);
     return;
@@ -469,8 +469,7 @@ ex substituted(const ex& e, const exmap& m) {
 
 bool is_polynomial_in_symbols(const ex& e) {
   if (is_exactly<symbol>(e) || is_exactly<numeric>(e)) return true;
-  if (is_exactly<power>(e))
-    return e.op(1).info(info_flags::nonnegint) && is_polynomial_in_symbols(e.op(0));
+  if (is_exactly<power>(e)) return e.op(1).info(info_flags::nonnegint) && is_polynomial_in_symbols(e.op(0));
   if (!is_exactly<add>(e) && !is_exactly<mul>(e)) return false;
   const std::size_t n = e.nops();
   for (std::size_t i = 0; i < n; ++i)
@@ -561,7 +560,9 @@ std::map<ex, int, ex_is_less> low_degrees(const ex& expanded) {
   // The power of a symbol in a term (0 when it is not there or not to a whole power).
   auto degree_in = [](const ex& term, const ex& x) -> int {
     auto one = [&](const ex& base, const ex& expo) {
-      return is_exactly<symbol>(base) && base.is_equal(x) && expo.info(info_flags::nonnegint) ? ex_to<numeric>(expo).to_int() : 0;
+      return is_exactly<symbol>(base) && base.is_equal(x) && expo.info(info_flags::nonnegint)
+                 ? ex_to<numeric>(expo).to_int()
+                 : 0;
     };
     if (is_exactly<mul>(term)) {
       for (const auto& f : Pairs::of(term))

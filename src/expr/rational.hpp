@@ -150,8 +150,8 @@ struct ModularAt {
 /// order: not for choosing what is printed).
 [[nodiscard]] std::vector<GiNaC::ex> distinct_symbols(const GiNaC::ex& e);
 /// The same, only those in `among` (a look-up per symbol met, nothing kept for the others).
-[[nodiscard]] std::vector<GiNaC::ex> distinct_symbols_among(const GiNaC::ex& e,
-                                                            const std::unordered_set<GiNaC::ex, ExHash, GiNaC::ex_is_equal>& among);
+[[nodiscard]] std::vector<GiNaC::ex> distinct_symbols_among(
+    const GiNaC::ex& e, const std::unordered_set<GiNaC::ex, ExHash, GiNaC::ex_is_equal>& among);
 
 /// The symbols of `e`.
 [[nodiscard]] std::set<GiNaC::ex, GiNaC::ex_is_less> symbols_in(const GiNaC::ex& e);

@@ -44,12 +44,13 @@ struct FbdDraw {
   std::vector<Drawn> drawn;
   std::vector<std::vector<std::array<double, 3>>> body_points;  // each body's, model units (2-D and 3-D)
   double scale = 1;                                             // model units to drawing units
-  std::vector<double> offsets;  // each arrow's, sideways, to keep off another arrow
+  std::vector<double> offsets;                                  // each arrow's, sideways, to keep off another arrow
 
   // Model space onto paper (1-D: the axis vertical when gravity acts along it); a system's
   // forces from outside it only: a connection (or strand) whose loads on the system's bodies
   // add up to nothing is internal to it.
-  FbdDraw(const Model& model, Number number, const std::vector<int>& drawn_bodies, bool system, const std::set<ex, ex_is_less>& unknown)
+  FbdDraw(const Model& model, Number number, const std::vector<int>& drawn_bodies, bool system,
+          const std::set<ex, ex_is_less>& unknown)
       : m(model), num(std::move(number)), bodies(drawn_bodies), unknowns(unknown), body_points(drawn_bodies.size()) {
     proj.dims = m.dims();
     if (proj.dims == 1) {
@@ -66,7 +67,8 @@ struct FbdDraw {
   // The arrows of a force vector: one per unknown in it (its coefficient gives the
   // direction), and one per axis for what is known (pointing the way that leaves its label
   // without a minus sign: m g down, not -m g up).
-  void decompose(int body, const Vec& force, std::optional<std::array<double, 3>> at, const ex& factor, bool dashed, bool at_cm) {
+  void decompose(int body, const Vec& force, std::optional<std::array<double, 3>> at, const ex& factor, bool dashed,
+                 bool at_cm) {
     for (const ForcePart& part : split_force(m, force, unknowns, num)) {
       if (!part.unknown.is_zero()) {
         const V d = proj(part.numbers);
@@ -79,7 +81,8 @@ struct FbdDraw {
           }
         ex label = part.key * part.unknown;
         if (nonzero == 1)
-          label = (part.numbers[which] < 0 ? -part.coefficients[which] : part.coefficients[which]) * part.key * part.unknown;
+          label = (part.numbers[which] < 0 ? -part.coefficients[which] : part.coefficients[which]) * part.key *
+                  part.unknown;
         pending.push_back({body, at, normalized(d), factor * label, dashed, at_cm});
         continue;
       }
@@ -103,13 +106,17 @@ struct FbdDraw {
     for (std::size_t i = 0; i < bodies.size(); ++i) {
       const Body& b = m.bodies[bodies[i]];
       if (proj.dims > 1 && b.has_cm) {
-        if (auto p = point3(b.cm)) body_points[i].push_back(*p);
-        else failed = true;
+        if (auto p = point3(b.cm))
+          body_points[i].push_back(*p);
+        else
+          failed = true;
       }
       for (const auto& l : m.loads)
         if (l.body == bodies[i] && l.at && proj.dims > 1) {
-          if (auto p = point3(*l.at)) body_points[i].push_back(*p);
-          else failed = true;
+          if (auto p = point3(*l.at))
+            body_points[i].push_back(*p);
+          else
+            failed = true;
         }
     }
     return !failed;
@@ -144,7 +151,8 @@ struct FbdDraw {
       } else if (!body_points[i].empty()) {
         centre = scale * proj(body_points[i].front());
       }
-      const Drawn d = draw_body(m, bodies[i], body_points[i], proj, scale, num, centre, std::nullopt, particle_side, 0.3);
+      const Drawn d =
+          draw_body(m, bodies[i], body_points[i], proj, scale, num, centre, std::nullopt, particle_side, 0.3);
       f.outlines.push_back(d.outline);
       drawn.push_back(d);
     }
@@ -182,7 +190,8 @@ struct FbdDraw {
       decompose(bi, b.acceleration, at, b.mass, true, true);
     }
     if (proj.dims == 2 && !b.angle.is_zero() && !b.inertia.is_zero()) {
-      const auto q = std::find_if(m.coordinates.begin(), m.coordinates.end(), [&](const Coordinate& c) { return c.q.is_equal(b.angle); });
+      const auto q = std::find_if(m.coordinates.begin(), m.coordinates.end(),
+                                  [&](const Coordinate& c) { return c.q.is_equal(b.angle); });
       if (q != m.coordinates.end()) {
         FigureCouple c;
         c.centre = fp(drawn[i].centre);
@@ -300,8 +309,9 @@ struct FbdDraw {
       const double reach = 0.5 * (std::fabs(out.x) * w + std::fabs(out.y) * label_height) + gap;
       const V mid = 0.5 * (t + h);
       const double side = 0.5 * (std::fabs(n.x) * w + std::fabs(n.y) * label_height) + gap;
-      a.label = lay.place(a.label.tex, {end + reach * out, end + side * n, end - side * n, mid + side * n, mid - side * n,
-                                        end + reach * out + side * n, end + reach * out - side * n, end + (reach + 0.4) * out});
+      a.label = lay.place(a.label.tex,
+                          {end + reach * out, end + side * n, end - side * n, mid + side * n, mid - side * n,
+                           end + reach * out + side * n, end + reach * out - side * n, end + (reach + 0.4) * out});
     }
     for (auto& c : f.couples) {
       std::vector<V> cand{vp(c.centre) + V{0, c.radius + 0.3}, vp(c.centre) + V{c.radius + 0.4, 0}};
@@ -314,7 +324,8 @@ struct FbdDraw {
         const V p = vp(d.at);
         std::vector<V> cand;
         for (const double r : {0.3, 0.55})
-          for (V dir : {V{-1, -1}, V{1, -1}, V{-1, 1}, V{1, 1}, V{0, -1}, V{-1, 0}, V{1, 0}, V{0, 1}}) cand.push_back(p + r * dir);
+          for (V dir : {V{-1, -1}, V{1, -1}, V{-1, 1}, V{1, 1}, V{0, -1}, V{-1, 0}, V{1, 0}, V{0, 1}})
+            cand.push_back(p + r * dir);
         d.label = lay.place(d.label->tex, cand);
       }
   }
@@ -327,7 +338,8 @@ struct FbdDraw {
     std::vector<std::string> names;
     for (int bi : bodies) names.push_back(m.bodies[bi].name);
     std::string list;
-    for (std::size_t i = 0; i < names.size(); ++i) list += (i ? (i + 1 == names.size() ? " and " : ", ") : "") + names[i];
+    for (std::size_t i = 0; i < names.size(); ++i)
+      list += (i ? (i + 1 == names.size() ? " and " : ", ") : "") + names[i];
     f.caption = std::string("Free body diagram of ") + (system && bodies.size() > 1 ? "the system " : "") + list;
     f.bodies = bodies;
     f.system = system;
@@ -436,7 +448,8 @@ struct BodyShape {
       const double length = unit * num(b.drawn_size[0]).value_or(1);
       d.outline = rectangle(d.centre, along, length + overhang, std::min(0.35, 0.12 * length));
     } else {
-      d.outline = rectangle(d.centre, along, unit * num(b.drawn_size[0]).value_or(1), unit * num(b.drawn_size[1]).value_or(1));
+      d.outline =
+          rectangle(d.centre, along, unit * num(b.drawn_size[0]).value_or(1), unit * num(b.drawn_size[1]).value_or(1));
     }
     d.outline.name = b.name;
     d.particle = proj.dims == 1 || points.size() <= 1;  // else forces at their points
@@ -483,8 +496,10 @@ struct BodyShape {
     for (int k = 0; k < m.dims(); ++k) {
       const ex ak = u ? b.acceleration[k].expand().coeff(*u, 1) : b.acceleration[k];
       auto v = num(ak);
-      if (!v) ok = false;
-      else a[k] = *v;
+      if (!v)
+        ok = false;
+      else
+        a[k] = *v;
     }
     if (ok && len(proj(a)) > 1e-9) way = normalized(proj(a));
     if (way.x < 0) way = -1 * way;
@@ -506,8 +521,10 @@ struct BodyShape {
         for (int k = 0; k < 3; ++k) {
           const double span = x.hi[k] - x.lo[k];
           if (span <= 0.08 * x.longest) continue;
-          if ((*cm)[k] >= x.hi[k] - 0.02 * span) x.hi[k] = x.lo[k] + 2 * span;
-          else if ((*cm)[k] <= x.lo[k] + 0.02 * span) x.lo[k] = x.hi[k] - 2 * span;
+          if ((*cm)[k] >= x.hi[k] - 0.02 * span)
+            x.hi[k] = x.lo[k] + 2 * span;
+          else if ((*cm)[k] <= x.lo[k] + 0.02 * span)
+            x.lo[k] = x.hi[k] - 2 * span;
         }
     return x;
   }
@@ -547,8 +564,8 @@ struct BodyShape {
 
 }  // namespace
 
-Drawn draw_body(const Model& m, int body, const std::vector<std::array<double, 3>>& points, const Projection& proj, double scale,
-                const Number& num, V centre, std::optional<V> along, double side, double overhang) {
+Drawn draw_body(const Model& m, int body, const std::vector<std::array<double, 3>>& points, const Projection& proj,
+                double scale, const Number& num, V centre, std::optional<V> along, double side, double overhang) {
   const Body& b = m.bodies[body];
   Drawn d;
   d.body = body;
@@ -591,8 +608,8 @@ void draw_strand(Figure& f, const std::string& as, V p, V q, V across) {
     const V u = normalized(q - p);
     const double l = len(q - p), mid = l / 2, h = 0.22, w = std::min(0.35, 0.3 * l);
     f.lines.push_back({{fp(p), fp(p + (mid - w) * u)}, false});
-    f.lines.push_back({{fp(p + (mid + w) * u + h * across), fp(p + (mid - w) * u + h * across), fp(p + (mid - w) * u - h * across),
-                        fp(p + (mid + w) * u - h * across)},
+    f.lines.push_back({{fp(p + (mid + w) * u + h * across), fp(p + (mid - w) * u + h * across),
+                        fp(p + (mid - w) * u - h * across), fp(p + (mid + w) * u - h * across)},
                        false});
     f.lines.push_back({{fp(p + mid * u + 0.7 * h * across), fp(p + mid * u - 0.7 * h * across)}, false});
     f.lines.push_back({{fp(p + mid * u), fp(q)}, false});
@@ -605,10 +622,13 @@ void draw_ground(Figure& f, V a, V b, V into) {
   f.lines.push_back({{fp(a), fp(b)}, false});
   const double l = len(b - a);
   const V u = normalized(b - a);
-  for (double s = 0; s <= l + 1e-9; s += hatch_step) f.lines.push_back({{fp(a + s * u), fp(a + s * u + hatch * into + hatch * u)}, true});
+  for (double s = 0; s <= l + 1e-9; s += hatch_step)
+    f.lines.push_back({{fp(a + s * u), fp(a + s * u + hatch * into + hatch * u)}, true});
 }
 
-std::optional<std::array<double, 3>> point3(const Model& m, const Number& num, const Vec& v) { return point_at(m, num, v); }
+std::optional<std::array<double, 3>> point3(const Model& m, const Number& num, const Vec& v) {
+  return point_at(m, num, v);
+}
 
 }  // namespace fig
 
@@ -622,7 +642,9 @@ FigureMaker::FigureMaker(const Model& m, const exmap& values)
 // none where it is undefined or not real.
 std::optional<double> FigureMaker::number(const ex& e) const { return real_at(e, values_); }
 
-std::optional<Figure> FigureMaker::redraw(const Figure& f) const { return f.sketch ? sketch() : draw(f.bodies, f.system); }
+std::optional<Figure> FigureMaker::redraw(const Figure& f) const {
+  return f.sketch ? sketch() : draw(f.bodies, f.system);
+}
 
 std::optional<Figure> free_body_diagram(const Model& m, const std::vector<int>& bodies, bool system) {
   return FigureMaker(m).draw(bodies, system);
@@ -630,7 +652,8 @@ std::optional<Figure> free_body_diagram(const Model& m, const std::vector<int>& 
 
 std::optional<Figure> FigureMaker::draw(const std::vector<int>& bodies, bool system) const {
   PersonOrder order(factor_rank({m_.symbols}));
-  FbdDraw s(m_, [this](const ex& e) { return number(e); }, bodies, system, unknowns_);
+  FbdDraw s(
+      m_, [this](const ex& e) { return number(e); }, bodies, system, unknowns_);
   if (!s.gather()) return std::nullopt;
   s.choose_scale();
   s.outlines();

@@ -18,16 +18,16 @@ struct FigurePoint {
 };
 
 struct FigureLabel {
-  FigurePoint at;     // the centre of the label
-  std::string tex;    // LaTeX math (no dollars)
+  FigurePoint at;                // the centre of the label
+  std::string tex;               // LaTeX math (no dollars)
   double width = 0, height = 0;  // the box the layout kept free for it
 };
 
 struct FigureArrow {
   FigurePoint from, to;  // tail, head
   FigureLabel label;
-  bool dashed = false;   // the inertial term m a
-  bool axis = false;     // a coordinate axis of the triad
+  bool dashed = false;  // the inertial term m a
+  bool axis = false;    // a coordinate axis of the triad
 };
 
 struct FigureCouple {
@@ -43,7 +43,7 @@ struct FigureOutline {
   std::vector<FigurePoint> corners;  // polygon, in order
   FigurePoint centre;                // circle
   double radius = 0;
-  std::string name;                  // the body's name
+  std::string name;  // the body's name
 };
 
 struct FigureDot {
@@ -58,13 +58,13 @@ struct FigureLine {
 };
 
 struct Figure {
-  std::string caption;  // "Free body diagram of the suitcase"
-  bool sketch = false;  // the mechanism's sketch (a sheet shows it), not a free body diagram
+  std::string caption;      // "Free body diagram of the suitcase"
+  bool sketch = false;      // the mechanism's sketch (a sheet shows it), not a free body diagram
   std::vector<int> bodies;  // a free body diagram's bodies, and whether as one system (to draw it again)
   bool system = false;
   std::vector<FigureOutline> outlines;
-  std::vector<FigureLine> lines;     // drawn over the outlines
-  std::vector<FigureLabel> texts;    // names written on the figure (a block's)
+  std::vector<FigureLine> lines;   // drawn over the outlines
+  std::vector<FigureLabel> texts;  // names written on the figure (a block's)
   std::vector<FigureDot> dots;
   std::vector<FigureArrow> arrows;  // forces, inertial terms and the axes
   std::vector<FigureCouple> couples;
@@ -138,9 +138,10 @@ struct SvgLabel {
   double x = 0, baseline = 0, width = 0, font_size = 0;
   std::vector<SvgDot> dots;
 };
-constexpr double svg_font_size = 0.35;               // as TikZ's \small (10 pt) in a 1 cm unit
-constexpr double svg_ascent = 0.8, svg_descent = 0.3;  // of the font size: capitals with a dot or a superscript, a subscript
-constexpr double svg_margin = 0.04;                  // between the text and its box's sides
+constexpr double svg_font_size = 0.35;  // as TikZ's \small (10 pt) in a 1 cm unit
+constexpr double svg_ascent = 0.8,
+                 svg_descent = 0.3;  // of the font size: capitals with a dot or a superscript, a subscript
+constexpr double svg_margin = 0.04;  // between the text and its box's sides
 [[nodiscard]] SvgLabel svg_label(const FigureLabel& l);
 /// The number of characters a label shows (for its width).
 [[nodiscard]] std::size_t shown_length(const std::string& tex);

@@ -28,22 +28,21 @@ inline V perp(V a) { return {-a.y, a.x}; }
 inline FigurePoint fp(V a) { return {a.x, a.y}; }
 inline V vp(FigurePoint a) { return {a.x, a.y}; }
 
-
 // Sizes in drawing units (about centimetres).
-constexpr double body_extent = 3.2;   // the largest drawn body
-constexpr double particle_side = 1.2; // a body drawn around one point
+constexpr double body_extent = 3.2;    // the largest drawn body
+constexpr double particle_side = 1.2;  // a body drawn around one point
 constexpr double arrow_length = 1.2;
-constexpr double spacing = 0.38;      // between parallel arrows that would overlap
+constexpr double spacing = 0.38;  // between parallel arrows that would overlap
 constexpr double char_width = 0.2, label_height = 0.42, gap = 0.1;
 constexpr double label_spacing = 0.06;  // kept between two labels' boxes
-
 
 inline bool inside(const FigureOutline& o, V p) {
   if (o.shape == FigureOutline::Shape::circle) return len(p - vp(o.centre)) < o.radius;
   bool in = false;
   const auto& c = o.corners;
   for (std::size_t i = 0, j = c.size() - 1; i < c.size(); j = i++) {
-    if ((c[i].y > p.y) != (c[j].y > p.y) && p.x < (c[j].x - c[i].x) * (p.y - c[i].y) / (c[j].y - c[i].y) + c[i].x) in = !in;
+    if ((c[i].y > p.y) != (c[j].y > p.y) && p.x < (c[j].x - c[i].x) * (p.y - c[i].y) / (c[j].y - c[i].y) + c[i].x)
+      in = !in;
   }
   return in;
 }
@@ -154,7 +153,8 @@ class Layout {
     for (int ring = 1; ring <= 6 && best >= arrow_penalty; ++ring)
       for (int k = 0; k < 16; ++k) {
         const double a = 2 * M_PI * k / 16, r = 0.3 * ring;
-        consider(candidates.front() + V{(r + l.width / 2) * std::cos(a), (r + l.height / 2) * std::sin(a)}, 1 + 0.1 * ring);
+        consider(candidates.front() + V{(r + l.width / 2) * std::cos(a), (r + l.height / 2) * std::sin(a)},
+                 1 + 0.1 * ring);
       }
     l.at = fp(at);
     boxes_.push_back({at, l.width, l.height});
@@ -176,7 +176,8 @@ class Layout {
     for (const auto& t : f_.texts)
       if (overlaps(b, {vp(t.at), t.width, t.height})) p += 100;
     for (const auto& o : f_.outlines) {
-      for (V c : {b.c, b.c + V{b.w / 2, b.h / 2}, b.c + V{-b.w / 2, b.h / 2}, b.c + V{b.w / 2, -b.h / 2}, b.c + V{-b.w / 2, -b.h / 2}})
+      for (V c : {b.c, b.c + V{b.w / 2, b.h / 2}, b.c + V{-b.w / 2, b.h / 2}, b.c + V{b.w / 2, -b.h / 2},
+                  b.c + V{-b.w / 2, -b.h / 2}})
         if (inside(o, c)) p += 3;
       if (o.shape == FigureOutline::Shape::polygon)
         for (std::size_t i = 0; i < o.corners.size(); ++i)
@@ -189,7 +190,8 @@ class Layout {
       for (int k = 0; k < 10; ++k) {
         const double a0 = (-60.0 + 30.0 * k) * M_PI / 180, a1 = (-60.0 + 30.0 * (k + 1)) * M_PI / 180;
         const V centre = vp(c.centre);
-        if (box_hits_segment(b, centre + c.radius * V{std::cos(a0), std::sin(a0)}, centre + c.radius * V{std::cos(a1), std::sin(a1)})) {
+        if (box_hits_segment(b, centre + c.radius * V{std::cos(a0), std::sin(a0)},
+                             centre + c.radius * V{std::cos(a1), std::sin(a1)})) {
           p += 10;
           break;
         }
@@ -208,7 +210,8 @@ struct Projection {
   double turn = 0;  // 2-D: the plane turned by this angle (a sketch turns it so that gravity points down)
   [[nodiscard]] V operator()(const std::array<double, 3>& p) const {
     if (dims == 1) return p[0] * axis1;
-    if (dims == 2) return {std::cos(turn) * p[0] - std::sin(turn) * p[1], std::sin(turn) * p[0] + std::cos(turn) * p[1]};
+    if (dims == 2)
+      return {std::cos(turn) * p[0] - std::sin(turn) * p[1], std::sin(turn) * p[0] + std::cos(turn) * p[1]};
     return {p[1] - 0.5 * p[0], p[2] - 0.35 * p[0]};
   }
   [[nodiscard]] V axis(int k) const {
@@ -239,8 +242,9 @@ using Number = std::function<std::optional<double>(const GiNaC::ex&)>;
 /// a bar, plate or box through its points. `centre` is where it is on paper; `scale` turns
 /// model units into drawing units; a rod or bar reaches `overhang` beyond its end points in
 /// all (a free body diagram's 0.3: no force at an end runs along an edge; a sketch's 0).
-[[nodiscard]] Drawn draw_body(const Model& m, int body, const std::vector<std::array<double, 3>>& points, const Projection& proj,
-                              double scale, const Number& num, V centre, std::optional<V> along, double side, double overhang);
+[[nodiscard]] Drawn draw_body(const Model& m, int body, const std::vector<std::array<double, 3>>& points,
+                              const Projection& proj, double scale, const Number& num, V centre, std::optional<V> along,
+                              double side, double overhang);
 
 constexpr double hatch = 0.22, hatch_step = 0.25;  // the ground's hatching: its strokes and their spacing
 

@@ -31,13 +31,13 @@ std::string xml_escape(char c) {
 
 const std::map<std::string, std::string>& greek() {
   static const std::map<std::string, std::string> g{
-      {"alpha", "α"}, {"beta", "β"},   {"gamma", "γ"},  {"delta", "δ"},   {"epsilon", "ε"}, {"varepsilon", "ε"},
-      {"zeta", "ζ"},  {"eta", "η"},    {"theta", "θ"},  {"vartheta", "ϑ"}, {"iota", "ι"},    {"kappa", "κ"},
-      {"lambda", "λ"}, {"mu", "μ"},    {"nu", "ν"},     {"xi", "ξ"},      {"pi", "π"},      {"rho", "ρ"},
-      {"sigma", "σ"}, {"tau", "τ"},    {"upsilon", "υ"}, {"phi", "φ"},    {"varphi", "φ"},  {"chi", "χ"},
-      {"psi", "ψ"},   {"omega", "ω"},  {"Gamma", "Γ"},  {"Delta", "Δ"},   {"Theta", "Θ"},   {"Lambda", "Λ"},
-      {"Xi", "Ξ"},    {"Pi", "Π"},     {"Sigma", "Σ"},  {"Phi", "Φ"},     {"Psi", "Ψ"},     {"Omega", "Ω"},
-      {"cdot", "·"},  {"times", "×"},  {"infty", "∞"},  {"ell", "ℓ"}};
+      {"alpha", "α"},  {"beta", "β"},  {"gamma", "γ"},   {"delta", "δ"},    {"epsilon", "ε"}, {"varepsilon", "ε"},
+      {"zeta", "ζ"},   {"eta", "η"},   {"theta", "θ"},   {"vartheta", "ϑ"}, {"iota", "ι"},    {"kappa", "κ"},
+      {"lambda", "λ"}, {"mu", "μ"},    {"nu", "ν"},      {"xi", "ξ"},       {"pi", "π"},      {"rho", "ρ"},
+      {"sigma", "σ"},  {"tau", "τ"},   {"upsilon", "υ"}, {"phi", "φ"},      {"varphi", "φ"},  {"chi", "χ"},
+      {"psi", "ψ"},    {"omega", "ω"}, {"Gamma", "Γ"},   {"Delta", "Δ"},    {"Theta", "Θ"},   {"Lambda", "Λ"},
+      {"Xi", "Ξ"},     {"Pi", "Π"},    {"Sigma", "Σ"},   {"Phi", "Φ"},      {"Psi", "Ψ"},     {"Omega", "Ω"},
+      {"cdot", "·"},   {"times", "×"}, {"infty", "∞"},   {"ell", "ℓ"}};
   return g;
 }
 
@@ -83,7 +83,9 @@ class SvgText {
       if (name == "frac") {
         // a/b, with parentheses only where they are needed (a sum above, a sum or product below).
         const std::string a = group(), b = group();
-        auto sum = [](const std::string& t) { return t.find('+') != std::string::npos || t.find("\u2212") != std::string::npos; };
+        auto sum = [](const std::string& t) {
+          return t.find('+') != std::string::npos || t.find("\u2212") != std::string::npos;
+        };
         const bool product = b.find("\u2009") != std::string::npos;
         return (sum(a) ? "(" + a + ")" : a) + "/" + (sum(b) || product ? "(" + b + ")" : b);
       }
@@ -95,7 +97,8 @@ class SvgText {
     }
     ++i_;
     if (c == '_' || c == '^') {
-      return std::string("<tspan baseline-shift=\"") + (c == '_' ? "sub" : "super") + "\" font-size=\"70%\">" + group() + "</tspan>";
+      return std::string("<tspan baseline-shift=\"") + (c == '_' ? "sub" : "super") + "\" font-size=\"70%\">" +
+             group() + "</tspan>";
     }
     if (c == '{') {
       --i_;
@@ -103,8 +106,10 @@ class SvgText {
     }
     if (c == '-') return "−";
     if (c == ' ') return "\u2009";  // between factors: a thin space
-    if (std::isdigit(static_cast<unsigned char>(c))) return "<tspan font-style=\"normal\">" + std::string(1, c) + "</tspan>";
-    if (c == '+' || c == '=' || c == '(' || c == ')') return std::string(c == '+' || c == '=' ? " " : "") + c + (c == '+' || c == '=' ? " " : "");
+    if (std::isdigit(static_cast<unsigned char>(c)))
+      return "<tspan font-style=\"normal\">" + std::string(1, c) + "</tspan>";
+    if (c == '+' || c == '=' || c == '(' || c == ')')
+      return std::string(c == '+' || c == '=' ? " " : "") + c + (c == '+' || c == '=' ? " " : "");
     return xml_escape(c);
   }
   const std::string& s_;
@@ -168,10 +173,14 @@ Shown svg_shown(const std::string& svg) {
       continue;
     }
     std::size_t n = 1;
-    if (c == '&') n = svg.find(';', i) + 1 - i;  // an escaped character: &lt; &gt; &amp; &quot;
-    else if (c >= 0xF0) n = 4;
-    else if (c >= 0xE0) n = 3;
-    else if (c >= 0xC0) n = 2;
+    if (c == '&')
+      n = svg.find(';', i) + 1 - i;  // an escaped character: &lt; &gt; &amp; &quot;
+    else if (c >= 0xF0)
+      n = 4;
+    else if (c >= 0xE0)
+      n = 3;
+    else if (c >= 0xC0)
+      n = 2;
     const std::string ch = svg.substr(i, n);
     i += n;
     if (ch == "\uE000") {  // a dotted group begins
@@ -189,17 +198,27 @@ Shown svg_shown(const std::string& svg) {
     out.text += ch;
     // The first letter of a dotted group gives its dots' height.
     for (const std::size_t a : open)
-      if (out.accents[a].to == out.accents[a].from) out.accents[a] = {out.ems, out.ems, level.size, level.rise, level.italic, tall_letter(ch), 1};
+      if (out.accents[a].to == out.accents[a].from)
+        out.accents[a] = {out.ems, out.ems, level.size, level.rise, level.italic, tall_letter(ch), 1};
     double w = 0.52;
-    if (c == '&') w = 0.6;
-    else if (ch == "\u2009") w = 0.17;
-    else if (ch == " ") w = 0.25;
-    else if (n > 1) w = 0.6;  // Greek, minus, root, dot, times
-    else if (std::string("mwMW").find(static_cast<char>(c)) != std::string::npos) w = 0.85;
-    else if (std::string("ijltfr()/,.:;'|!").find(static_cast<char>(c)) != std::string::npos) w = 0.33;
-    else if (std::isupper(c)) w = 0.7;
-    else if (std::isdigit(c)) w = 0.5;
-    else if (c == '+' || c == '=') w = 0.6;
+    if (c == '&')
+      w = 0.6;
+    else if (ch == "\u2009")
+      w = 0.17;
+    else if (ch == " ")
+      w = 0.25;
+    else if (n > 1)
+      w = 0.6;  // Greek, minus, root, dot, times
+    else if (std::string("mwMW").find(static_cast<char>(c)) != std::string::npos)
+      w = 0.85;
+    else if (std::string("ijltfr()/,.:;'|!").find(static_cast<char>(c)) != std::string::npos)
+      w = 0.33;
+    else if (std::isupper(c))
+      w = 0.7;
+    else if (std::isdigit(c))
+      w = 0.5;
+    else if (c == '+' || c == '=')
+      w = 0.6;
     out.ems += w * level.size;
     for (const std::size_t a : open) out.accents[a].to = out.ems;  // the group so far
   }
@@ -230,9 +249,11 @@ SvgLabel svg_label(const FigureLabel& l) {
   const double across = b.width / std::max(shown.ems, 1e-9);  // one em of the text, as it is held to its width
   for (const auto& a : shown.accents) {
     const double em = a.size * b.font_size;
-    const double centre = b.x - b.width / 2 + (a.from + a.to) / 2 * across + (a.italic ? (a.tall ? 0.08 : 0.05) * em : 0);
+    const double centre =
+        b.x - b.width / 2 + (a.from + a.to) / 2 * across + (a.italic ? (a.tall ? 0.08 : 0.05) * em : 0);
     const double y = b.baseline + a.rise * b.font_size + (a.tall ? 0.9 : 0.7) * em;
-    for (int k = 0; k < a.dots; ++k) b.dots.push_back({centre + (a.dots == 1 ? 0 : (k ? 0.13 : -0.13) * em), y, 0.075 * em});
+    for (int k = 0; k < a.dots; ++k)
+      b.dots.push_back({centre + (a.dots == 1 ? 0 : (k ? 0.13 : -0.13) * em), y, 0.075 * em});
   }
   return b;
 }
@@ -243,14 +264,18 @@ std::size_t shown_length(const std::string& tex) {
   bool tag = false;
   for (std::size_t i = 0; i < s.size(); ++i) {
     const auto c = static_cast<unsigned char>(s[i]);
-    if (c == '<') tag = true;
-    else if (c == '>') tag = false;
-    else if (tag) continue;
+    if (c == '<')
+      tag = true;
+    else if (c == '>')
+      tag = false;
+    else if (tag)
+      continue;
     else if (c == '&') {
       ++n;
       i = s.find(';', i);
       if (i == std::string::npos) break;
-    } else if ((c & 0xC0) != 0x80) ++n;  // dots are drawn apart: no combining characters
+    } else if ((c & 0xC0) != 0x80)
+      ++n;  // dots are drawn apart: no combining characters
   }
   return n;
 }
@@ -261,19 +286,24 @@ namespace {
 // would be wider or higher than the box (\tacklelabel, defined in each picture).
 std::string tikz_label(const FigureLabel& l) {
   const std::string text = "$" + l.tex + "$";
-  const std::string body = l.width > 0 && l.height > 0 ? "\\tacklelabel{" + num(l.width) + "cm}{" + num(l.height) + "cm}{" + text + "}" : text;
+  const std::string body = l.width > 0 && l.height > 0
+                               ? "\\tacklelabel{" + num(l.width) + "cm}{" + num(l.height) + "cm}{" + text + "}"
+                               : text;
   return "  \\node[font=\\small, inner sep=0pt] at (" + num(l.at.x) + "," + num(l.at.y) + ") {" + body + "};\n";
 }
 
 }  // namespace
 
 std::string to_tikz(const Figure& f) {
-  std::string out = "\\begin{tikzpicture}[>=stealth, line cap=round, line join=round]\n"
-                    "  \\providecommand{\\tacklelabel}[3]{\\setbox0=\\hbox{#3}\\pgfmathsetmacro{\\tacklescale}{min(1, #1/max(\\the\\wd0, 0.01pt), "
-                    "#2/max(\\the\\dimexpr\\ht0+\\dp0\\relax, 0.01pt))}\\scalebox{\\tacklescale}{\\box0}}\n";
+  std::string out =
+      "\\begin{tikzpicture}[>=stealth, line cap=round, line join=round]\n"
+      "  \\providecommand{\\tacklelabel}[3]{\\setbox0=\\hbox{#3}\\pgfmathsetmacro{\\tacklescale}{min(1, "
+      "#1/max(\\the\\wd0, 0.01pt), "
+      "#2/max(\\the\\dimexpr\\ht0+\\dp0\\relax, 0.01pt))}\\scalebox{\\tacklescale}{\\box0}}\n";
   for (const auto& o : f.outlines) {
     if (o.shape == FigureOutline::Shape::circle) {
-      out += "  \\filldraw[fill=black!8, draw=black, thick] (" + num(o.centre.x) + "," + num(o.centre.y) + ") circle (" + num(o.radius) + ");\n";
+      out += "  \\filldraw[fill=black!8, draw=black, thick] (" + num(o.centre.x) + "," + num(o.centre.y) +
+             ") circle (" + num(o.radius) + ");\n";
     } else {
       out += "  \\filldraw[fill=black!8, draw=black, thick] ";
       for (const auto& c : o.corners) out += "(" + num(c.x) + "," + num(c.y) + ") -- ";
@@ -282,7 +312,8 @@ std::string to_tikz(const Figure& f) {
   }
   for (const auto& l : f.lines) {
     out += std::string("  \\draw[") + (l.thin ? "thin" : "thick") + "] ";
-    for (std::size_t i = 0; i < l.points.size(); ++i) out += (i ? " -- (" : "(") + num(l.points[i].x) + "," + num(l.points[i].y) + ")";
+    for (std::size_t i = 0; i < l.points.size(); ++i)
+      out += (i ? " -- (" : "(") + num(l.points[i].x) + "," + num(l.points[i].y) + ")";
     out += ";\n";
   }
   for (const auto& t : f.texts) out += tikz_label(t);
@@ -292,14 +323,17 @@ std::string to_tikz(const Figure& f) {
   }
   for (const auto& a : f.arrows) {
     const std::string style = a.axis ? "->, thin" : a.dashed ? "->, thick, dashed" : "->, very thick";
-    out += "  \\draw[" + style + "] (" + num(a.from.x) + "," + num(a.from.y) + ") -- (" + num(a.to.x) + "," + num(a.to.y) + ");\n";
+    out += "  \\draw[" + style + "] (" + num(a.from.x) + "," + num(a.from.y) + ") -- (" + num(a.to.x) + "," +
+           num(a.to.y) + ");\n";
     out += tikz_label(a.label);
   }
   for (const auto& c : f.couples) {
     const double start = c.counterclockwise ? -60 : 240, end = c.counterclockwise ? 240 : -60;
-    const double sx = c.centre.x + c.radius * std::cos(start * M_PI / 180), sy = c.centre.y + c.radius * std::sin(start * M_PI / 180);
-    out += std::string("  \\draw[->, ") + (c.dashed ? "thick, dashed" : "very thick") + "] (" + num(sx) + "," + num(sy) + ") arc[start angle=" + num(start) + ", end angle=" + num(end) +
-           ", radius=" + num(c.radius) + "];\n";
+    const double sx = c.centre.x + c.radius * std::cos(start * M_PI / 180),
+                 sy = c.centre.y + c.radius * std::sin(start * M_PI / 180);
+    out += std::string("  \\draw[->, ") + (c.dashed ? "thick, dashed" : "very thick") + "] (" + num(sx) + "," +
+           num(sy) + ") arc[start angle=" + num(start) + ", end angle=" + num(end) + ", radius=" + num(c.radius) +
+           "];\n";
     out += tikz_label(c.label);
   }
   return out + "\\end{tikzpicture}\n";
@@ -310,18 +344,22 @@ std::string to_svg(const Figure& f, const std::string& ids) {
   const double w = (f.max_x - f.min_x) * px, h = (f.max_y - f.min_y) * px;
   std::string id = ids + "head";
   for (char c : f.caption) id += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
-  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"fbd\" width=\"" + num(w + 8) + "\" height=\"" + num(h + 8) +
-                    "\" viewBox=\"-4 -4 " + num(w + 8) + " " + num(h + 8) + "\" role=\"img\" aria-label=\"" + f.caption + "\">\n";
+  std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"fbd\" width=\"" + num(w + 8) + "\" height=\"" +
+                    num(h + 8) + "\" viewBox=\"-4 -4 " + num(w + 8) + " " + num(h + 8) +
+                    "\" role=\"img\" aria-label=\"" + f.caption + "\">\n";
   out += "<title>" + f.caption + "</title>\n";
-  out += "<defs><marker id=\"" + id + "\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" orient=\"auto-start-reverse\">"
+  out += "<defs><marker id=\"" + id +
+         "\" viewBox=\"0 0 10 10\" refX=\"9\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" "
+         "orient=\"auto-start-reverse\">"
          "<path d=\"M 0 0 L 10 5 L 0 10 z\" fill=\"black\"/></marker></defs>\n";
   for (const auto& o : f.outlines) {
     if (o.shape == FigureOutline::Shape::circle) {
-      out += "<circle cx=\"" + num((o.centre.x - f.min_x) * px) + "\" cy=\"" + num((f.max_y - o.centre.y) * px) + "\" r=\"" +
-             num(o.radius * px) + "\" fill=\"#ebebeb\" stroke=\"black\" stroke-width=\"1.6\"/>\n";
+      out += "<circle cx=\"" + num((o.centre.x - f.min_x) * px) + "\" cy=\"" + num((f.max_y - o.centre.y) * px) +
+             "\" r=\"" + num(o.radius * px) + "\" fill=\"#ebebeb\" stroke=\"black\" stroke-width=\"1.6\"/>\n";
     } else {
       out += "<polygon points=\"";
-      for (std::size_t i = 0; i < o.corners.size(); ++i) out += (i ? " " : "") + svg_point(o.corners[i].x, o.corners[i].y, f, px);
+      for (std::size_t i = 0; i < o.corners.size(); ++i)
+        out += (i ? " " : "") + svg_point(o.corners[i].x, o.corners[i].y, f, px);
       out += "\" fill=\"#ebebeb\" stroke=\"black\" stroke-width=\"1.6\" stroke-linejoin=\"round\"/>\n";
     }
   }
@@ -330,34 +368,42 @@ std::string to_svg(const Figure& f, const std::string& ids) {
     const SvgLabel b = svg_label(l);
     std::string dots;  // its accents' dots, drawn apart from the text
     for (const auto& d : b.dots)
-      dots += "<circle cx=\"" + num((d.x - f.min_x) * px) + "\" cy=\"" + num((f.max_y - d.y) * px) + "\" r=\"" + num(d.r * px) + "\" fill=\"black\"/>\n";
-    return "<text x=\"" + num((b.x - f.min_x) * px) + "\" y=\"" + num((f.max_y - b.baseline) * px) + "\" textLength=\"" +
-           num(b.width * px) + "\" lengthAdjust=\"spacingAndGlyphs\" text-anchor=\"middle\" font-family=\"serif\" font-style=\"italic\" font-size=\"" +
+      dots += "<circle cx=\"" + num((d.x - f.min_x) * px) + "\" cy=\"" + num((f.max_y - d.y) * px) + "\" r=\"" +
+              num(d.r * px) + "\" fill=\"black\"/>\n";
+    return "<text x=\"" + num((b.x - f.min_x) * px) + "\" y=\"" + num((f.max_y - b.baseline) * px) +
+           "\" textLength=\"" + num(b.width * px) +
+           "\" lengthAdjust=\"spacingAndGlyphs\" text-anchor=\"middle\" font-family=\"serif\" font-style=\"italic\" "
+           "font-size=\"" +
            num(b.font_size * px) + "\">" + svg_text(l.tex) + "</text>\n" + dots;
   };
   for (const auto& l : f.lines) {
     out += "<polyline points=\"";
-    for (std::size_t i = 0; i < l.points.size(); ++i) out += (i ? " " : "") + svg_point(l.points[i].x, l.points[i].y, f, px);
-    out += std::string("\" fill=\"none\" stroke=\"black\" stroke-width=\"") + (l.thin ? "0.8" : "1.6") + "\" stroke-linejoin=\"round\"/>\n";
+    for (std::size_t i = 0; i < l.points.size(); ++i)
+      out += (i ? " " : "") + svg_point(l.points[i].x, l.points[i].y, f, px);
+    out += std::string("\" fill=\"none\" stroke=\"black\" stroke-width=\"") + (l.thin ? "0.8" : "1.6") +
+           "\" stroke-linejoin=\"round\"/>\n";
   }
   for (const auto& t : f.texts) out += label(t);
   for (const auto& d : f.dots) {
-    out += "<circle cx=\"" + num((d.at.x - f.min_x) * px) + "\" cy=\"" + num((f.max_y - d.at.y) * px) + "\" r=\"2.5\" fill=\"black\"/>\n";
+    out += "<circle cx=\"" + num((d.at.x - f.min_x) * px) + "\" cy=\"" + num((f.max_y - d.at.y) * px) +
+           "\" r=\"2.5\" fill=\"black\"/>\n";
     if (d.label) out += label(*d.label);
   }
   for (const auto& a : f.arrows) {
     out += "<line x1=\"" + num((a.from.x - f.min_x) * px) + "\" y1=\"" + num((f.max_y - a.from.y) * px) + "\" x2=\"" +
-           num((a.to.x - f.min_x) * px) + "\" y2=\"" + num((f.max_y - a.to.y) * px) + "\" stroke=\"black\" stroke-width=\"" +
-           (a.axis ? "1" : "2") + "\"" + (a.dashed ? " stroke-dasharray=\"6 4\"" : "") + " marker-end=\"url(#" + id + ")\"/>\n";
+           num((a.to.x - f.min_x) * px) + "\" y2=\"" + num((f.max_y - a.to.y) * px) +
+           "\" stroke=\"black\" stroke-width=\"" + (a.axis ? "1" : "2") + "\"" +
+           (a.dashed ? " stroke-dasharray=\"6 4\"" : "") + " marker-end=\"url(#" + id + ")\"/>\n";
     out += label(a.label);
   }
   for (const auto& c : f.couples) {
-    const double start = (c.counterclockwise ? -60 : 240) * M_PI / 180, end = (c.counterclockwise ? 240 : -60) * M_PI / 180;
+    const double start = (c.counterclockwise ? -60 : 240) * M_PI / 180,
+                 end = (c.counterclockwise ? 240 : -60) * M_PI / 180;
     const double cx = (c.centre.x - f.min_x) * px, cy = (f.max_y - c.centre.y) * px, r = c.radius * px;
-    out += "<path d=\"M " + num(cx + r * std::cos(start)) + " " + num(cy - r * std::sin(start)) + " A " + num(r) + " " + num(r) +
-           " 0 1 " + (c.counterclockwise ? "0" : "1") + " " + num(cx + r * std::cos(end)) + " " + num(cy - r * std::sin(end)) +
-           "\" fill=\"none\" stroke=\"black\" stroke-width=\"2\"" + (c.dashed ? " stroke-dasharray=\"6 4\"" : "") +
-           " marker-end=\"url(#" + id + ")\"/>\n";
+    out += "<path d=\"M " + num(cx + r * std::cos(start)) + " " + num(cy - r * std::sin(start)) + " A " + num(r) + " " +
+           num(r) + " 0 1 " + (c.counterclockwise ? "0" : "1") + " " + num(cx + r * std::cos(end)) + " " +
+           num(cy - r * std::sin(end)) + "\" fill=\"none\" stroke=\"black\" stroke-width=\"2\"" +
+           (c.dashed ? " stroke-dasharray=\"6 4\"" : "") + " marker-end=\"url(#" + id + ")\"/>\n";
     out += label(c.label);
   }
   return out + "</svg>\n";

@@ -17,17 +17,17 @@ using namespace fig;
 
 namespace {
 
-constexpr double lane_gap = 1.0;      // between strands side by side (drawing units)
-constexpr double sheave_radius = 0.5; // strands in neighbouring lanes are tangent to it
-constexpr double block_length = 1.0;  // a block's size along the axis
-constexpr double margin = 0.45;       // a block's edge beyond the strands fixed to it
+constexpr double lane_gap = 1.0;       // between strands side by side (drawing units)
+constexpr double sheave_radius = 0.5;  // strands in neighbouring lanes are tangent to it
+constexpr double block_length = 1.0;   // a block's size along the axis
+constexpr double margin = 0.45;        // a block's edge beyond the strands fixed to it
 
 // A strand of a path: between two points' positions along the axis, in one lane.
 struct Strand {
-  double s0, s1;  // along the axis, drawing units
-  double lat;     // across it
-  std::string as; // line, spring, damper
-  int from, to;   // points
+  double s0, s1;   // along the axis, drawing units
+  double lat;      // across it
+  std::string as;  // line, spring, damper
+  int from, to;    // points
 };
 
 // Where a path meets a point: its end, a strand passing it, or a sheave it turns around.
@@ -126,7 +126,8 @@ struct LineSketch {
     for (std::size_t i = 1; i < used.size(); ++i)
       if (used[i] - used[i - 1] > 1e-9 * (1 + extent)) closest = std::min(closest, used[i] - used[i - 1]);
     scale = extent > 1e-12 ? std::min(2.5, 8 / extent) : 1;
-    if (closest < 1e300 && closest * scale < 2.2) scale = std::min(2.2 / closest, extent > 1e-12 ? 12 / extent : 2.2 / closest);
+    if (closest < 1e300 && closest * scale < 2.2)
+      scale = std::min(2.2 / closest, extent > 1e-12 ? 12 / extent : 2.2 / closest);
   }
 
   // Strands in lanes: each path takes the lowest free lanes (0, 1, -1, 2, ...); it moves to
@@ -155,11 +156,13 @@ struct LineSketch {
   }
 
   // The lowest lane (0, 1, -1, 2, ...) from which the path's strands are clear of those laid.
-  int free_lane(const Model::Drawing& d, const std::vector<int>& rel, std::map<int, std::vector<std::pair<double, double>>>& busy) const {
+  int free_lane(const Model::Drawing& d, const std::vector<int>& rel,
+                std::map<int, std::vector<std::pair<double, double>>>& busy) const {
     const std::size_t n = d.path.size();
     auto fits = [&](int base) {
       for (std::size_t k = 0; k + 1 < n; ++k) {
-        const double a = std::min(s_of(d.path[k]), s_of(d.path[k + 1])), b = std::max(s_of(d.path[k]), s_of(d.path[k + 1]));
+        const double a = std::min(s_of(d.path[k]), s_of(d.path[k + 1])),
+                     b = std::max(s_of(d.path[k]), s_of(d.path[k + 1]));
         if (b - a < 1e-9) continue;
         for (const auto& [lo, hi] : busy[base + rel[k]])
           if (std::min(hi, b) - std::max(lo, a) > 1e-6) return false;
@@ -191,8 +194,10 @@ struct LineSketch {
     };
     meet(d.path.front(), lane_gap * (base + rel.front()), Meeting::Kind::end);
     for (std::size_t k = 1; k + 1 < n; ++k) {
-      if (rel[k] != rel[k - 1]) meet(d.path[k], lane_gap * (base + 0.5 * (rel[k - 1] + rel[k])), Meeting::Kind::sheave);
-      else meet(d.path[k], lane_gap * (base + rel[k]), Meeting::Kind::pass);
+      if (rel[k] != rel[k - 1])
+        meet(d.path[k], lane_gap * (base + 0.5 * (rel[k - 1] + rel[k])), Meeting::Kind::sheave);
+      else
+        meet(d.path[k], lane_gap * (base + rel[k]), Meeting::Kind::pass);
     }
     meet(d.path.back(), lane_gap * (base + rel.back()), Meeting::Kind::end);
   }
@@ -233,7 +238,8 @@ struct LineSketch {
     for (const auto& d : m.drawings) {
       if (d.as != "contact" || d.path.size() != 2) continue;
       auto block = [&](int point) {
-        return std::find_if(blocks.begin(), blocks.end(), [&](const Block& k) { return k.body == m.points[point].body; });
+        return std::find_if(blocks.begin(), blocks.end(),
+                            [&](const Block& k) { return k.body == m.points[point].body; });
       };
       auto a = block(d.path[0]), b = block(d.path[1]);
       if (a == blocks.end() || b == blocks.end() || a == b) continue;
@@ -253,7 +259,8 @@ struct LineSketch {
         hangers.push_back({at(edge, t.lat), at(t.s - dir * reach(t), t.lat)});
       }
       FigureOutline o;
-      for (auto [s, l] : {std::pair{k.s_lo, k.lat_lo}, {k.s_hi, k.lat_lo}, {k.s_hi, k.lat_hi}, {k.s_lo, k.lat_hi}}) o.corners.push_back(fp(at(s, l)));
+      for (auto [s, l] : {std::pair{k.s_lo, k.lat_lo}, {k.s_hi, k.lat_lo}, {k.s_hi, k.lat_hi}, {k.s_lo, k.lat_hi}})
+        o.corners.push_back(fp(at(s, l)));
       o.name = m.bodies[k.body].name;
       f.outlines.push_back(o);
     }
@@ -327,7 +334,8 @@ struct LineSketch {
       const bool below = std::any_of(moving.begin(), moving.end(), [&](double s) { return s < t.s - 1e-6; });
       const bool above = std::any_of(moving.begin(), moving.end(), [&](double s) { return s > t.s + 1e-6; });
       const double dir = !above ? 1 : !below ? -1 : 0;
-      auto it = std::find_if(grounds.begin(), grounds.end(), [&](const Ground& g) { return g.dir == dir && std::fabs(g.s - t.s) < 1e-6; });
+      auto it = std::find_if(grounds.begin(), grounds.end(),
+                             [&](const Ground& g) { return g.dir == dir && std::fabs(g.s - t.s) < 1e-6; });
       if (it == grounds.end()) it = grounds.insert(grounds.end(), Ground{t.s, dir});
       it->lo = std::min(it->lo, t.lat);
       it->hi = std::max(it->hi, t.lat);
@@ -338,7 +346,8 @@ struct LineSketch {
       const Ground& g = grounds[gi];
       if (g.dir != 0) {
         const double sg = g.s + g.dir * g.depth;
-        if (std::fabs(sg - (t.s + g.dir * reach(t))) > 1e-9) f.lines.push_back({{fp(at(t.s + g.dir * reach(t), t.lat)), fp(at(sg, t.lat))}, false});
+        if (std::fabs(sg - (t.s + g.dir * reach(t))) > 1e-9)
+          f.lines.push_back({{fp(at(t.s + g.dir * reach(t), t.lat)), fp(at(sg, t.lat))}, false});
       }
     }
     for (const auto& g : grounds) draw_ground_at(g, lowest);
@@ -355,7 +364,8 @@ struct LineSketch {
     const double floor = lowest - 0.9;
     std::vector<double> passing;
     for (const auto& t : meetings)
-      if (t.kind == Meeting::Kind::pass && std::fabs(t.s - g.s) < 1e-6 && t.lat > floor && t.lat < g.hi) passing.push_back(t.lat);
+      if (t.kind == Meeting::Kind::pass && std::fabs(t.s - g.s) < 1e-6 && t.lat > floor && t.lat < g.hi)
+        passing.push_back(t.lat);
     std::sort(passing.begin(), passing.end());
     double from = floor;
     for (double l : passing) {
@@ -383,7 +393,8 @@ struct LineSketch {
         const double dir = *v > 0 ? 1 : -1;
         const ex shown = *v > 0 ? l.force[0] : -l.force[0];
         double s = scale * *body_pos[d.body], lat = 0;
-        if (auto k = std::find_if(blocks.begin(), blocks.end(), [&](const Block& b) { return b.body == d.body; }); k != blocks.end()) {
+        if (auto k = std::find_if(blocks.begin(), blocks.end(), [&](const Block& b) { return b.body == d.body; });
+            k != blocks.end()) {
           s = dir > 0 ? k->s_hi : k->s_lo;
           lat = 0.5 * (k->lat_lo + k->lat_hi);
         } else {
@@ -421,7 +432,8 @@ struct LineSketch {
       bool clear = true;
       const Box box{c, w, label_height};
       for (const auto& o : f.outlines)
-        if (o.shape == FigureOutline::Shape::circle && overlaps(box, {vp(o.centre), 2 * o.radius, 2 * o.radius})) clear = false;
+        if (o.shape == FigureOutline::Shape::circle && overlaps(box, {vp(o.centre), 2 * o.radius, 2 * o.radius}))
+          clear = false;
       for (const auto& l : f.lines)
         for (std::size_t i = 1; i < l.points.size(); ++i)
           if (box_hits_segment(box, vp(l.points[i - 1]), vp(l.points[i]))) clear = false;
@@ -430,10 +442,14 @@ struct LineSketch {
         continue;
       }
       const V lo = at(k.s_lo, k.lat_lo), hi = at(k.s_hi, k.lat_hi);
-      const double x0 = std::min(lo.x, hi.x), x1 = std::max(lo.x, hi.x), y0 = std::min(lo.y, hi.y), y1 = std::max(lo.y, hi.y);
-      f.texts.push_back(lay.place(tex, {{x0 - w / 2 - gap, y1 - label_height / 2}, {x1 + w / 2 + gap, y1 - label_height / 2},
-                                        {x0 + w / 2, y1 + label_height / 2 + gap}, {x0 + w / 2, y0 - label_height / 2 - gap},
-                                        {x0 - w / 2 - gap, y0 + label_height / 2}, {x1 + w / 2 + gap, y0 + label_height / 2}}));
+      const double x0 = std::min(lo.x, hi.x), x1 = std::max(lo.x, hi.x), y0 = std::min(lo.y, hi.y),
+                   y1 = std::max(lo.y, hi.y);
+      f.texts.push_back(lay.place(tex, {{x0 - w / 2 - gap, y1 - label_height / 2},
+                                        {x1 + w / 2 + gap, y1 - label_height / 2},
+                                        {x0 + w / 2, y1 + label_height / 2 + gap},
+                                        {x0 + w / 2, y0 - label_height / 2 - gap},
+                                        {x0 - w / 2 - gap, y0 + label_height / 2},
+                                        {x1 + w / 2 + gap, y0 + label_height / 2}}));
     }
   }
 
@@ -450,7 +466,8 @@ struct LineSketch {
       const double r = reach(t) + 0.15, w = char_width * static_cast<double>(shown_length(tex)) + 0.12;
       std::vector<V> cand;
       for (V d : {V{-1, 1}, V{1, 1}, V{-1, -1}, V{1, -1}, V{0, 1}, V{-1, 0}, V{1, 0}, V{0, -1}})
-        cand.push_back(c + V{d.x * (r * std::fabs(normalized(d).x) + w / 2), d.y * (r * std::fabs(normalized(d).y) + label_height / 2)});
+        cand.push_back(c + V{d.x * (r * std::fabs(normalized(d).x) + w / 2),
+                             d.y * (r * std::fabs(normalized(d).y) + label_height / 2)});
       f.texts.push_back(lay.place(tex, cand));
     }
   }

@@ -22,10 +22,10 @@ namespace {
 constexpr double sketch_extent = 6.0;  // the mechanism's largest extent on paper
 constexpr double largest_body = 3.5;   // and its largest body's, at most
 constexpr double pulley_radius = 0.25;
-constexpr double support_width = 1.0;  // a pin's or an anchor's piece of ground
-constexpr double pin_drop = 0.45;      // a pin support's triangle, from the pin to its base
-constexpr double surface_margin = 0.6; // the ground beyond the bodies on it
-constexpr double lane = 0.3;           // a spring and a damper side by side, this far apart
+constexpr double support_width = 1.0;   // a pin's or an anchor's piece of ground
+constexpr double pin_drop = 0.45;       // a pin support's triangle, from the pin to its base
+constexpr double surface_margin = 0.6;  // the ground beyond the bodies on it
+constexpr double lane = 0.3;            // a spring and a damper side by side, this far apart
 constexpr V down{0, -1};                // down the page (gravity's way)
 
 V rotate(V v, double a) { return {std::cos(a) * v.x - std::sin(a) * v.y, std::sin(a) * v.x + std::cos(a) * v.y}; }
@@ -43,7 +43,8 @@ double reach_along(const FigureOutline& o, V p, V u) {
 
 // The outline's extent along u: [lo, hi] of dot(x, u) over it.
 std::pair<double, double> extent_along(const FigureOutline& o, V u) {
-  if (o.shape == FigureOutline::Shape::circle) return {dot(vp(o.centre), u) - o.radius, dot(vp(o.centre), u) + o.radius};
+  if (o.shape == FigureOutline::Shape::circle)
+    return {dot(vp(o.centre), u) - o.radius, dot(vp(o.centre), u) + o.radius};
   double lo = 1e300, hi = -1e300;
   for (const auto& c : o.corners) {
     lo = std::min(lo, dot(vp(c), u));
@@ -87,11 +88,11 @@ struct PlaneSketch {
   const Model& m;
   Number num;
   Projection proj;
-  std::vector<std::optional<V>> point_at;  // a point's position turned onto the page, once asked
-  std::vector<std::vector<std::array<double, 3>>> body_points;  // a body's center of mass and points of application
-  double scale = 1;             // model units to drawing units
-  double side = particle_side;  // a block's side
-  std::map<int, V> along;  // a block turned along the surface it is on
+  std::vector<std::optional<V>> point_at;                        // a point's position turned onto the page, once asked
+  std::vector<std::vector<std::array<double, 3>>> body_points;   // a body's center of mass and points of application
+  double scale = 1;                                              // model units to drawing units
+  double side = particle_side;                                   // a block's side
+  std::map<int, V> along;                                        // a block turned along the surface it is on
   std::vector<std::pair<const Model::Drawing*, V>> surfaces_of;  // each surface a body touches, its normal on paper
   Figure f;
   std::vector<std::optional<Drawn>> drawn;
@@ -103,7 +104,11 @@ struct PlaneSketch {
 
   // Turned so that gravity points down the page.
   PlaneSketch(const Model& model, Number number)
-      : m(model), num(std::move(number)), point_at(model.points.size()), body_points(model.bodies.size()), drawn(model.bodies.size()) {
+      : m(model),
+        num(std::move(number)),
+        point_at(model.points.size()),
+        body_points(model.bodies.size()),
+        drawn(model.bodies.size()) {
     proj.dims = 2;
     if (m.gravity) {
       const auto gx = num((*m.gravity)[0]), gy = num((*m.gravity)[1]);
@@ -147,7 +152,8 @@ struct PlaneSketch {
         if (l.body == static_cast<int>(b) && l.at) {
           // (A force at a point of another body, a contact between two bodies, does not make
           // this one reach there: the cart under a block is not drawn up to the block's point.)
-          const auto named = std::find_if(m.points.begin(), m.points.end(), [&](const Point& x) { return x.name == l.at_name; });
+          const auto named =
+              std::find_if(m.points.begin(), m.points.end(), [&](const Point& x) { return x.name == l.at_name; });
           if (named != m.points.end() && named->body >= 0 && named->body != static_cast<int>(b)) continue;
           auto p = point3(m, num, *l.at);
           if (!p) return false;
@@ -170,8 +176,9 @@ struct PlaneSketch {
     double largest = 0;
     for (std::size_t b = 0; b < m.bodies.size(); ++b)
       if (!body_points[b].empty()) {
-        const FigureOutline o =
-            draw_body(m, static_cast<int>(b), body_points[b], proj, scale, num, scale * proj(body_points[b].front()), std::nullopt, particle_side, 0).outline;
+        const FigureOutline o = draw_body(m, static_cast<int>(b), body_points[b], proj, scale, num,
+                                          scale * proj(body_points[b].front()), std::nullopt, particle_side, 0)
+                                    .outline;
         const auto [x0, x1] = extent_along(o, V{1, 0});
         const auto [y0, y1] = extent_along(o, V{0, 1});
         largest = std::max({largest, x1 - x0, y1 - y0});
@@ -264,7 +271,8 @@ struct PlaneSketch {
       }
       std::vector<std::pair<V, double>> ends{{V{0, 0}, 0}};  // the origin
       for (std::size_t p = 0; p < m.points.size(); ++p)
-        if (fixed(static_cast<int>(p)) && point_at[p]) ends.push_back({paper(static_cast<int>(p)), pulleys.count(static_cast<int>(p)) ? pulley_radius + 0.15 : 0});
+        if (fixed(static_cast<int>(p)) && point_at[p])
+          ends.push_back({paper(static_cast<int>(p)), pulleys.count(static_cast<int>(p)) ? pulley_radius + 0.15 : 0});
       for (const auto& [e, stop] : ends)
         if (std::fabs(dot(e - c, n)) < 1e-6 * (1 + len(e) + len(c))) {
           const double s = dot(e, t);
@@ -295,9 +303,12 @@ struct PlaneSketch {
         if (i == j || std::fabs(rate) < 1e-6) continue;
         const double at = (o.offset - s.offset * dot(s.n, o.n)) / rate;  // s's point on o's line
         const V meet = s.offset * s.n + at * t;
-        if (dot(meet, to) < o.lo - 1e-6 || dot(meet, to) > o.hi + 1e-6 || at < s.lo - 1e-6 || at > s.hi + 1e-6) continue;
-        if (rate > 0) trimmed[i].lo = std::max(trimmed[i].lo, at);  // before `at`: o's ground
-        else trimmed[i].hi = std::min(trimmed[i].hi, at);
+        if (dot(meet, to) < o.lo - 1e-6 || dot(meet, to) > o.hi + 1e-6 || at < s.lo - 1e-6 || at > s.hi + 1e-6)
+          continue;
+        if (rate > 0)
+          trimmed[i].lo = std::max(trimmed[i].lo, at);  // before `at`: o's ground
+        else
+          trimmed[i].hi = std::min(trimmed[i].hi, at);
       }
     surfaces = trimmed;
   }
@@ -309,7 +320,8 @@ struct PlaneSketch {
       draw_ground(f, a, b, -1 * s.n);
       if (std::fabs(t.x) > 1e-6 && std::fabs(t.y) > 1e-6) {
         const V foot = a.y < b.y ? a : b, top = a.y < b.y ? b : a;
-        marks.push_back({foot, V{top.x > foot.x ? 1.0 : -1.0, 0}, normalized(top - foot), std::acos(std::min(1.0, std::fabs(t.x))), s.geometry, true});
+        marks.push_back({foot, V{top.x > foot.x ? 1.0 : -1.0, 0}, normalized(top - foot),
+                         std::acos(std::min(1.0, std::fabs(t.x))), s.geometry, true});
       }
     }
   }
@@ -320,7 +332,8 @@ struct PlaneSketch {
     if (len(below_of - p) < 0.05 || dot(below_of - p, down) > 0.5 * len(below_of - p)) {
       double top = p.y + 0.7;
       for (const auto& o : f.outlines)
-        if (o.shape == FigureOutline::Shape::circle && len(vp(o.centre) - p) < o.radius) top = std::max(top, o.centre.y + o.radius + 0.35);
+        if (o.shape == FigureOutline::Shape::circle && len(vp(o.centre) - p) < o.radius)
+          top = std::max(top, o.centre.y + o.radius + 0.35);
       f.lines.push_back({{fp(p), fp(V{p.x, top})}, false});
       draw_ground(f, V{p.x - support_width / 2, top}, V{p.x + support_width / 2, top}, V{0, 1});
     } else {
@@ -412,14 +425,19 @@ struct PlaneSketch {
         between[{std::min(d.path[0], d.path[1]), std::max(d.path[0], d.path[1])}].push_back(&d);
     for (const auto& d : m.drawings) {
       const bool path = (d.as == "line" || d.as == "spring" || d.as == "damper") && d.path.size() >= 2;
-      const bool cable = (d.as == "line" && d.path.empty() && d.points.size() >= 2) || (d.as == "rod" && d.points.size() >= 2);
+      const bool cable =
+          (d.as == "line" && d.path.empty() && d.points.size() >= 2) || (d.as == "rod" && d.points.size() >= 2);
       if (!path && !cable) continue;
       const std::vector<int> pts = path ? d.path : std::vector<int>{d.points[0], d.points[1]};
       const std::vector<double> wrap = wraps(pts);
       std::vector<std::pair<V, V>> pieces = pieces_of(pts, wrap, side_shift(d, pts, between));
       // Ends in a body start at its edge (a rod's or a cable's first end is in its body).
-      if (const Drawn* b = cable && d.body >= 0 && drawn[d.body] ? &*drawn[d.body] : body_of(pts.front())) pieces.front().first = leave(b->outline, pieces.front().first, normalized(pieces.front().second - pieces.front().first));
-      if (const Drawn* b = body_of(pts.back())) pieces.back().second = leave(b->outline, pieces.back().second, normalized(pieces.back().first - pieces.back().second));
+      if (const Drawn* b = cable && d.body >= 0 && drawn[d.body] ? &*drawn[d.body] : body_of(pts.front()))
+        pieces.front().first =
+            leave(b->outline, pieces.front().first, normalized(pieces.front().second - pieces.front().first));
+      if (const Drawn* b = body_of(pts.back()))
+        pieces.back().second =
+            leave(b->outline, pieces.back().second, normalized(pieces.back().first - pieces.back().second));
       draw_pieces(d, pts, pieces, wrap);
       hold_ends(d, pts, path);
       if (path && pts.size() == 2 && d.as == "line") string_angle(pts);
@@ -665,18 +683,21 @@ struct PlaneSketch {
   void labels() {
     Layout lay(f);
     for (auto& a : f.arrows) {
-      const bool pressing = std::any_of(f.outlines.begin(), f.outlines.end(), [&](const FigureOutline& o) { return boundary_distance(o, vp(a.to)) < 0.06; });
+      const bool pressing = std::any_of(f.outlines.begin(), f.outlines.end(),
+                                        [&](const FigureOutline& o) { return boundary_distance(o, vp(a.to)) < 0.06; });
       a.label = place_at_end(lay, a, pressing);
     }
     for (auto& c : f.couples) {
       std::vector<V> cand;
-      for (V dir : {V{0, 1}, V{1, 0}, V{-1, 0}, V{0, -1}, V{0.7, 0.7}, V{-0.7, 0.7}}) cand.push_back(vp(c.centre) + (c.radius + 0.35) * dir);
+      for (V dir : {V{0, 1}, V{1, 0}, V{-1, 0}, V{0, -1}, V{0.7, 0.7}, V{-0.7, 0.7}})
+        cand.push_back(vp(c.centre) + (c.radius + 0.35) * dir);
       c.label = lay.place(c.label.tex, cand);
     }
     for (const auto& [mk, s] : marked) {
       const V mid = normalized(mk->from + mk->to);
       const std::string tex = to_latex(s);
-      FigureLabel l = lay.place(tex, {mk->vertex + 1.2 * mid, mk->vertex + 1.45 * mid, mk->vertex + 1.2 * mk->to + 0.3 * mid});
+      FigureLabel l =
+          lay.place(tex, {mk->vertex + 1.2 * mid, mk->vertex + 1.45 * mid, mk->vertex + 1.2 * mk->to + 0.3 * mid});
       f.texts.push_back(l);
     }
     const std::vector<int> shown = shown_points();
@@ -718,23 +739,29 @@ struct PlaneSketch {
       const V c = drawn[b]->centre;
       const Box box{c, w, label_height};
       bool clear = true;
-      for (V corner : {c + V{w / 2, label_height / 2}, c + V{-w / 2, label_height / 2}, c + V{w / 2, -label_height / 2}, c + V{-w / 2, -label_height / 2}})
+      for (V corner : {c + V{w / 2, label_height / 2}, c + V{-w / 2, label_height / 2}, c + V{w / 2, -label_height / 2},
+                       c + V{-w / 2, -label_height / 2}})
         clear = clear && inside(o, corner);
       for (const auto& l : f.lines)
-        for (std::size_t i = 1; i < l.points.size(); ++i) clear = clear && !box_hits_segment(box, vp(l.points[i - 1]), vp(l.points[i]));
+        for (std::size_t i = 1; i < l.points.size(); ++i)
+          clear = clear && !box_hits_segment(box, vp(l.points[i - 1]), vp(l.points[i]));
       for (const auto& a : f.arrows) clear = clear && !box_hits_segment(box, vp(a.from), vp(a.to));
       for (int p : named) clear = clear && !overlaps(box, {paper(p), 0.2, 0.2});
       for (const auto& other : f.outlines)
-        if (&other != &o && other.shape == FigureOutline::Shape::circle) clear = clear && !overlaps(box, {vp(other.centre), 2 * other.radius, 2 * other.radius});
+        if (&other != &o && other.shape == FigureOutline::Shape::circle)
+          clear = clear && !overlaps(box, {vp(other.centre), 2 * other.radius, 2 * other.radius});
       if (clear) {
         f.texts.push_back(lay.place(tex, {c}));
         continue;
       }
       const auto [x0, x1] = extent_along(o, V{1, 0});
       const auto [y0, y1] = extent_along(o, V{0, 1});
-      f.texts.push_back(lay.place(tex, {{x1 + w / 2 + gap, y1 - label_height / 2}, {x0 - w / 2 - gap, y1 - label_height / 2},
-                                        {c.x, y1 + label_height / 2 + gap}, {c.x, y0 - label_height / 2 - gap},
-                                        {x1 + w / 2 + gap, c.y}, {x0 - w / 2 - gap, c.y}}));
+      f.texts.push_back(lay.place(tex, {{x1 + w / 2 + gap, y1 - label_height / 2},
+                                        {x0 - w / 2 - gap, y1 - label_height / 2},
+                                        {c.x, y1 + label_height / 2 + gap},
+                                        {c.x, y0 - label_height / 2 - gap},
+                                        {x1 + w / 2 + gap, c.y},
+                                        {x0 - w / 2 - gap, c.y}}));
     }
   }
 
@@ -746,7 +773,8 @@ struct PlaneSketch {
       const double r = pulleys.count(p) ? pulley_radius + 0.25 : 0.3;
       std::vector<V> cand;
       for (const double k : {1.0, 1.8})
-        for (V dir : {V{-1, 1}, V{1, 1}, V{-1, -1}, V{1, -1}, V{0, 1}, V{-1, 0}, V{1, 0}, V{0, -1}}) cand.push_back(paper(p) + (k * r) * dir);
+        for (V dir : {V{-1, 1}, V{1, 1}, V{-1, -1}, V{1, -1}, V{0, 1}, V{-1, 0}, V{1, 0}, V{0, -1}})
+          cand.push_back(paper(p) + (k * r) * dir);
       dot.label = lay.place(default_tex(m.points[p].name), cand);
       f.dots.push_back(dot);
     }

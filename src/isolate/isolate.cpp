@@ -62,7 +62,8 @@ std::vector<Equation> candidate_equations(const Model& m) {
         // A coordinate axis through C that also passes through a point Q is the line QC.
         std::string label = m.axes[i];
         for (const Point* q : points)
-          if (q != c && !is_zero_vec(q->position - c->position) && is_zero_vec(cross(q->position - c->position, axis_vec(i)))) {
+          if (q != c && !is_zero_vec(q->position - c->position) &&
+              is_zero_vec(cross(q->position - c->position, axis_vec(i)))) {
             label = "axis " + q->name + c->name + ", along " + m.axes[i];
             break;
           }
@@ -226,9 +227,8 @@ Isolation isolate(const Model& m, const std::vector<Equation>& candidates, const
     ++r.tried;
     const ex residual = normal(eq.lhs - eq.rhs);
     if (!residual.has(unknown)) continue;
-    const bool alone = std::none_of(unknowns.begin(), unknowns.end(), [&](const ex& u) {
-      return !u.is_equal(unknown) && residual.has(u);
-    });
+    const bool alone = std::none_of(unknowns.begin(), unknowns.end(),
+                                    [&](const ex& u) { return !u.is_equal(unknown) && residual.has(u); });
     if (!alone) continue;
     const ex expanded = residual.numer().expand();
     if (expanded.degree(unknown) != 1) continue;  // not linear in it: keep looking

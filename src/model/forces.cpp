@@ -13,7 +13,8 @@ using namespace GiNaC;
 std::string force_key(const std::string& source) {
   for (const char* sep : {" at ", " on "}) {
     const auto at = source.rfind(sep);
-    if (at != std::string::npos && source.find(':') != std::string::npos && at > source.find(':')) return source.substr(0, at);
+    if (at != std::string::npos && source.find(':') != std::string::npos && at > source.find(':'))
+      return source.substr(0, at);
   }
   return source;
 }
@@ -32,7 +33,8 @@ std::set<std::string> internal_forces(const Model& m, const std::vector<int>& bo
   return internal;
 }
 
-std::vector<ForcePart> split_force(const Model& m, const Vec& force, const std::set<ex, ex_is_less>& unknowns, const NumberAt& number) {
+std::vector<ForcePart> split_force(const Model& m, const Vec& force, const std::set<ex, ex_is_less>& unknowns,
+                                   const NumberAt& number) {
   std::vector<ForcePart> parts;
   Vec rest = zero_vec();
   for (int k = 0; k < m.dims(); ++k) rest[k] = force[k].expand();
@@ -70,8 +72,8 @@ std::vector<ForcePart> split_force(const Model& m, const Vec& force, const std::
           const ex base = is_a<power>(fac) ? fac.op(0) : fac;
           if (!is_a<symbol>(base)) continue;
           const SymbolInfo* info = m.symbols->find(base);
-          if (info && info->role == SymbolRole::parameter && (!info->dimension || info->dimension->exp == Dimension::none().exp) &&
-              !info->definition)
+          if (info && info->role == SymbolRole::parameter &&
+              (!info->dimension || info->dimension->exp == Dimension::none().exp) && !info->definition)
             key *= fac;
         }
         auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first.is_equal(key); });
@@ -79,15 +81,18 @@ std::vector<ForcePart> split_force(const Model& m, const Vec& force, const std::
         it->second[k] += term / key;
       }
     }
-    std::sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) { return to_text(a.first) < to_text(b.first); });
+    std::sort(groups.begin(), groups.end(),
+              [](const auto& a, const auto& b) { return to_text(a.first) < to_text(b.first); });
     bool kept = false;
     for (const auto& [key, cvec] : groups) {
       ForcePart p{u, key, cvec, {0, 0, 0}};
       bool ok = true, nonzero = false;
       for (int k = 0; k < m.dims(); ++k) {
         const auto v = number(cvec[k]);
-        if (!v) ok = false;
-        else p.numbers[k] = *v;
+        if (!v)
+          ok = false;
+        else
+          p.numbers[k] = *v;
         if (v && std::fabs(*v) > 1e-12) nonzero = true;
       }
       if (!ok || !nonzero) continue;
@@ -102,7 +107,8 @@ std::vector<ForcePart> split_force(const Model& m, const Vec& force, const std::
   if (any) {
     ForcePart p;
     // A force with no unknown split off keeps the form it was written in (k (x_B - x_A - L)).
-    for (int k = 0; k < m.dims(); ++k) p.coefficients[k] = rest[k].is_zero() ? ex(0) : present.empty() ? force[k] : rest[k];
+    for (int k = 0; k < m.dims(); ++k)
+      p.coefficients[k] = rest[k].is_zero() ? ex(0) : present.empty() ? force[k] : rest[k];
     for (int k = 0; k < m.dims(); ++k)
       if (const auto v = number(p.coefficients[k])) p.numbers[k] = *v;
     parts.push_back(std::move(p));

@@ -40,7 +40,8 @@ using NumberAt = std::function<std::optional<double>(const GiNaC::ex&)>;
 /// linear in, one part per dimensionless factor (sorted by its text), kept only where the
 /// direction can be evaluated by `number` and is not zero; then the rest, when it is not zero
 /// (as written when no unknown was split off, expanded otherwise).
-[[nodiscard]] std::vector<ForcePart> split_force(const Model& m, const Vec& force, const std::set<GiNaC::ex, GiNaC::ex_is_less>& unknowns,
+[[nodiscard]] std::vector<ForcePart> split_force(const Model& m, const Vec& force,
+                                                 const std::set<GiNaC::ex, GiNaC::ex_is_less>& unknowns,
                                                  const NumberAt& number);
 
 }  // namespace tackle

@@ -31,12 +31,12 @@ struct Coordinate {
 /// follows from them (velocities, momenta, kinetic energy, power) is in model/kinematics.hpp.
 struct Body {
   std::string name;
-  GiNaC::ex mass;      // 0 for an ideal pulley block
+  GiNaC::ex mass;  // 0 for an ideal pulley block
   bool has_mass = false;
-  GiNaC::ex coord;     // its translation coordinate, x_A or s (0 when it has none)
-  GiNaC::ex rate;      // dot(x_A)
-  GiNaC::ex accel;     // ddot(x_A), or the unknown acceleration along a given line
-  Vec cm = zero_vec();            // center of mass (1-D: the coordinate)
+  GiNaC::ex coord;      // its translation coordinate, x_A or s (0 when it has none)
+  GiNaC::ex rate;       // dot(x_A)
+  GiNaC::ex accel;      // ddot(x_A), or the unknown acceleration along a given line
+  Vec cm = zero_vec();  // center of mass (1-D: the coordinate)
   bool has_cm = false;
   GiNaC::ex angle = 0;            // 0: the body only translates
   GiNaC::ex inertia = 0;          // about the center of mass
@@ -52,7 +52,7 @@ struct Body {
 struct Point {
   std::string name;
   Vec position = zero_vec();
-  int body = -1;       // 1-D: the body the point moves with; -1: fixed to the ground
+  int body = -1;  // 1-D: the body the point moves with; -1: fixed to the ground
   // A point of a turning body that keeps the ground's directions (`turns: false`): it moves
   // with the center of mass, at `offset` from it, but does not turn (where a string leaves a
   // drum, where a wheel touches the ground).
@@ -65,19 +65,19 @@ struct Point {
 struct Load {
   int body = -1;
   Vec force = zero_vec();
-  std::optional<Vec> at;   // point of application (needed for angular momentum balance)
-  std::string at_name;     // the point's name, for reports
+  std::optional<Vec> at;  // point of application (needed for angular momentum balance)
+  std::string at_name;    // the point's name, for reports
   Vec couple = zero_vec();
-  std::string source;      // "force on A", "string s: strand pB-C at pB", "gravity on A"
+  std::string source;  // "force on A", "string s: strand pB-C at pB", "gravity on A"
 };
 
 /// A quantity held constant in time (a string's length sum, a still body's coordinate); its
 /// first and second time derivatives vanish.
 struct Constraint {
-  std::string label;    // "string s", "support of C"
+  std::string label;       // "string s", "support of C"
   std::string connection;  // the connection's name, for `derive: [{constraint: ...}]`
-  GiNaC::ex quantity;   // e.g. 3*x_B - 2*x_A
-  std::string meaning;  // "length of string s", "position of C"
+  GiNaC::ex quantity;      // e.g. 3*x_B - 2*x_A
+  std::string meaning;     // "length of string s", "position of C"
   // For position questions: the constant the quantity's varying part keeps (`C_s`, made
   // only when a coordinate is asked for); 0 when not made.
   GiNaC::ex constant = 0;
@@ -105,8 +105,8 @@ struct Selection {
   enum class Kind { lmb, amb, constraint } kind;
   std::vector<int> bodies;  // lmb, amb: one body, or a system
   bool system = false;
-  std::string constraint;   // constraint: the connection name
-  std::string about;        // amb: the point's name
+  std::string constraint;  // constraint: the connection name
+  std::string about;       // amb: the point's name
   Vec about_position = zero_vec();
   std::optional<Vec> axis;  // amb: unit vector of the axis (all components when absent)
   std::string axis_label;   // "OG", "[0, 1, 0]"
@@ -123,20 +123,20 @@ struct TurningLength {
 /// Motion in time, as asked for by `motion:`: the independent coordinates (as many as the
 /// degrees of freedom), their values and rates at t = 0, and simulate's defaults.
 struct MotionSpec {
-  std::vector<GiNaC::ex> coordinates;  // q: independent, listed or chosen (given ones first)
-  std::vector<GiNaC::ex> rates;        // dot(q)
+  std::vector<GiNaC::ex> coordinates;    // q: independent, listed or chosen (given ones first)
+  std::vector<GiNaC::ex> rates;          // dot(q)
   std::vector<GiNaC::ex> accelerations;  // ddot(q)
-  std::vector<int> bodies;             // the body each coordinate belongs to
-  std::size_t moving = 0;              // coordinates of moving bodies in all
+  std::vector<int> bodies;               // the body each coordinate belongs to
+  std::size_t moving = 0;                // coordinates of moving bodies in all
   // Values at t = 0 (SI expressions in the parameters), of the independent coordinates and
   // rates, and of any dependent coordinate the description gives.
   GiNaC::exmap initial;
   std::vector<std::pair<GiNaC::ex, Location>> initial_at;  // where each was written
-  std::optional<GiNaC::ex> until;      // seconds
+  std::optional<GiNaC::ex> until;                          // seconds
   std::vector<Text> plot;
   std::optional<std::pair<GiNaC::ex, GiNaC::ex>> speed_at;  // coordinate -> its value there
   Location at;
-  GiNaC::ex lambda, zeta, omega_d;     // symbols: natural frequency, damping ratio, damped frequency
+  GiNaC::ex lambda, zeta, omega_d;  // symbols: natural frequency, damping ratio, damped frequency
 };
 
 /// Constant acceleration over an interval (`interval:`): for each body whose rate is given at
@@ -180,8 +180,8 @@ struct SteadySpec {
 struct Model {
   std::string file;
   std::string title;
-  std::optional<Text> statement;  // for sheets; its {placeholders} checked to be parameters
-  std::string axis = "x";             // the first axis' name
+  std::optional<Text> statement;       // for sheets; its {placeholders} checked to be parameters
+  std::string axis = "x";              // the first axis' name
   std::vector<std::string> axes{"x"};  // one name per axis (1 to 3)
   [[nodiscard]] int dims() const { return static_cast<int>(axes.size()); }
   std::shared_ptr<const SymbolTable> symbols;
@@ -210,8 +210,8 @@ struct Model {
   // (a block pulled into its pulley) and the model no longer holds. Followed in time.
   std::vector<std::pair<GiNaC::ex, std::string>> strand_lengths;
   struct ConnectionNote {
-    std::string label;    // "sliding at A", "string s"
-    std::string summary;  // the rule's, for the problem's number of axes, with a {} per term
+    std::string label;             // "sliding at A", "string s"
+    std::string summary;           // the rule's, for the problem's number of axes, with a {} per term
     std::vector<GiNaC::ex> terms;  // the rule's {N}, {mu*N} in this connection's symbols
   };
   std::vector<ConnectionNote> connections;  // one per connection, in the description's order
@@ -230,9 +230,9 @@ struct Model {
   std::vector<GiNaC::ex> candidates;  // possible unknowns: accelerations, then rule unknowns
   std::vector<GiNaC::ex> given;       // kinematic quantities given as known
   std::vector<Wanted> wanted;
-  std::vector<Selection> derive;      // empty: a complete set
-  std::optional<SweepDesc> sweep;     // as described (checked when it is run)
-  GiNaC::ex time = 0;                 // t (0 when the description uses the name t itself)
+  std::vector<Selection> derive;   // empty: a complete set
+  std::optional<SweepDesc> sweep;  // as described (checked when it is run)
+  GiNaC::ex time = 0;              // t (0 when the description uses the name t itself)
   std::optional<MotionSpec> motion;
   std::optional<IntervalSpec> interval;
   std::optional<ImpactSpec> impact;
@@ -243,7 +243,8 @@ struct Model {
 
 /// The symbols the questions (`wanted`) hold, gathered once: asking has() of each symbol in
 /// each question is quadratic (a chain of 256 asks 511 questions about 768 symbols).
-[[nodiscard]] std::unordered_set<GiNaC::ex, ExHash, GiNaC::ex_is_equal> symbols_asked(const std::vector<Wanted>& wanted);
+[[nodiscard]] std::unordered_set<GiNaC::ex, ExHash, GiNaC::ex_is_equal> symbols_asked(
+    const std::vector<Wanted>& wanted);
 
 /// d/dt of an expression in the coordinates and their rates, the turning lengths and time
 /// itself (the chain rule; `time` is t, or 0 when nothing depends on time explicitly).
@@ -264,7 +265,9 @@ struct Model {
 /// balance gives the tension instead.) Given coordinates are left out. `table` is the model's
 /// symbol table (while the model is built, the builder's).
 [[nodiscard]] std::vector<GiNaC::ex> balance_coordinates(const Model& m, const SymbolTable& table);
-[[nodiscard]] inline std::vector<GiNaC::ex> balance_coordinates(const Model& m) { return balance_coordinates(m, *m.symbols); }
+[[nodiscard]] inline std::vector<GiNaC::ex> balance_coordinates(const Model& m) {
+  return balance_coordinates(m, *m.symbols);
+}
 
 /// Builds the model; every problem in the description is reported at once (InputError).
 [[nodiscard]] Model build_model(const Description& d, const RuleSet& rules);

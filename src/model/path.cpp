@@ -109,8 +109,10 @@ std::optional<Path> make_path(const std::vector<int>& indices, const std::vector
     std::optional<ex> length;
     if (dims == 1) {
       const auto value = in_layout(v[0], layout, missing);
-      if (value && !value->is_zero()) length = value->is_negative() ? ex(-v[0]) : v[0];
-      else if (value) missing.clear();
+      if (value && !value->is_zero())
+        length = value->is_negative() ? ex(-v[0]) : v[0];
+      else if (value)
+        missing.clear();
     } else {
       length = simplified_norm(v, layout, missing);
     }

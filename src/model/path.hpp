@@ -22,10 +22,10 @@ struct Point;
 struct Load;
 
 struct PathSegment {
-  int from = -1, to = -1;  // indices into the model's points
-  GiNaC::ex length;        // exact and positive in the layout (|to - from|, simplified)
+  int from = -1, to = -1;      // indices into the model's points
+  GiNaC::ex length;            // exact and positive in the layout (|to - from|, simplified)
   Vec direction = zero_vec();  // unit vector from `from` towards `to`
-  bool constant = false;   // both ends on one body, or both fixed: its length never changes
+  bool constant = false;       // both ends on one body, or both fixed: its length never changes
 };
 
 struct Path {
@@ -44,14 +44,13 @@ using NameTurningLength = std::function<GiNaC::ex(const Point& from, const Point
 /// and non-zero length decided by `layout` (parameter values and the layout's coordinates).
 /// A length that stays a root of the coordinates is named by `turning` (a symbol, never the
 /// root itself). Problems go to `diags` at `at`, naming the segment as "A-B of <label>".
-[[nodiscard]] std::optional<Path> make_path(const std::vector<int>& indices, const std::vector<Point>& points,
-                                            int dims, const GiNaC::exmap& layout, Diagnostics& diags,
-                                            const Location& at, const std::string& label,
-                                            const NameTurningLength& turning);
+[[nodiscard]] std::optional<Path> make_path(const std::vector<int>& indices, const std::vector<Point>& points, int dims,
+                                            const GiNaC::exmap& layout, Diagnostics& diags, const Location& at,
+                                            const std::string& label, const NameTurningLength& turning);
 
 /// The loads of a tension along the path: at each end (on a body) of each changing segment,
 /// `tension` times the unit vector towards the other end. `source` prefixes each load's source.
-[[nodiscard]] std::vector<Load> tension_loads(const Path& p, const std::vector<Point>& points,
-                                              const GiNaC::ex& tension, const std::string& source);
+[[nodiscard]] std::vector<Load> tension_loads(const Path& p, const std::vector<Point>& points, const GiNaC::ex& tension,
+                                              const std::string& source);
 
 }  // namespace tackle

@@ -10,9 +10,9 @@ namespace {
 
 std::string tex_atom(std::string_view s) {
   static const std::set<std::string, std::less<>> greek = {
-      "alpha", "beta",  "gamma", "delta", "epsilon", "zeta", "eta",   "theta", "iota", "kappa", "lambda",
-      "mu",    "nu",    "xi",    "pi",    "rho",     "sigma", "tau",  "upsilon", "phi", "chi",  "psi",
-      "omega", "Gamma", "Delta", "Theta", "Lambda",  "Xi",   "Pi",    "Sigma", "Phi",  "Psi",  "Omega"};
+      "alpha", "beta",  "gamma", "delta", "epsilon", "zeta",  "eta", "theta",   "iota", "kappa", "lambda",
+      "mu",    "nu",    "xi",    "pi",    "rho",     "sigma", "tau", "upsilon", "phi",  "chi",   "psi",
+      "omega", "Gamma", "Delta", "Theta", "Lambda",  "Xi",    "Pi",  "Sigma",   "Phi",  "Psi",   "Omega"};
   if (greek.count(s)) return "\\" + std::string(s);
   if (s.size() > 1) return "\\mathrm{" + std::string(s) + "}";
   return std::string(s);

@@ -31,15 +31,15 @@ struct SymbolInfo {
   GiNaC::ex sym;  // an ex, so that possymbol / realsymbol keep their domain (no slicing)
   SymbolRole role = SymbolRole::parameter;
   std::optional<Dimension> dimension;
-  std::optional<GiNaC::ex> value;       // parameters: value in SI, exact (pi/6 for 30 deg)
-  std::string unit;                     // parameters: the unit they are stated in
+  std::optional<GiNaC::ex> value;  // parameters: value in SI, exact (pi/6 for 30 deg)
+  std::string unit;                // parameters: the unit they are stated in
   bool positive = false;
   std::optional<GiNaC::ex> definition;  // a defined parameter: its expression in the others
   // A strand's length that turns as the bodies move, `l_CP = sqrt(a^2 + (h - z)^2)`: kept as
   // a positive symbol in every closed form (so no root of the coordinates ever meets
   // normal()), its definition substituted for numbers only.
   bool geometric = false;
-  GiNaC::ex unit_to_si = 1;             // parameters: `unit`'s factor to SI (pi/180 for deg)
+  GiNaC::ex unit_to_si = 1;  // parameters: `unit`'s factor to SI (pi/180 for deg)
   // Variants: the range values are drawn from and the step they are rounded to, in `unit`.
   std::optional<std::pair<GiNaC::numeric, GiNaC::numeric>> range;
   std::optional<GiNaC::numeric> step;

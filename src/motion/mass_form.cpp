@@ -35,9 +35,12 @@ std::optional<TrigPair> trig_pair(const ex& term) {
   const std::size_t k = is_a<mul>(term) ? term.nops() : 1;
   for (std::size_t i = 0; i < k; ++i) {
     const ex f = is_a<mul>(term) ? term.op(i) : term;
-    if (is_a<numeric>(f)) p.coefficient *= ex_to<numeric>(f);
-    else if (is_ex_the_function(f, sin) || is_ex_the_function(f, cos)) trig.push_back(f);
-    else p.rest *= f;
+    if (is_a<numeric>(f))
+      p.coefficient *= ex_to<numeric>(f);
+    else if (is_ex_the_function(f, sin) || is_ex_the_function(f, cos))
+      trig.push_back(f);
+    else
+      p.rest *= f;
   }
   if (trig.size() != 2 || trig[0].op(0).is_equal(trig[1].op(0))) return std::nullopt;
   if (to_text(trig[1].op(0)) < to_text(trig[0].op(0))) std::swap(trig[0], trig[1]);
@@ -69,10 +72,14 @@ ex angle_differences(const ex& e) {
   }
   for (auto& [key, g] : groups) {
     const ex ca = cos(g.a), sa = sin(g.a), cb = cos(g.b), sb = sin(g.b);
-    if (g.cc == g.ss) out += g.cc * g.rest * cos(g.a - g.b);
-    else out += g.rest * (g.cc * ca * cb + g.ss * sa * sb);
-    if (g.sc == -g.cs) out += g.sc * g.rest * sin(g.a - g.b);
-    else out += g.rest * (g.sc * sa * cb + g.cs * ca * sb);
+    if (g.cc == g.ss)
+      out += g.cc * g.rest * cos(g.a - g.b);
+    else
+      out += g.rest * (g.cc * ca * cb + g.ss * sa * sb);
+    if (g.sc == -g.cs)
+      out += g.sc * g.rest * sin(g.a - g.b);
+    else
+      out += g.rest * (g.sc * sa * cb + g.cs * ca * sb);
   }
   return out;
 }
@@ -127,9 +134,12 @@ std::optional<std::pair<std::vector<ex>, ex>> by_acceleration(const ex& balance,
     for (std::size_t i = 0; i < k; ++i) {
       const ex f = is_a<mul>(term) ? term.op(i) : term;
       const auto it = index.find(f);
-      if (it != index.end() && !which) which = it->second;
-      else if (it != index.end() || (is_a<power>(f) && index.count(f.op(0)))) return std::nullopt;
-      else others.push_back(f);
+      if (it != index.end() && !which)
+        which = it->second;
+      else if (it != index.end() || (is_a<power>(f) && index.count(f.op(0))))
+        return std::nullopt;
+      else
+        others.push_back(f);
     }
     (which ? coefficients[*which] : rest).push_back(mul(others));
   }
@@ -151,7 +161,8 @@ std::optional<MassForm> mass_form(const Model& m, std::string& why_not) {
   const std::vector<ex> balance = projected_balances(m);
   const std::size_t n = balance.size();
   for (const auto& u : m.candidates)
-    if (!contains(s.accelerations, u) && std::any_of(balance.begin(), balance.end(), [&](const ex& e) { return e.has(u); })) {
+    if (!contains(s.accelerations, u) &&
+        std::any_of(balance.begin(), balance.end(), [&](const ex& e) { return e.has(u); })) {
       why_not = to_text(u) + " does work on the motion the coordinates allow";
       return std::nullopt;
     }
@@ -166,7 +177,8 @@ std::optional<MassForm> mass_form(const Model& m, std::string& why_not) {
     for (std::size_t j = 0; j < n; ++j) {
       const ex entry = angle_differences(fewer_trig_terms(row->first[j]));
       f.M(static_cast<unsigned>(i), static_cast<unsigned>(j)) = entry;
-      f.mass_varies = f.mass_varies || std::any_of(s.coordinates.begin(), s.coordinates.end(), [&](const ex& q) { return entry.has(q); });
+      f.mass_varies = f.mass_varies || std::any_of(s.coordinates.begin(), s.coordinates.end(),
+                                                   [&](const ex& q) { return entry.has(q); });
     }
     f.F.push_back(angle_differences(fewer_trig_terms(-row->second)));
   }
@@ -174,8 +186,7 @@ std::optional<MassForm> mass_form(const Model& m, std::string& why_not) {
 }
 
 LeftToMotion instant_left_to_motion(const Model& m) {
-  if (!m.motion || m.motion->coordinates.size() < 2 || !m.wanted.empty() || m.interval || m.impact)
-    return {};
+  if (!m.motion || m.motion->coordinates.size() < 2 || !m.wanted.empty() || m.interval || m.impact) return {};
   const exmap values = m.symbols->values();
   for (const auto& g : m.given)
     if (values.count(g)) return {};  // a state of the instant is given: it is asked about
@@ -183,11 +194,14 @@ LeftToMotion instant_left_to_motion(const Model& m) {
   auto f = mass_form(m, why_not);
   if (!f || !f->mass_varies) return {};
   const std::string n = std::to_string(m.motion->coordinates.size());
-  return {"nothing is asked at the instant (no 'find', no 'given'), and its accelerations in closed form would be ratios of "
-          "determinants of the " + n + " x " + n +
-              " mass matrix, which turns with the coordinates; the motion below has its equations from these balances "
-              "with the joint forces eliminated (projected on each coordinate)",
-          std::make_shared<const MassForm>(std::move(*f))};
+  return {
+      "nothing is asked at the instant (no 'find', no 'given'), and its accelerations in closed form would be ratios "
+      "of "
+      "determinants of the " +
+          n + " x " + n +
+          " mass matrix, which turns with the coordinates; the motion below has its equations from these balances "
+          "with the joint forces eliminated (projected on each coordinate)",
+      std::make_shared<const MassForm>(std::move(*f))};
 }
 
 std::optional<MassFormAtRest> at_rest(const Model& m, const MassForm& f) {
@@ -231,7 +245,8 @@ std::optional<std::vector<double>> small_oscillations(const Model& m, const matr
     const auto ev = es.eigenvalues()(i);
     // A zero eigenvalue is a free mode (a cart that rolls on with no spring): frequency 0.
     const double tiny = 1e-12 * (1 + scale);
-    if (std::abs(ev.imag()) > 1e-9 * (1 + std::abs(ev.real())) || ev.real() < -tiny) return std::nullopt;  // not a stable rest
+    if (std::abs(ev.imag()) > 1e-9 * (1 + std::abs(ev.real())) || ev.real() < -tiny)
+      return std::nullopt;  // not a stable rest
     out.push_back(ev.real() <= tiny ? 0.0 : std::sqrt(ev.real()));
   }
   std::sort(out.begin(), out.end());
@@ -268,7 +283,8 @@ void follow_mass_form(const Model& m, const std::shared_ptr<const MassForm>& f, 
   lin.about = 0;
   lin.stiffness_matrix = rest->M0.inverse().mul(rest->K0);
   for (unsigned i = 0; i < lin.stiffness_matrix.rows(); ++i)
-    for (unsigned j = 0; j < lin.stiffness_matrix.cols(); ++j) lin.stiffness_matrix(i, j) = normal(lin.stiffness_matrix(i, j));
+    for (unsigned j = 0; j < lin.stiffness_matrix.cols(); ++j)
+      lin.stiffness_matrix(i, j) = normal(lin.stiffness_matrix(i, j));
   const auto frequencies = small_oscillations(m, lin.stiffness_matrix);
   if (!frequencies) return;  // not a stable rest
   lin.frequencies = *frequencies;

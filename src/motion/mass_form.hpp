@@ -24,9 +24,9 @@
 namespace tackle {
 
 struct MassForm {
-  GiNaC::matrix M{0, 0};        // M_ij, symmetric, in the coordinates and parameters
-  std::vector<GiNaC::ex> F;     // F_i, in the coordinates, rates, parameters and t
-  bool mass_varies = false;     // M depends on the coordinates
+  GiNaC::matrix M{0, 0};     // M_ij, symmetric, in the coordinates and parameters
+  std::vector<GiNaC::ex> F;  // F_i, in the coordinates, rates, parameters and t
+  bool mass_varies = false;  // M depends on the coordinates
 };
 
 /// The motion's equations in the mass-matrix form; nothing (with `why_not` said) when the

@@ -53,7 +53,8 @@ EnergyAnswer work_energy(const Model& m, const EquationsOfMotion& eom, const Mot
   const ex M = eom.M(0, 0);
   const ex q0 = spec.initial.at(q), v0 = spec.initial.at(eom.dq[0]), q1 = e.position;
   ex Q = normal(M * f);
-  const bool geometric = std::any_of(m.lengths.begin(), m.lengths.end(), [&](const TurningLength& l) { return Q.has(l.symbol); });
+  const bool geometric =
+      std::any_of(m.lengths.begin(), m.lengths.end(), [&](const TurningLength& l) { return Q.has(l.symbol); });
   if (!geometric && Q.is_polynomial(q)) {
     const symbol s("s");
     const ex W = integral(s, q0, q1, Q.subs(q == s)).eval_integ();
@@ -73,8 +74,8 @@ EnergyAnswer work_energy(const Model& m, const EquationsOfMotion& eom, const Mot
   exmap without_q = values;
   without_q.erase(q);
   Qn = substituted(Qn, without_q);
-  const auto a = NormalForm(q0).approx_at(values), b = NormalForm(q1).approx_at(values), mv = NormalForm(M).approx_at(values),
-             v0n = NormalForm(v0).approx_at(values);
+  const auto a = NormalForm(q0).approx_at(values), b = NormalForm(q1).approx_at(values),
+             mv = NormalForm(M).approx_at(values), v0n = NormalForm(v0).approx_at(values);
   if (!a || !b || !mv || !v0n) {
     e.not_possible = "the work has no closed form and some value is missing for a number";
     return e;
@@ -87,7 +88,8 @@ EnergyAnswer work_energy(const Model& m, const EquationsOfMotion& eom, const Mot
   }
   // Composite Gauss-Legendre (5 points on each of 64 panels).
   static const double x5[] = {0, -0.5384693101056831, 0.5384693101056831, -0.9061798459386640, 0.9061798459386640};
-  static const double w5[] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665, 0.2369268850561891, 0.2369268850561891};
+  static const double w5[] = {0.5688888888888889, 0.4786286704993665, 0.4786286704993665, 0.2369268850561891,
+                              0.2369268850561891};
   double W = 0;
   const int panels = 64;
   const double h = (*b - *a) / panels;
@@ -121,12 +123,18 @@ std::string against_at_start(const Model& m, const Solution& sol, const Dependen
   for (const auto& s : m.slips) {
     if (s.bodies.size() < 2) continue;
     const auto v = number(s.speed);
-    if (v && *v < -1e-9) return "at t = 0 the contact of " + s.source + " slips against the direction it assumes (its friction would push the bodies along, not hold them back)";
+    if (v && *v < -1e-9)
+      return "at t = 0 the contact of " + s.source +
+             " slips against the direction it assumes (its friction would push the bodies along, not hold them back)";
   }
   for (const auto& l : m.loads) {
-    if (l.body < 0 || std::find(m.direction_assumed_by.begin(), m.direction_assumed_by.end(), l.source) == m.direction_assumed_by.end()) continue;
+    if (l.body < 0 || std::find(m.direction_assumed_by.begin(), m.direction_assumed_by.end(), l.source) ==
+                          m.direction_assumed_by.end())
+      continue;
     // (Between two bodies, the relative slip above decides, not each body's own motion.)
-    if (std::any_of(m.slips.begin(), m.slips.end(), [&](const Model::Slip& s) { return s.source == l.source && s.bodies.size() > 1; })) continue;
+    if (std::any_of(m.slips.begin(), m.slips.end(),
+                    [&](const Model::Slip& s) { return s.source == l.source && s.bodies.size() > 1; }))
+      continue;
     const Body& b = m.bodies[static_cast<std::size_t>(l.body)];
     // The velocity of the point the friction acts at: the center's, unless the body turns.
     const bool turning = !b.angle.is_zero() && l.at;
@@ -252,7 +260,8 @@ bool initial_rates_agree(MotionStory& st) {
     const auto r = for_accelerations.rates.find(sym);
     if (r == for_accelerations.rates.end()) continue;
     ex expected = r->second;
-    for (int depth = 0; depth < 4; ++depth) expected = substituted(substituted(expected, spec.initial), for_accelerations.definitions);
+    for (int depth = 0; depth < 4; ++depth)
+      expected = substituted(substituted(expected, spec.initial), for_accelerations.definitions);
     if (depends_on_state(expected, st.state, m)) continue;  // (not decidable here: followed as given)
     const ex given = spec.initial.at(sym);
     const ex difference = normal(given - expected);
@@ -263,8 +272,8 @@ bool initial_rates_agree(MotionStory& st) {
     if (is_a<numeric>(d) && is_a<numeric>(e) &&
         std::abs(ex_to<numeric>(d).to_double()) <= 1e-9 * std::max(1.0, std::abs(ex_to<numeric>(e).to_double())))
       continue;
-    st.out.problem = "initial value of '" + to_text(sym) + "' is " + to_text(given) + ", but the constraints give " + to_text(sym) +
-                     " = " + to_text(normal(r->second)) + " = " + to_text(normal(expected)) +
+    st.out.problem = "initial value of '" + to_text(sym) + "' is " + to_text(given) + ", but the constraints give " +
+                     to_text(sym) + " = " + to_text(normal(r->second)) + " = " + to_text(normal(expected)) +
                      " at t = 0 (expected that value, or none: it follows from the motion's rates)";
     st.out.problem_at = where;
     return false;
@@ -281,7 +290,8 @@ void place_dependents(MotionStory& st) {
   for (const auto& c : st.sol.conditions)
     if (!c.depends_on_free) st.all += c.expr;
   // (Solved again only when the quantities and conditions add something to what is needed.)
-  st.for_all = st.all.is_equal(accelerations_only) ? st.for_accelerations : dependents(st.m, st.s, st.sol, st.spec, st.all);
+  st.for_all =
+      st.all.is_equal(accelerations_only) ? st.for_accelerations : dependents(st.m, st.s, st.sol, st.spec, st.all);
   st.dep = st.for_all.problem.empty() ? &st.for_all : &st.for_accelerations;
 }
 
@@ -301,7 +311,8 @@ bool accelerations_in_state(MotionStory& st) {
     for (const auto& b : m.coordinates)
       if ((a.has(b.q) || a.has(b.rate)) && !contains(st.state, a.has(b.q) ? b.q : b.rate)) {
         st.out.problem = "the acceleration " + to_text(eom.ddq[&a - eom.acceleration.data()]) + " depends on " +
-                         to_text(a.has(b.q) ? b.q : b.rate) + ", which the constraints do not give from the motion's coordinates";
+                         to_text(a.has(b.q) ? b.q : b.rate) +
+                         ", which the constraints do not give from the motion's coordinates";
         return false;
       }
   }
@@ -437,16 +448,20 @@ void natural_frequencies(MotionStory& st) {
   for (std::size_t i = 0; i < n && numbers; ++i)
     for (std::size_t j = 0; j < n && numbers; ++j) {
       const auto mv = NormalForm(eom.M(i, j)).approx_at(values), kv = NormalForm(eom.K(i, j)).approx_at(values);
-      if (!mv || !kv) numbers = false;
-      else Mn(i, j) = *mv, Kn(i, j) = *kv;
+      if (!mv || !kv)
+        numbers = false;
+      else
+        Mn(i, j) = *mv, Kn(i, j) = *kv;
     }
   if (numbers && std::abs(Mn.determinant()) > 0) {
     const Eigen::EigenSolver<Eigen::MatrixXd> es(Mn.inverse() * Kn);
     bool real = es.info() == Eigen::Success;
     for (Eigen::Index i = 0; i < es.eigenvalues().size() && real; ++i) {
       const auto ev = es.eigenvalues()(i);
-      if (std::abs(ev.imag()) > 1e-9 * (1 + std::abs(ev.real())) || ev.real() < 0) real = false;
-      else eom.natural_frequencies.push_back(std::sqrt(std::max(0.0, ev.real())));
+      if (std::abs(ev.imag()) > 1e-9 * (1 + std::abs(ev.real())) || ev.real() < 0)
+        real = false;
+      else
+        eom.natural_frequencies.push_back(std::sqrt(std::max(0.0, ev.real())));
     }
     if (!real) eom.natural_frequencies.clear();
     std::sort(eom.natural_frequencies.begin(), eom.natural_frequencies.end());
@@ -472,7 +487,8 @@ void quantities_in_state(MotionStory& st) {
   }
   // Every other unknown the solve determines (a tension to plot that `find` does not list).
   for (const auto& u : st.s.unknowns) {
-    if (std::any_of(out.in_state.begin(), out.in_state.end(), [&](const auto& p) { return p.first.is_equal(u); })) continue;
+    if (std::any_of(out.in_state.begin(), out.in_state.end(), [&](const auto& p) { return p.first.is_equal(u); }))
+      continue;
     const ex value = put_in(substituted(u, st.sol.general), dep);
     if (std::none_of(m.candidates.begin(), m.candidates.end(), [&](const ex& c) { return value.has(c); }))
       out.in_state.emplace_back(u, value);
@@ -486,10 +502,11 @@ void conditions_in_state(MotionStory& st) {
     if (c.depends_on_free) continue;
     const ex in_state = put_in(c.expr, *st.dep);
     if (const auto q = st.unplaced(in_state)) {
-      st.out.not_followed.emplace_back(c.condition->source,
-                                       "it depends on " + to_text(*q) +
-                                           (st.for_all.problem.empty() ? ", which the motion's coordinates do not give"
-                                                                       : ", whose value at t = 0 'initial' does not give (expected it there)"));
+      st.out.not_followed.emplace_back(
+          c.condition->source,
+          "it depends on " + to_text(*q) +
+              (st.for_all.problem.empty() ? ", which the motion's coordinates do not give"
+                                          : ", whose value at t = 0 'initial' does not give (expected it there)"));
       continue;
     }
     st.out.conditions_in_state.emplace_back(&c, in_state);

@@ -44,8 +44,8 @@ struct EquationsOfMotion {
   // (ddot(q) = 0 there): the small oscillations about it, ddot(q) = -lambda^2 (q - q0), with
   // lambda^2 = -d f/d q at q0 (the pendulum's g/l), when that is positive with the numbers.
   struct Linearised {
-    GiNaC::ex about;       // q0
-    GiNaC::ex stiffness;   // lambda^2 = -df/dq at q0 (per unit of the coordinate's inertia)
+    GiNaC::ex about;               // q0
+    GiNaC::ex stiffness;           // lambda^2 = -df/dq at q0 (per unit of the coordinate's inertia)
     std::optional<double> lambda;  // rad/s, with the numbers
     // More than one degree of freedom: ddot(q) = -K q about q = 0, K_ij = -df_i/dq_j there,
     // and the natural frequencies of small oscillations, sqrt of K's eigenvalues (numbers).
@@ -58,11 +58,11 @@ struct EquationsOfMotion {
 /// The closed-form response of one linear degree of freedom from its initial conditions.
 struct Response {
   enum class Regime { undamped, underdamped, critically_damped, overdamped, free_particle, damped_particle } regime;
-  GiNaC::ex q;            // q(t), in lambda, zeta, omega_d where they appear
-  GiNaC::ex rate;         // dot(q)(t)
-  GiNaC::ex particular;   // the forced part (0 for free motion)
+  GiNaC::ex q;                      // q(t), in lambda, zeta, omega_d where they appear
+  GiNaC::ex rate;                   // dot(q)(t)
+  GiNaC::ex particular;             // the forced part (0 for free motion)
   GiNaC::ex forcing_frequency = 0;  // w of a harmonic forcing (0 when there is none)
-  GiNaC::ex homogeneous;  // the free part, its constants fixed by the initial conditions
+  GiNaC::ex homogeneous;            // the free part, its constants fixed by the initial conditions
   // Quantities the response is written in, with their definitions (lambda = sqrt(k/(m + M))).
   std::vector<std::pair<GiNaC::ex, GiNaC::ex>> definitions;
   // Conditions the form assumes (zeta < 1, omega != lambda), in words and as expressions.
@@ -78,13 +78,13 @@ struct Response {
 /// A validity condition of the instant, followed in time along the response.
 struct ConditionInTime {
   Condition condition;  // the model's (a copy: a report keeps it after the analysis is gone)
-  GiNaC::ex of_t;  // the condition's expression along the response: the condition is `of_t op 0`
+  GiNaC::ex of_t;       // the condition's expression along the response: the condition is `of_t op 0`
   // The least (for >=, >) or greatest (for <=, <) value over all t, in closed form, and the
   // condition for all t (`extreme op 0`) solved for the parameters where it can be.
   std::optional<GiNaC::ex> extreme;
   std::optional<GiNaC::ex> extreme_at;  // the first t >= 0 at which it is reached
   std::vector<SolvedFor> solved;
-  std::optional<bool> holds_for_all_t;   // with the given numbers
+  std::optional<bool> holds_for_all_t;     // with the given numbers
   std::optional<GiNaC::ex> first_failure;  // the first t at which it fails, in closed form
   std::optional<double> first_failure_s;   // the same in seconds (numeric)
   // Under a harmonic forcing: the condition in the steady state (the forced part alone),
@@ -92,7 +92,7 @@ struct ConditionInTime {
   // and alpha^2 - beta^2 - gamma^2 >= 0 (for >=); the second, a quadratic in w^2 with two
   // roots, fails in a band of driving frequencies (or outside it).
   std::optional<GiNaC::ex> steady_of_t;
-  std::optional<GiNaC::ex> steady_offset;    // alpha: must keep its sign
+  std::optional<GiNaC::ex> steady_offset;               // alpha: must keep its sign
   std::optional<GiNaC::ex> steady_amplitude_condition;  // alpha^2 - beta^2 - gamma^2, its numerator (>= 0)
   struct Band {
     GiNaC::ex variable;   // w^2
@@ -114,12 +114,12 @@ struct QuantityInTime {
 /// (1/2 M v^2 - 1/2 M v0^2 = the work of the forces from q0 to q), one degree of freedom,
 /// forces that depend on the position only.
 struct EnergyAnswer {
-  GiNaC::ex position;                     // q's value there
-  GiNaC::ex work;                         // the work of the forces from q0 to there (closed form, when found)
-  std::optional<GiNaC::ex> rate_squared;  // dot(q)^2 there, in closed form
+  GiNaC::ex position;                         // q's value there
+  GiNaC::ex work;                             // the work of the forces from q0 to there (closed form, when found)
+  std::optional<GiNaC::ex> rate_squared;      // dot(q)^2 there, in closed form
   std::optional<double> rate_squared_number;  // the same with the given values (numeric quadrature when no closed form)
-  bool numeric_only = false;              // the work was integrated numerically
-  std::string not_possible;               // why there is no work-energy answer
+  bool numeric_only = false;                  // the work was integrated numerically
+  std::string not_possible;                   // why there is no work-energy answer
 };
 
 struct Motion {
@@ -142,7 +142,7 @@ struct Motion {
   // Each sliding contact's slip speed on a turning body (Model::slips) in the state (it must
   // stay positive), with its source.
   std::vector<std::pair<std::string, GiNaC::ex>> slips_in_state;
-  std::string problem;       // the motion could not be followed at all: why (an input error)
+  std::string problem;                 // the motion could not be followed at all: why (an input error)
   std::optional<Location> problem_at;  // where in the description, when not at 'motion'
   // A rule assumes the direction of motion (sliding friction opposes it): the closed-form
   // response holds only while the rate keeps the sign it starts with, up to the first t > 0
@@ -152,7 +152,7 @@ struct Motion {
   std::vector<std::string> direction_assumed_by;
   std::optional<GiNaC::ex> direction_until;
   std::optional<double> direction_until_s;
-  bool direction_kept = false;  // the rate keeps its sign for every t > 0 (with the numbers)
+  bool direction_kept = false;     // the rate keeps its sign for every t > 0 (with the numbers)
   bool direction_unknown = false;  // no numbers to tell
   // The motion starts against the assumed direction (with the numbers): why, in words. The
   // closed form then describes no part of the motion, and `simulate` stops at t = 0.

@@ -28,8 +28,8 @@ std::vector<ex> parameters_of(const SymbolTable& t) {
 // one). Where `g` is affine in the cosine and the sine as written (its derivatives in them
 // free of both), each part is put over one denominator alone: normal() of the whole, with
 // the particular solution's coefficients over theirs, was most of a driven slope's run.
-std::tuple<std::optional<ex>, std::optional<ex>, std::optional<ex>> harmonic_parts(const ex& g, const ex& cos_wt, const ex& sin_wt,
-                                                                                 const ex& t) {
+std::tuple<std::optional<ex>, std::optional<ex>, std::optional<ex>> harmonic_parts(const ex& g, const ex& cos_wt,
+                                                                                   const ex& sin_wt, const ex& t) {
   const symbol cs("cs"), sn("sn");
   const ex in_cs = g.subs(lst{cos_wt == cs, sin_wt == sn});
   const ex d_cs = in_cs.diff(cs), d_sn = in_cs.diff(sn);
@@ -39,7 +39,8 @@ std::tuple<std::optional<ex>, std::optional<ex>, std::optional<ex>> harmonic_par
     return {alpha, beta, gamma};
   }
   const ex p = normal(g).subs(lst{cos_wt == cs, sin_wt == sn}).expand();
-  if (p.has(t) || !p.is_polynomial(lst{cs, sn}) || p.degree(cs) > 1 || p.degree(sn) > 1 || p.coeff(cs, 1).has(sn)) return {};
+  if (p.has(t) || !p.is_polynomial(lst{cs, sn}) || p.degree(cs) > 1 || p.degree(sn) > 1 || p.coeff(cs, 1).has(sn))
+    return {};
   return {p.subs(lst{cs == 0, sn == 0}), p.coeff(cs, 1), p.coeff(sn, 1)};
 }
 
@@ -53,7 +54,8 @@ void steady_state(ConditionInTime& ct, const CheckedCondition& c, const ex& in_s
   const ex& t = m.time;
   const ex w = r.forcing_frequency;
   const ex qp = r.particular;
-  const ex g = substituted(substituted(in_state, m.symbols->definitions()), exmap{{eom.q[0], qp}, {eom.dq[0], qp.diff(ex_to<symbol>(t))}});
+  const ex g = substituted(substituted(in_state, m.symbols->definitions()),
+                           exmap{{eom.q[0], qp}, {eom.dq[0], qp.diff(ex_to<symbol>(t))}});
   const auto [alpha0, beta0, gamma0] = harmonic_parts(g, cos(w * t), sin(w * t), t);
   if (!alpha0) return;
   const ex alpha = simplest(*alpha0), beta = simplest(*beta0), gamma = simplest(*gamma0);
@@ -75,10 +77,13 @@ void steady_state(ConditionInTime& ct, const CheckedCondition& c, const ex& in_s
   if (!positive) return;
   // Undamped: alpha^2 - beta^2 = (alpha - beta)(alpha + beta), and the numerator's factors
   // are theirs (factor() of the whole numerator was half the run).
-  ct.steady_amplitude_condition =
-      gamma.is_zero() ? simplest_of_product(num, {numer_denom_remembered(alpha - beta).op(0), numer_denom_remembered(alpha + beta).op(0)})
-                      : simplest(num);
-  if (const auto v = NormalForm(lower ? alpha - sqrt(beta * beta + gamma * gamma) : alpha + sqrt(beta * beta + gamma * gamma)).approx_at(values))
+  ct.steady_amplitude_condition = gamma.is_zero()
+                                      ? simplest_of_product(num, {numer_denom_remembered(alpha - beta).op(0),
+                                                                  numer_denom_remembered(alpha + beta).op(0)})
+                                      : simplest(num);
+  if (const auto v =
+          NormalForm(lower ? alpha - sqrt(beta * beta + gamma * gamma) : alpha + sqrt(beta * beta + gamma * gamma))
+              .approx_at(values))
     ct.steady_holds = lower ? (op == ">=" ? *v >= 0 : *v > 0) : (op == "<=" ? *v <= 0 : *v < 0);
   // In w^2: a quadratic with two roots gives the band.
   if (!is_a<symbol>(w)) return;
@@ -212,8 +217,10 @@ void undamped_extreme(ConditionInTime& ct, const ex& g, const std::string& op, A
     const ex beta = simplest(p.coeff(cs, 1)), gamma = simplest(p.coeff(sn, 1));
     ex amplitude;
     std::optional<int> beta_sign = sign_of(beta);
-    if (gamma.is_zero() && beta_sign) amplitude = *beta_sign >= 0 ? beta : -beta;
-    else amplitude = sqrt(simplest(beta * beta + gamma * gamma));
+    if (gamma.is_zero() && beta_sign)
+      amplitude = *beta_sign >= 0 ? beta : -beta;
+    else
+      amplitude = sqrt(simplest(beta * beta + gamma * gamma));
     const bool lower = op == ">=" || op == ">";
     const ex extreme = lower ? alpha - amplitude : alpha + amplitude;
     ct.extreme = in_lambda(extreme);

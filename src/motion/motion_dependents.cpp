@@ -32,7 +32,8 @@ void add_balance_coordinates(Dependents& d, const Model& m, const Solution& sol)
     if (!v) continue;  // the solve did not give it: what needs it says so
     const ex value = d.coords.empty() ? *v : substituted(*v, d.coords);
     d.coords[q] = value;
-    const auto body = std::find_if(m.bodies.begin(), m.bodies.end(), [&](const Body& b) { return b.coord.is_equal(q); });
+    const auto body =
+        std::find_if(m.bodies.begin(), m.bodies.end(), [&](const Body& b) { return b.coord.is_equal(q); });
     ex rate = time_derivative(value, m);
     if (!d.rates.empty()) rate = substituted(rate, d.rates);
     d.rates[body->rate] = rate;
@@ -41,7 +42,8 @@ void add_balance_coordinates(Dependents& d, const Model& m, const Solution& sol)
 
 }  // namespace
 
-Dependents dependents(const Model& m, const EquationSystem& s, const Solution& sol, const MotionSpec& spec, const ex& needed) {
+Dependents dependents(const Model& m, const EquationSystem& s, const Solution& sol, const MotionSpec& spec,
+                      const ex& needed) {
   Dependents d;
   d.definitions = m.symbols->definitions();
   const std::vector<ex> by_balance = balance_coordinates(m);
@@ -96,15 +98,17 @@ Dependents dependents(const Model& m, const EquationSystem& s, const Solution& s
     if (!used) continue;
     const auto it = d.coords.find(c);
     if (it == d.coords.end()) {  // not solved for: reported where it is used, unless it is missing
-      if (!spec.initial.count(c) && std::find(missing.begin(), missing.end(), to_text(c)) == missing.end()) missing.push_back(to_text(c));
+      if (!spec.initial.count(c) && std::find(missing.begin(), missing.end(), to_text(c)) == missing.end())
+        missing.push_back(to_text(c));
       continue;
     }
     for (const auto& [q0, q] : not_given)
-      if (it->second.has(q0) && std::find(missing.begin(), missing.end(), to_text(q)) == missing.end()) missing.push_back(to_text(q));
+      if (it->second.has(q0) && std::find(missing.begin(), missing.end(), to_text(q)) == missing.end())
+        missing.push_back(to_text(q));
   }
   if (!missing.empty()) {
-    d.problem = "the motion needs the initial value of " + join(missing, " and ") +
-                " (the constraints fix " + (missing.size() == 1 ? "it" : "them") + " only up to a constant; expected " +
+    d.problem = "the motion needs the initial value of " + join(missing, " and ") + " (the constraints fix " +
+                (missing.size() == 1 ? "it" : "them") + " only up to a constant; expected " +
                 (missing.size() == 1 ? "it" : "them") + " in 'initial')";
     return d;
   }

@@ -33,8 +33,8 @@ struct Dependents {
 
 /// The dependent coordinates and rates that `needed` asks for (a problem when a starting
 /// value they need is not given).
-[[nodiscard]] Dependents dependents(const Model& m, const EquationSystem& s, const Solution& sol, const MotionSpec& spec,
-                                    const GiNaC::ex& needed);
+[[nodiscard]] Dependents dependents(const Model& m, const EquationSystem& s, const Solution& sol,
+                                    const MotionSpec& spec, const GiNaC::ex& needed);
 
 /// `e` with the defined parameters, the dependent coordinates and the dependent rates put in.
 [[nodiscard]] GiNaC::ex put_in(const GiNaC::ex& e, const Dependents& d);

@@ -92,8 +92,10 @@ void sliding_interval(Motion& out, const Model& m, const MotionSpec& spec) {
     return exact_rate.approx_at(at);
   };
   if (out.direction_until) {
-    if (auto v = NormalForm(*out.direction_until).approx_at(values)) out.direction_until_s = *v;
-    else out.direction_unknown = true;
+    if (auto v = NormalForm(*out.direction_until).approx_at(values))
+      out.direction_until_s = *v;
+    else
+      out.direction_unknown = true;
     return;
   }
   // The first sign change within the run's end (or 100 s), on a grid of 4000 steps.
@@ -112,7 +114,8 @@ void sliding_interval(Motion& out, const Model& m, const MotionSpec& spec) {
       out.direction_unknown = true;
       return;
     }
-    if (start_sign == 0) start_sign = *v;  // from rest: the sign it takes
+    if (start_sign == 0)
+      start_sign = *v;  // from rest: the sign it takes
     else if ((*v > 0) != (start_sign > 0) || *v == 0) {
       double lo = horizon * (i - 1) / steps, hi = t1;
       for (int k = 0; k < 60; ++k) {
@@ -144,7 +147,7 @@ struct ResponseMaking {
   bool undamped = false, unsprung = false;
   Response r{};
   ex h1{}, h2{};  // the free solutions of the regime
-  ex qp = 0;  // the forced part
+  ex qp = 0;      // the forced part
   bool resonant = false;
 };
 
@@ -277,8 +280,10 @@ bool verified(const ResponseMaking& rm, const EquationsOfMotion& eom, const Symb
     bool valued = true;
     for (std::size_t i = 1; i < inputs.size() && valued; ++i) {
       const auto it = p.find(inputs[i]);
-      if (it == p.end()) valued = false;
-      else x[i] = ex_to<numeric>(it->second).to_double();
+      if (it == p.end())
+        valued = false;
+      else
+        x[i] = ex_to<numeric>(it->second).to_double();
     }
     if (!valued) continue;
     for (const double tt : {0.0, 0.37, 1.9}) {
@@ -301,7 +306,8 @@ void closed_form_response(MotionStory& st) {
   const auto forcing = harmonic(eom.forcing[0], t);
   rm.values = st.table.values();
   if (!forcing) {
-    st.out.no_response = "the forcing " + to_text(eom.forcing[0]) + " is not a constant plus one harmonic term (simulate it)";
+    st.out.no_response =
+        "the forcing " + to_text(eom.forcing[0]) + " is not a constant plus one harmonic term (simulate it)";
     return;
   }
   if (!zero(rm.K) && numeric_sign(rm.K / rm.M, rm.values) != std::optional<int>(1)) {

@@ -45,12 +45,13 @@ IntervalEnd interval_end(const Model& m, const Solution& sol) {
     }
     const auto a = sol.value_of(b.accel);
     if (!a) {
-      out.problem = "the end of " + to_text(b.rate) + " needs " + to_text(b.accel) + ", which the equations do not determine";
+      out.problem =
+          "the end of " + to_text(b.rate) + " needs " + to_text(b.accel) + ", which the equations do not determine";
       return out;
     }
     if (auto other = not_a_parameter(*a, table)) {
-      out.problem = "the end of " + to_text(b.rate) + " needs a constant " + to_text(b.accel) + ", and it is " + to_text(*a) +
-                    " (it depends on " + to_text(*other) + ")";
+      out.problem = "the end of " + to_text(b.rate) + " needs a constant " + to_text(b.accel) + ", and it is " +
+                    to_text(*a) + " (it depends on " + to_text(*other) + ")";
       return out;
     }
     r.accel = *a;
@@ -72,13 +73,17 @@ IntervalEnd interval_end(const Model& m, const Solution& sol) {
       const ex towards_start = normal(c.from * s), towards_accel = normal(*a * s);
       const auto moving = positive(towards_start, false, table), pushed = positive(towards_accel, false, table);
       const auto reached = positive(squared, true, table);
-      if (moving.value_or(false)) r.reaches.push_back({towards_start, ">"});
-      else if (pushed.value_or(false)) r.reaches.push_back({towards_accel, ">"});
-      else r.reaches.push_back({towards_start, ">"});
-      if (reached && (moving || pushed)) r.reaches_holds = *reached && (moving.value_or(false) || pushed.value_or(false));
+      if (moving.value_or(false))
+        r.reaches.push_back({towards_start, ">"});
+      else if (pushed.value_or(false))
+        r.reaches.push_back({towards_accel, ">"});
+      else
+        r.reaches.push_back({towards_start, ">"});
+      if (reached && (moving || pushed))
+        r.reaches_holds = *reached && (moving.value_or(false) || pushed.value_or(false));
       if (r.reaches_holds && !*r.reaches_holds) {
-        out.problem = "body '" + b.name + "' never moves by " + to_text(s) + " (it starts with " + to_text(b.rate) + " = " +
-                      to_text(c.from) + " and has " + to_text(b.accel) + " = " + to_text(*a) +
+        out.problem = "body '" + b.name + "' never moves by " + to_text(s) + " (it starts with " + to_text(b.rate) +
+                      " = " + to_text(c.from) + " and has " + to_text(b.accel) + " = " + to_text(*a) +
                       "; expected it to reach the end of the interval)";
         return out;
       }
@@ -149,7 +154,8 @@ ImpactResult analyze_impact(const Model& m) {
   return out;
 }
 
-exmap end_state(const Model& m, const Solution& sol, const std::optional<IntervalEnd>& end, const std::optional<ImpactResult>& impact) {
+exmap end_state(const Model& m, const Solution& sol, const std::optional<IntervalEnd>& end,
+                const std::optional<ImpactResult>& impact) {
   exmap state;
   for (const auto& d : sol.values) state[d.unknown] = d.value;
   for (const auto& w : m.wanted)

@@ -23,12 +23,12 @@ namespace tackle {
 struct IntervalEnd {
   struct Rate {
     int body = -1;
-    GiNaC::ex rate;    // the body's rate symbol, dot(y)
-    GiNaC::ex from;    // at the start
-    GiNaC::ex accel;   // the constant acceleration (closed form), when found
-    GiNaC::ex value;   // at the end (closed form)
-    bool given = false;                    // from `to`
-    std::optional<GiNaC::ex> displacement; // over a duration: v0 T + a T^2/2
+    GiNaC::ex rate;                         // the body's rate symbol, dot(y)
+    GiNaC::ex from;                         // at the start
+    GiNaC::ex accel;                        // the constant acceleration (closed form), when found
+    GiNaC::ex value;                        // at the end (closed form)
+    bool given = false;                     // from `to`
+    std::optional<GiNaC::ex> displacement;  // over a duration: v0 T + a T^2/2
     // Over a distance s, the body gets there: v0^2 + 2 a s >= 0, and it moves towards s at the
     // start or accelerates towards it (v0 s > 0 or a s > 0); each `expr >= 0` or `expr > 0`.
     std::vector<std::pair<GiNaC::ex, std::string>> reaches;
@@ -48,9 +48,9 @@ struct ImpactResult {
   std::vector<Equation> equations;  // momentum, then sticking (or restitution)
   struct After {
     int body = -1;
-    GiNaC::ex rate;     // dot(y_P): the rate just after
-    GiNaC::ex before;   // the rate just before
-    GiNaC::ex after;    // closed form
+    GiNaC::ex rate;                     // dot(y_P): the rate just after
+    GiNaC::ex before;                   // the rate just before
+    GiNaC::ex after;                    // closed form
     GiNaC::ex impulse_symbol, impulse;  // J_P = m_P (after - before)
   };
   std::vector<After> after;

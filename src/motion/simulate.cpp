@@ -47,10 +47,14 @@ bool holds(double v, const std::string& op) {
 // none, or it is not a positive number of seconds).
 double end_time(const SimulationSpec& spec, const MotionSpec& ms, const Location& where) {
   double until = 0;
-  if (spec.until) until = *spec.until;
-  else if (ms.until) until = ex_to<numeric>(evalf(*ms.until)).to_double();
-  else throw InputError({{where, "no end time (expected --until SECONDS, or 'until' in the description's 'motion')"}});
-  if (!(until > 0) || !std::isfinite(until)) throw InputError({{where, "the end time must be a positive number of seconds"}});
+  if (spec.until)
+    until = *spec.until;
+  else if (ms.until)
+    until = ex_to<numeric>(evalf(*ms.until)).to_double();
+  else
+    throw InputError({{where, "no end time (expected --until SECONDS, or 'until' in the description's 'motion')"}});
+  if (!(until > 0) || !std::isfinite(until))
+    throw InputError({{where, "the end time must be a positive number of seconds"}});
   return until;
 }
 
@@ -70,7 +74,7 @@ struct CompiledRun {
   // The inputs of every compiled expression: t, then the coordinates, then the rates.
   std::vector<ex> inputs{};
   exmap values{};
-  exmap state_of{};  // quantities asked for, dependent coordinates and rates -> their expressions in the state
+  exmap state_of{};   // quantities asked for, dependent coordinates and rates -> their expressions in the state
   exmap dependent{};  // the dependent coordinates and rates alone
   std::vector<Diagnostic> problems{};
   std::vector<Compiled> accel{};
@@ -131,13 +135,16 @@ void compile_watched(CompiledRun& run, const Motion& mo) {
       conditions.push_back({*g, ">", what + ": its length reaches zero (a body reaches the point at its end)"});
   for (const auto& [what, e] : mo.slips_in_state)
     if (auto g = run.compile(e, what))
-      conditions.push_back({*g, ">", what + ": the contact stops slipping (its friction would change; the body may roll from here)", true});
+      conditions.push_back(
+          {*g, ">", what + ": the contact stops slipping (its friction would change; the body may roll from here)",
+           true});
 }
 
 // What to tabulate: as asked, else the description's plot, else the coordinates; each column
 // compiled, with the table's header (names, LaTeX, units). The columns' one dimension, where
 // they share one.
-std::optional<Dimension> compile_columns(CompiledRun& run, const Model& m, const EquationsOfMotion& eom, const SimulationSpec& spec) {
+std::optional<Dimension> compile_columns(CompiledRun& run, const Model& m, const EquationsOfMotion& eom,
+                                         const SimulationSpec& spec) {
   const SymbolTable& table = run.table;
   SweepResult& table_out = run.table_out;
   std::vector<std::string> plot = spec.plot;
@@ -165,8 +172,10 @@ std::optional<Dimension> compile_columns(CompiledRun& run, const Model& m, const
       std::string dim_problem;
       const auto dim = dimension_of(e, table, dim_problem);
       table_out.units.push_back(dim ? si_unit_name(*dim) : "");
-      if (!dim || (common && !(*common == *dim))) same_dimension = false;
-      else common = dim;
+      if (!dim || (common && !(*common == *dim)))
+        same_dimension = false;
+      else
+        common = dim;
     }
   }
   return same_dimension ? common : std::nullopt;
@@ -195,7 +204,8 @@ State initial_state(const EquationsOfMotion& eom, const MotionSpec& ms, const Co
       const ex& s = rate ? eom.dq[i] : eom.q[i];
       const ex v = evalf(in_numbers(ms.initial.at(s), run.table, run.values));
       if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real())
-        throw InputError({{ms.at, "the initial value of " + to_text(s) + " has no number (a parameter without a value?)"}});
+        throw InputError(
+            {{ms.at, "the initial value of " + to_text(s) + " has no number (a parameter without a value?)"}});
       x[rate ? n + i : i] = ex_to<numeric>(v).to_double();
     }
   return x;
@@ -284,7 +294,8 @@ std::vector<bool> slip_watched(const Model& m, const EquationsOfMotion& eom) {
   auto watched = [&](int body) {
     bool any = false;
     for (const auto& l : m.loads) {
-      if (l.body != body || std::find(m.direction_assumed_by.begin(), m.direction_assumed_by.end(), l.source) == m.direction_assumed_by.end())
+      if (l.body != body || std::find(m.direction_assumed_by.begin(), m.direction_assumed_by.end(), l.source) ==
+                                m.direction_assumed_by.end())
         continue;
       const bool slip = std::any_of(m.slips.begin(), m.slips.end(), [&](const Model::Slip& s) {
         return s.source == l.source && std::find(s.bodies.begin(), s.bodies.end(), body) != s.bodies.end();
@@ -297,7 +308,8 @@ std::vector<bool> slip_watched(const Model& m, const EquationsOfMotion& eom) {
   if (!m.slips.empty())
     for (std::size_t i = 0; i < n; ++i)
       for (const auto& c : m.coordinates)
-        if (c.q.is_equal(eom.q[i]) && c.body >= 0 && (!m.bodies[static_cast<std::size_t>(c.body)].angle.is_zero() || watched(c.body)))
+        if (c.q.is_equal(eom.q[i]) && c.body >= 0 &&
+            (!m.bodies[static_cast<std::size_t>(c.body)].angle.is_zero() || watched(c.body)))
           slip_watched[i] = true;
   return slip_watched;
 }
@@ -437,7 +449,9 @@ void integrate(Integration& it, Simulation& out) {
 
 Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Location& where) {
   const Model& m = a.model;
-  if (!a.motion) throw InputError({{where, "the description has no 'motion' (expected, e.g., motion: {initial: {x: 0, dot(x): 0}})"}});
+  if (!a.motion)
+    throw InputError(
+        {{where, "the description has no 'motion' (expected, e.g., motion: {initial: {x: 0, dot(x): 0}})"}});
   const Motion& mo = *a.motion;
   const MotionSpec& ms = *m.motion;
   const EquationsOfMotion& eom = mo.eom;
@@ -456,7 +470,12 @@ Simulation simulate(const Analysis& a, const SimulationSpec& spec, const Locatio
     out.table = std::move(compiled.table_out);
     return out;
   }
-  Integration it{run,   m, spec, until, slip_watched(m, eom), odeint::make_dense_output(spec.tolerance, spec.tolerance, odeint::runge_kutta_dopri5<State>()),
+  Integration it{run,
+                 m,
+                 spec,
+                 until,
+                 slip_watched(m, eom),
+                 odeint::make_dense_output(spec.tolerance, spec.tolerance, odeint::runge_kutta_dopri5<State>()),
                  until / std::max(1, spec.samples - 1)};
   it.stepper.initialize(x, 0.0, until / 1000);
   it.rate_sign.resize(n);

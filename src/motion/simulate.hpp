@@ -16,26 +16,26 @@
 namespace tackle {
 
 struct SimulationSpec {
-  std::optional<double> until;     // seconds (default: the description's 'until')
-  std::vector<std::string> plot;   // expressions in the answers, coordinates, rates, parameters and t
-  int samples = 201;               // rows of the table, evenly spaced in time
-  double tolerance = 1e-10;        // relative and absolute error per step
-  double time_limit = 10;          // seconds of computing before giving up
+  std::optional<double> until;    // seconds (default: the description's 'until')
+  std::vector<std::string> plot;  // expressions in the answers, coordinates, rates, parameters and t
+  int samples = 201;              // rows of the table, evenly spaced in time
+  double tolerance = 1e-10;       // relative and absolute error per step
+  double time_limit = 10;         // seconds of computing before giving up
 };
 
 struct SimulationEvent {
   double t = 0;
-  std::string what;    // "contact c: the contact pushes no longer"
-  bool ends = false;   // the run ends here
+  std::string what;   // "contact c: the contact pushes no longer"
+  bool ends = false;  // the run ends here
 };
 
 struct Simulation {
-  SweepResult table;               // t and the plotted quantities, for the sweep writers
+  SweepResult table;  // t and the plotted quantities, for the sweep writers
   std::vector<SimulationEvent> events;
-  double reached = 0;              // the time the run reached
-  bool complete = false;           // it reached 'until' with the model holding throughout
-  std::string stopped;             // why it ended early, in words
-  std::size_t steps = 0;           // accepted integration steps
+  double reached = 0;     // the time the run reached
+  bool complete = false;  // it reached 'until' with the model holding throughout
+  std::string stopped;    // why it ended early, in words
+  std::size_t steps = 0;  // accepted integration steps
   // What the run does not watch (source, why): a strand whose length needs a starting value
   // 'initial' does not give. "The model holds throughout" is said only without these.
   std::vector<std::pair<std::string, std::string>> not_followed;

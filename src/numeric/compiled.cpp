@@ -71,10 +71,10 @@ bool Compiled::emit(const ex& e, const std::vector<ex>& inputs, std::string& pro
     return true;
   }
   if (is_a<function>(e) && e.nops() == 1) {
-    static const std::pair<const char*, Op> functions[] = {
-        {"sin", Op::sin},   {"cos", Op::cos},   {"tan", Op::tan},   {"exp", Op::exp},   {"log", Op::log},
-        {"abs", Op::abs},   {"asin", Op::asin}, {"acos", Op::acos}, {"atan", Op::atan}, {"sinh", Op::sinh},
-        {"cosh", Op::cosh}, {"tanh", Op::tanh}};
+    static const std::pair<const char*, Op> functions[] = {{"sin", Op::sin},   {"cos", Op::cos},   {"tan", Op::tan},
+                                                           {"exp", Op::exp},   {"log", Op::log},   {"abs", Op::abs},
+                                                           {"asin", Op::asin}, {"acos", Op::acos}, {"atan", Op::atan},
+                                                           {"sinh", Op::sinh}, {"cosh", Op::cosh}, {"tanh", Op::tanh}};
     const std::string name = ex_to<function>(e).get_name();
     for (const auto& [n, op] : functions)
       if (name == n) {

@@ -15,12 +15,33 @@ class Compiled {
  public:
   /// Compiles `e`, whose symbols must all be among `inputs`; nothing (with `problem` set)
   /// for a symbol that is not, or a function it cannot evaluate.
-  static std::optional<Compiled> compile(const GiNaC::ex& e, const std::vector<GiNaC::ex>& inputs, std::string& problem);
+  static std::optional<Compiled> compile(const GiNaC::ex& e, const std::vector<GiNaC::ex>& inputs,
+                                         std::string& problem);
   /// The value at `x` (one double per input, in order).
   [[nodiscard]] double operator()(const double* x) const;
 
  private:
-  enum class Op { constant, input, add, mul, pow_int, pow, sin, cos, tan, exp, log, abs, asin, acos, atan, sinh, cosh, tanh, sqrt };
+  enum class Op {
+    constant,
+    input,
+    add,
+    mul,
+    pow_int,
+    pow,
+    sin,
+    cos,
+    tan,
+    exp,
+    log,
+    abs,
+    asin,
+    acos,
+    atan,
+    sinh,
+    cosh,
+    tanh,
+    sqrt
+  };
   struct Instr {
     Op op;
     double value = 0;  // constant; pow_int: the exponent

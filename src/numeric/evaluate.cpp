@@ -118,7 +118,8 @@ RationalPoint rational_values(const exmap& values) {
 }
 
 std::optional<NumericValue> evaluate_at(const ex& e, const exmap& values, const RationalPoint& point, SumValues* sums,
-                                        std::optional<Dimension> dimension, int digits, const std::optional<Unit>& unit) {
+                                        std::optional<Dimension> dimension, int digits,
+                                        const std::optional<Unit>& unit) {
   // A closed form may be undefined at the given numbers (a denominator c - e with c = e):
   // no number then. The denominator is checked first, so that GiNaC does not throw from
   // inside a new object (found by fuzzing: exit 3 for a description with c = e).

@@ -29,7 +29,8 @@ exmap layout_numbers(const Model& m, const exmap& values, std::set<ex, ex_is_les
     if (s->definition && !out.count(s->sym))
       if (auto x = value_at(*s->definition, out)) out[s->sym] = *x;
   for (const auto& l : m.lengths)
-    if (auto sq = value_at(l.squared, out); sq && is_a<numeric>(*sq) && ex_to<numeric>(*sq) >= 0) out[l.symbol] = sqrt(*sq);
+    if (auto sq = value_at(l.squared, out); sq && is_a<numeric>(*sq) && ex_to<numeric>(*sq) >= 0)
+      out[l.symbol] = sqrt(*sq);
   return out;
 }
 
@@ -42,7 +43,9 @@ std::optional<double> real_at(const ex& e, const exmap& values) {
   return std::isfinite(d) ? std::optional<double>(d) : std::nullopt;
 }
 
-std::optional<std::array<double, 3>> point_at(const Model& m, const std::function<std::optional<double>(const ex&)>& number, const Vec& v) {
+std::optional<std::array<double, 3>> point_at(const Model& m,
+                                              const std::function<std::optional<double>(const ex&)>& number,
+                                              const Vec& v) {
   std::array<double, 3> p{0, 0, 0};
   for (int k = 0; k < m.dims(); ++k) {
     const auto x = number(v[k]);

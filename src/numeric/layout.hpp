@@ -26,7 +26,7 @@ namespace tackle {
 
 /// A point's coordinates by `number` (one per axis of `m`, the rest 0); none when one cannot be
 /// evaluated.
-[[nodiscard]] std::optional<std::array<double, 3>> point_at(const Model& m, const std::function<std::optional<double>(const GiNaC::ex&)>& number,
-                                                            const Vec& v);
+[[nodiscard]] std::optional<std::array<double, 3>> point_at(
+    const Model& m, const std::function<std::optional<double>(const GiNaC::ex&)>& number, const Vec& v);
 
 }  // namespace tackle

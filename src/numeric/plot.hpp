@@ -10,15 +10,15 @@ namespace tackle {
 
 struct SweepResult {
   std::string title;
-  std::string x_name, x_unit;       // the horizontal axis: "h" and "m", or "h/l" and ""
-  std::string x_latex;              // the same in LaTeX
+  std::string x_name, x_unit;  // the horizontal axis: "h" and "m", or "h/l" and ""
+  std::string x_latex;         // the same in LaTeX
   // When the axis is an expression (`against`): the varied parameter's own values too.
   std::string varied_name, varied_unit;
   std::vector<double> varied;
-  std::vector<std::string> names;   // one per plotted expression, as written
-  std::vector<std::string> latex;   // the same in LaTeX
-  std::string y_unit;               // when every curve has the same dimension
-  std::vector<std::string> units;   // each curve's SI unit ("" when it has none or it is unknown)
+  std::vector<std::string> names;  // one per plotted expression, as written
+  std::vector<std::string> latex;  // the same in LaTeX
+  std::string y_unit;              // when every curve has the same dimension
+  std::vector<std::string> units;  // each curve's SI unit ("" when it has none or it is unknown)
   std::vector<double> x;
   std::vector<std::vector<std::optional<double>>> y;  // [curve][point]
   std::vector<bool> valid;                            // every validity condition holds

@@ -45,7 +45,8 @@ Derivation explain(const Analysis& a, const ReportOptions& options) {
   if (!a.phases.empty()) throw InternalError("explain: a phased analysis is explained phase by phase (explain_phases)");
   // The answers with the report's digits: a stage of their own (solve/answers), narrated here.
   const Answers answers = answer(a.model, a.system, a.solution, options.digits);
-  Derivation d = explain(a.model, a.system, a.solution, answers, a.power, options, a.interval_end ? &*a.interval_end : nullptr);
+  Derivation d =
+      explain(a.model, a.system, a.solution, answers, a.power, options, a.interval_end ? &*a.interval_end : nullptr);
   if (!a.regimes.empty()) narrate_regimes(d, a.regimes, *a.model.symbols);
   if (a.impact) {
     narrate_impact(d, a.model, *a.impact, options);
@@ -56,7 +57,8 @@ Derivation explain(const Analysis& a, const ReportOptions& options) {
     d.motion->in_state.clear();
     d.motion->conditions_in_state.clear();  // pointers into the analysis' solution
     // The conditions for all t with their bounds' numbers, to the report's digits.
-    for (auto& c : d.motion->conditions) number_bounds(c.solved, *a.model.symbols, options.digits, a.motion->definitions);
+    for (auto& c : d.motion->conditions)
+      number_bounds(c.solved, *a.model.symbols, options.digits, a.motion->definitions);
     if (options.narrate) narrate_motion(d, a.model, *d.motion, options);
     if (a.model.motion->until && options.narrate) {
       // A figure, not a command: a second of computing at most (a hostile 'until' must not
@@ -68,11 +70,13 @@ Derivation explain(const Analysis& a, const ReportOptions& options) {
       d.motion_events.push_back("Integrated to t = " + decimal_string(GiNaC::numeric(run.reached), 6) + " s (" +
                                 std::to_string(run.steps) + " steps, Dormand-Prince 5(4)).");
       for (const auto& e : run.events)
-        d.motion_events.push_back("At t = " + decimal_string(GiNaC::numeric(e.t), 6) + " s: " + e.what + (e.ends ? "; the run ends." : "."));
+        d.motion_events.push_back("At t = " + decimal_string(GiNaC::numeric(e.t), 6) + " s: " + e.what +
+                                  (e.ends ? "; the run ends." : "."));
       if (!run.stopped.empty() && run.events.empty()) d.motion_events.push_back("Stopped: " + run.stopped + ".");
     }
   }
-  if (a.model.sweep && options.narrate) d.sweep_plot = run_sweep(a.model, d, sweep_spec(*a.model.sweep), a.model.sweep->at);
+  if (a.model.sweep && options.narrate)
+    d.sweep_plot = run_sweep(a.model, d, sweep_spec(*a.model.sweep), a.model.sweep->at);
   return d;
 }
 

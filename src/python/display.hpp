@@ -36,7 +36,9 @@ void add_display(py::module_& m) {
   problem
       .def(
           "_repr_html_",
-          [](const Problem& p) { return notebook_html(p.derivation(), p.model(), fragment_id(), NotebookView::problem); },
+          [](const Problem& p) {
+            return notebook_html(p.derivation(), p.model(), fragment_id(), NotebookView::problem);
+          },
           "The problem as HTML for a notebook: title, statement, sketch, answers, and the derivation folded")
       .def(
           "_repr_latex_",
@@ -52,9 +54,12 @@ void add_display(py::module_& m) {
           },
           py::arg("view") = "problem")
       .def(
-          "_notebook_latex", [](const Problem& p, bool full) { return notebook_latex(p.derivation(), full); }, py::arg("full") = true)
+          "_notebook_latex", [](const Problem& p, bool full) { return notebook_latex(p.derivation(), full); },
+          py::arg("full") = true)
       .def("_names_latex", [](const Problem& p) { return names_latex(p.derivation()); });
-  m.def("_unit_latex", [](const std::string& unit) { return unit_latex(unit); }, py::arg("unit"), "A unit as LaTeX (m/s^2: \\mathrm{m/s^{2}})");
+  m.def(
+      "_unit_latex", [](const std::string& unit) { return unit_latex(unit); }, py::arg("unit"),
+      "A unit as LaTeX (m/s^2: \\mathrm{m/s^{2}})");
   run_display_py(m);
 }
 

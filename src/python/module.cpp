@@ -37,7 +37,8 @@ std::string module_rules_dir() {
   if (dladdr(reinterpret_cast<void*>(&module_rules_dir), &info) && info.dli_fname) {
     std::error_code ec;
     const auto installed =
-        std::filesystem::path(info.dli_fname).parent_path().parent_path().parent_path().parent_path() / "share/tackle/rules";
+        std::filesystem::path(info.dli_fname).parent_path().parent_path().parent_path().parent_path() /
+        "share/tackle/rules";
     if (std::filesystem::is_directory(installed, ec)) return installed.lexically_normal().string();
   }
   return tackle::default_rules_dir();
@@ -70,7 +71,8 @@ class Problem {
     const auto f = tackle::format_named(format);
     if (!f) {
       const auto names = tackle::format_names();
-      throw py::value_error("format '" + format + "' (expected " + tackle::join({names.begin(), names.end() - 1}) + " or " + names.back() + ")");
+      throw py::value_error("format '" + format + "' (expected " + tackle::join({names.begin(), names.end() - 1}) +
+                            " or " + names.back() + ")");
     }
     return tackle::write(derivation_, *f, full);
   }
@@ -96,14 +98,18 @@ class Problem {
     const auto drawn = tackle::draw_variants(analysis_->model, derivation_, 1, seed, digits);
     if (drawn.empty()) return py::none();
     py::dict parameters, answers;
-    for (const auto& q : drawn[0].parameters) parameters[py::str(q.name)] = py::dict(py::arg("value") = q.value, py::arg("unit") = q.unit, py::arg("text") = q.text());
-    for (const auto& q : drawn[0].answers) answers[py::str(q.name)] = py::dict(py::arg("value") = q.value, py::arg("unit") = q.unit, py::arg("text") = q.text());
+    for (const auto& q : drawn[0].parameters)
+      parameters[py::str(q.name)] =
+          py::dict(py::arg("value") = q.value, py::arg("unit") = q.unit, py::arg("text") = q.text());
+    for (const auto& q : drawn[0].answers)
+      answers[py::str(q.name)] =
+          py::dict(py::arg("value") = q.value, py::arg("unit") = q.unit, py::arg("text") = q.text());
     return py::dict(py::arg("parameters") = parameters, py::arg("answers") = answers);
   }
 
   // One answer; `params`: the student's own numbers ({"F": 120}, in the stated units).
-  [[nodiscard]] py::dict check(const std::string& unknown, const std::string& answer, const py::dict& params, double tolerance,
-                               bool reveal) const {
+  [[nodiscard]] py::dict check(const std::string& unknown, const std::string& answer, const py::dict& params,
+                               double tolerance, bool reveal) const {
     const auto set = settings(params);  // (Python's str() of each: before a checker is taken)
     const auto checker = checker_for(tolerance, reveal);
     std::optional<GiNaC::exmap> values;
@@ -114,30 +120,36 @@ class Problem {
     }
     const tackle::CheckResult r = checker->check(unknown, answer, values ? &*values : nullptr);
     py::list findings;
-    for (const auto& f : r.findings) findings.append(py::dict(py::arg("code") = f.code, py::arg("message") = f.message));
-    return py::dict(py::arg("unknown") = r.unknown, py::arg("verdict") = tackle::verdict_name(r.verdict), py::arg("score") = r.score,
-                    py::arg("summary") = r.summary, py::arg("findings") = findings, py::arg("method") = r.method,
-                    py::arg("read_as") = r.echo_text, py::arg("latex") = r.echo_latex);
+    for (const auto& f : r.findings)
+      findings.append(py::dict(py::arg("code") = f.code, py::arg("message") = f.message));
+    return py::dict(py::arg("unknown") = r.unknown, py::arg("verdict") = tackle::verdict_name(r.verdict),
+                    py::arg("score") = r.score, py::arg("summary") = r.summary, py::arg("findings") = findings,
+                    py::arg("method") = r.method, py::arg("read_as") = r.echo_text, py::arg("latex") = r.echo_latex);
   }
 
   // One equation a student wrote: is it one of the derivation's, or does it follow from them?
   [[nodiscard]] py::dict check_equation(const std::string& equation) const {
     const tackle::CheckResult r = checker_for(0.01, false)->check_equation(equation);
     py::list findings, identified, follows;
-    for (const auto& f : r.findings) findings.append(py::dict(py::arg("code") = f.code, py::arg("message") = f.message));
+    for (const auto& f : r.findings)
+      findings.append(py::dict(py::arg("code") = f.code, py::arg("message") = f.message));
     for (const auto& n : r.identified_as) identified.append(n);
     for (const auto& n : r.follows_from) follows.append(n);
-    return py::dict(py::arg("verdict") = tackle::verdict_name(r.verdict), py::arg("score") = r.score, py::arg("summary") = r.summary,
-                    py::arg("findings") = findings, py::arg("method") = r.method, py::arg("read_as") = r.echo_text,
-                    py::arg("latex") = r.echo_latex, py::arg("identified_as") = identified, py::arg("follows_from") = follows);
+    return py::dict(py::arg("verdict") = tackle::verdict_name(r.verdict), py::arg("score") = r.score,
+                    py::arg("summary") = r.summary, py::arg("findings") = findings, py::arg("method") = r.method,
+                    py::arg("read_as") = r.echo_text, py::arg("latex") = r.echo_latex,
+                    py::arg("identified_as") = identified, py::arg("follows_from") = follows);
   }
 
   // A free body diagram the student drew: the YAML (or JSON) of `tackle check --fbd`, or a
   // dict of the same; the grade as `--fbd --format json` gives it, as a dict.
   [[nodiscard]] py::object check_fbd(const py::object& fbd, const std::string& rubric) const {
-    const std::string text = py::isinstance<py::str>(fbd) ? fbd.cast<std::string>() : py::module_::import("json").attr("dumps")(fbd).cast<std::string>();
+    const std::string text = py::isinstance<py::str>(fbd)
+                                 ? fbd.cast<std::string>()
+                                 : py::module_::import("json").attr("dumps")(fbd).cast<std::string>();
     const tackle::StudentFbd student = tackle::read_fbd_file(text, "fbd", analysis_->model);
-    const tackle::Rubric r = rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(rubric, "rubric", analysis_->model);
+    const tackle::Rubric r =
+        rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(rubric, "rubric", analysis_->model);
     std::vector<tackle::Diagnostic> problems;
     const tackle::FbdGrade g = tackle::check_fbd(analysis_->model, student, r.fbd, problems);
     if (!problems.empty()) throw tackle::InputError(problems);
@@ -148,35 +160,47 @@ class Problem {
   // grade as `--steps --format json` gives it, as a dict, and the platform's results file.
   // A time_limit (seconds, 0: none): a step not begun within it is not checked (undecided,
   // code time_limit; see grade_solution).
-  [[nodiscard]] py::tuple check_solution(const std::string& solution, const std::string& rubric, const std::string& results_format,
-                                         double time_limit) const {
-    if (!(time_limit >= 0 && time_limit <= 86400)) throw py::value_error("time_limit must be from 0 to 86400 seconds (0: none)");
+  [[nodiscard]] py::tuple check_solution(const std::string& solution, const std::string& rubric,
+                                         const std::string& results_format, double time_limit) const {
+    if (!(time_limit >= 0 && time_limit <= 86400))
+      throw py::value_error("time_limit must be from 0 to 86400 seconds (0: none)");
     std::optional<std::chrono::steady_clock::time_point> deadline;
     if (time_limit > 0)
-      deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(time_limit));
+      deadline = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                        std::chrono::duration<double>(time_limit));
     const auto checker = checker_for(0.01, false);
     tackle::ResultsFormat format = tackle::ResultsFormat::gradescope;
-    if (results_format == "prairielearn") format = tackle::ResultsFormat::prairielearn;
-    else if (results_format != "gradescope") throw py::value_error("results_format '" + results_format + "' (expected gradescope or prairielearn)");
+    if (results_format == "prairielearn")
+      format = tackle::ResultsFormat::prairielearn;
+    else if (results_format != "gradescope")
+      throw py::value_error("results_format '" + results_format + "' (expected gradescope or prairielearn)");
     const auto steps = tackle::read_solution(solution, "solution", analysis_->model);
-    const tackle::Rubric r = rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(rubric, "rubric", analysis_->model);
+    const tackle::Rubric r =
+        rubric.empty() ? tackle::Rubric{} : tackle::read_rubric(rubric, "rubric", analysis_->model);
     const tackle::SolutionGrade g = tackle::grade_solution(*checker, analysis_->model, steps, r, deadline);
-    return py::make_tuple(py::module_::import("json").attr("loads")(tackle::solution_json(g)), tackle::solution_results(g, format));
+    return py::make_tuple(py::module_::import("json").attr("loads")(tackle::solution_json(g)),
+                          tackle::solution_results(g, format));
   }
 
   // The page to try the step checker (`tackle page`): its form posts to `endpoint` (a path or an
   // http(s) URL; empty: the page's own location). ValueError for an endpoint it cannot use.
-  [[nodiscard]] std::string page(const std::string& endpoint) const { return tackle::step_page(derivation_, analysis_->model, endpoint); }
+  [[nodiscard]] std::string page(const std::string& endpoint) const {
+    return tackle::step_page(derivation_, analysis_->model, endpoint);
+  }
 
   // JSON Lines in; (the results a line, the platform's results file) out.
   [[nodiscard]] py::tuple check_batch(const std::string& lines, const std::string& results_format, double points,
                                       const py::dict& params, double tolerance, bool reveal) const {
     const auto checker = checker_for(tolerance, reveal);
     tackle::GradeOptions grade;
-    if (results_format == "gradescope") grade.format = tackle::ResultsFormat::gradescope;
-    else if (results_format == "prairielearn") grade.format = tackle::ResultsFormat::prairielearn;
-    else if (results_format == "jsonl") grade.format = tackle::ResultsFormat::jsonl;
-    else throw py::value_error("results_format '" + results_format + "' (expected gradescope, prairielearn or jsonl)");
+    if (results_format == "gradescope")
+      grade.format = tackle::ResultsFormat::gradescope;
+    else if (results_format == "prairielearn")
+      grade.format = tackle::ResultsFormat::prairielearn;
+    else if (results_format == "jsonl")
+      grade.format = tackle::ResultsFormat::jsonl;
+    else
+      throw py::value_error("results_format '" + results_format + "' (expected gradescope, prairielearn or jsonl)");
     grade.points = points;
     grade.set = settings(params);
     grade.model = &analysis_->model;
@@ -237,8 +261,8 @@ PYBIND11_MODULE(tackle, m) {
     }
   });
   py::class_<Problem>(m, "Problem", "A problem description (YAML), analyzed: derivation, answers, variants, checks")
-      .def(py::init<const std::string&, const std::string&, const std::string&>(), py::arg("path"), py::arg("phase") = "",
-           py::arg("rules") = "")
+      .def(py::init<const std::string&, const std::string&, const std::string&>(), py::arg("path"),
+           py::arg("phase") = "", py::arg("rules") = "")
       .def_property_readonly("title", &Problem::title)
       .def("derive", &Problem::derive, py::arg("format") = "text", py::arg("full") = true,
            "The derivation (full) or the answers only, as text, latex, markdown or json")
@@ -246,22 +270,24 @@ PYBIND11_MODULE(tackle, m) {
       .def("variant", &Problem::variant, py::arg("seed"), py::arg("digits") = 6,
            "Parameters drawn from their ranges and the answers there, or None without ranges")
       .def("check", &Problem::check, py::arg("unknown"), py::arg("answer"), py::arg("params") = py::dict(),
-           py::arg("tolerance") = 0.01, py::arg("reveal") = false, "Check one answer: verdict, score, summary, findings")
+           py::arg("tolerance") = 0.01, py::arg("reveal") = false,
+           "Check one answer: verdict, score, summary, findings")
       .def("check_equation", &Problem::check_equation, py::arg("equation"),
            "Check an equation the student wrote: verdict, score, summary, findings, identified_as, follows_from")
       .def("check_fbd", &Problem::check_fbd, py::arg("fbd"), py::arg("rubric") = "",
            "Check a free body diagram the student drew (YAML/JSON text or a dict: body, forces, couples): "
            "verdict, summary, each force's status, extras, findings, score")
-      .def("check_solution", &Problem::check_solution, py::arg("solution"), py::arg("rubric") = "", py::arg("results_format") = "gradescope",
-           py::arg("time_limit") = 0.0,
-           "Grade a worked solution (YAML: steps of fbd, equation and answer): (the grade as a dict, the platform's results file); "
+      .def("check_solution", &Problem::check_solution, py::arg("solution"), py::arg("rubric") = "",
+           py::arg("results_format") = "gradescope", py::arg("time_limit") = 0.0,
+           "Grade a worked solution (YAML: steps of fbd, equation and answer): (the grade as a dict, the platform's "
+           "results file); "
            "with a time_limit (seconds), steps not begun within it are undecided (time_limit)")
       .def("page", &Problem::page, py::arg("endpoint") = "",
            "A self-contained HTML page: the problem and a worked-solution form whose steps it posts to "
            "{endpoint}/step and {endpoint}/solution (the page's own location by default)")
       .def("check_batch", &Problem::check_batch, py::arg("lines"), py::arg("results_format") = "gradescope",
-           py::arg("points") = 1.0, py::arg("params") = py::dict(), py::arg("tolerance") = 0.01, py::arg("reveal") = false,
-           "Check JSON Lines of answers: (results a line, the platform's results file)");
+           py::arg("points") = 1.0, py::arg("params") = py::dict(), py::arg("tolerance") = 0.01,
+           py::arg("reveal") = false, "Check JSON Lines of answers: (results a line, the platform's results file)");
   // Rich display in notebooks: Problem's HTML and LaTeX, results that show themselves.
   tackle::python::add_display<Problem>(m);
 }

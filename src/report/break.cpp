@@ -68,9 +68,12 @@ std::vector<std::size_t> top_level_operators(std::string_view s) {
       if ((name == "left" || name == "right") && i + 1 < s.size()) ++i;  // its delimiter
       continue;
     }
-    if (s[i] == '{') ++depth;
-    else if (s[i] == '}') --depth;
-    else if (depth == 0 && i > 0 && s[i] == ' ' && i + 2 < s.size() && (s[i + 1] == '+' || s[i + 1] == '-') && s[i + 2] == ' ')
+    if (s[i] == '{')
+      ++depth;
+    else if (s[i] == '}')
+      --depth;
+    else if (depth == 0 && i > 0 && s[i] == ' ' && i + 2 < s.size() && (s[i + 1] == '+' || s[i + 1] == '-') &&
+             s[i + 2] == ' ')
       out.push_back(i);
   }
   return out;
@@ -99,7 +102,8 @@ std::optional<std::pair<std::string, std::string>> whole_fraction(const std::str
 }
 
 // Terms packed into lines of about `width`: `head` before the first, `tail` after the last.
-std::vector<std::string> pack(const std::vector<std::string>& terms, double width, const std::string& head, const std::string& tail) {
+std::vector<std::string> pack(const std::vector<std::string>& terms, double width, const std::string& head,
+                              const std::string& tail) {
   std::vector<std::string> lines;
   std::string line = head;
   for (std::size_t k = 0; k < terms.size(); ++k) {
@@ -108,7 +112,8 @@ std::vector<std::string> pack(const std::vector<std::string>& terms, double widt
       // A term too long for a line of its own (a long fraction): broken itself, its
       // operator in front of its first line.
       std::string op, body = term;
-      if (k > 0 && body.size() > 2 && (body[0] == '+' || body[0] == '-') && body[1] == ' ') op = body.substr(0, 2), body = body.substr(2);
+      if (k > 0 && body.size() > 2 && (body[0] == '+' || body[0] == '-') && body[1] == ' ')
+        op = body.substr(0, 2), body = body.substr(2);
       auto parts = break_tex(body, width);
       if (parts.size() > 1) {
         if (!line.empty() && line != head) lines.push_back(line);
@@ -146,10 +151,14 @@ double tex_width(std::string_view s) {
       } else if (name == "mathrm" || name == "text" || name == "operatorname" || name == "mathit" || name == "dot" ||
                  name == "ddot" || name == "boxed" || name == "mathbf") {
         w += tex_width(argument(s, i));
-      } else if (name == "left" || name == "right" || name == "bigl" || name == "bigr" || name == "Bigl" || name == "Bigr") {
-        if (i < s.size() && s[i] == '.') ++i, w -= 1;
-        else if (i < s.size() && s[i] == '\\') i += command_at(s, i + 1).size() + 1;
-        else ++i;
+      } else if (name == "left" || name == "right" || name == "bigl" || name == "bigr" || name == "Bigl" ||
+                 name == "Bigr") {
+        if (i < s.size() && s[i] == '.')
+          ++i, w -= 1;
+        else if (i < s.size() && s[i] == '\\')
+          i += command_at(s, i + 1).size() + 1;
+        else
+          ++i;
         w += 1;
       } else if (name == "," || name == ";" || name == "!" || name == " ") {
         w += 0.3;
@@ -234,7 +243,8 @@ namespace {
 // `s` broken inside its longest top-level \left( ... \right) group (a product with a long
 // sum in it): `head` and the part before the group on the first line, the part after it and
 // `tail` on the last. Nothing when it has no such group with a sum inside.
-std::vector<std::string> broken_in_group(const std::string& s, double width, const std::string& head, const std::string& tail) {
+std::vector<std::string> broken_in_group(const std::string& s, double width, const std::string& head,
+                                         const std::string& tail) {
   std::size_t best_open = std::string::npos, best_close = 0, best_length = 0;
   int depth = 0;
   std::vector<std::size_t> opens;

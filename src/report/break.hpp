@@ -23,8 +23,8 @@ namespace tackle {
 /// `lhs rel rhs tail` in display lines of about `width` characters: one line, as it is, when
 /// it fits or cannot be broken; else rows aligned with `&` as break_tex breaks (a long left
 /// side too, the relation then after it), `tail` (a number, a unit) at the end of the last.
-[[nodiscard]] std::vector<std::string> displayed_lines(const std::string& lhs, const std::string& rel, const std::string& rhs,
-                                                       const std::string& tail, double width);
+[[nodiscard]] std::vector<std::string> displayed_lines(const std::string& lhs, const std::string& rel,
+                                                       const std::string& rhs, const std::string& tail, double width);
 
 /// The same as one formula: the line, or the rows in an `aligned` block (KaTeX, HTML).
 [[nodiscard]] std::string displayed(const std::string& lhs, const std::string& rel, const std::string& rhs,

@@ -52,8 +52,8 @@ std::string sign_words(const std::string& op, bool holds) {
 
 }  // namespace
 
-void narrate_always(Narrator& n, const std::string& lead, const ex& shown, const ex& expr, const std::string& op, bool holds,
-                    const std::string& otherwise) {
+void narrate_always(Narrator& n, const std::string& lead, const ex& shown, const ex& expr, const std::string& op,
+                    bool holds, const std::string& otherwise) {
   // In the order the description names them (g, m_1, ..., m_33).
   const auto found = distinct_symbols(expr);
   const std::unordered_set<ex, ExHash, ex_is_equal> present(found.begin(), found.end());
@@ -75,7 +75,8 @@ void narrate_always(Narrator& n, const std::string& lead, const ex& shown, const
   math.insert(math.end(), listed.begin(), listed.end());
   const std::string outcome = names.empty() ? (holds ? "always holds" : "never holds")
                                             : std::string(holds ? "holds" : "fails") + " for every value of " + list;
-  n.text_with(lead + sign_words(op, holds) + ": this " + outcome + (holds ? "." : ": " + otherwise + "."), std::move(math));
+  n.text_with(lead + sign_words(op, holds) + ": this " + outcome + (holds ? "." : ": " + otherwise + "."),
+              std::move(math));
 }
 
 void narrate_solved(Narrator& n, const SolvedFor& form, std::string label, std::vector<ex> math) {
@@ -91,7 +92,9 @@ void narrate_solved(Narrator& n, const SolvedFor& form, std::string label, std::
   const ex p = is_a<power>(form.parameter) ? form.parameter.op(0) : form.parameter;
   const std::string where = b.value.approx < 0 ? "below 0" : "0";
   if (b.every_value)
-    n.text_with("The bound is " + where + ", so every value of {} down to 0 satisfies it: nothing is asked of it from below.", {p});
+    n.text_with(
+        "The bound is " + where + ", so every value of {} down to 0 satisfies it: nothing is asked of it from below.",
+        {p});
   else if (b.no_value)
     n.text_with("The bound is " + where + ", so no value of {} satisfies it.", {p});
 }
@@ -107,18 +110,21 @@ void narrate_condition(Narrator& n, const ConditionReport& r, const std::functio
   } else {
     Step* closed = n.equation("closed form", named(r.simplified), 0);
     closed->relation = r.op;
-    if (!r.solved.empty() && !(r.solved.size() == 1 && r.solved[0].bound.is_zero() && r.simplified.is_equal(r.solved[0].parameter))) {
+    if (!r.solved.empty() &&
+        !(r.solved.size() == 1 && r.solved[0].bound.is_zero() && r.simplified.is_equal(r.solved[0].parameter))) {
       n.text(r.solved.size() == 1 ? "It holds exactly when:" : "It holds exactly when (each form is equivalent):");
       for (const auto& sv : r.solved) {
         const bool provided = !sv.provided.is_zero();
         std::vector<ex> math{sv.parameter};
         if (provided) math.push_back(sv.provided);
-        narrate_solved(n, sv, provided ? "solved for {}, while {} > 0 (as at the given numbers)" : "solved for {}", std::move(math));
+        narrate_solved(n, sv, provided ? "solved for {}, while {} > 0 (as at the given numbers)" : "solved for {}",
+                       std::move(math));
       }
     }
   }
   if (r.holds)
-    n.text(*r.holds ? "This holds for the given numbers." : "This is VIOLATED for the given numbers: " + r.otherwise + ".");
+    n.text(*r.holds ? "This holds for the given numbers."
+                    : "This is VIOLATED for the given numbers: " + r.otherwise + ".");
   else if (r.depends_on_free)
     n.text("This depends on an unknown the equations do not determine.");
 }
@@ -155,7 +161,8 @@ void narrate_ranges(Narrator& n, const std::vector<ParameterRange>& ranges) {
   for (const auto& r : ranges) {
     const std::string given = r.given ? " (given: " + with_unit(r.given) + ")" : "";
     if (r.empty)
-      n.step(Step::Kind::bullet, "no value of {}: it would need {}" + given)->math = {r.parameter, range_math(r, n.table)};
+      n.step(Step::Kind::bullet, "no value of {}: it would need {}" + given)->math = {r.parameter,
+                                                                                      range_math(r, n.table)};
     else if (!r.low && !r.high)
       n.step(Step::Kind::bullet, "every value of {}" + given)->math = {r.parameter};
     else
@@ -165,8 +172,8 @@ void narrate_ranges(Narrator& n, const std::vector<ParameterRange>& ranges) {
 
 }  // namespace
 
-void narrate_validity(Narrator& n, const std::vector<ConditionReport>& conditions, const std::vector<ParameterRange>& ranges,
-                      const std::function<ex(const ex&)>& named) {
+void narrate_validity(Narrator& n, const std::vector<ConditionReport>& conditions,
+                      const std::vector<ParameterRange>& ranges, const std::function<ex(const ex&)>& named) {
   if (conditions.empty()) return;
   n.section("Validity");
   for (const auto& r : conditions) narrate_condition(n, r, named);

@@ -63,7 +63,8 @@ std::optional<std::pair<ex, ex>> shared_sum(const std::vector<Answer>& answers, 
   }
   std::optional<ex> best;
   for (const auto& [sum, n] : count)
-    if (n >= 2 && (!best || sum.nops() > best->nops() || (sum.nops() == best->nops() && to_text(sum) < to_text(*best)))) best = sum;
+    if (n >= 2 && (!best || sum.nops() > best->nops() || (sum.nops() == best->nops() && to_text(sum) < to_text(*best))))
+      best = sum;
   if (!best) return std::nullopt;
   std::string problem;
   const auto dim = dimension_of(*best, table, problem);
@@ -75,8 +76,8 @@ std::optional<std::pair<ex, ex>> shared_sum(const std::vector<Answer>& answers, 
 
 }  // namespace
 
-Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol, const Answers& ans, const PowerCheck& power_check,
-                   const ReportOptions& options, const IntervalEnd* end) {
+Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol, const Answers& ans,
+                   const PowerCheck& power_check, const ReportOptions& options, const IntervalEnd* end) {
   Derivation d;
   d.title = m.title;
   d.file = m.file;
@@ -123,8 +124,10 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     };
     for (const auto& c : m.connections) {
       auto it = std::find_if(kinds.begin(), kinds.end(), [&](const Kind& k) { return same(*k.note, c); });
-      if (it == kinds.end()) kinds.push_back({{c.label}, &c});
-      else it->labels.push_back(c.label);
+      if (it == kinds.end())
+        kinds.push_back({{c.label}, &c});
+      else
+        it->labels.push_back(c.label);
     }
     for (const auto& [labels, note] : kinds) {
       std::string who;
@@ -142,10 +145,14 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       ParameterReport pr;
       pr.name = sym->name;
       pr.tex = sym->tex;
-      pr.kind = sym->role != SymbolRole::parameter ? "given" : sym->geometric ? "length" : sym->definition ? "defined" : "parameter";
+      pr.kind = sym->role != SymbolRole::parameter ? "given"
+                : sym->geometric                   ? "length"
+                : sym->definition                  ? "defined"
+                                                   : "parameter";
       pr.si = evaluate(sym->sym, table, sym->dimension, options.digits);
       if (!sym->unit.empty() && sym->dimension && !sym->unit_to_si.is_equal(1))
-        pr.stated = evaluate(sym->sym, table, sym->dimension, options.digits, Unit{sym->unit_to_si, *sym->dimension, sym->unit});
+        pr.stated = evaluate(sym->sym, table, sym->dimension, options.digits,
+                             Unit{sym->unit_to_si, *sym->dimension, sym->unit});
       pr.definition = sym->definition;
       d.parameters.push_back(std::move(pr));
     }
@@ -155,7 +162,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
       Step* st = step(Step::Kind::equation, sym->role == SymbolRole::parameter ? "definition" : "given");
       st->lhs = sym->sym;
       st->rhs = *sym->definition;
-      if (auto v = evaluate(sym->sym, table, sym->dimension)) st->note = v->decimal + (v->unit.empty() ? "" : " " + v->unit);
+      if (auto v = evaluate(sym->sym, table, sym->dimension))
+        st->note = v->decimal + (v->unit.empty() ? "" : " " + v->unit);
       continue;
     }
     // A parameter is shown in the unit it was stated in (30 deg, 3000 lbm).
@@ -182,9 +190,10 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   if (m.steady) {
     const SteadySpec& sp = *m.steady;
     const ex rate = table.find(sp.rate)->sym, period = table.find(sp.period)->sym;
-    step(Step::Kind::bullet, "Steady motion at an unknown rate {}: the balances are linear in {}, an unknown solved for "
-                             "with the others; the rate is its root (the balances fix its size, not its sense), and the "
-                             "period follows from it:")
+    step(Step::Kind::bullet,
+         "Steady motion at an unknown rate {}: the balances are linear in {}, an unknown solved for "
+         "with the others; the rate is its root (the balances fix its size, not its sense), and the "
+         "period follows from it:")
         ->math = {rate, sp.squared};
     equation("steady rate", rate, sqrt(sp.squared));
     equation("period", period, 2 * Pi / rate);
@@ -228,7 +237,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     for (const auto& c : s.constraints) {
       text("The " + c.meaning + " is constant in time.");
       // "length of string s", not "string s: length of string s".
-      const bool named = c.meaning.size() >= c.label.size() && c.meaning.compare(c.meaning.size() - c.label.size(), c.label.size(), c.label) == 0;
+      const bool named = c.meaning.size() >= c.label.size() &&
+                         c.meaning.compare(c.meaning.size() - c.label.size(), c.label.size(), c.label) == 0;
       Step* st = equation(named ? c.meaning : c.label + ": " + c.meaning, c.quantity, c.constant);
       st->equals_constant = c.constant.is_zero();
       equation(c.label + ": rate", 0, c.rate);
@@ -237,10 +247,14 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   }
 
   if (m.interval) {
-    section(m.interval->duration ? "Over the interval: impulse and momentum" : "Over the interval: constant acceleration");
-    const bool any = std::any_of(s.equations.begin(), s.equations.end(), [](const Equation& e) { return e.kind == Equation::Kind::interval; });
-    text("The forces are taken constant over the interval (their averages), so each acceleration is constant and each "
-         "rate changes linearly" + std::string(any ? ":" : "; the rates at its end follow from the solved accelerations (below)."));
+    section(m.interval->duration ? "Over the interval: impulse and momentum"
+                                 : "Over the interval: constant acceleration");
+    const bool any = std::any_of(s.equations.begin(), s.equations.end(),
+                                 [](const Equation& e) { return e.kind == Equation::Kind::interval; });
+    text(
+        "The forces are taken constant over the interval (their averages), so each acceleration is constant and each "
+        "rate changes linearly" +
+        std::string(any ? ":" : "; the rates at its end follow from the solved accelerations (below)."));
     for (const auto& eq : s.equations)
       if (eq.kind == Equation::Kind::interval) {
         text(eq.sources.front() + ".");
@@ -249,7 +263,9 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   }
 
   section("Solving");
-  auto count = [](std::size_t n, const std::string& word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); };
+  auto count = [](std::size_t n, const std::string& word) {
+    return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+  };
   {
     const auto [names, shown] = listed(s.unknowns);
     text_with(count(s.equations.size(), "equation") + " in " + count(s.unknowns.size(), "unknown") + " (" + names +
@@ -274,7 +290,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
     }
     if (!identical.empty()) {
       std::vector<std::string> items;
-      for (const auto& [base, axes] : identical) items.push_back(axes.empty() ? base : base + " (" + join(axes, ", ") + ")");
+      for (const auto& [base, axes] : identical)
+        items.push_back(axes.empty() ? base : base + " (" + join(axes, ", ") + ")");
       text(items.size() == 1 && identical[0].second.size() <= 1
                ? "Redundant: " + items[0] + " holds identically (it reads 0 = 0)."
                : "Redundant, each holds identically (it reads 0 = 0): " + join(items, "; ") + ".");
@@ -286,33 +303,35 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
   if (!sol.unsolved.empty()) {
     d.status = "not_solved";
     text("They are not solved here: " + sol.unsolved + ".");
-  } else switch (sol.status) {
-    case Solution::Status::determined: {
-      d.status = "determined";
-      // The status of each quantity is said once: where an answer asked for still needs a
-      // quantity no equation gives, the line does not claim more than the solve found.
-      const bool every_answer = std::none_of(ans.answers.begin(), ans.answers.end(), [](const Answer& a) {
-        return a.status == Answer::Status::undetermined || a.status == Answer::Status::not_in_equations;
-      });
-      text(every_answer ? "Every unknown is determined."
-                        : "Every unknown of these equations is determined; an answer below that needs a quantity they do not "
-                          "give says which.");
-      break;
-    }
-    case Solution::Status::underdetermined:
-      d.status = "underdetermined";
-      {
-        const auto [names, shown] = listed(sol.free);
-        text_with("Not every unknown is determined; free: " + names + ".", shown);
+  } else
+    switch (sol.status) {
+      case Solution::Status::determined: {
+        d.status = "determined";
+        // The status of each quantity is said once: where an answer asked for still needs a
+        // quantity no equation gives, the line does not claim more than the solve found.
+        const bool every_answer = std::none_of(ans.answers.begin(), ans.answers.end(), [](const Answer& a) {
+          return a.status == Answer::Status::undetermined || a.status == Answer::Status::not_in_equations;
+        });
+        text(every_answer
+                 ? "Every unknown is determined."
+                 : "Every unknown of these equations is determined; an answer below that needs a quantity they do not "
+                   "give says which.");
+        break;
       }
-      break;
-    case Solution::Status::inconsistent:
-      d.status = "inconsistent";
-      text("The equations are inconsistent: " + join(sol.conflicts, ", ") +
-           (sol.conflicts.size() == 1 ? " cannot hold (the other equations give its terms values that contradict it)."
-                                      : " contradict each other."));
-      break;
-  }
+      case Solution::Status::underdetermined:
+        d.status = "underdetermined";
+        {
+          const auto [names, shown] = listed(sol.free);
+          text_with("Not every unknown is determined; free: " + names + ".", shown);
+        }
+        break;
+      case Solution::Status::inconsistent:
+        d.status = "inconsistent";
+        text("The equations are inconsistent: " + join(sol.conflicts, ", ") +
+             (sol.conflicts.size() == 1 ? " cannot hold (the other equations give its terms values that contradict it)."
+                                        : " contradict each other."));
+        break;
+    }
   // Velocity and position questions: the rate (length) equations solved on their own.
   for (const auto& [level, equations, what] :
        {std::tuple{sol.rates.get(), &s.rate_equations, "Velocities: the constraints differentiated once, "},
@@ -359,7 +378,8 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
           zeros += (zeros.empty() ? "" : ", ") + std::string("{} = 0");
           math.push_back(z);
         }
-        text_with("{} is not determined: its definition divides by zero" + (zeros.empty() ? "" : " (" + zeros + " here)") + ".",
+        text_with("{} is not determined: its definition divides by zero" +
+                      (zeros.empty() ? "" : " (" + zeros + " here)") + ".",
                   math);
       } else if (a.status == Answer::Status::undetermined) {
         std::vector<ex> math{a.symbol};
@@ -405,25 +425,28 @@ Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol,
              : "The power balance is not checked: " + d.power.reason + ".");
   } else {
     section("Check: power balance");
-    text("The rate of change of the kinetic energy equals the power of the forces; the constraint forces do no "
-         "work.");
+    text(
+        "The rate of change of the kinetic energy equals the power of the forces; the constraint forces do no "
+        "work.");
     const symbol kinetic("dot(E_k)", "\\dot{E}_{k}"), power("P", "P");
     equation("kinetic energy: rate of change", kinetic, d.power.kinetic_rate);
     equation("power of the forces", power, d.power.power);
     if (!d.power.speeds.empty()) {
       std::string names;
       for (std::size_t k = 0; k < d.power.speeds.size(); ++k) names += (k ? ", " : "") + std::string("{}");
-      text_with("(" + names + (d.power.speeds.size() == 1 ? " is a speed" : " are speeds") +
-                    " along the line of motion.)",
-                d.power.speeds);
+      text_with(
+          "(" + names + (d.power.speeds.size() == 1 ? " is a speed" : " are speeds") + " along the line of motion.)",
+          d.power.speeds);
     }
     if (d.power.status == PowerCheck::Status::holds)
-      text("With the solved accelerations and forces, and the velocities the constraints allow, the two are equal: "
-           "the power balance holds.");
+      text(
+          "With the solved accelerations and forces, and the velocities the constraints allow, the two are equal: "
+          "the power balance holds.");
     else
-      text_with("With the solved accelerations and forces the two DIFFER by {}: the power balance FAILS (an error in "
-                "tackle; please report it).",
-                {d.power.residual});
+      text_with(
+          "With the solved accelerations and forces the two DIFFER by {}: the power balance FAILS (an error in "
+          "tackle; please report it).",
+          {d.power.residual});
   }
   return d;
 }

@@ -27,15 +27,15 @@ struct Step {
   // given: a parameter's value (lhs = rhs, unit in note), listed like a bullet.
   // figure: a drawn free body diagram (text and JSON leave it out).
   enum class Kind { section, text, bullet, equation, given, figure } kind = Kind::text;
-  std::string text;   // section title, paragraph, bullet, or an equation's label
+  std::string text;  // section title, paragraph, bullet, or an equation's label
   GiNaC::ex lhs, rhs;
   std::string relation = "=";
-  bool equals_constant = false;  // "lhs = const" (a length sum held constant)
-  bool boxed = false;          // a final closed form
-  std::string note;            // a number with its unit ("20 N"); for `given`, the unit only
-  bool note_squared = false;   // the note is the square of that number: (19.1206 m/s)^2
-  std::string number;          // given: the value as a decimal ("0.3")
-  std::vector<GiNaC::ex> math; // text and bullets: each "{}" in `text` is the next of these
+  bool equals_constant = false;          // "lhs = const" (a length sum held constant)
+  bool boxed = false;                    // a final closed form
+  std::string note;                      // a number with its unit ("20 N"); for `given`, the unit only
+  bool note_squared = false;             // the note is the square of that number: (19.1206 m/s)^2
+  std::string number;                    // given: the value as a decimal ("0.3")
+  std::vector<GiNaC::ex> math;           // text and bullets: each "{}" in `text` is the next of these
   std::shared_ptr<const Figure> figure;  // figure
 };
 
@@ -43,17 +43,17 @@ struct Step {
 /// program to evaluate every closed form.
 struct ParameterReport {
   std::string name, tex;
-  std::string kind;  // parameter | defined | length (a turning strand's) | given
-  std::optional<NumericValue> si;      // the value in SI
-  std::optional<NumericValue> stated;  // the value in the unit the description states
-  std::optional<GiNaC::ex> definition; // defined and length: the expression
+  std::string kind;                     // parameter | defined | length (a turning strand's) | given
+  std::optional<NumericValue> si;       // the value in SI
+  std::optional<NumericValue> stated;   // the value in the unit the description states
+  std::optional<GiNaC::ex> definition;  // defined and length: the expression
 };
 
 struct Derivation {
   std::string title;
   std::string file;
-  std::string phase;      // a phase of a phased description: its name
-  int phase_number = 0;   // and its place (1, 2, ...); 0 for a description without phases
+  std::string phase;     // a phase of a phased description: its name
+  int phase_number = 0;  // and its place (1, 2, ...); 0 for a description without phases
   std::vector<Step> steps;
   std::vector<Answer> answers;
   std::vector<CombinationReport> combinations;
@@ -65,17 +65,17 @@ struct Derivation {
   std::size_t rank = 0;
   std::size_t n_equations = 0;
   std::vector<GiNaC::ex> unknowns;
-  std::vector<Equation> equations;          // what was solved, for the JSON
+  std::vector<Equation> equations;  // what was solved, for the JSON
   std::vector<ConstraintSteps> constraint_steps;
-  std::vector<Equation> impact_equations;   // an impact's, for the JSON
+  std::vector<Equation> impact_equations;      // an impact's, for the JSON
   std::shared_ptr<const SymbolTable> symbols;  // what the names are (LaTeX writes m a, mu N_A)
-  std::optional<SweepResult> sweep_plot;   // the described sweep, when there is one
-  std::optional<SweepResult> motion_plot;  // the simulated motion, when 'motion' has 'until'
-  std::vector<std::string> motion_events;  // what happened in that run, in words
+  std::optional<SweepResult> sweep_plot;       // the described sweep, when there is one
+  std::optional<SweepResult> motion_plot;      // the simulated motion, when 'motion' has 'until'
+  std::vector<std::string> motion_events;      // what happened in that run, in words
   // Indeterminate with numbers: the member of the family with the least norm (Eigen), for
   // the unknowns that are not determined alone.
   std::vector<std::pair<std::string, std::optional<NumericValue>>> minimum_norm;
-  PowerCheck power;  // the power balance, checked against the solution
+  PowerCheck power;                   // the power balance, checked against the solution
   std::vector<RegimeChoice> regimes;  // connections decided at the numbers (stick or slip)
   std::vector<ParameterReport> parameters;
   // Motion in time, for the JSON (narrated in the steps): a copy without the simulation's
@@ -98,8 +98,8 @@ struct ReportOptions {
 /// check made in the analysis (narrated here, not computed).
 /// `end`: the interval's end rates, told after the results.
 [[nodiscard]] Derivation explain(const Model& m, const EquationSystem& s, const Solution& sol, const Answers& answers,
-                                 const PowerCheck& power_check,
-                                 const ReportOptions& options = {}, const IntervalEnd* end = nullptr);
+                                 const PowerCheck& power_check, const ReportOptions& options = {},
+                                 const IntervalEnd* end = nullptr);
 
 /// The motion in time appended to a derivation (report/motion_narration.cpp).
 void narrate_motion(Derivation& d, const Model& m, const Motion& motion, const ReportOptions& options = {});

@@ -32,11 +32,13 @@ std::string gradebook_number(double points) {
   return out;
 }
 
-void Gradebook::add(std::size_t line, bool readable, const std::optional<std::string>& student, const std::optional<std::string>& question,
-                    double points, double max_points, bool invalid) {
+void Gradebook::add(std::size_t line, bool readable, const std::optional<std::string>& student,
+                    const std::optional<std::string>& question, double points, double max_points, bool invalid) {
   std::string problem;
   if (!readable)
-    problem = "the line is not a JSON object, so whose answer it is is not known (expected {\"student\": ..., \"id\": ..., ...} on every line with --gradebook)";
+    problem =
+        "the line is not a JSON object, so whose answer it is is not known (expected {\"student\": ..., \"id\": ..., "
+        "...} on every line with --gradebook)";
   else if (!student || student->empty())
     problem = "no \"student\" (expected the student's name or id, a string, on every line with --gradebook)";
   else if (!question)
@@ -65,7 +67,9 @@ void Gradebook::add(std::size_t line, bool readable, const std::optional<std::st
 std::vector<Diagnostic> Gradebook::problems() const {
   std::vector<Diagnostic> out = problems_;
   if (unplaced_ > problems_.size())
-    out.push_back({{source_, 0, 0}, "and " + std::to_string(unplaced_ - problems_.size()) + " more lines that the gradebook cannot place"});
+    out.push_back(
+        {{source_, 0, 0},
+         "and " + std::to_string(unplaced_ - problems_.size()) + " more lines that the gradebook cannot place"});
   return out;
 }
 

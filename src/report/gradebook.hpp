@@ -43,8 +43,8 @@ class Gradebook {
   /// and question replaces the cell (the last submission counts). A line whose student or
   /// question is not known (std::nullopt, or an empty student) is a problem of the batch,
   /// located at its line; `readable` says whether the line was a JSON object at all.
-  void add(std::size_t line, bool readable, const std::optional<std::string>& student, const std::optional<std::string>& question,
-           double points, double max_points, bool invalid);
+  void add(std::size_t line, bool readable, const std::optional<std::string>& student,
+           const std::optional<std::string>& question, double points, double max_points, bool invalid);
 
   /// The lines that could not be placed: with any, no gradebook is written (InputError).
   /// The first max_gradebook_problems, then one that says how many more.
@@ -68,8 +68,8 @@ class Gradebook {
   std::string source_;
   std::vector<std::string> students_, questions_;
   std::unordered_map<std::string, std::size_t> student_index_, question_index_;
-  std::vector<double> possible_;            // by question: the most points a line of it was worth
-  std::vector<std::vector<Cell>> cells_;    // [student][question]
+  std::vector<double> possible_;          // by question: the most points a line of it was worth
+  std::vector<std::vector<Cell>> cells_;  // [student][question]
   std::vector<Diagnostic> problems_;
   std::size_t unplaced_ = 0, replaced_ = 0;
 };

@@ -20,7 +20,7 @@ std::string read_asset(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in)
     throw SetupError("HTML needs KaTeX, and " + path +
-                             " cannot be read (install Debian's libjs-katex, or set TACKLE_KATEX_DIR to KaTeX's directory)");
+                     " cannot be read (install Debian's libjs-katex, or set TACKLE_KATEX_DIR to KaTeX's directory)");
   std::ostringstream ss;
   ss << in.rdbuf();
   return ss.str();
@@ -32,7 +32,8 @@ std::string base64(const std::string& in) {
   out.reserve((in.size() + 2) / 3 * 4);
   std::size_t i = 0;
   for (; i + 2 < in.size(); i += 3) {
-    const unsigned v = static_cast<unsigned char>(in[i]) << 16 | static_cast<unsigned char>(in[i + 1]) << 8 | static_cast<unsigned char>(in[i + 2]);
+    const unsigned v = static_cast<unsigned char>(in[i]) << 16 | static_cast<unsigned char>(in[i + 1]) << 8 |
+                       static_cast<unsigned char>(in[i + 2]);
     for (int k = 18; k >= 0; k -= 6) out += digits[(v >> k) & 63];
   }
   if (i < in.size()) {
@@ -58,7 +59,8 @@ std::string inlined_css(const std::string& dir) {
     const std::string sources = css.substr(at, end - at);
     const std::size_t open = sources.find("url(fonts/"), close = sources.find(')', open);
     out += css.substr(from, at - from);
-    const std::string file = open == std::string::npos || close == std::string::npos ? "" : sources.substr(open + 4, close - open - 4);
+    const std::string file =
+        open == std::string::npos || close == std::string::npos ? "" : sources.substr(open + 4, close - open - 4);
     if (file.size() > 6 && file.compare(file.size() - 6, 6, ".woff2") == 0)
       out += "src:url(data:font/woff2;base64," + base64(read_asset(dir + "/" + file)) + ") format('woff2')";
     else
@@ -91,10 +93,12 @@ const Assets& assets() {
 }
 
 // The page's own style, then its content's (a hosted fragment's too, scoped to it).
-const char* const page_style = R"(body{font-family:"Latin Modern Roman","CMU Serif",Georgia,serif;max-width:52em;margin:2em auto;padding:0 1em;line-height:1.45;color:#111}
+const char* const page_style =
+    R"(body{font-family:"Latin Modern Roman","CMU Serif",Georgia,serif;max-width:52em;margin:2em auto;padding:0 1em;line-height:1.45;color:#111}
 h1{font-size:1.6em}h2{font-size:1.25em;margin-top:1.6em;border-bottom:1px solid #ccc}
 )";
-const char* const style = R"(.eq{display:flex;align-items:center;gap:1em;margin:.5em 0}.eq .math{flex:1;text-align:center}
+const char* const style =
+    R"(.eq{display:flex;align-items:center;gap:1em;margin:.5em 0}.eq .math{flex:1;text-align:center}
 .eq .tag{color:#555;font-size:.9em;white-space:nowrap}
 figure{text-align:center;margin:1em 0;break-inside:avoid;page-break-inside:avoid}figure svg{max-width:100%;height:auto}figcaption{font-size:.9em;color:#444}
 .katex-error{color:#b00;border-bottom:1px dotted #b00}
@@ -136,7 +140,8 @@ const HostedHtml* HostedHtml::current() { return hosted(); }
 
 std::string html_math(const std::string& tex, bool display) {
   const std::string open = !hosted() ? "" : display ? "\\[" : "\\(", close = !hosted() ? "" : display ? "\\]" : "\\)";
-  return std::string("<span class=\"math") + (display ? " display" : "") + "\">" + open + html_escape(tex) + close + "</span>";
+  return std::string("<span class=\"math") + (display ? " display" : "") + "\">" + open + html_escape(tex) + close +
+         "</span>";
 }
 
 std::string content_style(const std::string& scope) {
@@ -162,9 +167,11 @@ std::string content_style(const std::string& scope) {
 
 std::string html_page(const std::string& title, const std::string& body, const std::string& head) {
   const Assets& a = assets();
-  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
-         html_escape(title) + "</title>\n<style>\n" + a.css + "\n</style>\n<style>\n" + page_style + style + "</style>\n<script>\n" + a.js +
-         "\n</script>\n<script>\n" + render + "</script>\n" + head + "</head>\n<body>\n" + body + "</body>\n</html>\n";
+  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" "
+         "content=\"width=device-width, initial-scale=1\">\n<title>" +
+         html_escape(title) + "</title>\n<style>\n" + a.css + "\n</style>\n<style>\n" + page_style + style +
+         "</style>\n<script>\n" + a.js + "\n</script>\n<script>\n" + render + "</script>\n" + head +
+         "</head>\n<body>\n" + body + "</body>\n</html>\n";
 }
 
 }  // namespace tackle

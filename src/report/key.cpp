@@ -11,8 +11,8 @@ namespace tackle {
 
 using namespace GiNaC;
 
-std::vector<std::vector<Variant>> draw_variants(const std::vector<std::pair<const Model*, const Derivation*>>& parts, int count,
-                                                unsigned long long seed, int digits) {
+std::vector<std::vector<Variant>> draw_variants(const std::vector<std::pair<const Model*, const Derivation*>>& parts,
+                                                int count, unsigned long long seed, int digits) {
   // The ranged parameters of all parts, by name, in the order they first appear (a phase's
   // shared parameters come first in each, so the same draw serves every phase).
   std::vector<const SymbolInfo*> ranged;
@@ -70,7 +70,8 @@ std::vector<std::vector<Variant>> draw_variants(const std::vector<std::pair<cons
         const auto& c = d.conditions[k];
         const auto exact = condition_forms[p][k].at(values);
         const ex x = exact ? evalf(*exact) : ex(0);
-        valid = valid && exact && is_a<numeric>(x) && ex_to<numeric>(x).is_real() && relation_holds(ex_to<numeric>(x), c.op);
+        valid = valid && exact && is_a<numeric>(x) && ex_to<numeric>(x).is_real() &&
+                relation_holds(ex_to<numeric>(x), c.op);
       }
       for (const auto& ans : d.answers) {
         if (!valid || !ans.closed_form) continue;
@@ -91,7 +92,8 @@ std::vector<std::vector<Variant>> draw_variants(const std::vector<std::pair<cons
   return out;
 }
 
-std::vector<Variant> draw_variants(const Model& m, const Derivation& d, int count, unsigned long long seed, int digits) {
+std::vector<Variant> draw_variants(const Model& m, const Derivation& d, int count, unsigned long long seed,
+                                   int digits) {
   return draw_variants({{&m, &d}}, count, seed, digits).front();
 }
 

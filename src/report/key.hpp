@@ -36,7 +36,8 @@ struct Variant {
 /// The same for parts that share parameters (the phases of a phased description): one draw
 /// for all, valid only when it is valid in every part; one list of variants per part.
 [[nodiscard]] std::vector<std::vector<Variant>> draw_variants(
-    const std::vector<std::pair<const Model*, const Derivation*>>& parts, int count, unsigned long long seed, int digits);
+    const std::vector<std::pair<const Model*, const Derivation*>>& parts, int count, unsigned long long seed,
+    int digits);
 
 struct KeyEntry {
   const Derivation* derivation = nullptr;

@@ -82,11 +82,13 @@ void Telling::freedom() {
 // mass-matrix form, or the solved accelerations (nonlinear); and the natural frequencies.
 void Telling::equations() {
   if (eom.linear) {
-    text("Equations of motion, the constraint forces eliminated (M from the kinetic energy, C from the dampers, K from "
-         "the springs):");
+    text(
+        "Equations of motion, the constraint forces eliminated (M from the kinetic energy, C from the dampers, K from "
+        "the springs):");
     for (std::size_t i = 0; i < eom.dof; ++i) {
       ex lhs = 0;
-      for (std::size_t j = 0; j < eom.dof; ++j) lhs += eom.M(i, j) * eom.ddq[j] + eom.C(i, j) * eom.dq[j] + eom.K(i, j) * eom.q[j];
+      for (std::size_t j = 0; j < eom.dof; ++j)
+        lhs += eom.M(i, j) * eom.ddq[j] + eom.C(i, j) * eom.dq[j] + eom.K(i, j) * eom.q[j];
       Step* st = equation("equation of motion ({})", lhs, eom.forcing[i]);
       st->math = {eom.q[i]};
       st->boxed = true;
@@ -97,8 +99,10 @@ void Telling::equations() {
         st->note = with_unit(number((*eom.equilibrium)[i], Dimension::length()));
       }
   } else if (eom.mass_form) {
-    text("Equations of motion, the balances projected on each coordinate (the joint forces do no work on the motion the "
-         "coordinates allow, so they drop out), M(q) q'' = F (nonlinear: " + eom.nonlinear + "):");
+    text(
+        "Equations of motion, the balances projected on each coordinate (the joint forces do no work on the motion the "
+        "coordinates allow, so they drop out), M(q) q'' = F (nonlinear: " +
+        eom.nonlinear + "):");
     for (std::size_t i = 0; i < eom.dof; ++i) {
       ex lhs = 0;
       for (std::size_t j = 0; j < eom.dof; ++j) lhs += eom.M(i, j) * eom.ddq[j];
@@ -106,13 +110,15 @@ void Telling::equations() {
     }
   } else {
     text("Equations of motion, the constraint forces eliminated (nonlinear: " + eom.nonlinear + "):");
-    for (std::size_t i = 0; i < eom.dof; ++i) equation("equation of motion ({})", eom.ddq[i], eom.acceleration[i])->math = {eom.q[i]};
+    for (std::size_t i = 0; i < eom.dof; ++i)
+      equation("equation of motion ({})", eom.ddq[i], eom.acceleration[i])->math = {eom.q[i]};
   }
   if (!eom.natural_frequencies.empty()) {
     std::string f;
     for (std::size_t i = 0; i < eom.natural_frequencies.size(); ++i)
       f += (i ? ", " : "") + decimal_string(GiNaC::numeric(eom.natural_frequencies[i]), options.digits);
-    text("Natural frequencies (numeric, from the eigenvalues of M^-1 K with the given values; undamped): " + f + " rad/s.");
+    text("Natural frequencies (numeric, from the eigenvalues of M^-1 K with the given values; undamped): " + f +
+         " rad/s.");
   }
 }
 
@@ -124,10 +130,12 @@ void Telling::energy() {
   const std::string qn = to_text(q), vn = to_text(v);
   const SymbolInfo* qi = table.find(q);
   const SymbolInfo* vi = table.find(v);
-  const ex v_there = symbol(vn + "|" + qn + "=" + to_text(e.position), vi->tex + "\\big|_{" + qi->tex + " = " + to_latex(e.position) + "}");
-  text_with("Work and energy: from {} = {} to {} = {}, the change of the kinetic energy is the work of the forces (the "
-            "constraint forces do none).",
-            {q, m.motion->initial.at(q), q, e.position});
+  const ex v_there = symbol(vn + "|" + qn + "=" + to_text(e.position),
+                            vi->tex + "\\big|_{" + qi->tex + " = " + to_latex(e.position) + "}");
+  text_with(
+      "Work and energy: from {} = {} to {} = {}, the change of the kinetic energy is the work of the forces (the "
+      "constraint forces do none).",
+      {q, m.motion->initial.at(q), q, e.position});
   if (!e.not_possible.empty()) {
     text("No work-energy answer: " + e.not_possible + ".");
   } else {
@@ -137,17 +145,19 @@ void Telling::energy() {
       Step* st = equation("work-energy", pow(v_there, 2), *e.rate_squared);
       st->boxed = true;
     } else {
-      text("The work has no closed form here; it is integrated numerically (Gauss-Legendre, 64 panels) with the given "
-           "values.");
+      text(
+          "The work has no closed form here; it is integrated numerically (Gauss-Legendre, 64 panels) with the given "
+          "values.");
     }
     if (e.rate_squared_number) {
       const double v2 = *e.rate_squared_number;
       if (v2 < 0) {
-        text("The kinetic energy there would be negative: the body does not reach " + qn + " = " + to_text(e.position) + ".");
+        text("The kinetic energy there would be negative: the body does not reach " + qn + " = " + to_text(e.position) +
+             ".");
       } else {
         Step* sp = equation(e.numeric_only ? "speed there (numeric)" : "speed there", abs(v_there),
                             e.numeric_only ? ex(numeric(decimal_string(numeric(std::sqrt(v2)), options.digits).c_str()))
-                                               : sqrt(*e.rate_squared));
+                                           : sqrt(*e.rate_squared));
         sp->note = decimal_string(numeric(std::sqrt(v2)), options.digits) + " m/s";
         sp->boxed = true;
       }
@@ -162,7 +172,8 @@ void Telling::no_response() {
   if (const auto& lin = eom.linearised; lin && eom.dof > 1) {
     std::string where;
     for (std::size_t i = 0; i < eom.dof; ++i) where += to_text(eom.q[i]) + " = ";
-    text("Small oscillations about " + where + to_text(lin->about) + ", where it can rest (the equations of motion "
+    text("Small oscillations about " + where + to_text(lin->about) +
+         ", where it can rest (the equations of motion "
          "linearised there):");
     for (std::size_t i = 0; i < eom.dof; ++i) {
       ex rhs = 0;
@@ -174,14 +185,20 @@ void Telling::no_response() {
       std::string f;
       for (std::size_t i = 0; i < lin->frequencies.size(); ++i)
         f += (i ? ", " : "") + decimal_string(GiNaC::numeric(lin->frequencies[i]), options.digits);
-      text("Natural frequencies of small oscillations (numeric, from the eigenvalues of the linearised stiffness with the "
-           "given values): " + f + " rad/s.");
+      text(
+          "Natural frequencies of small oscillations (numeric, from the eigenvalues of the linearised stiffness with "
+          "the "
+          "given values): " +
+          f + " rad/s.");
     }
-    text("At larger amplitudes the motion is not a sum of these modes: `tackle simulate` follows the nonlinear equations.");
+    text(
+        "At larger amplitudes the motion is not a sum of these modes: `tackle simulate` follows the nonlinear "
+        "equations.");
   } else if (const auto& lin = eom.linearised) {
     const ex q = eom.q[0];
     const symbol lambda("lambda", "\\lambda");
-    text("Small oscillations about " + to_text(q) + " = " + to_text(lin->about) + ", where it can rest (the equation of "
+    text("Small oscillations about " + to_text(q) + " = " + to_text(lin->about) +
+         ", where it can rest (the equation of "
          "motion linearised there):");
     equation("linearised", eom.ddq[0], -pow(lambda, 2) * (q - lin->about));
     Step* st = equation("small-oscillation frequency", lambda, sqrt(lin->stiffness));
@@ -200,11 +217,12 @@ void Telling::response() {
   const Response& r = *mo.response;
   for (const auto& [sym, def] : r.definitions) {
     const SymbolInfo* s = table.find(sym);
-    const std::string what = s && s->name.rfind("zeta", 0) == 0 ? "damping ratio"
+    const std::string what = s && s->name.rfind("zeta", 0) == 0      ? "damping ratio"
                              : s && s->name.rfind("omega_d", 0) == 0 ? "damped frequency"
                                                                      : "natural frequency";
     Step* st = equation(what, sym, def);
-    st->note = with_unit(number(sym, what == "damping ratio" ? Dimension::none() : Dimension::none() / Dimension::time()));
+    st->note =
+        with_unit(number(sym, what == "damping ratio" ? Dimension::none() : Dimension::none() / Dimension::time()));
     if (what != "damping ratio" && !st->note.empty()) st->note = st->note.substr(0, st->note.rfind(' ')) + " rad/s";
   }
   text("The motion is " + regime_text(r.regime) + ".");
@@ -225,8 +243,9 @@ void Telling::response() {
     Step* st = equation("assumed", a.lhs, a.rhs);
     st->relation = a.op;
   }
-  text(r.verified ? "Checked: put back into the equation of motion, at random parameter values and times, it holds."
-                  : "WARNING: put back into the equation of motion it does NOT hold (an error in tackle; please report it).");
+  text(r.verified
+           ? "Checked: put back into the equation of motion, at random parameter values and times, it holds."
+           : "WARNING: put back into the equation of motion it does NOT hold (an error in tackle; please report it).");
 }
 
 // Where a rule assumes the direction of motion: how long the response holds (until the rate
@@ -237,13 +256,15 @@ void Telling::direction() {
   text(who + " assumes the direction of motion (friction opposes it): this response holds only while " + rate +
        " keeps its sign.");
   if (!mo.direction_against.empty()) {
-    text("But " + mo.direction_against + ": the closed form describes no part of this motion (reverse the "
+    text("But " + mo.direction_against +
+         ": the closed form describes no part of this motion (reverse the "
          "sliding direction in the description for this start).");
   } else if (mo.direction_until) {
     Step* st = equation("end of the interval", symbol("t_1", "t_{1}"), *mo.direction_until);
     if (mo.direction_until_s) st->note = decimal_string(numeric(*mo.direction_until_s), options.digits) + " s";
-    text("At t_1 the body stops and friction would reverse: past it the closed form no longer describes the motion "
-         "(simulate it, or write the next phase).");
+    text(
+        "At t_1 the body stops and friction would reverse: past it the closed form no longer describes the motion "
+        "(simulate it, or write the next phase).");
   } else if (mo.direction_until_s) {
     text(rate + " first vanishes at t_1 = " + decimal_string(numeric(*mo.direction_until_s), options.digits) +
          " s (with the given numbers): past it the closed form no longer describes the motion.");
@@ -277,9 +298,11 @@ void Telling::steady_state(const ConditionInTime& c) {
   }
   if (c.band) {
     const auto& b = *c.band;
-    text_with(std::string("A quadratic in {}: it ") + (b.fails_between ? "fails between its roots" : "holds only between its roots") +
-                  ", so " + (b.fails_between ? "the model fails in a band of driving frequencies:" : "the model holds only in a band:"),
-              {b.variable});
+    text_with(
+        std::string("A quadratic in {}: it ") +
+            (b.fails_between ? "fails between its roots" : "holds only between its roots") + ", so " +
+            (b.fails_between ? "the model fails in a band of driving frequencies:" : "the model holds only in a band:"),
+        {b.variable});
     Step* lo = equation(b.fails_between ? "fails above" : "holds above", b.variable, b.low);
     lo->relation = ">";
     if (auto v = number(b.low, std::nullopt)) lo->note = v->decimal + " rad^2/s^2";
@@ -300,8 +323,8 @@ void Telling::extreme(const ConditionInTime& c) {
   const bool lower = cond.op == ">=" || cond.op == ">";
   const auto always = holds_always(*c.extreme, cond.op);
   if (always) {
-    narrate_always(n, std::string(lower ? "Its least" : "Its greatest") + " value over time, {}, is ", *c.extreme, *c.extreme,
-                   cond.op, *always, cond.otherwise);
+    narrate_always(n, std::string(lower ? "Its least" : "Its greatest") + " value over time, {}, is ", *c.extreme,
+                   *c.extreme, cond.op, *always, cond.otherwise);
   } else {
     Step* ex_st = equation(lower ? "least value over time" : "greatest value over time", *c.extreme, 0);
     ex_st->relation = cond.op;
@@ -310,7 +333,8 @@ void Telling::extreme(const ConditionInTime& c) {
     Step* at = equation(lower ? "least at" : "greatest at", t, *c.extreme_at);
     if (auto v = number(*c.extreme_at, Dimension::time())) at->note = with_unit(v);
   }
-  if (!always) text(std::string("So the model holds for all t exactly when this holds") + (c.solved.empty() ? "." : ", that is:"));
+  if (!always)
+    text(std::string("So the model holds for all t exactly when this holds") + (c.solved.empty() ? "." : ", that is:"));
   if (!always)
     for (const auto& sv : c.solved) narrate_solved(n, sv, "for all {}, solved for {}", {t, sv.parameter});
   if (c.holds_for_all_t) {
@@ -357,7 +381,9 @@ void narrate_motion(Derivation& d, const Model& m, const Motion& mo, const Repor
     st->relation = cond.op;
     if (c.steady_of_t) tell.steady_state(c);
     if (!c.extreme) {
-      tell.text("Its extremes over time (the whole response) are not found in closed form; `tackle simulate` follows it numerically.");
+      tell.text(
+          "Its extremes over time (the whole response) are not found in closed form; `tackle simulate` follows it "
+          "numerically.");
       continue;
     }
     tell.extreme(c);

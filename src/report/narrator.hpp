@@ -32,7 +32,9 @@ struct Narrator {
   void section(std::string t) { step(Step::Kind::section, std::move(t)); }
   void text(std::string t) { step(Step::Kind::text, std::move(t)); }
   // Prose with expressions: each "{}" in `t` is typeset from the next of `math`.
-  void text_with(std::string t, std::vector<GiNaC::ex> math) { step(Step::Kind::text, std::move(t))->math = std::move(math); }
+  void text_with(std::string t, std::vector<GiNaC::ex> math) {
+    step(Step::Kind::text, std::move(t))->math = std::move(math);
+  }
   void bullet(std::string t) { step(Step::Kind::bullet, std::move(t)); }
   Step* equation(std::string label, const GiNaC::ex& lhs, const GiNaC::ex& rhs) {
     Step* st = step(Step::Kind::equation, std::move(label));
@@ -55,13 +57,14 @@ void narrate_solved(Narrator& n, const SolvedFor& form, std::string label, std::
 /// A condition that holds (or fails) whatever the values, in words and never as a trivial
 /// inequality: `lead` with a "{}" for `shown`, then its sign and the names it holds for
 /// ("With the solution, g m is never negative: this holds for every value of g and m.").
-void narrate_always(Narrator& n, const std::string& lead, const GiNaC::ex& shown, const GiNaC::ex& expr, const std::string& op,
-                    bool holds, const std::string& otherwise);
+void narrate_always(Narrator& n, const std::string& lead, const GiNaC::ex& shown, const GiNaC::ex& expr,
+                    const std::string& op, bool holds, const std::string& otherwise);
 
 /// The Validity section: each condition, its closed form, its solved forms with their
 /// numbers, a condition that always or never holds in words; then each parameter's range at
 /// the given numbers. `named` names what the closed forms share (the derivation's sum).
 void narrate_validity(Narrator& n, const std::vector<ConditionReport>& conditions,
-                      const std::vector<ParameterRange>& ranges, const std::function<GiNaC::ex(const GiNaC::ex&)>& named);
+                      const std::vector<ParameterRange>& ranges,
+                      const std::function<GiNaC::ex(const GiNaC::ex&)>& named);
 
 }  // namespace tackle

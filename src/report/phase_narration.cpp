@@ -15,8 +15,9 @@ using namespace GiNaC;
 namespace {
 
 // An answer for a quantity of a phase's end (a rate, an impulse, the energy lost), boxed.
-void answer(Derivation& d, Narrator& n, const SymbolTable& table, const ex& symbol, const ex& value, const Dimension& dim,
-            const ReportOptions& options, const std::string& label, const std::optional<Unit>& unit = std::nullopt) {
+void answer(Derivation& d, Narrator& n, const SymbolTable& table, const ex& symbol, const ex& value,
+            const Dimension& dim, const ReportOptions& options, const std::string& label,
+            const std::optional<Unit>& unit = std::nullopt) {
   Answer a;
   const SymbolInfo* info = table.find(symbol);
   a.name = info ? info->name : to_text(symbol);
@@ -44,22 +45,26 @@ void narrate_interval_end(Derivation& d, const Model& m, const IntervalEnd& end,
     if (r.given) continue;
     const Body& b = m.bodies[r.body];
     if (m.interval->duration) {
-      n.text_with("With {} constant, the rate at the end is the rate at the start plus the acceleration times the duration:",
-                  {b.accel});
+      n.text_with(
+          "With {} constant, the rate at the end is the rate at the start plus the acceleration times the duration:",
+          {b.accel});
       n.equation("end of the interval: {}", r.rate, r.from + r.accel * *m.interval->duration)->math = {b.rate};
       answer(d, n, table, r.rate, r.value, Dimension::velocity(), options, "at the end of the interval");
       if (r.displacement) {
         n.text("Over the duration the body moves by");
-        Step* st = n.equation("displacement over the interval", symbol("Delta " + to_text(b.coord), "\\Delta " + table.find(b.coord)->tex),
-                              *r.displacement);
+        Step* st =
+            n.equation("displacement over the interval",
+                       symbol("Delta " + to_text(b.coord), "\\Delta " + table.find(b.coord)->tex), *r.displacement);
         st->note = with_unit(evaluate(*r.displacement, table, Dimension::length(), options.digits));
       }
     } else {
-      n.text_with("With {} constant, the square of the rate changes by twice the acceleration times the distance:", {b.accel});
-      n.equation("end of the interval: {}", pow(r.rate, 2), pow(r.from, 2) + 2 * r.accel * *m.interval->distance)->math = {
-          pow(b.rate, 2)};
-      n.text("The body gets to the end of the interval when {} and {}; the rate there takes the sign of the distance "
-             "(the first time the body has moved by it).");
+      n.text_with("With {} constant, the square of the rate changes by twice the acceleration times the distance:",
+                  {b.accel});
+      n.equation("end of the interval: {}", pow(r.rate, 2), pow(r.from, 2) + 2 * r.accel * *m.interval->distance)
+          ->math = {pow(b.rate, 2)};
+      n.text(
+          "The body gets to the end of the interval when {} and {}; the rate there takes the sign of the distance "
+          "(the first time the body has moved by it).");
       d.steps.back().math = {r.reaches[0].first >= 0, r.reaches[1].first > 0};
       if (r.reaches_holds && *r.reaches_holds) d.steps.back().text += " Both hold with the given numbers.";
       answer(d, n, table, r.rate, r.value, Dimension::velocity(), options, "at the end of the interval");
@@ -72,9 +77,10 @@ void narrate_impact(Derivation& d, const Model& m, const ImpactResult& r, const 
   Narrator n{d, table};
   d.status = "determined";
   n.section("The impact: momentum is conserved");
-  n.text("While the impact lasts, the force between the bodies is far larger than gravity or any other finite force, "
-         "which give no impulse: the total momentum is the same just before and just after it. The rates below are "
-         "those just after; the rates just before are given.");
+  n.text(
+      "While the impact lasts, the force between the bodies is far larger than gravity or any other finite force, "
+      "which give no impulse: the total momentum is the same just before and just after it. The rates below are "
+      "those just after; the rates just before are given.");
   std::string rates_before;
   std::vector<ex> math;
   for (const auto& b : m.impact->before) {
@@ -95,11 +101,13 @@ void narrate_impact(Derivation& d, const Model& m, const ImpactResult& r, const 
            "impulse on " + m.bodies[a.body].name);
   n.text("The kinetic energy before and after the impact, and what the impact takes:");
   Step* before = n.equation("kinetic energy just before", symbol("E_before", "E_{\\mathrm{before}}"), r.energy_before);
-  before->note = with_unit(evaluate(r.energy_before, table, Dimension::force() * Dimension::length(), options.digits, joule()));
+  before->note =
+      with_unit(evaluate(r.energy_before, table, Dimension::force() * Dimension::length(), options.digits, joule()));
   Step* after = n.equation("kinetic energy just after", symbol("E_after", "E_{\\mathrm{after}}"), r.energy_after);
-  after->note = with_unit(evaluate(r.energy_after, table, Dimension::force() * Dimension::length(), options.digits, joule()));
-  answer(d, n, table, r.energy_lost_symbol, r.energy_lost, Dimension::force() * Dimension::length(), options, "energy lost",
-         joule());
+  after->note =
+      with_unit(evaluate(r.energy_after, table, Dimension::force() * Dimension::length(), options.digits, joule()));
+  answer(d, n, table, r.energy_lost_symbol, r.energy_lost, Dimension::force() * Dimension::length(), options,
+         "energy lost", joule());
   n.section("Check: energy");
   const auto sign = sign_of(r.energy_lost);
   const auto number = evaluate(r.energy_lost, table, Dimension::force() * Dimension::length(), options.digits);
@@ -108,7 +116,8 @@ void narrate_impact(Derivation& d, const Model& m, const ImpactResult& r, const 
   else if (number && number->approx >= -1e-12 * (1 + std::abs(number->approx)))
     n.text("With the given numbers the energy lost is not negative: the impact does not make energy.");
   else if (number)
-    n.text("With the given numbers the energy lost is NEGATIVE: the impact would make energy (a restitution above 1?).");
+    n.text(
+        "With the given numbers the energy lost is NEGATIVE: the impact would make energy (a restitution above 1?).");
   else
     n.text("Whether the energy lost is positive depends on the parameters (it is for a restitution of at most 1).");
   n.section("Check: power balance");
@@ -133,8 +142,10 @@ void narrate_regimes(Derivation& d, const std::vector<RegimeChoice>& choices, co
         any = true;
         const std::string name = to_text(b.parameter);
         const bool lower = b.op[0] == '>';
-        const std::string what = coefficient ? (lower ? "the least " : "the largest ") + name + (slips ? " that would hold them together" : " that holds them together")
-                                              : (lower ? "the least " : "the largest ") + name + " for which they move together";
+        const std::string what = coefficient
+                                     ? (lower ? "the least " : "the largest ") + name +
+                                           (slips ? " that would hold them together" : " that holds them together")
+                                     : (lower ? "the least " : "the largest ") + name + " for which they move together";
         Step* st = n.equation(what, b.parameter, b.bound);
         st->relation = b.op;
         st->note = b.value;
@@ -147,17 +158,22 @@ void narrate_regimes(Derivation& d, const std::vector<RegimeChoice>& choices, co
       n.text(slips ? "The friction on " + f.body + " that moving together needs, and the most the contact can give:"
                    : "The friction on " + f.body + " while they do, and the most the contact can give:");
       n.equation("the friction on " + f.body, f.unknown, f.value)->note = f.value_number;
-      if (!f.limit.is_zero()) n.equation("the most friction at the contact", f.limit, f.limit_value)->note = f.limit_number;
+      if (!f.limit.is_zero())
+        n.equation("the most friction at the contact", f.limit, f.limit_value)->note = f.limit_number;
     }
-    bounds(true, slips ? "The friction coefficient that would hold them together:" : "The friction coefficient that holds them together:");
+    bounds(true, slips ? "The friction coefficient that would hold them together:"
+                       : "The friction coefficient that holds them together:");
     if (c.undecided) {
-      n.text("At the given numbers these have no number (they depend on the time or on a coordinate): the contact is derived "
-             "sticking, and the model holds while they do (a simulation stops where they fail).");
+      n.text(
+          "At the given numbers these have no number (they depend on the time or on a coordinate): the contact is "
+          "derived "
+          "sticking, and the model holds while they do (a simulation stops where they fail).");
     } else if (!slips) {
       n.text("At the given numbers they do: the bodies move together, as derived here.");
     } else {
-      n.text("At the given numbers they do not (" + join(c.failed, "; ") + " fails): the bodies slip on each other, and the contact is " +
-             "derived here sliding (" + c.chosen + "), with kinetic friction against the slip.");
+      n.text("At the given numbers they do not (" + join(c.failed, "; ") +
+             " fails): the bodies slip on each other, and the contact is " + "derived here sliding (" + c.chosen +
+             "), with kinetic friction against the slip.");
     }
   }
 }

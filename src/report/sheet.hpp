@@ -12,7 +12,7 @@ namespace tackle {
 
 struct SheetEntry {
   const Derivation* derivation = nullptr;
-  const Model* model = nullptr;  // its statement
+  const Model* model = nullptr;   // its statement
   std::vector<Variant> variants;  // none: the description's own values
 };
 

@@ -349,8 +349,11 @@ nlohmann::ordered_json hints(const Derivation& d, const Model& m) {
   for (const auto& p : d.parameters)
     if (p.kind == "parameter" || p.kind == "given") names.push_back(p.name);
   if (!names.empty())
-    h["answer"] = "in " + join(std::vector<std::string>(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(names.size(), 4)))) +
-                  (names.size() > 4 ? ", ..." : "");
+    h["answer"] =
+        "in " +
+        join(std::vector<std::string>(
+            names.begin(), names.begin() + static_cast<std::ptrdiff_t>(std::min<std::size_t>(names.size(), 4)))) +
+        (names.size() > 4 ? ", ..." : "");
   for (const auto& u : d.unknowns) {
     const SymbolInfo* s = m.symbols ? m.symbols->find(u) : nullptr;
     if (s && s->dimension && *s->dimension == Dimension::force()) {
@@ -368,12 +371,14 @@ std::string endpoint_problem(const std::string& endpoint) {
   for (char c : endpoint) {
     const auto u = static_cast<unsigned char>(c);
     if (u <= ' ' || u >= 127 || std::string("\"'`;,<>\\?#").find(c) != std::string::npos)
-      return std::string("has '") + (u <= ' ' || u >= 127 ? std::string("a space or control character") : std::string(1, c)) +
+      return std::string("has '") +
+             (u <= ' ' || u >= 127 ? std::string("a space or control character") : std::string(1, c)) +
              "' (expected a path such as /tackle or an http(s) URL)";
   }
   // A scheme is what comes before a ':' that no '/' precedes (javascript:..., data:...).
   const std::size_t colon = endpoint.find(':');
-  if (colon != std::string::npos && colon < endpoint.find('/') && endpoint.rfind("http://", 0) != 0 && endpoint.rfind("https://", 0) != 0)
+  if (colon != std::string::npos && colon < endpoint.find('/') && endpoint.rfind("http://", 0) != 0 &&
+      endpoint.rfind("https://", 0) != 0)
     return "is a URL that is not http or https";
   if ((endpoint == "http://" || endpoint == "https://")) return "has no host";
   return "";
@@ -391,7 +396,8 @@ std::string step_page(const Derivation& d, const Model& m, const std::string& en
   config["bodies"] = nlohmann::json::array();
   for (const auto& b : m.bodies) config["bodies"].push_back(b.name);
   config["unknowns"] = nlohmann::json::array();
-  for (const auto& a : d.answers) config["unknowns"].push_back({{"name", a.name}, {"tex", a.tex}, {"unit", a.value ? a.value->unit : ""}});
+  for (const auto& a : d.answers)
+    config["unknowns"].push_back({{"name", a.name}, {"tex", a.tex}, {"unit", a.value ? a.value->unit : ""}});
   config["hints"] = hints(d, m);
   // In a script element: no "</script>" (nor "<!--") can end it early.
   std::string json;
@@ -404,7 +410,8 @@ std::string step_page(const Derivation& d, const Model& m, const std::string& en
     if (s && std::find(names.begin(), names.end(), s->name) == names.end()) names.push_back(s->name);
   };
   for (const auto& p : d.parameters)
-    if ((p.kind == "parameter" || p.kind == "given") && std::find(names.begin(), names.end(), p.name) == names.end()) names.push_back(p.name);
+    if ((p.kind == "parameter" || p.kind == "given") && std::find(names.begin(), names.end(), p.name) == names.end())
+      names.push_back(p.name);
   for (const auto& u : d.unknowns) name_of(u);
   for (const auto& b : m.bodies)
     if (!b.coord.is_zero()) name_of(b.coord);
@@ -414,24 +421,31 @@ std::string step_page(const Derivation& d, const Model& m, const std::string& en
   std::string body = "<h1>" + html_escape(d.title) + "</h1>\n" + sheet_problem_html(SheetEntry{&d, &m, {}});
   body += "<div class=\"tryit\">\n<h2>Your solution</h2>\n";
   // What an equation may be: a constraint held constant only where the problem has one.
-  const std::string equations = m.constraints.empty() ? "a balance" : "a balance, a quantity held constant (<code>... = const</code>, in the "
-                                                                      "positions) or its derivatives";
+  const std::string equations = m.constraints.empty()
+                                    ? "a balance"
+                                    : "a balance, a quantity held constant (<code>... = const</code>, in the "
+                                      "positions) or its derivatives";
   // Rates and accelerations, shown on the problem's own first coordinate.
   std::string rates;
   for (const auto& b : m.bodies)
     for (const GiNaC::ex& q : {b.coord, b.angle})
       if (const SymbolInfo* s = m.symbols && !q.is_zero() ? m.symbols->find(q) : nullptr; s && rates.empty())
-        rates = "; <code>dot(" + html_escape(s->name) + ")</code> and <code>ddot(" + html_escape(s->name) + ")</code> for its rate and acceleration";
+        rates = "; <code>dot(" + html_escape(s->name) + ")</code> and <code>ddot(" + html_escape(s->name) +
+                ")</code> for its rate and acceleration";
   body += "<p class=\"names\">Write each step as you would on paper, one a line: an equation (" + equations +
           "), a final answer, or a free body diagram. Each is checked as you type. Names: " + typed + rates + ".</p>\n";
-  body += "<ol class=\"steps\" id=\"steps\"></ol>\n<div class=\"buttons\" id=\"add\"></div>\n<div id=\"grade\" aria-live=\"polite\"></div>\n";
-  body += "<p class=\"notice\">Checked by tackle; a verdict names what is wrong in words of physics and never shows the "
-          "correct equation.</p>\n</div>\n";
+  body +=
+      "<ol class=\"steps\" id=\"steps\"></ol>\n<div class=\"buttons\" id=\"add\"></div>\n<div id=\"grade\" "
+      "aria-live=\"polite\"></div>\n";
+  body +=
+      "<p class=\"notice\">Checked by tackle; a verdict names what is wrong in words of physics and never shows the "
+      "correct equation.</p>\n</div>\n";
   body += "<script type=\"application/json\" id=\"tackle-problem\">" + json + "</script>\n";
 
-  const std::string policy = "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; "
-                             "style-src 'unsafe-inline'; font-src data:; img-src data:; connect-src " +
-                             html_escape(connect_sources(endpoint)) + "; base-uri 'none'; form-action 'none'\">\n";
+  const std::string policy =
+      "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; "
+      "style-src 'unsafe-inline'; font-src data:; img-src data:; connect-src " +
+      html_escape(connect_sources(endpoint)) + "; base-uri 'none'; form-action 'none'\">\n";
   return html_page("Try it: " + d.title, body, policy + page_style + page_script);
 }
 

@@ -80,7 +80,8 @@ SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec
   std::vector<std::string> parts;
   if (eq != std::string::npos) {
     std::string rest = spec.vary.substr(eq + 1);
-    for (std::size_t p; (p = rest.find(':')) != std::string::npos; rest = rest.substr(p + 1)) parts.push_back(rest.substr(0, p));
+    for (std::size_t p; (p = rest.find(':')) != std::string::npos; rest = rest.substr(p + 1))
+      parts.push_back(rest.substr(0, p));
     parts.push_back(rest);
   }
   if (eq == std::string::npos || parts.size() != 3) {
@@ -88,7 +89,8 @@ SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec
     diags.throw_if_any();
   }
   const SymbolInfo* x = parameter(trim(spec.vary.substr(0, eq)), "the range to vary");
-  const auto start = number(parts[0], "the start"), end = number(parts[1], "the end"), count = number(parts[2], "the count");
+  const auto start = number(parts[0], "the start"), end = number(parts[1], "the end"),
+             count = number(parts[2], "the count");
   if (count && (!count->is_integer() || *count < 2 || *count > 100000))
     diags.error(where, "the count '" + parts[2] + "' is not a whole number from 2 to 100000");
   exmap base = table.values();
@@ -125,8 +127,10 @@ SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec
     std::string problem;
     auto dim = dimension_of(c, table, problem);
     r.units.push_back(dim ? si_unit_name(*dim) : "");
-    if (!dim || (common && !(*common == *dim))) same = false;
-    else common = dim;
+    if (!dim || (common && !(*common == *dim)))
+      same = false;
+    else
+      common = dim;
   }
   if (same && common) r.y_unit = si_unit_name(*common);
   r.x_name = x->name;
@@ -141,7 +145,8 @@ SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec
     if (!parsed.value) {
       diags.error(where, "against '" + spec.against + "': " + parsed.problems.front().message);
     } else if (!parsed.value->has(x->sym)) {
-      diags.error(where, "against '" + trim(spec.against) + "' does not change with " + x->name + " (expected an expression in it, e.g. " + x->name + "/l)");
+      diags.error(where, "against '" + trim(spec.against) + "' does not change with " + x->name +
+                             " (expected an expression in it, e.g. " + x->name + "/l)");
     } else if (auto dim = dimension_of(*parsed.value, table, problem); !dim) {
       diags.error(where, "against '" + trim(spec.against) + "': " + problem);
     } else {
@@ -192,7 +197,8 @@ SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec
       const auto at = condition_forms[k].at(values);
       ex v = at ? *at : ex(0);
       if (!is_a<numeric>(v)) v = evalf(v);
-      if (!at || !is_a<numeric>(v) || !ex_to<numeric>(v).is_real() || !relation_holds(ex_to<numeric>(v), cond.op)) return false;
+      if (!at || !is_a<numeric>(v) || !ex_to<numeric>(v).is_real() || !relation_holds(ex_to<numeric>(v), cond.op))
+        return false;
     }
     return true;
   };
@@ -203,7 +209,10 @@ SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec
   };
   auto point = [&](const numeric& xv, bool exact) {
     const exmap values = values_at(xv);
-    Point p{against ? against->approx_at(values).value_or(std::nan("")) : xv.to_double(), xv.to_double(), {}, holds(values, exact)};
+    Point p{against ? against->approx_at(values).value_or(std::nan("")) : xv.to_double(),
+            xv.to_double(),
+            {},
+            holds(values, exact)};
     for (const auto& f : curve_forms) p.y.push_back(f.approx_at(values));
     return p;
   };
@@ -247,7 +256,8 @@ SweepResult run_sweep(const Model& m, const Derivation& d, const SweepSpec& spec
   // Where the axis' expression is undefined, no curve has a point.
   bool any = false;
   for (std::size_t i = 0; i < r.x.size(); ++i) {
-    if (std::isfinite(r.x[i])) any = true;
+    if (std::isfinite(r.x[i]))
+      any = true;
     else
       for (auto& c : r.y) c[i].reset();
   }
@@ -366,7 +376,8 @@ std::string sweep_svg(const SweepResult& r) {
     const double raw = (hi - lo) / 5, p = std::pow(10.0, std::floor(std::log10(raw)));
     const double step = raw / p < 1.5 ? p : raw / p < 3.5 ? 2 * p : raw / p < 7.5 ? 5 * p : 10 * p;
     std::vector<double> t;
-    for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step) t.push_back(std::abs(v) < 1e-12 ? 0 : v);
+    for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step)
+      t.push_back(std::abs(v) < 1e-12 ? 0 : v);
     return t;
   };
   for (std::size_t p = 0; p < k; ++p) {
@@ -386,20 +397,27 @@ std::string sweep_svg(const SweepResult& r) {
     ymin -= pad;
     ymax += pad;
     auto sy = [&](double y) { return ptop + (ymax - y) / (ymax - ymin) * ph; };
-    out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"black\"/>\n", left, ptop, pw, ph);
+    out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"black\"/>\n", left,
+                       ptop, pw, ph);
     // The horizontal axis' numbers under the lowest panel only.
     for (const double xv : ticks(xmin, xmax)) {
-      out += fmt::format("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\" stroke=\"black\"/>", sx(xv), ptop + ph, ptop + ph + 5);
-      if (p + 1 == k) out += fmt::format("<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"middle\">{}</text>", sx(xv), ptop + ph + 20, num(xv));
+      out += fmt::format("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{0:.2f}\" y2=\"{2:.2f}\" stroke=\"black\"/>", sx(xv),
+                         ptop + ph, ptop + ph + 5);
+      if (p + 1 == k)
+        out += fmt::format("<text x=\"{:.2f}\" y=\"{:.2f}\" text-anchor=\"middle\">{}</text>", sx(xv), ptop + ph + 20,
+                           num(xv));
       out += "\n";
     }
     for (const double yv : ticks(ymin, ymax))
-      out += fmt::format("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\" stroke=\"black\"/>"
-                         "<text x=\"{3:.2f}\" y=\"{4:.2f}\" text-anchor=\"end\">{5}</text>\n",
-                         left - 5, sy(yv), left, left - 8, sy(yv) + 4, num(yv));
+      out += fmt::format(
+          "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\" stroke=\"black\"/>"
+          "<text x=\"{3:.2f}\" y=\"{4:.2f}\" text-anchor=\"end\">{5}</text>\n",
+          left - 5, sy(yv), left, left - 8, sy(yv) + 4, num(yv));
     if (ymin < 0 && ymax > 0)
-      out += fmt::format("<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\" stroke=\"#999\" stroke-dasharray=\"2,3\"/>\n", left,
-                         sy(0), left + pw);
+      out += fmt::format(
+          "<line x1=\"{0:.2f}\" y1=\"{1:.2f}\" x2=\"{2:.2f}\" y2=\"{1:.2f}\" stroke=\"#999\" "
+          "stroke-dasharray=\"2,3\"/>\n",
+          left, sy(0), left + pw);
     {
       // The y axis says what it shows and in which unit: "y [m]", "N_A, N_B [N]"; curves
       // whose units are unknown say so.
@@ -407,8 +425,9 @@ std::string sweep_svg(const SweepResult& r) {
       for (const std::size_t c : panel) names += (names.empty() ? "" : ", ") + r.names[c];
       const std::string unit = panel_unit(r, panel);
       const std::string title = unit.empty() ? names : names + " [" + unit + "]";
-      out += fmt::format("<text x=\"18\" y=\"{0}\" transform=\"rotate(-90 18 {0})\" text-anchor=\"middle\">{1}</text>\n",
-                         ptop + ph / 2, html_escape(title));
+      out +=
+          fmt::format("<text x=\"18\" y=\"{0}\" transform=\"rotate(-90 18 {0})\" text-anchor=\"middle\">{1}</text>\n",
+                      ptop + ph / 2, html_escape(title));
     }
     for (std::size_t n = 0; n < panel.size(); ++n) {
       const std::size_t c = panel[n];
@@ -416,20 +435,23 @@ std::string sweep_svg(const SweepResult& r) {
       // Runs of points with the same validity: solid where valid, dashed where not.
       for (const Run& run : validity_runs(r, c)) {
         std::string points;
-        for (std::size_t j = run.begin; j < run.end; ++j) points += fmt::format("{:.2f},{:.2f} ", sx(r.x[j]), sy(*r.y[c][j]));
+        for (std::size_t j = run.begin; j < run.end; ++j)
+          points += fmt::format("{:.2f},{:.2f} ", sx(r.x[j]), sy(*r.y[c][j]));
         out += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"2\"{} points=\"{}\"/>\n", colour,
                            run.valid ? "" : " stroke-dasharray=\"6,4\"", points);
       }
       const double ly = ptop + 10 + 20 * static_cast<double>(n);
-      out += fmt::format("<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"2\"/>"
-                         "<text x=\"{}\" y=\"{}\">{}</text>\n",
-                         left + pw + 15, ly, left + pw + 40, ly, colour, left + pw + 45, ly + 4, html_escape(r.names[c]));
+      out += fmt::format(
+          "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{}\" stroke-width=\"2\"/>"
+          "<text x=\"{}\" y=\"{}\">{}</text>\n",
+          left + pw + 15, ly, left + pw + 40, ly, colour, left + pw + 45, ly + 4, html_escape(r.names[c]));
     }
     if (p + 1 == k && any_invalid(r))
-      out += fmt::format("<text x=\"{}\" y=\"{}\" font-size=\"11\">dashed: a validity</text>"
-                         "<text x=\"{}\" y=\"{}\" font-size=\"11\">condition fails</text>\n",
-                         left + pw + 15, ptop + 30 + 20 * static_cast<double>(panel.size()), left + pw + 15,
-                         ptop + 44 + 20 * static_cast<double>(panel.size()));
+      out += fmt::format(
+          "<text x=\"{}\" y=\"{}\" font-size=\"11\">dashed: a validity</text>"
+          "<text x=\"{}\" y=\"{}\" font-size=\"11\">condition fails</text>\n",
+          left + pw + 15, ptop + 30 + 20 * static_cast<double>(panel.size()), left + pw + 15,
+          ptop + 44 + 20 * static_cast<double>(panel.size()));
   }
   out += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", left + pw / 2, H - 15,
                      html_escape(r.x_name + (r.x_unit.empty() ? "" : " [" + r.x_unit + "]")));
@@ -451,17 +473,21 @@ std::string sweep_pgfplots(const SweepResult& r) {
     for (const std::size_t c : panel) names += std::string(names.empty() ? "" : ", ") + "$" + r.latex[c] + "$";
     const std::string unit = panel_unit(r, panel);
     const std::string ylabel = unit.empty() ? names : names + " [$" + unit_latex(unit) + "$]";
-    out += "\\begin{axis}[name=panel" + std::to_string(p) + ", width=0.8\\textwidth, height=" + (k == 1 ? "0.5" : "0.32") + "\\textwidth, " +
-           (p == 0 ? std::string() : "at={(panel" + std::to_string(p - 1) + ".south west)}, anchor=north west, yshift=-0.6cm, ") +
-           (p + 1 == k ? "xlabel={" + xlabel + "}, " : std::string("xticklabels={}, ")) + "ylabel={" + ylabel + "}, " +
-           "legend pos=outer north east, grid=major, scaled x ticks=false, xticklabel style={/pgf/number format/fixed}]\n";
+    out +=
+        "\\begin{axis}[name=panel" + std::to_string(p) + ", width=0.8\\textwidth, height=" + (k == 1 ? "0.5" : "0.32") +
+        "\\textwidth, " +
+        (p == 0 ? std::string()
+                : "at={(panel" + std::to_string(p - 1) + ".south west)}, anchor=north west, yshift=-0.6cm, ") +
+        (p + 1 == k ? "xlabel={" + xlabel + "}, " : std::string("xticklabels={}, ")) + "ylabel={" + ylabel + "}, " +
+        "legend pos=outer north east, grid=major, scaled x ticks=false, xticklabel style={/pgf/number format/fixed}]\n";
     for (const std::size_t c : panel) {
       const std::string colour = colours[c % 6];
       out += "\\addlegendimage{color=" + colour + ", thick}\n\\addlegendentry{$" + r.latex[c] + "$}\n";
       for (const Run& run : validity_runs(r, c)) {
         std::string points;
         for (std::size_t j = run.begin; j < run.end; ++j) points += "(" + num(r.x[j]) + "," + num(*r.y[c][j]) + ") ";
-        out += "\\addplot[color=" + colour + ", thick, forget plot" + (run.valid ? "" : ", dashed") + "] coordinates {" + points + "};\n";
+        out += "\\addplot[color=" + colour + ", thick, forget plot" + (run.valid ? "" : ", dashed") +
+               "] coordinates {" + points + "};\n";
       }
     }
     if (p + 1 == k && any_invalid(r)) out += "\\addlegendimage{empty legend}\n\\addlegendentry{dashed: invalid}\n";
@@ -474,13 +500,17 @@ std::string simulation_text(const Simulation& s) {
   std::string out = s.table.title + "\n";
   out += "Simulated to t = " + decimal_string(numeric(s.reached), 6) + " s (" + std::to_string(s.steps) +
          " steps, Dormand-Prince 5(4))";
-  if (s.complete && s.not_followed.empty()) out += "; the model holds throughout.\n";
-  else if (s.complete) out += "; what it follows holds throughout.\n";
-  else out += ".\n";
+  if (s.complete && s.not_followed.empty())
+    out += "; the model holds throughout.\n";
+  else if (s.complete)
+    out += "; what it follows holds throughout.\n";
+  else
+    out += ".\n";
   for (const auto& [source, why] : s.not_followed) out += "Not followed: " + source + " (" + why + ").\n";
   if (!s.stopped.empty()) out += "Stopped: " + s.stopped + ".\n";
   for (const auto& e : s.events)
-    out += "Event at t = " + decimal_string(numeric(e.t), 6) + " s: " + e.what + (e.ends ? " (the run ends)" : "") + "\n";
+    out +=
+        "Event at t = " + decimal_string(numeric(e.t), 6) + " s: " + e.what + (e.ends ? " (the run ends)" : "") + "\n";
   out += "\n" + sweep_csv(s.table);
   return out;
 }

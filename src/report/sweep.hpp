@@ -15,13 +15,12 @@
 namespace tackle {
 
 struct SweepSpec {
-  std::string vary;                // "h=0:2:41": name=start:end:count, in the parameter's unit
-  std::vector<std::string> fix;    // "l=1", in the parameter's unit
-  std::vector<std::string> plot;   // expressions in the answers and parameters: "N_A - N_B"
-  std::string against;             // "h/l": the horizontal axis, an expression in the parameters
-                                   // (empty: the varied parameter, in its unit)
+  std::string vary;               // "h=0:2:41": name=start:end:count, in the parameter's unit
+  std::vector<std::string> fix;   // "l=1", in the parameter's unit
+  std::vector<std::string> plot;  // expressions in the answers and parameters: "N_A - N_B"
+  std::string against;            // "h/l": the horizontal axis, an expression in the parameters
+                                  // (empty: the varied parameter, in its unit)
 };
-
 
 /// Evaluates the sweep; problems with the spec are located InputErrors (`where` names the
 /// command-line option or the description key).

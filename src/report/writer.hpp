@@ -31,7 +31,9 @@ class Writer {
   /// long (a chain's answers: 88 MB for 2048 blocks) writes it piece by piece, never holding
   /// it whole. By default the text made whole, then written.
   virtual void derivation_to(std::ostream& out, const Derivation& d, bool full) const { out << derivation(d, full); }
-  virtual void phases_to(std::ostream& out, const std::vector<Derivation>& ds, bool full) const { out << phases(ds, full); }
+  virtual void phases_to(std::ostream& out, const std::vector<Derivation>& ds, bool full) const {
+    out << phases(ds, full);
+  }
   // Documents a format may not have (the command line offers only those it has; asking a
   // format for another is a bug, reported as an internal error).
   [[nodiscard]] virtual std::string key(const std::vector<KeyEntry>& entries) const;

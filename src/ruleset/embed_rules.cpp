@@ -38,7 +38,8 @@ std::string literal(std::string_view s) {
 }
 
 std::string dimension(const Dimension& d) {
-  return "Dimension{{" + std::to_string(d.exp[0]) + ", " + std::to_string(d.exp[1]) + ", " + std::to_string(d.exp[2]) + "}}";
+  return "Dimension{{" + std::to_string(d.exp[0]) + ", " + std::to_string(d.exp[1]) + ", " + std::to_string(d.exp[2]) +
+         "}}";
 }
 
 std::string location(const Location& l) {
@@ -62,32 +63,36 @@ std::string maker(const Rule& r) {
   os << "  Rule r;\n";
   os << "  r.type = " << literal(r.type) << ";\n";
   os << "  r.summary = " << literal(r.summary) << ";\n";
-  for (int i = 0; i < 3; ++i) os << "  r.summary_in[" << i << "] = " << literal(r.summary_in[static_cast<std::size_t>(i)]) << ";\n";
+  for (int i = 0; i < 3; ++i)
+    os << "  r.summary_in[" << i << "] = " << literal(r.summary_in[static_cast<std::size_t>(i)]) << ";\n";
   os << "  r.assumes_direction = " << (r.assumes_direction ? "true" : "false") << ";\n";
   os << "  r.two_bodies = " << literal(r.two_bodies) << ";\n";
   for (const auto& g : r.regimes) {
     os << "  r.regimes.push_back(RegimeSpec{" << literal(g.type) << ", {";
-    for (std::size_t i = 0; i < g.args.size(); ++i) os << (i ? ", " : "") << "{" << literal(g.args[i].first) << ", " << literal(g.args[i].second) << "}";
-    os << "}, " << literal(g.turned) << ", " << literal(g.against) << ", " << literal(g.of) << ", " << location(g.at) << "});\n";
+    for (std::size_t i = 0; i < g.args.size(); ++i)
+      os << (i ? ", " : "") << "{" << literal(g.args[i].first) << ", " << literal(g.args[i].second) << "}";
+    os << "}, " << literal(g.turned) << ", " << literal(g.against) << ", " << literal(g.of) << ", " << location(g.at)
+       << "});\n";
   }
   os << "  r.sketch = " << literal(r.sketch) << ";\n";
   for (const auto& a : r.args) {
     os << "  r.args.push_back(ArgSpec{" << literal(a.key) << ", " << enumerator("ArgKind", a.kind) << ", "
-       << (a.dimension ? "std::optional<Dimension>(" + dimension(*a.dimension) + ")" : std::string("std::nullopt")) << ", "
-       << (a.required ? "true" : "false") << ", " << (a.kind_known ? "true" : "false") << "});\n";
+       << (a.dimension ? "std::optional<Dimension>(" + dimension(*a.dimension) + ")" : std::string("std::nullopt"))
+       << ", " << (a.required ? "true" : "false") << ", " << (a.kind_known ? "true" : "false") << "});\n";
   }
   for (const auto& group : r.one_of) os << "  r.one_of.push_back(" << strings(group) << ");\n";
   for (const auto& u : r.unknowns)
     os << "  r.unknowns.push_back(UnknownSpec{" << literal(u.local) << ", " << literal(u.name_template) << ", "
-       << (u.rename_arg ? "std::optional<std::string>(" + literal(*u.rename_arg) + ")" : std::string("std::nullopt")) << ", "
-       << dimension(u.dimension) << ", " << literal(u.when) << "});\n";
+       << (u.rename_arg ? "std::optional<std::string>(" + literal(*u.rename_arg) + ")" : std::string("std::nullopt"))
+       << ", " << dimension(u.dimension) << ", " << literal(u.when) << "});\n";
   for (const auto& l : r.loads)
     os << "  r.loads.push_back(LoadSpec{" << enumerator("LoadSpec::Kind", l.kind) << ", " << literal(l.arg) << ", "
        << literal(l.expr) << ", " << literal(l.at_arg) << ", " << literal(l.couple) << ", " << literal(l.when) << ", "
        << location(l.at) << "});\n";
   for (const auto& c : r.constraints)
-    os << "  r.constraints.push_back(ConstraintSpec{" << enumerator("ConstraintSpec::Kind", c.kind) << ", " << literal(c.arg)
-       << ", " << literal(c.with) << ", " << literal(c.point) << ", " << location(c.at) << ", " << literal(c.along) << "});\n";
+    os << "  r.constraints.push_back(ConstraintSpec{" << enumerator("ConstraintSpec::Kind", c.kind) << ", "
+       << literal(c.arg) << ", " << literal(c.with) << ", " << literal(c.point) << ", " << location(c.at) << ", "
+       << literal(c.along) << "});\n";
   for (const auto& v : r.validity)
     os << "  r.validity.push_back(ValiditySpec{" << literal(v.holds) << ", " << literal(v.meaning) << ", "
        << literal(v.otherwise) << ", " << literal(v.when) << ", " << location(v.at) << "});\n";
@@ -127,12 +132,14 @@ int main(int argc, char** argv) {
       continue;  // read at run time, where its problems are reported
     }
     makers << "Rule make_" << n << "() {\n" << maker(r) << "}\n\n";
-    table << "      {" << literal(f.filename().string()) << ",\n       " << literal(text) << ",\n       &make_" << n << "},\n";
+    table << "      {" << literal(f.filename().string()) << ",\n       " << literal(text) << ",\n       &make_" << n
+          << "},\n";
     ++n;
   }
   std::ostringstream out;
   out << "// Made by tackle_embed_rules (src/ruleset/embed_rules.cpp) from rules/*.yaml at build time.\n"
-      << "#include \"ruleset/builtin_rules.hpp\"\n\n#include <optional>\n#include <string>\n\nnamespace tackle {\n\nnamespace {\n\n"
+      << "#include \"ruleset/builtin_rules.hpp\"\n\n#include <optional>\n#include <string>\n\nnamespace tackle "
+         "{\n\nnamespace {\n\n"
       << makers.str() << "}  // namespace\n\nstd::span<const BuiltinRule> builtin_rules() {\n";
   if (n == 0)
     out << "  return {};\n";

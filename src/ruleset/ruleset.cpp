@@ -68,10 +68,12 @@ namespace {
 
 // A pending rule, read (or made by its builtin); its type must be the one its `type:` line
 // gave.
-Rule read_pending(const std::string& type, const std::string& text, const std::string& file, const BuiltinRule* builtin) {
+Rule read_pending(const std::string& type, const std::string& text, const std::string& file,
+                  const BuiltinRule* builtin) {
   Rule r = builtin ? made_from(*builtin, file) : parse_rule(text, file);
   if (r.type != type)
-    throw InputError({{r.at, "rule type '" + r.type + "' differs from its 'type: " + type + "' line (expected one 'type' key)"}});
+    throw InputError(
+        {{r.at, "rule type '" + r.type + "' differs from its 'type: " + type + "' line (expected one 'type' key)"}});
   return r;
 }
 
@@ -160,19 +162,19 @@ struct RuleReader {
   Diagnostics& diags;
 
   std::optional<ArgKind> kind_of(const Text& t) {
-    static const std::map<std::string, ArgKind> kinds = {{"body", ArgKind::body},   {"point", ArgKind::point},
-                                                         {"points", ArgKind::points}, {"expr", ArgKind::expr},
-                                                         {"name", ArgKind::name},   {"vector", ArgKind::vector},
-                                                         {"moment", ArgKind::moment}};
+    static const std::map<std::string, ArgKind> kinds = {
+        {"body", ArgKind::body}, {"point", ArgKind::point},   {"points", ArgKind::points}, {"expr", ArgKind::expr},
+        {"name", ArgKind::name}, {"vector", ArgKind::vector}, {"moment", ArgKind::moment}};
     if (auto it = kinds.find(t.text); it != kinds.end()) return it->second;
-    diags.error(t.at, "unknown argument kind '" + t.text + "' (expected one of: body, point, points, expr, name, vector, moment)");
+    diags.error(t.at, "unknown argument kind '" + t.text +
+                          "' (expected one of: body, point, points, expr, name, vector, moment)");
     return std::nullopt;
   }
 
   void read_args(const yaml::Node& n, bool required, Rule& r) {
     if (!n.is_map()) {
-      diags.error(where(n, file), "'" + std::string(required ? "needs" : "optional") + "' is " +
-                                      yaml::kind_name(n) + " (expected a mapping of argument names to kinds)");
+      diags.error(where(n, file), "'" + std::string(required ? "needs" : "optional") + "' is " + yaml::kind_name(n) +
+                                      " (expected a mapping of argument names to kinds)");
       return;
     }
     for (const auto& kv : n) {
@@ -196,7 +198,8 @@ struct RuleReader {
         if (auto d = kv.second["dimension"]) {
           if (auto t = scalar(d, "'dimension'", file, diags)) {
             a.dimension = Dimension::from_name(t->text);
-            if (!a.dimension) diags.error(t->at, "unknown dimension '" + t->text + "' (expected force, mass, length, ...)");
+            if (!a.dimension)
+              diags.error(t->at, "unknown dimension '" + t->text + "' (expected force, mass, length, ...)");
           }
         }
       }
@@ -234,7 +237,8 @@ struct RuleReader {
   void check_when(const Rule& r, const std::string& when, const Location& at) {
     if (const auto axes = when_axes(when)) {
       if (std::find(r.dimensions.begin(), r.dimensions.end(), *axes) == r.dimensions.end())
-        diags.error(at, "'when' is '" + when + "', but the rule is not for " + when + " problems (see its 'dimensions')");
+        diags.error(at,
+                    "'when' is '" + when + "', but the rule is not for " + when + " problems (see its 'dimensions')");
       return;
     }
     if (!r.arg(when)) diags.error(at, "'when' names argument '" + when + "', which the rule does not declare");
@@ -271,11 +275,14 @@ struct RuleReader {
         s.against = kv.second["against"] ? kv.second["against"].text() : "";
         s.of = kv.second["of"] ? kv.second["of"].text() : "";
         if (s.against.empty() || s.of.empty())
-          diags.error(s.at, "regime argument '" + key + "' needs 'against' (an unknown of the regime before) and 'of' (a vector argument)");
-        else check_arg_ref(r, s.of, ArgKind::vector, s.at, "a regime");
+          diags.error(s.at, "regime argument '" + key +
+                                "' needs 'against' (an unknown of the regime before) and 'of' (a vector argument)");
+        else
+          check_arg_ref(r, s.of, ArgKind::vector, s.at, "a regime");
       } else {
         s.args.emplace_back(key, kv.second.text());
-        check_arg_ref(r, kv.second.text(), r.arg(kv.second.text()) ? r.arg(kv.second.text())->kind : ArgKind::expr, s.at, "a regime");
+        check_arg_ref(r, kv.second.text(), r.arg(kv.second.text()) ? r.arg(kv.second.text())->kind : ArgKind::expr,
+                      s.at, "a regime");
       }
     }
     if (s.type.empty()) diags.error(s.at, "a regime needs 'type' (the rule the connection becomes)");
@@ -285,8 +292,9 @@ struct RuleReader {
   Rule read(const yaml::Node& root) {
     Rule r;
     r.at = where(root, file);
-    if (!check_map(root, {"type", "summary", "needs", "optional", "one_of", "unknowns", "loads", "constraints",
-                          "validity", "checks", "assumptions", "dimensions", "assumes_direction", "sketch", "two_bodies", "regimes"},
+    if (!check_map(root,
+                   {"type", "summary", "needs", "optional", "one_of", "unknowns", "loads", "constraints", "validity",
+                    "checks", "assumptions", "dimensions", "assumes_direction", "sketch", "two_bodies", "regimes"},
                    "the rule", file, diags))
       return r;
     r.type = need_scalar(root, "type", "the rule");
@@ -295,7 +303,9 @@ struct RuleReader {
         // One text per number of axes.
         if (check_map(s, {"1-D", "2-D", "3-D"}, "'summary'", file, diags))
           for (int k = 1; k <= 3; ++k)
-            if (auto t = s[std::to_string(k) + "-D"]) r.summary_in[k - 1] = scalar(t, "'summary' for " + std::to_string(k) + "-D", file, diags).value_or(Text{}).text;
+            if (auto t = s[std::to_string(k) + "-D"])
+              r.summary_in[k - 1] =
+                  scalar(t, "'summary' for " + std::to_string(k) + "-D", file, diags).value_or(Text{}).text;
         for (const auto& t : r.summary_in)
           if (r.summary.empty() && !t.empty()) r.summary = t;
       } else {
@@ -306,17 +316,21 @@ struct RuleReader {
       if (const auto t = scalar(s, "'two_bodies'", file, diags)) r.two_bodies = t->text;
     if (auto s = root["assumes_direction"]) {
       const auto t = scalar(s, "'assumes_direction'", file, diags);
-      if (t && (t->text == "true" || t->text == "false")) r.assumes_direction = t->text == "true";
-      else if (t) diags.error(t->at, "'assumes_direction' is '" + t->text + "' (expected true or false)");
+      if (t && (t->text == "true" || t->text == "false"))
+        r.assumes_direction = t->text == "true";
+      else if (t)
+        diags.error(t->at, "'assumes_direction' is '" + t->text + "' (expected true or false)");
     }
     if (auto s = root["sketch"]) {
       const auto t = scalar(s, "'sketch'", file, diags);
-      static const std::vector<std::string> kinds{"line", "spring", "damper", "pulley", "support", "arrow", "contact",
-                                                  "surface", "pin", "joint", "rod", "couple"};
-      if (t && std::find(kinds.begin(), kinds.end(), t->text) != kinds.end()) r.sketch = t->text;
+      static const std::vector<std::string> kinds{"line",    "spring",  "damper", "pulley", "support", "arrow",
+                                                  "contact", "surface", "pin",    "joint",  "rod",     "couple"};
+      if (t && std::find(kinds.begin(), kinds.end(), t->text) != kinds.end())
+        r.sketch = t->text;
       else if (t)
         diags.error(t->at, "'sketch' is '" + t->text +
-                               "' (expected line, spring, damper, pulley, support, arrow, contact, surface, pin, joint, rod or couple)");
+                               "' (expected line, spring, damper, pulley, support, arrow, contact, surface, pin, "
+                               "joint, rod or couple)");
     }
     if (auto n = root["needs"]) read_args(n, true, r);
     if (auto n = root["optional"]) read_args(n, false, r);
@@ -326,7 +340,8 @@ struct RuleReader {
         std::vector<std::string> g;
         for (const auto& k : group) {
           g.push_back(k.text());
-          if (!r.arg(g.back())) diags.error(where(k, file), "'one_of' names argument '" + g.back() + "', which the rule does not declare");
+          if (!r.arg(g.back()))
+            diags.error(where(k, file), "'one_of' names argument '" + g.back() + "', which the rule does not declare");
         }
         r.one_of.push_back(g);
       }
@@ -349,7 +364,8 @@ struct RuleReader {
         locals.push_back(a.key);
     if (auto n = root["unknowns"]; n && is_list(n, "'unknowns'", file, diags)) {
       for (const auto& u : n) {
-        if (!check_map(u, {"local", "name", "rename", "dimension", "when"}, "an unknown of the rule", file, diags)) continue;
+        if (!check_map(u, {"local", "name", "rename", "dimension", "when"}, "an unknown of the rule", file, diags))
+          continue;
         UnknownSpec s;
         if (u["when"]) {
           s.when = u["when"].text();
@@ -359,13 +375,16 @@ struct RuleReader {
         s.name_template = need_scalar(u, "name", "an unknown");
         if (auto rn = u["rename"]) {
           s.rename_arg = rn.text();
-          if (!r.arg(*s.rename_arg)) diags.error(where(rn, file), "'rename' names argument '" + *s.rename_arg + "', which the rule does not declare");
+          if (!r.arg(*s.rename_arg))
+            diags.error(where(rn, file),
+                        "'rename' names argument '" + *s.rename_arg + "', which the rule does not declare");
         }
         const std::string dim = need_scalar(u, "dimension", "an unknown");
         if (auto d = Dimension::from_name(dim))
           s.dimension = *d;
         else if (!dim.empty())
-          diags.error(where(u["dimension"], file), "unknown dimension '" + dim + "' (expected force, mass, length, ...)");
+          diags.error(where(u["dimension"], file),
+                      "unknown dimension '" + dim + "' (expected force, mass, length, ...)");
         locals.push_back(s.local);
         r.unknowns.push_back(std::move(s));
       }
@@ -392,8 +411,8 @@ struct RuleReader {
     }
     if (auto n = root["loads"]; n && is_list(n, "'loads'", file, diags)) {
       for (const auto& l : n) {
-        if (!check_map(l, {"on", "along", "from_length", "force", "tension", "at", "couple", "when"}, "a load of the rule", file,
-                       diags))
+        if (!check_map(l, {"on", "along", "from_length", "force", "tension", "at", "couple", "when"},
+                       "a load of the rule", file, diags))
           continue;
         auto kind = which(l, {"on", "along", "from_length"}, "a load");
         if (!kind) continue;
@@ -435,7 +454,8 @@ struct RuleReader {
     }
     if (auto n = root["constraints"]; n && is_list(n, "'constraints'", file, diags)) {
       for (const auto& c : n) {
-        if (!check_map(c, {"length", "length_sum", "still", "together", "with", "rolls", "at", "along", "keeps"}, "a constraint of the rule", file, diags))
+        if (!check_map(c, {"length", "length_sum", "still", "together", "with", "rolls", "at", "along", "keeps"},
+                       "a constraint of the rule", file, diags))
           continue;
         auto kind = which(c, {"length", "length_sum", "still", "together", "rolls", "keeps"}, "a constraint");
         if (!kind) continue;
@@ -467,7 +487,9 @@ struct RuleReader {
           s.kind = ConstraintSpec::Kind::rolls;
           s.point = c["at"] ? c["at"].text() : "";
           s.with = c["along"] ? c["along"].text() : "";
-          if (s.point.empty() || s.with.empty()) diags.error(s.at, "a 'rolls' constraint needs 'at' (the contact point) and 'along' (the rolling direction)");
+          if (s.point.empty() || s.with.empty())
+            diags.error(s.at,
+                        "a 'rolls' constraint needs 'at' (the contact point) and 'along' (the rolling direction)");
           check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
           if (!s.point.empty()) check_arg_ref(r, s.point, ArgKind::point, s.at, "a constraint");
           if (!s.with.empty()) check_arg_ref(r, s.with, ArgKind::vector, s.at, "a constraint");
@@ -495,7 +517,8 @@ struct RuleReader {
         s.otherwise = need_scalar(v, "otherwise", "a validity condition");
         // A rule with a force along a path may state its validity in the path's length too
         // (an elastic cord is taut while its length exceeds its rest length).
-        const bool along = std::any_of(r.loads.begin(), r.loads.end(), [](const LoadSpec& l) { return l.kind == LoadSpec::Kind::along; });
+        const bool along = std::any_of(r.loads.begin(), r.loads.end(),
+                                       [](const LoadSpec& l) { return l.kind == LoadSpec::Kind::along; });
         auto res = parse_relation(s.holds, along ? along_names : names);
         for (const auto& p : res.problems) diags.error(s.at, "in '" + s.holds + "': " + p.message);
         r.validity.push_back(std::move(s));
@@ -503,7 +526,9 @@ struct RuleReader {
     }
     if (auto n = root["checks"]; n && is_list(n, "'checks'", file, diags)) {
       for (const auto& c : n) {
-        if (!check_map(c, {"passes_over", "positive", "steady_at", "across", "to", "when"}, "a check of the rule", file, diags)) continue;
+        if (!check_map(c, {"passes_over", "positive", "steady_at", "across", "to", "when"}, "a check of the rule", file,
+                       diags))
+          continue;
         auto kind = which(c, {"passes_over", "positive", "steady_at", "across"}, "a check");
         if (!kind) continue;
         const CheckSpec::Kind k = *kind == "passes_over" ? CheckSpec::Kind::passes_over
@@ -513,12 +538,15 @@ struct RuleReader {
         CheckSpec s{k, c[*kind].text(), where(c, file), {}, {}};
         if (k == CheckSpec::Kind::across) {
           s.to = c["to"] ? c["to"].text() : "";
-          if (s.to.empty()) diags.error(s.at, "an 'across' check needs 'to' (the vector it is at right angles to)");
-          else check_arg_ref(r, s.to, ArgKind::vector, s.at, "a check");
+          if (s.to.empty())
+            diags.error(s.at, "an 'across' check needs 'to' (the vector it is at right angles to)");
+          else
+            check_arg_ref(r, s.to, ArgKind::vector, s.at, "a check");
         }
-        check_arg_ref(r, s.arg, k == CheckSpec::Kind::positive ? ArgKind::expr
-                                : k == CheckSpec::Kind::across ? ArgKind::vector
-                                                               : ArgKind::point,
+        check_arg_ref(r, s.arg,
+                      k == CheckSpec::Kind::positive ? ArgKind::expr
+                      : k == CheckSpec::Kind::across ? ArgKind::vector
+                                                     : ArgKind::point,
                       s.at, "a check");
         if (c["when"]) {
           s.when = c["when"].text();

@@ -19,7 +19,15 @@
 
 namespace tackle {
 
-enum class ArgKind { body, point, points, expr, name, vector, moment };  // moment: a number in 2-D (about z), a vector in 3-D
+enum class ArgKind {
+  body,
+  point,
+  points,
+  expr,
+  name,
+  vector,
+  moment
+};  // moment: a number in 2-D (about z), a vector in 3-D
 
 struct ArgSpec {
   std::string key;
@@ -38,8 +46,8 @@ struct ArgSpec {
 [[nodiscard]] std::optional<int> when_axes(const std::string& when);
 
 struct UnknownSpec {
-  std::string local;          // name inside the rule's expressions, e.g. T
-  std::string name_template;  // e.g. "T_{name}": {key} is replaced by the argument's text
+  std::string local;                      // name inside the rule's expressions, e.g. T
+  std::string name_template;              // e.g. "T_{name}": {key} is replaced by the argument's text
   std::optional<std::string> rename_arg;  // a `name` argument that overrides the template
   Dimension dimension;
   std::string when;  // see when_axes()
@@ -70,7 +78,7 @@ struct LoadSpec {
 struct ConstraintSpec {
   enum class Kind { length, length_sum, still, together, rolls, keeps } kind;
   std::string arg;
-  std::string with;  // together, keeps: the second body argument; rolls: the rolling direction (a vector)
+  std::string with;   // together, keeps: the second body argument; rolls: the rolling direction (a vector)
   std::string point;  // rolls: the contact point
   Location at;
   std::string along;  // keeps: the direction (a vector argument)
@@ -94,7 +102,7 @@ struct ValiditySpec {
   std::string holds;  // relation over the rule's local names, e.g. "T >= 0"
   std::string meaning;
   std::string otherwise;
-  std::string when;   // an optional argument; the condition applies only when it is given
+  std::string when;  // an optional argument; the condition applies only when it is given
   Location at;
   friend bool operator==(const ValiditySpec&, const ValiditySpec&) = default;
 };

@@ -27,13 +27,15 @@ std::string undetermined_reason(const Answer& a, const SymbolTable& table, const
     return "it depends on " + join(names, ", ") + ", which the constraints leave free (give it in 'given')";
   // A position or velocity other than the one asked for, in a force (a spring at x): the
   // answer holds at any instant once it is given.
-  const bool other = std::none_of(a.missing.begin(), a.missing.end(), [&](const ex& x) { return x.is_equal(a.symbol); });
+  const bool other =
+      std::none_of(a.missing.begin(), a.missing.end(), [&](const ex& x) { return x.is_equal(a.symbol); });
   if (kinematic && other)
     return "it depends on " + join(names, ", ") + " (give " + (names.size() == 1 ? "it" : "them") +
            " in 'given' for the answer at any instant)";
   return "no solved equation gives " + join(names, ", ") +
-         (kinematic ? "; the equations solved are at the acceleration level (balances and constraints differentiated twice)"
-                    : " in terms of the parameters and given quantities");
+         (kinematic
+              ? "; the equations solved are at the acceleration level (balances and constraints differentiated twice)"
+              : " in terms of the parameters and given quantities");
 }
 
 bool has_definition(const ex& e, const SymbolTable& table) {
@@ -71,7 +73,8 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
   // A steady motion's rate and period, unless `find` placed them.
   if (m.steady)
     for (const auto& w : m.steady->reported)
-      if (std::none_of(wanted.begin(), wanted.end(), [&](const Wanted& x) { return x.name == w.name; })) wanted.push_back(w);
+      if (std::none_of(wanted.begin(), wanted.end(), [&](const Wanted& x) { return x.name == w.name; }))
+        wanted.push_back(w);
   // What a closed form may not contain: anything but parameters, defined quantities, time
   // and what is given. At one instant the positions and velocities are the state the balances
   // are written in: known symbols, as a person keeps x in `k (D - x - l_0)/m`. They are
@@ -87,9 +90,10 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
     }
   std::unordered_set<ex, ExHash, ex_is_equal> not_known;
   for (const auto& sym : table.all()) {
-    const bool state = (sym->role == SymbolRole::coordinate && !positions_asked) || (sym->role == SymbolRole::rate && !rates_asked);
-    if (!(sym->role == SymbolRole::parameter || sym->role == SymbolRole::defined || sym->role == SymbolRole::time || state ||
-          contains(m.given, sym->sym)))
+    const bool state =
+        (sym->role == SymbolRole::coordinate && !positions_asked) || (sym->role == SymbolRole::rate && !rates_asked);
+    if (!(sym->role == SymbolRole::parameter || sym->role == SymbolRole::defined || sym->role == SymbolRole::time ||
+          state || contains(m.given, sym->sym)))
       not_known.insert(sym->sym);
   }
   for (const auto& w : wanted) {
@@ -122,7 +126,8 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
       }
       if (!a.zero_divisors.empty()) {
         a.status = Answer::Status::undetermined;
-        a.reason = "its definition " + to_text(w.expr) + " divides by zero (" + to_text(a.zero_divisors[0]) + " = 0 here)";
+        a.reason =
+            "its definition " + to_text(w.expr) + " divides by zero (" + to_text(a.zero_divisors[0]) + " = 0 here)";
         out.answers.push_back(a);
         continue;
       }
@@ -161,9 +166,11 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
           const ex plain = simplest(general);
           if (has_definition(general, table)) {
             ex expanded = general;
-            for (int depth = 0; depth < 8 && has_definition(expanded, table); ++depth) expanded = substituted(expanded, table.definitions());
+            for (int depth = 0; depth < 8 && has_definition(expanded, table); ++depth)
+              expanded = substituted(expanded, table.definitions());
             expanded = fold_definitions(simplest(expanded), table);
-            a.closed_form = to_text(expanded).size() < to_text(plain).size() ? expanded : fold_definitions(plain, table);
+            a.closed_form =
+                to_text(expanded).size() < to_text(plain).size() ? expanded : fold_definitions(plain, table);
           } else {
             // Nothing to put in: the same form twice would cost a second simplification.
             a.closed_form = fold_definitions(plain, table);
@@ -176,7 +183,6 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
               in_parameters = substituted(in_parameters, table.definitions());
             a.in_parameters = simplest(in_parameters);
           }
-
         }
       }
     }
@@ -235,8 +241,9 @@ Answers answer(const Model& m, const EquationSystem& s, const Solution& sol, int
   }
 
   for (const auto& cc : sol.conditions) {
-    ConditionReport r{cc.condition->source, cc.condition->lhs, cc.condition->rhs, cc.condition->op, cc.expr,
-                      std::nullopt, cc.condition->meaning, cc.condition->otherwise, cc.solved, cc.always, cc.depends_on_free};
+    ConditionReport r{cc.condition->source, cc.condition->lhs,     cc.condition->rhs,       cc.condition->op, cc.expr,
+                      std::nullopt,         cc.condition->meaning, cc.condition->otherwise, cc.solved,        cc.always,
+                      cc.depends_on_free};
     if (!cc.depends_on_free) {
       if (auto v = evaluate(cc.expr, table, std::nullopt)) {
         // Exactly when the value is rational, else on its high-precision float.

@@ -42,7 +42,7 @@ struct ConditionReport {
   std::string source;
   GiNaC::ex lhs, rhs;  // as the rule states it (T_s >= 0)
   std::string op;
-  GiNaC::ex simplified;  // closed form, `simplified op 0`
+  GiNaC::ex simplified;       // closed form, `simplified op 0`
   std::optional<bool> holds;  // with the given numbers
   std::string meaning, otherwise;
   std::vector<SolvedFor> solved;  // the condition solved for a parameter, when it can be
@@ -56,8 +56,8 @@ struct ParameterRange {
   GiNaC::ex parameter;
   std::optional<NumericValue> low, high;  // absent: nothing asked on that side
   bool low_strict = false, high_strict = false;
-  std::optional<NumericValue> given;      // the parameter's own value, in the same unit
-  bool empty = false;                     // the bounds exclude each other: no value will do
+  std::optional<NumericValue> given;  // the parameter's own value, in the same unit
+  bool empty = false;                 // the bounds exclude each other: no value will do
 };
 
 struct CombinationReport {
@@ -81,7 +81,8 @@ struct Answers {
 
 /// Why an undetermined answer is not determined, with each missing quantity as "{}" when
 /// `placeholders` (for typeset prose).
-[[nodiscard]] std::string undetermined_reason(const Answer& a, const SymbolTable& table, const Solution& sol, bool placeholders);
+[[nodiscard]] std::string undetermined_reason(const Answer& a, const SymbolTable& table, const Solution& sol,
+                                              bool placeholders);
 
 [[nodiscard]] bool has_definition(const GiNaC::ex& e, const SymbolTable& table);
 /// An expression with each defined parameter folded back in where that is shorter

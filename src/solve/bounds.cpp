@@ -78,7 +78,8 @@ bool narrow(ParameterRange& r, const ConditionReport& c, const Names& names, boo
   if (c.always == true) return true;
   if (names.through_definitions.count(r.parameter) != 0) return false;  // it moves a defined name too
   if (names.direct.count(r.parameter) == 0) return c.holds == true;     // p cannot mend it
-  const auto f = std::find_if(c.solved.begin(), c.solved.end(), [&](const SolvedFor& x) { return base_of(x.parameter).is_equal(r.parameter); });
+  const auto f = std::find_if(c.solved.begin(), c.solved.end(),
+                              [&](const SolvedFor& x) { return base_of(x.parameter).is_equal(r.parameter); });
   if (f == c.solved.end() || !f->number || f->number->no_value) return false;
   evaluated = evaluated || !is_a<numeric>(f->bound);
   if (f->number->every_value) return true;
@@ -116,7 +117,8 @@ std::vector<ParameterRange> ranges_at_numbers(const std::vector<ConditionReport>
     ParameterRange r;
     r.parameter = p;
     bool known = true, evaluated = false;
-    for (std::size_t i = 0; i < conditions.size() && known; ++i) known = narrow(r, conditions[i], symbols[i], evaluated);
+    for (std::size_t i = 0; i < conditions.size() && known; ++i)
+      known = narrow(r, conditions[i], symbols[i], evaluated);
     if (!known || !evaluated) continue;
     const SymbolInfo* s = table.find(p);
     r.given = evaluate(p, table, s ? s->dimension : std::nullopt, digits, stated_unit(s));

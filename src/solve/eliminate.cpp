@@ -14,7 +14,6 @@
 #include <unordered_map>
 #include <utility>
 
-
 namespace tackle {
 
 using namespace GiNaC;
@@ -45,7 +44,7 @@ ex reduced(const ex& x) {
 struct Work {
   std::vector<Row> a;
   std::vector<ex> b;
-  std::vector<Row> t;  // tracking: original row -> coefficient
+  std::vector<Row> t;                          // tracking: original row -> coefficient
   std::vector<std::set<std::size_t>> rows_of;  // column -> active rows with a nonzero entry
   std::vector<bool> active;
   bool track = false;
@@ -339,8 +338,8 @@ std::pair<Elimination, std::vector<Pivot>> eliminate_symbolically(const SparseSy
 // is not a rational function of symbols; a point where a pivot or an entry's denominator is
 // zero is drawn again (five draws at most).
 std::optional<std::vector<std::vector<std::size_t>>> replayed_combinations(const SparseSystem& s,
-                                                                          const std::vector<Pivot>& order,
-                                                                          const std::vector<std::size_t>& leftover) {
+                                                                           const std::vector<Pivot>& order,
+                                                                           const std::vector<std::size_t>& leftover) {
   const std::size_t n_rows = s.a.size();
   lst entries;
   for (const auto& row : s.a)

@@ -363,8 +363,10 @@ ex simplest(const ex& e) {
   // Keyed by the normal form too: simplest(e) and simplest(normal(e)) are one form, made once.
   const ex n = normal_remembered(e);
   ex out;
-  if (auto it = memory.find(n); it != memory.end()) out = it->second;
-  else out = simplest_uncached(n);
+  if (auto it = memory.find(n); it != memory.end())
+    out = it->second;
+  else
+    out = simplest_uncached(n);
   if (memory.size() >= 4096) memory.clear();
   memory.emplace(e, out);
   memory.emplace(n, out);
@@ -398,8 +400,6 @@ namespace {
 // Zero, also by sin^2 + cos^2 = 1 (closed forms are simplified with it).
 bool zero(const ex& e) { return is_zero_exactly(e); }
 
-
-
 // True when a denominator of `e` (innermost first) vanishes at `point`.
 bool pole_at(const ex& e, const exmap& point) {
   for (const_postorder_iterator it = e.postorder_begin(); it != e.postorder_end(); ++it)
@@ -408,8 +408,6 @@ bool pole_at(const ex& e, const exmap& point) {
       return true;
   return false;
 }
-
-
 
 }  // namespace
 
@@ -732,7 +730,8 @@ std::optional<Solution> solve_level(const Model& model, const std::vector<Equati
     if (std::any_of(equations.begin(), equations.end(),
                     [&](const Equation& e) { return model.symbols->hidden_in_lengths(e.lhs - e.rhs, q); }))
       continue;
-    if (std::any_of(equations.begin(), equations.end(), [&](const Equation& e) { return e.lhs.has(q) || e.rhs.has(q); }))
+    if (std::any_of(equations.begin(), equations.end(),
+                    [&](const Equation& e) { return e.lhs.has(q) || e.rhs.has(q); }))
       unknowns.push_back(q);
   }
   if (unknowns.empty()) return std::nullopt;
@@ -781,7 +780,8 @@ struct RootsPulledOut : map_function {
     bool pulled = false;
     for (int side = 0; side < 2; ++side) {
       const ex factored = factor(nd.op(side));
-      const exvector factors = is_exactly<mul>(factored) ? exvector(factored.begin(), factored.end()) : exvector{factored};
+      const exvector factors =
+          is_exactly<mul>(factored) ? exvector(factored.begin(), factored.end()) : exvector{factored};
       ex side_out = 1, side_in = 1;
       for (const ex& f : factors) {
         ex b = f, k = 1;
@@ -829,7 +829,8 @@ Solution solve(const Model& model, const EquationSystem& s) {
   }
   Solution sol = solve_equations(model.file, s.equations, s.unknowns);
   if (sol.status == Solution::Status::inconsistent) return sol;
-  if (auto r = solve_level(model, s.rate_equations, SymbolRole::rate)) sol.rates = std::make_shared<const Solution>(std::move(*r));
+  if (auto r = solve_level(model, s.rate_equations, SymbolRole::rate))
+    sol.rates = std::make_shared<const Solution>(std::move(*r));
   if (auto r = solve_level(model, s.position_equations, SymbolRole::coordinate))
     sol.positions = std::make_shared<const Solution>(std::move(*r));
   const AcuteAngles acute = acute_angles(model);
@@ -840,8 +841,11 @@ Solution solve(const Model& model, const EquationSystem& s) {
   // in the parameters, and solved for them (v^2 >= -g L cos(theta), not dot(theta)^2 >= ...).
   exmap given_in_parameters;
   for (const auto& g : model.given)
-    if (const SymbolInfo* info = model.symbols->find(g); info && info->definition) given_in_parameters[g] = *info->definition;
-  auto given_put_in = [&](const ex& e) { return given_in_parameters.empty() ? e : substituted(e, given_in_parameters); };
+    if (const SymbolInfo* info = model.symbols->find(g); info && info->definition)
+      given_in_parameters[g] = *info->definition;
+  auto given_put_in = [&](const ex& e) {
+    return given_in_parameters.empty() ? e : substituted(e, given_in_parameters);
+  };
   for (const auto& c : model.conditions) {
     CheckedCondition cc;
     cc.condition = &c;
@@ -875,9 +879,10 @@ Solution solve(const Model& model, const EquationSystem& s) {
       if (!defined_in.empty())
         parameters.erase(std::remove_if(parameters.begin(), parameters.end(),
                                         [&](const ex& p) {
-                                          return std::any_of(defined_in.begin(), defined_in.end(), [&](const SymbolInfo* l) {
-                                            return (l->geometric && l->sym.is_equal(p)) || l->definition->has(p);
-                                          });
+                                          return std::any_of(
+                                              defined_in.begin(), defined_in.end(), [&](const SymbolInfo* l) {
+                                                return (l->geometric && l->sym.is_equal(p)) || l->definition->has(p);
+                                              });
                                         }),
                          parameters.end());
       if (c.op != "=") {

@@ -61,7 +61,7 @@ struct CheckedCondition {
   const Condition* condition = nullptr;
   GiNaC::ex expr;  // lhs - rhs with the solution substituted, simplified; the condition is `expr op 0`
   bool depends_on_free = false;
-  std::optional<bool> always;    // true: holds for every positive value of the parameters; false: never
+  std::optional<bool> always;     // true: holds for every positive value of the parameters; false: never
   std::vector<SolvedFor> solved;  // one per parameter it could be solved for, in parameter order
 };
 
@@ -80,7 +80,7 @@ struct CheckedCondition {
 /// A connection decided at the given numbers (analysis/regimes): the rule tried first and the
 /// one chosen, with what failed and the first one's conditions solved (for the derivation).
 struct RegimeChoice {
-  std::string connection;  // the connection's label in the chosen model ("sliding between at A")
+  std::string connection;     // the connection's label in the chosen model ("sliding between at A")
   std::string first, chosen;  // the rules tried first and chosen (sticking_between, sliding_between)
   // The first regime's conditions that fail at the given numbers (their meanings) ...
   std::vector<std::string> failed;
@@ -93,12 +93,12 @@ struct RegimeChoice {
     std::string meaning;
     GiNaC::ex parameter, bound;
     std::string op;
-    std::string value;  // the bound's number with its unit, or empty
+    std::string value;    // the bound's number with its unit, or empty
     bool failed = false;  // its condition fails at the given numbers
     // The tightest of the bounds on its parameter the same way at the given numbers (the
     // largest lower bound, the smallest upper bound; every bound without a number).
     bool tightest = true;
-    bool coefficient = false;  // on a dimensionless parameter (a friction coefficient)
+    bool coefficient = false;      // on a dimensionless parameter (a friction coefficient)
     std::optional<double> number;  // the bound at the given numbers (SI)
   };
   std::vector<Bound> holds_while;
@@ -119,8 +119,8 @@ struct Solution {
   std::vector<Determined> values;
   std::vector<GiNaC::ex> free;
   std::vector<Combination> combinations;
-  std::vector<std::string> conflicts;                // inconsistent: the equations that conflict
-  std::vector<std::vector<std::string>> redundant;   // groups of equations that depend on each other
+  std::vector<std::string> conflicts;               // inconsistent: the equations that conflict
+  std::vector<std::vector<std::string>> redundant;  // groups of equations that depend on each other
   std::vector<CheckedCondition> conditions;
   GiNaC::exmap general;  // every unknown in terms of the parameters and the free unknowns
   // Velocity and position questions: the constraints' rate (position) equations solved for

@@ -43,8 +43,8 @@ std::string slurp(const fs::path& p) {
 Run run_tackle(const std::string& args, const std::string& cwd = "") {
   const fs::path dir = fs::temp_directory_path() / ("tackle-cli-" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  const std::string cmd = (cwd.empty() ? "" : "cd '" + cwd + "' && ") + std::string(TACKLE_BINARY) + " " + args + " >" + (dir / "out").string() + " 2>" +
-                          (dir / "err").string() + " </dev/null";
+  const std::string cmd = (cwd.empty() ? "" : "cd '" + cwd + "' && ") + std::string(TACKLE_BINARY) + " " + args + " >" +
+                          (dir / "out").string() + " 2>" + (dir / "err").string() + " </dev/null";
   const int status = std::system(cmd.c_str());
   Run r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "out"), slurp(dir / "err")};
   fs::remove_all(dir);
@@ -114,13 +114,15 @@ TEST_CASE("CLI: exit codes: 0 ok, 1 input error, 2 usage", "[cli]") {
   CHECK(missing.err == "no/such/file.yaml: cannot read the file\n");
 }
 
-TEST_CASE("CLI: page writes one self-contained page, a bad endpoint is a usage error, a bad file an input error", "[cli][page]") {
+TEST_CASE("CLI: page writes one self-contained page, a bad endpoint is a usage error, a bad file an input error",
+          "[cli][page]") {
   const Run page = run_tackle("page " + examples + "sample-12.3-two-mass-pulley.yaml --endpoint /tackle");
   CHECK(page.code == 0);
   CHECK(page.out.rfind("<!DOCTYPE html>", 0) == 0);
   CHECK(page.out.find("\"endpoint\":\"/tackle\"") != std::string::npos);
   CHECK(page.out.find("katex.render") != std::string::npos);
-  const Run endpoint = run_tackle("page " + examples + "sample-12.3-two-mass-pulley.yaml --endpoint \"/a; script-src *\"");
+  const Run endpoint =
+      run_tackle("page " + examples + "sample-12.3-two-mass-pulley.yaml --endpoint \"/a; script-src *\"");
   CHECK(endpoint.code == 2);
   CHECK(endpoint.err.find("--endpoint") != std::string::npos);
   CHECK(endpoint.err.find("';'") != std::string::npos);
@@ -133,7 +135,8 @@ TEST_CASE("CLI: page writes one self-contained page, a bad endpoint is a usage e
 // Only the subcommand named gets its options defined (start-up): what each one accepts and
 // says must not depend on that.
 TEST_CASE("CLI: each subcommand's options are there whichever way it is named", "[cli]") {
-  for (const std::string prefix : {"", "--rules " TACKLE_SOURCE_DIR "/rules ", "--rules=" TACKLE_SOURCE_DIR "/rules "}) {
+  for (const std::string prefix :
+       {"", "--rules " TACKLE_SOURCE_DIR "/rules ", "--rules=" TACKLE_SOURCE_DIR "/rules "}) {
     const Run help = run_tackle(prefix + "check --help");
     CHECK(help.code == 0);
     CHECK(help.out.find("--require-simplified") != std::string::npos);
@@ -254,9 +257,11 @@ TEST_CASE("CLI: isolate finds axis OG for the sign-board's rod, with usage and i
   CHECK(run_tackle("isolate " + examples + "sample-12.8-sign-board.yaml T_HI --all").code == 2);
   const Run bad = run_tackle("isolate " + examples + "sample-12.8-sign-board.yaml T");
   CHECK(bad.code == 1);
-  CHECK(bad.err == examples + "sample-12.8-sign-board.yaml: 'T' is not an unknown of this problem (unknowns: O_x, O_y, "
-                              "O_z, G_x, G_y, G_z, T_HI)\n");
-  const auto j = nlohmann::json::parse(run_tackle("isolate " + examples + "sample-12.9-indeterminate.yaml --all --format json").out);
+  CHECK(bad.err == examples +
+                       "sample-12.8-sign-board.yaml: 'T' is not an unknown of this problem (unknowns: O_x, O_y, "
+                       "O_z, G_x, G_y, G_z, T_HI)\n");
+  const auto j = nlohmann::json::parse(
+      run_tackle("isolate " + examples + "sample-12.9-indeterminate.yaml --all --format json").out);
   REQUIRE(j["isolations"].size() == 7);
   CHECK(j["isolations"][1]["unknown"] == "O_y");
   CHECK(j["isolations"][1]["found"] == false);
@@ -267,8 +272,9 @@ TEST_CASE("CLI: check one answer, as text and JSON, and usage errors exit 2", "[
   const std::string board = examples + "sample-12.8-sign-board.yaml";
   Run r = run_tackle("check " + board + " --unknown T_HI --answer 'm*a*sqrt(b^2+d^2+e^2)/d'");
   CHECK(r.code == 0);
-  CHECK(r.out == "incorrect: off by a factor of 2 (the answer is twice the correct answer)\n"
-                 "  read as: a*m*sqrt(b^2 + d^2 + e^2)/d\n");
+  CHECK(r.out ==
+        "incorrect: off by a factor of 2 (the answer is twice the correct answer)\n"
+        "  read as: a*m*sqrt(b^2 + d^2 + e^2)/d\n");
   r = run_tackle("check " + board + " --unknown T_HI --answer '1.53 lbf' --format json");
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["version"] == 1);
@@ -284,18 +290,21 @@ TEST_CASE("CLI: check a free body diagram, as text and JSON, bad diagrams exit 1
   const fs::path dir = fs::temp_directory_path() / ("tackle-fbd-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   // By hand (sample 12.3): three strands of the string pull B toward C, along -x.
-  std::ofstream(dir / "b.yaml") << "body: B\nforces:\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [-1]}\n";
+  std::ofstream(dir / "b.yaml")
+      << "body: B\nforces:\n  - {name: T, at: pB, direction: [-1]}\n  - {name: T, at: pB, direction: [-1]}\n";
   std::ofstream(dir / "bad.yaml") << "body: B\nforces:\n  - {name: T, at: pQ, direction: [-1, 0]}\n";
   std::ofstream(dir / "rubric.yaml") << "fbd: {extra: 2, weights: {T: 2}}\n";
   const std::string pulley = examples + "sample-12.3-two-mass-pulley.yaml";
   Run r = run_tackle("check " + pulley + " --fbd " + (dir / "b.yaml").string());
   CHECK(r.code == 0);
-  CHECK(r.out == "free body diagram of B: incorrect: a strand of string s at pB is missing\n"
-                 "  a strand of string s at pB (T): drawn as your T\n"
-                 "  a strand of string s at pB (T): drawn as your T\n"
-                 "  a strand of string s at pB (T): missing\n"
-                 "score: 2 of 3\n");
-  r = run_tackle("check " + pulley + " --fbd " + (dir / "b.yaml").string() + " --rubric " + (dir / "rubric.yaml").string() + " --format json");
+  CHECK(r.out ==
+        "free body diagram of B: incorrect: a strand of string s at pB is missing\n"
+        "  a strand of string s at pB (T): drawn as your T\n"
+        "  a strand of string s at pB (T): drawn as your T\n"
+        "  a strand of string s at pB (T): missing\n"
+        "score: 2 of 3\n");
+  r = run_tackle("check " + pulley + " --fbd " + (dir / "b.yaml").string() + " --rubric " +
+                 (dir / "rubric.yaml").string() + " --format json");
   CHECK(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["verdict"] == "incorrect");
@@ -316,8 +325,8 @@ TEST_CASE("CLI: check a batch into JSON Lines and a grader results file", "[cli]
   fs::create_directories(dir);
   std::ofstream(dir / "subs.jsonl") << "{\"id\": \"a\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/(2*d)\"}\n"
                                     << "{\"id\": \"b\", \"unknown\": \"T_HI\", \"answer\": \"9^(9^9)\"}\n";
-  const Run r = run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + (dir / "subs.jsonl").string() +
-                           " --results " + (dir / "results.json").string());
+  const Run r = run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " +
+                           (dir / "subs.jsonl").string() + " --results " + (dir / "results.json").string());
   CHECK(r.code == 0);
   std::istringstream lines(r.out);
   std::string first, second;
@@ -330,8 +339,9 @@ TEST_CASE("CLI: check a batch into JSON Lines and a grader results file", "[cli]
   CHECK(grader["tests"][0]["score"] == 1);
   CHECK(grader["tests"][1]["score"] == 0);
   // PrairieLearn: the unreadable second answer makes the submission not gradable.
-  const Run pl = run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + (dir / "subs.jsonl").string() +
-                            " --results " + (dir / "pl.json").string() + " --results-format prairielearn --points T_HI=3");
+  const Run pl =
+      run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + (dir / "subs.jsonl").string() +
+                 " --results " + (dir / "pl.json").string() + " --results-format prairielearn --points T_HI=3");
   CHECK(pl.code == 0);
   const auto prairie = nlohmann::json::parse(slurp(dir / "pl.json"));
   CHECK(prairie["gradable"] == false);
@@ -339,12 +349,14 @@ TEST_CASE("CLI: check a batch into JSON Lines and a grader results file", "[cli]
   // The first answer alone is gradable, with its 3 points.
   std::ofstream(dir / "first.jsonl") << "{\"id\": \"a\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/(2*d)\"}\n";
   CHECK(run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + (dir / "first.jsonl").string() +
-                   " --results " + (dir / "pl.json").string() + " --results-format prairielearn --points T_HI=3").code == 0);
+                   " --results " + (dir / "pl.json").string() + " --results-format prairielearn --points T_HI=3")
+            .code == 0);
   const auto gradable = nlohmann::json::parse(slurp(dir / "pl.json"));
   CHECK(gradable["gradable"] == true);
   CHECK(gradable["tests"][0]["points"] == 3);
   CHECK(run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + (dir / "subs.jsonl").string() +
-                   " --points lots").code == 2);
+                   " --points lots")
+            .code == 2);
   CHECK(run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch /no/such.jsonl").code == 1);
   fs::remove_all(dir);
 }
@@ -352,15 +364,16 @@ TEST_CASE("CLI: check a batch into JSON Lines and a grader results file", "[cli]
 TEST_CASE("CLI: sweep writes CSV, SVG and pgfplots, and without a range it is a usage error", "[cli][sweep]") {
   const fs::path dir = fs::temp_directory_path() / "tackle-sweep";
   fs::create_directories(dir);
-  const Run r = run_tackle("sweep " + examples + "figure-12.28-suitcase-normal-forces.yaml --svg " + (dir / "f.svg").string() +
-                           " --pgfplots " + (dir / "f.tex").string());
+  const Run r = run_tackle("sweep " + examples + "figure-12.28-suitcase-normal-forces.yaml --svg " +
+                           (dir / "f.svg").string() + " --pgfplots " + (dir / "f.tex").string());
   CHECK(r.code == 0);
   // The description plots against h/l (l = 1 m): h's column, then the axis'.
   CHECK(r.out.rfind("h [m],h/l,N_A [N],N_B [N],N_A - N_B [N],valid\n0,0,0.5,0.5,0,true\n", 0) == 0);
   CHECK(slurp(dir / "f.tex").find("xlabel={$h/l$}") != std::string::npos);
   // --against on the command line; --vary alone drops the description's axis.
-  CHECK(run_tackle("sweep " + examples + "figure-12.28-suitcase-normal-forces.yaml --vary h=0:1:2 --against 2*h --plot N_A").out ==
-        "h [m],2*h [m],N_A [N],valid\n0,0,0.5,true\n1,2,0,true\n");
+  CHECK(run_tackle("sweep " + examples +
+                   "figure-12.28-suitcase-normal-forces.yaml --vary h=0:1:2 --against 2*h --plot N_A")
+            .out == "h [m],2*h [m],N_A [N],valid\n0,0,0.5,true\n1,2,0,true\n");
   CHECK(run_tackle("sweep " + examples + "figure-12.28-suitcase-normal-forces.yaml --vary h=0:1:2 --plot N_A").out ==
         "h [m],N_A [N],valid\n0,0.5,true\n1,0,true\n");
   CHECK(slurp(dir / "f.svg").find("</svg>") != std::string::npos);
@@ -380,13 +393,15 @@ TEST_CASE("CLI: a velocity the equations do not give is undetermined, never equa
   fs::create_directories(dir);
   const std::string from = "given: [dot(y_B), ddot(y_B)]\nfind: [dot(y_A), ddot(y_A)]\n";
   {
-    std::string text = tackle::test::example_with("sample-12.2-pulley-kinematics.yaml", from, "given: [ddot(y_B)]\nfind: [dot(y_A)]\n");
+    std::string text = tackle::test::example_with("sample-12.2-pulley-kinematics.yaml", from,
+                                                  "given: [ddot(y_B)]\nfind: [dot(y_A)]\n");
     std::ofstream(dir / "v.yaml") << text.substr(0, text.find("expected:"));
   }
   const Run out = run_tackle("solve " + (dir / "v.yaml").string());
   CHECK(out.code == 0);
   CHECK(out.out.find("dot(y_A) = dot(y_A)") == std::string::npos);
-  CHECK(out.out == "dot(y_A): undetermined: it depends on dot(y_B), which the constraints leave free (give it in 'given')\n");
+  CHECK(out.out ==
+        "dot(y_A): undetermined: it depends on dot(y_B), which the constraints leave free (give it in 'given')\n");
   const Run json = run_tackle("solve " + (dir / "v.yaml").string() + " --format json");
   const auto j = nlohmann::json::parse(json.out);
   const auto u = j["unknowns"][0];
@@ -408,9 +423,10 @@ find: [dot(x_A), ddot(x_A)]
   const tackle::Derivation d = tackle::explain(*a);
   REQUIRE(d.answers.size() == 2);
   CHECK(d.answers[0].status == tackle::Answer::Status::undetermined);
-  CHECK(d.answers[0].reason ==
-        "no solved equation gives dot(x_A); the equations solved are at the acceleration level (balances and constraints "
-        "differentiated twice)");
+  CHECK(
+      d.answers[0].reason ==
+      "no solved equation gives dot(x_A); the equations solved are at the acceleration level (balances and constraints "
+      "differentiated twice)");
   REQUIRE(d.answers[1].closed_form);
   CHECK(tackle::to_text(*d.answers[1].closed_form) == "F/m");
 }
@@ -460,7 +476,8 @@ TEST_CASE("CLI: -o and --results are written whole or not at all", "[cli][errors
   const std::string kept = (dir / "kept.txt").string();
   std::ofstream(kept) << "previous contents\n";
   // A failed run leaves the old output as it was, and no temporary file behind.
-  const Run bad = run_tackle(std::string("derive ") + TACKLE_SOURCE_DIR + "/tests/data/bad/02-unknown-key.yaml -o " + kept);
+  const Run bad =
+      run_tackle(std::string("derive ") + TACKLE_SOURCE_DIR + "/tests/data/bad/02-unknown-key.yaml -o " + kept);
   CHECK(bad.code == 1);
   CHECK(slurp(kept) == "previous contents\n");
   // A successful one replaces it.
@@ -473,20 +490,24 @@ TEST_CASE("CLI: -o and --results are written whole or not at all", "[cli][errors
   CHECK(to_dir.err == dir.string() + ": is a directory (expected a file to write)\n");
   // A batch whose results file cannot be made writes neither output.
   const std::string batch = (dir / "b.jsonl").string();
-  std::ofstream(batch) << R"x({"id": "s1", "unknown": "T_HI", "answer": "m*a*l/(2*d)"})x" << "\n";
-  const Run no_results = run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + batch + " -o " +
-                                    (dir / "out.jsonl").string() + " --results " + (dir / "missing" / "r.json").string());
+  std::ofstream(batch) << R"x({"id": "s1", "unknown": "T_HI", "answer": "m*a*l/(2*d)"})x"
+                       << "\n";
+  const Run no_results =
+      run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + batch + " -o " +
+                 (dir / "out.jsonl").string() + " --results " + (dir / "missing" / "r.json").string());
   CHECK(no_results.code == 1);
   CHECK_FALSE(fs::exists(dir / "out.jsonl"));
   std::size_t files = 0;
-  for (const auto& e : fs::directory_iterator(dir)) files += e.path().filename().string().find(".tackle-") != std::string::npos;
+  for (const auto& e : fs::directory_iterator(dir))
+    files += e.path().filename().string().find(".tackle-") != std::string::npos;
   CHECK(files == 0);
   fs::remove_all(dir);
 }
 
 TEST_CASE("CLI: key variants are JSON numbers, and a problem without ranges says it has none", "[cli][key]") {
   const std::string ex = std::string(TACKLE_SOURCE_DIR) + "/examples/";
-  const Run r = run_tackle("key " + ex + "atwood-machine.yaml " + ex + "sample-12.3-two-mass-pulley.yaml --variants 1 --format json");
+  const Run r = run_tackle("key " + ex + "atwood-machine.yaml " + ex +
+                           "sample-12.3-two-mass-pulley.yaml --variants 1 --format json");
   REQUIRE(r.code == 0);
   const auto j = nlohmann::json::parse(r.out);
   CHECK(j["problems"][0]["variants"].empty());
@@ -495,26 +516,31 @@ TEST_CASE("CLI: key variants are JSON numbers, and a problem without ranges says
   CHECK(v["parameters"]["F"]["value"].is_number());
   CHECK(v["parameters"]["F"]["decimal"].is_string());
   CHECK(v["answers"]["T"]["value"].is_number());
-  const Run md = run_tackle("key " + ex + "atwood-machine.yaml " + ex + "sample-12.3-two-mass-pulley.yaml --variants 1");
+  const Run md =
+      run_tackle("key " + ex + "atwood-machine.yaml " + ex + "sample-12.3-two-mass-pulley.yaml --variants 1");
   CHECK(md.out.find("\nNo variants: no parameter of this problem has a `range`.\n") != std::string::npos);
   // None of the problems has a range: the request cannot be met at all.
   const Run none = run_tackle("key " + ex + "atwood-machine.yaml --variants 2");
   CHECK(none.code == 1);
-  CHECK(none.err == ex + "atwood-machine.yaml:1:1: variants were asked for, but no parameter has a 'range' to draw them "
-                         "from (expected, for instance, F: {value: 130, unit: N, range: [100, 160]})\n");
+  CHECK(none.err == ex +
+                        "atwood-machine.yaml:1:1: variants were asked for, but no parameter has a 'range' to draw them "
+                        "from (expected, for instance, F: {value: 130, unit: N, range: [100, 160]})\n");
 }
 
-TEST_CASE("CLI: simulate stops where the blocks of sample 12.4 separate, and writes CSV, SVG and pgfplots", "[cli][motion]") {
+TEST_CASE("CLI: simulate stops where the blocks of sample 12.4 separate, and writes CSV, SVG and pgfplots",
+          "[cli][motion]") {
   const fs::path dir = fs::temp_directory_path() / "tackle-simulate";
   fs::create_directories(dir);
-  const Run r = run_tackle("simulate " + examples + "sample-12.4-stacked-blocks-on-spring.yaml --plot y,N --samples 4 --csv " +
-                           (dir / "m.csv").string() + " --svg " + (dir / "m.svg").string() + " --pgfplots " + (dir / "m.tex").string());
+  const Run r = run_tackle(
+      "simulate " + examples + "sample-12.4-stacked-blocks-on-spring.yaml --plot y,N --samples 4 --csv " +
+      (dir / "m.csv").string() + " --svg " + (dir / "m.svg").string() + " --pgfplots " + (dir / "m.tex").string());
   CHECK(r.code == 0);
   // By hand: y = y_0 cos(lambda t) with lambda = 10 rad/s; N = m (g + y_0 lambda^2 cos(lambda t))
   // reaches 0 at t = acos(-0.654)/10 = 0.228366 s, where y = -g/lambda^2 = -0.0981 m.
-  CHECK(r.out.find("Stopped: the model no longer holds after t = 0.228366 s (contact c: the bodies separate") != std::string::npos);
-  CHECK(r.out.find("Event at t = 0.228366 s: contact c: the bodies separate (the contact would have to pull) (the run ends)\n") !=
+  CHECK(r.out.find("Stopped: the model no longer holds after t = 0.228366 s (contact c: the bodies separate") !=
         std::string::npos);
+  CHECK(r.out.find("Event at t = 0.228366 s: contact c: the bodies separate (the contact would have to pull) (the run "
+                   "ends)\n") != std::string::npos);
   const std::string csv = slurp(dir / "m.csv");
   CHECK(csv.rfind("t [s],y,N,valid\n0,0.15,24.81,true\n0.2,-0.062422,3.5678,true\n0.228366,-0.0981,", 0) == 0);
   CHECK(slurp(dir / "m.svg").find("</svg>") != std::string::npos);
@@ -523,10 +549,12 @@ TEST_CASE("CLI: simulate stops where the blocks of sample 12.4 separate, and wri
   CHECK(run_tackle("simulate " + examples + "sample-12.4-stacked-blocks-on-spring.yaml --until -1").code == 2);
   const Run none = run_tackle("simulate " + examples + "atwood-machine.yaml");
   CHECK(none.code == 1);
-  CHECK(none.err == "--until/--plot: the description has no 'motion' (expected, e.g., motion: {initial: {x: 0, dot(x): 0}})\n");
+  CHECK(none.err ==
+        "--until/--plot: the description has no 'motion' (expected, e.g., motion: {initial: {x: 0, dot(x): 0}})\n");
   const Run bad_plot = run_tackle("simulate " + examples + "sample-12.4-stacked-blocks-on-spring.yaml --plot Q");
   CHECK(bad_plot.code == 1);
-  CHECK(bad_plot.err == "--until/--plot: plot 'Q': unknown name 'Q' (known: m, M, k, g, l_0, y_s, y_0, t, y_m, y, N, lambda, ...)\n");
+  CHECK(bad_plot.err ==
+        "--until/--plot: plot 'Q': unknown name 'Q' (known: m, M, k, g, l_0, y_s, y_0, t, y_m, y, N, lambda, ...)\n");
   fs::remove_all(dir);
 }
 
@@ -549,7 +577,8 @@ TEST_CASE("CLI: a sheet and a key from one seed show the same numbers", "[cli][s
   std::size_t at = 0;
   for (const auto& v : variants) {
     // The statement says "a force $F$ = {F}": the key's F of that variant.
-    const std::string F = v["parameters"]["F"]["decimal"].get<std::string>() + " " + v["parameters"]["F"]["unit"].get<std::string>();
+    const std::string F =
+        v["parameters"]["F"]["decimal"].get<std::string>() + " " + v["parameters"]["F"]["unit"].get<std::string>();
     at = sheet.out.find("a force $F$ = " + F, at);
     CHECK(at != std::string::npos);
   }
@@ -558,18 +587,22 @@ TEST_CASE("CLI: a sheet and a key from one seed show the same numbers", "[cli][s
   CHECK(run_tackle("sheet " + file + " --format markdown").out.find("a force $F$ = 130 N") != std::string::npos);
 }
 
-TEST_CASE("CLI: a problem without a statement is stated from its description, with each variant's numbers", "[cli][sheet]") {
+TEST_CASE("CLI: a problem without a statement is stated from its description, with each variant's numbers",
+          "[cli][sheet]") {
   // The Atwood machine has no 'statement': the sheet names its bodies, connections and given
   // values, the key's numbers per variant, and says once that it wrote the statement.
   const std::string file = examples + "atwood-machine.yaml";
   const Run sheet = run_tackle("sheet " + file + " --format markdown");
   REQUIRE(sheet.code == 0);
-  CHECK(sheet.out.find("Bodies A (mass $m_{A}$), B (mass $m_{B}$) and C (no mass). Connections: fixed body C: ") != std::string::npos);
-  CHECK(sheet.out.find("Given: $m_{A} = 3\\,\\mathrm{kg}$, $m_{B} = 5\\,\\mathrm{kg}$ and $g = 9.81\\,\\mathrm{m/s^{2}}$.") !=
+  CHECK(sheet.out.find("Bodies A (mass $m_{A}$), B (mass $m_{B}$) and C (no mass). Connections: fixed body C: ") !=
         std::string::npos);
-  CHECK(sheet.err == "tackle: warning: " + file +
-                         " has no 'statement'; the sheet states the problem from the description (its bodies, connections and "
-                         "given values)\n");
+  CHECK(sheet.out.find(
+            "Given: $m_{A} = 3\\,\\mathrm{kg}$, $m_{B} = 5\\,\\mathrm{kg}$ and $g = 9.81\\,\\mathrm{m/s^{2}}$.") !=
+        std::string::npos);
+  CHECK(sheet.err ==
+        "tackle: warning: " + file +
+            " has no 'statement'; the sheet states the problem from the description (its bodies, connections and "
+            "given values)\n");
   // With variants: each problem gives its own numbers, as the key draws them.
   const std::string ranged = examples + "sample-12.7-suitcase.yaml";
   const Run key = run_tackle("key " + ranged + " --variants 2 --seed 4 --format json");
@@ -613,7 +646,8 @@ Run run_tackle_to(const std::string& args, const std::string& out, const std::st
   const fs::path err = fs::temp_directory_path() / ("tackle-cli-err-" + std::to_string(::getpid()));
   // The shell's own stderr, where it reports "Segmentation fault" of a process a limit killed,
   // goes nowhere.
-  const std::string cmd = "exec 2>/dev/null; (" + before + std::string(TACKLE_BINARY) + " " + args + ") >" + out + " 2>" + err.string() + " </dev/null";
+  const std::string cmd = "exec 2>/dev/null; (" + before + std::string(TACKLE_BINARY) + " " + args + ") >" + out +
+                          " 2>" + err.string() + " </dev/null";
   const int status = std::system(cmd.c_str());
   Run r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, "", slurp(err)};
   fs::remove(err);
@@ -627,7 +661,8 @@ bool character_device(const char* path) {
 
 std::size_t temporaries_in(const fs::path& dir) {
   std::size_t n = 0;
-  for (const auto& e : fs::directory_iterator(dir)) n += e.path().filename().string().find(".tackle-") != std::string::npos;
+  for (const auto& e : fs::directory_iterator(dir))
+    n += e.path().filename().string().find(".tackle-") != std::string::npos;
   return n;
 }
 
@@ -649,9 +684,11 @@ TEST_CASE("CLI: a write that fails is an error, exit 1: standard output or -o fu
   const fs::path dir = fs::temp_directory_path() / ("tackle-full-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string batch = (dir / "b.jsonl").string();
-  std::ofstream(batch) << R"x({"id": "s1", "unknown": "T_HI", "answer": "m*a*l/(2*d)"})x" << "\n";
-  const Run b = run_tackle_to("check " + examples + "sample-12.8-sign-board.yaml --batch " + batch + " --results " +
-                                  (dir / "r.json").string(), "/dev/full");
+  std::ofstream(batch) << R"x({"id": "s1", "unknown": "T_HI", "answer": "m*a*l/(2*d)"})x"
+                       << "\n";
+  const Run b = run_tackle_to(
+      "check " + examples + "sample-12.8-sign-board.yaml --batch " + batch + " --results " + (dir / "r.json").string(),
+      "/dev/full");
   CHECK(b.code == 1);
   CHECK(b.err == "tackle: cannot write to standard output (No space left on device)\n");
   CHECK_FALSE(fs::exists(dir / "r.json"));
@@ -668,8 +705,10 @@ TEST_CASE("CLI: -o and --results to /dev/null and to a FIFO write into them, nev
   const fs::path dir = fs::temp_directory_path() / ("tackle-devices-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string batch = (dir / "b.jsonl").string();
-  std::ofstream(batch) << R"x({"id": "s1", "unknown": "T_HI", "answer": "m*a*l/(2*d)"})x" << "\n";
-  const Run r = run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + batch + " -o /dev/null --results /dev/null");
+  std::ofstream(batch) << R"x({"id": "s1", "unknown": "T_HI", "answer": "m*a*l/(2*d)"})x"
+                       << "\n";
+  const Run r = run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch " + batch +
+                           " -o /dev/null --results /dev/null");
   CHECK(r.code == 0);
   CHECK(r.err.empty());
   CHECK(character_device("/dev/null"));
@@ -700,7 +739,8 @@ TEST_CASE("CLI: stopped by SIGINT or SIGTERM while grading, tackle leaves no tem
     // files and waits for the next line when the signal comes.
     const std::string board = examples + "sample-12.8-sign-board.yaml", out = (dir / "out.jsonl").string(),
                       results = (dir / "r.json").string();
-    std::vector<std::string> args{TACKLE_BINARY, "check", board, "--batch", fifo.string(), "-o", out, "--results", results};
+    std::vector<std::string> args{TACKLE_BINARY, "check", board,       "--batch", fifo.string(),
+                                  "-o",          out,     "--results", results};
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     argv.push_back(nullptr);
@@ -717,7 +757,8 @@ TEST_CASE("CLI: stopped by SIGINT or SIGTERM while grading, tackle leaves no tem
     posix_spawnattr_destroy(&attr);
     const int writer = ::open(fifo.c_str(), O_WRONLY);  // waits for tackle to open it
     REQUIRE(writer >= 0);
-    const std::string line = R"x({"id": "s1", "unknown": "T_HI", "answer": "m*a*l/(2*d)"})x" "\n";
+    const std::string line = R"x({"id": "s1", "unknown": "T_HI", "answer": "m*a*l/(2*d)"})x"
+                             "\n";
     REQUIRE(::write(writer, line.data(), line.size()) == static_cast<ssize_t>(line.size()));
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     while (temporaries_in(dir) < 2 && std::chrono::steady_clock::now() < deadline)
@@ -736,7 +777,8 @@ TEST_CASE("CLI: stopped by SIGINT or SIGTERM while grading, tackle leaves no tem
   fs::remove_all(dir);
 }
 
-TEST_CASE("CLI: /dev/zero as a description, a rule file or a batch stops at the input limit, exit 1", "[cli][errors][limits]") {
+TEST_CASE("CLI: /dev/zero as a description, a rule file or a batch stops at the input limit, exit 1",
+          "[cli][errors][limits]") {
   const Run d = run_tackle("derive /dev/zero");
   CHECK(d.code == 1);
   CHECK(d.err == "/dev/zero: is longer than 16 MiB (expected a description or rule file of at most 16 MiB)\n");
@@ -745,11 +787,14 @@ TEST_CASE("CLI: /dev/zero as a description, a rule file or a batch stops at the 
   fs::create_symlink("/dev/zero", rules / "zero.yaml");
   const Run r = run_tackle("--rules " + rules.string() + " solve " + examples + "atwood-machine.yaml");
   CHECK(r.code == 1);
-  CHECK(r.err == (rules / "zero.yaml").string() + ": is longer than 16 MiB (expected a description or rule file of at most 16 MiB)\n");
+  CHECK(r.err == (rules / "zero.yaml").string() +
+                     ": is longer than 16 MiB (expected a description or rule file of at most 16 MiB)\n");
   fs::remove_all(rules);
   const Run b = run_tackle("check " + examples + "sample-12.8-sign-board.yaml --batch /dev/zero");
   CHECK(b.code == 1);
-  CHECK(b.err == "/dev/zero:1: the line is longer than 1 MiB (expected JSON Lines: one object with id, unknown and answer per line)\n");
+  CHECK(b.err ==
+        "/dev/zero:1: the line is longer than 1 MiB (expected JSON Lines: one object with id, unknown and answer per "
+        "line)\n");
 }
 
 TEST_CASE("CLI: text from the description reaches Markdown and HTML escaped: no tag of its own", "[cli][sheet]") {
@@ -764,7 +809,8 @@ TEST_CASE("CLI: text from the description reaches Markdown and HTML escaped: no 
   const Run md = run_tackle("sheet --format markdown " + file);
   REQUIRE(md.code == 0);
   CHECK(md.out.find("## Problem 1: Pulled &lt;script&gt;alert(1)&lt;/script&gt;\n") != std::string::npos);
-  CHECK(md.out.find("A force 10 N &lt;img src=x onerror=alert(1)&gt; pulls A; $a\\lt b$ &amp; so on.\n") != std::string::npos);
+  CHECK(md.out.find("A force 10 N &lt;img src=x onerror=alert(1)&gt; pulls A; $a\\lt b$ &amp; so on.\n") !=
+        std::string::npos);
   CHECK(md.out.find("<script") == std::string::npos);  // the sketch of the mechanism is the only HTML
   CHECK(md.out.find("<img") == std::string::npos);
   const Run derived = run_tackle("derive --format markdown " + file);
@@ -775,8 +821,9 @@ TEST_CASE("CLI: text from the description reaches Markdown and HTML escaped: no 
   REQUIRE(html.code == 0);
   CHECK(html.out.find("<script>alert") == std::string::npos);
   CHECK(html.out.find("<img src=x") == std::string::npos);  // KaTeX's own script has "<img "
-  CHECK(html.out.find("A force <span class=\"math\">10\\,\\mathrm{N}</span> &lt;img src=x onerror=alert(1)&gt; pulls A; "
-                      "<span class=\"math\">a&lt;b</span> &amp; so on.") != std::string::npos);
+  CHECK(
+      html.out.find("A force <span class=\"math\">10\\,\\mathrm{N}</span> &lt;img src=x onerror=alert(1)&gt; pulls A; "
+                    "<span class=\"math\">a&lt;b</span> &amp; so on.") != std::string::npos);
   CHECK(html.out.find("Pulled &lt;script&gt;alert(1)&lt;/script&gt;") != std::string::npos);
   // A sweep's SVG plot is titled with it, escaped as well.
   const fs::path svg = dir / "sweep.svg";
@@ -786,7 +833,8 @@ TEST_CASE("CLI: text from the description reaches Markdown and HTML escaped: no 
   fs::remove_all(dir);
 }
 
-TEST_CASE("CLI: out of memory is exit 3 with a message, and leaves no temporary file", "[cli][errors][files][address-space]") {
+TEST_CASE("CLI: out of memory is exit 3 with a message, and leaves no temporary file",
+          "[cli][errors][files][address-space]") {
   // Under each address-space limit from 8 to 40 MB, tackle either finishes, or says it ran
   // out of memory (exit 3) with its output's temporary file removed; or the limit is too
   // small for the program to start at all (then --version dies too, before any of tackle's
@@ -823,19 +871,21 @@ TEST_CASE("CLI: out of memory is exit 3 with a message, and leaves no temporary 
   fs::remove_all(dir);
 }
 
-TEST_CASE("CLI: a batch whose outputs are larger than the memory tackle may use is graded whole", "[cli][batch][limits][address-space]") {
+TEST_CASE("CLI: a batch whose outputs are larger than the memory tackle may use is graded whole",
+          "[cli][batch][limits][address-space]") {
   // 100,000 lines that are not JSON: about 29 MB of results and 14 MB of results file, under
   // a 24 MB address-space limit (tackle itself needs about 11 MB of it): only a batch read,
   // graded and written a line at a time fits.
   const fs::path dir = fs::temp_directory_path() / ("tackle-stream-" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  const std::string batch = (dir / "b.jsonl").string(), out = (dir / "out.jsonl").string(), results = (dir / "r.json").string();
+  const std::string batch = (dir / "b.jsonl").string(), out = (dir / "out.jsonl").string(),
+                    results = (dir / "r.json").string();
   {
     std::ofstream b(batch);
     for (int i = 1; i <= 100000; ++i) b << "not json " << i << "\n";
   }
-  const Run r = run_tackle_to("check " + examples + "sample-12.8-sign-board.yaml --batch " + batch + " -o " + out + " --results " +
-                                  results + " --results-format prairielearn",
+  const Run r = run_tackle_to("check " + examples + "sample-12.8-sign-board.yaml --batch " + batch + " -o " + out +
+                                  " --results " + results + " --results-format prairielearn",
                               "/dev/null", "ulimit -v 24576; exec ");
   REQUIRE(r.code == 0);
   CHECK(r.err.empty());
@@ -898,7 +948,8 @@ TEST_CASE("CLI: the Gradescope example grades each asked unknown once", "[cli][c
   const std::string script = TACKLE_SOURCE_DIR "/examples/gradescope/pulley-tension/run_autograder";
   auto grade = [&](const std::string& answers) {
     std::ofstream(root / "submission/answers.json") << answers;
-    const std::string cmd = "AUTOGRADER='" + root.string() + "' TACKLE='" + TACKLE_BINARY + "' '" + script + "' >/dev/null 2>&1";
+    const std::string cmd =
+        "AUTOGRADER='" + root.string() + "' TACKLE='" + TACKLE_BINARY + "' '" + script + "' >/dev/null 2>&1";
     REQUIRE(std::system(cmd.c_str()) == 0);
     return nlohmann::json::parse(slurp(root / "results/results.json"));
   };
@@ -951,8 +1002,10 @@ TEST_CASE("CLI: the README's first problem gives what the README shows", "[cli][
     std::string line, output;
     std::vector<std::pair<std::string, std::string>> runs;  // command, the output shown
     while (std::getline(lines, line)) {
-      if (line.rfind("$ build/tackle ", 0) == 0) runs.push_back({line.substr(15), ""});
-      else if (!runs.empty() && line != "...") runs.back().second += line + "\n";
+      if (line.rfind("$ build/tackle ", 0) == 0)
+        runs.push_back({line.substr(15), ""});
+      else if (!runs.empty() && line != "...")
+        runs.back().second += line + "\n";
     }
     for (const auto& [args, shown] : runs) {
       INFO(args);
@@ -979,7 +1032,8 @@ TEST_CASE("CLI: the README's first problem gives what the README shows", "[cli][
   fs::remove_all(dir);
 }
 
-TEST_CASE("Docs: every YAML block in the README and docs/ reads as YAML, and a whole description in one derives", "[docs]") {
+TEST_CASE("Docs: every YAML block in the README and docs/ reads as YAML, and a whole description in one derives",
+          "[docs]") {
   // Documentation that cannot drift silently: a block that is a whole description (it starts
   // with a title) is derived; every other block at least reads as YAML.
   std::vector<fs::path> files{fs::path(TACKLE_SOURCE_DIR) / "README.md"};
@@ -993,7 +1047,9 @@ TEST_CASE("Docs: every YAML block in the README and docs/ reads as YAML, and a w
       REQUIRE(close != std::string::npos);
       const std::size_t end = text.rfind('\n', close);
       const std::string block = text.substr(begin, end - begin + 1);
-      const std::size_t line = static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(begin), '\n')) + 1;
+      const std::size_t line =
+          static_cast<std::size_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(begin), '\n')) +
+          1;
       INFO(f.filename().string() << ":" << line);
       tackle::Diagnostics diags;
       (void)tackle::yaml::load(block, f.filename().string(), diags);
@@ -1017,11 +1073,14 @@ TEST_CASE("Docs: every YAML block in the README and docs/ reads as YAML, and a w
   CHECK(derived >= 1);
 }
 
-TEST_CASE("CLI: check --batch --gradebook grades a class of five, the line that cannot be read is that student's invalid", "[cli][check][batch][gradebook]") {
+TEST_CASE(
+    "CLI: check --batch --gradebook grades a class of five, the line that cannot be read is that student's invalid",
+    "[cli][check][batch][gradebook]") {
   const fs::path dir = fs::temp_directory_path() / ("tackle-gradebook-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string data = TACKLE_SOURCE_DIR "/tests/data/gradebook/";
-  const std::string base = "check " + examples + "sample-12.3-two-mass-pulley.yaml --batch " + data + "class.jsonl --points T=2";
+  const std::string base =
+      "check " + examples + "sample-12.3-two-mass-pulley.yaml --batch " + data + "class.jsonl --points T=2";
   const Run plain = run_tackle(base + " --gradebook " + (dir / "grades.csv").string());
   REQUIRE(plain.code == 0);
   CHECK(plain.err.empty());
@@ -1038,20 +1097,24 @@ TEST_CASE("CLI: check --batch --gradebook grades a class of five, the line that 
   for (int k = 0; k < 7; ++k) std::getline(lines, line);
   CHECK(nlohmann::json::parse(line)["verdict"] == "invalid");
 
-  const Run canvas = run_tackle(base + " --gradebook " + (dir / "canvas.csv").string() + " --gradebook-format canvas -o " + (dir / "out.jsonl").string());
+  const Run canvas = run_tackle(base + " --gradebook " + (dir / "canvas.csv").string() +
+                                " --gradebook-format canvas -o " + (dir / "out.jsonl").string());
   REQUIRE(canvas.code == 0);
   CHECK(canvas.out.empty());
-  CHECK(canvas.err == "tackle check: " + (dir / "canvas.csv").string() + ": cy: q1 cannot be graded as typed: its cell is left without a grade\n");
+  CHECK(canvas.err == "tackle check: " + (dir / "canvas.csv").string() +
+                          ": cy: q1 cannot be graded as typed: its cell is left without a grade\n");
   CHECK(slurp(dir / "canvas.csv") == slurp(data + "canvas.csv"));
   CHECK(slurp(dir / "out.jsonl") == without.out);
 
-  const Run moodle = run_tackle(base + " --gradebook " + (dir / "moodle.csv").string() + " --gradebook-format moodle -o /dev/null");
+  const Run moodle =
+      run_tackle(base + " --gradebook " + (dir / "moodle.csv").string() + " --gradebook-format moodle -o /dev/null");
   REQUIRE(moodle.code == 0);
   CHECK(slurp(dir / "moodle.csv") == slurp(data + "moodle.csv"));
   fs::remove_all(dir);
 }
 
-TEST_CASE("CLI: --gradebook: the tutorial's class is tests/data/gradebook/class.jsonl, word for word", "[cli][gradebook][docs]") {
+TEST_CASE("CLI: --gradebook: the tutorial's class is tests/data/gradebook/class.jsonl, word for word",
+          "[cli][gradebook][docs]") {
   const std::string tutorial = slurp(TACKLE_SOURCE_DIR "/docs/tutorial.md");
   const std::string class_file = slurp(TACKLE_SOURCE_DIR "/tests/data/gradebook/class.jsonl");
   CHECK(tutorial.find("Save this as `class.jsonl`:\n\n```json\n" + class_file + "```\n") != std::string::npos);
@@ -1061,7 +1124,8 @@ TEST_CASE("CLI: --gradebook: the tutorial's class is tests/data/gradebook/class.
   CHECK(tutorial.find("$ cat grades.csv\n" + shown + "```\n") != std::string::npos);
 }
 
-TEST_CASE("CLI: --gradebook: a line without a student is an input error and nothing is written, usage errors", "[cli][check][batch][gradebook]") {
+TEST_CASE("CLI: --gradebook: a line without a student is an input error and nothing is written, usage errors",
+          "[cli][check][batch][gradebook]") {
   const fs::path dir = fs::temp_directory_path() / ("tackle-gradebook-errors-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string pulley = examples + "sample-12.3-two-mass-pulley.yaml";
@@ -1071,39 +1135,49 @@ TEST_CASE("CLI: --gradebook: a line without a student is an input error and noth
                        << "\n"
                        << "not json\n"
                        << "{\"student\": \"ben\", \"unknown\": \"T\", \"answer\": \"20 N\"}\n";
-  const std::string outputs = " -o " + (dir / "out.jsonl").string() + " --results " + (dir / "results.json").string() + " --gradebook " +
-                              (dir / "grades.csv").string();
+  const std::string outputs = " -o " + (dir / "out.jsonl").string() + " --results " + (dir / "results.json").string() +
+                              " --gradebook " + (dir / "grades.csv").string();
   const Run r = run_tackle("check " + pulley + " --batch " + batch + outputs);
   CHECK(r.code == 1);
-  CHECK(r.err == batch + ":2: no \"student\" (expected the student's name or id, a string, on every line with --gradebook)\n" + batch +
-                     ":4: the line is not a JSON object, so whose answer it is is not known (expected {\"student\": ..., \"id\": ..., ...} on "
-                     "every line with --gradebook)\n" +
-                     batch + ":5: no \"id\" (expected the question's id on every line with --gradebook)\n");
+  CHECK(r.err ==
+        batch + ":2: no \"student\" (expected the student's name or id, a string, on every line with --gradebook)\n" +
+            batch +
+            ":4: the line is not a JSON object, so whose answer it is is not known (expected {\"student\": ..., "
+            "\"id\": ..., ...} on "
+            "every line with --gradebook)\n" +
+            batch + ":5: no \"id\" (expected the question's id on every line with --gradebook)\n");
   for (const char* name : {"out.jsonl", "results.json", "grades.csv"}) CHECK_FALSE(fs::exists(dir / name));
   // Without --gradebook the same batch is graded as ever (the lines' own verdicts).
   CHECK(run_tackle("check " + pulley + " --batch " + batch + " -o " + (dir / "out.jsonl").string()).code == 0);
 
   // A student's answer that is too long to grade is still that student's, and invalid.
-  std::ofstream(batch) << "{\"student\": \"ada\", \"id\": \"q1\", \"unknown\": \"T\", \"answer\": \"" << std::string(20000, '1') << "\"}\n";
-  const Run long_line = run_tackle("check " + pulley + " --batch " + batch + " -o /dev/null --gradebook " + (dir / "grades.csv").string());
+  std::ofstream(batch) << "{\"student\": \"ada\", \"id\": \"q1\", \"unknown\": \"T\", \"answer\": \""
+                       << std::string(20000, '1') << "\"}\n";
+  const Run long_line = run_tackle("check " + pulley + " --batch " + batch + " -o /dev/null --gradebook " +
+                                   (dir / "grades.csv").string());
   CHECK(long_line.code == 0);
   CHECK(slurp(dir / "grades.csv") == "student,q1,total\r\nada,invalid,0\r\n");
 
   // Usage: --gradebook needs --batch, --gradebook-format needs --gradebook, and only the three layouts.
-  const Run no_batch = run_tackle("check " + pulley + " --unknown T --answer '20 N' --gradebook " + (dir / "g.csv").string());
+  const Run no_batch =
+      run_tackle("check " + pulley + " --unknown T --answer '20 N' --gradebook " + (dir / "g.csv").string());
   CHECK(no_batch.code == 2);
   CHECK(no_batch.err == "tackle check: --gradebook needs --batch\n");
   const Run no_gradebook = run_tackle("check " + pulley + " --batch " + batch + " --gradebook-format canvas");
   CHECK(no_gradebook.code == 2);
   CHECK(no_gradebook.err == "--gradebook-format requires --gradebook\nRun with --help for more information.\n");
-  const Run other = run_tackle("check " + pulley + " --batch " + batch + " --gradebook " + (dir / "g.csv").string() + " --gradebook-format blackboard");
+  const Run other = run_tackle("check " + pulley + " --batch " + batch + " --gradebook " + (dir / "g.csv").string() +
+                               " --gradebook-format blackboard");
   CHECK(other.code == 2);
-  CHECK(other.err == "--gradebook-format: blackboard not in {plain,canvas,moodle}\nRun with --help for more information.\n");
+  CHECK(other.err ==
+        "--gradebook-format: blackboard not in {plain,canvas,moodle}\nRun with --help for more information.\n");
   CHECK_FALSE(fs::exists(dir / "g.csv"));
   fs::remove_all(dir);
 }
 
-TEST_CASE("CLI: check --batch --jobs grades in several processes and writes what one process writes, in the batch's order", "[cli][check][batch]") {
+TEST_CASE(
+    "CLI: check --batch --jobs grades in several processes and writes what one process writes, in the batch's order",
+    "[cli][check][batch]") {
   const fs::path dir = fs::temp_directory_path() / ("tackle-jobs-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   // Every kind of line (answers, equations, diagrams, numbers, params, lines that are not
@@ -1112,8 +1186,9 @@ TEST_CASE("CLI: check --batch --jobs grades in several processes and writes what
   std::string kinds;
   for (const char* seed : {"01-mixed.jsonl", "02-equations.jsonl", "03-poisoned.jsonl"})
     kinds += slurp(fs::path(TACKLE_SOURCE_DIR) / "tests/fuzz/seeds/batch" / seed);
-  kinds += "\n   \n{\"id\": \"f1\", \"fbd\": {\"body\": \"A\", \"forces\": []}}\nnot json\n[1, 2]\n"
-           "{\"id\": \"p\", \"unknown\": \"N_A\", \"answer\": \"30 N\", \"params\": {\"m\": 12}}\n";
+  kinds +=
+      "\n   \n{\"id\": \"f1\", \"fbd\": {\"body\": \"A\", \"forces\": []}}\nnot json\n[1, 2]\n"
+      "{\"id\": \"p\", \"unknown\": \"N_A\", \"answer\": \"30 N\", \"params\": {\"m\": 12}}\n";
   std::size_t lines = 0;
   std::string batch_text;
   while (lines < 10000) {
@@ -1129,8 +1204,8 @@ TEST_CASE("CLI: check --batch --jobs grades in several processes and writes what
       const std::string results = (dir / ("results-" + std::to_string(++run) + ".json")).string();
       // (A generous budget: a line past 250 ms on a busy machine would be undecided in one run
       // and not in another.)
-      const Run r = run_tackle("check " + suitcase + " --seed 1 --time-budget 60000 --batch " + batch + " --results " + results +
-                               " --results-format " + format + jobs);
+      const Run r = run_tackle("check " + suitcase + " --seed 1 --time-budget 60000 --batch " + batch + " --results " +
+                               results + " --results-format " + format + jobs);
       return std::tuple{r.code, r.out, r.err, slurp(results)};
     };
     const auto one = graded("");
@@ -1142,18 +1217,22 @@ TEST_CASE("CLI: check --batch --jobs grades in several processes and writes what
   const std::string pulley = examples + "sample-12.3-two-mass-pulley.yaml";
   const std::string class_batch = TACKLE_SOURCE_DIR "/tests/data/gradebook/class.jsonl";
   for (const std::string jobs : {"1", "4"})
-    CHECK(run_tackle("check " + pulley + " --seed 1 --batch " + class_batch + " -o /dev/null --gradebook " + (dir / ("grades-" + jobs + ".csv")).string() +
-                     " --jobs " + jobs)
+    CHECK(run_tackle("check " + pulley + " --seed 1 --batch " + class_batch + " -o /dev/null --gradebook " +
+                     (dir / ("grades-" + jobs + ".csv")).string() + " --jobs " + jobs)
               .code == 0);
   CHECK(slurp(dir / "grades-1.csv") == slurp(dir / "grades-4.csv"));
   // A line too long to read: the lines before it are graded and written, then the error.
   std::ofstream(batch) << "{\"id\": \"a\", \"unknown\": \"a_C\", \"answer\": \"-mu*g\"}\n{\"id\": \"b\", \"answer\": \""
-                       << std::string(std::size_t{2} << 20, 'x') << "\"}\n{\"id\": \"c\", \"unknown\": \"a_C\", \"answer\": \"mu*g\"}\n";
+                       << std::string(std::size_t{2} << 20, 'x')
+                       << "\"}\n{\"id\": \"c\", \"unknown\": \"a_C\", \"answer\": \"mu*g\"}\n";
   const Run stopped = run_tackle("check " + suitcase + " --batch " + batch + " --jobs 2");
   CHECK(stopped.code == 1);
   CHECK(stopped.out.rfind("{\"id\":\"a\",\"unknown\":\"a_C\",\"answer\":\"-mu*g\",\"verdict\":\"correct\"", 0) == 0);
   CHECK(std::count(stopped.out.begin(), stopped.out.end(), '\n') == 1);
-  CHECK(stopped.err == batch + ":2: the line is longer than 1 MiB (expected JSON Lines: one object with id, unknown and answer per line)\n");
+  CHECK(
+      stopped.err ==
+      batch +
+          ":2: the line is longer than 1 MiB (expected JSON Lines: one object with id, unknown and answer per line)\n");
   // Usage: a number of processes from 0 to 256, with --batch.
   const Run many = run_tackle("check " + suitcase + " --batch " + batch + " --jobs 257");
   CHECK(many.code == 2);

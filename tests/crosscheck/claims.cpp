@@ -59,12 +59,14 @@ void compare_asked(const Claims& c, const ClaimState& s, Outcome& out, std::set<
       continue;
     }
     if (!a.answered) {
-      disagree(out, s, "the answer for " + a.name + ": tackle gives none (" + a.status + "), the model determines it", 0, *model);
+      disagree(out, s, "the answer for " + a.name + ": tackle gives none (" + a.status + "), the model determines it",
+               0, *model);
       continue;
     }
     const auto tk = s.tackle_value(a.value);
     if (!tk) {
-      disagree(out, s, "the answer for " + a.name + ": tackle's closed form is no number here (an unknown inside)", 0, *model);
+      disagree(out, s, "the answer for " + a.name + ": tackle's closed form is no number here (an unknown inside)", 0,
+               *model);
       continue;
     }
     const double scale = std::max(s.force_scale, s.accel_scale);
@@ -89,7 +91,8 @@ std::vector<std::vector<std::size_t>> matched(const Claims& c, const Model& m) {
       if (next_cord < cords.size()) out[r].push_back(cords[next_cord++]);
       continue;
     }
-    std::set<std::string> forces = q.kind == Requirement::cone ? std::set<std::string>{q.force, q.normal} : std::set<std::string>{q.force};
+    std::set<std::string> forces =
+        q.kind == Requirement::cone ? std::set<std::string>{q.force, q.normal} : std::set<std::string>{q.force};
     if (!q.force_too.empty()) forces.insert(q.force_too);  // (a 3-D grip: sqrt(F_1^2 + F_2^2) <= mu N)
     for (std::size_t i = 0; i < c.conditions.size(); ++i)
       if (c.conditions[i].forces == forces) out[r].push_back(i);
@@ -100,7 +103,8 @@ std::vector<std::vector<std::size_t>> matched(const Claims& c, const Model& m) {
 // The model's requirements against tackle's conditions on the same forces: where the model
 // clearly meets one (or clearly fails it), tackle's conditions must all hold (or one fail);
 // a requirement tackle states no condition for is a disagreement.
-void compare_conditions(const Claims& c, const Model& m, const ClaimState& s, Outcome& out, std::set<std::string>& notes) {
+void compare_conditions(const Claims& c, const Model& m, const ClaimState& s, Outcome& out,
+                        std::set<std::string>& notes) {
   const auto margins = m.margins(*s.state, *s.instant);
   const auto groups = matched(c, m);
   for (std::size_t r = 0; r < margins.size(); ++r) {
@@ -111,7 +115,8 @@ void compare_conditions(const Claims& c, const Model& m, const ClaimState& s, Ou
       if (!mg.determined || (mg.requirement->kind != Requirement::taut && !c.solved.count(mg.requirement->force)))
         notes.insert("whether " + mg.requirement->what + " (tackle does not solve for its force)");
       else
-        disagree(out, s, "tackle states no condition for what the model requires: " + mg.requirement->what, 0, mg.value);
+        disagree(out, s, "tackle states no condition for what the model requires: " + mg.requirement->what, 0,
+                 mg.value);
       continue;
     }
     if (!mg.determined || std::abs(mg.value) <= 1e-6 * s.force_scale) continue;  // (not clear either way)
@@ -120,28 +125,36 @@ void compare_conditions(const Claims& c, const Model& m, const ClaimState& s, Ou
     for (std::size_t i : groups[r]) {
       const auto& cond = c.conditions[i];
       const auto v = s.tackle_value(cond.value);
-      if (!v) known = false;
-      else all = all && relation(*v, cond.op);
+      if (!v)
+        known = false;
+      else
+        all = all && relation(*v, cond.op);
       said += (said.empty() ? "" : ", ") + cond.lhs + " " + cond.op + " " + cond.rhs;
       // what tackle states of the given numbers, and of every value of the parameters (of a
       // pair, a grip's F <= mu N and -F <= mu N, one fails where the requirement is not met:
       // the other may hold, even always; the pair as a whole is compared below)
       const bool alone = groups[r].size() == 1 || mg.value > 0;
       if (alone && s.base && cond.holds && *cond.holds != (mg.value > 0))
-        disagree(out, s, fmt::format("condition {} at the given numbers: tackle says it {}, the model: {} {}", cond.lhs + " " + cond.op + " " + cond.rhs,
-                                     *cond.holds ? "holds" : "fails", mg.requirement->what, mg.value > 0 ? "(met)" : "(not met)"),
+        disagree(out, s,
+                 fmt::format("condition {} at the given numbers: tackle says it {}, the model: {} {}",
+                             cond.lhs + " " + cond.op + " " + cond.rhs, *cond.holds ? "holds" : "fails",
+                             mg.requirement->what, mg.value > 0 ? "(met)" : "(not met)"),
                  *cond.holds ? 1 : 0, mg.value);
       if (alone && cond.always && *cond.always != (mg.value > 0))
-        disagree(out, s, fmt::format("condition {}: tackle says it {} holds, the model: {} {}", cond.lhs + " " + cond.op + " " + cond.rhs,
-                                     *cond.always ? "always" : "never", mg.requirement->what, mg.value > 0 ? "(met)" : "(not met)"),
+        disagree(out, s,
+                 fmt::format("condition {}: tackle says it {} holds, the model: {} {}",
+                             cond.lhs + " " + cond.op + " " + cond.rhs, *cond.always ? "always" : "never",
+                             mg.requirement->what, mg.value > 0 ? "(met)" : "(not met)"),
                  *cond.always ? 1 : 0, mg.value);
     }
     if (groups[r].size() > 1 && mg.value < 0) {
       bool every = true;
       for (std::size_t i : groups[r]) every = every && c.conditions[i].always && *c.conditions[i].always;
       if (every)
-        disagree(out, s, fmt::format("conditions {}: tackle says they always hold, the model: {} (not met)", said, mg.requirement->what), 1,
-                 mg.value);
+        disagree(out, s,
+                 fmt::format("conditions {}: tackle says they always hold, the model: {} (not met)", said,
+                             mg.requirement->what),
+                 1, mg.value);
     }
     if (!known) {
       notes.insert("the conditions on " + mg.requirement->what + " (tackle's is no number at some state)");
@@ -149,8 +162,10 @@ void compare_conditions(const Claims& c, const Model& m, const ClaimState& s, Ou
     }
     ++out.compared;
     if (all != (mg.value > 0))
-      disagree(out, s, fmt::format("conditions {} ({}): tackle says {}, the model: {} {}", said, c.conditions[groups[r].front()].source,
-                                   all ? "they hold" : "one fails", mg.requirement->what, mg.value > 0 ? "(met)" : "(not met)"),
+      disagree(out, s,
+               fmt::format("conditions {} ({}): tackle says {}, the model: {} {}", said,
+                           c.conditions[groups[r].front()].source, all ? "they hold" : "one fails",
+                           mg.requirement->what, mg.value > 0 ? "(met)" : "(not met)"),
                all ? 1 : 0, mg.value);
   }
 }
@@ -162,7 +177,10 @@ void compare_substituted(const Claims& c, const ClaimState& s, Outcome& out) {
     const auto l = model_value(cond.lhs, s), r = model_value(cond.rhs, s), v = s.tackle_value(cond.value);
     if (!l || !r || !v || std::abs(*l - *r) <= 1e-6 * s.force_scale) continue;
     if (relation(*l - *r, cond.op) != relation(*v, cond.op))
-      disagree(out, s, fmt::format("condition {} {} {} ({}) with the solution put in", cond.lhs, cond.op, cond.rhs, cond.source), *v, *l - *r);
+      disagree(
+          out, s,
+          fmt::format("condition {} {} {} ({}) with the solution put in", cond.lhs, cond.op, cond.rhs, cond.source), *v,
+          *l - *r);
   }
 }
 
@@ -190,7 +208,8 @@ Claims claims_of(const tackle::Analysis& a, const tackle::Description& d) {
   const tackle::Answers answers = tackle::answer(a.model, a.system, a.solution, 10);
   // What is asked: the description's `find`, else every unknown (as tackle then answers)
   std::vector<std::pair<std::string, std::optional<std::string>>> asked;
-  for (const auto& f : d.find) asked.emplace_back(f.name.text, f.expr ? std::optional<std::string>(f.expr->text) : std::nullopt);
+  for (const auto& f : d.find)
+    asked.emplace_back(f.name.text, f.expr ? std::optional<std::string>(f.expr->text) : std::nullopt);
   if (d.find.empty())
     for (const auto& u : a.model.candidates)
       if (const auto* s = table.find(u)) asked.emplace_back(s->name, std::nullopt);
@@ -206,8 +225,14 @@ Claims claims_of(const tackle::Analysis& a, const tackle::Description& d) {
   }
   for (std::size_t i = 0; i < a.solution.conditions.size(); ++i) {
     const auto& cc = a.solution.conditions[i];
-    Claims::Condition k{cc.condition->source, cc.condition->op, tackle::to_text(cc.condition->lhs), tackle::to_text(cc.condition->rhs),
-                        unknowns_in(cc.condition->lhs - cc.condition->rhs, table), cc.expr, std::nullopt, cc.always};
+    Claims::Condition k{cc.condition->source,
+                        cc.condition->op,
+                        tackle::to_text(cc.condition->lhs),
+                        tackle::to_text(cc.condition->rhs),
+                        unknowns_in(cc.condition->lhs - cc.condition->rhs, table),
+                        cc.expr,
+                        std::nullopt,
+                        cc.always};
     if (i < answers.conditions.size()) k.holds = answers.conditions[i].holds;
     c.conditions.push_back(k);
   }

@@ -22,24 +22,24 @@ namespace crosscheck {
 
 struct Claims {
   struct Asked {
-    std::string name;                // as the description asks it (`find`)
+    std::string name;                 // as the description asks it (`find`)
     std::optional<std::string> expr;  // a quantity defined from the unknowns (F/ddot(x_B)), as text
-    bool answered = false;           // tackle gives a closed form for it
-    GiNaC::ex value;                 // that closed form
-    std::string status;              // why not, when it gives none
+    bool answered = false;            // tackle gives a closed form for it
+    GiNaC::ex value;                  // that closed form
+    std::string status;               // why not, when it gives none
   };
   std::vector<Asked> asked;
   struct Condition {
     std::string source, op;
-    std::string lhs, rhs;             // as the rule states it (T >= 0), in tackle's names
-    std::set<std::string> forces;     // the unknowns it is about
-    GiNaC::ex value;                  // with the solution put in: `value op 0`
-    std::optional<bool> holds;        // at the given numbers
-    std::optional<bool> always;       // for every positive value of the parameters
+    std::string lhs, rhs;          // as the rule states it (T >= 0), in tackle's names
+    std::set<std::string> forces;  // the unknowns it is about
+    GiNaC::ex value;               // with the solution put in: `value op 0`
+    std::optional<bool> holds;     // at the given numbers
+    std::optional<bool> always;    // for every positive value of the parameters
   };
   std::vector<Condition> conditions;
   std::vector<std::pair<std::string, GiNaC::ex>> slips;  // a sliding contact's label, its slip speed
-  std::set<std::string> solved;  // the unknowns tackle determines
+  std::set<std::string> solved;                          // the unknowns tackle determines
 };
 
 /// tackle's claims about a description it solved.

@@ -161,8 +161,8 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
     // a length sum's named constant (C_s in a position answer, x_A = C_s - x_B): its value here
     if (a)
       for (const auto& c : a->system.constraints)
-      if (!c.constant.is_zero() && GiNaC::is_a<GiNaC::symbol>(c.constant))
-        if (auto v = evaluate(written_out(c.quantity, defs), at)) at[c.constant] = GiNaC::numeric(*v);
+        if (!c.constant.is_zero() && GiNaC::is_a<GiNaC::symbol>(c.constant))
+          if (auto v = evaluate(written_out(c.quantity, defs), at)) at[c.constant] = GiNaC::numeric(*v);
     std::map<std::string, double> tk;
     for (const auto& [name, e] : forms.values) {
       if (auto v = evaluate(e, at)) tk[name] = *v;
@@ -203,13 +203,16 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
         if (!model_balanced) model_balanced = where;
       } else {
         model_balanced.reset();
-        out.reason += " (so does the model: at a state where the balances cannot hold without a force the description does not have)";
+        out.reason +=
+            " (so does the model: at a state where the balances cannot hold without a force the description does not "
+            "have)";
         break;
       }
       continue;
     }
     if (inst.residual > 1e-8) {
-      out.disagreements.push_back({"consistency (the model's balances cannot hold at this state)", 0, inst.residual, where});
+      out.disagreements.push_back(
+          {"consistency (the model's balances cannot hold at this state)", 0, inst.residual, where});
       continue;
     }
     for (const auto& q : inst.quantities) {
@@ -228,13 +231,20 @@ Outcome compare(const std::string& text, const std::string& file, const tackle::
         out.disagreements.push_back({q.name, expect, q.value, where});
     }
     // what tackle says beyond its closed forms: every answer asked for, the conditions
-    ClaimState cs{&s, &inst, vals, [&](const GiNaC::ex& e) { return evaluate(written_out(e, defs), at); },
-                  force_scale, accel_scale, &s == &states.front(), where};
+    ClaimState cs{&s,
+                  &inst,
+                  vals,
+                  [&](const GiNaC::ex& e) { return evaluate(written_out(e, defs), at); },
+                  force_scale,
+                  accel_scale,
+                  &s == &states.front(),
+                  where};
     for (const auto& q : inst.quantities) cs.values[q.name] = q.value;
     compare_claims(claims, *model, cs, out, out.not_compared);
   }
   if (model_balanced)
-    out.disagreements.push_back({"consistency (tackle: inconsistent; the model solves the balances at every state)", 1, 0, *model_balanced});
+    out.disagreements.push_back(
+        {"consistency (tackle: inconsistent; the model solves the balances at every state)", 1, 0, *model_balanced});
   if (out.kind != Outcome::Kind::tackle_refused) {
     out.kind = out.disagreements.empty() ? Outcome::Kind::agree : Outcome::Kind::disagree;
     if (o.motion && a && a->motion && out.kind == Outcome::Kind::agree) {

@@ -19,7 +19,9 @@ std::size_t pick(Rng& rng, std::size_t n) { return std::uniform_int_distribution
 bool coin(Rng& rng) { return pick(rng, 2) == 0; }
 
 // An arrow's length carries nothing: a direction times a length from 0.5 to 3.
-Eigen::VectorXd drawn(const Eigen::VectorXd& v, Rng& rng) { return v * std::uniform_real_distribution<double>(0.5, 3.0)(rng); }
+Eigen::VectorXd drawn(const Eigen::VectorXd& v, Rng& rng) {
+  return v * std::uniform_real_distribution<double>(0.5, 3.0)(rng);
+}
 
 // The model's force as a student who knows it draws it: at its point, along its line (its own
 // sense where that is known, either sense otherwise), a force of unknown direction as `any`
@@ -53,7 +55,10 @@ std::string yaml_of(const Diagram& g) {
   std::string forces, couples;
   for (const auto& a : g.arrows) {
     if (a.couple) {
-      couples += fmt::format("  - {{name: {}, sense: {}}}\n", a.name, a.sense > 0 ? "counterclockwise" : a.sense < 0 ? "clockwise" : "any");
+      couples += fmt::format("  - {{name: {}, sense: {}}}\n", a.name,
+                             a.sense > 0   ? "counterclockwise"
+                             : a.sense < 0 ? "clockwise"
+                                           : "any");
       continue;
     }
     std::string dir = "any";
@@ -64,7 +69,8 @@ std::string yaml_of(const Diagram& g) {
     }
     forces += fmt::format("  - {{name: {}, at: {}, direction: {}}}\n", a.name, a.at, dir);
   }
-  return "body: " + g.body + "\n" + (forces.empty() ? "forces: []\n" : "forces:\n" + forces) + (couples.empty() ? "" : "couples:\n" + couples);
+  return "body: " + g.body + "\n" + (forces.empty() ? "forces: []\n" : "forces:\n" + forces) +
+         (couples.empty() ? "" : "couples:\n" + couples);
 }
 
 // The families: how a diagram is made from the right arrows (nothing: it does not apply).
@@ -82,7 +88,8 @@ bool one_arrow(Diagram& g, Rng& rng, const std::function<bool(Arrow&, const Body
   const std::size_t start = pick(rng, g.arrows.size());
   for (std::size_t k = 0; k < g.arrows.size(); ++k) {
     const std::size_t i = (start + k) % g.arrows.size();
-    if (g.arrows[i].force >= 0 && change(g.arrows[i], g.forces[static_cast<std::size_t>(g.arrows[i].force)])) return true;
+    if (g.arrows[i].force >= 0 && change(g.arrows[i], g.forces[static_cast<std::size_t>(g.arrows[i].force)]))
+      return true;
   }
   return false;
 }
@@ -90,8 +97,10 @@ bool one_arrow(Diagram& g, Rng& rng, const std::function<bool(Arrow&, const Body
 bool turned(Diagram& g, const Model&, const State&, Rng& rng) {
   return one_arrow(g, rng, [](Arrow& a, const BodyForce& f) {
     if (a.couple ? f.turn == 0 : !a.direction || !f.sense) return false;
-    if (a.couple) a.sense = -a.sense;
-    else a.direction = -*a.direction;
+    if (a.couple)
+      a.sense = -a.sense;
+    else
+      a.direction = -*a.direction;
     return true;
   });
 }
@@ -150,14 +159,20 @@ struct Family {
   bool meant;
   Change change;
 };
-const Family families[] = {{"right", true, right},          {"right", true, right},         {"dropped", false, dropped},
-                           {"turned", false, turned},        {"tilted", false, tilted_arrow}, {"moved", false, moved},
-                           {"extra-weight", false, extra_weight}, {"extra-force", false, extra_force}};
+const Family families[] = {{"right", true, right},
+                           {"right", true, right},
+                           {"dropped", false, dropped},
+                           {"turned", false, turned},
+                           {"tilted", false, tilted_arrow},
+                           {"moved", false, moved},
+                           {"extra-weight", false, extra_weight},
+                           {"extra-force", false, extra_force}};
 
 // Whether an arrow stands for a force: at its point, along its line (in its sense where that
 // is known), within 5 degrees.
 bool fits(const Arrow& a, const BodyForce& f, const Diagram& g) {
-  if (a.couple || f.couple) return a.couple && f.couple && (f.turn == 0 || a.sense == 0 ? f.turn == 0 : a.sense == f.turn);
+  if (a.couple || f.couple)
+    return a.couple && f.couple && (f.turn == 0 || a.sense == 0 ? f.turn == 0 : a.sense == f.turn);
   if ((g.positions.at(a.at) - g.positions.at(f.at)).norm() > 1e-9 * (1 + g.positions.at(f.at).norm())) return false;
   const double cos_tol = std::cos(5 * std::numbers::pi / 180);
   if (!a.direction) return f.lines.size() > 1;
@@ -174,7 +189,8 @@ bool fits(const Arrow& a, const BodyForce& f, const Diagram& g) {
 
 // Which rows a matching in `fit` (augmenting paths) leaves without a column; rows with
 // `needed` false are not matched at all.
-std::vector<std::size_t> unmatched_rows(const std::vector<std::vector<bool>>& fit, std::size_t columns, const std::vector<bool>& needed) {
+std::vector<std::size_t> unmatched_rows(const std::vector<std::vector<bool>>& fit, std::size_t columns,
+                                        const std::vector<bool>& needed) {
   std::vector<int> row_of(columns, -1);
   const std::function<bool(std::size_t, std::vector<bool>&)> augment = [&](std::size_t i, std::vector<bool>& seen) {
     for (std::size_t j = 0; j < columns; ++j) {
@@ -215,25 +231,29 @@ bool components(const Diagram& g, const BodyForce& f, const std::vector<std::siz
 
 // The first arrow no force takes and the first force no arrow stands for, of those `in` (an
 // arrow's or force's flag), or nothing: a matching one for one.
-std::pair<std::optional<std::size_t>, std::optional<std::size_t>> left_over(const Diagram& g, const std::vector<bool>& arrow_in,
-                                                                             const std::vector<bool>& force_in) {
+std::pair<std::optional<std::size_t>, std::optional<std::size_t>> left_over(const Diagram& g,
+                                                                            const std::vector<bool>& arrow_in,
+                                                                            const std::vector<bool>& force_in) {
   // Right when one matching of arrows to forces takes in every arrow and every force that is
   // not zero (a zero force may be drawn or not). Such a matching exists exactly when one takes
   // in every arrow and one every such force (Mendelsohn-Dulmage): each is found alone.
   const std::size_t na = g.arrows.size(), nf = g.forces.size();
   std::vector<std::vector<bool>> by_arrow(na, std::vector<bool>(nf, false)), by_force(nf, std::vector<bool>(na, false));
   for (std::size_t i = 0; i < na; ++i)
-    for (std::size_t j = 0; j < nf; ++j) by_arrow[i][j] = by_force[j][i] = arrow_in[i] && force_in[j] && fits(g.arrows[i], g.forces[j], g);
+    for (std::size_t j = 0; j < nf; ++j)
+      by_arrow[i][j] = by_force[j][i] = arrow_in[i] && force_in[j] && fits(g.arrows[i], g.forces[j], g);
   std::vector<bool> drawn(nf);
   for (std::size_t j = 0; j < nf; ++j) drawn[j] = force_in[j] && !g.forces[j].zero;
   const auto extra = unmatched_rows(by_arrow, nf, arrow_in);
   const auto missing = unmatched_rows(by_force, na, drawn);
-  return {extra.empty() ? std::nullopt : std::optional(extra.front()), missing.empty() ? std::nullopt : std::optional(missing.front())};
+  return {extra.empty() ? std::nullopt : std::optional(extra.front()),
+          missing.empty() ? std::nullopt : std::optional(missing.front())};
 }
 
 // Whether the diagram is right with each force of unknown direction from `from` on drawn as one
 // arrow or as its components (every group of arrows tried).
-bool right_with_components(const Diagram& g, std::size_t from, std::vector<bool>& arrow_in, std::vector<bool>& force_in) {
+bool right_with_components(const Diagram& g, std::size_t from, std::vector<bool>& arrow_in,
+                           std::vector<bool>& force_in) {
   if (from == g.forces.size()) {
     const auto [extra, missing] = left_over(g, arrow_in, force_in);
     return !extra && !missing;
@@ -246,7 +266,9 @@ bool right_with_components(const Diagram& g, std::size_t from, std::vector<bool>
     std::vector<std::size_t> group;
     for (std::size_t i = 0; i < na; ++i)
       if ((mask >> i) & 1) group.push_back(i);
-    if (std::any_of(group.begin(), group.end(), [&](std::size_t i) { return !arrow_in[i]; }) || !components(g, f, group)) continue;
+    if (std::any_of(group.begin(), group.end(), [&](std::size_t i) { return !arrow_in[i]; }) ||
+        !components(g, f, group))
+      continue;
     for (const std::size_t i : group) arrow_in[i] = false;
     force_in[from] = false;
     const bool right = right_with_components(g, from + 1, arrow_in, force_in);

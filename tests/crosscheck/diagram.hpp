@@ -34,7 +34,7 @@ struct Arrow {
 struct Diagram {
   std::string body;
   std::vector<Arrow> arrows;
-  std::vector<BodyForce> forces;                    // the model's, at the sketch
+  std::vector<BodyForce> forces;                     // the model's, at the sketch
   std::map<std::string, Eigen::VectorXd> positions;  // every named point's and body's there
 };
 

@@ -46,23 +46,32 @@ class Parser {
   }
   bool eat(char c) {
     skip();
-    if (i_ < s_.size() && s_[i_] == c) { ++i_; return true; }
+    if (i_ < s_.size() && s_[i_] == c) {
+      ++i_;
+      return true;
+    }
     return false;
   }
   NodeP sum() {
     NodeP n = product();
     for (;;) {
-      if (eat('+')) n = make(Expr::Node::add, n, product());
-      else if (eat('-')) n = make(Expr::Node::sub, n, product());
-      else return n;
+      if (eat('+'))
+        n = make(Expr::Node::add, n, product());
+      else if (eat('-'))
+        n = make(Expr::Node::sub, n, product());
+      else
+        return n;
     }
   }
   NodeP product() {
     NodeP n = unary();
     for (;;) {
-      if (eat('*')) n = make(Expr::Node::mul, n, unary());
-      else if (eat('/')) n = make(Expr::Node::div, n, unary());
-      else return n;
+      if (eat('*'))
+        n = make(Expr::Node::mul, n, unary());
+      else if (eat('/'))
+        n = make(Expr::Node::div, n, unary());
+      else
+        return n;
     }
   }
   NodeP unary() {
@@ -77,7 +86,10 @@ class Parser {
     // An integer exponent multiplies (a negative base stays real).
     const Expr::Node* en = e.get();
     bool negated = false;
-    if (en->kind == Expr::Node::neg) { negated = true; en = en->l.get(); }
+    if (en->kind == Expr::Node::neg) {
+      negated = true;
+      en = en->l.get();
+    }
     if (en->kind == Expr::Node::num && en->value == static_cast<int>(en->value) && std::abs(en->value) <= 64) {
       auto n = std::make_shared<Expr::Node>();
       n->kind = Expr::Node::ipow;

@@ -25,7 +25,8 @@ namespace crosscheck {
 inline double value_of(double x) { return x; }
 template <class T>
 struct Dual;
-template <class T> double value_of(const Dual<T>& x);
+template <class T>
+double value_of(const Dual<T>& x);
 template <class T>
 struct Dual {
   T a{}, b{};
@@ -33,26 +34,82 @@ struct Dual {
   Dual(double x) : a(x), b(0.0) {}  // NOLINT: numbers mix with duals
   Dual(T x, T y) : a(x), b(y) {}
 };
-template <class T> Dual<T> operator+(const Dual<T>& x, const Dual<T>& y) { return {x.a + y.a, x.b + y.b}; }
-template <class T> Dual<T> operator-(const Dual<T>& x, const Dual<T>& y) { return {x.a - y.a, x.b - y.b}; }
-template <class T> Dual<T> operator-(const Dual<T>& x) { return {-x.a, -x.b}; }
-template <class T> Dual<T> operator*(const Dual<T>& x, const Dual<T>& y) { return {x.a * y.a, x.a * y.b + x.b * y.a}; }
-template <class T> Dual<T> operator/(const Dual<T>& x, const Dual<T>& y) {
+template <class T>
+Dual<T> operator+(const Dual<T>& x, const Dual<T>& y) {
+  return {x.a + y.a, x.b + y.b};
+}
+template <class T>
+Dual<T> operator-(const Dual<T>& x, const Dual<T>& y) {
+  return {x.a - y.a, x.b - y.b};
+}
+template <class T>
+Dual<T> operator-(const Dual<T>& x) {
+  return {-x.a, -x.b};
+}
+template <class T>
+Dual<T> operator*(const Dual<T>& x, const Dual<T>& y) {
+  return {x.a * y.a, x.a * y.b + x.b * y.a};
+}
+template <class T>
+Dual<T> operator/(const Dual<T>& x, const Dual<T>& y) {
   return {x.a / y.a, (x.b * y.a - x.a * y.b) / (y.a * y.a)};
 }
-template <class T> Dual<T>& operator+=(Dual<T>& x, const Dual<T>& y) { return x = x + y; }
-template <class T> Dual<T>& operator-=(Dual<T>& x, const Dual<T>& y) { return x = x - y; }
-template <class T> Dual<T>& operator*=(Dual<T>& x, const Dual<T>& y) { return x = x * y; }
-template <class T> Dual<T> sqrt(const Dual<T>& x) { using std::sqrt; T s = sqrt(x.a); return {s, x.b / (s * T(2.0))}; }
-template <class T> Dual<T> sin(const Dual<T>& x) { using std::sin; using std::cos; return {sin(x.a), x.b * cos(x.a)}; }
-template <class T> Dual<T> cos(const Dual<T>& x) { using std::sin; using std::cos; return {cos(x.a), -(x.b * sin(x.a))}; }
-template <class T> Dual<T> tan(const Dual<T>& x) {
-  using std::cos; using std::tan; T c = cos(x.a); return {tan(x.a), x.b / (c * c)};
+template <class T>
+Dual<T>& operator+=(Dual<T>& x, const Dual<T>& y) {
+  return x = x + y;
 }
-template <class T> Dual<T> exp(const Dual<T>& x) { using std::exp; T e = exp(x.a); return {e, x.b * e}; }
-template <class T> Dual<T> log(const Dual<T>& x) { using std::log; return {log(x.a), x.b / x.a}; }
-template <class T> double value_of(const Dual<T>& x) { return value_of(x.a); }
-template <class T> Dual<T> abs(const Dual<T>& x) { return value_of(x) < 0 ? -x : x; }
+template <class T>
+Dual<T>& operator-=(Dual<T>& x, const Dual<T>& y) {
+  return x = x - y;
+}
+template <class T>
+Dual<T>& operator*=(Dual<T>& x, const Dual<T>& y) {
+  return x = x * y;
+}
+template <class T>
+Dual<T> sqrt(const Dual<T>& x) {
+  using std::sqrt;
+  T s = sqrt(x.a);
+  return {s, x.b / (s * T(2.0))};
+}
+template <class T>
+Dual<T> sin(const Dual<T>& x) {
+  using std::sin;
+  using std::cos;
+  return {sin(x.a), x.b * cos(x.a)};
+}
+template <class T>
+Dual<T> cos(const Dual<T>& x) {
+  using std::sin;
+  using std::cos;
+  return {cos(x.a), -(x.b * sin(x.a))};
+}
+template <class T>
+Dual<T> tan(const Dual<T>& x) {
+  using std::cos;
+  using std::tan;
+  T c = cos(x.a);
+  return {tan(x.a), x.b / (c * c)};
+}
+template <class T>
+Dual<T> exp(const Dual<T>& x) {
+  using std::exp;
+  T e = exp(x.a);
+  return {e, x.b * e};
+}
+template <class T>
+Dual<T> log(const Dual<T>& x) {
+  using std::log;
+  return {log(x.a), x.b / x.a};
+}
+template <class T>
+double value_of(const Dual<T>& x) {
+  return value_of(x.a);
+}
+template <class T>
+Dual<T> abs(const Dual<T>& x) {
+  return value_of(x) < 0 ? -x : x;
+}
 
 using D1 = Dual<double>;
 using D2 = Dual<D1>;
@@ -67,7 +124,9 @@ class Expr {
   static Expr constant(double v);
 
   template <class S>
-  [[nodiscard]] S eval(const std::vector<S>& vars) const { return eval_node<S>(root_.get(), vars); }
+  [[nodiscard]] S eval(const std::vector<S>& vars) const {
+    return eval_node<S>(root_.get(), vars);
+  }
   [[nodiscard]] bool valid() const { return root_ != nullptr; }
   /// Whether the expression reads variable `slot`.
   [[nodiscard]] bool uses(int slot) const;
@@ -90,7 +149,13 @@ class Expr {
   std::shared_ptr<const Node> root_;
   template <class S>
   static S eval_node(const Node* n, const std::vector<S>& v) {
-    using std::sqrt; using std::sin; using std::cos; using std::tan; using std::exp; using std::log; using std::abs;
+    using std::sqrt;
+    using std::sin;
+    using std::cos;
+    using std::tan;
+    using std::exp;
+    using std::log;
+    using std::abs;
     switch (n->kind) {
       case Node::num: return S(n->value);
       case Node::var: return v[static_cast<std::size_t>(n->slot)];

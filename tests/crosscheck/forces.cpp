@@ -48,9 +48,7 @@ void Model::constraint_parts(int body, const Constraint& c, const State& s, std:
   const bool sense = sense_known(c.name);
   const std::string group = c.label + " at ";
   switch (c.kind) {
-    case Constraint::path:
-      strand_parts(body, c.points, c.g_sign, c.label, sense, s, out);
-      break;
+    case Constraint::path: strand_parts(body, c.points, c.g_sign, c.label, sense, s, out); break;
     case Constraint::length_expr: {
       const Body& b = bodies_[static_cast<std::size_t>(body)];
       const Eigen::VectorXd g = cons_derivs(c, s).grad.segment(b.q0, dims_);
@@ -61,7 +59,8 @@ void Model::constraint_parts(int body, const Constraint& c, const State& s, std:
     case Constraint::roll:
       if (c.points[0].body != body) break;
       out.push_back({c.label, group + c.points[0].name, c.points[0].name, c.g_sign * c.dir, sense, false});
-      if (c.mu != 0) out.push_back({c.label + " (its friction)", group + "friction", c.points[0].name, -c.sliding, true, false});
+      if (c.mu != 0)
+        out.push_back({c.label + " (its friction)", group + "friction", c.points[0].name, -c.sliding, true, false});
       break;
     case Constraint::relative:
       for (int side = 0; side < 2; ++side)
@@ -69,13 +68,16 @@ void Model::constraint_parts(int body, const Constraint& c, const State& s, std:
           const double sign = side == 0 ? 1.0 : -1.0;
           out.push_back({c.label, group + c.points[0].name, c.points[0].name, sign * c.dir, sense, false});
           // (sliding between two bodies: the friction against the first's slip, opposite on the other)
-          if (c.mu != 0) out.push_back({c.label + " (its friction)", group + "friction", c.points[0].name, -sign * c.sliding, true, false});
+          if (c.mu != 0)
+            out.push_back(
+                {c.label + " (its friction)", group + "friction", c.points[0].name, -sign * c.sliding, true, false});
         }
       break;
     case Constraint::slide: {
       const Body& o = bodies_[static_cast<std::size_t>(c.other)];
       const Eigen::VectorXd across = o.r0 >= 0 ? turned(c.dir, s.q(o.r0)) : c.dir;
-      if (c.points[0].body == body) out.push_back({c.label, group + c.points[0].name, c.points[0].name, across, false, false});
+      if (c.points[0].body == body)
+        out.push_back({c.label, group + c.points[0].name, c.points[0].name, across, false, false});
       if (c.other == body) out.push_back({c.label, group + c.points[0].name, c.points[0].name, -across, false, false});
       break;
     }
@@ -84,8 +86,7 @@ void Model::constraint_parts(int body, const Constraint& c, const State& s, std:
       if (dims_ != 2) throw Unsupported("a couple in space (" + c.label + ")");
       couples.push_back({c.label, bodies_[static_cast<std::size_t>(body)].name, {}, false, false, true, 0});
       break;
-    default:
-      break;  // (guides: tackle has no such force)
+    default: break;  // (guides: tackle has no such force)
   }
 }
 
@@ -106,7 +107,15 @@ void Model::load_forces(int body, const State& s, std::vector<BodyForce>& out) c
     }
     if (dims_ != 2) throw Unsupported("a couple in space (" + l.label + ")");
     const double m = l.couple[0].eval(vars);
-    out.push_back({l.label, bodies_[static_cast<std::size_t>(body)].name, {}, true, m == 0, true, m > 0 ? 1 : m < 0 ? -1 : 0});
+    out.push_back({l.label,
+                   bodies_[static_cast<std::size_t>(body)].name,
+                   {},
+                   true,
+                   m == 0,
+                   true,
+                   m > 0   ? 1
+                   : m < 0 ? -1
+                           : 0});
   }
 }
 
@@ -123,7 +132,8 @@ std::vector<BodyForce> Model::forces_on(const std::string& name, const State& s)
   for (const auto& c : cons_)
     if (!c.guide) constraint_parts(body, c, s, parts, out);
   for (const auto& e : elements_) {
-    if (e.kind == Element::damper) throw Unsupported("a damper (" + e.label + "): its force depends on the speed, which a sketch does not show");
+    if (e.kind == Element::damper)
+      throw Unsupported("a damper (" + e.label + "): its force depends on the speed, which a sketch does not show");
     const double tension = element_tension(e, s);
     const std::size_t from = parts.size();
     strand_parts(body, e.points, tension < 0 ? 1.0 : -1.0, e.label, true, s, parts);

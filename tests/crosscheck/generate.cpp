@@ -221,8 +221,10 @@ std::string strands_1d(Gen& g) {
     path.clear();
     path.push_back(g.chance(0.5) ? "O" : "p" + names[static_cast<std::size_t>(g.integer(0, nb - 1))]);
     for (int s = 0; s < strands; ++s) {
-      if (path.back() == "O") path.push_back("p" + names[static_cast<std::size_t>(g.integer(0, nb - 1))]);
-      else path.push_back("O");
+      if (path.back() == "O")
+        path.push_back("p" + names[static_cast<std::size_t>(g.integer(0, nb - 1))]);
+      else
+        path.push_back("O");
     }
     if (path.front() != path.back()) break;
   }
@@ -314,7 +316,8 @@ std::string chain_1d(Gen& g) {
     if (kind <= 5 || (prev == "W0" && cur == "W1")) {
       d.param("k_" + tag, g.nice(10, 200), "N/m");
       d.param("l_" + tag, 1 + g.nice(-0.25, 0.25), "m");
-      d.connections.push_back(fmt::format("{{type: spring, path: [{}, {}], k: k_{}, rest_length: l_{}}}", prev, cur, tag, tag));
+      d.connections.push_back(
+          fmt::format("{{type: spring, path: [{}, {}], k: k_{}, rest_length: l_{}}}", prev, cur, tag, tag));
       if (g.chance(0.4)) {
         d.param("c_" + tag, g.nice(0.5, 5), "N*s/m");
         d.connections.push_back(fmt::format("{{type: damper, path: [{}, {}], c: c_{}}}", prev, cur, tag));
@@ -328,8 +331,10 @@ std::string chain_1d(Gen& g) {
     }
     if (cur != "W1") {
       const double x = std::stod(d.layout.back().substr(d.layout.back().find(':') + 1));
-      if (!joined_rigid) independent.emplace_back("x_" + cur, x);
-      else ++rigid;
+      if (!joined_rigid)
+        independent.emplace_back("x_" + cur, x);
+      else
+        ++rigid;
     } else if (joined_rigid && !independent.empty()) {
       // the last block is held by the right wall through rigid joins: one coordinate fewer
       // (the rigid run back to the last free coordinate)
@@ -392,8 +397,9 @@ std::string incline_2d(Gen& g) {
   if (g.chance(0.5)) {
     d.param("mu", g.nice(0.05, 0.4), "");
     const bool down = g.chance(0.5);
-    d.connections.push_back(fmt::format("{{type: sliding, body: A, at: A, normal: [\"-sin(theta)\", \"cos(theta)\"], sliding: {}, mu: mu}}",
-                                        down ? "[\"-cos(theta)\", \"-sin(theta)\"]" : "[\"cos(theta)\", \"sin(theta)\"]"));
+    d.connections.push_back(
+        fmt::format("{{type: sliding, body: A, at: A, normal: [\"-sin(theta)\", \"cos(theta)\"], sliding: {}, mu: mu}}",
+                    down ? "[\"-cos(theta)\", \"-sin(theta)\"]" : "[\"cos(theta)\", \"sin(theta)\"]"));
   } else {
     d.connections.push_back("{type: roller, body: A, at: A, normal: [\"-sin(theta)\", \"cos(theta)\"]}");
   }
@@ -456,8 +462,10 @@ void carts_on_joints(Doc& d, Gen& g, int nb, bool three_d, double first, double 
   for (int i = 0; i < nb; ++i) {
     const std::string b = std::string(1, static_cast<char>('A' + i));
     d.param("m_" + b, g.nice(0.5, 5), "kg");
-    d.bodies.push_back(fmt::format("{}: {{mass: m_{}, position: x_{}, center_of_mass: [x_{}, {}]}}", b, b, b, b, zeros));
-    d.connections.push_back(fmt::format("{{type: roller, body: {}, at: {}, normal: [{}]}}", b, b, three_d ? "0, 0, 1" : "0, 1"));
+    d.bodies.push_back(
+        fmt::format("{}: {{mass: m_{}, position: x_{}, center_of_mass: [x_{}, {}]}}", b, b, b, b, zeros));
+    d.connections.push_back(
+        fmt::format("{{type: roller, body: {}, at: {}, normal: [{}]}}", b, b, three_d ? "0, 0, 1" : "0, 1"));
     d.layout.push_back(fmt::format("x_{}: {}", b, num(first + step * i)));
     if (i == 0) continue;
     // (same_motion asks for no force: the bodies' own balances would contradict it, and
@@ -465,7 +473,8 @@ void carts_on_joints(Doc& d, Gen& g, int nb, bool three_d, double first, double 
     const std::string a = std::string(1, static_cast<char>('A' + i - 1));
     d.param(fmt::format("b_{}", i), g.nice(0.5, 1.5), "m");
     d.points.push_back(fmt::format("H{}: {{on: {}, offset: [\"-b_{}\", {}]}}", i, a, i, zeros));
-    d.connections.push_back(fmt::format("{{type: {}, body: {}, other: {}, at: H{}}}", three_d ? "ball_joint" : "pin_joint", a, b, i));
+    d.connections.push_back(
+        fmt::format("{{type: {}, body: {}, other: {}, at: H{}}}", three_d ? "ball_joint" : "pin_joint", a, b, i));
   }
 }
 
@@ -500,7 +509,8 @@ std::string hoist_3d(Gen& g) {
   d.param("h", g.nice(10, 15), "m");
   d.gravity = "[0, 0, -g]";
   d.bodies.push_back("C: {mass: m, position: z, center_of_mass: [0, 0, z]}");
-  d.connections.push_back("{type: collar, body: C, at: C, across: [1, 0, 0], across_too: [0, 1, 0], force: R_x, force_too: R_y}");
+  d.connections.push_back(
+      "{type: collar, body: C, at: C, across: [1, 0, 0], across_too: [0, 1, 0], force: R_x, force_too: R_y}");
   const int cables = g.integer(1, 2);
   for (int i = 1; i <= cables; ++i) {
     const std::string w = fmt::format("W{}", i);
@@ -508,7 +518,8 @@ std::string hoist_3d(Gen& g) {
     const double a = g.nice(2, 8), b = g.nice(-8, 8);
     d.param(fmt::format("a_{}", i), a, "m");
     d.param(fmt::format("b_{}", i), b, "m");
-    d.bodies.push_back(fmt::format("{}: {{mass: m_{}, position: z_{}, center_of_mass: [a_{}, b_{}, z_{}]}}", w, w, i, i, i, i));
+    d.bodies.push_back(
+        fmt::format("{}: {{mass: m_{}, position: z_{}, center_of_mass: [a_{}, b_{}, z_{}]}}", w, w, i, i, i, i));
     d.points.push_back(fmt::format("P{}: [a_{}, b_{}, h]", i, i, i));
     d.connections.push_back(fmt::format("{{type: pulley, at: P{}}}", i));
     d.strings.push_back(fmt::format("{{name: c{}, path: [C, P{}, {}], tension: T_{}}}", i, i, w, i));
@@ -520,13 +531,13 @@ std::string hoist_3d(Gen& g) {
   return d.text();
 }
 
-
 // The 2-D ring, balanced: block B hangs under pulley P; the string runs over P and P2 to a
 // massless ring R that moves along a line through P2 at an angle, held by a spring along
 // that same line (so the ring can balance).
 std::string ring_2d(Gen& g) {
   Doc d;
-  d.title = "Generated: a hanging block, the string over two pulleys to a massless ring held by a spring along its line";
+  d.title =
+      "Generated: a hanging block, the string over two pulleys to a massless ring held by a spring along its line";
   d.axes = "[x, y]";
   const double mb = g.nice(1, 5), k = g.nice(50, 300), l0 = g.nice(0.5, 1.5);
   const int phi = -g.integer(20, 160);
@@ -630,7 +641,8 @@ std::string lengths_1d(Gen& g) {
     for (int i = k; i < nb; ++i) {
       int c = i == k ? g.integer(1, 3) : g.integer(-3, 3);
       if (c == 0) continue;
-      sum += fmt::format("{}{}*y_{}", sum.empty() ? (c < 0 ? "-" : "") : (c < 0 ? " - " : " + "), std::abs(c), names[static_cast<std::size_t>(i)]);
+      sum += fmt::format("{}{}*y_{}", sum.empty() ? (c < 0 ? "-" : "") : (c < 0 ? " - " : " + "), std::abs(c),
+                         names[static_cast<std::size_t>(i)]);
     }
     d.strings.push_back(fmt::format("{{name: s{}, length: \"{}\", tension: T_{}}}", k + 1, sum, k + 1));
   }
@@ -684,8 +696,10 @@ std::string welds_2d(Gen& g) {
   d.connections.push_back("{type: roller, body: A, at: E1, normal: [0, 1]}");
   d.connections.push_back("{type: roller, body: A, at: E2, normal: [0, 1]}");
   d.points.push_back("S: {on: B, offset: [0, 0]}");
-  if (weld) d.connections.push_back("{type: weld_joint, body: B, other: A, at: S}");
-  else d.connections.push_back("{type: slider_joint, body: B, other: A, at: S, normal: [0, 1]}");
+  if (weld)
+    d.connections.push_back("{type: weld_joint, body: B, other: A, at: S}");
+  else
+    d.connections.push_back("{type: slider_joint, body: B, other: A, at: S, normal: [0, 1]}");
   d.param("F", g.nice(1, 20), "N");
   d.connections.push_back("{type: force, on: B, at: B, force: [F, 0]}");
   if (!weld && g.chance(0.7)) {
@@ -714,7 +728,8 @@ std::vector<std::pair<std::string, double>> pulley_block(Doc& d, Gen& g, const s
   const std::string zeros = up == "z" ? "0, 0" : "0";
   const bool massless = g.chance(0.5);
   if (!massless) d.param("m_Q", g.nice(1, 8), "kg");
-  d.bodies.push_back(fmt::format("Q: {{mass: {}, position: {}_Q, center_of_mass: [{}, {}_Q]}}", massless ? "0" : "m_Q", up, zeros, up));
+  d.bodies.push_back(fmt::format("Q: {{mass: {}, position: {}_Q, center_of_mass: [{}, {}_Q]}}", massless ? "0" : "m_Q",
+                                 up, zeros, up));
   d.layout.push_back(fmt::format("{}_Q: {}", up, num(at)));
   std::vector<std::pair<std::string, double>> independent = {{up + "_Q", at}};
   if (massless || g.chance(0.5)) {
@@ -774,15 +789,19 @@ std::string incline_3d(Gen& g) {
   d.gravity = "[0, 0, -g]";
   const std::string u = "\"cos(theta)*cos(psi)\", \"cos(theta)*sin(psi)\", \"sin(theta)\"";
   const std::string n = "\"-sin(theta)*cos(psi)\", \"-sin(theta)*sin(psi)\", \"cos(theta)\"";
-  d.bodies.push_back("A: {mass: m_A, position: s, center_of_mass: [\"s*cos(theta)*cos(psi)\", \"s*cos(theta)*sin(psi)\", \"s*sin(theta)\"]}");
-  d.bodies.push_back("B: {mass: m_B, position: z_B, center_of_mass: [\"L*cos(theta)*cos(psi)\", \"L*cos(theta)*sin(psi)\", z_B]}");
+  d.bodies.push_back(
+      "A: {mass: m_A, position: s, center_of_mass: [\"s*cos(theta)*cos(psi)\", \"s*cos(theta)*sin(psi)\", "
+      "\"s*sin(theta)\"]}");
+  d.bodies.push_back(
+      "B: {mass: m_B, position: z_B, center_of_mass: [\"L*cos(theta)*cos(psi)\", \"L*cos(theta)*sin(psi)\", z_B]}");
   d.points.push_back("P: [\"L*cos(theta)*cos(psi)\", \"L*cos(theta)*sin(psi)\", \"L*sin(theta)\"]");
   d.connections.push_back("{type: pulley, at: P}");
   if (g.chance(0.5)) {
     d.param("mu", g.nice(0.05, 0.4), "");
     const bool down = g.chance(0.5);
-    d.connections.push_back(fmt::format("{{type: sliding, body: A, at: A, normal: [{}], sliding: [{}], mu: mu}}", n,
-                                        down ? "\"-cos(theta)*cos(psi)\", \"-cos(theta)*sin(psi)\", \"-sin(theta)\"" : u));
+    d.connections.push_back(
+        fmt::format("{{type: sliding, body: A, at: A, normal: [{}], sliding: [{}], mu: mu}}", n,
+                    down ? "\"-cos(theta)*cos(psi)\", \"-cos(theta)*sin(psi)\", \"-sin(theta)\"" : u));
   } else {
     d.connections.push_back(fmt::format("{{type: roller, body: A, at: A, normal: [{}]}}", n));
   }
@@ -861,7 +880,8 @@ std::string drum_2d(Gen& g) {
     d.param("m_B", g.nice(1, 8), "kg");
     d.bodies.push_back("B: {mass: m_B, position: y_B, center_of_mass: [" + r + ", y_B]}");
     d.points.push_back("E: {on: P, offset: [" + r + ", 0], turns: false}");
-    d.strings.push_back(g.chance(0.5) ? "{name: b, path: [B, E], tension: T_B}" : "{name: b, path: [E, B], tension: T_B}");
+    d.strings.push_back(g.chance(0.5) ? "{name: b, path: [B, E], tension: T_B}"
+                                      : "{name: b, path: [E, B], tension: T_B}");
     d.layout.push_back(fmt::format("y_B: {}", num(-g.nice(1.5, 2.5))));
   }
   if (g.chance(0.4)) {
@@ -901,10 +921,12 @@ std::string wheel_2d(Gen& g) {
   d.gravity = "[0, -g]";
   // s along t = (cos, -sin) (down the slope), the center s t + r n, n = (sin, cos)
   d.bodies.push_back(R"~(W: {mass: m, position: s, angle: phi, center_of_mass: ["s*cos(theta) + r*sin(theta)", )~"
-                     R"~("-s*sin(theta) + r*cos(theta)"], )~" + inertia_of(d, g, "W", "r", false) + "}");
+                     R"~("-s*sin(theta) + r*cos(theta)"], )~" +
+                     inertia_of(d, g, "W", "r", false) + "}");
   d.points.push_back(R"~(C: {on: W, offset: ["-r*sin(theta)", "-r*cos(theta)"], turns: false})~");
-  d.connections.push_back(fmt::format(R"~({{type: rolling, body: W, at: C, normal: ["sin(theta)", "cos(theta)"], tangent: {}, mu: mu}})~",
-                                      g.chance(0.5) ? R"~(["-cos(theta)", "sin(theta)"])~" : R"~(["cos(theta)", "-sin(theta)"])~"));
+  d.connections.push_back(
+      fmt::format(R"~({{type: rolling, body: W, at: C, normal: ["sin(theta)", "cos(theta)"], tangent: {}, mu: mu}})~",
+                  g.chance(0.5) ? R"~(["-cos(theta)", "sin(theta)"])~" : R"~(["cos(theta)", "-sin(theta)"])~"));
   if (g.chance(0.4)) {
     d.param("F", g.nice(-10, 10), "N");
     d.connections.push_back("{type: force, on: W, at: W, force: [F, 0]}");
@@ -947,8 +969,15 @@ std::string pivot_2d(Gen& g) {
   const std::string cm = hanging ? R"~(["e*sin(theta)", "-e*cos(theta)"])~" : R"~(["e*cos(theta)", "e*sin(theta)"])~";
   std::string inertia;
   switch (g.integer(0, 3)) {
-    case 0: d.param("L", g.nice(0.5, 3), "m"); inertia = "shape: {rod: L}"; break;
-    case 1: d.param("a", g.nice(0.25, 1), "m"); d.param("b", g.nice(0.25, 1), "m"); inertia = "shape: {box: [a, b]}"; break;
+    case 0:
+      d.param("L", g.nice(0.5, 3), "m");
+      inertia = "shape: {rod: L}";
+      break;
+    case 1:
+      d.param("a", g.nice(0.25, 1), "m");
+      d.param("b", g.nice(0.25, 1), "m");
+      inertia = "shape: {box: [a, b]}";
+      break;
     default: inertia = inertia_of(d, g, "B", "e", true);
   }
   d.bodies.push_back("B: {mass: m, angle: theta, center_of_mass: " + cm + ", " + inertia + "}");
@@ -1004,7 +1033,7 @@ std::string links_2d(Gen& g) {
   // longer chains are compared as examples and in bench/chains_vs_sympy.py.
   const int n = 2;
   d.points.push_back("P: [0, 0]");
-  std::string above_x, above_y;  // the end of the chain so far
+  std::string above_x, above_y;   // the end of the chain so far
   std::vector<std::string> ends;  // each link's end, as an offset from its center (body frame)
   for (int i = 1; i <= n; ++i) {
     const std::string l = fmt::format("l_{}", i), th = fmt::format("theta_{}", i), body = fmt::format("L{}", i);
@@ -1020,13 +1049,15 @@ std::string links_2d(Gen& g) {
       d.param(fmt::format("I_{}", i), g.nice(0.05, 0.5), "kg*m^2");
       inertia = fmt::format(", inertia: I_{}", i);
     }
-    d.bodies.push_back(fmt::format(R"~({}: {{mass: m_{}, angle: {}, center_of_mass: ["{}", "{}"]{}}})~", body, i, th, cx,
-                                   cy, inertia));
-    if (i == 1) d.connections.push_back("{type: pin, body: L1, at: P}");
-    else d.connections.push_back(fmt::format("{{type: pin_joint, body: L{}, other: {}, at: J_{}}}", i - 1, body, i));
+    d.bodies.push_back(fmt::format(R"~({}: {{mass: m_{}, angle: {}, center_of_mass: ["{}", "{}"]{}}})~", body, i, th,
+                                   cx, cy, inertia));
+    if (i == 1)
+      d.connections.push_back("{type: pin, body: L1, at: P}");
+    else
+      d.connections.push_back(fmt::format("{{type: pin_joint, body: L{}, other: {}, at: J_{}}}", i - 1, body, i));
     if (i < n)
-      d.points.push_back(fmt::format(R"~(J_{}: {{on: {}, offset: [0, {}]}})~", i + 1, body,
-                                     kind == 0 ? "0" : "\"-" + l + "/2\""));
+      d.points.push_back(
+          fmt::format(R"~(J_{}: {{on: {}, offset: [0, {}]}})~", i + 1, body, kind == 0 ? "0" : "\"-" + l + "/2\""));
     ends.push_back(kind == 0 ? "0" : "\"-" + l + "/2\"");
     above_x += (above_x.empty() ? "" : " + ") + l + "*sin(" + th + ")";
     above_y += (above_y.empty() ? "-" : " - ") + l + "*cos(" + th + ")";
@@ -1082,7 +1113,8 @@ std::string stacked_2d(Gen& g) {
   d.param("h", g.nice(0.25, 1), "m");
   d.bodies.push_back("A: {mass: m_A, position: x_A, center_of_mass: [x_A, 3*h/2]}");
   d.bodies.push_back("B: {mass: m_B, position: x_B, center_of_mass: [x_B, h/2]}");
-  d.connections.push_back("{type: friction_between, body: A, other: B, at: A, normal: [0, 1], tangent: [1, 0], mu_s: mu_s, mu_k: mu_k}");
+  d.connections.push_back(
+      "{type: friction_between, body: A, other: B, at: A, normal: [0, 1], tangent: [1, 0], mu_s: mu_s, mu_k: mu_k}");
   const bool on_a = g.chance(0.4);
   const bool rough = !tilt && !on_a && g.chance(0.3);
   const double mu_f = rough ? g.nice(0.05, 0.2) : 0;
@@ -1098,13 +1130,16 @@ std::string stacked_2d(Gen& g) {
   };
   double force = 0;
   do force = std::round(g.real(-2, 2) * (scale + (rough ? mu_f * (m_A + m_B) * 9.81 : 0)) * 4) / 4;
-  while (force == 0 || std::abs(std::abs(friction_on_a(force)) - mu_s * n_a) < 0.02 * mu_s * n_a);  // (either regime clearly)
+  while (force == 0 ||
+         std::abs(std::abs(friction_on_a(force)) - mu_s * n_a) < 0.02 * mu_s * n_a);  // (either regime clearly)
   const bool slips = std::abs(friction_on_a(force)) > mu_s * n_a;
   d.param("F", force, "N");
-  d.connections.push_back(fmt::format("{{type: force, on: {}, at: {}, force: [F, 0]}}", on_a ? "A" : "B", on_a ? "A" : "B"));
+  d.connections.push_back(
+      fmt::format("{{type: force, on: {}, at: {}, force: [F, 0]}}", on_a ? "A" : "B", on_a ? "A" : "B"));
   if (rough) {
     d.param("mu_f", mu_f, "");
-    d.connections.push_back(fmt::format("{{type: sliding, body: B, at: B, normal: [0, 1], sliding: [{}, 0], mu: mu_f}}", force < 0 ? -1 : 1));
+    d.connections.push_back(fmt::format("{{type: sliding, body: B, at: B, normal: [0, 1], sliding: [{}, 0], mu: mu_f}}",
+                                        force < 0 ? -1 : 1));
   } else {
     d.connections.push_back("{type: roller, body: B, at: B, normal: [0, 1]}");
   }
@@ -1112,7 +1147,8 @@ std::string stacked_2d(Gen& g) {
   d.layout.push_back("x_B: 0");
   // The motion from rest relative to each other, both at one rate (on the rough floor, the way
   // B slides): sticking, one coordinate; slipping, both.
-  const double rate = rough ? (force < 0 ? -1 : 1) * std::round(g.real(0.125, 1) * 8) / 8 : std::round(g.real(-1, 1) * 8) / 8;
+  const double rate =
+      rough ? (force < 0 ? -1 : 1) * std::round(g.real(0.125, 1) * 8) / 8 : std::round(g.real(-1, 1) * 8) / 8;
   for (const auto& l : d.layout) d.initial.push_back(l);
   d.coords.push_back("x_A");
   d.initial.push_back(fmt::format("dot(x_A): {}", num(rate)));
@@ -1139,7 +1175,9 @@ std::string stacked_2d(Gen& g) {
 std::string friction_3d(Gen& g) {
   using V = std::array<double, 3>;
   auto dot = [](const V& a, const V& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-  auto cross = [](const V& a, const V& b) { return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; };
+  auto cross = [](const V& a, const V& b) {
+    return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
   auto unit = [&](const V& a) {
     const double l = std::sqrt(dot(a, a));
     return V{a[0] / l, a[1] / l, a[2] / l};
@@ -1164,13 +1202,17 @@ std::string friction_3d(Gen& g) {
     d.param("phi", phi, "deg");
     const double c = std::cos(phi * M_PI / 180), sn = std::sin(phi * M_PI / 180);
     a = {-omega * omega * r * c - alpha * r * sn, -omega * omega * r * sn + alpha * r * c, 0};
-    body = "A: {mass: m, acceleration: [\"-omega^2*r*cos(phi) - alpha*r*sin(phi)\", \"-omega^2*r*sin(phi) + alpha*r*cos(phi)\", 0], "
-           "center_of_mass: [\"r*cos(phi)\", \"r*sin(phi)\", 0]}";
+    body =
+        "A: {mass: m, acceleration: [\"-omega^2*r*cos(phi) - alpha*r*sin(phi)\", \"-omega^2*r*sin(phi) + "
+        "alpha*r*cos(phi)\", 0], "
+        "center_of_mass: [\"r*cos(phi)\", \"r*sin(phi)\", 0]}";
   } else {
     d.title = "Generated: a block held by friction on a tilted plane, pushed in a general direction (3-D)";
-    do n = {static_cast<double>(g.integer(-2, 2)), static_cast<double>(g.integer(-2, 2)), static_cast<double>(g.integer(2, 5))};
+    do
+      n = {static_cast<double>(g.integer(-2, 2)), static_cast<double>(g.integer(-2, 2)),
+           static_cast<double>(g.integer(2, 5))};
     while (n[0] == 0 && n[1] == 0);  // (tilted, 11 to 55 degrees)
-    if (g.chance(0.4)) {  // the plane accelerates (a platform on a truck, a lift)
+    if (g.chance(0.4)) {             // the plane accelerates (a platform on a truck, a lift)
       a = {g.nice(-3, 3), g.nice(-3, 3), g.nice(-2, 2)};
       d.param("a_x", a[0], "m/s^2");
       d.param("a_y", a[1], "m/s^2");
@@ -1195,7 +1237,8 @@ std::string friction_3d(Gen& g) {
     normal = dot(contact, nu);
     for (int i = 0; i < 3; ++i) friction[i] = contact[i] - normal * nu[i];
     const double size = std::sqrt(dot(friction, friction));
-    if (!pushed || (normal > 0.2 * m * grav && size > 0.05 * m * grav && size < normal)) break;  // (the least mu below 1)
+    if (!pushed || (normal > 0.2 * m * grav && size > 0.05 * m * grav && size < normal))
+      break;  // (the least mu below 1)
   }
   if (pushed) {
     d.param("P_x", p[0], "N");
@@ -1207,7 +1250,8 @@ std::string friction_3d(Gen& g) {
   const double size = std::sqrt(dot(friction, friction));
   V t{};
   for (int tries = 0; tries < 1000; ++tries) {
-    const V w{static_cast<double>(g.integer(-3, 3)), static_cast<double>(g.integer(-3, 3)), static_cast<double>(g.integer(-3, 3))};
+    const V w{static_cast<double>(g.integer(-3, 3)), static_cast<double>(g.integer(-3, 3)),
+              static_cast<double>(g.integer(-3, 3))};
     t = cross(n, w);
     if (dot(t, t) == 0) continue;
     const V tu = unit(t), su = cross(nu, tu);
@@ -1217,7 +1261,8 @@ std::string friction_3d(Gen& g) {
   const bool holds = g.chance(0.8);
   const double mu = std::max(0.001, std::round(least * (holds ? g.real(1.15, 2.5) : g.real(0.3, 0.85)) * 1000) / 1000);
   d.param("mu", mu, "");
-  d.connections.push_back(fmt::format("{{type: sticking, body: A, at: A, normal: {}, tangent: {}, mu: mu}}", vec(n), vec(t)));
+  d.connections.push_back(
+      fmt::format("{{type: sticking, body: A, at: A, normal: {}, tangent: {}, mu: mu}}", vec(n), vec(t)));
   d.tail = "find: [N_A, F_A1, F_A2]\n";
   return d.text();
 }
@@ -1227,12 +1272,17 @@ std::string friction_3d(Gen& g) {
 std::string generate(std::uint64_t seed, std::string* kind) {
   Gen g(seed);
   static const std::pair<const char*, std::string (*)(Gen&)> families[] = {
-      {"pulleys-1d", pulleys_1d}, {"strands-1d", strands_1d}, {"chain-1d", chain_1d},   {"ring-1d", ring_1d},
-      {"incline-2d", incline_2d}, {"turning-2d", turning_2d}, {"joints-2d", joints_2d}, {"hoist-3d", hoist_3d},
-      {"ring-2d", ring_2d},       {"slope-2d", slope_2d},     {"lengths-1d", lengths_1d}, {"carts-3d", carts_3d},
-      {"welds-2d", welds_2d},     {"pulley-block-2d", pulley_block_2d}, {"incline-3d", incline_3d},
-      {"pulley-block-3d", pulley_block_3d}, {"drum-2d", drum_2d}, {"wheel-2d", wheel_2d}, {"pivot-2d", pivot_2d},
-      {"stacked-2d", stacked_2d}, {"links-2d", links_2d}, {"friction-3d", friction_3d}};
+      {"pulleys-1d", pulleys_1d}, {"strands-1d", strands_1d},
+      {"chain-1d", chain_1d},     {"ring-1d", ring_1d},
+      {"incline-2d", incline_2d}, {"turning-2d", turning_2d},
+      {"joints-2d", joints_2d},   {"hoist-3d", hoist_3d},
+      {"ring-2d", ring_2d},       {"slope-2d", slope_2d},
+      {"lengths-1d", lengths_1d}, {"carts-3d", carts_3d},
+      {"welds-2d", welds_2d},     {"pulley-block-2d", pulley_block_2d},
+      {"incline-3d", incline_3d}, {"pulley-block-3d", pulley_block_3d},
+      {"drum-2d", drum_2d},       {"wheel-2d", wheel_2d},
+      {"pivot-2d", pivot_2d},     {"stacked-2d", stacked_2d},
+      {"links-2d", links_2d},     {"friction-3d", friction_3d}};
   const auto& f = families[seed % (sizeof(families) / sizeof(families[0]))];
   if (kind) *kind = f.first;
   return f.second(g);

@@ -54,21 +54,30 @@ void print_disagreements(const crosscheck::Outcome& o, std::size_t limit = 4) {
 }
 
 int usage() {
-  std::cerr << "usage: tackle_crosscheck examples DIR [PERTURB] | generated N [SEED] [--family NAME] [--motion-every K] [--quiet] [PERTURB] | files FILE... | print SEED\n"
-               "       | equations|answers|fbds N [SEED] [--examples DIR] [--all] [--perturb-silent] | explain FILE EQUATION [UNKNOWN]\n"
-               "  PERTURB: --perturb-masses X | --perturb-inertia X | --perturb-winding | --perturb-drop-answer | --perturb-invert-condition\n";
+  std::cerr << "usage: tackle_crosscheck examples DIR [PERTURB] | generated N [SEED] [--family NAME] [--motion-every "
+               "K] [--quiet] [PERTURB] | files FILE... | print SEED\n"
+               "       | equations|answers|fbds N [SEED] [--examples DIR] [--all] [--perturb-silent] | explain FILE "
+               "EQUATION [UNKNOWN]\n"
+               "  PERTURB: --perturb-masses X | --perturb-inertia X | --perturb-winding | --perturb-drop-answer | "
+               "--perturb-invert-condition\n";
   return 2;
 }
 
 // Reads a perturbation option at argv[i] (advancing i past its value); false when it is none.
 bool perturbation(int argc, char** argv, int& i, crosscheck::Options& o) {
   const std::string a = argv[i];
-  if (a == "--perturb-masses" && i + 1 < argc) o.perturb = std::stod(argv[++i]);
-  else if (a == "--perturb-inertia" && i + 1 < argc) o.perturb_inertia = std::stod(argv[++i]);
-  else if (a == "--perturb-winding") o.perturb_winding = true;
-  else if (a == "--perturb-drop-answer") o.perturb_drop_answer = true;
-  else if (a == "--perturb-invert-condition") o.perturb_invert_condition = true;
-  else return false;
+  if (a == "--perturb-masses" && i + 1 < argc)
+    o.perturb = std::stod(argv[++i]);
+  else if (a == "--perturb-inertia" && i + 1 < argc)
+    o.perturb_inertia = std::stod(argv[++i]);
+  else if (a == "--perturb-winding")
+    o.perturb_winding = true;
+  else if (a == "--perturb-drop-answer")
+    o.perturb_drop_answer = true;
+  else if (a == "--perturb-invert-condition")
+    o.perturb_invert_condition = true;
+  else
+    return false;
   return true;
 }
 
@@ -89,10 +98,14 @@ int main(int argc, char** argv) {
     o.count = std::stol(argv[2]);
     for (int i = 3; i < argc; ++i) {
       const std::string a = argv[i];
-      if (a == "--examples" && i + 1 < argc) o.examples = argv[++i];
-      else if (a == "--all") o.shown = 0;
-      else if (a == "--perturb-silent") o.silent = true;
-      else o.seed = std::stoull(a);
+      if (a == "--examples" && i + 1 < argc)
+        o.examples = argv[++i];
+      else if (a == "--all")
+        o.shown = 0;
+      else if (a == "--perturb-silent")
+        o.silent = true;
+      else
+        o.seed = std::stoull(a);
     }
     const long disagreements = crosscheck::run_oracle(o, rules);
     std::cout << fmt::format("({:.1f} s)\n", elapsed());
@@ -123,11 +136,15 @@ int main(int argc, char** argv) {
         case crosscheck::Outcome::Kind::agree:
           ++agree;
           compared += out.compared;
-          std::cout << fmt::format("agree     {} ({} states, {} values{}{})\n", name, out.states, out.compared,
-                                   out.not_determined ? fmt::format(", {} left free by the model", out.not_determined) : "",
-                                   out.motion_points ? fmt::format(", motion: {} points, max error {:.2g}", out.motion_points, out.motion_error) : "");
+          std::cout << fmt::format(
+              "agree     {} ({} states, {} values{}{})\n", name, out.states, out.compared,
+              out.not_determined ? fmt::format(", {} left free by the model", out.not_determined) : "",
+              out.motion_points
+                  ? fmt::format(", motion: {} points, max error {:.2g}", out.motion_points, out.motion_error)
+                  : "");
           if (!out.motion_note.empty()) std::cout << "          motion: " << out.motion_note << "\n";
-          if (!out.motion_event.empty()) std::cout << "          the motion's first event: " << out.motion_event << "\n";
+          if (!out.motion_event.empty())
+            std::cout << "          the motion's first event: " << out.motion_event << "\n";
           for (const auto& note : out.not_compared) std::cout << "          not compared: " << note << "\n";
           break;
         case crosscheck::Outcome::Kind::skipped:
@@ -145,8 +162,9 @@ int main(int argc, char** argv) {
           break;
       }
     }
-    std::cout << fmt::format("{} examples: {} agree ({} values compared), {} skipped, {} not solved by tackle, {} disagree ({:.1f} s)\n",
-                             files.size(), agree, compared, skipped, refused, disagree, elapsed());
+    std::cout << fmt::format(
+        "{} examples: {} agree ({} values compared), {} skipped, {} not solved by tackle, {} disagree ({:.1f} s)\n",
+        files.size(), agree, compared, skipped, refused, disagree, elapsed());
     return disagree ? 1 : 0;
   }
   if (mode == "generated" && argc >= 3) {
@@ -158,11 +176,16 @@ int main(int argc, char** argv) {
     crosscheck::Options base;
     for (int i = 3; i < argc; ++i) {
       const std::string a = argv[i];
-      if (a == "--motion-every" && i + 1 < argc) motion_every = std::stoi(argv[++i]);
-      else if (a == "--family" && i + 1 < argc) family = argv[++i];
-      else if (perturbation(argc, argv, i, base)) continue;
-      else if (a == "--quiet") quiet = true;
-      else seed = std::stoull(a);
+      if (a == "--motion-every" && i + 1 < argc)
+        motion_every = std::stoi(argv[++i]);
+      else if (a == "--family" && i + 1 < argc)
+        family = argv[++i];
+      else if (perturbation(argc, argv, i, base))
+        continue;
+      else if (a == "--quiet")
+        quiet = true;
+      else
+        seed = std::stoull(a);
     }
     long disagree = 0, refused = 0, skipped = 0, compared = 0, motions = 0, free_values = 0;
     std::map<std::string, long> kinds;
@@ -211,8 +234,10 @@ int main(int argc, char** argv) {
     std::string families;
     for (const auto& [k, c] : kinds) families += fmt::format("{}{} {}", families.empty() ? "" : ", ", c, k);
     std::cout << fmt::format("families: {}\n", families);
-    std::cout << fmt::format("{} values compared, {} left free by the model, {} motions compared over 1 s, {} refused by tackle, {} skipped ({:.1f} s)\n",
-                             compared, free_values, motions, refused, skipped, elapsed());
+    std::cout << fmt::format(
+        "{} values compared, {} left free by the model, {} motions compared over 1 s, {} refused by tackle, {} skipped "
+        "({:.1f} s)\n",
+        compared, free_values, motions, refused, skipped, elapsed());
     std::cout << fmt::format("{} mechanisms, {} disagreements\n", n, disagree);
     return disagree || refused || skipped ? 1 : 0;
   }
@@ -227,12 +252,14 @@ int main(int argc, char** argv) {
       const bool disagrees = out.kind == crosscheck::Outcome::Kind::disagree;
       const bool ok = expected ? disagrees : out.kind == crosscheck::Outcome::Kind::agree;
       if (!ok) ++failures;
-      std::cout << fmt::format("{}  {}: {}{}\n", ok ? "ok  " : "FAIL", f.filename().string(),
-                               disagrees ? "disagrees" : out.kind == crosscheck::Outcome::Kind::agree ? "agrees" + (out.reason.empty() ? "" : ": " + out.reason)
-                                                                                                     : "not compared: " + out.reason,
-                               expected ? (disagrees ? " (a known disagreement: tackle's bug, still there)"
-                                                     : " (expected a disagreement: rename the file once tackle is fixed)")
-                                        : "");
+      std::cout << fmt::format(
+          "{}  {}: {}{}\n", ok ? "ok  " : "FAIL", f.filename().string(),
+          disagrees                                      ? "disagrees"
+          : out.kind == crosscheck::Outcome::Kind::agree ? "agrees" + (out.reason.empty() ? "" : ": " + out.reason)
+                                                         : "not compared: " + out.reason,
+          expected ? (disagrees ? " (a known disagreement: tackle's bug, still there)"
+                                : " (expected a disagreement: rename the file once tackle is fixed)")
+                   : "");
       if (disagrees) print_disagreements(out);
       if (!out.motion_note.empty()) std::cout << "      motion: " << out.motion_note << "\n";
     }

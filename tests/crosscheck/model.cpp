@@ -81,7 +81,8 @@ Expr Model::compile(const tackle::Text& t) const {
   Expr e = compile_any(t);
   // (the steady rate has no value of its own: solve() finds it from a body's acceleration)
   if (steady_slot_ >= 0 && e.uses(steady_slot_))
-    throw Unsupported("the steady rate '" + slot_names_[static_cast<std::size_t>(steady_slot_)] + "' outside a body's given acceleration");
+    throw Unsupported("the steady rate '" + slot_names_[static_cast<std::size_t>(steady_slot_)] +
+                      "' outside a body's given acceleration");
   return e;
 }
 
@@ -150,9 +151,12 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     if (!g.value) continue;
     const double v = number(*g.value) * (g.unit ? unit_factor(g.unit->text) : 1.0);
     const std::string& nm = g.name.text;
-    if (nm.rfind("dot(", 0) == 0) base_rate_[nm] = v;
-    else if (nm.rfind("ddot(", 0) == 0) given_accel_[nm] = v;
-    else base_coord_[nm] = v;
+    if (nm.rfind("dot(", 0) == 0)
+      base_rate_[nm] = v;
+    else if (nm.rfind("ddot(", 0) == 0)
+      given_accel_[nm] = v;
+    else
+      base_coord_[nm] = v;
     // a coordinate or rate given in the parameters (theta: theta_0, dot(theta): v/L): tackle
     // answers at that value only, so the states keep it
     const Expr e = compile(*g.value);
@@ -190,7 +194,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     Body b;
     b.name = bd.name.text;
     if (!bd.mass && !kinematic_)
-      throw Unsupported("body '" + b.name + "' has no mass (kinematics only: no balance is written for it) beside bodies that have one");
+      throw Unsupported("body '" + b.name +
+                        "' has no mass (kinematics only: no balance is written for it) beside bodies that have one");
     b.mass = bd.mass ? number(*bd.mass) * (1 + perturb.masses) : 0.0;
     b.massive = b.mass != 0;
     if (b.mass < 0) throw Unsupported("a negative mass");
@@ -211,13 +216,25 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
         auto need_size = [&](std::size_t c) {
           if (size.size() != c) throw Unsupported("shape '" + k + "' with " + std::to_string(size.size()) + " sizes");
         };
-        if (k == "disk") { need_size(1); b.inertia = b.mass * size[0] * size[0] / 2; }
-        else if (k == "ring") { need_size(1); b.inertia = b.mass * size[0] * size[0]; }
-        else if (k == "rod") { need_size(1); b.inertia = b.mass * size[0] * size[0] / 12; }
-        else if (k == "sphere") { need_size(1); b.inertia = 2 * b.mass * size[0] * size[0] / 5; }
-        else if (k == "box") { need_size(2); b.inertia = b.mass * (size[0] * size[0] + size[1] * size[1]) / 12; }
-        else if (k == "point") b.inertia = 0;
-        else throw Unsupported("shape '" + k + "'");
+        if (k == "disk") {
+          need_size(1);
+          b.inertia = b.mass * size[0] * size[0] / 2;
+        } else if (k == "ring") {
+          need_size(1);
+          b.inertia = b.mass * size[0] * size[0];
+        } else if (k == "rod") {
+          need_size(1);
+          b.inertia = b.mass * size[0] * size[0] / 12;
+        } else if (k == "sphere") {
+          need_size(1);
+          b.inertia = 2 * b.mass * size[0] * size[0] / 5;
+        } else if (k == "box") {
+          need_size(2);
+          b.inertia = b.mass * (size[0] * size[0] + size[1] * size[1]) / 12;
+        } else if (k == "point")
+          b.inertia = 0;
+        else
+          throw Unsupported("shape '" + k + "'");
       }
       b.inertia *= 1 + perturb.inertia;
       if (b.inertia < 0) throw Unsupported("a negative moment of inertia");
@@ -237,7 +254,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       for (const auto& e : cm) {
         for (int s = first_coord_slot_; s < static_cast<int>(slot_names_.size()); ++s)
           if (s != own && e.uses(s))
-            throw Unsupported("the center of mass of '" + b.name + "' depends on '" + slot_names_[static_cast<std::size_t>(s)] + "'");
+            throw Unsupported("the center of mass of '" + b.name + "' depends on '" +
+                              slot_names_[static_cast<std::size_t>(s)] + "'");
       }
       auto at = [&](double s) {
         auto vars = base_vars();
@@ -321,7 +339,10 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
   if (steady_slot_ >= 0 && !steady_) throw Unsupported("a steady rate that no body's acceleration uses");
   if (steady_) requirements_.push_back({Requirement::real, steady_->squared, "", 0, -1, "the steady rate is real"});
   int next = 0;
-  for (auto& b : bodies_) { b.q0 = next; next += n; }
+  for (auto& b : bodies_) {
+    b.q0 = next;
+    next += n;
+  }
   for (auto& b : bodies_) {
     if ((b.massive || !b.angle.empty()) && n > 1) {
       b.nr = n == 2 ? 1 : 3;
@@ -438,7 +459,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
   };
   // What a connection adds is labelled after it ("sliding at A": its type, then its name or
   // the point it acts at), for the diagrams.
-  auto label_made = [&](const std::string& label, std::size_t cons_from, std::size_t elements_from, std::size_t loads_from) {
+  auto label_made = [&](const std::string& label, std::size_t cons_from, std::size_t elements_from,
+                        std::size_t loads_from) {
     for (std::size_t k = cons_from; k < cons_.size(); ++k) cons_[k].label = label;
     for (std::size_t k = elements_from; k < elements_.size(); ++k) elements_[k].label = label;
     for (std::size_t k = loads_from; k < loads_.size(); ++k) loads_[k].label = label;
@@ -446,11 +468,13 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
   // A contact that grips: it pushes, and its friction stays within mu N (mu when given); in
   // 3-D its friction has two components in the tangent plane (F_<at>1, F_<at>2), and the cone
   // bounds their resultant.
-  auto grips = [&](const std::string& at, const tackle::ConnectionDesc& c, const std::string& what, bool plane = false) {
+  auto grips = [&](const std::string& at, const tackle::ConnectionDesc& c, const std::string& what,
+                   bool plane = false) {
     requirements_.push_back({Requirement::pushes, "N_" + at, "", 0, -1, what + " pushes"});
     if (opt_text(c, "mu"))
-      requirements_.push_back({Requirement::cone, plane ? "F_" + at + "1" : "F_" + at, "N_" + at, number(c.arg("mu")->items[0]), -1,
-                               what + " grips (|F| <= mu N)", plane ? "F_" + at + "2" : ""});
+      requirements_.push_back({Requirement::cone, plane ? "F_" + at + "1" : "F_" + at, "N_" + at,
+                               number(c.arg("mu")->items[0]), -1, what + " grips (|F| <= mu N)",
+                               plane ? "F_" + at + "2" : ""});
   };
   // Friction between two moving bodies, decided at the layout once the model is whole: sticking
   // (as built) while its friction stays within mu_s N, else sliding (decide_contacts).
@@ -507,7 +531,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       e.winds = windings(e.points, perturb.winding ? -1.0 : 1.0);
       e.k = number(need(c, "k").items[0]);
       if (type == "elastic_cord")
-        requirements_.push_back({Requirement::taut, "", "", 0, static_cast<int>(elements_.size()), "elastic cord " + cname + " is taut"});
+        requirements_.push_back(
+            {Requirement::taut, "", "", 0, static_cast<int>(elements_.size()), "elastic cord " + cname + " is taut"});
       if (c.arg("rest_length")) {
         e.rest = number(need(c, "rest_length").items[0]);
       } else {
@@ -589,7 +614,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       if (dims_ == 3) {
         if (std::abs(normal.dot(tangent)) > 1e-9)
           throw Unsupported("a sticking contact whose tangent is not at right angles to its normal (at " + at + ")");
-        const Eigen::Vector3d across = Eigen::Vector3d(normal(0), normal(1), normal(2)).cross(Eigen::Vector3d(tangent(0), tangent(1), tangent(2)));
+        const Eigen::Vector3d across =
+            Eigen::Vector3d(normal(0), normal(1), normal(2)).cross(Eigen::Vector3d(tangent(0), tangent(1), tangent(2)));
         add_project("F_" + at + "1", material(at, b), b, tangent);
         add_project("F_" + at + "2", material(at, b), b, Eigen::VectorXd(across));
       } else {
@@ -605,9 +631,11 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       // tip, a contact away from the centers, is not modelled).
       const int b = body_of(c, "body"), o = body_of(c, "other");
       const std::string at = need_text(c, "at"), first = need_text(c, "body"), other = need_text(c, "other");
-      if (at != first && at != other) throw Unsupported("a contact between two bodies away from their centers ('" + at + "')");
+      if (at != first && at != other)
+        throw Unsupported("a contact between two bodies away from their centers ('" + at + "')");
       for (int k : {b, o})
-        if (!bodies_[static_cast<std::size_t>(k)].angle.empty()) throw Unsupported("a contact between two bodies, one of them turning");
+        if (!bodies_[static_cast<std::size_t>(k)].angle.empty())
+          throw Unsupported("a contact between two bodies, one of them turning");
       auto relative = [&](const std::string& name, const Eigen::VectorXd& dir) {
         Constraint k;
         k.kind = Constraint::relative;
@@ -636,7 +664,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       add_project(opt_text(c, "force") ? *opt_text(c, "force") : "P_" + at, material(at, b), b, unit_vec(c, "across"));
       add_project(opt_text(c, "force_too") ? *opt_text(c, "force_too") : "Q_" + at, material(at, b), b,
                   unit_vec(c, "across_too"));
-    } else if (type == "pin" || type == "ball_and_socket" || type == "hinge" || type == "fixed_support" || type == "weld") {
+    } else if (type == "pin" || type == "ball_and_socket" || type == "hinge" || type == "fixed_support" ||
+               type == "weld") {
       const int b = body_of(c, "body");
       const std::string at = need_text(c, "at");
       add_pin(at, material(at, b), b);
@@ -650,7 +679,8 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
       s.kind = Constraint::path;
       s.name = "T_" + from + to;
       s.g_sign = -1;
-      if (type == "cable") requirements_.push_back({Requirement::pulls, s.name, "", 0, -1, "cable from " + from + " pulls"});
+      if (type == "cable")
+        requirements_.push_back({Requirement::pulls, s.name, "", 0, -1, "cable from " + from + " pulls"});
       const PointRef pf = material(from, b);
       PointRef pt = point(to, -1);
       if (pt.body >= 0) throw Unsupported("a rod or cable to a moving point");
@@ -682,14 +712,17 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
         k.dir = unit_vec(c, "normal");
         cons_.push_back(k);
       } else {
-        for (int i = 0; i < n; ++i) relative(type == "same_motion" ? "" : at + "_" + xyz[i], Eigen::VectorXd::Unit(n, i));
+        for (int i = 0; i < n; ++i)
+          relative(type == "same_motion" ? "" : at + "_" + xyz[i], Eigen::VectorXd::Unit(n, i));
       }
       if (type == "weld_joint" || type == "slider_joint") add_rotation("M_" + at, b, o, 0);
     } else {
       throw Unsupported("connection type '" + type + "' (" +
-                        (type == "unknown_force" || type == "driven_wheel" ? "an unknown force that no constraint determines, "
-                                                                             "on a body whose acceleration is not given"
-                                                                           : "not in the model") + ")");
+                        (type == "unknown_force" || type == "driven_wheel"
+                             ? "an unknown force that no constraint determines, "
+                               "on a body whose acceleration is not given"
+                             : "not in the model") +
+                        ")");
     }
     label_made(type + (cname.empty() ? "" : " " + cname), cons_before, elements_before, loads_before);
   }
@@ -779,7 +812,9 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     std::vector<double> vars(slot_names_.size(), 0.0);
     for (const auto& [nm, v] : params_) vars[static_cast<std::size_t>(slot(nm))] = v;
     for (const auto& b : bodies_) {
-      const Eigen::VectorXd c = b.kind == Body::line ? b.a : b.kind == Body::turning ? eval_vec(b.cm_expr, vars) : b.cm0;
+      const Eigen::VectorXd c = b.kind == Body::line      ? b.a
+                                : b.kind == Body::turning ? eval_vec(b.cm_expr, vars)
+                                                          : b.cm0;
       origin_q_.segment(b.q0, n) = c;
     }
   }
@@ -792,8 +827,9 @@ Model::Model(const tackle::Description& d, std::mt19937_64& rng, const Perturbat
     const Instant inst = solve(base_state());
     const Quantity* f = inst.find(u.friction);
     const Quantity* nn = inst.find(u.normal);
-    const auto cone = std::find_if(requirements_.begin(), requirements_.end(),
-                                   [&](const Requirement& r) { return r.kind == Requirement::cone && r.force == u.friction; });
+    const auto cone = std::find_if(requirements_.begin(), requirements_.end(), [&](const Requirement& r) {
+      return r.kind == Requirement::cone && r.force == u.friction;
+    });
     if (!f || !nn || !f->determined || !nn->determined || cone == requirements_.end())
       throw Unsupported("friction between two bodies whose forces the model does not determine");
     if (nn->value >= 0 && std::abs(f->value) <= cone->mu * nn->value) continue;  // they stick
@@ -837,7 +873,9 @@ std::vector<Model::Constraint::Winding> Model::windings(const std::vector<PointR
   // A path's end at a point of a turning body that keeps the ground's directions is where
   // the strand leaves the drum it is wound on.
   std::vector<Constraint::Winding> out;
-  auto wound = [&](const PointRef& p) { return p.body >= 0 && !p.turns && !bodies_[static_cast<std::size_t>(p.body)].angle.empty(); };
+  auto wound = [&](const PointRef& p) {
+    return p.body >= 0 && !p.turns && !bodies_[static_cast<std::size_t>(p.body)].angle.empty();
+  };
   for (std::size_t k = 0; k < pts.size(); ++k) {
     if (!wound(pts[k])) continue;
     if (pts.size() < 2 || (k != 0 && k + 1 != pts.size()))
@@ -898,7 +936,8 @@ std::vector<S> Model::variables(const std::vector<S>& q, const Eigen::VectorXd& 
 }
 
 template <class S>
-std::vector<S> Model::position(const PointRef& p, const std::vector<S>& q, const std::vector<S>& vars, const S& t) const {
+std::vector<S> Model::position(const PointRef& p, const std::vector<S>& q, const std::vector<S>& vars,
+                               const S& t) const {
   const int n = dims_;
   std::vector<S> r(static_cast<std::size_t>(n), S(0.0));
   if (p.body >= 0) {
@@ -926,7 +965,8 @@ std::vector<S> Model::position(const PointRef& p, const std::vector<S>& q, const
   } else {
     for (int i = 0; i < n; ++i) {
       r[static_cast<std::size_t>(i)] = p.ground[static_cast<std::size_t>(i)].eval(vars);
-      if (p.frame_accel.size() > 0 && p.frame_accel(i) != 0) r[static_cast<std::size_t>(i)] = r[static_cast<std::size_t>(i)] + S(0.5 * p.frame_accel(i)) * t * t;
+      if (p.frame_accel.size() > 0 && p.frame_accel(i) != 0)
+        r[static_cast<std::size_t>(i)] = r[static_cast<std::size_t>(i)] + S(0.5 * p.frame_accel(i)) * t * t;
     }
   }
   return r;
@@ -945,7 +985,9 @@ S Model::path_length(const std::vector<PointRef>& pts, const std::vector<S>& q, 
       total = total + abs(cur[0] - prev[0]);
     } else {
       S sq(0.0);
-      for (int i = 0; i < dims_; ++i) sq = sq + (cur[static_cast<std::size_t>(i)] - prev[static_cast<std::size_t>(i)]) * (cur[static_cast<std::size_t>(i)] - prev[static_cast<std::size_t>(i)]);
+      for (int i = 0; i < dims_; ++i)
+        sq = sq + (cur[static_cast<std::size_t>(i)] - prev[static_cast<std::size_t>(i)]) *
+                      (cur[static_cast<std::size_t>(i)] - prev[static_cast<std::size_t>(i)]);
       total = total + sqrt(sq);
     }
     prev = cur;
@@ -954,7 +996,8 @@ S Model::path_length(const std::vector<PointRef>& pts, const std::vector<S>& q, 
 }
 
 template <class S>
-S Model::winding_arm(const Constraint::Winding& w, const std::vector<PointRef>& pts, const std::vector<S>& q, const S& t) const {
+S Model::winding_arm(const Constraint::Winding& w, const std::vector<PointRef>& pts, const std::vector<S>& q,
+                     const S& t) const {
   // s = d . (z x offset): d the unit vector from the neighbouring point into the end, offset
   // the end's (the ground's directions) from the drum's center. The string's material point
   // at the rim moves with the rim, v_cm + omega z x offset, the end itself with v_cm: the
@@ -994,7 +1037,8 @@ S Model::value(const Constraint& c, const std::vector<S>& q, const S& t) const {
     case Constraint::path: {
       S out = path_length(c.points, q, t);
       for (const auto& w : c.winds)
-        out = out + winding_arm(w, c.points, q, t) * q[static_cast<std::size_t>(bodies_[static_cast<std::size_t>(w.body)].r0)];
+        out = out + winding_arm(w, c.points, q, t) *
+                        q[static_cast<std::size_t>(bodies_[static_cast<std::size_t>(w.body)].r0)];
       return out;
     }
     case Constraint::roll: {
@@ -1015,7 +1059,8 @@ S Model::value(const Constraint& c, const std::vector<S>& q, const S& t) const {
       const auto vars = variables(q, Eigen::VectorXd(), t);
       const auto a = position(c.points[0], q, vars, t), b = position(c.points[1], q, vars, t);
       S out(0.0);
-      for (int i = 0; i < dims_; ++i) out = out + (a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>(i)]) * S(c.dir(i));
+      for (int i = 0; i < dims_; ++i)
+        out = out + (a[static_cast<std::size_t>(i)] - b[static_cast<std::size_t>(i)]) * S(c.dir(i));
       return out;
     }
     case Constraint::slide: {
@@ -1033,7 +1078,8 @@ S Model::value(const Constraint& c, const std::vector<S>& q, const S& t) const {
       }
       S out(0.0);
       for (int i = 0; i < dims_; ++i)
-        out = out + n[static_cast<std::size_t>(i)] * (p[static_cast<std::size_t>(i)] - q[static_cast<std::size_t>(o.q0 + i)]);
+        out = out +
+              n[static_cast<std::size_t>(i)] * (p[static_cast<std::size_t>(i)] - q[static_cast<std::size_t>(o.q0 + i)]);
       return out;
     }
     case Constraint::rotation: {
@@ -1144,7 +1190,8 @@ std::vector<Margin> Model::margins(const State& s, const Instant& inst) const {
     Margin m{&r, 0, true};
     const Quantity* f = inst.find(r.force);
     const Quantity* n = r.kind == Requirement::cone ? inst.find(r.normal) : nullptr;
-    const Quantity* f2 = r.force_too.empty() ? nullptr : inst.find(r.force_too);  // (3-D: the friction's second component)
+    const Quantity* f2 =
+        r.force_too.empty() ? nullptr : inst.find(r.force_too);  // (3-D: the friction's second component)
     if (r.kind == Requirement::taut) {
       m.value = element_tension(elements_[static_cast<std::size_t>(r.element)], s);
     } else if (!f || (r.kind == Requirement::cone && !n) || (!r.force_too.empty() && !f2)) {
@@ -1192,7 +1239,8 @@ std::vector<std::pair<std::string, double>> Model::watched(const State& s) const
   for (const auto& mg : margins(p, solve(p)))
     out.emplace_back(mg.requirement->what, mg.determined ? mg.value : std::numeric_limits<double>::quiet_NaN());
   for (const auto& c : cons_)
-    if (c.mu != 0) out.emplace_back("the slip at " + c.name.substr(2) + " (its friction turns)", *slip_speed(c.name, p));
+    if (c.mu != 0)
+      out.emplace_back("the slip at " + c.name.substr(2) + " (its friction turns)", *slip_speed(c.name, p));
   return out;
 }
 
@@ -1205,7 +1253,8 @@ Model::Kkt Model::system(const State& s, const std::vector<int>* only) const {
       mass(b.q0 + i) = b.mass;
       f(b.q0 + i) += b.mass * gravity_(i);
     }
-    for (int k = 0; k < b.nr; ++k) mass(b.r0 + k) = b.angle.empty() ? b.mass : b.inertia;  // (without an angle: any positive inertia, held at 0)
+    for (int k = 0; k < b.nr; ++k)
+      mass(b.r0 + k) = b.angle.empty() ? b.mass : b.inertia;  // (without an angle: any positive inertia, held at 0)
   }
   std::vector<double> vars(slot_names_.size());
   {
@@ -1333,9 +1382,7 @@ Instant Model::solve_kinematics(const State& s) const {
   return out;
 }
 
-Instant Model::solve(const State& s) const {
-  return steady_ ? solve_steady(s) : solve_fixed(s);
-}
+Instant Model::solve(const State& s) const { return steady_ ? solve_steady(s) : solve_fixed(s); }
 
 void Model::set_steady(double squared) {
   Body& b = bodies_[static_cast<std::size_t>(steady_->body)];
@@ -1441,7 +1488,8 @@ std::optional<Eigen::VectorXd> Model::accelerations(const State& s) const {
   // not quite redundant there, and keeping it makes the system singular. The guides are
   // chosen at the state projected onto the constraints.
   std::vector<int> kept;
-  const bool curved = std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.kind == Body::turning; });
+  const bool curved =
+      std::any_of(bodies_.begin(), bodies_.end(), [](const Body& b) { return b.kind == Body::turning; });
   if (curved) {
     State p = s;
     project(p, false);
@@ -1454,7 +1502,8 @@ std::optional<Eigen::VectorXd> Model::accelerations(const State& s) const {
   return Eigen::VectorXd(cod.solve(k.rhs).head(ndof_));
 }
 
-void Model::project(State& s, bool rates_only, const std::vector<bool>* frozen_q, const std::vector<bool>* frozen_v) const {
+void Model::project(State& s, bool rates_only, const std::vector<bool>* frozen_q,
+                    const std::vector<bool>* frozen_v) const {
   const int n = ndof_;
   auto jac = [&](Eigen::VectorXd& phi, Eigen::VectorXd& phit) {
     Eigen::MatrixXd J(static_cast<Eigen::Index>(cons_.size()), n);
@@ -1520,8 +1569,10 @@ bool Model::settle_massless(State& s) const {
     for (int j = 0; j < 2 * u; ++j) {
       State p = s;
       const double h = 1e-7;
-      if (j < u) p.q(idx[static_cast<std::size_t>(j)]) += h;
-      else p.v(idx[static_cast<std::size_t>(j - u)]) += h;
+      if (j < u)
+        p.q(idx[static_cast<std::size_t>(j)]) += h;
+      else
+        p.v(idx[static_cast<std::size_t>(j - u)]) += h;
       Jr.col(j) = (residual(p) - r0) / h;
     }
     const Eigen::VectorXd step = pinv_solve_matrix(Jr) * r0;

@@ -83,24 +83,25 @@ struct Instant {
     return nullptr;
   }
   int free_directions = 0;  // columns of each Quantity::free
-  double residual = 0;  // of the KKT system at its least-squares solution, relative
+  double residual = 0;      // of the KKT system at its least-squares solution, relative
   int rank_deficiency = 0;
 };
 
 /// What the model's own physics requires of a solution, connection by connection: a string
 /// or a cable pulls (its tension is not negative), a contact, a roller or a wheel pushes (its
 /// normal force is not negative), a sticking contact's or a gripping wheel's friction stays
-/// within its cone (|F| <= mu N; in 3-D F has two components in the tangent plane), an elastic cord is taut (its length at least its rest
-/// length); a steady motion's unknown rate is real (its square is not negative). Nothing here
+/// within its cone (|F| <= mu N; in 3-D F has two components in the tangent plane), an elastic
+/// cord is taut (its length at least its rest length); a steady motion's unknown rate is real (its
+/// square is not negative). Nothing here
 /// is read from tackle's rules.
 struct Requirement {
   enum Kind { pulls, pushes, cone, taut, real } kind = pulls;
-  std::string force;   // the constraint force (tackle's name for it): T, N_A; cone: the friction F_A
-                       // (3-D: its first component F_A1); real: the rate squared (omega^2)
-  std::string normal;  // cone: the normal force N_A
-  double mu = 0;       // cone
-  int element = -1;    // taut: the cord (an element of the model)
-  std::string what;    // in words: "string s pulls"
+  std::string force;        // the constraint force (tackle's name for it): T, N_A; cone: the friction F_A
+                            // (3-D: its first component F_A1); real: the rate squared (omega^2)
+  std::string normal;       // cone: the normal force N_A
+  double mu = 0;            // cone
+  int element = -1;         // taut: the cord (an element of the model)
+  std::string what;         // in words: "string s pulls"
   std::string force_too{};  // cone in 3-D: the friction's second component in the tangent plane (F_A2);
                             // its size is then sqrt(F_A1^2 + F_A2^2)
 };
@@ -119,11 +120,11 @@ struct Margin {
 /// direction (a pin's, a joint's: two or three reactions of either sign at one point) has the
 /// lines its direction spans. A 2-D couple has no line and its sense in `turn` (0: unknown).
 struct BodyForce {
-  std::string what;                    // "string s", "gravity", "roller at A", "spring k_s"
+  std::string what;  // "string s", "gravity", "roller at A", "spring k_s"
   std::string at;
   std::vector<Eigen::VectorXd> lines;  // unit; the first is the force's own direction when `sense`
   bool sense = true;
-  bool zero = false;                   // nothing at this state (a spring at its rest length)
+  bool zero = false;  // nothing at this state (a spring at its rest length)
   bool couple = false;
   int turn = 0;
 };
@@ -209,62 +210,62 @@ class Model {
     double mass = 0;
     bool massive = false;
     enum Kind { line, still, driven, along, turning } kind = line;
-    std::string coord;               // line: tackle's coordinate (position), along: the acceleration's name
-    Eigen::VectorXd a, b;            // line: cm(s) = a + s b; along: b is the unit direction
-    Eigen::VectorXd cm0;             // at the layout
-    Eigen::VectorXd frame_accel;     // driven: the given acceleration (constant)
-    int q0 = 0, r0 = -1, nr = 0;     // index of its translations; of its rotations (-1: none)
-    std::string angle;               // 2-D: tackle's angle coordinate, which is the rotation q[r0] ("" : none)
-    double angle0 = 0;               // the rotation at the layout
-    double inertia = 0;              // about the center (a body with an angle)
-    std::vector<Expr> cm_expr;       // turning: the center in tackle's coordinates (its angle, others')
+    std::string coord;            // line: tackle's coordinate (position), along: the acceleration's name
+    Eigen::VectorXd a, b;         // line: cm(s) = a + s b; along: b is the unit direction
+    Eigen::VectorXd cm0;          // at the layout
+    Eigen::VectorXd frame_accel;  // driven: the given acceleration (constant)
+    int q0 = 0, r0 = -1, nr = 0;  // index of its translations; of its rotations (-1: none)
+    std::string angle;            // 2-D: tackle's angle coordinate, which is the rotation q[r0] ("" : none)
+    double angle0 = 0;            // the rotation at the layout
+    double inertia = 0;           // about the center (a body with an angle)
+    std::vector<Expr> cm_expr;    // turning: the center in tackle's coordinates (its angle, others')
   };
   struct PointRef {
-    std::string name;                // the description's point (or body, for its center); "" for one made here
-    int body = -1;                   // -1: the ground
-    Eigen::VectorXd offset;          // from the body's center, in the body's frame (material point)
-    bool turns = true;               // false: the offset keeps the ground's directions (a point where a
-                                     // strand leaves a drum, where a wheel touches the ground)
-    std::vector<Expr> ground;        // a ground point's position (parameters, t)
-    Eigen::VectorXd frame_accel;     // a ground point that moves with a driven body's frame
-    int frame_body = -1;             // that body (-1: none)
+    std::string name;             // the description's point (or body, for its center); "" for one made here
+    int body = -1;                // -1: the ground
+    Eigen::VectorXd offset;       // from the body's center, in the body's frame (material point)
+    bool turns = true;            // false: the offset keeps the ground's directions (a point where a
+                                  // strand leaves a drum, where a wheel touches the ground)
+    std::vector<Expr> ground;     // a ground point's position (parameters, t)
+    Eigen::VectorXd frame_accel;  // a ground point that moves with a driven body's frame
+    int frame_body = -1;          // that body (-1: none)
   };
   struct Constraint {
-    std::string name;                // tackle's unknown, "" when it has none, "guide ..." for guides
+    std::string name;  // tackle's unknown, "" when it has none, "guide ..." for guides
     bool guide = false;
     enum Kind { path, length_expr, project, relative, slide, rotation, guide_line, roll, guide_curve } kind = path;
-    std::vector<PointRef> points;    // path: in order; project: one; relative: two; slide: the point on `body`
-    Expr length;                     // length_expr
-    Eigen::VectorXd dir;             // project/relative/guide: the unit direction (rotation: axis index in dir[0])
-    int body = -1, other = -1;       // rotation: the bodies (other -1: the ground); guide: the body;
-                                     // slide: `other` carries the slide (dir turns with it)
-    double g_sign = 1;               // G = g_sign J^T, unless friction is set
-    double mu = 0;                   // sliding: friction -mu N along `sliding`
+    std::vector<PointRef> points;  // path: in order; project: one; relative: two; slide: the point on `body`
+    Expr length;                   // length_expr
+    Eigen::VectorXd dir;           // project/relative/guide: the unit direction (rotation: axis index in dir[0])
+    int body = -1, other = -1;     // rotation: the bodies (other -1: the ground); guide: the body;
+                                   // slide: `other` carries the slide (dir turns with it)
+    double g_sign = 1;             // G = g_sign J^T, unless friction is set
+    double mu = 0;                 // sliding: friction -mu N along `sliding`
     Eigen::VectorXd sliding;
-    double constant = 0;             // its value at the layout
-    double arm = 0;                  // roll: the rotation's coefficient, (z x (C - cm)) . dir
-    struct Winding {                 // a path's end wound on a turning body: the length gains s * rotation,
-      std::size_t end = 0, next = 0; // s = d . (z x offset), d the unit vector from point `next` into `end`
+    double constant = 0;              // its value at the layout
+    double arm = 0;                   // roll: the rotation's coefficient, (z x (C - cm)) . dir
+    struct Winding {                  // a path's end wound on a turning body: the length gains s * rotation,
+      std::size_t end = 0, next = 0;  // s = d . (z x offset), d the unit vector from point `next` into `end`
       int body = -1;
-      double sign = 1;               // -1 only in a deliberately wrong model
+      double sign = 1;  // -1 only in a deliberately wrong model
     };
-    std::vector<Winding> winds;      // path
-    std::string label;               // the connection's type and name ("string s"), for diagrams
+    std::vector<Winding> winds;  // path
+    std::string label;           // the connection's type and name ("string s"), for diagrams
   };
-  struct Element {                   // a spring, elastic cord or damper on a path
+  struct Element {  // a spring, elastic cord or damper on a path
     enum Kind { spring, damper } kind = spring;
     std::vector<PointRef> points;
     std::vector<Constraint::Winding> winds;
     double k = 0, rest = 0, c = 0;
-    bool stretch = false;            // rest = origin length - stretch
+    bool stretch = false;  // rest = origin length - stretch
     double stretch_value = 0;
     std::string label;
   };
   struct Load {
     int body = -1;
     PointRef at;
-    std::vector<Expr> force;         // one per axis; may use coordinates, rates, t
-    std::vector<Expr> couple;        // 2-D: one, 3-D: three
+    std::vector<Expr> force;   // one per axis; may use coordinates, rates, t
+    std::vector<Expr> couple;  // 2-D: one, 3-D: three
     std::string label;
   };
 
@@ -295,12 +296,13 @@ class Model {
   };
   void strand_parts(int body, const std::vector<PointRef>& pts, double sign, const std::string& what, bool sense,
                     const State& s, std::vector<ForcePart>& out) const;
-  void constraint_parts(int body, const Constraint& c, const State& s, std::vector<ForcePart>& out, std::vector<BodyForce>& couples) const;
+  void constraint_parts(int body, const Constraint& c, const State& s, std::vector<ForcePart>& out,
+                        std::vector<BodyForce>& couples) const;
   void load_forces(int body, const State& s, std::vector<BodyForce>& out) const;
   [[nodiscard]] bool sense_known(const std::string& force) const;
   [[nodiscard]] Eigen::VectorXd velocity(const PointRef& p, const State& s) const;
   Eigen::VectorXd gravity_;
-  Eigen::VectorXd origin_q_;                   // every coordinate of tackle's at 0 (a spring's `stretch`)
+  Eigen::VectorXd origin_q_;  // every coordinate of tackle's at 0 (a spring's `stretch`)
   std::map<std::string, double> base_coord_, base_rate_;
   std::map<std::string, double> given_accel_;  // kinematics: ddot(q) -> its value
   std::map<std::string, double> pinned_;       // coordinates and rates given in the parameters: every state keeps them
@@ -336,7 +338,8 @@ class Model {
   template <class S>
   S path_length(const std::vector<PointRef>& pts, const std::vector<S>& q, const S& t) const;
   template <class S>
-  S winding_arm(const Constraint::Winding& w, const std::vector<PointRef>& pts, const std::vector<S>& q, const S& t) const;
+  S winding_arm(const Constraint::Winding& w, const std::vector<PointRef>& pts, const std::vector<S>& q,
+                const S& t) const;
   Eigen::VectorXd layout_position(const PointRef& p) const;
   std::vector<Constraint::Winding> windings(const std::vector<PointRef>& pts, double sign) const;
   void place_turning(State& s) const;
@@ -352,7 +355,8 @@ class Model {
   Eigen::VectorXd generalized(const PointRef& p, const Eigen::VectorXd& force, const State& s) const;
   // A constraint's derivatives (a wound path's in its rate form: J = grad L + s e_rot).
   Derivs cons_derivs(const Constraint& c, const State& s) const;
-  Derivs length_derivs(const std::vector<PointRef>& pts, const std::vector<Constraint::Winding>& winds, const State& s) const;
+  Derivs length_derivs(const std::vector<PointRef>& pts, const std::vector<Constraint::Winding>& winds,
+                       const State& s) const;
   // Onto the constraints (positions, then rates), moving only the coordinates not frozen.
   void project(State& s, bool rates_only, const std::vector<bool>* frozen_q = nullptr,
                const std::vector<bool>* frozen_v = nullptr) const;

@@ -24,7 +24,8 @@ namespace {
 // against it), or a slip that turns.
 class Events {
  public:
-  Events(const Model& m, const State& start) : m_(m), tol_(1e-7 * std::max(1.0, m.largest_mass() * m.gravity_magnitude())) {
+  Events(const Model& m, const State& start)
+      : m_(m), tol_(1e-7 * std::max(1.0, m.largest_mass() * m.gravity_magnitude())) {
     const auto w = m.watched(start);
     for (std::size_t k = 0; k < w.size(); ++k) {
       const double v = w[k].second;
@@ -32,7 +33,8 @@ class Events {
       // that starts at 0 takes the sign it first has)
       slip_.push_back(k >= m.requirements().size());
       sign_.push_back(std::isnan(v) || std::abs(v) <= tol_ ? (slip_[k] ? 0 : 1) : v > 0 ? 1 : -1);
-      if (sign_[k] < 0 && !first) first = {0.0, w[k].first + (slip_[k] ? ": against the assumed sliding direction" : "")};
+      if (sign_[k] < 0 && !first)
+        first = {0.0, w[k].first + (slip_[k] ? ": against the assumed sliding direction" : "")};
     }
   }
   // A step from t0 to t1, `at` the state at any time in it.
@@ -81,14 +83,16 @@ void compare_events(const tackle::Simulation& sim, const Events& ev, double hori
     }
   const auto close = [](double a, double b) { return std::abs(a - b) <= 1e-6 * std::max(1.0, std::abs(a)); };
   if (ev.first && ev.first->first <= horizon && (!end || !close(end->t, ev.first->first)))
-    out.disagreements.push_back({fmt::format("motion: the model's first event: {} at t = {:.9g} s; tackle's: {}", ev.first->second,
-                                             ev.first->first, end ? fmt::format("{} at t = {:.9g} s", end->what, end->t) : "none"),
-                                 end ? end->t : -1, ev.first->first, "from the initial values"});
+    out.disagreements.push_back(
+        {fmt::format("motion: the model's first event: {} at t = {:.9g} s; tackle's: {}", ev.first->second,
+                     ev.first->first, end ? fmt::format("{} at t = {:.9g} s", end->what, end->t) : "none"),
+         end ? end->t : -1, ev.first->first, "from the initial values"});
   else if (end && ev.first)
     out.motion_event = fmt::format("{} at t = {:.6g} s (tackle: {})", ev.first->second, ev.first->first, end->what);
   else if (end && !ev.first && end->t <= horizon)
-    out.disagreements.push_back({fmt::format("motion: tackle's run ends at t = {:.9g} s ({}); the model has no event there", end->t, end->what),
-                                 end->t, -1, "from the initial values"});
+    out.disagreements.push_back(
+        {fmt::format("motion: tackle's run ends at t = {:.9g} s ({}); the model has no event there", end->t, end->what),
+         end->t, -1, "from the initial values"});
 }
 
 }  // namespace
@@ -130,7 +134,8 @@ Outcome compare_motion(const tackle::Analysis& a, const Model& m, const tackle::
     sim = tackle::simulate(a, spec, tackle::Location{});
   } catch (const std::exception& e) {
     // tackle solved the instant but cannot follow it in time, where the model can
-    out.disagreements.push_back({std::string("motion: tackle's simulate refuses it: ") + e.what(), 0, 0, "from the initial values"});
+    out.disagreements.push_back(
+        {std::string("motion: tackle's simulate refuses it: ") + e.what(), 0, 0, "from the initial values"});
     return out;
   }
   // The model's motion: positions and rates of every coordinate, Dormand-Prince 5(4) at a
@@ -185,8 +190,10 @@ Outcome compare_motion(const tackle::Analysis& a, const Model& m, const tackle::
       }
       stepper.do_step(rhs);
       const State s = state_at(stepper.current_time());
-      if (!m.strands_keep_direction(s, *start)) crossed = stepper.previous_time();
-      else events.step(stepper.previous_time(), stepper.current_time(), state_at);
+      if (!m.strands_keep_direction(s, *start))
+        crossed = stepper.previous_time();
+      else
+        events.step(stepper.previous_time(), stepper.current_time(), state_at);
     }
     return true;
   };
@@ -196,7 +203,8 @@ Outcome compare_motion(const tackle::Analysis& a, const Model& m, const tackle::
     if (crossed >= 0 && target > crossed) {
       out.motion_note = fmt::format(
           "a strand goes through zero length at t = {:.4g} s (a block through its pulley or anchor): "
-          "compared up to there", crossed);
+          "compared up to there",
+          crossed);
       return out;
     }
     if (failed) {
@@ -218,16 +226,18 @@ Outcome compare_motion(const tackle::Analysis& a, const Model& m, const tackle::
       out.motion_error = std::max(out.motion_error, err);
       ++out.motion_points;
       if (err > o.motion_tolerance * std::max(1.0, std::abs(*cell)))
-        out.disagreements.push_back({fmt::format("motion: {} at t = {:g} s", table.names[k], target), *cell, mine,
-                                     "from the initial values"});
+        out.disagreements.push_back(
+            {fmt::format("motion: {} at t = {:g} s", table.names[k], target), *cell, mine, "from the initial values"});
     }
     ++row;
   }
   // (past the last row, to where tackle's run ends: an event there is the model's too)
-  const double horizon = table.x.empty() ? 0.0 : std::max(table.x.back(), sim.complete ? 0.0 : sim.reached * (1 + 1e-5) + 1e-7);
+  const double horizon =
+      table.x.empty() ? 0.0 : std::max(table.x.back(), sim.complete ? 0.0 : sim.reached * (1 + 1e-5) + 1e-7);
   if (!advance(horizon)) return out;
   if (crossed < 0 && !failed) compare_events(sim, events, horizon, out);
-  if (!sim.complete && out.motion_note.empty()) out.motion_note = fmt::format("tackle's run ends at t = {:g} s ({})", sim.reached, sim.stopped);
+  if (!sim.complete && out.motion_note.empty())
+    out.motion_note = fmt::format("tackle's run ends at t = {:g} s ({})", sim.reached, sim.stopped);
   return out;
 }
 

@@ -91,8 +91,10 @@ std::vector<Source> load_examples(const std::string& dir, const tackle::RuleSet&
   for (const auto& f : files) {
     std::string why;
     const std::string name = f.filename().string();
-    if (auto s = load(read(f), name, name, rules, seed, why)) out.push_back(std::move(*s));
-    else std::cout << fmt::format("not used  {}: {}\n", name, why);
+    if (auto s = load(read(f), name, name, rules, seed, why))
+      out.push_back(std::move(*s));
+    else
+      std::cout << fmt::format("not used  {}: {}\n", name, why);
   }
   return out;
 }
@@ -115,15 +117,19 @@ Comparison compare_verdict(const Item& it) {
   if (!it.error.empty()) return {Comparison::disagree, "tackle threw: " + it.error};
   if (it.j.truth == Truth::unknown) return {Comparison::skipped, it.j.why};
   if (it.j.tautology)  // (docs/checking.md: `trivial`, incorrect by design)
-    return {Comparison::skipped, "a tautology (holds whatever the state): tackle says " + tackle::verdict_name(it.r->verdict)};
+    return {Comparison::skipped,
+            "a tautology (holds whatever the state): tackle says " + tackle::verdict_name(it.r->verdict)};
   const tackle::CheckResult& r = *it.r;
   const bool holds = it.j.truth == Truth::holds;
   if (r.verdict != Verdict::correct && r.summary.empty() && r.findings.empty())
     return {Comparison::disagree, "tackle says nothing (" + tackle::verdict_name(r.verdict) + " without a reason)"};
-  if (r.verdict == Verdict::correct) return holds ? Comparison{} : Comparison{Comparison::disagree, "false, and tackle says correct"};
-  if (r.verdict == Verdict::incorrect) return holds ? Comparison{Comparison::disagree, "true, and tackle says incorrect"} : Comparison{};
+  if (r.verdict == Verdict::correct)
+    return holds ? Comparison{} : Comparison{Comparison::disagree, "false, and tackle says correct"};
+  if (r.verdict == Verdict::incorrect)
+    return holds ? Comparison{Comparison::disagree, "true, and tackle says incorrect"} : Comparison{};
   if (r.verdict == Verdict::undecided)
-    return holds ? Comparison{Comparison::undecided, r.summary} : Comparison{Comparison::disagree, "false, and tackle leaves it undecided"};
+    return holds ? Comparison{Comparison::undecided, r.summary}
+                 : Comparison{Comparison::disagree, "false, and tackle leaves it undecided"};
   return {Comparison::disagree, std::string(holds ? "true" : "false") + ", and tackle says invalid"};
 }
 
@@ -142,16 +148,16 @@ class Tally {
     if (c.kind == Comparison::disagree) {
       ++disagree_reasons_[c.why + (it.r && !it.r->findings.empty() ? " (" + it.r->findings.front().code + ")" : "")];
       show(s, it, c);
-    }
-    else if (it.j.tautology && std::getenv("CROSSCHECK_DEBUG"))
+    } else if (it.j.tautology && std::getenv("CROSSCHECK_DEBUG"))
       std::cout << fmt::format("TAUTOLOGY  {} [{}] {}\n", s.name, it.v.family, it.v.text);
-    else if (it.v.meant != (it.j.truth == Truth::holds) && it.j.truth != Truth::unknown && std::getenv("CROSSCHECK_DEBUG"))
+    else if (it.v.meant != (it.j.truth == Truth::holds) && it.j.truth != Truth::unknown &&
+             std::getenv("CROSSCHECK_DEBUG"))
       std::cout << fmt::format("NOT AS MEANT  {} [{}] {}\n          {}\n", s.name, it.v.family, it.j.why, it.v.text);
   }
 
   long print(long written) const {
-    std::cout << fmt::format("\n{:<22} {:>7} {:>7} {:>7} {:>9} {:>9} {:>8} {:>8}\n", "family", noun_, "true", "false", "disagree",
-                             "undecided", "skipped", "not as meant");
+    std::cout << fmt::format("\n{:<22} {:>7} {:>7} {:>7} {:>9} {:>9} {:>8} {:>8}\n", "family", noun_, "true", "false",
+                             "disagree", "undecided", "skipped", "not as meant");
     for (const auto& [f, k] : families_) row(f, k);
     row("all", total_);
     std::cout << fmt::format("\n{:<52} {:>7} {:>9}\n", "source", noun_, "disagree");
@@ -162,8 +168,9 @@ class Tally {
     for (const auto& [why, n] : skip_reasons_) std::cout << fmt::format("  {:>6}  {}\n", n, why);
     if (!undecided_reasons_.empty()) std::cout << "\ntrue, and left undecided by tackle (allowed, counted):\n";
     for (const auto& [why, n] : undecided_reasons_) std::cout << fmt::format("  {:>6}  {}\n", n, why);
-    std::cout << fmt::format("\n{} {}: {} decided by the model ({} true, {} false), {} skipped, {} true and undecided by tackle\n",
-                             written, noun_, total_.holds + total_.fails, total_.holds, total_.fails, total_.skipped, total_.undecided);
+    std::cout << fmt::format(
+        "\n{} {}: {} decided by the model ({} true, {} false), {} skipped, {} true and undecided by tackle\n", written,
+        noun_, total_.holds + total_.fails, total_.holds, total_.fails, total_.skipped, total_.undecided);
     std::cout << fmt::format("{} {}, {} disagreements\n", written, noun_, total_.disagreements);
     return total_.disagreements;
   }
@@ -187,13 +194,15 @@ class Tally {
   }
   // A skip's reason without its particulars (the quantity, the numbers).
   static std::string reason_kind(const std::string& why) {
-    for (const char* k : {"the model has no value for", "the model has no quantity", "undetermined", "too close to call", "cannot read"})
-      if (why.find(k) != std::string::npos) return k == std::string("undetermined") ? "the model leaves a quantity undetermined" : k;
+    for (const char* k : {"the model has no value for", "the model has no quantity", "undetermined",
+                          "too close to call", "cannot read"})
+      if (why.find(k) != std::string::npos)
+        return k == std::string("undetermined") ? "the model leaves a quantity undetermined" : k;
     return why;
   }
   void row(const std::string& name, const Counts& k) const {
-    std::cout << fmt::format("{:<22} {:>7} {:>7} {:>7} {:>9} {:>9} {:>8} {:>8}\n", name, k.items, k.holds, k.fails, k.disagreements,
-                             k.undecided, k.skipped, k.meant_otherwise);
+    std::cout << fmt::format("{:<22} {:>7} {:>7} {:>7} {:>9} {:>9} {:>8} {:>8}\n", name, k.items, k.holds, k.fails,
+                             k.disagreements, k.undecided, k.skipped, k.meant_otherwise);
   }
   void show(const Source& s, const Item& it, const Comparison& c) {
     int& n = shown_of_[s.group + " " + it.v.family];
@@ -201,7 +210,8 @@ class Tally {
     std::cout << fmt::format("DISAGREE  {} [{}] {}{}\n", s.name, it.v.family, c.why,
                              it.r && !it.r->summary.empty() ? ": " + it.r->summary : "");
     std::string text = it.v.text;  // (a diagram's YAML: each line indented)
-    for (std::size_t at = text.find('\n'); at != std::string::npos && at + 1 < text.size(); at = text.find('\n', at + 1))
+    for (std::size_t at = text.find('\n'); at != std::string::npos && at + 1 < text.size();
+         at = text.find('\n', at + 1))
       text.insert(at + 1, "          ");
     std::cout << fmt::format("          {}{}\n", it.v.unknown.empty() ? "" : it.v.unknown + " = ", text);
     if (it.j.truth == Truth::fails) std::cout << fmt::format("          (model: {})\n", it.j.why);
@@ -220,7 +230,9 @@ ItemKind item_kind(OracleOptions::Kind k) {
   switch (k) {
     case OracleOptions::Kind::answers:
       return {"answers", [](const Source& s, Rng& rng) { return s.variants->answer(rng); },
-              [](const Source&, const Variant& v, const std::vector<World>& w) { return judge_answer(v.unknown, v.text, w); },
+              [](const Source&, const Variant& v, const std::vector<World>& w) {
+                return judge_answer(v.unknown, v.text, w);
+              },
               [](const Source& s, const Variant& v) { return s.checker->check(v.unknown, v.text); }};
     case OracleOptions::Kind::fbds:
       return {"diagrams", [](const Source& s, Rng& rng) { return make_diagram(s.d, rng); },
@@ -270,8 +282,10 @@ long run_oracle(const OracleOptions& o, const tackle::RuleSet& rules) {
   for (long visit = 0; written < o.count && idle < 100; ++visit) {
     std::optional<Source> fresh;
     const Source* s = nullptr;
-    if (visit % 2 == 0 && !examples.empty()) s = &examples[static_cast<std::size_t>(visit / 2) % examples.size()];
-    else if ((fresh = next_generated(generated_seed, rules))) s = &*fresh;
+    if (visit % 2 == 0 && !examples.empty())
+      s = &examples[static_cast<std::size_t>(visit / 2) % examples.size()];
+    else if ((fresh = next_generated(generated_seed, rules)))
+      s = &*fresh;
     if (!s) break;
     std::vector<World> worlds;
     try {
@@ -293,8 +307,8 @@ long run_oracle(const OracleOptions& o, const tackle::RuleSet& rules) {
   return tally.print(written);
 }
 
-int explain_one(const std::string& file, const std::string& text, const std::string& unknown, const tackle::RuleSet& rules,
-                std::uint64_t seed) {
+int explain_one(const std::string& file, const std::string& text, const std::string& unknown,
+                const tackle::RuleSet& rules, std::uint64_t seed) {
   std::string why;
   const auto s = load(read(file), file, file, rules, seed, why);
   if (!s) {
@@ -310,7 +324,10 @@ int explain_one(const std::string& file, const std::string& text, const std::str
   }
   const Judgement j = unknown.empty() ? judge_equation(text, worlds) : judge_answer(unknown, text, worlds);
   std::cout << fmt::format("the model: {} ({}; worst relative residual {:.3g})\n",
-                           j.truth == Truth::holds ? "holds" : j.truth == Truth::fails ? "fails" : "cannot decide", j.why, j.worst);
+                           j.truth == Truth::holds   ? "holds"
+                           : j.truth == Truth::fails ? "fails"
+                                                     : "cannot decide",
+                           j.why, j.worst);
   const tackle::CheckResult r = unknown.empty() ? s->checker->check_equation(text) : s->checker->check(unknown, text);
   std::cout << fmt::format("tackle: {}: {}\n", tackle::verdict_name(r.verdict), r.summary);
   return 0;

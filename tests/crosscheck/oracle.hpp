@@ -15,10 +15,10 @@ struct OracleOptions {
   enum class Kind { equations, answers, fbds } kind = Kind::equations;
   long count = 300;
   std::uint64_t seed = 1;
-  std::string examples;     // the directory of the examples
-  int per_visit = 10;       // items made from one source at one draw of its worlds
-  int shown = 3;            // disagreements printed per source and family (0: all)
-  bool silent = false;      // a tackle that says nothing (an empty verdict): every item must disagree
+  std::string examples;  // the directory of the examples
+  int per_visit = 10;    // items made from one source at one draw of its worlds
+  int shown = 3;         // disagreements printed per source and family (0: all)
+  bool silent = false;   // a tackle that says nothing (an empty verdict): every item must disagree
 };
 
 /// Runs the oracle; prints every disagreement (up to `shown` of a kind), the tallies and
@@ -26,7 +26,7 @@ struct OracleOptions {
 long run_oracle(const OracleOptions& o, const tackle::RuleSet& rules);
 /// One equation (or, with `unknown`, one answer) on one description: the model's worlds, its
 /// truth and tackle's verdict, printed (a reproducer for a disagreement).
-int explain_one(const std::string& file, const std::string& text, const std::string& unknown, const tackle::RuleSet& rules,
-                std::uint64_t seed);
+int explain_one(const std::string& file, const std::string& text, const std::string& unknown,
+                const tackle::RuleSet& rules, std::uint64_t seed);
 
 }  // namespace crosscheck

@@ -38,7 +38,8 @@ std::optional<double> tackle_at(const GiNaC::ex& e, const tackle::SymbolTable& t
   return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
 }
 
-void expect(Outcome& out, const std::string& what, std::optional<double> tackle, double model, const std::string& phase) {
+void expect(Outcome& out, const std::string& what, std::optional<double> tackle, double model,
+            const std::string& phase) {
   ++out.compared;
   if (!tackle || std::abs(*tackle - model) > 1e-9 * std::max({std::abs(*tackle), std::abs(model), 1.0}))
     out.disagreements.push_back({what + (tackle ? "" : " (tackle gives no number)"), tackle.value_or(0), model, phase});
@@ -74,7 +75,8 @@ std::optional<Values> follow_impact(const tackle::Description& d, const tackle::
   }
   double mass = 0, momentum = 0;
   for (const auto& b : bodies) mass += b.mass, momentum += b.mass * b.before;
-  const auto e = d.impact->restitution ? evaluate_text(d.impact->restitution->text, numbers) : std::optional<double>(0.0);
+  const auto e =
+      d.impact->restitution ? evaluate_text(d.impact->restitution->text, numbers) : std::optional<double>(0.0);
   if (!e || (d.impact->restitution && bodies.size() != 2)) return std::nullopt;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     // common velocity, less e times the approach shared out by the other's mass
@@ -118,7 +120,8 @@ std::optional<Values> follow_interval(const tackle::Description& d, const tackle
     const Quantity* acc = inst.find("d" + rate);  // ddot(y) for dot(y)
     const auto v0 = evaluate_text(tackle::to_text(r.from), m.parameters());
     if (!acc || !acc->determined || !v0 || (!T && !s)) return std::nullopt;
-    const double v = T ? *v0 + acc->value * *T : std::copysign(std::sqrt(std::max(0.0, *v0 * *v0 + 2 * acc->value * *s)), *s);
+    const double v =
+        T ? *v0 + acc->value * *T : std::copysign(std::sqrt(std::max(0.0, *v0 * *v0 + 2 * acc->value * *s)), *s);
     expect(out, phase + ": " + rate + " at the end of the interval", tackle_at(r.value, table, numbers), v, phase);
     after[rate] = v;
   }
@@ -131,12 +134,14 @@ Outcome compare_phases(const tackle::Description& d, const tackle::Analysis& a) 
   Outcome out;
   std::vector<std::pair<const tackle::Description*, const tackle::Analysis*>> steps;
   if (d.phases.empty()) steps.emplace_back(&d, &a);
-  for (std::size_t i = 0; i < d.phases.size() && i < a.phases.size(); ++i) steps.emplace_back(&d.phases[i].d, a.phases[i].analysis.get());
+  for (std::size_t i = 0; i < d.phases.size() && i < a.phases.size(); ++i)
+    steps.emplace_back(&d.phases[i].d, a.phases[i].analysis.get());
   Values carried;  // what the previous phase carries, the model's own numbers
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const std::string phase = d.phases.empty() ? "the description" : "phase " + d.phases[i].name.text;
     tackle::Description pd = *steps[i].first;
-    for (const auto& [name, v] : carried) pd.parameters.push_back({{name, {}}, tackle::Text{fmt::format("{:.17g}", v), {}}, {}, {}, {}, false, {}, {}, {}});
+    for (const auto& [name, v] : carried)
+      pd.parameters.push_back({{name, {}}, tackle::Text{fmt::format("{:.17g}", v), {}}, {}, {}, {}, false, {}, {}, {}});
     std::optional<Values> end;
     try {
       tackle::Description bare = pd;
@@ -144,13 +149,16 @@ Outcome compare_phases(const tackle::Description& d, const tackle::Analysis& a) 
       bare.interval.reset();
       std::mt19937_64 rng(1);
       Values numbers = Model(bare, rng).parameters();
-      if (pd.impact && steps[i].second->impact) end = follow_impact(pd, *steps[i].second, numbers, phase, out);
-      else if (pd.interval && steps[i].second->interval_end) end = follow_interval(pd, *steps[i].second, numbers, phase, out);
+      if (pd.impact && steps[i].second->impact)
+        end = follow_impact(pd, *steps[i].second, numbers, phase, out);
+      else if (pd.interval && steps[i].second->interval_end)
+        end = follow_interval(pd, *steps[i].second, numbers, phase, out);
     } catch (const Unsupported& e) {
       out.not_compared.insert(phase + ": " + e.what());
     }
     if (!end) {
-      out.not_compared.insert(phase + (d.phases.empty() ? "" : " and the phases after it") + " (the model does not follow it)");
+      out.not_compared.insert(phase + (d.phases.empty() ? "" : " and the phases after it") +
+                              " (the model does not follow it)");
       break;
     }
     carried.clear();
@@ -158,7 +166,9 @@ Outcome compare_phases(const tackle::Description& d, const tackle::Analysis& a) 
       for (const auto& [name, expr] : d.phases[i].carry)
         if (const auto v = evaluate_text(expr.text, *end)) carried[name.text] = *v;
   }
-  out.kind = !out.disagreements.empty() ? Outcome::Kind::disagree : out.compared ? Outcome::Kind::agree : Outcome::Kind::skipped;
+  out.kind = !out.disagreements.empty() ? Outcome::Kind::disagree
+             : out.compared             ? Outcome::Kind::agree
+                                        : Outcome::Kind::skipped;
   if (out.kind == Outcome::Kind::skipped) out.reason = "phases, an impact or an interval the model does not follow";
   return out;
 }

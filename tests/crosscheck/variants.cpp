@@ -37,7 +37,8 @@ numeric some_factor(Rng& rng) {
 // address its libraries are loaded at): every choice here is made among things put in the
 // order of their text, so that a seed makes the same items.
 std::vector<ex> by_text(std::vector<ex> v) {
-  std::stable_sort(v.begin(), v.end(), [](const ex& a, const ex& b) { return tackle::to_text(a) < tackle::to_text(b); });
+  std::stable_sort(v.begin(), v.end(),
+                   [](const ex& a, const ex& b) { return tackle::to_text(a) < tackle::to_text(b); });
   v.erase(std::unique(v.begin(), v.end(), [](const ex& a, const ex& b) { return a.is_equal(b); }), v.end());
   return v;
 }
@@ -45,7 +46,8 @@ std::vector<ex> by_text(std::vector<ex> v) {
 std::vector<ex> terms(const ex& side) {
   if (is_a<add>(side)) {
     std::vector<ex> t(side.begin(), side.end());
-    std::stable_sort(t.begin(), t.end(), [](const ex& a, const ex& b) { return tackle::to_text(a) < tackle::to_text(b); });
+    std::stable_sort(t.begin(), t.end(),
+                     [](const ex& a, const ex& b) { return tackle::to_text(a) < tackle::to_text(b); });
     return t;
   }
   if (side.is_zero()) return {};
@@ -90,9 +92,12 @@ std::optional<Eq> change_term(const Eq& e, Rng& rng, const std::function<std::op
   const std::size_t k = pick(rng, l.size() + r.size());
   std::vector<ex>& side = k < l.size() ? l : r;
   const std::size_t i = k < l.size() ? k : k - l.size();
-  if (auto t = by(side[i])) side[i] = *t;
-  else if (l.size() + r.size() < 2) return std::nullopt;  // (not the only term)
-  else side.erase(side.begin() + static_cast<std::ptrdiff_t>(i));
+  if (auto t = by(side[i]))
+    side[i] = *t;
+  else if (l.size() + r.size() < 2)
+    return std::nullopt;  // (not the only term)
+  else
+    side.erase(side.begin() + static_cast<std::ptrdiff_t>(i));
   return Eq{sum(l), sum(r)};
 }
 
@@ -105,13 +110,19 @@ void angles_in(const ex& e, std::vector<ex>& out) {
 
 // Trig rewrites of one sine or cosine (true identities), or of a term (sin^2 + cos^2 = 1).
 std::optional<Eq> trig_tan(const Eq& e, Rng& rng) {
-  if (coin(rng)) return change_one(e, is_sin, [](const ex& s) { return tan(s.op(0)) * cos(s.op(0)); }, rng);
-  return change_one(e, is_cos, [](const ex& c) { return sin(c.op(0)) / tan(c.op(0)); }, rng);
+  if (coin(rng))
+    return change_one(
+        e, is_sin, [](const ex& s) { return tan(s.op(0)) * cos(s.op(0)); }, rng);
+  return change_one(
+      e, is_cos, [](const ex& c) { return sin(c.op(0)) / tan(c.op(0)); }, rng);
 }
 
 std::optional<Eq> trig_double(const Eq& e, Rng& rng) {
-  if (coin(rng)) return change_one(e, is_sin, [](const ex& s) { return 2 * sin(s.op(0) / 2) * cos(s.op(0) / 2); }, rng);
-  return change_one(e, is_cos, [](const ex& c) { return pow(cos(c.op(0) / 2), 2) - pow(sin(c.op(0) / 2), 2); }, rng);
+  if (coin(rng))
+    return change_one(
+        e, is_sin, [](const ex& s) { return 2 * sin(s.op(0) / 2) * cos(s.op(0) / 2); }, rng);
+  return change_one(
+      e, is_cos, [](const ex& c) { return pow(cos(c.op(0) / 2), 2) - pow(sin(c.op(0) / 2), 2); }, rng);
 }
 
 std::optional<Eq> trig_pythagoras(const Eq& e, const std::vector<ex>& problem_angles, Rng& rng) {
@@ -120,7 +131,8 @@ std::optional<Eq> trig_pythagoras(const Eq& e, const std::vector<ex>& problem_an
   angles_in(e.rhs, angles);
   const auto is_cos_squared = [](const ex& x) { return is_a<power>(x) && is_cos(x.op(0)) && x.op(1).is_equal(2); };
   if (coin(rng) && !matches(e, is_cos_squared).empty())
-    return change_one(e, is_cos_squared, [](const ex& c) { return 1 - pow(sin(c.op(0).op(0)), 2); }, rng);
+    return change_one(
+        e, is_cos_squared, [](const ex& c) { return 1 - pow(sin(c.op(0).op(0)), 2); }, rng);
   const auto x = one_of(rng, angles.empty() ? problem_angles : angles);
   if (!x) return std::nullopt;
   const ex one = pow(sin(*x), 2) + pow(cos(*x), 2);
@@ -128,19 +140,25 @@ std::optional<Eq> trig_pythagoras(const Eq& e, const std::vector<ex>& problem_an
 }
 
 std::optional<Eq> sin_for_cos(const Eq& e, Rng& rng) {
-  return change_one(e, [](const ex& x) { return is_sin(x) || is_cos(x); },
-                    [](const ex& x) { return is_sin(x) ? cos(x.op(0)) : sin(x.op(0)); }, rng);
+  return change_one(
+      e, [](const ex& x) { return is_sin(x) || is_cos(x); },
+      [](const ex& x) { return is_sin(x) ? cos(x.op(0)) : sin(x.op(0)); }, rng);
 }
 
 std::optional<Eq> other_mass(const Eq& e, const std::vector<ex>& masses, Rng& rng) {
   if (masses.size() < 2) return std::nullopt;
-  const auto is_mass = [&](const ex& x) { return std::any_of(masses.begin(), masses.end(), [&](const ex& m) { return m.is_equal(x); }); };
-  return change_one(e, is_mass, [&](const ex& m) {
-    std::vector<ex> others;
-    for (const auto& o : masses)
-      if (!o.is_equal(m)) others.push_back(o);
-    return *one_of(rng, others);
-  }, rng);
+  const auto is_mass = [&](const ex& x) {
+    return std::any_of(masses.begin(), masses.end(), [&](const ex& m) { return m.is_equal(x); });
+  };
+  return change_one(
+      e, is_mass,
+      [&](const ex& m) {
+        std::vector<ex> others;
+        for (const auto& o : masses)
+          if (!o.is_equal(m)) others.push_back(o);
+        return *one_of(rng, others);
+      },
+      rng);
 }
 
 Eq scaled(const Eq& e, const ex& by, bool expand) {
@@ -165,7 +183,9 @@ Eq moved(const Eq& e, Rng& rng) {
   }
 }
 
-Variant made(const std::optional<Eq>& e, const std::string& family, bool meant) { return {text(*e), family, meant, "", nullptr}; }
+Variant made(const std::optional<Eq>& e, const std::string& family, bool meant) {
+  return {text(*e), family, meant, "", nullptr};
+}
 
 }  // namespace
 
@@ -211,7 +231,8 @@ bool typeable(const std::string& text) {
     }
     ++tokens;
     if (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_' || text[i] == '.')
-      while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_' || text[i] == '.')) ++i;
+      while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_' || text[i] == '.'))
+        ++i;
     else
       ++i;
   }
@@ -230,7 +251,8 @@ void Variants::add_other_balances(const tackle::Model& m) {
     if (!(e.lhs - e.rhs).expand().is_zero()) others_.push_back({e.lhs, e.rhs});
   };
   for (const auto& g : groups)
-    for (int i = 0; i < n; ++i) add(tackle::lmb_along(m, g, g.size() > 1, axes[i], m.axes[static_cast<std::size_t>(i)]));
+    for (int i = 0; i < n; ++i)
+      add(tackle::lmb_along(m, g, g.size() > 1, axes[i], m.axes[static_cast<std::size_t>(i)]));
   if (n != 2) return;
   for (int b = 0; b < static_cast<int>(m.bodies.size()); ++b) {
     if (!m.bodies[static_cast<std::size_t>(b)].has_mass) continue;
@@ -388,7 +410,8 @@ std::vector<Variants::Family> Variants::equation_families() const {
   if (balances_.empty()) return f;
   add("as-derived", true, [this](Rng& rng) { return balance(rng); });
   add("moved", true, on_balance([](const Eq& e, Rng& rng) { return std::optional<Eq>(moved(e, rng)); }));
-  add("scaled-number", true, on_balance([](const Eq& e, Rng& rng) { return std::optional<Eq>(scaled(e, some_factor(rng), coin(rng))); }));
+  add("scaled-number", true,
+      on_balance([](const Eq& e, Rng& rng) { return std::optional<Eq>(scaled(e, some_factor(rng), coin(rng))); }));
   add("scaled-parameter", true, on_balance([this](const Eq& e, Rng& rng) {
         const ex p = *one_of(rng, parameters_);
         return std::optional<Eq>(scaled(e, coin(rng) ? p : 1 / p, coin(rng)));
@@ -401,7 +424,9 @@ std::vector<Variants::Family> Variants::equation_families() const {
   add("closed-form", true, [this](Rng& rng) { return closed_form(rng); });
   add("nonlinear", true, [this](Rng& rng) { return nonlinear(rng); });
   add("solved-for-parameter", true, [this](Rng& rng) { return solved_for_parameter(rng); });
-  add("squared", true, on_balance([](const Eq& e, Rng&) { return std::optional<Eq>(Eq{pow(e.lhs, 2), pow(e.rhs, 2)}); }));
+  add("squared", true, on_balance([](const Eq& e, Rng&) {
+        return std::optional<Eq>(Eq{pow(e.lhs, 2), pow(e.rhs, 2)});
+      }));
   if (!roots_.empty())
     add("roots-written-out", true, [this](Rng& rng) -> std::optional<Eq> {
       const auto e = coin(rng) ? balance(rng) : closed_form(rng);
@@ -422,8 +447,12 @@ std::vector<Variants::Family> Variants::equation_families() const {
   if (!rates_.empty()) add("rate", true, [this](Rng& rng) { return one_of(rng, rates_); });
   if (!positions_.empty()) add("length-sum", true, [this](Rng& rng) { return length_sum(rng, false); });
   // meant to be false
-  add("sign", false, on_balance([](const Eq& e, Rng& rng) { return change_term(e, rng, [](const ex& t) { return std::optional<ex>(-t); }); }));
-  add("missing-term", false, on_balance([](const Eq& e, Rng& rng) { return change_term(e, rng, [](const ex&) { return std::optional<ex>(); }); }));
+  add("sign", false, on_balance([](const Eq& e, Rng& rng) {
+        return change_term(e, rng, [](const ex& t) { return std::optional<ex>(-t); });
+      }));
+  add("missing-term", false, on_balance([](const Eq& e, Rng& rng) {
+        return change_term(e, rng, [](const ex&) { return std::optional<ex>(); });
+      }));
   add("extra-term", false, [this](Rng& rng) { return extra_term(rng); });
   add("other-mass", false, on_balance([this](const Eq& e, Rng& rng) { return other_mass(e, masses_, rng); }));
   add("factor", false, on_balance([](const Eq& e, Rng& rng) {
@@ -462,7 +491,8 @@ std::optional<std::pair<std::size_t, ex>> Variants::closed(Rng& rng) const {
   return std::make_pair(i, closed_[i].second);
 }
 
-std::optional<Variant> Variants::answer_of(Rng& rng, const std::function<std::optional<ex>(const ex&, Rng&)>& change) const {
+std::optional<Variant> Variants::answer_of(Rng& rng,
+                                           const std::function<std::optional<ex>(const ex&, Rng&)>& change) const {
   const auto c = closed(rng);
   if (!c) return std::nullopt;
   const auto a = change(c->second, rng);

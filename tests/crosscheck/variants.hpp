@@ -22,10 +22,10 @@ namespace crosscheck {
 struct Diagram;  // diagram.hpp
 
 struct Variant {
-  std::string text;     // the equation ("lhs = rhs"), the answer, or the diagram (YAML)
-  std::string family;   // how it was made ("trig-tan", "sign", ...)
-  bool meant = true;    // made to be true
-  std::string unknown;  // an answer: the unknown it answers
+  std::string text;                        // the equation ("lhs = rhs"), the answer, or the diagram (YAML)
+  std::string family;                      // how it was made ("trig-tan", "sign", ...)
+  bool meant = true;                       // made to be true
+  std::string unknown;                     // an answer: the unknown it answers
   std::shared_ptr<const Diagram> diagram;  // a diagram: its arrows and the model's forces
 };
 
@@ -63,7 +63,9 @@ class Variants {
   std::optional<Eq> extra_term(std::mt19937_64& rng) const;
   // Answers: an unknown and its closed form
   std::optional<std::pair<std::size_t, GiNaC::ex>> closed(std::mt19937_64& rng) const;
-  std::optional<Variant> answer_of(std::mt19937_64& rng, const std::function<std::optional<GiNaC::ex>(const GiNaC::ex&, std::mt19937_64&)>& change) const;
+  std::optional<Variant> answer_of(
+      std::mt19937_64& rng,
+      const std::function<std::optional<GiNaC::ex>(const GiNaC::ex&, std::mt19937_64&)>& change) const;
 
   /// The dimension of `e` (tackle's table of the symbols' dimensions: raw material only).
   [[nodiscard]] std::optional<tackle::Dimension> dimension(const GiNaC::ex& e) const;

@@ -52,8 +52,10 @@ World world_at(const Model& m, const State& s, int draw) {
     if (q.name.rfind("guide", 0) == 0) continue;
     w.values[q.name] = q.value;
     if (q.free.size() && q.free.norm() > 1e-9) w.free[q.name] = q.free;
-    if (q.force) forces = std::max(forces, std::abs(q.value));
-    else w.accel_scale = std::max(w.accel_scale, std::abs(q.value));
+    if (q.force)
+      forces = std::max(forces, std::abs(q.value));
+    else
+      w.accel_scale = std::max(w.accel_scale, std::abs(q.value));
   }
   w.scale = std::max({forces, m.largest_mass() * w.accel_scale, 1e-3});
   return w;
@@ -113,7 +115,8 @@ struct Residual {
 
 // The variables of a compiled text in a world, moved along the free directions by `shift`
 // (a name the world lacks: nothing, and `why` names it). `const` is 0.
-std::optional<std::vector<double>> variables(const Compiled& c, const World& w, const Eigen::VectorXd* shift, std::string& why) {
+std::optional<std::vector<double>> variables(const Compiled& c, const World& w, const Eigen::VectorXd* shift,
+                                             std::string& why) {
   std::vector<double> vars;
   for (const auto& n : c.names) {
     if (n == "const") {
@@ -298,15 +301,21 @@ Judgement decide(const Compiled& c, const std::vector<World>& worlds) {
     const double rel = std::max(std::abs(value) - 100 * floor, 0.0) / std::max(size, 1e-300);
     if (rel > j.worst) {
       j.worst = rel;
-      if (rel > fails_above && !fails) j.why = "fails at " + state_text(w) + fmt::format(" (relative residual {:.3g})", rel);
+      if (rel > fails_above && !fails)
+        j.why = "fails at " + state_text(w) + fmt::format(" (relative residual {:.3g})", rel);
     }
     fails = fails || rel > fails_above;
   }
-  if (fails) j.truth = Truth::fails;
-  else if (j.worst <= holds_below && with_parameter) j.why = "a kept sum whose constant is a parameter: the description does not fix the constant";
-  else if (j.worst <= holds_below) j.truth = Truth::holds;
-  else j.why = fmt::format("too close to call (relative residual {:.3g})", j.worst);
-  j.tautology = j.truth == Truth::holds && tautology(c, worlds.back());  // (a drawn world: no coincidence of the given values)
+  if (fails)
+    j.truth = Truth::fails;
+  else if (j.worst <= holds_below && with_parameter)
+    j.why = "a kept sum whose constant is a parameter: the description does not fix the constant";
+  else if (j.worst <= holds_below)
+    j.truth = Truth::holds;
+  else
+    j.why = fmt::format("too close to call (relative residual {:.3g})", j.worst);
+  j.tautology =
+      j.truth == Truth::holds && tautology(c, worlds.back());  // (a drawn world: no coincidence of the given values)
   return j;
 }
 
@@ -328,8 +337,10 @@ tackle::Description redrawn(const tackle::Description& d, std::mt19937_64& rng, 
     if (p.define || !p.value) continue;
     const double factor = std::exp(u(rng) * std::log(spread));
     // (a parameter given as 0, an amplitude or an offset, is a symbol to tackle: some value)
-    if (is_zero(p.value->text)) p.value->text = fmt::format("{:.17g}", 0.55 + 0.45 * u(rng));
-    else p.value->text = fmt::format("({})*{:.17g}", p.value->text, factor);
+    if (is_zero(p.value->text))
+      p.value->text = fmt::format("{:.17g}", 0.55 + 0.45 * u(rng));
+    else
+      p.value->text = fmt::format("({})*{:.17g}", p.value->text, factor);
   }
   return out;
 }
@@ -402,8 +413,10 @@ Judgement judge_answer(const std::string& unknown, const std::string& answer, co
     if (diff > holds_below * size + 1e-10 * scale && !fails && j.why.empty())
       j.why = fmt::format("too close to call ({:.3g} against the model's {:.3g})", r->value, q->value);
   }
-  if (fails) j.truth = Truth::fails;
-  else if (j.why.empty()) j.truth = Truth::holds;
+  if (fails)
+    j.truth = Truth::fails;
+  else if (j.why.empty())
+    j.truth = Truth::holds;
   return j;
 }
 

@@ -22,11 +22,11 @@ struct World {
   std::map<std::string, double> values;         // parameters, coordinates, rates, t, solved quantities
   std::map<std::string, Eigen::VectorXd> free;  // a solved quantity's parts the model leaves free
   int free_directions = 0;
-  double scale = 1;                             // the largest force (at least the largest m g): "near 0"
+  double scale = 1;  // the largest force (at least the largest m g): "near 0"
   double accel_scale = 1;
   State state;
   Instant instant;
-  std::vector<std::string> parameters;          // the names of values that no state changes
+  std::vector<std::string> parameters;  // the names of values that no state changes
 };
 
 struct WorldOptions {
@@ -60,6 +60,7 @@ struct Judgement {
 /// is a length sum: it holds when lhs - rhs is the same at every state of a draw.
 [[nodiscard]] Judgement judge_equation(const std::string& equation, const std::vector<World>& worlds);
 /// Whether `answer` is the model's value of `unknown` in every world.
-[[nodiscard]] Judgement judge_answer(const std::string& unknown, const std::string& answer, const std::vector<World>& worlds);
+[[nodiscard]] Judgement judge_answer(const std::string& unknown, const std::string& answer,
+                                     const std::vector<World>& worlds);
 
 }  // namespace crosscheck

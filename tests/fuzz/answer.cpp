@@ -25,7 +25,8 @@ const std::vector<Problem>& problems() {
     for (const char* name : {"sample-12.8-sign-board", "sample-12.7-suitcase", "sample-12.3-two-mass-pulley",
                              "car-braking-us-units", "sample-12.2-pulley-kinematics"}) {
       Problem p;
-      p.analysis = tackle::analyze_file(std::string(TACKLE_SOURCE_DIR "/examples/") + name + ".yaml", tackle::fuzz::rules());
+      p.analysis =
+          tackle::analyze_file(std::string(TACKLE_SOURCE_DIR "/examples/") + name + ".yaml", tackle::fuzz::rules());
       // A seed for the points drawn for each check: a finding must replay the same way.
       tackle::CheckOptions options;
       options.seed = 1;
@@ -46,8 +47,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size < 2) return 0;
   const Problem& p = problems()[data[0] % problems().size()];
   const std::string& unknown = p.unknowns[data[1] % p.unknowns.size()];
-  const tackle::CheckResult r = unknown == equation ? p.checker->check_equation(tackle::fuzz::text_of(data + 2, size - 2))
-                                                    : p.checker->check(unknown, tackle::fuzz::text_of(data + 2, size - 2));
+  const tackle::CheckResult r = unknown == equation
+                                    ? p.checker->check_equation(tackle::fuzz::text_of(data + 2, size - 2))
+                                    : p.checker->check(unknown, tackle::fuzz::text_of(data + 2, size - 2));
   for (const auto& f : r.findings) tackle::fuzz::no_internal_verdict(f.code);
   return 0;
 }

@@ -21,7 +21,8 @@ const std::vector<Problem>& problems() {
     for (const char* name : {"sample-12.3-two-mass-pulley", "incline-and-hanging-block", "sample-12.8-sign-board",
                              "rotation-wheel-driven-by-a-couple", "two-blocks-joined-by-a-pin"}) {
       Problem p;
-      p.analysis = tackle::analyze_file(std::string(TACKLE_SOURCE_DIR "/examples/") + name + ".yaml", tackle::fuzz::rules());
+      p.analysis =
+          tackle::analyze_file(std::string(TACKLE_SOURCE_DIR "/examples/") + name + ".yaml", tackle::fuzz::rules());
       tackle::CheckOptions options;
       options.seed = 1;  // a finding must replay the same way
       p.checker = std::make_unique<const tackle::Checker>(*p.analysis, options);

@@ -53,7 +53,9 @@ inline std::vector<std::string> example_files() {
 }
 
 /// An example's text, to vary it in a test.
-inline std::string read_example(const std::string& name) { return read_text_file(TACKLE_SOURCE_DIR "/examples/" + name); }
+inline std::string read_example(const std::string& name) {
+  return read_text_file(TACKLE_SOURCE_DIR "/examples/" + name);
+}
 
 /// An example with one piece of its text replaced (throws when the text is not there, so a
 /// test cannot silently run the unchanged example).

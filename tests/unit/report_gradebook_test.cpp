@@ -5,7 +5,8 @@
 
 using namespace tackle;
 
-TEST_CASE("gradebook: a CSV field is quoted when it has a comma, a quote or a line break (RFC 4180)", "[report][gradebook]") {
+TEST_CASE("gradebook: a CSV field is quoted when it has a comma, a quote or a line break (RFC 4180)",
+          "[report][gradebook]") {
   CHECK(csv_field("ada") == "ada");
   CHECK(csv_field("") == "");
   CHECK(csv_field("Doe, Jane") == "\"Doe, Jane\"");
@@ -42,7 +43,8 @@ Gradebook small_class() {
 
 }  // namespace
 
-TEST_CASE("gradebook: plain: a row per student, a column per question, the total, invalid and unanswered cells", "[report][gradebook]") {
+TEST_CASE("gradebook: plain: a row per student, a column per question, the total, invalid and unanswered cells",
+          "[report][gradebook]") {
   const Gradebook book = small_class();
   CHECK(book.problems().empty());
   CHECK(book.students() == 3);
@@ -55,7 +57,8 @@ TEST_CASE("gradebook: plain: a row per student, a column per question, the total
   CHECK(book.invalid_cells() == std::vector<std::string>{"Doe, \"Bo\": q2"});
 }
 
-TEST_CASE("gradebook: canvas: the student columns, a Points Possible row, Final Points, no text in a grade", "[report][gradebook]") {
+TEST_CASE("gradebook: canvas: the student columns, a Points Possible row, Final Points, no text in a grade",
+          "[report][gradebook]") {
   CHECK(small_class().csv(GradebookFormat::canvas) ==
         "Student,ID,SIS User ID,SIS Login ID,Section,q1,q2,Final Points\r\n"
         "Points Possible,,,,,2,1,\r\n"
@@ -103,17 +106,21 @@ TEST_CASE("gradebook: a line without a student or an id is a located problem, no
   const auto problems = book.problems();
   REQUIRE(problems.size() == 4);
   CHECK(format(problems[0]) ==
-        "class.jsonl:1: the line is not a JSON object, so whose answer it is is not known (expected {\"student\": ..., \"id\": ..., ...} "
+        "class.jsonl:1: the line is not a JSON object, so whose answer it is is not known (expected {\"student\": ..., "
+        "\"id\": ..., ...} "
         "on every line with --gradebook)");
-  CHECK(format(problems[1]) == "class.jsonl:2: no \"student\" (expected the student's name or id, a string, on every line with --gradebook)");
-  CHECK(format(problems[2]) == "class.jsonl:3: no \"student\" (expected the student's name or id, a string, on every line with --gradebook)");
+  CHECK(format(problems[1]) ==
+        "class.jsonl:2: no \"student\" (expected the student's name or id, a string, on every line with --gradebook)");
+  CHECK(format(problems[2]) ==
+        "class.jsonl:3: no \"student\" (expected the student's name or id, a string, on every line with --gradebook)");
   CHECK(format(problems[3]) == "class.jsonl:4: no \"id\" (expected the question's id on every line with --gradebook)");
   CHECK(book.students() == 1);
 }
 
 TEST_CASE("gradebook: past 100 lines that cannot be placed, one problem says how many more", "[report][gradebook]") {
   Gradebook book("class.jsonl");
-  for (std::size_t line = 1; line <= max_gradebook_problems + 7; ++line) book.add(line, true, std::nullopt, "q1", 1, 1, false);
+  for (std::size_t line = 1; line <= max_gradebook_problems + 7; ++line)
+    book.add(line, true, std::nullopt, "q1", 1, 1, false);
   const auto problems = book.problems();
   REQUIRE(problems.size() == max_gradebook_problems + 1);
   CHECK(format(problems.back()) == "class.jsonl: and 7 more lines that the gradebook cannot place");
@@ -122,5 +129,6 @@ TEST_CASE("gradebook: past 100 lines that cannot be placed, one problem says how
 TEST_CASE("gradebook: an empty batch is a header and nothing else", "[report][gradebook]") {
   const Gradebook book("empty.jsonl");
   CHECK(book.csv(GradebookFormat::plain) == "student,total\r\n");
-  CHECK(book.csv(GradebookFormat::canvas) == "Student,ID,SIS User ID,SIS Login ID,Section,Final Points\r\nPoints Possible,,,,,\r\n");
+  CHECK(book.csv(GradebookFormat::canvas) ==
+        "Student,ID,SIS User ID,SIS Login ID,Section,Final Points\r\nPoints Possible,,,,,\r\n");
 }

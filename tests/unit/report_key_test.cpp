@@ -61,8 +61,9 @@ TEST_CASE("Key: the Markdown key has every problem's title and closed forms", "[
   const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.8-sign-board.yaml", test::rules());
   const Derivation d = explain(*a);
   const std::string md = write_key({{&d, {}}}, Format::markdown);
-  CHECK(md == "# Answer key\n\n## Sample 12.8: an accelerating sign-board in 3-D\n\nFind $T_{HI}$.\n\n"
-              "- $T_{HI} = \\frac{m a l}{2 d}$ = 6.78233 N\n");
+  CHECK(md ==
+        "# Answer key\n\n## Sample 12.8: an accelerating sign-board in 3-D\n\nFind $T_{HI}$.\n\n"
+        "- $T_{HI} = \\frac{m a l}{2 d}$ = 6.78233 N\n");
 }
 
 TEST_CASE("Key: the LaTeX table's headers are typeset as in the derivation", "[key]") {
@@ -70,7 +71,8 @@ TEST_CASE("Key: the LaTeX table's headers are typeset as in the derivation", "[k
   const Derivation d = explain(*a);
   const std::vector<KeyEntry> entries{{&d, draw_variants(a->model, d, 2, 1, 6), true}};
   const std::string latex = write_key(entries, Format::latex);
-  CHECK(latex.find("\\# & $F$ & $m_{A}$ & $m_{B}$ & $T$ & $\\ddot{x}_{A}$ & $\\ddot{x}_{B}$ \\\\") != std::string::npos);
+  CHECK(latex.find("\\# & $F$ & $m_{A}$ & $m_{B}$ & $T$ & $\\ddot{x}_{A}$ & $\\ddot{x}_{B}$ \\\\") !=
+        std::string::npos);
   CHECK(latex.find("\\texttt{ddot") == std::string::npos);
 }
 
@@ -107,8 +109,10 @@ std::pair<const Step*, std::map<std::string, ex>> named_sum_and_results(const De
   std::map<std::string, ex> results;
   for (const auto& st : d.steps)
     if (st.kind == Step::Kind::equation) {
-      if (st.text == "a name for the sum the closed forms share") named = &st;
-      else if (st.boxed) results[to_text(st.lhs)] = st.rhs;
+      if (st.text == "a name for the sum the closed forms share")
+        named = &st;
+      else if (st.boxed)
+        results[to_text(st.lhs)] = st.rhs;
     }
   return {named, results};
 }
@@ -118,11 +122,13 @@ TEST_CASE("Derivation: a sum the closed forms share is named once (a chain's M =
   std::string yaml = "title: a chain of five blocks\naxes: [x]\nparameters:\n  F: {unit: N}\n";
   for (int i = 1; i <= 5; ++i) yaml += "  m_" + std::to_string(i) + ": {unit: kg}\n";
   yaml += "bodies:\n";
-  for (int i = 1; i <= 5; ++i) yaml += "  b" + std::to_string(i) + ": {mass: m_" + std::to_string(i) + ", position: x_" + std::to_string(i) + "}\n";
+  for (int i = 1; i <= 5; ++i)
+    yaml +=
+        "  b" + std::to_string(i) + ": {mass: m_" + std::to_string(i) + ", position: x_" + std::to_string(i) + "}\n";
   yaml += "loads:\n  - {on: b5, force: F}\nstrings:\n";
   for (int i = 1; i <= 4; ++i)
-    yaml += "  - {name: s" + std::to_string(i) + ", path: [b" + std::to_string(i) + ", b" + std::to_string(i + 1) + "], tension: T_" +
-            std::to_string(i) + "}\n";
+    yaml += "  - {name: s" + std::to_string(i) + ", path: [b" + std::to_string(i) + ", b" + std::to_string(i + 1) +
+            "], tension: T_" + std::to_string(i) + "}\n";
   yaml += "layout: {x_1: 1, x_2: 2, x_3: 3, x_4: 4, x_5: 5}\nfind: [ddot(x_1), T_1, T_4]\n";
   const auto a = test::run_text(yaml);
   const Derivation d = explain(*a);

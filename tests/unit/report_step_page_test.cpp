@@ -35,7 +35,8 @@ find: [ddot(x)]
 
 }  // namespace
 
-TEST_CASE("Step page: sample 12.3's statement with its numbers, its sketch, its points, bodies and unknowns", "[page]") {
+TEST_CASE("Step page: sample 12.3's statement with its numbers, its sketch, its points, bodies and unknowns",
+          "[page]") {
   const std::string page = page_of("sample-12.3-two-mass-pulley.yaml");
   CHECK(page.find("<h1>Sample 12.3: a two-mass pulley system</h1>") != std::string::npos);
   // The statement's {F} filled in as the sheet does (130 N, in math for KaTeX).
@@ -65,16 +66,20 @@ TEST_CASE("Step page: its hints are the problem's own, never another example's",
   // Sample 12.3 by hand: its first balance is LMB A (x), 2T - F = m_A ddot(x_A), whose forces
   // are the student's to find; its parameters F, m_A, m_B; its unknown force T (N).
   const auto c = config_of(page_of("sample-12.3-two-mass-pulley.yaml"));
-  CHECK(c["hints"] == nlohmann::json::parse(R"J({"equation": "LMB A (x): ... = m_A*ddot(x_A)", "answer": "in F, m_A, m_B", "force": "T"})J"));
+  CHECK(c["hints"] ==
+        nlohmann::json::parse(
+            R"J({"equation": "LMB A (x): ... = m_A*ddot(x_A)", "answer": "in F, m_A, m_B", "force": "T"})J"));
   CHECK(c["unknowns"][0]["unit"] == "N");
   CHECK(c["unknowns"][1]["unit"] == "m/s^2");
   // The incline: its first balance, LMB A (x), has the incline's projection on its inertial
   // side (m_A ddot(s) cos(theta)), which the hint keeps back; sample 12.3's names appear nowhere.
   const std::string incline = page_of("incline-and-hanging-block.yaml");
   CHECK(config_of(incline)["hints"] ==
-        nlohmann::json::parse(R"J({"equation": "LMB A (x): ... = ...", "answer": "in m_A, m_B, g, theta, ...", "force": "N_A"})J"));
+        nlohmann::json::parse(
+            R"J({"equation": "LMB A (x): ... = ...", "answer": "in m_A, m_B, g, theta, ...", "force": "N_A"})J"));
   for (const char* other : {"x_A", "x_B", "2*F", "3*x_B"}) CHECK(incline.find(other) == std::string::npos);
-  CHECK(incline.find("<code>dot(s)</code> and <code>ddot(s)</code> for its rate and acceleration") != std::string::npos);
+  CHECK(incline.find("<code>dot(s)</code> and <code>ddot(s)</code> for its rate and acceleration") !=
+        std::string::npos);
   // Sample 12.2 needs no balance (its string alone): the hint is its constraint's, with no force.
   CHECK(config_of(page_of("sample-12.2-pulley-kinematics.yaml"))["hints"] ==
         nlohmann::json::parse(R"J({"equation": "string s: acceleration: ... = 0", "answer": "in d", "force": ""})J"));

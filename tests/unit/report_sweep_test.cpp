@@ -8,7 +8,8 @@ using namespace tackle;
 
 namespace {
 SweepResult figure_12_28(const SweepSpec& spec) {
-  static const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/figure-12.28-suitcase-normal-forces.yaml", test::rules());
+  static const auto a =
+      analyze_file(TACKLE_SOURCE_DIR "/examples/figure-12.28-suitcase-normal-forces.yaml", test::rules());
   static const Derivation d = explain(*a);
   return run_sweep(a->model, d, spec, Location{"test", 0, 0});
 }
@@ -28,7 +29,8 @@ TEST_CASE("Sweep: figure 12.28, N1, N2 and N1 - N2 against h/l for mg = 1, mu = 
     CHECK(r.valid[i] == (h <= 1 + 1e-9));
   }
   const std::string csv = sweep_csv(r);
-  CHECK(csv.rfind("h [m],N_A [N],N_B [N],N_A - N_B [N],valid\n0,0.5,0.5,0,true\n0.05,0.475,0.525,-0.05,true\n", 0) == 0);
+  CHECK(csv.rfind("h [m],N_A [N],N_B [N],N_A - N_B [N],valid\n0,0.5,0.5,0,true\n0.05,0.475,0.525,-0.05,true\n", 0) ==
+        0);
   const std::string svg = sweep_svg(r);
   CHECK(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0) == 0);
   CHECK(svg.find("stroke-dasharray=\"6,4\"") != std::string::npos);  // the tipped part
@@ -36,7 +38,8 @@ TEST_CASE("Sweep: figure 12.28, N1, N2 and N1 - N2 against h/l for mg = 1, mu = 
   CHECK(pgf.find("\\addlegendentry{$N_{A} - N_{B}$}") != std::string::npos);
   // As the SVG, the tipped part (h > l/(2 mu) = 1 m, N_A < 0) dashed from where N_A = 0, the
   // sample at h = 1 m, where the solid part ends.
-  CHECK(pgf.find("\\addplot[color=blue, thick, forget plot, dashed] coordinates {(1,0) (1.05,-0.025) (1.1,-0.05)") != std::string::npos);
+  CHECK(pgf.find("\\addplot[color=blue, thick, forget plot, dashed] coordinates {(1,0) (1.05,-0.025) (1.1,-0.05)") !=
+        std::string::npos);
   CHECK(pgf.find("(0.95,0.025) (1,0) };") != std::string::npos);
   CHECK(pgf.find("\\addlegendentry{dashed: invalid}") != std::string::npos);
   // The y axis says what it shows, in its unit (issue 32, item 5).
@@ -55,9 +58,11 @@ TEST_CASE("Sweep: the dashed part begins where the condition fails, between two 
   CHECK(r.is_boundary(2));
   CHECK(r.is_inserted(2));
   CHECK(std::count(r.inserted.begin(), r.inserted.end(), true) == 1);
-  CHECK(sweep_csv(r) == "h [m],N_A [N],valid\n0,0.5,true\n0.666667,0.166667,true\n1.33333,-0.166667,false\n2,-0.5,false\n");
+  CHECK(sweep_csv(r) ==
+        "h [m],N_A [N],valid\n0,0.5,true\n0.666667,0.166667,true\n1.33333,-0.166667,false\n2,-0.5,false\n");
   const std::string pgf = sweep_pgfplots(r);
-  CHECK(pgf.find("\\addplot[color=blue, thick, forget plot] coordinates {(0,0.5) (0.666667,0.166667) (1,") != std::string::npos);
+  CHECK(pgf.find("\\addplot[color=blue, thick, forget plot] coordinates {(0,0.5) (0.666667,0.166667) (1,") !=
+        std::string::npos);
   CHECK(pgf.find("\\addplot[color=blue, thick, forget plot, dashed] coordinates {(1,") != std::string::npos);
   CHECK(pgf.find("(1.33333,-0.166667) (2,-0.5) };") != std::string::npos);
   // Both ways: valid again after invalid (a sweep downwards).
@@ -67,7 +72,9 @@ TEST_CASE("Sweep: the dashed part begins where the condition fails, between two 
   CHECK(!down.valid[1]);
   CHECK(down.valid[3]);
   const std::string pgf_down = sweep_pgfplots(down);
-  CHECK(pgf_down.find("\\addplot[color=blue, thick, forget plot, dashed] coordinates {(2,-0.5) (1.33333,-0.166667) (1,") != std::string::npos);
+  CHECK(pgf_down.find(
+            "\\addplot[color=blue, thick, forget plot, dashed] coordinates {(2,-0.5) (1.33333,-0.166667) (1,") !=
+        std::string::npos);
   CHECK(pgf_down.find("\\addplot[color=blue, thick, forget plot] coordinates {(1,") != std::string::npos);
 }
 
@@ -101,10 +108,13 @@ TEST_CASE("Sweep: a bad axis is reported", "[sweep]") {
     }
     return got;
   };
-  CHECK(errors("l") == std::vector<std::string>{"against 'l' does not change with h (expected an expression in it, e.g. h/l)"});
+  CHECK(errors("l") ==
+        std::vector<std::string>{"against 'l' does not change with h (expected an expression in it, e.g. h/l)"});
   CHECK(errors("h + g") == std::vector<std::string>{"against 'h + g': adds an acceleration to a length"});
-  CHECK(errors("h/q") == std::vector<std::string>{"against 'h/q': unknown name 'q' (known: m, g, mu, l, h, t, a_C, N_A, N_B)"});
-  CHECK(errors("h - h") == std::vector<std::string>{"against 'h - h' does not change with h (expected an expression in it, e.g. h/l)"});
+  CHECK(errors("h/q") ==
+        std::vector<std::string>{"against 'h/q': unknown name 'q' (known: m, g, mu, l, h, t, a_C, N_A, N_B)"});
+  CHECK(errors("h - h") ==
+        std::vector<std::string>{"against 'h - h' does not change with h (expected an expression in it, e.g. h/l)"});
 }
 
 TEST_CASE("Sweep: fixed values are in the parameter's unit", "[sweep]") {
@@ -119,18 +129,19 @@ TEST_CASE("Sweep: a bad spec is reported, all at once", "[sweep]") {
   } catch (const InputError& e) {
     std::vector<std::string> got;
     for (const auto& d : e.diagnostics()) got.push_back(d.message);
-    CHECK(got == std::vector<std::string>{
-                     "the range to vary names 'x', which is not a parameter (parameters: m, g, mu, l, h)",
-                     "the count '0' is not a whole number from 2 to 100000",
-                     "'q=1' names 'q', which is not a parameter (parameters: m, g, mu, l, h)",
-                     "plot 'N_Q': unknown name 'N_Q' (did you mean 'N_A'?)"});
+    CHECK(got ==
+          std::vector<std::string>{"the range to vary names 'x', which is not a parameter (parameters: m, g, mu, l, h)",
+                                   "the count '0' is not a whole number from 2 to 100000",
+                                   "'q=1' names 'q', which is not a parameter (parameters: m, g, mu, l, h)",
+                                   "plot 'N_Q': unknown name 'N_Q' (did you mean 'N_A'?)"});
   }
 }
 
 TEST_CASE("Sweep: a point where a curve is undefined is a gap, not a crash (found by fuzzing)", "[sweep][fuzz]") {
   // A tilted contact normal makes the normal forces' denominator vanish inside the sweep of h
   // (exit 3: GiNaC threw while substituting). Now that point has no value and is not valid.
-  const auto a = analyze_file(TACKLE_SOURCE_DIR "/tests/fuzz/regressions/description/sweep-through-a-pole", test::rules());
+  const auto a =
+      analyze_file(TACKLE_SOURCE_DIR "/tests/fuzz/regressions/description/sweep-through-a-pole", test::rules());
   const Derivation d = explain(*a);
   const auto r = run_sweep(a->model, d, {"h=0:2:41", {}, {"N_A", "N_B"}, {}}, Location{"test", 0, 0});
   REQUIRE(r.x.size() == 41);
@@ -157,8 +168,11 @@ TEST_CASE("Sweep: curves of different units get a panel each, the time axis labe
   r.valid = {true, true, true};
   const std::string pgf = sweep_pgfplots(r);
   // Two axes: metres (y and y_B) above, newtons below it; t [s] only under the lowest.
-  CHECK(pgf.find("\\begin{axis}[name=panel0, width=0.8\\textwidth, height=0.32\\textwidth, xticklabels={}, ylabel={$y$, $y_{B}$ [$\\mathrm{m}$]}") != std::string::npos);
-  CHECK(pgf.find("\\begin{axis}[name=panel1, width=0.8\\textwidth, height=0.32\\textwidth, at={(panel0.south west)}, anchor=north west, yshift=-0.6cm, xlabel={$t$ [$\\mathrm{s}$]}, ylabel={$N$ [$\\mathrm{N}$]}") != std::string::npos);
+  CHECK(pgf.find("\\begin{axis}[name=panel0, width=0.8\\textwidth, height=0.32\\textwidth, xticklabels={}, "
+                 "ylabel={$y$, $y_{B}$ [$\\mathrm{m}$]}") != std::string::npos);
+  CHECK(pgf.find("\\begin{axis}[name=panel1, width=0.8\\textwidth, height=0.32\\textwidth, at={(panel0.south west)}, "
+                 "anchor=north west, yshift=-0.6cm, xlabel={$t$ [$\\mathrm{s}$]}, ylabel={$N$ [$\\mathrm{N}$]}") !=
+        std::string::npos);
   CHECK(pgf.find("\\begin{axis}[name=panel2") == std::string::npos);
   const std::string svg = sweep_svg(r);
   CHECK(svg.find(">y, y_B [m]</text>") != std::string::npos);
@@ -166,7 +180,9 @@ TEST_CASE("Sweep: curves of different units get a panel each, the time axis labe
   CHECK(svg.find(">t [s]</text>") != std::string::npos);
   // Two plot frames.
   std::size_t frames = 0;
-  for (std::size_t p = svg.find("fill=\"none\" stroke=\"black\"/>"); p != std::string::npos; p = svg.find("fill=\"none\" stroke=\"black\"/>", p + 1)) ++frames;
+  for (std::size_t p = svg.find("fill=\"none\" stroke=\"black\"/>"); p != std::string::npos;
+       p = svg.find("fill=\"none\" stroke=\"black\"/>", p + 1))
+    ++frames;
   CHECK(frames == 2);
   // One unit: one panel, as before.
   r.y_unit = "m";

@@ -25,13 +25,14 @@ void draw_override(BuildContext& ctx, const BodyDesc& b, Body& body) {
     return;
   }
   if (!b.draw_size) {
-    ctx.diags.error(b.draw_shape->at, what + " has no 'size' (expected " +
-                                          (n == 2 ? "[width, height]" : "[diameter]") + ")");
+    ctx.diags.error(b.draw_shape->at,
+                    what + " has no 'size' (expected " + (n == 2 ? "[width, height]" : "[diameter]") + ")");
     return;
   }
   if (b.draw_size->items.size() != n) {
-    ctx.diags.error(b.draw_size->at, what + ": 'size' has " + std::to_string(b.draw_size->items.size()) + " entries (expected " +
-                                         (n == 2 ? "2: [width, height]" : "1: [diameter]") + ")");
+    ctx.diags.error(b.draw_size->at, what + ": 'size' has " + std::to_string(b.draw_size->items.size()) +
+                                         " entries (expected " + (n == 2 ? "2: [width, height]" : "1: [diameter]") +
+                                         ")");
     return;
   }
   std::vector<ex> size;
@@ -87,7 +88,8 @@ void inertia(BuildContext& ctx, const BodyDesc& b, Body& body) {
       {"sphere", 1, [](const std::vector<ex>& r) { return 2 * pow(r[0], 2) / 5; }},
       {"box", 2, [](const std::vector<ex>& s) { return (pow(s[0], 2) + pow(s[1], 2)) / 12; }},
   };
-  const auto shape = std::find_if(shapes.begin(), shapes.end(), [&](const Shape& x) { return b.shape_kind->text == x.kind; });
+  const auto shape =
+      std::find_if(shapes.begin(), shapes.end(), [&](const Shape& x) { return b.shape_kind->text == x.kind; });
   if (shape == shapes.end()) {
     ctx.diags.error(b.shape_kind->at, "unknown shape '" + b.shape_kind->text + "' of " + what +
                                           " (expected one of: point, disk, ring, rod, sphere, box)");
@@ -95,16 +97,18 @@ void inertia(BuildContext& ctx, const BodyDesc& b, Body& body) {
   }
   const std::size_t given = b.shape_size ? b.shape_size->items.size() : 0;
   if (given != shape->sizes) {
-    ctx.diags.error(b.shape_kind->at, "shape '" + b.shape_kind->text + "' of " + what + " has " + std::to_string(given) +
-                                          (given == 1 ? " size" : " sizes") + " (expected " + std::to_string(shape->sizes) +
-                                          (shape->sizes == 1 ? " length" : " lengths") + ")");
+    ctx.diags.error(b.shape_kind->at, "shape '" + b.shape_kind->text + "' of " + what + " has " +
+                                          std::to_string(given) + (given == 1 ? " size" : " sizes") + " (expected " +
+                                          std::to_string(shape->sizes) + (shape->sizes == 1 ? " length" : " lengths") +
+                                          ")");
     return;
   }
   std::vector<ex> sizes;
   for (std::size_t i = 0; i < given; ++i) {
     auto v = ctx.parse(b.shape_size->items[i], *ctx.table, "size of the shape of " + what);
     if (!v) return;
-    if (!is_a<numeric>(*v)) ctx.check_dimension(*v, Dimension::length(), b.shape_size->items[i].at, "size of the shape of " + what);
+    if (!is_a<numeric>(*v))
+      ctx.check_dimension(*v, Dimension::length(), b.shape_size->items[i].at, "size of the shape of " + what);
     sizes.push_back(*v);
   }
   body.inertia = body.mass * shape->inertia(sizes);
@@ -137,19 +141,31 @@ void bodies(BuildContext& ctx) {
     body.at = b.name.at;
     if (one_d) {
       if (!b.position)
-        ctx.diags.error(b.at, "body '" + body.name + "' has no 'position' (expected the name of its coordinate, e.g. x_" +
-                                  body.name + ")");
+        ctx.diags.error(b.at, "body '" + body.name +
+                                  "' has no 'position' (expected the name of its coordinate, e.g. x_" + body.name +
+                                  ")");
       for (const auto* v : {&b.center_of_mass, &b.acceleration})
-        if (*v) ctx.diags.error((*v)->at, "body '" + body.name + "': 'center_of_mass' and 'acceleration' are for 2-D and 3-D problems (in 1-D, 'position' names the coordinate)");
-      if (b.accel_along) ctx.diags.error(b.accel_along->at, "body '" + body.name + "': 'acceleration' is for 2-D and 3-D problems");
-      if (b.angle) ctx.diags.error(b.angle->at, "body '" + body.name + "': 'angle' is for 2-D problems (a body turns in the plane)");
+        if (*v)
+          ctx.diags.error((*v)->at, "body '" + body.name +
+                                        "': 'center_of_mass' and 'acceleration' are for 2-D and 3-D problems (in 1-D, "
+                                        "'position' names the coordinate)");
+      if (b.accel_along)
+        ctx.diags.error(b.accel_along->at, "body '" + body.name + "': 'acceleration' is for 2-D and 3-D problems");
+      if (b.angle)
+        ctx.diags.error(b.angle->at,
+                        "body '" + body.name + "': 'angle' is for 2-D problems (a body turns in the plane)");
       if (b.position && ctx.claim(*b.position, "coordinate")) {
         const std::string q = b.position->text;
-        body.coord = ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::length(), false, b.position->at).sym;
-        body.rate = ctx.table->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, Dimension::velocity(), false,
-                                   b.position->at).sym;
-        body.accel = ctx.table->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration,
-                                    Dimension::acceleration(), false, b.position->at).sym;
+        body.coord =
+            ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::length(), false, b.position->at).sym;
+        body.rate =
+            ctx.table
+                ->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, Dimension::velocity(), false, b.position->at)
+                .sym;
+        body.accel = ctx.table
+                         ->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, Dimension::acceleration(),
+                               false, b.position->at)
+                         .sym;
         body.cm = {body.coord, 0, 0};
         body.has_cm = true;
         body.acceleration = {body.accel, 0, 0};
@@ -160,14 +176,27 @@ void bodies(BuildContext& ctx) {
       // (twice differentiated in time).
       if (b.position) {
         if (!b.center_of_mass)
-          ctx.diags.error(b.position->at, "body '" + body.name + "' has a 'position' but no 'center_of_mass' (expected its center of mass written in " + b.position->text + ")");
+          ctx.diags.error(b.position->at,
+                          "body '" + body.name +
+                              "' has a 'position' but no 'center_of_mass' (expected its center of mass written in " +
+                              b.position->text + ")");
         if (b.acceleration || b.accel_along)
-          ctx.diags.error(b.position->at, "body '" + body.name + "' has both 'position' and 'acceleration' (its acceleration follows from its position; give one)");
+          ctx.diags.error(
+              b.position->at,
+              "body '" + body.name +
+                  "' has both 'position' and 'acceleration' (its acceleration follows from its position; give one)");
         if (ctx.claim(*b.position, "coordinate")) {
           const std::string q = b.position->text;
-          body.coord = ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::length(), false, b.position->at).sym;
-          body.rate = ctx.table->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, Dimension::velocity(), false, b.position->at).sym;
-          body.accel = ctx.table->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, Dimension::acceleration(), false, b.position->at).sym;
+          body.coord =
+              ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::length(), false, b.position->at).sym;
+          body.rate =
+              ctx.table
+                  ->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, Dimension::velocity(), false, b.position->at)
+                  .sym;
+          body.accel = ctx.table
+                           ->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, Dimension::acceleration(),
+                                 false, b.position->at)
+                           .sym;
         }
       }
       // An angle: the body turns in the plane (its center of mass may be written in the angle
@@ -175,55 +204,71 @@ void bodies(BuildContext& ctx) {
       std::vector<Coordinate> own;  // this body's coordinates
       if (b.angle) {
         if (ctx.m.dims() != 2) {
-          ctx.diags.error(b.angle->at, "body '" + body.name + "': 'angle' is for 2-D problems (a body turns in the plane)");
+          ctx.diags.error(b.angle->at,
+                          "body '" + body.name + "': 'angle' is for 2-D problems (a body turns in the plane)");
         } else if (b.acceleration || b.accel_along) {
-          ctx.diags.error(b.angle->at, "body '" + body.name + "' has both 'angle' and 'acceleration' (its acceleration follows from its coordinates; give one)");
+          ctx.diags.error(
+              b.angle->at,
+              "body '" + body.name +
+                  "' has both 'angle' and 'acceleration' (its acceleration follows from its coordinates; give one)");
         } else if (ctx.claim(*b.angle, "coordinate")) {
           const std::string q = b.angle->text;
           const Dimension per_second{{0, 0, -1}}, per_second_squared{{0, 0, -2}};
-          body.angle = ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::none(), false, b.angle->at).sym;
-          const ex rate = ctx.table->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, per_second, false, b.angle->at).sym;
-          const ex accel = ctx.table->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, per_second_squared, false,
-                                          b.angle->at).sym;
+          body.angle =
+              ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::none(), false, b.angle->at).sym;
+          const ex rate =
+              ctx.table->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, per_second, false, b.angle->at).sym;
+          const ex accel = ctx.table
+                               ->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, per_second_squared,
+                                     false, b.angle->at)
+                               .sym;
           own.push_back({body.angle, rate, accel, static_cast<int>(ctx.m.bodies.size()), Coordinate::Kind::rotation});
         }
       }
       if (b.center_of_mass) {
-        if (auto cm = ctx.vector(*b.center_of_mass, *ctx.table, "'center_of_mass' of body '" + body.name + "'", Dimension::length())) {
+        if (auto cm = ctx.vector(*b.center_of_mass, *ctx.table, "'center_of_mass' of body '" + body.name + "'",
+                                 Dimension::length())) {
           body.cm = *cm;
           body.has_cm = true;
         }
       } else if (!own.empty()) {
-        ctx.diags.error(b.angle->at, "body '" + body.name + "' has an 'angle' but no 'center_of_mass' (expected its center of mass, "
-                                     "fixed or written in its coordinates)");
+        ctx.diags.error(b.angle->at, "body '" + body.name +
+                                         "' has an 'angle' but no 'center_of_mass' (expected its center of mass, "
+                                         "fixed or written in its coordinates)");
       }
       if (!body.coord.is_zero())
-        own.insert(own.begin(), {body.coord, body.rate, body.accel, static_cast<int>(ctx.m.bodies.size()), Coordinate::Kind::translation});
+        own.insert(own.begin(), {body.coord, body.rate, body.accel, static_cast<int>(ctx.m.bodies.size()),
+                                 Coordinate::Kind::translation});
       if (!body.coord.is_zero() && body.has_cm) {
         bool depends = false;
         for (const auto& c : body.cm) depends = depends || c.has(body.coord);
         if (!depends)
-          ctx.diags.error(b.center_of_mass->at, "'center_of_mass' of body '" + body.name + "' does not depend on its coordinate '" +
-                                                    b.position->text + "' (expected it written in " + b.position->text + ")");
+          ctx.diags.error(b.center_of_mass->at, "'center_of_mass' of body '" + body.name +
+                                                    "' does not depend on its coordinate '" + b.position->text +
+                                                    "' (expected it written in " + b.position->text + ")");
       }
       if (!own.empty() && body.has_cm) {
         // a = d2(cm)/dt2 by the chain rule on this body's coordinates (cm'' dot(q)^2 + cm'
         // ddot(q) on a straight line; with an angle, the centripetal terms too).
-        for (int i = 0; i < 3; ++i) body.acceleration[i] = time_derivative(time_derivative(body.cm[i], own, {}), own, {});
+        for (int i = 0; i < 3; ++i)
+          body.acceleration[i] = time_derivative(time_derivative(body.cm[i], own, {}), own, {});
         for (const auto& c : own) accelerations.push_back(c.accel);
       }
       ctx.m.coordinates.insert(ctx.m.coordinates.end(), own.begin(), own.end());
       // (a position with an acceleration too is reported above; the position wins)
       if (b.acceleration && !b.position) {
-        if (auto a = ctx.vector(*b.acceleration, *ctx.table, "'acceleration' of body '" + body.name + "'", Dimension::acceleration()))
+        if (auto a = ctx.vector(*b.acceleration, *ctx.table, "'acceleration' of body '" + body.name + "'",
+                                Dimension::acceleration()))
           body.acceleration = *a;
       } else if (b.accel_along && !b.position) {
-        auto dir = ctx.vector(*b.accel_along, *ctx.table, "'along' of the acceleration of body '" + body.name + "'", std::nullopt);
+        auto dir = ctx.vector(*b.accel_along, *ctx.table, "'along' of the acceleration of body '" + body.name + "'",
+                              std::nullopt);
         const Text name = b.accel_name ? *b.accel_name : Text{"a_" + body.name, b.accel_along->at};
         if (dir && is_zero_vec(*dir)) {
           ctx.diags.error(b.accel_along->at, "the direction of motion of body '" + body.name + "' is a zero vector");
         } else if (dir && ctx.claim(name, "acceleration")) {
-          const SymbolInfo& a = ctx.table->add(name.text, std::nullopt, SymbolRole::unknown, Dimension::acceleration(), false, name.at);
+          const SymbolInfo& a =
+              ctx.table->add(name.text, std::nullopt, SymbolRole::unknown, Dimension::acceleration(), false, name.at);
           body.accel = a.sym;
           body.acceleration = a.sym * unit(*dir);
           accelerations.push_back(a.sym);
@@ -239,8 +284,8 @@ void bodies(BuildContext& ctx) {
     self.at = body.at;
     ctx.m.points.push_back(self);
     if (one_d && !body.coord.is_zero())  // (the 2-D branch listed its body's coordinates)
-      ctx.m.coordinates.push_back({body.coord, body.rate, body.accel, static_cast<int>(ctx.m.bodies.size()),
-                                   Coordinate::Kind::translation});
+      ctx.m.coordinates.push_back(
+          {body.coord, body.rate, body.accel, static_cast<int>(ctx.m.bodies.size()), Coordinate::Kind::translation});
     ctx.m.bodies.push_back(body);
   }
   ctx.m.candidates.insert(ctx.m.candidates.begin(), accelerations.begin(), accelerations.end());
@@ -259,7 +304,9 @@ void bodies(BuildContext& ctx) {
         if (c.body != it->second)
           for (const auto& x : body.cm) others = others || x.has(c.q);
       if (!others) continue;
-      for (int k = 0; k < 3; ++k) body.acceleration[k] = time_derivative(time_derivative(body.cm[k], ctx.m.coordinates, {}), ctx.m.coordinates, {});
+      for (int k = 0; k < 3; ++k)
+        body.acceleration[k] =
+            time_derivative(time_derivative(body.cm[k], ctx.m.coordinates, {}), ctx.m.coordinates, {});
     }
   // Masses after every coordinate exists (a mass may not depend on them, but the message
   // for a misused name is clearer this way).
@@ -280,11 +327,14 @@ void bodies(BuildContext& ctx) {
         const ex exact = mass->subs(ctx.table->values());
         const ex at = evalf(exact);
         if (is_a<numeric>(at) && ex_to<numeric>(at).is_real() && !ex_to<numeric>(at).is_positive())
-          ctx.diags.error(b.mass->at, "mass of body '" + body.name + "' is " + to_text(*mass) + ", which is " +
-                                          to_text(exact) + " at the parameters' values (expected a positive mass; a body without mass is written 'mass: 0')");
+          ctx.diags.error(
+              b.mass->at,
+              "mass of body '" + body.name + "' is " + to_text(*mass) + ", which is " + to_text(exact) +
+                  " at the parameters' values (expected a positive mass; a body without mass is written 'mass: 0')");
       }
       if (!one_d && !mass->is_zero() && !body.has_cm)
-        ctx.diags.error(b.at, "body '" + body.name + "' has no 'center_of_mass' (needed for its weight and its angular momentum balance)");
+        ctx.diags.error(b.at, "body '" + body.name +
+                                  "' has no 'center_of_mass' (needed for its weight and its angular momentum balance)");
     }
     inertia(ctx, b, body);
   }
@@ -326,7 +376,8 @@ void points(BuildContext& ctx) {
           pt.offset = *off;
           pt.turns = p.turns;
           if (!p.turns && a.is_zero())
-            ctx.diags.error(*p.turns_at, "point '" + pt.name + "' has 'turns: false', but body '" + ctx.m.bodies[pt.body].name +
+            ctx.diags.error(*p.turns_at, "point '" + pt.name + "' has 'turns: false', but body '" +
+                                             ctx.m.bodies[pt.body].name +
                                              "' does not turn (expected a body with an 'angle')");
           if (!a.is_zero() && p.turns)
             *off = Vec{cos(a) * (*off)[0] - sin(a) * (*off)[1], sin(a) * (*off)[0] + cos(a) * (*off)[1], (*off)[2]};

@@ -65,8 +65,10 @@ bool arguments_fit(BuildContext& ctx, const Instance& in) {
   for (const auto& a : c.args) {
     if (!rule->arg(a.key.text)) {
       std::string msg = "unknown key '" + a.key.text + "' for a " + what;
-      if (auto near = nearest(a.key.text, arg_keys); !near.empty()) msg += " (did you mean '" + near + "'?)";
-      else msg += " (expected one of: " + join(arg_keys) + ")";
+      if (auto near = nearest(a.key.text, arg_keys); !near.empty())
+        msg += " (did you mean '" + near + "'?)";
+      else
+        msg += " (expected one of: " + join(arg_keys) + ")";
       ctx.diags.error(a.key.at, msg);
       ok = false;
     }
@@ -81,8 +83,9 @@ bool arguments_fit(BuildContext& ctx, const Instance& in) {
     for (const auto& k : group)
       if (c.arg(k)) present.push_back(k);
     if (present.size() != 1) {
-      ctx.diags.error(c.at, "a " + what + (present.empty() ? " needs one of: " + join(group)
-                                                            : " has " + join(present, " and ") + " (expected one of them)"));
+      ctx.diags.error(c.at, "a " + what +
+                                (present.empty() ? " needs one of: " + join(group)
+                                                 : " has " + join(present, " and ") + " (expected one of them)"));
       ok = false;
     }
   }
@@ -115,8 +118,9 @@ bool bind_arguments(BuildContext& ctx, Instance& in) {
     if (!a) continue;
     const bool list = spec.kind == ArgKind::points;
     if (spec.kind != ArgKind::vector && spec.kind != ArgKind::moment && list != a->is_list) {
-      ctx.diags.error(a->key.at, "'" + spec.key + "' of a " + what + (list ? " is a single name (expected a list of points)"
-                                                                           : " is a list (expected a single value)"));
+      ctx.diags.error(a->key.at, "'" + spec.key + "' of a " + what +
+                                     (list ? " is a single name (expected a list of points)"
+                                           : " is a list (expected a single value)"));
       ok = false;
       continue;
     }
@@ -154,8 +158,11 @@ bool bind_arguments(BuildContext& ctx, Instance& in) {
         std::vector<int> path;
         for (const auto& item : a->items) {
           auto it = ctx.point_index.find(item.text);
-          if (it == ctx.point_index.end()) { ctx.unknown_name(item, "point", ctx.point_names()); ok = false; }
-          else path.push_back(it->second);
+          if (it == ctx.point_index.end()) {
+            ctx.unknown_name(item, "point", ctx.point_names());
+            ok = false;
+          } else
+            path.push_back(it->second);
         }
         if (a->items.size() < 2) {
           ctx.diags.error(a->key.at, "'" + spec.key + "' of a " + what + " has " + std::to_string(a->items.size()) +
@@ -194,12 +201,14 @@ bool bind_arguments(BuildContext& ctx, Instance& in) {
                                     " entries (expected one number, the moment about z)");
             ok = false;
           } else if (auto e = ctx.parse(a->items[0], *ctx.table, "'" + spec.key + "' of a " + what)) {
-            if (spec.dimension && !is_a<numeric>(*e)) ctx.check_dimension(*e, *spec.dimension, at, "'" + spec.key + "' of a " + what);
+            if (spec.dimension && !is_a<numeric>(*e))
+              ctx.check_dimension(*e, *spec.dimension, at, "'" + spec.key + "' of a " + what);
             scope.bind(spec.key, make_vector(0, 0, *e));
           } else {
             ok = false;
           }
-        } else if (auto v = ctx.vector(VectorDesc{a->items, at}, *ctx.table, "'" + spec.key + "' of a " + what, spec.dimension)) {
+        } else if (auto v = ctx.vector(VectorDesc{a->items, at}, *ctx.table, "'" + spec.key + "' of a " + what,
+                                       spec.dimension)) {
           scope.bind(spec.key, make_vector((*v)[0], (*v)[1], (*v)[2]));
         } else {
           ok = false;
@@ -216,7 +225,8 @@ bool bind_arguments(BuildContext& ctx, Instance& in) {
   }
 
   for (const auto& [key, path] : path_args)
-    for (std::size_t i = 1; i + 1 < path.size(); ++i) ctx.interior_points.emplace(path[i], std::make_pair(in.what, c.at));
+    for (std::size_t i = 1; i + 1 < path.size(); ++i)
+      ctx.interior_points.emplace(path[i], std::make_pair(in.what, c.at));
   return ok;
 }
 
@@ -270,9 +280,10 @@ bool vectors_fit(BuildContext& ctx, const Instance& in) {
     bool nonzero = true;
     for (const auto& [key, vec] : {std::pair{chk.to, w->second}, std::pair{chk.arg, v->second}})
       if (const std::string how = zero(vec); !how.empty()) {
-        ctx.diags.error(where(key), "'" + key + "' of a " + in.what + " is " + how +
-                                        (key == chk.to ? std::string(" (expected a direction)")
-                                                       : " (expected a direction at right angles to '" + chk.to + "')"));
+        ctx.diags.error(where(key),
+                        "'" + key + "' of a " + in.what + " is " + how +
+                            (key == chk.to ? std::string(" (expected a direction)")
+                                           : " (expected a direction at right angles to '" + chk.to + "')"));
         ok = nonzero = false;
       }
     if (!nonzero) continue;
@@ -285,10 +296,13 @@ bool vectors_fit(BuildContext& ctx, const Instance& in) {
     for (int i = 0; i < ctx.m.dims(); ++i) vs += (i ? ", " : "") + to_text(v->second[i]);
     std::string ws;
     for (int i = 0; i < ctx.m.dims(); ++i) ws += (i ? ", " : "") + to_text(w->second[i]);
-    ctx.diags.error(where(chk.arg), "'" + chk.arg + "' of a " + in.what + ", [" + vs + "], is not at right angles to its '" + chk.to +
-                                        "', [" + ws + "]: their dot product is " + to_text(dot) +
-                                        (number && !is_a<numeric>(dot) ? fmt::format(" = {:g} at the given numbers", ex_to<numeric>(at).to_double()) : std::string()) +
-                                        " (expected a direction at right angles to '" + chk.to + "')");
+    ctx.diags.error(
+        where(chk.arg),
+        "'" + chk.arg + "' of a " + in.what + ", [" + vs + "], is not at right angles to its '" + chk.to + "', [" + ws +
+            "]: their dot product is " + to_text(dot) +
+            (number && !is_a<numeric>(dot) ? fmt::format(" = {:g} at the given numbers", ex_to<numeric>(at).to_double())
+                                           : std::string()) +
+            " (expected a direction at right angles to '" + chk.to + "')");
     ok = false;
   }
   return ok;
@@ -348,8 +362,10 @@ void add_loads(BuildContext& ctx, Instance& in) {
       auto it = point_args.find(l.arg);
       if (it == point_args.end()) continue;  // optional argument not given
       int body = -1;
-      if (auto bt = body_args.find(l.arg); bt != body_args.end()) body = bt->second;
-      else body = ctx.m.points[it->second].body;
+      if (auto bt = body_args.find(l.arg); bt != body_args.end())
+        body = bt->second;
+      else
+        body = ctx.m.points[it->second].body;
       if (body < 0) {
         ctx.diags.error(c.at, "a " + what + " acts on fixed point '" + ctx.m.points[it->second].name +
                                   "' (expected a body or a point on one)");
@@ -371,14 +387,18 @@ void add_loads(BuildContext& ctx, Instance& in) {
       if (!l.expr.empty()) {
         auto f = rule_expr(ctx, in, l.expr, l.at);
         auto v = f ? as_vec(ctx, in, *f, false, l.at) : std::nullopt;
-        if (v) load.force = *v;
-        else good = false;
+        if (v)
+          load.force = *v;
+        else
+          good = false;
       }
       if (!l.couple.empty()) {
         auto f = rule_expr(ctx, in, l.couple, l.at);
         auto v = f ? as_vec(ctx, in, *f, true, l.at) : std::nullopt;
-        if (v) load.couple = *v;
-        else good = false;
+        if (v)
+          load.couple = *v;
+        else
+          good = false;
       }
       if (!good) continue;
       if (ctx.m.dims() > 1 && !load.at && !is_zero_vec(load.force)) {
@@ -430,10 +450,13 @@ void add_loads(BuildContext& ctx, Instance& in) {
           bool straight = !is_zero_vec(along);
           for (const Coordinate& other : ctx.m.coordinates)
             for (int i = 0; i < 3; ++i)
-              straight = straight && !along[i].has(other.q) && (other.body != q.body || other.q.is_equal(q.q) || !b.cm[i].has(other.q));
+              straight = straight && !along[i].has(other.q) &&
+                         (other.body != q.body || other.q.is_equal(q.q) || !b.cm[i].has(other.q));
           if (!straight) {
-            ctx.diags.error(c.at, "the length sum of " + label + " is written in " + to_text(q.q) + ", which does not move body '" +
-                                      b.name + "' along one straight line (expected a coordinate along a line, or the string's 'path')");
+            ctx.diags.error(
+                c.at, "the length sum of " + label + " is written in " + to_text(q.q) + ", which does not move body '" +
+                          b.name +
+                          "' along one straight line (expected a coordinate along a line, or the string's 'path')");
             continue;
           }
           load.force = (generalized / inner(along, along).expand()) * along;
@@ -465,23 +488,25 @@ void roll(BuildContext& ctx, Instance& in, const ConstraintSpec& k) {
     return;
   }
   if (contact.body != b->second || contact.turns) {
-    ctx.diags.error(in.c.at, "the contact point '" + contact.name + "' of a " + in.what +
-                                 " is not a point of body '" + body.name +
-                                 "' that keeps the ground's directions (expected a point written {on: " + body.name +
-                                 ", offset: ..., turns: false}, where the wheel touches the surface)");
+    ctx.diags.error(in.c.at, "the contact point '" + contact.name + "' of a " + in.what + " is not a point of body '" +
+                                 body.name + "' that keeps the ground's directions (expected a point written {on: " +
+                                 body.name + ", offset: ..., turns: false}, where the wheel touches the surface)");
     return;
   }
   const Vec along = unit(t->second);
   const Vec r = contact.offset;
   if (!normal(inner(r, along)).is_zero()) {
-    ctx.diags.error(in.c.at, "the contact point '" + contact.name + "' of a " + in.what + " is not straight across the surface from the center of body '" +
-                                 body.name + "' (expected its offset " + to_text(r[0]) + ", " + to_text(r[1]) +
+    ctx.diags.error(in.c.at, "the contact point '" + contact.name + "' of a " + in.what +
+                                 " is not straight across the surface from the center of body '" + body.name +
+                                 "' (expected its offset " + to_text(r[0]) + ", " + to_text(r[1]) +
                                  " at right angles to the rolling direction)");
     return;
   }
   const ex lever = fewer_trig_terms(normal(inner(cross(Vec{0, 0, 1}, r), along)));
   const ex q = (fewer_trig_terms(inner(body.cm, along).expand()) + lever * body.angle).expand();
-  ctx.m.constraints.push_back({in.label, in.c.name ? in.c.name->text : "", q, "travel of " + body.name + " along the surface plus the arc it turns through (it rolls without slipping)"});
+  ctx.m.constraints.push_back(
+      {in.label, in.c.name ? in.c.name->text : "", q,
+       "travel of " + body.name + " along the surface plus the arc it turns through (it rolls without slipping)"});
 }
 
 // One body's position relative to another along a direction, constant: two bodies that stay
@@ -495,13 +520,15 @@ void keep(BuildContext& ctx, Instance& in, const ConstraintSpec& k) {
   const Body& first = ctx.m.bodies[a->second];
   const Body& second = ctx.m.bodies[b->second];
   if (a->second == b->second) {
-    ctx.diags.error(in.c.at, "a " + in.what + " joins body '" + first.name + "' to itself (expected two different bodies)");
+    ctx.diags.error(in.c.at,
+                    "a " + in.what + " joins body '" + first.name + "' to itself (expected two different bodies)");
     return;
   }
   for (const Body* body : {&first, &second})
     if (!body->angle.is_zero()) {
-      ctx.diags.error(in.c.at, "body '" + body->name + "' of a " + in.what +
-                                   " turns, and its point of contact moves on it (expected two bodies that only translate)");
+      ctx.diags.error(in.c.at,
+                      "body '" + body->name + "' of a " + in.what +
+                          " turns, and its point of contact moves on it (expected two bodies that only translate)");
       return;
     }
   const ex q = fewer_trig_terms(normal(inner(first.cm - second.cm, unit(v->second))).expand());
@@ -509,8 +536,9 @@ void keep(BuildContext& ctx, Instance& in, const ConstraintSpec& k) {
   for (const auto& coordinate : ctx.m.coordinates) moves = moves || q.has(coordinate.q);
   if (!moves) return;
   const std::string direction = to_text(v->second[0]) + ", " + to_text(v->second[1]);
-  ctx.m.constraints.push_back({in.label + " (along [" + direction + "])", in.c.name ? in.c.name->text : "", q,
-                               "position of " + first.name + " relative to " + second.name + " along [" + direction + "]"});
+  ctx.m.constraints.push_back(
+      {in.label + " (along [" + direction + "])", in.c.name ? in.c.name->text : "", q,
+       "position of " + first.name + " relative to " + second.name + " along [" + direction + "]"});
 }
 
 // A one-body contact (a body against the ground) placed at a point of another body that
@@ -529,13 +557,14 @@ bool at_point_of_another_body(BuildContext& ctx, const Instance& in) {
     const Body& other = ctx.m.bodies[static_cast<std::size_t>(point.body)];
     if (other.coord.is_zero() && other.angle.is_zero() && !other.has_mass) continue;  // a body that does not move
     const std::string& held = ctx.m.bodies[static_cast<std::size_t>(body->second)].name;
-    const std::string instead = in.rule.two_bodies.empty()
-                                    ? "a connection between two bodies"
-                                    : "{type: " + in.rule.two_bodies + ", body: " + held + ", other: " + other.name + ", ...}";
-    ctx.diags.error(a->items[0].at, "'" + spec.key + "' of a " + in.what + " is point '" + point.name + "' of body '" + other.name +
-                                        "', which moves: this connection holds '" + held + "' against the ground, and the force on '" +
-                                        other.name + "' would be missing (expected a fixed point or a point of '" + held + "'; for two bodies: " +
-                                        instead + ")");
+    const std::string instead = in.rule.two_bodies.empty() ? "a connection between two bodies"
+                                                           : "{type: " + in.rule.two_bodies + ", body: " + held +
+                                                                 ", other: " + other.name + ", ...}";
+    ctx.diags.error(a->items[0].at, "'" + spec.key + "' of a " + in.what + " is point '" + point.name + "' of body '" +
+                                        other.name + "', which moves: this connection holds '" + held +
+                                        "' against the ground, and the force on '" + other.name +
+                                        "' would be missing (expected a fixed point or a point of '" + held +
+                                        "'; for two bodies: " + instead + ")");
     return true;
   }
   return false;
@@ -550,8 +579,10 @@ void pinned_together(BuildContext& ctx, Instance& in, const Body& first, const B
   const std::string cname = in.c.name ? in.c.name->text : "";
   exmap layout_coordinates;
   for (const auto& c : ctx.m.coordinates)
-    if (auto it = ctx.layout.find(c.q); it != ctx.layout.end()) layout_coordinates[c.q] = it->second;
-    else layout_coordinates[c.q] = 0;
+    if (auto it = ctx.layout.find(c.q); it != ctx.layout.end())
+      layout_coordinates[c.q] = it->second;
+    else
+      layout_coordinates[c.q] = 0;
   for (const Body* b : {&first, &second}) {
     const Vec d = p.position - b->cm;
     Vec q = d;  // must stay constant
@@ -584,7 +615,8 @@ void add_constraints(BuildContext& ctx, Instance& in) {
   const std::string cname = c.name ? c.name->text : "";
   for (const auto& k : rule->constraints) {
     if (k.kind == ConstraintSpec::Kind::length) {
-      if (const Path* path = path_of(ctx, in, k.arg)) ctx.m.constraints.push_back({label, cname, path->varying_length, "length of " + label});
+      if (const Path* path = path_of(ctx, in, k.arg))
+        ctx.m.constraints.push_back({label, cname, path->varying_length, "length of " + label});
     } else if (k.kind == ConstraintSpec::Kind::together) {
       // One body's position relative to the other, along each axis, is constant.
       auto a = in.body_args.find(k.arg), b = in.body_args.find(k.with);
@@ -592,7 +624,8 @@ void add_constraints(BuildContext& ctx, Instance& in) {
       const Body& first = ctx.m.bodies[a->second];
       const Body& second = ctx.m.bodies[b->second];
       if (a->second == b->second) {
-        ctx.diags.error(c.at, "a " + in.what + " joins body '" + first.name + "' to itself (expected two different bodies)");
+        ctx.diags.error(c.at,
+                        "a " + in.what + " joins body '" + first.name + "' to itself (expected two different bodies)");
         continue;
       }
       // With a body that turns, the bodies do not share their translation: each one's own
@@ -658,7 +691,8 @@ void add_conditions(BuildContext& ctx, Instance& in) {
   }
   for (const auto& a : rule->assumptions) {
     if (!applies(ctx, c, a.when)) continue;
-    if (std::find(ctx.m.assumptions.begin(), ctx.m.assumptions.end(), a.text) == ctx.m.assumptions.end()) ctx.m.assumptions.push_back(a.text);
+    if (std::find(ctx.m.assumptions.begin(), ctx.m.assumptions.end(), a.text) == ctx.m.assumptions.end())
+      ctx.m.assumptions.push_back(a.text);
   }
   {
     // The rule's text with its {N}, {mu*N} in this connection's own symbols (N_A, mu N_A).
@@ -685,7 +719,8 @@ void add_conditions(BuildContext& ctx, Instance& in) {
     d.label = label;
     bool vector = false;
     for (const auto& spec : rule->args) {  // the first argument of each kind, in the rule's order
-      if (spec.kind == ArgKind::points && d.path.empty() && in.path_args.count(spec.key)) d.path = in.path_args.at(spec.key);
+      if (spec.kind == ArgKind::points && d.path.empty() && in.path_args.count(spec.key))
+        d.path = in.path_args.at(spec.key);
       if (spec.kind == ArgKind::body && d.body < 0 && in.body_args.count(spec.key)) d.body = in.body_args.at(spec.key);
       if (spec.kind == ArgKind::point && in.point_args.count(spec.key)) {
         if (d.point < 0) d.point = in.point_args.at(spec.key);
@@ -712,9 +747,11 @@ void add_conditions(BuildContext& ctx, Instance& in) {
       if (other != in.body_args.end()) {
         // Two bodies: the contact slips at the first's velocity relative to the other's.
         const Body& o = ctx.m.bodies[other->second];
-        const auto v = kinematics::point_velocity(ctx.m, b, p - b.cm), w = kinematics::point_velocity(ctx.m, o, p - o.cm);
+        const auto v = kinematics::point_velocity(ctx.m, b, p - b.cm),
+                   w = kinematics::point_velocity(ctx.m, o, p - o.cm);
         if (v && w)
-          ctx.m.slips.push_back({label, fewer_trig_terms(inner(unit(along->second), *v - *w).expand()), {body->second, other->second}});
+          ctx.m.slips.push_back(
+              {label, fewer_trig_terms(inner(unit(along->second), *v - *w).expand()), {body->second, other->second}});
       } else if (!b.angle.is_zero()) {
         if (const auto v = kinematics::point_velocity(ctx.m, b, p - b.cm))
           ctx.m.slips.push_back({label, fewer_trig_terms(inner(unit(along->second), *v).expand()), {body->second}});
@@ -728,14 +765,14 @@ void add_conditions(BuildContext& ctx, Instance& in) {
       auto it = in.expr_args.find(chk.arg);
       if (it == in.expr_args.end()) continue;
       const ex v = evalf(substituted(it->second.first, ctx.table->values()));
-      if (is_a<numeric>(v) && ex_to<numeric>(v).is_real() && !ex_to<numeric>(v).is_positive())
-      {
+      if (is_a<numeric>(v) && ex_to<numeric>(v).is_real() && !ex_to<numeric>(v).is_positive()) {
         const ArgSpec* spec = in.rule.arg(chk.arg);
         const std::string unit = spec && spec->dimension ? si_unit_name(*spec->dimension) : "";
-        ctx.diags.error(it->second.second, "'" + chk.arg + "' of a " + in.what + " is " +
-                                               (is_a<numeric>(it->second.first) ? "" : to_text(it->second.first) + " = ") +
-                                               fmt::format("{:g}", ex_to<numeric>(v).to_double()) + (unit.empty() ? "" : " " + unit) +
-                                               " (expected a positive value)");
+        ctx.diags.error(it->second.second,
+                        "'" + chk.arg + "' of a " + in.what + " is " +
+                            (is_a<numeric>(it->second.first) ? "" : to_text(it->second.first) + " = ") +
+                            fmt::format("{:g}", ex_to<numeric>(v).to_double()) + (unit.empty() ? "" : " " + unit) +
+                            " (expected a positive value)");
       }
       continue;
     }
@@ -756,8 +793,16 @@ void connection(BuildContext& ctx, const ConnectionDesc& c, std::set<std::string
   }
   if (!found->regimes.empty())  // (the pipeline makes it one of its regimes before the model is built)
     throw InternalError("a '" + found->type + "' connection reached the model builder undecided");
-  Instance in{c, *found, "'" + found->type + "' connection" + (c.name ? " '" + c.name->text + "'" : ""), {}, Scope(*ctx.table),
-              {}, {}, {}, {}, {}};
+  Instance in{c,
+              *found,
+              "'" + found->type + "' connection" + (c.name ? " '" + c.name->text + "'" : ""),
+              {},
+              Scope(*ctx.table),
+              {},
+              {},
+              {},
+              {},
+              {}};
   if (c.name && !connection_names.insert(c.name->text).second)
     ctx.diags.error(c.name->at, "duplicate connection name '" + c.name->text + "'");
   if (!arguments_fit(ctx, in) || !bind_arguments(ctx, in)) {
@@ -796,9 +841,11 @@ void connections(BuildContext& ctx) {
                                  " (expected it inside some string's path)");
     if (pc.check->kind == CheckSpec::Kind::steady_at && pc.point >= 0) {
       if (auto it = ctx.turning_at.find(pc.point); it != ctx.turning_at.end())
-        ctx.diags.error(pc.at, "strand " + it->second + " at point '" + ctx.m.points[pc.point].name + "' of a " + pc.what +
-                                   " turns as the bodies move, so the length wrapped on it would change (expected strands "
-                                   "that keep their directions there, or the pulley as a point: no '" + pc.check->when + "')");
+        ctx.diags.error(pc.at,
+                        "strand " + it->second + " at point '" + ctx.m.points[pc.point].name + "' of a " + pc.what +
+                            " turns as the bodies move, so the length wrapped on it would change (expected strands "
+                            "that keep their directions there, or the pulley as a point: no '" +
+                            pc.check->when + "')");
     }
   }
 }

@@ -12,16 +12,16 @@ using namespace GiNaC;
 
 bool BuildContext::claim_in(std::map<std::string, Location>& names_in_use, const Text& name, const std::string& what) {
   if (!is_identifier(name.text)) {
-    diags.error(name.at, what + " name '" + name.text +
-                             "' is not a valid name (expected a letter, then letters, digits or _)");
+    diags.error(name.at,
+                what + " name '" + name.text + "' is not a valid name (expected a letter, then letters, digits or _)");
     return false;
   }
   if (auto it = names_in_use.find(name.text); it != names_in_use.end() && it->second.line == 0 && name.text == "t") {
     diags.error(name.at, "'t' is time (expected another name for this " + what + ")");
     return false;
   } else if (it != names_in_use.end()) {
-    diags.error(name.at, "duplicate name '" + name.text + "' (first defined at line " +
-                             std::to_string(it->second.line) + ")");
+    diags.error(name.at,
+                "duplicate name '" + name.text + "' (first defined at line " + std::to_string(it->second.line) + ")");
     return false;
   }
   names_in_use[name.text] = name.at;
@@ -34,25 +34,29 @@ std::optional<ex> BuildContext::parse(const Text& t, const NameResolver& names, 
   return r.value;
 }
 
-std::optional<ex> BuildContext::number_in_parameters(const Text& t, const std::string& what, std::optional<Dimension> expected) {
+std::optional<ex> BuildContext::number_in_parameters(const Text& t, const std::string& what,
+                                                     std::optional<Dimension> expected) {
   const auto v = parse(t, *table, what);
   if (!v) return std::nullopt;
   for (const ex& x : distinct_symbols(*v)) {
     const SymbolInfo* s = table->find(x);
     if (s && s->role == SymbolRole::parameter) continue;
-    diags.error(t.at, what + ": '" + to_text(x) + "' is not a parameter (expected a number or an expression in the parameters)");
+    diags.error(t.at, what + ": '" + to_text(x) +
+                          "' is not a parameter (expected a number or an expression in the parameters)");
     return std::nullopt;
   }
   if (expected && !is_a<numeric>(*v)) check_dimension(*v, *expected, t.at, what);
   const ex at = substituted(*v, table->values());
   if (const auto missing = distinct_symbols(at); !missing.empty()) {
-    diags.error(t.at, what + ": '" + to_text(missing.front()) + "' has no value (expected a number, or parameters with values)");
+    diags.error(t.at, what + ": '" + to_text(missing.front()) +
+                          "' has no value (expected a number, or parameters with values)");
     return std::nullopt;
   }
   return at;
 }
 
-void BuildContext::check_dimension(const ex& e, const Dimension& expected, const Location& at, const std::string& what) {
+void BuildContext::check_dimension(const ex& e, const Dimension& expected, const Location& at,
+                                   const std::string& what) {
   std::string problem;
   auto dim = dimension_of(e, *table, problem);
   if (!dim) {
@@ -60,7 +64,8 @@ void BuildContext::check_dimension(const ex& e, const Dimension& expected, const
     return;
   }
   if (!(*dim == expected))
-    diags.error(at, what + " is " + with_article(dim->describe()) + " (expected " + with_article(expected.describe()) + ")");
+    diags.error(
+        at, what + " is " + with_article(dim->describe()) + " (expected " + with_article(expected.describe()) + ")");
 }
 
 std::optional<Vec> BuildContext::vector(const VectorDesc& v, const NameResolver& names, const std::string& what,

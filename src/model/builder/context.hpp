@@ -113,7 +113,8 @@ struct BuildContext {
 
   // A number, or an expression in parameters that have values (L/2, 3*T_0): its exact value,
   // or nothing with the problem reported. An expression is checked against `expected`.
-  std::optional<GiNaC::ex> number_in_parameters(const Text& t, const std::string& what, std::optional<Dimension> expected);
+  std::optional<GiNaC::ex> number_in_parameters(const Text& t, const std::string& what,
+                                                std::optional<Dimension> expected);
 
   // Reports when `e` does not have dimension `expected`; silent when it cannot tell.
   void check_dimension(const GiNaC::ex& e, const Dimension& expected, const Location& at, const std::string& what);

@@ -16,9 +16,12 @@ void gravity(BuildContext& ctx) {
     auto magnitude = ctx.parse(*ctx.d.gravity_magnitude, *ctx.table, "'magnitude' of 'gravity'");
     auto tilt = ctx.parse(*ctx.d.gravity_tilt, *ctx.table, "'tilt' of 'gravity'");
     if (magnitude && !is_a<numeric>(*magnitude))
-      ctx.check_dimension(*magnitude, Dimension::acceleration(), ctx.d.gravity_magnitude->at, "'magnitude' of 'gravity'");
-    if (tilt && !is_a<numeric>(*tilt)) ctx.check_dimension(*tilt, Dimension::none(), ctx.d.gravity_tilt->at, "'tilt' of 'gravity'");
-    if (magnitude && tilt) g = Vec{-*magnitude * sin(*tilt), ctx.m.dims() > 1 ? ex(-*magnitude * cos(*tilt)) : ex(0), 0};
+      ctx.check_dimension(*magnitude, Dimension::acceleration(), ctx.d.gravity_magnitude->at,
+                          "'magnitude' of 'gravity'");
+    if (tilt && !is_a<numeric>(*tilt))
+      ctx.check_dimension(*tilt, Dimension::none(), ctx.d.gravity_tilt->at, "'tilt' of 'gravity'");
+    if (magnitude && tilt)
+      g = Vec{-*magnitude * sin(*tilt), ctx.m.dims() > 1 ? ex(-*magnitude * cos(*tilt)) : ex(0), 0};
   }
   if (!g) return;
   ctx.m.gravity = *g;

@@ -68,8 +68,9 @@ void motion(BuildContext& ctx) {
       for (const auto& c : m.candidates)
         for (int k = 0; k < 3; ++k) unknown = unknown || b.acceleration[k].has(c);
       if (unknown)
-        ctx.diags.error(b.at, "body '" + b.name + "' moves without a coordinate (expected 'position' and a center_of_mass "
-                                                  "written in it, for motion in time)");
+        ctx.diags.error(b.at, "body '" + b.name +
+                                  "' moves without a coordinate (expected 'position' and a center_of_mass "
+                                  "written in it, for motion in time)");
     }
   }
   spec.moving = moving.size();
@@ -111,9 +112,11 @@ void motion(BuildContext& ctx) {
       if (rank_with(rows, with, n) == rank_with(rows, chosen, n)) {
         std::vector<std::string> before;
         for (auto k : chosen) before.push_back(moving_names[k]);
-        ctx.diags.error(c.at, "'" + c.text + "' is fixed by the constraints" +
-                                  (before.empty() ? std::string() : " once " + join(before) + (before.size() == 1 ? " is" : " are") + " known") +
-                                  " (expected independent coordinates)");
+        ctx.diags.error(
+            c.at, "'" + c.text + "' is fixed by the constraints" +
+                      (before.empty() ? std::string()
+                                      : " once " + join(before) + (before.size() == 1 ? " is" : " are") + " known") +
+                      " (expected independent coordinates)");
         ok = false;
         continue;
       }
@@ -148,13 +151,12 @@ void motion(BuildContext& ctx) {
     // (Only the motion's own rates may be given: a rate in `initial` names its coordinate.)
     const std::vector<std::function<bool(const Coordinate&)>> preferences = {
         [&](const Coordinate& c) { return contains(m.given, c.q) && massive(c); },
-        [&](const Coordinate& c) { return in_initial(c.rate); },
-        [&](const Coordinate& c) { return in_initial(c.q); },
-        massive,
-        [&](const Coordinate&) { return true; }};
+        [&](const Coordinate& c) { return in_initial(c.rate); }, [&](const Coordinate& c) { return in_initial(c.q); },
+        massive, [&](const Coordinate&) { return true; }};
     for (const auto& preferred : preferences)
       for (std::size_t j = 0; j < n; ++j)
-        if (std::find(order.begin(), order.end(), j) == order.end() && preferred(m.coordinates[moving[j]])) order.push_back(j);
+        if (std::find(order.begin(), order.end(), j) == order.end() && preferred(m.coordinates[moving[j]]))
+          order.push_back(j);
     for (auto j : order) {
       if (chosen.size() == dof) break;
       std::vector<std::size_t> with = chosen;
@@ -165,10 +167,11 @@ void motion(BuildContext& ctx) {
   if (dof == 0) {
     std::vector<std::string> massless;
     for (const auto& q : by_balance) massless.push_back(to_text(q));
-    ctx.diags.error(md.at, "the motion has no degree of freedom: the constraints fix every coordinate" +
-                               std::string(!massless.empty() ? " (the balances of massless bodies fix " + join(massless) + ")"
-                                           : n == 0        ? " (no body has a 'position')"
-                                                           : ""));
+    ctx.diags.error(md.at,
+                    "the motion has no degree of freedom: the constraints fix every coordinate" +
+                        std::string(!massless.empty() ? " (the balances of massless bodies fix " + join(massless) + ")"
+                                    : n == 0          ? " (no body has a 'position')"
+                                                      : ""));
     usable = false;
   }
   for (auto j : chosen) {
@@ -200,15 +203,17 @@ void motion(BuildContext& ctx) {
         return contains(by_balance, b.coord) && (b.coord.is_equal(s->sym) || b.rate.is_equal(s->sym));
       });
       if (fixed != m.bodies.end()) {
-        ctx.diags.error(key.at, "initial value of '" + key.text + "': body '" + fixed->name +
-                                    "' has no mass, so its balance gives it at every instant (expected initial values of the "
-                                    "motion's coordinates only)");
+        ctx.diags.error(key.at,
+                        "initial value of '" + key.text + "': body '" + fixed->name +
+                            "' has no mass, so its balance gives it at every instant (expected initial values of the "
+                            "motion's coordinates only)");
         continue;
       }
     }
     if (body < 0) {
       std::vector<std::string> known;
-      for (int i : moving) known.push_back(to_text(m.coordinates[i].q)), known.push_back(to_text(m.coordinates[i].rate));
+      for (int i : moving)
+        known.push_back(to_text(m.coordinates[i].q)), known.push_back(to_text(m.coordinates[i].rate));
       ctx.unknown_name(key, "coordinate or rate of a moving body", known);
       continue;
     }
@@ -233,8 +238,9 @@ void motion(BuildContext& ctx) {
       if (!unit)
         ctx.diags.error(unit_text->at.shifted(col), "unit of the initial value of '" + key.text + "': " + err);
       else if (!(unit->dimension == expected))
-        ctx.diags.error(unit_text->at, "initial value of '" + key.text + "' is " + with_article(expected.describe()) + ", but " +
-                                           unit_text->text + " is " + with_article(unit->dimension.describe()));
+        ctx.diags.error(unit_text->at, "initial value of '" + key.text + "' is " + with_article(expected.describe()) +
+                                           ", but " + unit_text->text + " is " +
+                                           with_article(unit->dimension.describe()));
       else
         *v = *v * unit->to_si;
     } else if (!is_a<numeric>(*v)) {
@@ -267,7 +273,8 @@ void motion(BuildContext& ctx) {
         to_si = ex(unit->to_si);
       }
     }
-    auto v = ctx.number_in_parameters(*md.until, "'until' of 'motion'", md.until_unit ? std::nullopt : std::optional(Dimension::time()));
+    auto v = ctx.number_in_parameters(*md.until, "'until' of 'motion'",
+                                      md.until_unit ? std::nullopt : std::optional(Dimension::time()));
     if (v && to_si) {
       const ex seconds = evalf(*v * *to_si);
       if (!is_a<numeric>(seconds) || !ex_to<numeric>(seconds).is_real() || !ex_to<numeric>(seconds).is_positive())
@@ -285,23 +292,28 @@ void motion(BuildContext& ctx) {
       for (const auto& q : spec.coordinates) known.push_back(to_text(q));
       ctx.unknown_name(key, "coordinate of the motion", known);
     } else if (spec.coordinates.size() != 1) {
-      ctx.diags.error(key.at, "'speed_at' needs one degree of freedom (the motion has " + std::to_string(spec.coordinates.size()) + ")");
+      ctx.diags.error(key.at, "'speed_at' needs one degree of freedom (the motion has " +
+                                  std::to_string(spec.coordinates.size()) + ")");
     } else if (auto v = ctx.parse(value, *ctx.table, "'speed_at' value of '" + key.text + "'")) {
       bool in_parameters = true;
       for (const auto& sym : ctx.table->all())
         if (v->has(sym->sym) && sym->role != SymbolRole::parameter) in_parameters = false;
-      if (!in_parameters) ctx.diags.error(value.at, "'speed_at' value of '" + key.text + "' is not an expression in the parameters");
+      if (!in_parameters)
+        ctx.diags.error(value.at, "'speed_at' value of '" + key.text + "' is not an expression in the parameters");
       else {
-        if (!is_a<numeric>(*v)) ctx.check_dimension(*v, Dimension::length(), value.at, "'speed_at' value of '" + key.text + "'");
+        if (!is_a<numeric>(*v))
+          ctx.check_dimension(*v, Dimension::length(), value.at, "'speed_at' value of '" + key.text + "'");
         spec.speed_at = std::pair{*r.value, *v};
       }
     }
   }
   const std::string lambda = free_name(*ctx.table, "lambda"), zeta = free_name(*ctx.table, "zeta"),
                     omega_d = free_name(*ctx.table, "omega_d");
-  spec.lambda = ctx.table->add(lambda, std::nullopt, SymbolRole::motion, Dimension::none() / Dimension::time(), true, md.at).sym;
+  spec.lambda =
+      ctx.table->add(lambda, std::nullopt, SymbolRole::motion, Dimension::none() / Dimension::time(), true, md.at).sym;
   spec.zeta = ctx.table->add(zeta, std::nullopt, SymbolRole::motion, Dimension::none(), true, md.at).sym;
-  spec.omega_d = ctx.table->add(omega_d, std::nullopt, SymbolRole::motion, Dimension::none() / Dimension::time(), true, md.at).sym;
+  spec.omega_d =
+      ctx.table->add(omega_d, std::nullopt, SymbolRole::motion, Dimension::none() / Dimension::time(), true, md.at).sym;
   if (usable) m.motion = std::move(spec);
 }
 
@@ -329,7 +341,8 @@ std::optional<ex> parameters_only(BuildContext& ctx, const Text& t, const std::s
 int body_of_rate(BuildContext& ctx, const Text& key) {
   const auto r = parse_expression(key.text, *ctx.table);
   for (std::size_t i = 0; i < ctx.m.bodies.size(); ++i)
-    if (r.value && !ctx.m.bodies[i].rate.is_zero() && ctx.m.bodies[i].rate.is_equal(*r.value)) return static_cast<int>(i);
+    if (r.value && !ctx.m.bodies[i].rate.is_zero() && ctx.m.bodies[i].rate.is_equal(*r.value))
+      return static_cast<int>(i);
   std::vector<std::string> known;
   for (const auto& b : ctx.m.bodies)
     if (!b.rate.is_zero()) known.push_back(to_text(b.rate));
@@ -345,7 +358,8 @@ void interval(BuildContext& ctx) {
   Model& m = ctx.m;
   IntervalSpec spec;
   spec.at = d.at;
-  auto quantity = [&](const std::optional<Text>& t, const std::string& what, const Dimension& dim) -> std::optional<ex> {
+  auto quantity = [&](const std::optional<Text>& t, const std::string& what,
+                      const Dimension& dim) -> std::optional<ex> {
     return t ? parameters_only(ctx, *t, what, dim) : std::nullopt;
   };
   spec.duration = quantity(d.duration, "'duration' of 'interval'", Dimension::time());
@@ -366,7 +380,8 @@ void interval(BuildContext& ctx) {
   for (int b : order) {
     const auto& [from, to] = ends[b];
     if (!from) {
-      ctx.diags.error(d.at, "'interval' gives " + to_text(m.bodies[b].rate) + " at its end only (expected it in 'from' too)");
+      ctx.diags.error(d.at,
+                      "'interval' gives " + to_text(m.bodies[b].rate) + " at its end only (expected it in 'from' too)");
       continue;
     }
     spec.changes.push_back({b, *from, to});
@@ -387,13 +402,15 @@ void impact(BuildContext& ctx) {
   }
   // The finite forces give no impulse while an impact lasts: nothing else is modelled.
   for (const auto& c : ctx.d.connections) {
-    ctx.diags.error(c.at, "a description with 'impact' has no connections or loads (the finite forces give no impulse while "
-                          "the impact lasts; expected the bodies and their rates before it only)");
+    ctx.diags.error(c.at,
+                    "a description with 'impact' has no connections or loads (the finite forces give no impulse while "
+                    "the impact lasts; expected the bodies and their rates before it only)");
     usable = false;
   }
   if (!ctx.d.find.empty()) {
-    ctx.diags.error(ctx.d.find[0].name.at, "a description with 'impact' has no 'find' (it reports the rates after the impact, "
-                                           "the impulses and the kinetic energy lost)");
+    ctx.diags.error(ctx.d.find[0].name.at,
+                    "a description with 'impact' has no 'find' (it reports the rates after the impact, "
+                    "the impulses and the kinetic energy lost)");
     usable = false;
   }
   for (const char* other : {"interval", "motion"})
@@ -421,12 +438,14 @@ void impact(BuildContext& ctx) {
       ctx.diags.error(b.at, "body '" + b.name + "' has no mass (expected every body of an impact to have one)");
       usable = false;
     } else if (!before.count(static_cast<int>(i)) && !b.rate.is_zero()) {
-      ctx.diags.error(d.at, "'impact' gives no rate of body '" + b.name + "' before it (expected " + to_text(b.rate) + " in 'from')");
+      ctx.diags.error(d.at, "'impact' gives no rate of body '" + b.name + "' before it (expected " + to_text(b.rate) +
+                                " in 'from')");
       usable = false;
     }
   }
   if (m.bodies.size() < 2) {
-    ctx.diags.error(d.at, "'impact' has " + std::to_string(m.bodies.size()) + " body (expected two or more that collide)");
+    ctx.diags.error(d.at,
+                    "'impact' has " + std::to_string(m.bodies.size()) + " body (expected two or more that collide)");
     usable = false;
   }
   if (d.restitution) {
@@ -442,14 +461,18 @@ void impact(BuildContext& ctx) {
   for (const auto& [body, v] : before) {
     const Text name{"J_" + m.bodies[body].name, d.at};
     if (!ctx.claim(name, "impulse")) return;
-    const ex sym = ctx.table->add(name.text, "J_{\\mathrm{" + m.bodies[body].name + "}}", SymbolRole::unknown,
-                                  Dimension::force() * Dimension::time(), false, d.at).sym;
+    const ex sym = ctx.table
+                       ->add(name.text, "J_{\\mathrm{" + m.bodies[body].name + "}}", SymbolRole::unknown,
+                             Dimension::force() * Dimension::time(), false, d.at)
+                       .sym;
     spec.before.push_back({body, v, sym});
   }
   const Text lost{"E_lost", d.at};
   if (!ctx.claim(lost, "energy")) return;
-  spec.energy_lost = ctx.table->add(lost.text, std::string("E_{\\mathrm{lost}}"), SymbolRole::unknown,
-                                    Dimension::force() * Dimension::length(), false, d.at).sym;
+  spec.energy_lost = ctx.table
+                         ->add(lost.text, std::string("E_{\\mathrm{lost}}"), SymbolRole::unknown,
+                               Dimension::force() * Dimension::length(), false, d.at)
+                         .sym;
   m.impact = std::move(spec);
 }
 

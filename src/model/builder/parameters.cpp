@@ -14,7 +14,8 @@ using namespace GiNaC;
 void axes(BuildContext& ctx) {
   if (ctx.d.axes.empty()) return;  // default: one axis named x
   if (ctx.d.axes.size() > 3) {
-    ctx.diags.error(ctx.d.axes[3].at, "'axes' lists " + std::to_string(ctx.d.axes.size()) + " axes (expected one to three)");
+    ctx.diags.error(ctx.d.axes[3].at,
+                    "'axes' lists " + std::to_string(ctx.d.axes.size()) + " axes (expected one to three)");
     return;
   }
   std::set<std::string> seen;
@@ -35,8 +36,9 @@ void parameters(BuildContext& ctx) {
       std::string err;
       int col = 0;
       unit = parse_unit(p.unit->text, err, col);
-      if (!unit) ctx.diags.error(p.unit->at.shifted(col), "unit of parameter '" + p.name.text + "': " + err +
-                                                             " (expected SI units such as kg, m, s, N, m/s^2, kN)");
+      if (!unit)
+        ctx.diags.error(p.unit->at.shifted(col), "unit of parameter '" + p.name.text + "': " + err +
+                                                     " (expected SI units such as kg, m, s, N, m/s^2, kN)");
     }
     std::optional<Dimension> dim;
     if (unit) dim = unit->dimension;
@@ -48,10 +50,11 @@ void parameters(BuildContext& ctx) {
         ctx.diags.error(p.dimension->at, "unknown dimension '" + p.dimension->text +
                                              "' (expected force, mass, length, time, velocity, acceleration, ...)");
       else if (dim && !(*dim == *named))
-        ctx.diags.error(p.dimension->at, "parameter '" + p.name.text + "' has dimension " + named->describe() + " but its unit " +
-                                             p.unit->text + " is " +
-                                             (*dim == Dimension::none() ? std::string("dimensionless (an angle or a pure number)")
-                                                                        : with_article(dim->describe())));
+        ctx.diags.error(p.dimension->at,
+                        "parameter '" + p.name.text + "' has dimension " + named->describe() + " but its unit " +
+                            p.unit->text + " is " +
+                            (*dim == Dimension::none() ? std::string("dimensionless (an angle or a pure number)")
+                                                       : with_article(dim->describe())));
       else
         dim = named;
     }
@@ -64,11 +67,11 @@ void parameters(BuildContext& ctx) {
       dim = dimension_of(*definition, *ctx.table, problem);
       if (!problem.empty()) ctx.diags.error(p.define->at, "'define' of parameter '" + p.name.text + "' " + problem);
     }
-    const bool positive = p.positive.value_or(
-        p.name.text == "g" ||
-        (dim && (*dim == Dimension::mass() || *dim == Dimension::length() || *dim == Dimension::force() / Dimension::length() ||
-                 *dim == Dimension::force() / Dimension::velocity())) ||
-        (definition && definition->info(info_flags::positive)));
+    const bool positive = p.positive.value_or(p.name.text == "g" ||
+                                              (dim && (*dim == Dimension::mass() || *dim == Dimension::length() ||
+                                                       *dim == Dimension::force() / Dimension::length() ||
+                                                       *dim == Dimension::force() / Dimension::velocity())) ||
+                                              (definition && definition->info(info_flags::positive)));
     ctx.table->add(p.name.text, p.tex ? std::optional<std::string>(p.tex->text) : std::nullopt, SymbolRole::parameter,
                    dim, positive, p.name.at);
     if (definition) {

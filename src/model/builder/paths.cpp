@@ -64,9 +64,10 @@ bool wind(BuildContext& ctx, const Instance& in, Path& path) {
     for (const auto& c : ctx.m.coordinates) moves = moves || s.has(c.q);
     for (const auto& l : ctx.m.lengths) moves = moves || s.has(l.symbol);
     if (moves) {
-      ctx.diags.error(in.c.at, strand + " leaves body '" + body.name + "' at '" + p.name +
-                                   "' in a direction that changes as the bodies move (expected a strand that stays along one "
-                                   "line, as from a drum to a hanging or sliding body)");
+      ctx.diags.error(in.c.at,
+                      strand + " leaves body '" + body.name + "' at '" + p.name +
+                          "' in a direction that changes as the bodies move (expected a strand that stays along one "
+                          "line, as from a drum to a hanging or sliding body)");
       ok = false;
       continue;
     }
@@ -94,11 +95,13 @@ const Path* path_of(BuildContext& ctx, Instance& in, const std::string& key) {
   if (it == in.path_args.end()) return nullptr;
   // A body whose coordinate could not be made has been reported already.
   for (int p : it->second)
-    if (ctx.m.dims() == 1 && ctx.m.points[p].body >= 0 && ctx.m.bodies[ctx.m.points[p].body].coord.is_zero()) return nullptr;
+    if (ctx.m.dims() == 1 && ctx.m.points[p].body >= 0 && ctx.m.bodies[ctx.m.points[p].body].coord.is_zero())
+      return nullptr;
   auto [cached, fresh] = in.paths.try_emplace(key);
   if (fresh) {
-    cached->second = make_path(it->second, ctx.m.points, ctx.m.dims(), ctx.layout, ctx.diags, in.c.at, in.label,
-                               [&ctx](const Point& a, const Point& b, const ex& squared) { return turning_length(ctx, a, b, squared); });
+    cached->second = make_path(
+        it->second, ctx.m.points, ctx.m.dims(), ctx.layout, ctx.diags, in.c.at, in.label,
+        [&ctx](const Point& a, const Point& b, const ex& squared) { return turning_length(ctx, a, b, squared); });
     if (cached->second && ctx.m.dims() == 2 && !wind(ctx, in, *cached->second)) cached->second.reset();
     if (cached->second && cached->second->varying_length.is_zero()) {
       ctx.diags.error(in.c.at, "the path of a " + in.what +

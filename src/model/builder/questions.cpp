@@ -41,7 +41,8 @@ bool given_in_parameters(const ex& v, const SymbolInfo& s, bool with_unit, const
   for (const ex& x : distinct_symbols(v)) {
     const SymbolInfo* info = table.find(x);
     if (info && info->role == SymbolRole::parameter) continue;
-    to.error(at, what + ": '" + to_text(x) + "' is not a parameter (expected a number or an expression in the parameters)");
+    to.error(at,
+             what + ": '" + to_text(x) + "' is not a parameter (expected a number or an expression in the parameters)");
     return false;
   }
   const ex approx = evalf(substituted(v, table.values()));
@@ -52,9 +53,11 @@ bool given_in_parameters(const ex& v, const SymbolInfo& s, bool with_unit, const
   if (with_unit || is_a<numeric>(v) || !s.dimension) return true;
   std::string problem;
   const auto dim = dimension_of(v, table, problem);
-  if (!dim && !problem.empty()) to.error(at, what + " " + problem + " (expected " + with_article(s.dimension->describe()) + ")");
+  if (!dim && !problem.empty())
+    to.error(at, what + " " + problem + " (expected " + with_article(s.dimension->describe()) + ")");
   else if (dim && !(*dim == *s.dimension))
-    to.error(at, what + " is " + with_article(dim->describe()) + " (expected " + with_article(s.dimension->describe()) + ")");
+    to.error(at, what + " is " + with_article(dim->describe()) + " (expected " + with_article(s.dimension->describe()) +
+                     ")");
   return !dim || *dim == *s.dimension;
 }
 
@@ -76,8 +79,8 @@ std::optional<ex> given_value(const GivenDesc& g, const SymbolInfo& s, const Sym
       return std::nullopt;
     }
     if (s.dimension && !(unit->dimension == *s.dimension)) {
-      to.error(g.unit->at, "'" + g.name.text + "' is " + with_article(s.dimension->describe()) + ", but " + g.unit->text +
-                               " is " + with_article(unit->dimension.describe()));
+      to.error(g.unit->at, "'" + g.name.text + "' is " + with_article(s.dimension->describe()) + ", but " +
+                               g.unit->text + " is " + with_article(unit->dimension.describe()));
       return std::nullopt;
     }
   }
@@ -112,8 +115,10 @@ void set_given(BuildContext& ctx, const SymbolInfo& s, const ex& v, const Text& 
     ctx.table->set_value(s.name, at);
     return;
   }
-  ctx.diags.error(written.at, "'given' value of '" + s.name + "': with a 'motion', the instant's given values are numbers, and " +
-                                  to_text(distinct_symbols(at).front()) + " has no value (expected a value for it in 'parameters')");
+  ctx.diags.error(written.at, "'given' value of '" + s.name +
+                                  "': with a 'motion', the instant's given values are numbers, and " +
+                                  to_text(distinct_symbols(at).front()) +
+                                  " has no value (expected a value for it in 'parameters')");
 }
 
 // The steady rate or its period when a `find` entry names one of them.
@@ -137,7 +142,9 @@ void given_and_find(BuildContext& ctx) {
     const SymbolInfo* s = ctx.table->find(*r.value);
     if (!s || (s->role != SymbolRole::acceleration && s->role != SymbolRole::rate && s->role != SymbolRole::unknown &&
                s->role != SymbolRole::coordinate)) {
-      ctx.diags.error(g.at, "'" + g.text + "' cannot be given (expected a coordinate, a velocity or an acceleration such as ddot(x_B), or an unknown)");
+      ctx.diags.error(g.at, "'" + g.text +
+                                "' cannot be given (expected a coordinate, a velocity or an acceleration such as "
+                                "ddot(x_B), or an unknown)");
       continue;
     }
     if (gd.value) {
@@ -149,7 +156,8 @@ void given_and_find(BuildContext& ctx) {
       }
     }
     ctx.m.given.push_back(s->sym);
-    ctx.m.candidates.erase(std::remove(ctx.m.candidates.begin(), ctx.m.candidates.end(), s->sym), ctx.m.candidates.end());
+    ctx.m.candidates.erase(std::remove(ctx.m.candidates.begin(), ctx.m.candidates.end(), s->sym),
+                           ctx.m.candidates.end());
   }
   // A steady motion's unknown: its rate's square, after the others; its rate and period are
   // reported where `find` names them (else after what it asks for).
@@ -177,7 +185,8 @@ void given_and_find(BuildContext& ctx) {
       }
       const SymbolInfo* s = ctx.table->find(*r.value);
       if (!s) {
-        ctx.diags.error(f.name.at, "'find' lists '" + f.name.text + "', which is not a single name (use {name: ..., expr: ...})");
+        ctx.diags.error(f.name.at,
+                        "'find' lists '" + f.name.text + "', which is not a single name (use {name: ..., expr: ...})");
         continue;
       }
       ctx.m.wanted.push_back({s->name, s->tex, s->sym, false, s->dimension, output_unit(ctx, f, s->dimension)});
@@ -217,7 +226,8 @@ std::optional<std::vector<int>> selected_bodies(BuildContext& ctx, const DeriveD
       ctx.unknown_name(item, "body", ctx.body_names());
       ok = false;
     } else if (!ctx.m.bodies[it->second].has_mass) {
-      ctx.diags.error(item.at, "body '" + item.text + "' has no 'mass' (needed for its momentum balance; 0 for a pulley block)");
+      ctx.diags.error(item.at,
+                      "body '" + item.text + "' has no 'mass' (needed for its momentum balance; 0 for a pulley block)");
       ok = false;
     } else {
       out.push_back(it->second);
@@ -262,7 +272,8 @@ void derive(BuildContext& ctx) {
           const Vec from = ctx.m.points[ctx.point_index[items[0].text]].position;
           const Vec to = ctx.m.points[ctx.point_index[items[1].text]].position;
           if (is_zero_vec(to - from)) {
-            ctx.diags.error(dd.axis->at, "the axis " + items[0].text + items[1].text + " has zero length (expected two different points)");
+            ctx.diags.error(dd.axis->at, "the axis " + items[0].text + items[1].text +
+                                             " has zero length (expected two different points)");
             continue;
           }
           s.axis = unit(to - from);
@@ -305,7 +316,8 @@ void statement(BuildContext& ctx) {
     const std::string name(p.name);
     const SymbolInfo* s = ctx.table->find(name);
     if (!s || s->role != SymbolRole::parameter)
-      ctx.diags.error(st.at, "'statement' names '{" + name + "}', which is not a parameter (expected one of: " + join(names) + ")");
+      ctx.diags.error(
+          st.at, "'statement' names '{" + name + "}', which is not a parameter (expected one of: " + join(names) + ")");
   }
   ctx.m.statement = st;
 }

@@ -46,11 +46,13 @@ void steady(BuildContext& ctx) {
       ctx.table->add(st.rate.text + "^2", "{" + tex + "^{2}}", SymbolRole::unknown, rate.pow(2), false, st.rate.at);
   ctx.table->set_alias(st.rate.text, sqrt(squared.sym));
   const SymbolInfo& root = ctx.table->add(st.rate.text, tex, SymbolRole::defined, rate, false, st.rate.at);
-  const SymbolInfo& tau = ctx.table->add(period.text, std::nullopt, SymbolRole::defined, Dimension::time(), false, period.at);
+  const SymbolInfo& tau =
+      ctx.table->add(period.text, std::nullopt, SymbolRole::defined, Dimension::time(), false, period.at);
   SteadySpec spec{root.name, tau.name, squared.sym, {}};
   spec.reported.push_back({root.name, root.tex, sqrt(squared.sym), true, rate, unit});
   spec.reported.push_back({tau.name, tau.tex, 2 * Pi / sqrt(squared.sym), true, Dimension::time(), std::nullopt});
-  ctx.m.conditions.push_back({squared.sym, 0, ">=", "the rate is real", "no real rate keeps this motion steady", "steady motion"});
+  ctx.m.conditions.push_back(
+      {squared.sym, 0, ">=", "the rate is real", "no real rate keeps this motion steady", "steady motion"});
   ctx.m.steady = std::move(spec);
 }
 

@@ -54,7 +54,8 @@ std::string prose(const Step& st, Format f) {
   std::size_t from = 0, k = 0;
   // A spaced hyphen in prose is a dash (an en dash in LaTeX and HTML).
   auto dashed = [](std::string s, const std::string& dash) {
-    for (std::size_t at = s.find(" - "); at != std::string::npos; at = s.find(" - ", at + dash.size())) s.replace(at, 3, dash);
+    for (std::size_t at = s.find(" - "); at != std::string::npos; at = s.find(" - ", at + dash.size()))
+      s.replace(at, 3, dash);
     return s;
   };
   auto plain = [&](const std::string& s) {
@@ -65,7 +66,9 @@ std::string prose(const Step& st, Format f) {
   };
   for (std::size_t at; (at = st.text.find("{}", from)) != std::string::npos && k < st.math.size(); from = at + 2, ++k) {
     out += plain(st.text.substr(from, at - from));
-    out += f == Format::text ? to_text(st.math[k]) : f == Format::html ? html_math(inline_tex(to_latex(st.math[k]))) : "$" + inline_tex(to_latex(st.math[k])) + "$";
+    out += f == Format::text   ? to_text(st.math[k])
+           : f == Format::html ? html_math(inline_tex(to_latex(st.math[k])))
+                               : "$" + inline_tex(to_latex(st.math[k])) + "$";
   }
   return out + plain(st.text.substr(from));
 }
@@ -75,7 +78,8 @@ std::string note_text(const Step& st) { return st.note_squared ? "(" + st.note +
 std::string note_latex(const Step& st) {
   // The note is "decimal unit".
   const auto sp = st.note.find(' ');
-  const std::string v = sp == std::string::npos ? st.note : st.note.substr(0, sp) + "\\," + unit_latex(st.note.substr(sp + 1));
+  const std::string v =
+      sp == std::string::npos ? st.note : st.note.substr(0, sp) + "\\," + unit_latex(st.note.substr(sp + 1));
   return st.note_squared ? "\\left(" + v + "\\right)^{2}" : v;
 }
 
@@ -171,8 +175,10 @@ std::string generated_statement(const SheetProblem& p) {
   auto words = [](const std::string& text) {
     std::string out, word;
     auto flush = [&] {
-      if (word.find('_') != std::string::npos) out += "$" + default_tex(word) + "$";
-      else out += word;
+      if (word.find('_') != std::string::npos)
+        out += "$" + default_tex(word) + "$";
+      else
+        out += word;
       word.clear();
     };
     for (char c : text) {
@@ -192,8 +198,10 @@ std::string generated_statement(const SheetProblem& p) {
   std::vector<std::string> bodies;
   for (const auto& b : m.bodies) {
     std::string what = words(b.name);
-    if (b.has_mass && b.mass.is_zero()) what += " (no mass)";
-    else if (b.has_mass) what += " (mass " + term(b.mass) + ")";
+    if (b.has_mass && b.mass.is_zero())
+      what += " (no mass)";
+    else if (b.has_mass)
+      what += " (mass " + term(b.mass) + ")";
     bodies.push_back(what);
   }
   std::string out = (bodies.size() == 1 ? "A body, " : "Bodies ") + listed_in_words(bodies) + ". ";

@@ -19,7 +19,8 @@ namespace {
 
 std::string html_figure(const Step& st) {
   const HostedHtml* hosted = HostedHtml::current();
-  return "<figure>\n" + to_svg(*st.figure, hosted ? hosted->ids() + "-" : "") + "<figcaption>" + html_escape(st.text) + "</figcaption>\n</figure>\n";
+  return "<figure>\n" + to_svg(*st.figure, hosted ? hosted->ids() + "-" : "") + "<figcaption>" + html_escape(st.text) +
+         "</figcaption>\n</figure>\n";
 }
 
 // A statement's text for HTML: its $math$ for KaTeX, the rest escaped.
@@ -71,7 +72,8 @@ std::string html_body(const Derivation& d, bool full, const std::string& title, 
     if (in_list && !listed) out += "</ul>\n";
     if (!in_list && listed) out += "<ul>\n";
     if (in_table && !table) out += "</table>\n";
-    if (!in_table && table) out += "<table class=\"parameters\">\n<tr><th>Parameter</th><th>Value</th><th>Unit</th></tr>\n";
+    if (!in_table && table)
+      out += "<table class=\"parameters\">\n<tr><th>Parameter</th><th>Value</th><th>Unit</th></tr>\n";
     in_list = listed;
     in_table = table;
     switch (st.kind) {
@@ -79,8 +81,8 @@ std::string html_body(const Derivation& d, bool full, const std::string& title, 
       case Step::Kind::text: out += "<p>" + prose(st, Format::html) + "</p>\n"; break;
       case Step::Kind::bullet: out += "<li>" + prose(st, Format::html) + "</li>\n"; break;
       case Step::Kind::given:
-        out += "<tr><td>" + html_math(to_latex(st.lhs)) + "</td><td class=\"number\">" + html_escape(st.number) + "</td><td>" +
-               (st.note.empty() ? "" : html_math(unit_latex(st.note))) + "</td></tr>\n";
+        out += "<tr><td>" + html_math(to_latex(st.lhs)) + "</td><td class=\"number\">" + html_escape(st.number) +
+               "</td><td>" + (st.note.empty() ? "" : html_math(unit_latex(st.note))) + "</td></tr>\n";
         break;
       case Step::Kind::equation: out += html_equation(st); break;
       case Step::Kind::figure: out += html_figure(st); break;
@@ -131,7 +133,8 @@ class HtmlWriter final : public Writer {
       for (const auto& a : d.answers) {
         if (a.closed_form) {
           const std::string value =
-              a.value ? " = " + a.value->decimal + (a.value->unit.empty() ? "" : "\\," + unit_latex(a.value->unit)) : "";
+              a.value ? " = " + a.value->decimal + (a.value->unit.empty() ? "" : "\\," + unit_latex(a.value->unit))
+                      : "";
           const std::string eq = displayed(to_latex(a.symbol), "=", to_latex(*a.closed_form), value, 58);
           out += "<div class=\"eq\">" + html_math(eq, true) + "</div>\n";
         } else if (a.general) {
@@ -148,10 +151,15 @@ class HtmlWriter final : public Writer {
       for (const auto& a : d.answers) tex[a.name] = a.tex;
       out += "<table class=\"parameters\">\n<tr>";
       for (const auto& h : variant_head(e))
-        out += "<th>" + (h == "#" ? std::string("#") : tex.count(h) && !tex[h].empty() ? html_math(tex[h]) : html_escape(h)) + "</th>";
+        out += "<th>" +
+               (h == "#"                          ? std::string("#")
+                : tex.count(h) && !tex[h].empty() ? html_math(tex[h])
+                                                  : html_escape(h)) +
+               "</th>";
       out += "</tr>\n";
       auto cell = [](const Quantity& q) {
-        return "<td class=\"number\">" + html_math(q.number + (q.unit.empty() ? "" : "\\," + unit_latex(q.unit))) + "</td>";
+        return "<td class=\"number\">" + html_math(q.number + (q.unit.empty() ? "" : "\\," + unit_latex(q.unit))) +
+               "</td>";
       };
       for (const auto& v : e.variants) {
         out += "<tr><td>" + std::to_string(v.index) + "</td>";
@@ -167,7 +175,8 @@ class HtmlWriter final : public Writer {
   std::string sheet(const std::vector<SheetEntry>& entries, bool figures) const override {
     std::string out = "<h1>Problems</h1>\n";
     for (const auto& p : sheet_problems(entries))
-      out += "<h2>Problem " + std::to_string(p.number) + ": " + html_escape(p.title) + "</h2>\n" + html_problem(p, figures);
+      out += "<h2>Problem " + std::to_string(p.number) + ": " + html_escape(p.title) + "</h2>\n" +
+             html_problem(p, figures);
     return html_page("Problems", out);
   }
 };
@@ -184,15 +193,15 @@ std::string sheet_problem_html(const SheetEntry& e, bool figures) {
 std::string notebook_html(const Derivation& d, const Model& m, const std::string& id, NotebookView view) {
   const HostedHtml hosted(id);
   writers::Ordered order({&d});
-  std::string out = "<div class=\"tackle\" id=\"" + id + "\">\n<style>\n#" + id +
-                    "{line-height:1.45}\n#" + id + " details>summary{cursor:pointer;font-weight:600;margin:.6em 0}\n" +
-                    content_style("#" + id) + "</style>\n";
+  std::string out = "<div class=\"tackle\" id=\"" + id + "\">\n<style>\n#" + id + "{line-height:1.45}\n#" + id +
+                    " details>summary{cursor:pointer;font-weight:600;margin:.6em 0}\n" + content_style("#" + id) +
+                    "</style>\n";
   if (view == NotebookView::problem) {
     out += "<h3>" + html_escape(heading(d)) + "</h3>\n" + sheet_problem_html(SheetEntry{&d, &m, {}});
     const std::vector<Step> results = result_steps(d);
     for (const auto& st : results) out += html_equation(st);
-    out += "<details>\n<summary>Derivation: the free body diagrams and equations</summary>\n" + html_body(d, true, "", 3) +
-           "</details>\n";
+    out += "<details>\n<summary>Derivation: the free body diagrams and equations</summary>\n" +
+           html_body(d, true, "", 3) + "</details>\n";
   } else {
     out += html_body(d, view == NotebookView::derivation, heading(d), 3);
   }

@@ -41,8 +41,11 @@ nlohmann::ordered_json range_json(const ParameterRange& r) {
     x["strict"] = strict;
     return x;
   };
-  return J{{"parameter", to_text(r.parameter)}, {"low", side(r.low, r.low_strict)}, {"high", side(r.high, r.high_strict)},
-           {"given", r.given ? number_json(*r.given) : J(nullptr)}, {"empty", r.empty}};
+  return J{{"parameter", to_text(r.parameter)},
+           {"low", side(r.low, r.low_strict)},
+           {"high", side(r.high, r.high_strict)},
+           {"given", r.given ? number_json(*r.given) : J(nullptr)},
+           {"empty", r.empty}};
 }
 
 // Motion in time for the JSON: the equations of motion, the response, the quantities and the
@@ -93,14 +96,19 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
     }
   }
   if (mo.response) {
-    static const char* const regimes[] = {"undamped", "underdamped", "critically_damped", "overdamped", "free_particle",
-                                          "damped_particle"};
+    static const char* const regimes[] = {"undamped",   "underdamped",   "critically_damped",
+                                          "overdamped", "free_particle", "damped_particle"};
     const Response& r = *mo.response;
-    J resp{{"regime", regimes[static_cast<int>(r.regime)]}, {"coordinate", expr(r.q)}, {"rate", expr(r.rate)},
-           {"definitions", J::array()}, {"assumptions", J::array()}, {"verified", r.verified}};
+    J resp{{"regime", regimes[static_cast<int>(r.regime)]},
+           {"coordinate", expr(r.q)},
+           {"rate", expr(r.rate)},
+           {"definitions", J::array()},
+           {"assumptions", J::array()},
+           {"verified", r.verified}};
     for (const auto& a : r.assumptions)
       resp["assumptions"].push_back(to_text(a.lhs) + " " + a.op + " " + to_text(a.rhs) + " (" + a.why + ")");
-    for (const auto& [sym, def] : r.definitions) resp["definitions"].push_back({{"name", to_text(sym)}, {"definition", expr(def)}});
+    for (const auto& [sym, def] : r.definitions)
+      resp["definitions"].push_back({{"name", to_text(sym)}, {"definition", expr(def)}});
     j["response"] = resp;
     if (!mo.direction_assumed_by.empty()) {
       // The interval on which the response holds: while the rate keeps its sign.
@@ -122,7 +130,8 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
     if (!en.numeric_only && en.not_possible.empty()) e["work"] = expr(en.work);
     e["rate_squared"] = en.rate_squared ? expr(*en.rate_squared) : J(nullptr);
     e["rate_squared_value"] = en.rate_squared_number ? J(*en.rate_squared_number) : J(nullptr);
-    e["speed_value"] = en.rate_squared_number && *en.rate_squared_number >= 0 ? J(std::sqrt(*en.rate_squared_number)) : J(nullptr);
+    e["speed_value"] =
+        en.rate_squared_number && *en.rate_squared_number >= 0 ? J(std::sqrt(*en.rate_squared_number)) : J(nullptr);
     j["energy"] = e;
   }
   j["quantities"] = J::array();
@@ -146,11 +155,14 @@ nlohmann::ordered_json motion_json(const Motion& mo) {
     x["first_failure_s"] = c.first_failure_s ? J(*c.first_failure_s) : J(nullptr);
     if (c.steady_of_t) {
       J st{{"in_time", to_text(*c.steady_of_t) + " " + op + " 0"}, {"offset", to_text(*c.steady_offset)}};
-      st["amplitude_condition"] = c.steady_amplitude_condition ? J(to_text(*c.steady_amplitude_condition) + " >= 0") : J(nullptr);
+      st["amplitude_condition"] =
+          c.steady_amplitude_condition ? J(to_text(*c.steady_amplitude_condition) + " >= 0") : J(nullptr);
       st["holds"] = c.steady_holds ? J(*c.steady_holds) : J(nullptr);
       st["band"] = J(nullptr);
       if (c.band)
-        st["band"] = {{"variable", to_text(c.band->variable)}, {"low", to_text(c.band->low)}, {"high", to_text(c.band->high)},
+        st["band"] = {{"variable", to_text(c.band->variable)},
+                      {"low", to_text(c.band->low)},
+                      {"high", to_text(c.band->high)},
                       {"fails_between", c.band->fails_between}};
       x["steady_state"] = st;
     }
@@ -178,7 +190,8 @@ nlohmann::ordered_json json_object(const Derivation& d, bool full) {
     } else {
       x["value"] = nullptr;
     }
-    if (p.stated) x["stated"] = {{"value", p.stated->approx}, {"exact", to_text(p.stated->exact)}, {"unit", p.stated->unit}};
+    if (p.stated)
+      x["stated"] = {{"value", p.stated->approx}, {"exact", to_text(p.stated->exact)}, {"unit", p.stated->unit}};
     if (p.definition) {
       x["definition"] = to_text(*p.definition);
       x["definition_latex"] = to_latex(*p.definition);
@@ -209,8 +222,9 @@ nlohmann::ordered_json json_object(const Derivation& d, bool full) {
   }
   j["combinations"] = nlohmann::ordered_json::array();
   for (const auto& c : d.combinations) {
-    nlohmann::ordered_json x{{"expression", to_text(c.combination)}, {"closed_form", to_text(c.value)},
-                     {"latex", to_latex(c.combination) + " = " + to_latex(c.value)}};
+    nlohmann::ordered_json x{{"expression", to_text(c.combination)},
+                             {"closed_form", to_text(c.value)},
+                             {"latex", to_latex(c.combination) + " = " + to_latex(c.value)}};
     if (c.number) {
       x["value"] = c.number->approx;
       x["unit"] = c.number->unit;
@@ -226,10 +240,10 @@ nlohmann::ordered_json json_object(const Derivation& d, bool full) {
   j["conditions"] = nlohmann::ordered_json::array();
   for (const auto& c : d.conditions) {
     nlohmann::ordered_json x{{"source", c.source},
-                     {"inequality", to_text(c.lhs) + " " + c.op + " " + to_text(c.rhs)},
-                     {"simplified", to_text(c.simplified) + " " + c.op + " 0"},
-                     {"meaning", c.meaning},
-                     {"otherwise", c.otherwise}};
+                             {"inequality", to_text(c.lhs) + " " + c.op + " " + to_text(c.rhs)},
+                             {"simplified", to_text(c.simplified) + " " + c.op + " 0"},
+                             {"meaning", c.meaning},
+                             {"otherwise", c.otherwise}};
     x["holds"] = c.holds ? nlohmann::ordered_json(*c.holds) : nlohmann::ordered_json(nullptr);
     x["always"] = c.always ? nlohmann::ordered_json(*c.always) : nlohmann::ordered_json(nullptr);
     x["solved"] = nlohmann::ordered_json::array();
@@ -255,17 +269,30 @@ nlohmann::ordered_json json_object(const Derivation& d, bool full) {
     // Connections decided at the numbers: sticking, or slipping where sticking cannot hold.
     auto& regimes = j["regimes"] = nlohmann::ordered_json::array();
     for (const auto& c : d.regimes) {
-      nlohmann::ordered_json r{{"connection", c.connection}, {"tried", c.first}, {"chosen", c.chosen}, {"failed", c.failed},
-                                 {"decided", !c.undecided}};
+      nlohmann::ordered_json r{{"connection", c.connection},
+                               {"tried", c.first},
+                               {"chosen", c.chosen},
+                               {"failed", c.failed},
+                               {"decided", !c.undecided}};
       auto& bounds = r["holds_while"] = nlohmann::ordered_json::array();
-      auto text_or_null = [](const std::string& t) { return t.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(t); };
+      auto text_or_null = [](const std::string& t) {
+        return t.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(t);
+      };
       for (const auto& b : c.holds_while)
-        bounds.push_back({{"meaning", b.meaning}, {"parameter", to_text(b.parameter)}, {"op", b.op}, {"bound", to_text(b.bound)},
-                          {"bound_value", text_or_null(b.value)}, {"tightest", b.tightest}});
+        bounds.push_back({{"meaning", b.meaning},
+                          {"parameter", to_text(b.parameter)},
+                          {"op", b.op},
+                          {"bound", to_text(b.bound)},
+                          {"bound_value", text_or_null(b.value)},
+                          {"tightest", b.tightest}});
       if (c.friction) {
         const auto& f = *c.friction;
-        r["friction"] = {{"on", f.body}, {"unknown", to_text(f.unknown)}, {"closed_form", to_text(f.value)}, {"value", text_or_null(f.value_number)},
-                         {"limit", f.limit.is_zero() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(to_text(f.limit_value))},
+        r["friction"] = {{"on", f.body},
+                         {"unknown", to_text(f.unknown)},
+                         {"closed_form", to_text(f.value)},
+                         {"value", text_or_null(f.value_number)},
+                         {"limit", f.limit.is_zero() ? nlohmann::ordered_json(nullptr)
+                                                     : nlohmann::ordered_json(to_text(f.limit_value))},
                          {"limit_value", text_or_null(f.limit_number)}};
       } else {
         r["friction"] = nullptr;
@@ -278,11 +305,11 @@ nlohmann::ordered_json json_object(const Derivation& d, bool full) {
     j["equations"] = nlohmann::ordered_json::array();
     for (const auto& eq : d.equations) {
       nlohmann::ordered_json e{{"label", eq.label},
-                       {"kind", kind_name(eq.kind)},
-                       {"lhs", to_text(eq.lhs)},
-                       {"rhs", to_text(eq.rhs)},
-                       {"latex", to_latex(eq.lhs) + " = " + to_latex(eq.rhs)},
-                       {"sources", eq.sources}};
+                               {"kind", kind_name(eq.kind)},
+                               {"lhs", to_text(eq.lhs)},
+                               {"rhs", to_text(eq.rhs)},
+                               {"latex", to_latex(eq.lhs) + " = " + to_latex(eq.rhs)},
+                               {"sources", eq.sources}};
       j["equations"].push_back(e);
     }
     // The unknowns the equations are solved for, in the solver's order (the answers asked
@@ -298,8 +325,12 @@ nlohmann::ordered_json json_object(const Derivation& d, bool full) {
   }
   if (full) {
     for (const auto& eq : d.impact_equations)
-      j["equations"].push_back({{"label", eq.label}, {"kind", kind_name(eq.kind)}, {"lhs", to_text(eq.lhs)}, {"rhs", to_text(eq.rhs)},
-                                {"latex", to_latex(eq.lhs) + " = " + to_latex(eq.rhs)}, {"sources", eq.sources}});
+      j["equations"].push_back({{"label", eq.label},
+                                {"kind", kind_name(eq.kind)},
+                                {"lhs", to_text(eq.lhs)},
+                                {"rhs", to_text(eq.rhs)},
+                                {"latex", to_latex(eq.lhs) + " = " + to_latex(eq.rhs)},
+                                {"sources", eq.sources}});
   }
   return j;
 }
@@ -355,7 +386,8 @@ class JsonWriter final : public Writer {
         // Numbers as JSON numbers, like the answers above; `decimal` as printed in the key.
         for (const auto& q : v.parameters)
           x["parameters"][q.name] = {{"value", q.value}, {"decimal", q.number}, {"unit", q.unit}};
-        for (const auto& q : v.answers) x["answers"][q.name] = {{"value", q.value}, {"decimal", q.number}, {"unit", q.unit}};
+        for (const auto& q : v.answers)
+          x["answers"][q.name] = {{"value", q.value}, {"decimal", q.number}, {"unit", q.unit}};
         p["variants"].push_back(x);
       }
       j["problems"].push_back(p);

@@ -36,12 +36,13 @@ std::string latex_line(const Step& st) {
   // below the equation, past the left margin.
   const std::string label = prose(st, Format::latex);
   const std::string tag =
-      st.text.empty()          ? ""
+      st.text.empty()        ? ""
       : st.text.size() <= 40 ? " \\tag*{" + label + "}"
                              : " \\tag*{\\begin{varwidth}[t]{0.5\\linewidth}\\raggedleft " + label + "\\end{varwidth}}";
   // A line too long for the page is broken after the relation and at the sum's + and -, the
   // rest indented, as the HTML breaks it (a broken result is not boxed: a box cannot span lines).
-  const auto lines = displayed_lines(lhs, rel, rhs, note, std::max(30.0, 62.0 - 0.6 * static_cast<double>(st.text.size())));
+  const auto lines =
+      displayed_lines(lhs, rel, rhs, note, std::max(30.0, 62.0 - 0.6 * static_cast<double>(st.text.size())));
   if (lines.size() > 1) return join(lines, " \\\\\n  ") + tag;
   const std::string body = st.boxed ? "&\\boxed{" + lhs + " " + rel + " " + rhs + "}" : lhs + " &" + rel + " " + rhs;
   return body + note + tag;
@@ -50,7 +51,8 @@ std::string latex_line(const Step& st) {
 // Equations one after another, in one align* block.
 std::string latex_equations(const std::vector<const Step*>& steps) {
   std::string out = "\\begin{align*}\n";
-  for (std::size_t i = 0; i < steps.size(); ++i) out += "  " + latex_line(*steps[i]) + (i + 1 < steps.size() ? " \\\\\n" : "\n");
+  for (std::size_t i = 0; i < steps.size(); ++i)
+    out += "  " + latex_line(*steps[i]) + (i + 1 < steps.size() ? " \\\\\n" : "\n");
   return out + "\\end{align*}\n";
 }
 
@@ -74,10 +76,12 @@ std::string latex_body(const Derivation& d, bool full, const std::string& title)
     };
     auto flush_given = [&] {
       if (given.empty()) return;
-      out += "\\begin{center}\n\\begin{tabular}{lrl}\n\\hline\n"
-             "Parameter & Value & Unit \\\\\n\\hline\n";
+      out +=
+          "\\begin{center}\n\\begin{tabular}{lrl}\n\\hline\n"
+          "Parameter & Value & Unit \\\\\n\\hline\n";
       for (const Step* g : given)
-        out += "$" + to_latex(g->lhs) + "$ & \\num{" + g->number + "} & " + (g->note.empty() ? "" : "$" + unit_latex(g->note) + "$") + " \\\\\n";
+        out += "$" + to_latex(g->lhs) + "$ & \\num{" + g->number + "} & " +
+               (g->note.empty() ? "" : "$" + unit_latex(g->note) + "$") + " \\\\\n";
       out += "\\hline\n\\end{tabular}\n\\end{center}\n";
       given.clear();
     };
@@ -106,8 +110,10 @@ std::string latex_body(const Derivation& d, bool full, const std::string& title)
     flush_given();
     if (in_list) out += "\\end{itemize}\n";
     if (d.sweep_plot)
-      out += "\\subsection*{Sweep}\n\\begin{center}\n\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!}{%\n" +
-             sweep_pgfplots(*d.sweep_plot) + "}\n\\end{center}\n";
+      out +=
+          "\\subsection*{Sweep}\n\\begin{center}\n\\resizebox{\\ifdim\\width>\\linewidth\\linewidth\\else\\width\\fi}{!"
+          "}{%\n" +
+          sweep_pgfplots(*d.sweep_plot) + "}\n\\end{center}\n";
     if (d.motion_plot) {
       out += "\\subsection*{Motion, integrated numerically}\n";
       for (const auto& e : d.motion_events) out += tex_escape(e) + "\n\n";
@@ -148,8 +154,9 @@ class LatexWriter final : public Writer {
   }
 
   std::string key(const std::vector<KeyEntry>& entries) const override {
-    std::string out = "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{lmodern}\n\\usepackage{amsmath}\n"
-                      "\\usepackage[margin=2cm]{geometry}\n\\begin{document}\n\\section*{Answer key}\n";
+    std::string out =
+        "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{lmodern}\n\\usepackage{amsmath}\n"
+        "\\usepackage[margin=2cm]{geometry}\n\\begin{document}\n\\section*{Answer key}\n";
     for (const auto& e : entries) {
       const Derivation& d = *e.derivation;
       std::vector<std::string> asked;
@@ -158,7 +165,8 @@ class LatexWriter final : public Writer {
       for (const auto& a : d.answers) {
         if (a.closed_form) {
           const std::string value =
-              a.value ? " = " + a.value->decimal + (a.value->unit.empty() ? "" : "\\," + unit_latex(a.value->unit)) : "";
+              a.value ? " = " + a.value->decimal + (a.value->unit.empty() ? "" : "\\," + unit_latex(a.value->unit))
+                      : "";
           const auto lines = displayed_lines(to_latex(a.symbol), "=", to_latex(*a.closed_form), value, 62);
           if (lines.size() == 1)
             out += "\\begin{equation*}\n  " + lines[0] + "\n\\end{equation*}\n";
@@ -171,20 +179,26 @@ class LatexWriter final : public Writer {
       }
       if (e.variants.empty()) {
         // Asked for, but nothing to draw from: said, not silently left out.
-        if (e.variants_asked) out += "\\par\\medskip\\noindent No variants: no parameter of this problem has a \\texttt{range}.\n";
+        if (e.variants_asked)
+          out += "\\par\\medskip\\noindent No variants: no parameter of this problem has a \\texttt{range}.\n";
         continue;
       }
       // A table: the drawn parameters, then the answers, each name typeset as in the
       // derivation ($\\ddot{x}_{A}$, not ddot(x_A)).
       const std::vector<std::string> head = variant_head(e);
-      auto tex_cell = [](const Quantity& q) { return "$" + q.number + (q.unit.empty() ? "" : "\\," + unit_latex(q.unit)) + "$"; };
-      out += "\\par\\medskip\\noindent Variants:\\par\\smallskip\\noindent\n\\begin{tabular}{" + std::string(head.size(), 'l') + "}\n";
+      auto tex_cell = [](const Quantity& q) {
+        return "$" + q.number + (q.unit.empty() ? "" : "\\," + unit_latex(q.unit)) + "$";
+      };
+      out += "\\par\\medskip\\noindent Variants:\\par\\smallskip\\noindent\n\\begin{tabular}{" +
+             std::string(head.size(), 'l') + "}\n";
       std::map<std::string, std::string> tex;
       for (const auto& p : d.parameters) tex[p.name] = p.tex;
       for (const auto& a : d.answers) tex[a.name] = a.tex;
       std::vector<std::string> cells;
       for (const auto& h : head)
-        cells.push_back(h == "#" ? "\\#" : tex.count(h) && !tex[h].empty() ? "$" + tex[h] + "$" : "\\texttt{" + tex_escape(h) + "}");
+        cells.push_back(h == "#"                          ? "\\#"
+                        : tex.count(h) && !tex[h].empty() ? "$" + tex[h] + "$"
+                                                          : "\\texttt{" + tex_escape(h) + "}");
       out += join(cells, " & ") + " \\\\\n\\hline\n";
       for (const auto& v : e.variants) {
         cells = {std::to_string(v.index)};
@@ -198,8 +212,9 @@ class LatexWriter final : public Writer {
   }
 
   std::string sheet(const std::vector<SheetEntry>& entries, bool figures) const override {
-    std::string out = "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{lmodern}\n\\usepackage{amsmath}\n"
-                      "\\usepackage[margin=2.5cm]{geometry}\n\\usepackage{tikz}\n\\begin{document}\n";
+    std::string out =
+        "\\documentclass[11pt]{article}\n\\usepackage[T1]{fontenc}\n\\usepackage{lmodern}\n\\usepackage{amsmath}\n"
+        "\\usepackage[margin=2.5cm]{geometry}\n\\usepackage{tikz}\n\\begin{document}\n";
     for (const auto& p : sheet_problems(entries)) {
       std::vector<std::string> asked;
       for (const auto& a : p.derivation->answers) asked.push_back("$" + a.tex + "$");

@@ -33,7 +33,8 @@ std::string markdown_document(const Derivation& d, bool full) {
     for (const auto& st : d.steps) {
       const bool listed = st.kind == Step::Kind::bullet, table = st.kind == Step::Kind::given;
       if ((in_list && !listed) || (in_table && !table)) out += "\n";
-      if (table && !in_table) out += (in_list ? "\n" : "") + std::string("| Parameter | Value | Unit |\n|---|--:|---|\n");
+      if (table && !in_table)
+        out += (in_list ? "\n" : "") + std::string("| Parameter | Value | Unit |\n|---|--:|---|\n");
       in_list = listed;
       in_table = table;
       switch (st.kind) {
@@ -41,7 +42,8 @@ std::string markdown_document(const Derivation& d, bool full) {
         case Step::Kind::text: out += prose(st, Format::markdown) + "\n\n"; break;
         case Step::Kind::bullet: out += "- " + prose(st, Format::markdown) + "\n"; break;
         case Step::Kind::given:
-          out += "| $" + to_latex(st.lhs) + "$ | " + st.number + " | " + (st.note.empty() ? "" : "$" + unit_latex(st.note) + "$") + " |\n";
+          out += "| $" + to_latex(st.lhs) + "$ | " + st.number + " | " +
+                 (st.note.empty() ? "" : "$" + unit_latex(st.note) + "$") + " |\n";
           break;
         case Step::Kind::equation: out += eq(st); break;
         case Step::Kind::figure: out += markdown_figure(st); break;

@@ -33,7 +33,8 @@ void answers_text(std::ostream& out, const Derivation& d) {
   if (!d.conflicts.empty()) out << "inconsistent: " << join(d.conflicts, ", ") << "\n";
   for (const auto& c : d.conditions)
     if (c.holds && !*c.holds)
-      out << "warning: " << c.source << ": " << c.otherwise << " (" << to_text(c.simplified) << " " << c.op << " 0 fails)\n";
+      out << "warning: " << c.source << ": " << c.otherwise << " (" << to_text(c.simplified) << " " << c.op
+          << " 0 fails)\n";
 }
 
 void derivation_text(std::ostream& out, const Derivation& d) {
@@ -62,8 +63,10 @@ void derivation_text(std::ostream& out, const Derivation& d) {
 // One of the two, whole.
 std::string text_of(const Derivation& d, bool full) {
   std::ostringstream out;
-  if (full) derivation_text(out, d);
-  else answers_text(out, d);
+  if (full)
+    derivation_text(out, d);
+  else
+    answers_text(out, d);
   return std::move(out).str();
 }
 
@@ -77,8 +80,10 @@ class TextWriter final : public Writer {
     return std::move(out).str();
   }
   void derivation_to(std::ostream& out, const Derivation& d, bool full) const override {
-    if (full) derivation_text(out, d);
-    else answers_text(out, d);
+    if (full)
+      derivation_text(out, d);
+    else
+      answers_text(out, d);
   }
   void phases_to(std::ostream& out, const std::vector<Derivation>& ds, bool full) const override {
     for (std::size_t i = 0; i < ds.size(); ++i) {
@@ -94,25 +99,26 @@ class TextWriter final : public Writer {
   std::string isolations(const Model& m, const std::vector<Isolation>& found) const override {
     const SymbolTable& table = *m.symbols;
     auto shown = [&](const GiNaC::ex& e) { return to_text(fold_definitions(e, table)); };
-  std::string out;
-  for (const auto& r : found) {
-    const std::string name = to_text(r.unknown);
-    if (!r.equation) {
-      if (r.impossible)
-        out += name + ": no single balance equation of one body contains it alone (no direction, point or axis "
-                      "does); it takes a system of equations.\n";
-      else
-        out += name + ": none of the " + std::to_string(r.tried) + " balance equations tried contains it alone.\n";
-      continue;
+    std::string out;
+    for (const auto& r : found) {
+      const std::string name = to_text(r.unknown);
+      if (!r.equation) {
+        if (r.impossible)
+          out += name +
+                 ": no single balance equation of one body contains it alone (no direction, point or axis "
+                 "does); it takes a system of equations.\n";
+        else
+          out += name + ": none of the " + std::to_string(r.tried) + " balance equations tried contains it alone.\n";
+        continue;
+      }
+      out += name + ": " + r.equation->label + " contains it alone.\n";
+      out += "    " + shown(r.equation->lhs) + " = " + shown(r.equation->rhs) + "\n";
+      out += "    " + name + " = " + shown(*r.value);
+      if (auto v = evaluate(*r.value, table, table.find(r.unknown)->dimension))
+        out += "  = " + v->decimal + (v->unit.empty() ? "" : " " + v->unit);
+      out += "\n";
     }
-    out += name + ": " + r.equation->label + " contains it alone.\n";
-    out += "    " + shown(r.equation->lhs) + " = " + shown(r.equation->rhs) + "\n";
-    out += "    " + name + " = " + shown(*r.value);
-    if (auto v = evaluate(*r.value, table, table.find(r.unknown)->dimension))
-      out += "  = " + v->decimal + (v->unit.empty() ? "" : " " + v->unit);
-    out += "\n";
-  }
-  return out;
+    return out;
   }
 };
 

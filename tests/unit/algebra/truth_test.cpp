@@ -23,7 +23,8 @@ numeric at(const ex& e, const Sample& p, const std::vector<bool>& angles) {
 
 }  // namespace
 
-TEST_CASE("Program: an angle at t = tan(angle/2) has an exact sine and cosine, and so do its whole multiples", "[algebra]") {
+TEST_CASE("Program: an angle at t = tan(angle/2) has an exact sine and cosine, and so do its whole multiples",
+          "[algebra]") {
   // t = 1/2: cos = (1 - 1/4)/(1 + 1/4) = 3/5, sin = 1/(5/4) = 4/5. phi at t = 1/3: cos =
   // (8/9)/(10/9) = 4/5, sin = (2/3)/(10/9) = 3/5.
   const Sample p{{theta, numeric(1, 2)}, {phi, numeric(1, 3)}};
@@ -83,8 +84,8 @@ TEST_CASE("Program: sin and cos swapped in doubles, as the swapped expression's 
   CHECK(swapped(cos(theta)) == Approx(0.8));
   CHECK(swapped(2 * sin(theta) + cos(phi)) == Approx(2 * 0.6 + 0.6));
   CHECK(swapped(sin(theta - phi)) == Approx(0.6 * 0.8 + 0.8 * 0.6));  // cos(theta - phi)
-  CHECK(swapped(cos(theta + Pi / 2)) == Approx(0.6));                  // sin(theta + pi/2)
-  CHECK(swapped(sin(theta / 2)) == Approx(2 / std::sqrt(5.0)));        // cos of half of it
+  CHECK(swapped(cos(theta + Pi / 2)) == Approx(0.6));                 // sin(theta + pi/2)
+  CHECK(swapped(sin(theta / 2)) == Approx(2 / std::sqrt(5.0)));       // cos of half of it
   CHECK(swapped(tan(theta)) == Approx(0.8 / 0.6));
   CHECK(swapped(sin(cos(theta))) == Approx(std::cos(std::sin(2 * std::atan(0.5)))));
 }

@@ -27,7 +27,8 @@ parameters:
   m_A: {value: 2, unit: kg}
   m_B: {value: 3, unit: kg}
   g: {value: 9.81, unit: m/s^2}
-  F: {value: )" + force + R"(, unit: N, positive: false}
+  F: {value: )" +
+         force + R"(, unit: N, positive: false}
   mu_s: {value: 0.3}
   mu_k: {value: 0.25}
   h: {value: 0.2, unit: m}
@@ -36,7 +37,8 @@ bodies:
   A: {mass: m_A, position: x_A, center_of_mass: [x_A, 3*h/2]}
   B: {mass: m_B, position: x_B, center_of_mass: [x_B, h/2]}
 loads:
-  - {on: )" + pulled + ", at: " + pulled + R"(, force: [F, 0]}
+  - {on: )" +
+         pulled + ", at: " + pulled + R"(, force: [F, 0]}
 connections:
   - {type: friction_between, body: A, other: B, at: A, normal: [0, 1], tangent: [1, 0], mu_s: mu_s, mu_k: mu_k}
   - {type: roller, body: B, at: B, normal: [0, 1]}
@@ -150,20 +152,24 @@ TEST_CASE("Regimes: derive says which regime and why, with the numbers", "[regim
   const auto a = test::run_text(stacked("20"));
   const std::string text = write(explain(*a), Format::text, true);
   CHECK(text.find("Sticking or slipping: sliding between at A\n") != std::string::npos);
-  CHECK(text.find("    F <= g*mu_s*(m_A + m_B)  = 14.715 N    [the largest F for which they move together]\n") != std::string::npos);
-  CHECK(text.find("    F_A = F*m_A/(m_A + m_B)  = 8 N    [the friction on A]\n") != std::string::npos);
-  CHECK(text.find("    mu_s >= F/(g*m_A + g*m_B)  = 0.407747    [the least mu_s that would hold them together]\n") != std::string::npos);
-  CHECK(text.find("At the given numbers they do not (friction can hold the bodies together (F <= mu N) fails): the bodies slip on "
-                  "each other, and the contact is derived here sliding (sliding_between), with kinetic friction against the slip.") !=
+  CHECK(text.find("    F <= g*mu_s*(m_A + m_B)  = 14.715 N    [the largest F for which they move together]\n") !=
         std::string::npos);
+  CHECK(text.find("    F_A = F*m_A/(m_A + m_B)  = 8 N    [the friction on A]\n") != std::string::npos);
+  CHECK(text.find("    mu_s >= F/(g*m_A + g*m_B)  = 0.407747    [the least mu_s that would hold them together]\n") !=
+        std::string::npos);
+  CHECK(text.find("At the given numbers they do not (friction can hold the bodies together (F <= mu N) fails): the "
+                  "bodies slip on "
+                  "each other, and the contact is derived here sliding (sliding_between), with kinetic friction "
+                  "against the slip.") != std::string::npos);
 }
 
-TEST_CASE("Regimes: a load growing in time is derived sticking, and simulate stops where A starts to slip", "[regimes]") {
+TEST_CASE("Regimes: a load growing in time is derived sticking, and simulate stops where A starts to slip",
+          "[regimes]") {
   // F = c t with c = 10 N/s: sticking holds while c t <= 14.715 N, until t = 1.4715 s; the
   // conditions have no number at the given numbers (they depend on t).
   std::string text = stacked("0");
-  text.replace(text.find("  F: {value: 0, unit: N, positive: false}"), std::string("  F: {value: 0, unit: N, positive: false}").size(),
-               "  c: {value: 10, unit: N/s}");
+  text.replace(text.find("  F: {value: 0, unit: N, positive: false}"),
+               std::string("  F: {value: 0, unit: N, positive: false}").size(), "  c: {value: 10, unit: N/s}");
   text.replace(text.find("force: [F, 0]"), std::string("force: [F, 0]").size(), "force: [c*t, 0]");
   text += "motion:\n  initial: {x_A: 0, dot(x_A): 0, x_B: 0}\n  until: 3\n";
   const auto a = test::run_text(text);
@@ -180,7 +186,8 @@ TEST_CASE("Regimes: a load growing in time is derived sticking, and simulate sto
 TEST_CASE("Regimes: slipping from relative rest, simulate runs on (the slip starts, it is no event)", "[regimes]") {
   // 20 N on B, both at rest: the slip speed dot(x_B) - dot(x_A) grows at 5.031667 - 2.4525 =
   // 2.579167 m/s^2 from 0; after 1 s, x_A = 2.4525/2 = 1.22625 m and x_B = 5.031667/2 = 2.515833 m.
-  const auto a = test::run_text(stacked("20", "B", "motion:\n  initial: {x_A: 0, dot(x_A): 0, x_B: 0, dot(x_B): 0}\n  until: 1\n"));
+  const auto a = test::run_text(
+      stacked("20", "B", "motion:\n  initial: {x_A: 0, dot(x_A): 0, x_B: 0, dot(x_B): 0}\n  until: 1\n"));
   const Simulation s = simulate(*a, SimulationSpec{}, Location{});
   CHECK(s.complete);
   CHECK(s.events.empty());
@@ -189,15 +196,18 @@ TEST_CASE("Regimes: slipping from relative rest, simulate runs on (the slip star
   CHECK(*s.table.y[1].back() == Approx(15.095 / 6).epsilon(1e-8));
 }
 
-TEST_CASE("Refused: a one-body contact at a point of another moving body names the two-body rule", "[regimes][errors]") {
+TEST_CASE("Refused: a one-body contact at a point of another moving body names the two-body rule",
+          "[regimes][errors]") {
   std::string text = stacked("20");
-  text.replace(text.find("  - {type: friction_between"), text.find("  - {type: roller") - text.find("  - {type: friction_between"),
+  text.replace(text.find("  - {type: friction_between"),
+               text.find("  - {type: roller") - text.find("  - {type: friction_between"),
                "  - {type: sliding, body: A, at: P, normal: [0, 1], sliding: [-1, 0], mu: mu_k}\n");
   text.replace(text.find("loads:"), 0, "points:\n  P: {on: B, offset: [0, h/2]}\n");
   CHECK(test::errors_of(text) ==
-        std::vector<std::string>{"t.yaml:21:34: 'at' of a 'sliding' connection is point 'P' of body 'B', which moves: this connection "
-                                 "holds 'A' against the ground, and the force on 'B' would be missing (expected a fixed point or a "
-                                 "point of 'A'; for two bodies: {type: sliding_between, body: A, other: B, ...})"});
+        std::vector<std::string>{
+            "t.yaml:21:34: 'at' of a 'sliding' connection is point 'P' of body 'B', which moves: this connection "
+            "holds 'A' against the ground, and the force on 'B' would be missing (expected a fixed point or a "
+            "point of 'A'; for two bodies: {type: sliding_between, body: A, other: B, ...})"});
 }
 
 TEST_CASE("Refused: a block whose moments cannot cancel (a push above its center, no angle)", "[regimes][errors]") {
@@ -217,13 +227,19 @@ loads:
 connections:
   - {type: roller, body: A, at: A, normal: [0, 1]}
 )");
-  CHECK(errors == std::vector<std::string>{
-                      "t.yaml:7:3: the balances cannot all hold: AMB A about its center of mass (z) reads 0 = a moment that is not "
-                      "zero (expected body 'A' does not turn (it has no angle), so the moments on it must cancel: a second contact, "
-                      "its forces through its center of mass, or an angle and a shape or inertia to turn with)"});
+  CHECK(
+      errors ==
+      std::vector<std::string>{
+          "t.yaml:7:3: the balances cannot all hold: AMB A about its center of mass (z) reads 0 = a moment that is not "
+          "zero (expected body 'A' does not turn (it has no angle), so the moments on it must cancel: a second "
+          "contact, "
+          "its forces through its center of mass, or an angle and a shape or inertia to turn with)"});
 }
 
-TEST_CASE("Particles: no balance of moments for a block without shape, size or angle, one for a bob, a pinned block, a suitcase", "[regimes]") {
+TEST_CASE(
+    "Particles: no balance of moments for a block without shape, size or angle, one for a bob, a pinned block, a "
+    "suitcase",
+    "[regimes]") {
   auto ambs = [](const Analysis& a) {
     std::vector<std::string> out;
     for (const auto& e : a.system.equations)

@@ -94,7 +94,8 @@ TEST_CASE("Check: a factor in the parameters is named, whichever way it is found
   CHECK(suitcase().check("N_A", "m*g*(1/2 - mu*h/l)*(l + h)/l").summary == "off by a factor of (h + l)/l");
   const auto three = suitcase().check("N_A", "m*g*(1/2 - mu*h/l)*(l + h)*mu/h");
   CHECK(three.verdict == Verdict::incorrect);
-  CHECK(std::none_of(three.findings.begin(), three.findings.end(), [](const Finding& f) { return f.code == "factor"; }));
+  CHECK(
+      std::none_of(three.findings.begin(), three.findings.end(), [](const Finding& f) { return f.code == "factor"; }));
 }
 
 TEST_CASE("Check: the suitcase's normal force without friction is correct only for mu = 0", "[check]") {
@@ -120,7 +121,8 @@ TEST_CASE("Check: dimensions, from the problem's own parameters", "[check]") {
   CHECK(r.summary == "the answer is dimensionally inconsistent: it adds an acceleration to a mass");
   r = board().check("T_HI", "m*a/d");
   CHECK(r.summary == "this is a stiffness (force per length); a force was expected");
-  CHECK(board().check("T_HI", "sqrt(m)*a").summary == "the answer is dimensionally inconsistent: it takes a fractional power of a mass");
+  CHECK(board().check("T_HI", "sqrt(m)*a").summary ==
+        "the answer is dimensionally inconsistent: it takes a fractional power of a mass");
   // Three dimensions in one sum, and two sums with different mixes: what is said does not
   // follow the order of the terms (which follows addresses, so changed from run to run).
   CHECK(board().check("T_HI", "m + a + b + d + e").summary ==
@@ -135,13 +137,15 @@ TEST_CASE("Check: invalid answers name what to fix", "[check][invalid]") {
   CHECK(board().check("T_HI", "M*a").summary ==
         "at column 1: unknown name 'M': did you mean 'm'? (names are case-sensitive; subscripts are written with _)");
   CHECK(board().check("T_HI", "T_HI*2").summary ==
-        "at column 1: T_HI is an unknown of this problem; write the answer in the given quantities (m, a, g, b, c, d, e, l)");
+        "at column 1: T_HI is an unknown of this problem; write the answer in the given quantities (m, a, g, b, c, d, "
+        "e, l)");
   const auto two_m = board().check("T_HI", "2 m");
   CHECK(two_m.summary == "the unit m is a length; a force was expected");
   CHECK(two_m.findings.back().message == "if you meant 2*m, write the * (2 m is read as a number with a unit)");
   CHECK(board().check("T_HI", "2 a m").summary == "at column 3: missing '*' before 'a'");
   CHECK(board().check("T_HI", "foo(m)").summary ==
-        "at column 1: unknown function 'foo' (known: sqrt, abs, sin, cos, tan, asin, acos, atan, sinh, cosh, exp, log, dot, ddot, unit, norm, cross, "
+        "at column 1: unknown function 'foo' (known: sqrt, abs, sin, cos, tan, asin, acos, atan, sinh, cosh, exp, log, "
+        "dot, ddot, unit, norm, cross, "
         "inner, perp1, perp2)");
   CHECK(board().check("T_HI", "O_z = m*a").summary == "this is an answer for O_z, but T_HI was asked for");
   CHECK(board().check("Q", "m").summary == "'Q' is not an unknown tackle can check for this problem (checkable: T_HI)");
@@ -152,7 +156,8 @@ TEST_CASE("Check: hostile inputs are invalid within the budget", "[check][invali
   const auto start = std::chrono::steady_clock::now();
   const std::string deep = std::string(10000, '(') + "m" + std::string(10000, ')');
   CHECK(board().check("T_HI", deep).summary == "the answer is too long (20001 characters; at most 1000)");
-  CHECK(board().check("T_HI", std::string(1 << 20, 'x')).summary == "the answer is too long (1048576 characters; at most 1000)");
+  CHECK(board().check("T_HI", std::string(1 << 20, 'x')).summary ==
+        "the answer is too long (1048576 characters; at most 1000)");
   const std::string nested = std::string(100, '(') + "m" + std::string(100, ')');
   CHECK(board().check("T_HI", nested).summary == "at column 33: expression is nested too deeply (at most 32 levels)");
   CHECK(board().check("T_HI", "9^(9^9)").summary == "at column 2: exponent is too large (at most 32)");
@@ -161,13 +166,20 @@ TEST_CASE("Check: hostile inputs are invalid within the budget", "[check][invali
   const auto tower = tackle::Checker(*tackle::test::run_text(tackle::test::read_example("sample-12.7-suitcase.yaml")))
                          .check("N_A", "m*g*(98355^ .3^2.3^5^355.32^ .355^ .2/mu- mu)^(h)");
   CHECK(tower.verdict == Verdict::undecided);
-  CHECK(tower.summary == "the answer could not be evaluated at the test values (a division by zero, a negative square "
-                         "root, or a number too large to work with?)");
+  CHECK(tower.summary ==
+        "the answer could not be evaluated at the test values (a division by zero, a negative square "
+        "root, or a number too large to work with?)");
   // Found by fuzzing: bytes that are not UTF-8 reached the JSON writer, which threw.
-  const auto latin1 = board().check("T_HI", "m\x91" "a");
+  const auto latin1 = board().check("T_HI",
+                                    "m\x91"
+                                    "a");
   CHECK(latin1.verdict == Verdict::invalid);
   CHECK(latin1.summary == "at column 2: the answer is not valid UTF-8 text");
-  CHECK(tackle::result_json(latin1, "m\x91" "a").find("m\xEF\xBF\xBD" "a") != std::string::npos);  // U+FFFD in the echo
+  CHECK(tackle::result_json(latin1,
+                            "m\x91"
+                            "a")
+            .find("m\xEF\xBF\xBD"
+                  "a") != std::string::npos);                                      // U+FFFD in the echo
   CHECK(board().check("T_HI", "(m+a+b+d+e)^32*l/d").verdict != Verdict::correct);  // bounded: no blow-up
   CHECK(board().check("T_HI", "sqrt(-1)*m*a*l/(2*d)").verdict == Verdict::undecided);
   for (const char* a : {"m/0", "1e99 N", "m^m^m^m^m^m^m", "[m, a]"}) {
@@ -213,7 +225,8 @@ TEST_CASE("Check: a correct answer that is not simplified is said so, and can be
   CHECK(r.verdict == Verdict::incorrect);
 }
 
-TEST_CASE("Check: an expression is settled once whatever its spelling, and the spelling's own note stays its own", "[check]") {
+TEST_CASE("Check: an expression is settled once whatever its spelling, and the spelling's own note stays its own",
+          "[check]") {
   const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/sample-12.8-sign-board.yaml", test::rules());
   const Checker checker(*a);
   // One expression once read (a*l*m/(2*d)), typed three ways: the first two short, the third
@@ -237,7 +250,8 @@ TEST_CASE("Check: an expression is settled once whatever its spelling, and the s
   const auto wrong_again = checker.check("T_HI", "2*m*a*l/(2*d)");
   CHECK(wrong.verdict == Verdict::incorrect);
   REQUIRE(wrong.findings.size() == wrong_again.findings.size());
-  for (std::size_t i = 0; i < wrong.findings.size(); ++i) CHECK(wrong.findings[i].message == wrong_again.findings[i].message);
+  for (std::size_t i = 0; i < wrong.findings.size(); ++i)
+    CHECK(wrong.findings[i].message == wrong_again.findings[i].message);
   CHECK(wrong.findings[0].message == "off by a factor of 2 (the answer is twice the correct answer)");
 }
 
@@ -280,7 +294,9 @@ namespace {
 // Every field of `ours` is a field of the platform's documented example `doc`, with the same
 // JSON type (numbers of either kind alike); the objects in arrays against the example's first.
 void same_shape(const nlohmann::json& ours, const nlohmann::json& doc, const std::string& path) {
-  auto kind = [](const nlohmann::json& j) { return j.is_number() ? std::string("number") : std::string(j.type_name()); };
+  auto kind = [](const nlohmann::json& j) {
+    return j.is_number() ? std::string("number") : std::string(j.type_name());
+  };
   INFO(path);
   REQUIRE(kind(ours) == kind(doc));
   if (ours.is_object())
@@ -306,7 +322,8 @@ BatchSummary grade(const std::string& lines, const GradeOptions& options, const 
 
 }  // namespace
 
-TEST_CASE("Grading: Gradescope's results.json, points per unknown, no top-level score unless asked", "[check][batch][platform]") {
+TEST_CASE("Grading: Gradescope's results.json, points per unknown, no top-level score unless asked",
+          "[check][batch][platform]") {
   GradeOptions options;
   options.points = 2;
   options.points_for["T_HI"] = 5;
@@ -344,7 +361,8 @@ TEST_CASE("Grading: feedback never names the correct value unless asked", "[chec
   CHECK(s.results.find("6.78") == std::string::npos);
 }
 
-TEST_CASE("Grading: PrairieLearn's results.json, where an answer that cannot be graded charges no attempt", "[check][batch][platform]") {
+TEST_CASE("Grading: PrairieLearn's results.json, where an answer that cannot be graded charges no attempt",
+          "[check][batch][platform]") {
   GradeOptions options;
   options.format = ResultsFormat::prairielearn;
   const std::string good =
@@ -356,7 +374,8 @@ TEST_CASE("Grading: PrairieLearn's results.json, where an answer that cannot be 
   CHECK(graded["score"] == Approx(0.5));
   CHECK(graded["tests"][1]["points"] == 0);
   CHECK(graded["tests"][1]["max_points"] == 1);
-  const auto bad = nlohmann::json::parse(grade(good + "{\"id\": \"c\", \"unknown\": \"T_HI\", \"answer\": \"m*a*\"}\n", options).results);
+  const auto bad = nlohmann::json::parse(
+      grade(good + "{\"id\": \"c\", \"unknown\": \"T_HI\", \"answer\": \"m*a*\"}\n", options).results);
   same_shape(bad, fixture("prairielearn-results.json"), "");
   CHECK(bad["gradable"] == false);
   CHECK_FALSE(bad.contains("score"));
@@ -365,12 +384,14 @@ TEST_CASE("Grading: PrairieLearn's results.json, where an answer that cannot be 
   CHECK(bad["message"] == "1 of 3 answers cannot be graded as typed: fix them and submit again");
 }
 
-TEST_CASE("Grading: PrairieLearn lists the first 100 answers that cannot be graded, then how many more", "[check][batch][platform]") {
+TEST_CASE("Grading: PrairieLearn lists the first 100 answers that cannot be graded, then how many more",
+          "[check][batch][platform]") {
   // The results file is written as the batch goes; only the first 100 format errors are kept.
   GradeOptions options;
   options.format = ResultsFormat::prairielearn;
   std::string lines;
-  for (int i = 1; i <= 150; ++i) lines += "{\"id\": \"s" + std::to_string(i) + "\", \"unknown\": \"T_HI\", \"answer\": \"m*a*\"}\n";
+  for (int i = 1; i <= 150; ++i)
+    lines += "{\"id\": \"s" + std::to_string(i) + "\", \"unknown\": \"T_HI\", \"answer\": \"m*a*\"}\n";
   const BatchSummary s = grade(lines, options);
   CHECK(s.invalid == 150);
   const auto j = nlohmann::json::parse(s.results);
@@ -383,7 +404,8 @@ TEST_CASE("Grading: PrairieLearn lists the first 100 answers that cannot be grad
   CHECK(j["message"] == "150 of 150 answers cannot be graded as typed: fix them and submit again");
 }
 
-TEST_CASE("Grading: a line longer than 1 MiB stops the batch at that line, a long line under it is invalid", "[check][batch][limits]") {
+TEST_CASE("Grading: a line longer than 1 MiB stops the batch at that line, a long line under it is invalid",
+          "[check][batch][limits]") {
   // Exactly 1 MiB (1048576 bytes) is read, and is an invalid answer (past the checker's bound).
   GradeOptions options;
   options.source = "batch.jsonl";
@@ -398,11 +420,13 @@ TEST_CASE("Grading: a line longer than 1 MiB stops the batch at that line, a lon
     FAIL("no error");
   } catch (const InputError& e) {
     CHECK(format(e.diagnostics().at(0)) ==
-          "batch.jsonl:3: the line is longer than 1 MiB (expected JSON Lines: one object with id, unknown and answer per line)");
+          "batch.jsonl:3: the line is longer than 1 MiB (expected JSON Lines: one object with id, unknown and answer "
+          "per line)");
   }
 }
 
-TEST_CASE("Grading: a batch whose output fails stops reading, and its results file is still whole JSON", "[check][batch]") {
+TEST_CASE("Grading: a batch whose output fails stops reading, and its results file is still whole JSON",
+          "[check][batch]") {
   std::istringstream in("{\"id\": \"a\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/(2*d)\"}\n");
   std::ostringstream out, results;
   out.setstate(std::ios::badbit);  // as a full disk leaves it
@@ -416,9 +440,11 @@ TEST_CASE("Grading: a batch whose output fails stops reading, and its results fi
 TEST_CASE("Check: a kinematic answer may use a given acceleration without its coordinate", "[check]") {
   const Checker& k = checker("sample-12.2-pulley-kinematics.yaml");
   CHECK(k.check("ddot(y_A)", "-ddot(y_B)/2").verdict == Verdict::correct);
-  CHECK(k.check("ddot(y_A)", "-2*ddot(y_B)").summary == "off by a factor of 4 (the answer is 4 times the correct answer)");
+  CHECK(k.check("ddot(y_A)", "-2*ddot(y_B)").summary ==
+        "off by a factor of 4 (the answer is 4 times the correct answer)");
   CHECK(k.check("ddot(y_A)", "ddot(y_A)").summary ==
-        "at column 1: ddot(y_A) is an unknown of this problem; write the answer in the given quantities (d, dot(y_B), ddot(y_B))");
+        "at column 1: ddot(y_A) is an unknown of this problem; write the answer in the given quantities (d, dot(y_B), "
+        "ddot(y_B))");
 }
 
 TEST_CASE("Grading: each student's own numbers, from --set or a line's params", "[check][batch][variants]") {
@@ -467,7 +493,8 @@ TEST_CASE("Check: answers as people type them: Unicode, degrees, roots, superscr
   CHECK(c.check("N_A", "m_A*g*\u221a(cos(\u03b8)\u00b2)").verdict == Verdict::correct);
   // The acceleration has either sign (m_A sin(theta) > m_B runs the other way): |a| is wrong,
   // and not "correct only when m_A = m_B" (it is right wherever a > 0).
-  CHECK(c.check("ddot(s)", "abs(g*(m_B - m_A*sin(theta))/(m_A + m_B))").summary == "the answer differs from the correct one");
+  CHECK(c.check("ddot(s)", "abs(g*(m_B - m_A*sin(theta))/(m_A + m_B))").summary ==
+        "the answer differs from the correct one");
   // 30 deg inside an expression is pi/6 (a number: the closed form is in theta).
   const CheckResult deg = c.check("N_A", "m_A*g*cos(30 deg)");
   CHECK(deg.echo_text == "g*m_A*sqrt(3)/2");
@@ -549,20 +576,26 @@ TEST_CASE("Check: an answer correct only on one side of an abs() kink is incorre
   CHECK(suitcase().check("N_A", "abs(" + n_a + ")").verdict == Verdict::correct);
   CHECK(suitcase().check("N_A", "-abs(" + n_a + ")").summary == "the sign is wrong");
   // Equal on both sides of the kink: (|x| + x)(|x| - x) = |x|^2 - x^2 = 0 for every x.
-  const CheckResult both = suitcase().check("N_A", n_a + " + m*g*(abs(mu - 1/10) + mu - 1/10)*(abs(mu - 1/10) - mu + 1/10)");
+  const CheckResult both =
+      suitcase().check("N_A", n_a + " + m*g*(abs(mu - 1/10) + mu - 1/10)*(abs(mu - 1/10) - mu + 1/10)");
   CHECK(both.verdict == Verdict::correct);
   CHECK(both.echo_text.find("abs(") != std::string::npos);
   // |l - h| = |h - l| whatever the signs: one kink, not two. Five arguments up to their sign
   // would be 32 combinations, more than are tried.
   CHECK(suitcase().check("N_A", n_a + " + m*g*(abs(l - h) - abs(h - l))/l").verdict == Verdict::correct);
-  const std::string three = " + m*g*(abs(mu - 1/3) - abs(1/3 - mu)) + m*g*(abs(l - h) - abs(h - l) + abs(l - 2*h) - abs(2*h - l))/l";
+  const std::string three =
+      " + m*g*(abs(mu - 1/3) - abs(1/3 - mu)) + m*g*(abs(l - h) - abs(h - l) + abs(l - 2*h) - abs(2*h - l))/l";
   CHECK(suitcase().check("N_A", n_a + three + " + m*g*(abs(l - 3*h) - abs(3*h - l))/l").verdict == Verdict::correct);
-  CHECK(suitcase().check("N_A", n_a + three + " + m*g*(abs(l - 3*h) - abs(3*h - l) + abs(l - 4*h) - abs(4*h - l))/l").summary ==
+  CHECK(suitcase()
+            .check("N_A", n_a + three + " + m*g*(abs(l - 3*h) - abs(3*h - l) + abs(l - 4*h) - abs(4*h - l))/l")
+            .summary ==
         "the answer uses abs(), and tackle could not decide it for every sign of its argument: write it without abs()");
   // A side too narrow to find (|mu - 1/10| < 10^-15): undecided, never correct.
-  const CheckResult narrow = suitcase().check("N_A", n_a + " + m*g*(abs((mu - 1/10)^2 - 10^(-30)) - ((mu - 1/10)^2 - 10^(-30)))");
+  const CheckResult narrow =
+      suitcase().check("N_A", n_a + " + m*g*(abs((mu - 1/10)^2 - 10^(-30)) - ((mu - 1/10)^2 - 10^(-30)))");
   CHECK(narrow.verdict == Verdict::undecided);
-  CHECK(narrow.summary == "the answer uses abs(), and tackle could not decide it for every sign of its argument: write it without abs()");
+  CHECK(narrow.summary ==
+        "the answer uses abs(), and tackle could not decide it for every sign of its argument: write it without abs()");
 }
 
 TEST_CASE("Check: the points a numeric verdict rests on are drawn for each check", "[check][trust]") {
@@ -606,7 +639,9 @@ TEST_CASE("Check: messages echo whole characters and escape control bytes", "[ch
   CHECK(board().check("T_HI", "m*a\u20ac").summary == "at column 4: unexpected character '\u20ac'");
   CHECK(board().check("T_HI", "m*a\x07").summary == "at column 4: unexpected character '\\x07'");
   CHECK(board().check("T_HI", "m*a\u202e").summary == "at column 4: unexpected character '\\u202E'");
-  CHECK(board().check("T\x1b[2J", "m").summary.rfind("'T\\x1B[2J' is not an unknown tackle can check for this problem (", 0) == 0);
+  CHECK(board()
+            .check("T\x1b[2J", "m")
+            .summary.rfind("'T\\x1B[2J' is not an unknown tackle can check for this problem (", 0) == 0);
   CHECK(board().check("T_HI", "x\x01 = m").summary == "write 'T_HI = ...' or just the expression (found 'x\\x01 = ')");
   std::string problem;
   CHECK_FALSE(checker("sample-12.3-two-mass-pulley.yaml").values_for({{"F", "1\x08"}}, problem));
@@ -638,10 +673,12 @@ nlohmann::json prairielearn_results(const std::string& lines) {
 }
 }  // namespace
 
-TEST_CASE("Grading: PrairieLearn's ungradable submission tells nothing of the other answers", "[check][batch][platform]") {
-  const auto bad = prairielearn_results("{\"id\": \"a\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/(2*d)\"}\n"
-                                        "{\"id\": \"b\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/d\"}\n"
-                                        "{\"id\": \"c\", \"unknown\": \"T_HI\", \"answer\": \"m*a*\"}\n");
+TEST_CASE("Grading: PrairieLearn's ungradable submission tells nothing of the other answers",
+          "[check][batch][platform]") {
+  const auto bad = prairielearn_results(
+      "{\"id\": \"a\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/(2*d)\"}\n"
+      "{\"id\": \"b\", \"unknown\": \"T_HI\", \"answer\": \"m*a*l/d\"}\n"
+      "{\"id\": \"c\", \"unknown\": \"T_HI\", \"answer\": \"m*a*\"}\n");
   CHECK(bad["gradable"] == false);
   CHECK_FALSE(bad.contains("score"));
   CHECK_FALSE(bad.contains("tests"));
@@ -653,9 +690,10 @@ TEST_CASE("Grading: PrairieLearn's ungradable submission tells nothing of the ot
 }
 
 TEST_CASE("Grading: a format error names its line once", "[check][batch][platform]") {
-  const auto j = prairielearn_results("not json\n"
-                                      "{\"unknown\": \"T_HI\", \"answer\": \"m\", \"params\": [1]}\n"
-                                      "{\"id\": \"s3\", \"unknown\": \"T_HI\", \"answer\": \"m\", \"params\": 2}\n");
+  const auto j = prairielearn_results(
+      "not json\n"
+      "{\"unknown\": \"T_HI\", \"answer\": \"m\", \"params\": [1]}\n"
+      "{\"id\": \"s3\", \"unknown\": \"T_HI\", \"answer\": \"m\", \"params\": 2}\n");
   REQUIRE(j["format_errors"].size() == 3);
   CHECK(j["format_errors"][0] == "line 1: not a JSON object with id, unknown and answer");
   CHECK(j["format_errors"][1] == "line 2: T_HI: \"params\" is not an object of parameter values");
@@ -666,9 +704,16 @@ TEST_CASE("Grading: a batch line is the JSON library's own dump of the result, b
   // The batch writes its lines itself (a sixth of a check went into building JSON objects);
   // the library's dump of the same object is the reference.
   static const char with_nul[] = "nul\0one\x01\x1f";  // (its length from its size: it holds a NUL)
-  const std::vector<std::string> texts{"", "plain", "quote \" and backslash \\", "tab\tnew\nline\rcr\bbs\fff",
-                                       std::string(with_nul, sizeof with_nul - 1), "del \x7f", "UTF-8: \xce\xbc N, \xe2\x89\xa5",
-                                       "not UTF-8: \xe9t\xe9", "cut \xe2\x89", "\xf0\x9f\x98\x80 emoji"};
+  const std::vector<std::string> texts{"",
+                                       "plain",
+                                       "quote \" and backslash \\",
+                                       "tab\tnew\nline\rcr\bbs\fff",
+                                       std::string(with_nul, sizeof with_nul - 1),
+                                       "del \x7f",
+                                       "UTF-8: \xce\xbc N, \xe2\x89\xa5",
+                                       "not UTF-8: \xe9t\xe9",
+                                       "cut \xe2\x89",
+                                       "\xf0\x9f\x98\x80 emoji"};
   for (const double score : {0.0, 1.0, 0.5, 0.25, 1e-7, 2.0 / 3.0})
     for (const auto& t : texts) {
       CheckResult r;
@@ -692,8 +737,9 @@ TEST_CASE("Grading: a batch line is the JSON library's own dump of the result, b
   ok.unknown = "T";
   ok.verdict = Verdict::correct;
   ok.score = 1.0;
-  CHECK(result_line(ok, "T = 1", "") ==
-        R"({"unknown":"T","answer":"T = 1","verdict":"correct","score":1.0,"summary":"","findings":[],"method":"","read_as":"","latex":""})");
+  CHECK(
+      result_line(ok, "T = 1", "") ==
+      R"({"unknown":"T","answer":"T = 1","verdict":"correct","score":1.0,"summary":"","findings":[],"method":"","read_as":"","latex":""})");
 }
 
 TEST_CASE("Check: without the LaTeX echo, no answer gets one, a number with a unit neither", "[check]") {

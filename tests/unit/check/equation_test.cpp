@@ -54,12 +54,15 @@ const std::vector<EquationStep> steps{
     {"sample-12.3-two-mass-pulley", "4*T - 2*F = 2*m_A*ddot(x_A)", Verdict::correct, "", "it is LMB A (x)"},
     {"sample-12.3-two-mass-pulley", "-3*T = m_B*ddot(x_B)", Verdict::correct, "", "it is LMB B (x)"},
     {"sample-12.3-two-mass-pulley", "T = -m_B*ddot(x_B)/3", Verdict::correct, "", "it is LMB B (x)"},
-    {"sample-12.3-two-mass-pulley", "3*ddot(x_B) - 2*ddot(x_A) = 0", Verdict::correct, "", "it is string s: acceleration"},
+    {"sample-12.3-two-mass-pulley", "3*ddot(x_B) - 2*ddot(x_A) = 0", Verdict::correct, "",
+     "it is string s: acceleration"},
     {"sample-12.3-two-mass-pulley", "ddot(x_A) = 3*ddot(x_B)/2", Verdict::correct, "", "it is string s: acceleration"},
     {"sample-12.3-two-mass-pulley", "3*dot(x_B) = 2*dot(x_A)", Verdict::correct, "", "it is string s: rate"},
     // The length sum itself, with any constant (it depends on the origin and the string).
-    {"sample-12.3-two-mass-pulley", "3*x_B - 2*x_A = const", Verdict::correct, "", "it is the length of string s kept constant"},
-    {"sample-12.3-two-mass-pulley", "6*x_B = 4*x_A + L", Verdict::correct, "", "it is the length of string s kept constant"},
+    {"sample-12.3-two-mass-pulley", "3*x_B - 2*x_A = const", Verdict::correct, "",
+     "it is the length of string s kept constant"},
+    {"sample-12.3-two-mass-pulley", "6*x_B = 4*x_A + L", Verdict::correct, "",
+     "it is the length of string s kept constant"},
     {"sample-12.3-two-mass-pulley", "2*x_B - 2*x_A = C_s", Verdict::incorrect, "length_sum",
      "this is not the length of string s kept constant: count the strands at each point the string passes"},
     {"sample-12.3-two-mass-pulley", "T = C", Verdict::invalid, "syntax",
@@ -82,14 +85,19 @@ const std::vector<EquationStep> steps{
     {"atwood-machine", "R_C = 4*m_A*m_B*g/(m_A + m_B)", Verdict::correct, "", ""},
     {"sample-12.7-suitcase", "N_A + N_B = m*g", Verdict::correct, "", "it is LMB suitcase (y)"},
     {"sample-12.7-suitcase", "-mu*(N_A + N_B) = m*a_C", Verdict::correct, "", "it is LMB suitcase (x)"},
-    {"sample-12.7-suitcase", "(N_B - N_A)*l/2 = mu*h*(N_A + N_B)", Verdict::correct, "", "it is AMB suitcase about its center of mass (z)"},
-    {"sample-12.7-suitcase", "a_C = -mu*g", Verdict::correct, "", "it follows from LMB suitcase (x) and LMB suitcase (y)"},
-    {"sample-12.8-sign-board", "T_HI*d*(c - e)/l = a*m*(c - e)/2", Verdict::correct, "", "it is AMB board about G (axis OG)"},
+    {"sample-12.7-suitcase", "(N_B - N_A)*l/2 = mu*h*(N_A + N_B)", Verdict::correct, "",
+     "it is AMB suitcase about its center of mass (z)"},
+    {"sample-12.7-suitcase", "a_C = -mu*g", Verdict::correct, "",
+     "it follows from LMB suitcase (x) and LMB suitcase (y)"},
+    {"sample-12.8-sign-board", "T_HI*d*(c - e)/l = a*m*(c - e)/2", Verdict::correct, "",
+     "it is AMB board about G (axis OG)"},
     {"sample-12.8-sign-board", "2*T_HI*d = m*a*l", Verdict::correct, "", "it is AMB board about G (axis OG)"},
     {"sample-12.8-sign-board", "T_HI = m*a*l/(2*d)", Verdict::correct, "", "it is AMB board about G (axis OG)"},
     {"rotation-atwood-massive-pulley", "T_1 - m_1*g = m_1*ddot(y_1)", Verdict::correct, "", "it is LMB block_1 (y)"},
-    {"rotation-atwood-massive-pulley", "R*(T_1 - T_2) = M*R^2*ddot(phi)/2", Verdict::correct, "", "it is AMB P about its center of mass (z)"},
-    {"rotation-atwood-massive-pulley", "ddot(y_1) = -R*ddot(phi)", Verdict::correct, "", "it is string s_1: acceleration"},
+    {"rotation-atwood-massive-pulley", "R*(T_1 - T_2) = M*R^2*ddot(phi)/2", Verdict::correct, "",
+     "it is AMB P about its center of mass (z)"},
+    {"rotation-atwood-massive-pulley", "ddot(y_1) = -R*ddot(phi)", Verdict::correct, "",
+     "it is string s_1: acceleration"},
     {"rotation-atwood-massive-pulley", "ddot(y_2) = -ddot(y_1)", Verdict::correct, "",
      "it follows from string s_1: acceleration and string s_2: acceleration"},
     // Incorrect, diagnosed in the free body diagram's words.
@@ -110,8 +118,10 @@ const std::vector<EquationStep> steps{
     {"sample-12.3-two-mass-pulley", "2*ddot(x_B) = 3*ddot(x_A)", Verdict::incorrect, "value", ""},
     {"sample-12.3-two-mass-pulley", "2*T - F = m_A*ddot(x_B)", Verdict::incorrect, "wrong_acceleration",
      "the acceleration is B's, not A's (LMB A (x))"},
-    {"sample-12.3-two-mass-pulley", "2*T - F = m_B*ddot(x_A)", Verdict::incorrect, "wrong_mass", "the mass is B's, not A's (LMB A (x))"},
-    {"atwood-machine", "T - m_A*g = m_B*ddot(y_A)", Verdict::incorrect, "wrong_mass", "the mass is B's, not A's (LMB A (y))"},
+    {"sample-12.3-two-mass-pulley", "2*T - F = m_B*ddot(x_A)", Verdict::incorrect, "wrong_mass",
+     "the mass is B's, not A's (LMB A (x))"},
+    {"atwood-machine", "T - m_A*g = m_B*ddot(y_A)", Verdict::incorrect, "wrong_mass",
+     "the mass is B's, not A's (LMB A (y))"},
     {"sample-12.3-two-mass-pulley", "T = 2*F*m_A/(9*m_A + 4*m_B)", Verdict::incorrect, "value", ""},
     {"sample-12.3-two-mass-pulley", "T = T", Verdict::incorrect, "trivial", ""},
     {"sample-12.3-two-mass-pulley", "2*T - F = m_A", Verdict::incorrect, "dimension",
@@ -124,22 +134,27 @@ const std::vector<EquationStep> steps{
      "a strand of string chain at car2 has the wrong sign or direction (LMB car2 (x))"},
     {"sample-12.1-towing", "T + F = m_1*ddot(x_1)", Verdict::incorrect, "extra_force",
      "the force on car2 does not act on what LMB car1 (x) balances"},
-    {"atwood-machine", "T = m_A*ddot(y_A)", Verdict::incorrect, "missing_force", "the weight of A is missing (LMB A (y))"},
+    {"atwood-machine", "T = m_A*ddot(y_A)", Verdict::incorrect, "missing_force",
+     "the weight of A is missing (LMB A (y))"},
     {"atwood-machine", "T + m_A*g = m_A*ddot(y_A)", Verdict::incorrect, "force_sign",
      "the weight of A has the wrong sign or direction (LMB A (y))"},
-    {"atwood-machine", "T - m_A*g = 0", Verdict::incorrect, "missing_inertia", "the mass times acceleration term is missing (LMB A (y))"},
-    {"atwood-machine", "R_C = T", Verdict::incorrect, "missing_force", "a strand of string s at C is missing (LMB C (y))"},
+    {"atwood-machine", "T - m_A*g = 0", Verdict::incorrect, "missing_inertia",
+     "the mass times acceleration term is missing (LMB A (y))"},
+    {"atwood-machine", "R_C = T", Verdict::incorrect, "missing_force",
+     "a strand of string s at C is missing (LMB C (y))"},
     {"atwood-machine", "R_C = 3*T", Verdict::incorrect, "extra_force",
      "one force too many: a strand of string s at C is counted once too often (LMB C (y))"},
     {"atwood-machine", "ddot(y_A) = ddot(y_B)", Verdict::incorrect, "value", ""},
-    {"sample-12.7-suitcase", "N_A + N_B = 0", Verdict::incorrect, "missing_force", "the weight of suitcase is missing (LMB suitcase (y))"},
+    {"sample-12.7-suitcase", "N_A + N_B = 0", Verdict::incorrect, "missing_force",
+     "the weight of suitcase is missing (LMB suitcase (y))"},
     {"sample-12.7-suitcase", "N_A = m*g", Verdict::incorrect, "missing_force",
      "the force of the sliding contact at B is missing (LMB suitcase (y))"},
     {"sample-12.7-suitcase", "-mu*N_A = m*a_C", Verdict::incorrect, "missing_force",
      "the force of the sliding contact at B is missing (LMB suitcase (x))"},
     {"sample-12.7-suitcase", "mu*(N_A + N_B) = m*a_C", Verdict::incorrect, "", ""},
     {"sample-12.7-suitcase", "N_B*l/2 = N_A*l/2", Verdict::incorrect, "value", ""},
-    {"sample-12.7-suitcase", "N_A + N_B = m", Verdict::incorrect, "dimension", "the left side is a force and the right side a mass"},
+    {"sample-12.7-suitcase", "N_A + N_B = m", Verdict::incorrect, "dimension",
+     "the left side is a force and the right side a mass"},
     {"sample-12.8-sign-board", "0 = a*m*(c - e)/2", Verdict::incorrect, "missing_force",
      "the force of the rod from H is missing (AMB board about G (axis OG))"},
     {"sample-12.8-sign-board", "T_HI*d*(c - e)/l = 0", Verdict::incorrect, "missing_inertia",
@@ -158,11 +173,14 @@ const std::vector<EquationStep> steps{
     // ddot(s), across it N_A = m_A g cos(theta); the derivation balances A along x and y, so
     // these are cos and sin times those (sin^2 + cos^2 = 1 makes them so); T - N_A tan(theta)
     // = m_A ddot(s) is the x balance over cos(theta).
-    {"incline-and-hanging-block", "T - g*m_A*sin(theta) = m_A*ddot(s)", Verdict::correct, "", "it follows from LMB A (x) and LMB A (y)"},
-    {"incline-and-hanging-block", "N_A = m_A*g*cos(theta)", Verdict::correct, "", "it follows from LMB A (x) and LMB A (y)"},
+    {"incline-and-hanging-block", "T - g*m_A*sin(theta) = m_A*ddot(s)", Verdict::correct, "",
+     "it follows from LMB A (x) and LMB A (y)"},
+    {"incline-and-hanging-block", "N_A = m_A*g*cos(theta)", Verdict::correct, "",
+     "it follows from LMB A (x) and LMB A (y)"},
     {"incline-and-hanging-block", "T - N_A*tan(theta) = m_A*ddot(s)", Verdict::correct, "", "it is LMB A (x)"},
     {"incline-and-hanging-block", "ddot(s) = g*(m_B - m_A*sin(theta))/(m_A + m_B)", Verdict::correct, "", ""},
-    {"incline-and-hanging-block", "T*(1 - sin(theta)^2) = m_A*cos(theta)^2*(g*sin(theta) + ddot(s))", Verdict::correct, "", ""},
+    {"incline-and-hanging-block", "T*(1 - sin(theta)^2) = m_A*cos(theta)^2*(g*sin(theta) + ddot(s))", Verdict::correct,
+     "", ""},
     {"incline-and-hanging-block", "T + g*m_A*sin(theta) = m_A*ddot(s)", Verdict::incorrect, "", ""},
     {"incline-and-hanging-block", "N_A = m_A*g*sin(theta)", Verdict::incorrect, "", ""},
     {"incline-and-hanging-block", "ddot(s) = g*(m_B - m_A*cos(theta))/(m_A + m_B)", Verdict::incorrect, "", ""},
@@ -180,7 +198,8 @@ const std::vector<EquationStep> steps{
     // Sample 12.8 derives only the moment about the axis OG; the board's x balance (its notes:
     // the ball and socket's, the hinge's and the rod's x components make m a) still holds.
     {"sample-12.8-sign-board", "G_x + O_x + T_HI*d/l = a*m", Verdict::correct, "", "it is LMB board (x)"},
-    {"sample-12.8-sign-board", "G_x + O_x + T_HI*d/sqrt(b^2 + d^2 + e^2) = a*m", Verdict::correct, "", "it is LMB board (x)"},
+    {"sample-12.8-sign-board", "G_x + O_x + T_HI*d/sqrt(b^2 + d^2 + e^2) = a*m", Verdict::correct, "",
+     "it is LMB board (x)"},
     {"sample-12.8-sign-board", "G_x + O_x - T_HI*d/l = a*m", Verdict::incorrect, "force_sign",
      "the force of the rod from H has the wrong sign or direction (LMB board (x))"},
     // Not linear in the unknowns, true on the solution (the Atwood machine's A: T - m_A g =
@@ -207,12 +226,15 @@ const std::vector<EquationStep> steps{
     // sin^2 + cos^2 = 1 says nothing about the problem.
     {"incline-and-hanging-block", "sin(theta)^2 + cos(theta)^2 = 1", Verdict::incorrect, "trivial", ""},
     // A length sum's constant may be a number (docs/checking.md).
-    {"sample-12.3-two-mass-pulley", "3*x_B - 2*x_A = 5", Verdict::correct, "", "it is the length of string s kept constant"},
-    {"sample-12.3-two-mass-pulley", "3*x_B - 2*x_A = 5 + const", Verdict::correct, "", "it is the length of string s kept constant"},
+    {"sample-12.3-two-mass-pulley", "3*x_B - 2*x_A = 5", Verdict::correct, "",
+     "it is the length of string s kept constant"},
+    {"sample-12.3-two-mass-pulley", "3*x_B - 2*x_A = 5 + const", Verdict::correct, "",
+     "it is the length of string s kept constant"},
     {"sample-12.3-two-mass-pulley", "2*x_B - 2*x_A = 5", Verdict::incorrect, "length_sum", ""},
     // Cannot be read.
     {"sample-12.3-two-mass-pulley", "2*T - F", Verdict::invalid, "not_an_equation", ""},
-    {"sample-12.3-two-mass-pulley", "2*T = F = 3", Verdict::invalid, "not_an_equation", "write one '=' between the two sides (found 2)"},
+    {"sample-12.3-two-mass-pulley", "2*T = F = 3", Verdict::invalid, "not_an_equation",
+     "write one '=' between the two sides (found 2)"},
     {"sample-12.3-two-mass-pulley", "2*T >= F", Verdict::invalid, "not_an_equation", ""},
     {"sample-12.3-two-mass-pulley", "2*T - Q = m_A*ddot(x_A)", Verdict::invalid, "syntax", ""},
     {"sample-12.3-two-mass-pulley", " = m_A*ddot(x_A)", Verdict::invalid, "not_an_equation", "the left side is empty"},
@@ -287,7 +309,8 @@ TEST_CASE("Equations: a correct combination names the fewest equations it follow
   CHECK(one.follows_from == std::vector<std::string>{"LMB B (x)"});
 }
 
-TEST_CASE("Equations: in a batch, a line with an equation, and the JSON names what it follows from", "[check][equation][batch]") {
+TEST_CASE("Equations: in a batch, a line with an equation, and the JSON names what it follows from",
+          "[check][equation][batch]") {
   std::istringstream in(R"J({"id": "s1", "equation": "2*T - F = m_A*ddot(x_A)"}
 {"id": "s2", "equation": "T - F = m_A*ddot(x_A)"}
 {"id": "s3", "unknown": "T", "answer": "2*m_B*F/(9*m_A + 4*m_B)"}
@@ -299,8 +322,10 @@ TEST_CASE("Equations: in a batch, a line with an equation, and the JSON names wh
   CHECK(s.correct == 2);
   CHECK(s.invalid == 1);
   const std::string text = out.str();
-  CHECK(text.find(R"J("id":"s1","unknown":"","answer":"2*T - F = m_A*ddot(x_A)","verdict":"correct","score":1.0,"summary":"it is LMB A (x)")J") !=
-        std::string::npos);
+  CHECK(
+      text.find(
+          R"J("id":"s1","unknown":"","answer":"2*T - F = m_A*ddot(x_A)","verdict":"correct","score":1.0,"summary":"it is LMB A (x)")J") !=
+      std::string::npos);
   CHECK(text.find(R"J("identified_as":["LMB A (x)"],"follows_from":["LMB A (x)"]})J") != std::string::npos);
   CHECK(text.find(R"J("summary":"a strand of string s at pA is missing (LMB A (x))")J") != std::string::npos);
   CHECK(text.find(R"J(a line has an \"equation\" or an \"answer\", not both)J") != std::string::npos);
@@ -308,7 +333,8 @@ TEST_CASE("Equations: in a batch, a line with an equation, and the JSON names wh
   const auto s3 = text.find(R"J("id":"s3")J");
   CHECK(text.find("identified_as", s3) > text.find('\n', s3));
 }
-TEST_CASE("Equations: a correct equation says which equations it combines, and whether the student added them", "[check][equation]") {
+TEST_CASE("Equations: a correct equation says which equations it combines, and whether the student added them",
+          "[check][equation]") {
   // Sample 12.1 (its notes): car 1, T = m_1 a_1; car 2, F - T = m_2 a_2. Their sum, F = m_1 a_1 +
   // m_2 a_2, adds them (coefficients 1 and 1); T = m_1 F/(m_1 + m_2) eliminates the
   // accelerations (coefficients in the masses).
@@ -323,7 +349,8 @@ TEST_CASE("Equations: a correct equation says which equations it combines, and w
   const CheckResult derived = towing.check_equation("T = m_1*F/(m_1 + m_2)");
   REQUIRE(derived.verdict == Verdict::correct);
   REQUIRE(derived.combination.size() == 3);
-  CHECK(std::none_of(derived.combination.begin(), derived.combination.end(), [](const CheckResult::Part& p) { return p.plain; }));
+  CHECK(std::none_of(derived.combination.begin(), derived.combination.end(),
+                     [](const CheckResult::Part& p) { return p.plain; }));
   // One of the model's own, up to a factor: itself, plain.
   const CheckResult own = towing.check_equation("2*T = 2*m_1*ddot(x_1)");
   REQUIRE(own.combination.size() == 1);

@@ -97,13 +97,15 @@ std::string every_sign(const std::vector<std::string>& lhs, const std::vector<st
 
 // Each arrow of `arrows` (the start of a YAML flow map, and its direction) drawn each way:
 // every pattern, a diagram of `body` each.
-std::string every_sense(const std::string& body, const std::vector<std::pair<std::string, std::vector<double>>>& arrows) {
+std::string every_sense(const std::string& body,
+                        const std::vector<std::pair<std::string, std::vector<double>>>& arrows) {
   std::string out;
   for (std::size_t mask = 0; mask < (std::size_t{1} << arrows.size()); ++mask) {
     out += "  - fbd: {body: " + body + ", forces: [";
     for (std::size_t k = 0; k < arrows.size(); ++k) {
       std::string dir;
-      for (const double d : arrows[k].second) dir += (dir.empty() ? "" : ", ") + fmt::format("{:g}", (mask >> k) & 1 ? -d : d);
+      for (const double d : arrows[k].second)
+        dir += (dir.empty() ? "" : ", ") + fmt::format("{:g}", (mask >> k) & 1 ? -d : d);
       out += (k ? ", " : "") + arrows[k].first + ", direction: [" + dir + "]}";
     }
     out += "]}\n";
@@ -120,23 +122,25 @@ TEST_CASE("Steps: a worked solution graded as a whole, with the rubric's points"
   - equation: "2*T - F = m_A*ddot(x_A)"
   - equation: "-2*T = m_B*ddot(x_B)"
   - {answer: "2*m_B*F/(9*m_A + 4*m_B)", unknown: T}
-)Y", "balances: 4\nconstraints: 2\nanswers: 3\n");
+)Y",
+                                "balances: 4\nconstraints: 2\nanswers: 3\n");
   REQUIRE(g.steps.size() == 3);
   CHECK(g.steps[1].result.findings.front().code == "missing_force");
   CHECK(g.first_wrong == std::optional<std::size_t>(2));
   CHECK(g.used == std::vector<std::string>{"LMB A (x)"});
   CHECK(g.missing == std::vector<std::string>{"LMB B (x)", "string s: acceleration"});
-  CHECK(solution_text(g) == "step 1 (equation): correct: it is LMB A (x)\n"
-                            "step 2 (equation): incorrect: a strand of string s at pB is missing (LMB B (x))\n"
-                            "step 3 (answer for T): correct: equal to the closed form\n"
-                            "first wrong step: 2\n"
-                            "used: LMB A (x)\n"
-                            "missing (needed for the unknowns asked): LMB B (x), string s: acceleration\n"
-                            "balances: 2 of 4 (1 of 2)\n"
-                            "constraints: 0 of 2 (0 of 1)\n"
-                            "answers: 1 of 3 (1 of 3)\n"
-                            "wrong steps: -0.75 (1 incorrect step, 0.75 points each)\n"
-                            "score: 2.25 of 9\n");
+  CHECK(solution_text(g) ==
+        "step 1 (equation): correct: it is LMB A (x)\n"
+        "step 2 (equation): incorrect: a strand of string s at pB is missing (LMB B (x))\n"
+        "step 3 (answer for T): correct: equal to the closed form\n"
+        "first wrong step: 2\n"
+        "used: LMB A (x)\n"
+        "missing (needed for the unknowns asked): LMB B (x), string s: acceleration\n"
+        "balances: 2 of 4 (1 of 2)\n"
+        "constraints: 0 of 2 (0 of 1)\n"
+        "answers: 1 of 3 (1 of 3)\n"
+        "wrong steps: -0.75 (1 incorrect step, 0.75 points each)\n"
+        "score: 2.25 of 9\n");
   // For the platforms: a test per step, one per part of the rubric, one for the wrong steps.
   const auto results = nlohmann::json::parse(solution_results(g, ResultsFormat::gradescope));
   REQUIRE(results["tests"].size() == 7);
@@ -169,7 +173,8 @@ TEST_CASE("Steps: past the deadline a step is not checked, and gives nothing", "
   const auto steps = read_solution(R"Y(steps:
   - equation: "2*T - F = m_A*ddot(x_A)"
   - {answer: "2*m_B*F/(9*m_A + 4*m_B)", unknown: T}
-)Y", "s.yaml", model);
+)Y",
+                                   "s.yaml", model);
   const Rubric rubric = read_rubric(rubric10, "r.yaml", model);
   const SolutionGrade late = grade_solution(*m.checker, model, steps, rubric, std::chrono::steady_clock::now());
   REQUIRE(late.steps.size() == 2);
@@ -182,29 +187,34 @@ TEST_CASE("Steps: past the deadline a step is not checked, and gives nothing", "
   CHECK(late.wrong == 0);  // not checked is not wrong: no penalty
   CHECK(late.score == 0);
   // A deadline far off: the grade without one.
-  const SolutionGrade in_time = grade_solution(*m.checker, model, steps, rubric, std::chrono::steady_clock::now() + std::chrono::hours(1));
+  const SolutionGrade in_time =
+      grade_solution(*m.checker, model, steps, rubric, std::chrono::steady_clock::now() + std::chrono::hours(1));
   CHECK(solution_text(in_time) == solution_text(grade_solution(*m.checker, model, steps, rubric)));
   CHECK(in_time.steps[0].result.verdict == Verdict::correct);
 }
 
 TEST_CASE("Steps: an empty solution scores 0, and a part with nothing needed is not awarded", "[check][steps]") {
   const SolutionGrade g = grade(pulley, "steps: []\n", rubric10);
-  CHECK(solution_text(g) == "missing (needed for the unknowns asked): LMB A (x), LMB B (x), string s: acceleration\n"
-                            "balances: 0 of 4 (0 of 2)\n"
-                            "constraints: 0 of 2 (0 of 1)\n"
-                            "answers: 0 of 4 (0 of 3)\n"
-                            "score: 0 of 10\n");
+  CHECK(solution_text(g) ==
+        "missing (needed for the unknowns asked): LMB A (x), LMB B (x), string s: acceleration\n"
+        "balances: 0 of 4 (0 of 2)\n"
+        "constraints: 0 of 2 (0 of 1)\n"
+        "answers: 0 of 4 (0 of 3)\n"
+        "score: 0 of 10\n");
   // Sample 12.2: the string's length alone gives A's acceleration (by hand), so no balance is
   // needed and none is graded; the diagrams neither, since no balance is written from them.
-  const SolutionGrade k = grade("sample-12.2-pulley-kinematics", "steps: []\n", "fbds: 2\nbalances: 4\nconstraints: 2\nanswers: 4\n");
-  CHECK(solution_text(k) == "missing (needed for the unknowns asked): string s: acceleration\n"
-                            "fbds: not graded: no balance is needed for the unknowns asked, so no diagram is\n"
-                            "balances: not graded: no balance is needed for the unknowns asked\n"
-                            "constraints: 0 of 2 (0 of 1)\n"
-                            "answers: 0 of 4 (0 of 1)\n"
-                            "score: 0 of 6\n");
+  const SolutionGrade k =
+      grade("sample-12.2-pulley-kinematics", "steps: []\n", "fbds: 2\nbalances: 4\nconstraints: 2\nanswers: 4\n");
+  CHECK(solution_text(k) ==
+        "missing (needed for the unknowns asked): string s: acceleration\n"
+        "fbds: not graded: no balance is needed for the unknowns asked, so no diagram is\n"
+        "balances: not graded: no balance is needed for the unknowns asked\n"
+        "constraints: 0 of 2 (0 of 1)\n"
+        "answers: 0 of 4 (0 of 1)\n"
+        "score: 0 of 6\n");
   const auto json = nlohmann::json::parse(solution_json(k));
-  CHECK(json["parts"][1] == nlohmann::json::parse(R"J({"name": "balances", "graded": false, "score": 0.0, "max_score": 0.0, "done": 0,
+  CHECK(json["parts"][1] ==
+        nlohmann::json::parse(R"J({"name": "balances", "graded": false, "score": 0.0, "max_score": 0.0, "done": 0,
                                                       "of": 0, "not_graded": "no balance is needed for the unknowns asked"})J"));
   const auto results = nlohmann::json::parse(solution_results(k, ResultsFormat::gradescope));
   CHECK(results["tests"][1]["name"] == "balances");
@@ -232,18 +242,21 @@ loads: [{on: A, force: F}]
 find: [ddot(x), {name: W, expr: "m*g", unit: N}]
 )Y");
   const Checker c(*a);
-  const auto steps = read_solution("steps:\n  - equation: \"F = m*ddot(x)\"\n  - {answer: \"F/m\", unknown: ddot(x)}\n", "s.yaml", a->model);
+  const auto steps = read_solution("steps:\n  - equation: \"F = m*ddot(x)\"\n  - {answer: \"F/m\", unknown: ddot(x)}\n",
+                                   "s.yaml", a->model);
   const SolutionGrade g = grade_solution(c, a->model, steps, read_rubric(rubric10, "r.yaml", a->model));
-  CHECK(solution_text(g) == "step 1 (equation): correct: it is LMB A (x)\n"
-                            "step 2 (answer for ddot(x)): correct: equal to the closed form\n"
-                            "used: LMB A (x)\n"
-                            "balances: not graded: tackle cannot tell which equations W needs\n"
-                            "constraints: not graded: tackle cannot tell which equations W needs\n"
-                            "answers: 2 of 4 (1 of 2)\n"
-                            "score: 2 of 4\n");
+  CHECK(solution_text(g) ==
+        "step 1 (equation): correct: it is LMB A (x)\n"
+        "step 2 (answer for ddot(x)): correct: equal to the closed form\n"
+        "used: LMB A (x)\n"
+        "balances: not graded: tackle cannot tell which equations W needs\n"
+        "constraints: not graded: tackle cannot tell which equations W needs\n"
+        "answers: 2 of 4 (1 of 2)\n"
+        "score: 2 of 4\n");
 }
 
-TEST_CASE("Steps: an equation gives what it is, or a sum the student wrote, never what it was derived from", "[check][steps]") {
+TEST_CASE("Steps: an equation gives what it is, or a sum the student wrote, never what it was derived from",
+          "[check][steps]") {
   // The documented meaning of CheckResult::combination, case by case.
   CheckResult one;
   one.identified_as = {"LMB A (x)"};
@@ -261,20 +274,24 @@ TEST_CASE("Steps: an equation gives what it is, or a sum the student wrote, neve
   // The answer restated as one equation, with each platform example's own rubric: only the
   // answer's points (Gradescope: 3 of 10, the diagrams' 2 counted and not given;
   // PrairieLearn: 4 of 10).
-  const std::string restated = "steps:\n  - equation: \"T = 2*F*m_B/(9*m_A + 4*m_B)\"\n  - {answer: \"2*F*m_B/(9*m_A + 4*m_B)\", unknown: T}\n";
+  const std::string restated =
+      "steps:\n  - equation: \"T = 2*F*m_B/(9*m_A + 4*m_B)\"\n  - {answer: \"2*F*m_B/(9*m_A + 4*m_B)\", unknown: T}\n";
   for (const auto& [platform, score] : {std::pair{"gradescope", 3.0}, std::pair{"prairielearn", 4.0}}) {
     const SolutionGrade g = grade_platform_example(platform, restated);
     INFO(platform);
     CHECK(g.score == Approx(score));
     CHECK(g.max_score == Approx(10));
     CHECK(g.used.empty());
-    CHECK(g.steps[0].note == "it earns no balance or constraint points: it is derived from LMB A (x), LMB B (x) and string s: acceleration "
-                             "by eliminating unknowns, not written as them or as their sum");
+    CHECK(
+        g.steps[0].note ==
+        "it earns no balance or constraint points: it is derived from LMB A (x), LMB B (x) and string s: acceleration "
+        "by eliminating unknowns, not written as them or as their sum");
   }
   // Sample 12.3 (by hand): LMB A, 2T - F = m_A ddot(x_A), plus LMB B, -3T = m_B ddot(x_B), is
   // -T - F = m_A ddot(x_A) + m_B ddot(x_B): the student's sum of the two balances earns both.
-  const SolutionGrade added = grade("sample-12.3-two-mass-pulley", "steps:\n  - equation: \"-T - F = m_A*ddot(x_A) + m_B*ddot(x_B)\"\n",
-                                    "balances: 2\nconstraints: 1\nanswers: 3\n");
+  const SolutionGrade added =
+      grade("sample-12.3-two-mass-pulley", "steps:\n  - equation: \"-T - F = m_A*ddot(x_A) + m_B*ddot(x_B)\"\n",
+            "balances: 2\nconstraints: 1\nanswers: 3\n");
   CHECK(added.used == std::vector<std::string>{"LMB A (x)", "LMB B (x)"});
   REQUIRE(!added.parts.empty());
   CHECK(added.parts[0].name == "balances");
@@ -292,12 +309,16 @@ TEST_CASE("Steps: each wrong step takes its share back, as the rubric sets it", 
   const SolutionGrade all = grade(pulley, guessed_pulley, std::string(rubric10) + "penalty: 2\n");
   CHECK(all.penalty == Approx(10));
   CHECK(all.score == 0);
-  CHECK(solution_text(all).find("wrong steps: -10 (8 incorrect steps, 2 points each; no more than the parts earned)\n") != std::string::npos);
+  CHECK(
+      solution_text(all).find("wrong steps: -10 (8 incorrect steps, 2 points each; no more than the parts earned)\n") !=
+      std::string::npos);
   // An unreadable step is not a wrong one.
   CHECK(grade(pulley, "steps:\n  - equation: \"2*T - F\"\n", rubric10).wrong == 0);
 }
 
-TEST_CASE("Steps: guessing every sign of every balance, arrow and answer scores at most half, with each example's rubric", "[check][steps]") {
+TEST_CASE(
+    "Steps: guessing every sign of every balance, arrow and answer scores at most half, with each example's rubric",
+    "[check][steps]") {
   // Sample 12.3 asking only T (the platform examples' problem). By hand: A has F along -x and
   // two strands along +x at pA (all at one place in 1-D), B three strands along -x at pB. Every
   // sense of every arrow: 8 diagrams of A, three right (arrows are matched by where they act
@@ -311,7 +332,8 @@ TEST_CASE("Steps: guessing every sign of every balance, arrow and answer scores 
   steps += every_sign({"2*T", "F"}, {"m_A*ddot(x_A)"});
   steps += every_sign({"3*T"}, {"m_B*ddot(x_B)"});
   steps += every_sign({"3*ddot(x_B)"}, {"2*ddot(x_A)"});
-  steps += "  - {answer: \"2*F*m_B/(9*m_A + 4*m_B)\", unknown: T}\n  - {answer: \"-2*F*m_B/(9*m_A + 4*m_B)\", unknown: T}\n";
+  steps +=
+      "  - {answer: \"2*F*m_B/(9*m_A + 4*m_B)\", unknown: T}\n  - {answer: \"-2*F*m_B/(9*m_A + 4*m_B)\", unknown: T}\n";
   // Gradescope's rubric: 2 + 3 + 2 + 3 = 10 over 2 diagrams, 2 balances, 1 constraint, 1
   // answer: a wrong step costs 10/12, and 23 of them take all 10. PrairieLearn's: 4 + 2 + 4
   // over 4 items, 10/8 each: all 10 too.
@@ -335,17 +357,20 @@ TEST_CASE("Steps: guessing every sign on the incline scores nothing, with each r
   // with both signs. 54 steps, 14 right, 40 wrong: however many items are graded (at most 9),
   // 40 wrong steps take back more than 20 of them, all there is.
   std::string steps = "steps:\n";
-  steps += every_sense("A", {{"{name: N, at: A", {-0.5, 0.866025}}, {"{name: T, at: A", {0.866025, 0.5}}, {"{name: W, at: A", {0, -1}}});
+  steps += every_sense(
+      "A", {{"{name: N, at: A", {-0.5, 0.866025}}, {"{name: T, at: A", {0.866025, 0.5}}, {"{name: W, at: A", {0, -1}}});
   steps += every_sense("B", {{"{name: T, at: B", {0, 1}}, {"{name: W, at: B", {0, -1}}});
   steps += every_sign({"T*cos(theta)", "N_A*sin(theta)"}, {"m_A*ddot(s)*cos(theta)"});
   steps += every_sign({"N_A*cos(theta)", "T*sin(theta)", "g*m_A"}, {"m_A*ddot(s)*sin(theta)"});
   steps += every_sign({"T", "g*m_B"}, {"m_B*ddot(y_B)"});
   steps += every_sign({"ddot(s)"}, {"ddot(y_B)"});
-  for (const auto& [u, a] : {std::pair{"ddot(s)", "g*(m_B - m_A*sin(theta))/(m_A + m_B)"}, std::pair{"T", "m_A*m_B*g*(1 + sin(theta))/(m_A + m_B)"},
-                             std::pair{"N_A", "m_A*g*cos(theta)"}})
+  for (const auto& [u, a] :
+       {std::pair{"ddot(s)", "g*(m_B - m_A*sin(theta))/(m_A + m_B)"},
+        std::pair{"T", "m_A*m_B*g*(1 + sin(theta))/(m_A + m_B)"}, std::pair{"N_A", "m_A*g*cos(theta)"}})
     steps += fmt::format("  - {{answer: \"{}\", unknown: {}}}\n  - {{answer: \"-({})\", unknown: {}}}\n", a, u, a, u);
-  for (const std::string rubric : {std::string(rubric10), std::string("fbds: 2\n") + rubric10,
-                                   read_text_file(TACKLE_SOURCE_DIR "/examples/gradescope/pulley-solution/rubric.yaml")}) {
+  for (const std::string rubric :
+       {std::string(rubric10), std::string("fbds: 2\n") + rubric10,
+        read_text_file(TACKLE_SOURCE_DIR "/examples/gradescope/pulley-solution/rubric.yaml")}) {
     INFO(rubric);
     const SolutionGrade g = grade("incline-and-hanging-block", steps, rubric);
     REQUIRE(g.steps.size() == 54);
@@ -368,20 +393,25 @@ TEST_CASE("Steps: a solution or rubric file with problems says each, located", "
   auto solution = [&](const std::string& text) { (void)read_solution(text, "f.yaml", model); };
   auto rubric = [&](const std::string& text) { (void)read_rubric(text, "f.yaml", model); };
   CHECK(errors(solution, "steps:\n  - equation: \"x = 1\"\n    answer: \"1\"\n  - {answer: \"3\"}\n") ==
-        std::vector<std::string>{"f.yaml:2:5: a step is an equation or an answer, not both (expected {equation: ...} or {answer: ..., unknown: ...})",
-                                 "f.yaml:4:5: an answer needs its 'unknown' (e.g. {answer: \"2*m_B*F/(9*m_A + 4*m_B)\", unknown: T})"});
+        std::vector<std::string>{
+            "f.yaml:2:5: a step is an equation or an answer, not both (expected {equation: ...} or {answer: ..., "
+            "unknown: ...})",
+            "f.yaml:4:5: an answer needs its 'unknown' (e.g. {answer: \"2*m_B*F/(9*m_A + 4*m_B)\", unknown: T})"});
   CHECK(errors(solution, "stepz: []\n") ==
         std::vector<std::string>{"f.yaml:1:1: unknown key 'stepz' in the solution (did you mean 'steps'?)",
-                                 "f.yaml:1:1: the solution has no 'steps' (expected a list of {equation: ...}, {answer: ..., unknown: ...} and {fbd: ...})"});
-  CHECK(errors(rubric, "balances: -1\nanswers: lots\npenalty: -0.5\n") ==
-        std::vector<std::string>{"f.yaml:1:11: 'balances' is not a number of points (expected a number from 0 to 1000)",
-                                 "f.yaml:2:10: 'answers' is not a number of points (expected a number from 0 to 1000)",
-                                 "f.yaml:3:10: 'penalty' is not a number of points (expected a number from 0 to 1000)"});
+                                 "f.yaml:1:1: the solution has no 'steps' (expected a list of {equation: ...}, "
+                                 "{answer: ..., unknown: ...} and {fbd: ...})"});
+  CHECK(
+      errors(rubric, "balances: -1\nanswers: lots\npenalty: -0.5\n") ==
+      std::vector<std::string>{"f.yaml:1:11: 'balances' is not a number of points (expected a number from 0 to 1000)",
+                               "f.yaml:2:10: 'answers' is not a number of points (expected a number from 0 to 1000)",
+                               "f.yaml:3:10: 'penalty' is not a number of points (expected a number from 0 to 1000)"});
   // A weight that names no force of the problem: sample 12.3 has no gravity; its forces are F
   // on A and the string's strands (path pB, C, pB, C, pA, C: two at pB, two at pA), tension T.
   CHECK(errors(rubric, "fbd:\n  weights:\n    T: 2\n    gravity on B: 1\n    'string s: strand pB-C': 1\n") ==
-        std::vector<std::string>{"f.yaml:4:5: 'gravity on B' names no force of the problem (expected a force's unknown or source: T, "
-                                 "force on A, string s: strand pB-C, string s: strand C-pB, string s: strand C-pA, string s: strand pA-C)"});
+        std::vector<std::string>{
+            "f.yaml:4:5: 'gravity on B' names no force of the problem (expected a force's unknown or source: T, "
+            "force on A, string s: strand pB-C, string s: strand C-pB, string s: strand C-pA, string s: strand pA-C)"});
 }
 
 namespace {

@@ -36,10 +36,10 @@ TEST_CASE("UTF-8: the first invalid byte is found, valid text passes", "[utf8]")
   using tackle::invalid_utf8_at;
   CHECK_FALSE(invalid_utf8_at("plain ASCII"));
   CHECK_FALSE(invalid_utf8_at("\xCE\xB8 = 30\xC2\xB0, \xE2\x88\x92x, \xF0\x9F\x98\x80"));  // θ ° − 😀
-  CHECK(invalid_utf8_at("caf\xE9!") == 3u);          // Latin-1
-  CHECK(invalid_utf8_at("ab\xC3") == 2u);            // cut short by the end
-  CHECK(invalid_utf8_at("\xC0\xAF") == 0u);          // overlong '/'
-  CHECK(invalid_utf8_at("x\xED\xA0\x80") == 1u);     // a surrogate
-  CHECK(invalid_utf8_at("\xF4\x90\x80\x80") == 0u);  // above U+10FFFF
-  CHECK(invalid_utf8_at("\x80") == 0u);              // a lone continuation byte
+  CHECK(invalid_utf8_at("caf\xE9!") == 3u);                                                // Latin-1
+  CHECK(invalid_utf8_at("ab\xC3") == 2u);                                                  // cut short by the end
+  CHECK(invalid_utf8_at("\xC0\xAF") == 0u);                                                // overlong '/'
+  CHECK(invalid_utf8_at("x\xED\xA0\x80") == 1u);                                           // a surrogate
+  CHECK(invalid_utf8_at("\xF4\x90\x80\x80") == 0u);                                        // above U+10FFFF
+  CHECK(invalid_utf8_at("\x80") == 0u);                                                    // a lone continuation byte
 }

@@ -25,7 +25,8 @@ std::string temp_path(const std::string& name) {
 TEST_CASE("Files: a whole file read back as written, empty and past the first buffer", "[files]") {
   for (const std::size_t size : {std::size_t{0}, std::size_t{1}, std::size_t{4096}, std::size_t{10000}}) {
     std::string text;
-    for (std::size_t i = 0; i < size; ++i) text += static_cast<char>(i % 7 == 6 ? '\n' : (i % 3 == 0 ? '\0' : 'a' + i % 26));
+    for (std::size_t i = 0; i < size; ++i)
+      text += static_cast<char>(i % 7 == 6 ? '\n' : (i % 3 == 0 ? '\0' : 'a' + i % 26));
     const std::string path = temp_path(std::to_string(size));
     {
       std::ofstream out(path, std::ios::binary);
@@ -63,7 +64,8 @@ TEST_CASE("Files: reading stops at the size limit, a file of exactly the limit i
     (void)read_text_file(path, 9);
     FAIL("no error");
   } catch (const InputError& e) {
-    CHECK(e.diagnostics().at(0).message == "is longer than 9 bytes (expected a description or rule file of at most 9 bytes)");
+    CHECK(e.diagnostics().at(0).message ==
+          "is longer than 9 bytes (expected a description or rule file of at most 9 bytes)");
   }
   std::filesystem::remove(path);
   // A file that never ends stops at the limit (16 MiB), not at the end of memory.
@@ -71,7 +73,8 @@ TEST_CASE("Files: reading stops at the size limit, a file of exactly the limit i
     (void)read_text_file("/dev/zero");
     FAIL("no error");
   } catch (const InputError& e) {
-    CHECK(format(e.diagnostics().at(0)) == "/dev/zero: is longer than 16 MiB (expected a description or rule file of at most 16 MiB)");
+    CHECK(format(e.diagnostics().at(0)) ==
+          "/dev/zero: is longer than 16 MiB (expected a description or rule file of at most 16 MiB)");
   }
 }
 
@@ -87,7 +90,8 @@ struct TempDir {
   ~TempDir() { std::filesystem::remove_all(path); }
   std::size_t temporaries() const {
     std::size_t n = 0;
-    for (const auto& e : std::filesystem::directory_iterator(path)) n += e.path().filename().string().find(".tackle-") != std::string::npos;
+    for (const auto& e : std::filesystem::directory_iterator(path))
+      n += e.path().filename().string().find(".tackle-") != std::string::npos;
     return n;
   }
 };

@@ -81,8 +81,10 @@ TEST_CASE("Description: a string path through an unknown point", "[errors]") {
 }
 
 TEST_CASE("Description: an unknown unit and a unit of the wrong dimension", "[errors]") {
-  CHECK(errors_of(with(good, "unit: kg}", "unit: kgg}")) ==
-        Messages{"t.yaml:4:24: unit of parameter 'm': unknown unit 'kgg' (expected SI units such as kg, m, s, N, m/s^2, kN)"});
+  CHECK(
+      errors_of(with(good, "unit: kg}", "unit: kgg}")) ==
+      Messages{
+          "t.yaml:4:24: unit of parameter 'm': unknown unit 'kgg' (expected SI units such as kg, m, s, N, m/s^2, kN)"});
   CHECK(errors_of(with(good, "unit: kg}", "unit: m}")) ==
         Messages{"t.yaml:6:13: mass of body 'A' is a length (expected a mass)",
                  "t.yaml:7:13: mass of body 'B' is a length (expected a mass)"});
@@ -99,15 +101,15 @@ TEST_CASE("Description: an unknown connection type suggests the nearest rule", "
 }
 
 TEST_CASE("Description: a connection without what its rule needs", "[errors]") {
-  CHECK(errors_of(good + "  - {type: fixed}\n") ==
-        Messages{"t.yaml:17:5: a 'fixed' connection needs 'body'"});
+  CHECK(errors_of(good + "  - {type: fixed}\n") == Messages{"t.yaml:17:5: a 'fixed' connection needs 'body'"});
   CHECK(errors_of(with(good, "path: [B, C, A]", "length: x_B - x_A, path: [B, C, A]")) ==
         Messages{"t.yaml:13:5: a 'string' connection 's' has path and length (expected one of them)"});
 }
 
 TEST_CASE("Description: a pulley that no string runs over", "[errors]") {
   CHECK(errors_of(good + "  - {type: pulley, at: A}\n") ==
-        Messages{"t.yaml:17:5: no string runs over point 'A' of a 'pulley' connection (expected it inside some string's path)"});
+        Messages{"t.yaml:17:5: no string runs over point 'A' of a 'pulley' connection (expected it inside some "
+                 "string's path)"});
 }
 
 TEST_CASE("Description: a strand whose direction cannot be told", "[errors]") {
@@ -120,9 +122,11 @@ TEST_CASE("Description: duplicate keys and wrong shapes", "[errors]") {
         Messages{"t.yaml:10:3: duplicate key 'C' in 'points'"});
   CHECK(errors_of(with(good, "points:", "points: 3\nx:")) ==
         Messages{"t.yaml:8:9: 'points' is a scalar (expected a mapping of names)",
-                 "t.yaml:9:1: unknown key 'x' in the description (expected one of: title, source, statement, axes, parameters, "
+                 "t.yaml:9:1: unknown key 'x' in the description (expected one of: title, source, statement, axes, "
+                 "parameters, "
                  "gravity, bodies, points, connections, loads, strings, layout, given, find, derive, expected, "
-                 "expected_combinations, expected_conditions, expected_ranges, expected_free, expected_power, notes, sweep, motion, expected_motion, interval, impact, steady)",
+                 "expected_combinations, expected_conditions, expected_ranges, expected_free, expected_power, notes, "
+                 "sweep, motion, expected_motion, interval, impact, steady)",
                  "t.yaml:14:25: unknown point 'C' (known: A, B)", "t.yaml:17:24: unknown point 'C' (known: A, B)"});
 }
 
@@ -130,14 +134,16 @@ TEST_CASE("Description: every problem in the file is reported at once", "[errors
   std::string bad = with(good, "A: {mass: m,", "A: {mas: m,");
   bad = with(bad, "force: -F", "force: -G");
   bad = with(bad, "path: [B, C, A]", "path: [B, Q, A]");
-  CHECK(errors_of(bad) == Messages{"t.yaml:6:7: unknown key 'mas' in body 'A' (did you mean 'mass'?)",
-                                   "t.yaml:11:21: 'force' of a 'force' connection: unknown name 'G' (known: F, m, t, x_A, x_B)",
-                                   "t.yaml:13:25: unknown point 'Q' (known: A, B, C)"});
+  CHECK(errors_of(bad) ==
+        Messages{"t.yaml:6:7: unknown key 'mas' in body 'A' (did you mean 'mass'?)",
+                 "t.yaml:11:21: 'force' of a 'force' connection: unknown name 'G' (known: F, m, t, x_A, x_B)",
+                 "t.yaml:13:25: unknown point 'Q' (known: A, B, C)"});
 }
 
 TEST_CASE("Description: a missing title and missing bodies", "[errors]") {
-  CHECK(errors_of("axes: [x]\n") == Messages{"t.yaml:1:1: the description has no 'title' (expected a one-line title)",
-                                             "t.yaml:1:1: the description has no 'bodies' (expected at least one body)"});
+  CHECK(errors_of("axes: [x]\n") ==
+        Messages{"t.yaml:1:1: the description has no 'title' (expected a one-line title)",
+                 "t.yaml:1:1: the description has no 'bodies' (expected at least one body)"});
   CHECK(errors_of("- just\n- a list\n") ==
         Messages{"t.yaml:1:1: the description is a list (expected a mapping with title, bodies, ...)"});
 }
@@ -165,7 +171,8 @@ connections:
 TEST_CASE("Description: the unbroken 2-D problem is accepted", "[errors]") { CHECK(errors_of(plate).empty()); }
 
 TEST_CASE("Description: a support at an unknown point, and a rule used in the wrong dimension", "[errors]") {
-  CHECK(errors_of(with(plate, "to: E}", "to: Q}")) == Messages{"t.yaml:15:43: unknown point 'Q' (known: plate, B, D, E)"});
+  CHECK(errors_of(with(plate, "to: E}", "to: Q}")) ==
+        Messages{"t.yaml:15:43: unknown point 'Q' (known: plate, B, D, E)"});
   CHECK(errors_of(with(plate, "type: pin", "type: ball_and_socket")) ==
         Messages{"t.yaml:14:12: a 'ball_and_socket' connection is for 3-D problems (this one has 2 axes)"});
   CHECK(errors_of(plate + "  - {type: fixed, body: plate}\n") ==
@@ -186,7 +193,8 @@ TEST_CASE("Description: a force in 2-D needs its point of application", "[errors
 
 TEST_CASE("Description: a 2-D body needs its center of mass, and AMB needs 2-D or 3-D", "[errors]") {
   CHECK(errors_of(with(plate, "center_of_mass: [1, 1], ", "")) ==
-        Messages{"t.yaml:12:10: body 'plate' has no 'center_of_mass' (needed for its weight and its angular momentum balance)"});
+        Messages{"t.yaml:12:10: body 'plate' has no 'center_of_mass' (needed for its weight and its angular momentum "
+                 "balance)"});
   CHECK(errors_of(good + "derive: [{amb: A, about: C}]\n") ==
         Messages{"t.yaml:17:11: angular momentum balance needs a 2-D or 3-D problem (this one has one axis)"});
   CHECK(errors_of(plate + "derive: [{amb: plate, about: Z}]\n") ==
@@ -237,7 +245,8 @@ TEST_CASE("Description: springs, dampers and angles are checked where they are w
   CHECK(errors_of(with(spring_block, "path: [W, A], c", "path: [W, Q], c")) ==
         Messages{"t.yaml:14:30: unknown point 'Q' (known: A, W)"});
   CHECK(errors_of(with(spring_block, "L: {value: 2, unit: m}", "L: {value: 2, unit: deg, dimension: length}")) ==
-        Messages{"t.yaml:6:39: parameter 'L' has dimension length but its unit deg is dimensionless (an angle or a pure number)"});
+        Messages{"t.yaml:6:39: parameter 'L' has dimension length but its unit deg is dimensionless (an angle or a "
+                 "pure number)"});
   CHECK(errors_of(with(spring_block, "rest_length: l_0", "rest_length: m")) ==
         Messages{"t.yaml:13:53: 'rest_length' of a 'spring' connection is a mass (expected a length)"});
 }
@@ -259,26 +268,30 @@ TEST_CASE("Description: a joint between a body and itself is an error", "[errors
   const std::string two = tackle::test::read_example("two-blocks-joined-by-a-pin.yaml");
   CHECK(errors_of(with(two, "other: B, at: H", "other: A, at: H")) ==
         Messages{"t.yaml:30:5: a 'pin_joint' connection joins body 'A' to itself (expected two different bodies)"});
-  CHECK(errors_of(with(two, "  - {type: force, on: A, at: A, force: [F, 0]}\n",
-                       "  - {type: force, on: A, at: A, force: [F, 0]}\n  - {type: same_motion, body: B, other: Z}\n")) ==
-        Messages{"t.yaml:32:41: unknown body 'Z' (known: A, B)"});
+  CHECK(
+      errors_of(with(two, "  - {type: force, on: A, at: A, force: [F, 0]}\n",
+                     "  - {type: force, on: A, at: A, force: [F, 0]}\n  - {type: same_motion, body: B, other: Z}\n")) ==
+      Messages{"t.yaml:32:41: unknown body 'Z' (known: A, B)"});
 }
 
 TEST_CASE("Description: gravity by magnitude and tilt needs both, with their dimensions", "[errors][gravity]") {
   CHECK(errors_of(good + "gravity: {magnitude: g}\n") ==
-        Messages{"t.yaml:17:10: 'gravity' as a mapping needs 'magnitude' and 'tilt' (the angle the first axis rises above the horizontal)"});
+        Messages{"t.yaml:17:10: 'gravity' as a mapping needs 'magnitude' and 'tilt' (the angle the first axis rises "
+                 "above the horizontal)"});
   CHECK(errors_of(good + "gravity: {magnitude: F, tilt: m}\n") ==
         Messages{"t.yaml:17:22: 'magnitude' of 'gravity' is a force (expected an acceleration)",
                  "t.yaml:17:31: 'tilt' of 'gravity' is a mass (expected a pure number)"});
 }
 
 TEST_CASE("Description: a force element whose path never changes length is an error", "[errors][spring]") {
-  CHECK(errors_of(with(spring_block, "layout:", "  - {type: contact, name: c, between: [A, A]}\nlayout:")) ==
-        Messages{"t.yaml:15:5: the path of a 'contact' connection 'c' never changes length (its ends are on one body, or "
-                 "fixed; expected a path between points that move apart)"});
+  CHECK(
+      errors_of(with(spring_block, "layout:", "  - {type: contact, name: c, between: [A, A]}\nlayout:")) ==
+      Messages{"t.yaml:15:5: the path of a 'contact' connection 'c' never changes length (its ends are on one body, or "
+               "fixed; expected a path between points that move apart)"});
 }
 
-TEST_CASE("Spring: at one instant the position and velocity are known symbols of the answer (issue 30)", "[spring][trust]") {
+TEST_CASE("Spring: at one instant the position and velocity are known symbols of the answer (issue 30)",
+          "[spring][trust]") {
   // Without `given`, the answer keeps x and dot(x) as a person writes it (a regression had made
   // it "not determined: it depends on x, dot(x)").
   const auto a = tackle::test::run_text(spring_block + "find: [ddot(x)]\n");
@@ -305,29 +318,36 @@ TEST_CASE("Spring: a position asked for that the equations cannot give says what
   CHECK(d.answers[1].reason == "it depends on x (give it in 'given' for the answer at any instant)");
 }
 
-TEST_CASE("Description: an argument that is not a name is reported once, not used (found by fuzzing)", "[errors][fuzz]") {
+TEST_CASE("Description: an argument that is not a name is reported once, not used (found by fuzzing)",
+          "[errors][fuzz]") {
   CHECK(errors_of(with(plate, "at: B}", "at: {B: 1}}")) ==
         Messages{"t.yaml:14:34: 'at' is a mapping (expected a list of names)"});
 }
 
-TEST_CASE("Answers: a defined quantity that divides by an unknown equal to zero says so (found by fuzzing)", "[errors][fuzz]") {
+TEST_CASE("Answers: a defined quantity that divides by an unknown equal to zero says so (found by fuzzing)",
+          "[errors][fuzz]") {
   // The string no longer reaches A, so nothing moves B: ddot(x_B) = 0 and m_eff = F/ddot(x_B)
   // has no value. GiNaC threw from the substitution (exit 3).
-  const auto a = tackle::test::run_text(tackle::test::example_with("figure-12.5d-motion-doubled.yaml", "path: [A, B, W]", "path: [B, B, W]"));
+  const auto a = tackle::test::run_text(
+      tackle::test::example_with("figure-12.5d-motion-doubled.yaml", "path: [A, B, W]", "path: [B, B, W]"));
   const tackle::Derivation d = tackle::explain(*a);
   REQUIRE(d.answers.size() == 4);
   CHECK(d.answers[3].name == "m_eff");
   CHECK(d.answers[3].status == tackle::Answer::Status::undetermined);
   CHECK(d.answers[3].reason == "its definition F/ddot(x_B) divides by zero (ddot(x_B) = 0 here)");
-  CHECK(tackle::write(d, tackle::Format::text, false).find("m_eff: undetermined: its definition F/ddot(x_B) divides by zero (ddot(x_B) = 0 here)\n") !=
+  CHECK(tackle::write(d, tackle::Format::text, false)
+            .find("m_eff: undetermined: its definition F/ddot(x_B) divides by zero (ddot(x_B) = 0 here)\n") !=
         std::string::npos);
-  CHECK(tackle::write(d, tackle::Format::text, true).find("m_eff is not determined: its definition divides by zero (ddot(x_B) = 0 here).") !=
+  CHECK(tackle::write(d, tackle::Format::text, true)
+            .find("m_eff is not determined: its definition divides by zero (ddot(x_B) = 0 here).") !=
         std::string::npos);
 }
 
-TEST_CASE("Description: LaTeX that reads or writes files is refused in a statement or a tex name, at the command", "[errors][latex]") {
-  const std::string why = " is not allowed (expected LaTeX that reads and writes no files: no \\input, \\include, \\openin, "
-                          "\\write, \\read, \\catcode, \\def, \\usepackage, ^^, ...; see docs/grading.md)";
+TEST_CASE("Description: LaTeX that reads or writes files is refused in a statement or a tex name, at the command",
+          "[errors][latex]") {
+  const std::string why =
+      " is not allowed (expected LaTeX that reads and writes no files: no \\input, \\include, \\openin, "
+      "\\write, \\read, \\catcode, \\def, \\usepackage, ^^, ...; see docs/grading.md)";
   // An environment that writes a file; columns count from the first character after the quote.
   CHECK(errors_of(with(good, "title: ok\n", "title: ok\nstatement: 'Pulled by $F$; \\begin{filecontents}'\n")) ==
         Messages{"t.yaml:2:28: \\begin{filecontents} in 'statement'" + why});
@@ -344,8 +364,9 @@ TEST_CASE("Description: LaTeX that reads or writes files is refused in a stateme
         Messages{"t.yaml:3:34: 'tex' of parameter 'F' has '<', '>' or a line break (expected one line of LaTeX math; "
                  "\\lt and \\gt for < and >)"});
   // What statements use: math, text commands, a line break (\\ is not \input below), \$.
-  CHECK(errors_of(with(good, "title: ok\n",
-                       "title: ok\nstatement: 'A force $F$ on $\\mu_{k}$, \\textbf{half} ($\\tfrac12$) \\\\input \\$5.'\n"))
+  CHECK(errors_of(
+            with(good, "title: ok\n",
+                 "title: ok\nstatement: 'A force $F$ on $\\mu_{k}$, \\textbf{half} ($\\tfrac12$) \\\\input \\$5.'\n"))
             .empty());
 }
 
@@ -357,7 +378,8 @@ TEST_CASE("Description: a title or a phase's name is one line", "[errors][latex]
   std::stringstream pile;
   pile << in.rdbuf();
   CHECK(errors_of(with(pile.str(), "  - name: fall", "  - name: \"fall\\n\\nfree\"")) ==
-        Messages{"t.yaml:26:12: 'name' of a phase has a line break (expected one line: it is part of the phase's title)"});
+        Messages{
+            "t.yaml:26:12: 'name' of a phase has a line break (expected one line: it is part of the phase's title)"});
 }
 
 TEST_CASE("Description: a bare letter is suggested as the name of its kind, T as the tension T_s, not t", "[errors]") {

@@ -116,9 +116,11 @@ TEST_CASE("YAML: a syntax error is located, with what libyaml was reading", "[ya
   CHECK(l.errors == std::vector<std::string>{"t.yaml:2:2: invalid YAML: did not find expected ',' or ']' "
                                              "(while parsing a flow sequence started at line 1, column 4)"});
   CHECK(!l.doc.root());
-  CHECK(load("a: b\x01" "c\n").errors ==
-        std::vector<std::string>{"t.yaml:1:5: invalid YAML: control characters are not allowed"});
-  CHECK(load("a: b\n\xff").errors == std::vector<std::string>{"t.yaml:2:1: invalid UTF-8 byte 0xFF (expected UTF-8 text)"});
+  CHECK(load("a: b\x01"
+             "c\n")
+            .errors == std::vector<std::string>{"t.yaml:1:5: invalid YAML: control characters are not allowed"});
+  CHECK(load("a: b\n\xff").errors ==
+        std::vector<std::string>{"t.yaml:2:1: invalid UTF-8 byte 0xFF (expected UTF-8 text)"});
 }
 
 TEST_CASE("YAML: an empty text is null, only the first document is read", "[yaml]") {
@@ -160,8 +162,9 @@ TEST_CASE("YAML: aliases may not repeat more nodes than the file has, or 10000",
         std::vector<std::string>{"t.yaml:4:36: invalid YAML: with the alias *c, aliases repeat 10108 nodes "
                                  "(expected at most 10000, or as many as the file itself has)"});
   // The same aliases, fewer of them: 10 + 10 * 11 + ... stays under the limit and is read.
-  const auto small = load("a: &a [x, x, x, x, x, x, x, x, x, x]\nb: &b [*a, *a, *a, *a, *a, *a, *a, *a, *a, *a]\n"
-                          "c: [*b, *b, *b, *b, *b, *b, *b, *b, *b, *b]\n");
+  const auto small = load(
+      "a: &a [x, x, x, x, x, x, x, x, x, x]\nb: &b [*a, *a, *a, *a, *a, *a, *a, *a, *a, *a]\n"
+      "c: [*b, *b, *b, *b, *b, *b, *b, *b, *b, *b]\n");
   REQUIRE(small.errors.empty());
   CHECK(small.doc.root()["c"][9][9][9].text() == "x");
 }

@@ -73,7 +73,8 @@ TEST_CASE("Fractions by factors: nothing when a denominator's factors are not kn
   CHECK_FALSE(normal_by_factors(sqrt(x) / m_1));
 }
 
-TEST_CASE("Fractions by factors: a fraction of fractions, inverted when its numerator's factors are known", "[rational]") {
+TEST_CASE("Fractions by factors: a fraction of fractions, inverted when its numerator's factors are known",
+          "[rational]") {
   const symbol g("g"), m_1("m_1"), m_2("m_2");
   // The double Atwood's effective mass, by hand: 1/(1/m_1 + 1/m_2) = m_1 m_2/(m_1 + m_2), and
   // g/(1/m_1 + 1/m_2) is g m_1 m_2/(m_1 + m_2).

@@ -74,7 +74,9 @@ TEST_CASE("Parser: problems are located and explained", "[parse]") {
   CHECK(problem("+0^0") == "2: 0^0 is undefined");
   CHECK(problem("m*0^(-2)") == "3: division by zero");
   CHECK(problem("log(0)") == "0: log is undefined at 0");
-  CHECK(problem("foo(m)") == "0: unknown function 'foo' (known: sqrt, abs, sin, cos, tan, asin, acos, atan, sinh, cosh, exp, log, dot, ddot, unit, norm, cross, inner, perp1, perp2)");
+  CHECK(problem("foo(m)") ==
+        "0: unknown function 'foo' (known: sqrt, abs, sin, cos, tan, asin, acos, atan, sinh, cosh, exp, log, dot, "
+        "ddot, unit, norm, cross, inner, perp1, perp2)");
   CHECK(problem("ddot(m)") == "0: 'm' is not a coordinate, so 'ddot(m)' is not defined");
   CHECK(problem("m*") == "2: expression ends too early");
   CHECK(problem("m $ a") == "2: unexpected character '$'");

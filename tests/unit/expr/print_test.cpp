@@ -47,7 +47,8 @@ TEST_CASE("Printer: a sum of names is ordered as a person orders indexed names",
   CHECK(to_text(F * (m[1] - m[2] - g) / T) == "-F*(g + m_2 - m_1)/T");
 }
 
-TEST_CASE("Printer: a minus sign moves into the balanced sum whose text comes first, whatever GiNaC's order", "[print]") {
+TEST_CASE("Printer: a minus sign moves into the balanced sum whose text comes first, whatever GiNaC's order",
+          "[print]") {
   const possymbol m("m"), c("c"), d("d"), e("e");
   // Two sums below the line with as many positive as negative terms: (c - e) comes before
   // (d - 5) by text, so it takes the sign. GiNaC's order of the factors follows hashes

@@ -223,7 +223,8 @@ TEST_CASE("Content: the integer and monomial content, and the rest term by term 
   CHECK(big.rest.is_equal(masses));
 }
 
-TEST_CASE("Content of a product: a monomial times a long primitive sum, as content_of() of its expansion", "[rational]") {
+TEST_CASE("Content of a product: a monomial times a long primitive sum, as content_of() of its expansion",
+          "[rational]") {
   const symbol F("F"), x("x"), s("s");
   ex masses = 0;
   for (int i = 1; i <= 20; ++i) masses += symbol("m_" + std::to_string(i));
@@ -250,13 +251,13 @@ TEST_CASE("Content of a product: a monomial times a long primitive sum, as conte
   // Not that shape: nothing.
   ex short_sum = 0;
   for (int i = 1; i <= 16; ++i) short_sum += symbol("n_" + std::to_string(i));
-  CHECK_FALSE(content_of_product(F * short_sum, factor_term_limit));            // 16 terms, not more
+  CHECK_FALSE(content_of_product(F * short_sum, factor_term_limit));              // 16 terms, not more
   CHECK_FALSE(content_of_product(F * (x * masses).expand(), factor_term_limit));  // x in every term
-  CHECK_FALSE(content_of_product(F * masses * wide, factor_term_limit));        // two sums
-  CHECK_FALSE(content_of_product(sin(x) * masses, factor_term_limit));          // a function
-  CHECK_FALSE(content_of_product(masses / 3 * F, factor_term_limit));           // not an integer
-  CHECK_FALSE(content_of_product(masses, factor_term_limit));                   // not a product
-  CHECK_FALSE(content_of_product(pow(F, -1) * masses, factor_term_limit));      // a negative power
+  CHECK_FALSE(content_of_product(F * masses * wide, factor_term_limit));          // two sums
+  CHECK_FALSE(content_of_product(sin(x) * masses, factor_term_limit));            // a function
+  CHECK_FALSE(content_of_product(masses / 3 * F, factor_term_limit));             // not an integer
+  CHECK_FALSE(content_of_product(masses, factor_term_limit));                     // not a product
+  CHECK_FALSE(content_of_product(pow(F, -1) * masses, factor_term_limit));        // a negative power
 }
 
 TEST_CASE("Common monomial: the least power of each symbol that is a factor of every term", "[rational]") {
@@ -275,7 +276,8 @@ TEST_CASE("Modular: integers and exponents past 62 bits and negative ones, as CL
   const symbol x("x");
   const cln::cl_modint_ring R = cln::find_modint_ring(cln::cl_I(static_cast<unsigned long>(ModularPoint::prime)));
   const cln::cl_I two62 = cln::expt_pos(cln::cl_I(2), 62), two70 = cln::expt_pos(cln::cl_I(2), 70);
-  const std::vector<cln::cl_I> coefficients{-1, 3, -two62, two62 - 1, two62, two70 + 5, -two70, cln::cl_I(static_cast<unsigned long>(ModularPoint::prime))};
+  const std::vector<cln::cl_I> coefficients{
+      -1, 3, -two62, two62 - 1, two62, two70 + 5, -two70, cln::cl_I(static_cast<unsigned long>(ModularPoint::prime))};
   const std::vector<cln::cl_I> exponents{1, -1, 5, -7, two62 + 3, -(two70 + 1)};
   for (const auto& c : coefficients)
     for (const auto& k : exponents) {

@@ -38,8 +38,12 @@ std::vector<FigureOutline> outlines_of(const Figure& f, FigureOutline::Shape sha
   return out;
 }
 
-bool is_horizontal(const FigureLine& l) { return l.points.size() == 2 && std::fabs(l.points[0].y - l.points[1].y) < 1e-9; }
-bool is_vertical(const FigureLine& l) { return l.points.size() == 2 && std::fabs(l.points[0].x - l.points[1].x) < 1e-9; }
+bool is_horizontal(const FigureLine& l) {
+  return l.points.size() == 2 && std::fabs(l.points[0].y - l.points[1].y) < 1e-9;
+}
+bool is_vertical(const FigureLine& l) {
+  return l.points.size() == 2 && std::fabs(l.points[0].x - l.points[1].x) < 1e-9;
+}
 
 const FigureArrow* arrow(const Figure& f, const std::string& tex) {
   for (const auto& a : f.arrows)
@@ -78,7 +82,8 @@ struct SvgBoxes {
 // The text boxes and arrow shafts of an SVG that to_svg wrote, read back from its numbers.
 SvgBoxes svg_boxes(const std::string& svg) {
   SvgBoxes out;
-  const std::regex text(R"re(<text x="([-0-9.]+)" y="([-0-9.]+)" textLength="([0-9.]+)"[^>]*font-size="([0-9.]+)">(.*?)</text>)re");
+  const std::regex text(
+      R"re(<text x="([-0-9.]+)" y="([-0-9.]+)" textLength="([0-9.]+)"[^>]*font-size="([0-9.]+)">(.*?)</text>)re");
   for (auto it = std::sregex_iterator(svg.begin(), svg.end(), text); it != std::sregex_iterator(); ++it) {
     const double x = std::stod((*it)[1]), y = std::stod((*it)[2]), w = std::stod((*it)[3]), size = std::stod((*it)[4]);
     out.texts.push_back({(*it)[5], x - w / 2, x + w / 2, y - svg_ascent * size, y + svg_descent * size});
@@ -130,7 +135,8 @@ TEST_CASE("FBD: without figures (text, JSON) none is drawn and the text and JSON
     const auto a = analyze_file(std::string(TACKLE_SOURCE_DIR "/examples/") + example, test::rules());
     const Derivation with = explain(*a), without = explain(*a, ReportOptions{.figures = false});
     const auto drawn = [](const Derivation& d) {
-      return std::count_if(d.steps.begin(), d.steps.end(), [](const Step& st) { return st.kind == Step::Kind::figure; });
+      return std::count_if(d.steps.begin(), d.steps.end(),
+                           [](const Step& st) { return st.kind == Step::Kind::figure; });
     };
     CHECK(drawn(with) > 0);
     CHECK(drawn(without) == 0);
@@ -170,7 +176,10 @@ TEST_CASE("FBD: two strands under a pulley block sit to either side of its middl
   CHECK(std::fabs(xs[0] - xs[1]) > 0.3);
 }
 
-TEST_CASE("FBD: in every example no label lies on another or on an arrow, in TikZ and in SVG, and no arrow lies on an outline's edge", "[figure]") {
+TEST_CASE(
+    "FBD: in every example no label lies on another or on an arrow, in TikZ and in SVG, and no arrow lies on an "
+    "outline's edge",
+    "[figure]") {
   const std::vector<std::string> files = test::example_files();
   std::size_t drawn = 0;
   for (const auto& file : files) {
@@ -186,13 +195,15 @@ TEST_CASE("FBD: in every example no label lies on another or on an arrow, in Tik
       for (std::size_t i = 0; i < labels.size(); ++i)
         for (std::size_t k = i + 1; k < labels.size(); ++k) {
           INFO(labels[i].tex << " and " << labels[k].tex);
-          const bool apart = std::fabs(labels[i].at.x - labels[k].at.x) * 2 >= labels[i].width + labels[k].width - 1e-9 ||
-                             std::fabs(labels[i].at.y - labels[k].at.y) * 2 >= labels[i].height + labels[k].height - 1e-9;
+          const bool apart =
+              std::fabs(labels[i].at.x - labels[k].at.x) * 2 >= labels[i].width + labels[k].width - 1e-9 ||
+              std::fabs(labels[i].at.y - labels[k].at.y) * 2 >= labels[i].height + labels[k].height - 1e-9;
           CHECK(apart);
         }
       // TikZ centres each label in its box: no arrow's shaft passes through a box.
       for (const auto& l : labels) {
-        const TextBox box{l.tex, l.at.x - l.width / 2, l.at.x + l.width / 2, l.at.y - l.height / 2, l.at.y + l.height / 2};
+        const TextBox box{l.tex, l.at.x - l.width / 2, l.at.x + l.width / 2, l.at.y - l.height / 2,
+                          l.at.y + l.height / 2};
         for (const auto& x : f.arrows) {
           INFO(l.tex << " and the arrow of " << x.label.tex);
           CHECK(!box.crossed_by(x.from, x.to));
@@ -222,9 +233,10 @@ TEST_CASE("FBD: in every example no label lies on another or on an arrow, in Tik
           const double ex = q.x - p.x, ey = q.y - p.y, el = std::hypot(ex, ey);
           for (const auto& x : f.arrows) {
             const double ax = x.to.x - x.from.x, ay = x.to.y - x.from.y, al = std::hypot(ax, ay);
-            if (std::fabs(ex * ay - ey * ax) > 0.02 * el * al) continue;                       // not parallel
+            if (std::fabs(ex * ay - ey * ax) > 0.02 * el * al) continue;                         // not parallel
             if (std::fabs((x.from.x - p.x) * ey - (x.from.y - p.y) * ex) > 0.02 * el) continue;  // not on its line
-            const double t0 = ((x.from.x - p.x) * ex + (x.from.y - p.y) * ey) / el, t1 = ((x.to.x - p.x) * ex + (x.to.y - p.y) * ey) / el;
+            const double t0 = ((x.from.x - p.x) * ex + (x.from.y - p.y) * ey) / el,
+                         t1 = ((x.to.x - p.x) * ex + (x.to.y - p.y) * ey) / el;
             INFO(x.label.tex);
             CHECK((std::max(t0, t1) <= 0.05 || std::min(t0, t1) >= el - 0.05));
           }
@@ -239,7 +251,8 @@ TEST_CASE("FBD: labels in SVG keep their subscripts, Greek letters and dots", "[
   CHECK(svg_text("\\mu N_{A}") == "μ\u2009N<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>");
   // A dotted letter's text has no combining dot: the dots are drawn apart (below).
   CHECK(svg_text("m_{A} \\ddot{x}_{A}") ==
-        "m<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>\u2009x<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>");
+        "m<tspan baseline-shift=\"sub\" font-size=\"70%\">A</tspan>\u2009x<tspan baseline-shift=\"sub\" "
+        "font-size=\"70%\">A</tspan>");
   CHECK(svg_text("a < b & c") == "a\u2009&lt;\u2009b\u2009&amp;\u2009c");
   CHECK(shown_length("m_{A} \\ddot{x}_{A}") == 5);
   // The SVG: the label's text, then a small filled circle for its dot, over the theta.
@@ -248,8 +261,10 @@ TEST_CASE("FBD: labels in SVG keep their subscripts, Greek letters and dots", "[
   f.max_y = 1;
   f.texts.push_back({{1, 0.5}, "\\dot{\\theta}^{2}"});
   const std::string svg = to_svg(f);
-  CHECK(svg.find("<text x=\"40\" y=\"23.5\" textLength=\"13.3\" lengthAdjust=\"spacingAndGlyphs\" text-anchor=\"middle\" font-family=\"serif\" "
-                 "font-style=\"italic\" font-size=\"14\">θ<tspan baseline-shift=\"super\" font-size=\"70%\"><tspan font-style=\"normal\">2</tspan></tspan></text>\n"
+  CHECK(svg.find("<text x=\"40\" y=\"23.5\" textLength=\"13.3\" lengthAdjust=\"spacingAndGlyphs\" "
+                 "text-anchor=\"middle\" font-family=\"serif\" "
+                 "font-style=\"italic\" font-size=\"14\">θ<tspan baseline-shift=\"super\" font-size=\"70%\"><tspan "
+                 "font-style=\"normal\">2</tspan></tspan></text>\n"
                  "<circle cx=\"38.67\" cy=\"10.9\" r=\"1.05\" fill=\"black\"/>\n</svg>\n") != std::string::npos);
   CHECK(svg.find("\u0307") == std::string::npos);
   CHECK(to_tikz(f).find("{$\\dot{\\theta}^{2}$}") != std::string::npos);
@@ -259,16 +274,17 @@ TEST_CASE("FBD: an SVG label's dots sit over their letters, above them, in the l
   // The estimate the label is held to: theta 0.6 ems, x 0.52, A 0.7, a digit 0.5, sub- and
   // superscripts at 70 %; the text spans [x - width/2, x + width/2].
   struct Case {
-    std::string tex, plain;                  // with its dots, and without
+    std::string tex, plain;                // with its dots, and without
     double letter_from, letter_to, total;  // the dotted letter's advance, the text's (ems)
-    double top;                              // the letter's top (ems of its size; DejaVu Serif)
+    double top;                            // the letter's top (ems of its size; DejaVu Serif)
     std::size_t dots;
     double size = 1, rise = 0;  // the letter's size and baseline (ems of the label)
   };
-  const std::vector<Case> cases{{"\\dot{\\theta}^{2}", "\\theta^{2}", 0, 0.6, 0.6 + 0.7 * 0.5, 0.77, 1},
-                                {"\\ddot{x}_{A}", "x_{A}", 0, 0.52, 0.52 + 0.7 * 0.7, 0.55, 2},
-                                {"m \\ddot{\\theta}", "m \\theta", 0.85 + 0.17, 0.85 + 0.17 + 0.6, 0.85 + 0.17 + 0.6, 0.77, 2},
-                                {"v_{\\dot{s}}", "v_{s}", 0.52, 0.52 + 0.7 * 0.52, 0.52 + 0.7 * 0.52, 0.55, 1, 0.7, -0.4}};
+  const std::vector<Case> cases{
+      {"\\dot{\\theta}^{2}", "\\theta^{2}", 0, 0.6, 0.6 + 0.7 * 0.5, 0.77, 1},
+      {"\\ddot{x}_{A}", "x_{A}", 0, 0.52, 0.52 + 0.7 * 0.7, 0.55, 2},
+      {"m \\ddot{\\theta}", "m \\theta", 0.85 + 0.17, 0.85 + 0.17 + 0.6, 0.85 + 0.17 + 0.6, 0.77, 2},
+      {"v_{\\dot{s}}", "v_{s}", 0.52, 0.52 + 0.7 * 0.52, 0.52 + 0.7 * 0.52, 0.55, 1, 0.7, -0.4}};
   for (const auto& c : cases) {
     INFO(c.tex);
     FigureLabel l;
@@ -296,7 +312,7 @@ TEST_CASE("FBD: an SVG label's dots sit over their letters, above them, in the l
       CHECK(d.x + d.r < left + c.letter_to * across);
       CHECK(d.y - d.r > b.baseline + (c.rise + c.size * c.top) * b.font_size);  // above its top
       CHECK(d.y + d.r < b.baseline + (c.rise + c.size * 1.1) * b.font_size);    // and not far
-      CHECK(std::fabs(d.r - 0.075 * em) < 1e-12);  // smaller over a subscript
+      CHECK(std::fabs(d.r - 0.075 * em) < 1e-12);                               // smaller over a subscript
       CHECK(std::fabs(d.y - b.dots[0].y) < 1e-12);
     }
     // Centred over the letter, leaning right a little as the italic letter does.
@@ -306,7 +322,9 @@ TEST_CASE("FBD: an SVG label's dots sit over their letters, above them, in the l
   }
 }
 
-TEST_CASE("FBD: an SVG label is centred in its box and no wider or higher than it, and TikZ scales its label into the box", "[figure]") {
+TEST_CASE(
+    "FBD: an SVG label is centred in its box and no wider or higher than it, and TikZ scales its label into the box",
+    "[figure]") {
   FigureLabel l;
   l.at = {2, 3};
   l.height = 0.42;
@@ -338,7 +356,8 @@ TEST_CASE("FBD: a description draws a body as it says", "[figure]") {
   REQUIRE(figs.size() == 1);
   REQUIRE(figs[0].outlines[0].shape == FigureOutline::Shape::circle);
   // The drawn circle's diameter is l, the distance from A to B.
-  const double ab = std::hypot(dot_named(figs[0], "A").x - dot_named(figs[0], "B").x, dot_named(figs[0], "A").y - dot_named(figs[0], "B").y);
+  const double ab = std::hypot(dot_named(figs[0], "A").x - dot_named(figs[0], "B").x,
+                               dot_named(figs[0], "A").y - dot_named(figs[0], "B").y);
   CHECK(std::fabs(2 * figs[0].outlines[0].radius - ab) < 1e-9);
 }
 
@@ -348,11 +367,14 @@ TEST_CASE("FBD: a wrong 'draw' is located", "[figure][errors]") {
                                               "center_of_mass: [l/2, h], draw: " + draw + ","));
   };
   CHECK(errors("{shape: blob, size: [l]}") ==
-        std::vector<std::string>{"t.yaml:24:63: 'draw' of body 'suitcase' has shape 'blob' (expected rectangle or circle)"});
+        std::vector<std::string>{
+            "t.yaml:24:63: 'draw' of body 'suitcase' has shape 'blob' (expected rectangle or circle)"});
   CHECK(errors("{shape: rectangle, size: [l]}") ==
-        std::vector<std::string>{"t.yaml:24:80: 'draw' of body 'suitcase': 'size' has 1 entries (expected 2: [width, height])"});
+        std::vector<std::string>{
+            "t.yaml:24:80: 'draw' of body 'suitcase': 'size' has 1 entries (expected 2: [width, height])"});
   CHECK(errors("{shape: circle, size: [-l]}") ==
-        std::vector<std::string>{"t.yaml:24:78: 'draw' of body 'suitcase': size '-l' is not a positive length with the given values"});
+        std::vector<std::string>{
+            "t.yaml:24:78: 'draw' of body 'suitcase': size '-l' is not a positive length with the given values"});
   CHECK(errors("{shape: circle}") ==
         std::vector<std::string>{"t.yaml:24:63: 'draw' of body 'suitcase' has no 'size' (expected [diameter])"});
 }
@@ -371,7 +393,8 @@ TEST_CASE("FBD: a problem in symbols only is drawn, a couple as an arc with its 
   CHECK(t->to.y > t->from.y);
 }
 
-TEST_CASE("Sketch: the Atwood machine hangs from the ceiling over one sheave, its strands tangent to it", "[figure][sketch]") {
+TEST_CASE("Sketch: the Atwood machine hangs from the ceiling over one sheave, its strands tangent to it",
+          "[figure][sketch]") {
   const auto f = sketch_of("atwood-machine.yaml");
   REQUIRE(f);
   CHECK(f->sketch);
@@ -389,7 +412,8 @@ TEST_CASE("Sketch: the Atwood machine hangs from the ceiling over one sheave, it
   // Two vertical strands leave the sheave's sides at its centre's height, one to each block.
   std::vector<double> xs;
   for (const auto& l : f->lines)
-    if (!l.thin && is_vertical(l) && std::fabs(std::max(l.points[0].y, l.points[1].y) - c.centre.y) < 1e-9) xs.push_back(l.points[0].x);
+    if (!l.thin && is_vertical(l) && std::fabs(std::max(l.points[0].y, l.points[1].y) - c.centre.y) < 1e-9)
+      xs.push_back(l.points[0].x);
   std::sort(xs.begin(), xs.end());
   REQUIRE(xs.size() == 2);
   CHECK(std::fabs(xs[0] - (c.centre.x - c.radius)) < 1e-9);
@@ -434,14 +458,17 @@ TEST_CASE("Sketch: springs are coiled, a damper is a dashpot, the walls are hatc
   CHECK(outlines_of(*f, FigureOutline::Shape::circle).empty());
   // Three springs as zigzags (many points each), the two walls as vertical lines at W and V.
   CHECK(std::count_if(f->lines.begin(), f->lines.end(), [](const FigureLine& l) { return l.points.size() > 6; }) == 3);
-  CHECK(std::count_if(f->lines.begin(), f->lines.end(), [](const FigureLine& l) { return !l.thin && is_vertical(l) && std::fabs(l.points[0].y - l.points[1].y) > 1; }) == 2);
+  CHECK(std::count_if(f->lines.begin(), f->lines.end(), [](const FigureLine& l) {
+          return !l.thin && is_vertical(l) && std::fabs(l.points[0].y - l.points[1].y) > 1;
+        }) == 2);
   // The dashpot's cylinder: four points, open towards the wall V.
   CHECK(std::count_if(f->lines.begin(), f->lines.end(), [](const FigureLine& l) { return l.points.size() == 4; }) == 1);
 }
 
-TEST_CASE("Sketch: 1-D mechanisms with a string, spring or damper are sketched, 2-D ones all, 3-D ones not", "[figure][sketch]") {
-  CHECK(sketch_of("sample-12.7-suitcase.yaml"));      // 2-D
-  CHECK(!sketch_of("sample-12.8-sign-board.yaml"));   // 3-D
+TEST_CASE("Sketch: 1-D mechanisms with a string, spring or damper are sketched, 2-D ones all, 3-D ones not",
+          "[figure][sketch]") {
+  CHECK(sketch_of("sample-12.7-suitcase.yaml"));     // 2-D
+  CHECK(!sketch_of("sample-12.8-sign-board.yaml"));  // 3-D
   CHECK(!sketch_of("box-in-a-truck-system.yaml"));   // 1-D, nothing between the bodies to draw
   CHECK(sketch_of("sample-12.1-towing.yaml"));       // a tow rope
   // In a derivation it opens the model, before the free body diagrams.
@@ -512,13 +539,15 @@ bool a_line_ends_at(const Figure& f, FigurePoint p, double tol = 1e-6) {
 // Whether some drawn line ends on the outline's edge.
 bool a_line_ends_on(const Figure& f, const FigureOutline& o) {
   return std::any_of(f.lines.begin(), f.lines.end(), [&](const FigureLine& l) {
-    return !l.thin && (fig::boundary_distance(o, fig::vp(l.points.front())) < 1e-3 || fig::boundary_distance(o, fig::vp(l.points.back())) < 1e-3);
+    return !l.thin && (fig::boundary_distance(o, fig::vp(l.points.front())) < 1e-3 ||
+                       fig::boundary_distance(o, fig::vp(l.points.back())) < 1e-3);
   });
 }
 
 }  // namespace
 
-TEST_CASE("Sketch: every 2-D example is sketched, of a sensible size, its strings ending at their points", "[figure][sketch]") {
+TEST_CASE("Sketch: every 2-D example is sketched, of a sensible size, its strings ending at their points",
+          "[figure][sketch]") {
   const std::vector<std::string> files = test::example_files();
   std::size_t plane = 0;
   for (const auto& file : files) {
@@ -591,7 +620,8 @@ TEST_CASE("Sketch: the incline at its angle, the pulley at its top, the hanging 
   // The strand from P down to B is vertical, tangent to the pulley's right side.
   const double x = P->x + sheaves[0].radius;
   CHECK(std::any_of(f->lines.begin(), f->lines.end(), [&](const FigureLine& l) {
-    return !l.thin && is_vertical(l) && std::fabs(l.points[0].x - x) < 1e-9 && std::fabs(std::max(l.points[0].y, l.points[1].y) - P->y) < 1e-9 &&
+    return !l.thin && is_vertical(l) && std::fabs(l.points[0].x - x) < 1e-9 &&
+           std::fabs(std::max(l.points[0].y, l.points[1].y) - P->y) < 1e-9 &&
            std::fabs(std::min(l.points[0].y, l.points[1].y) - by1) < 1e-9;
   }));
 }
@@ -605,8 +635,12 @@ TEST_CASE("Sketch: the ladder stands on the floor against the wall, its angle ma
   // theta = 60 degrees: B up and to the right of A, at 60 degrees.
   CHECK(std::fabs(std::atan2(B->y - A->y, B->x - A->x) - M_PI / 3) < 1e-9);
   // A floor through the ladder's foot (below A by its half thickness at most) and a wall at B.
-  auto horizontal_below = [&](const FigureLine& l) { return !l.thin && is_horizontal(l) && l.points[0].y <= A->y + 1e-9 && l.points[0].y > A->y - 0.2; };
-  auto vertical_beside = [&](const FigureLine& l) { return !l.thin && is_vertical(l) && l.points[0].x >= B->x - 1e-9 && l.points[0].x < B->x + 0.2; };
+  auto horizontal_below = [&](const FigureLine& l) {
+    return !l.thin && is_horizontal(l) && l.points[0].y <= A->y + 1e-9 && l.points[0].y > A->y - 0.2;
+  };
+  auto vertical_beside = [&](const FigureLine& l) {
+    return !l.thin && is_vertical(l) && l.points[0].x >= B->x - 1e-9 && l.points[0].x < B->x + 0.2;
+  };
   CHECK(std::count_if(f->lines.begin(), f->lines.end(), horizontal_below) == 1);
   CHECK(std::count_if(f->lines.begin(), f->lines.end(), vertical_beside) == 1);
   CHECK(std::any_of(f->texts.begin(), f->texts.end(), [](const FigureLabel& l) { return l.tex == "\\theta"; }));
@@ -636,12 +670,14 @@ TEST_CASE("Sheet: each variant's figures are drawn at its own numbers", "[figure
     return 0.0;
   };
   // The seed draws two suitcases of different proportions (l wide, 2 h high).
-  const double r0 = value(variants[0], "l") / (2 * value(variants[0], "h")), r1 = value(variants[1], "l") / (2 * value(variants[1], "h"));
+  const double r0 = value(variants[0], "l") / (2 * value(variants[0], "h")),
+               r1 = value(variants[1], "l") / (2 * value(variants[1], "h"));
   REQUIRE(std::fabs(r0 - r1) > 0.01);
   const std::vector<SheetEntry> entries{{&d, &a->model, variants}};
   const auto problems = writers::sheet_problems(entries);
   REQUIRE(problems.size() == 2);
-  std::vector<std::vector<Step>> figures{writers::sheet_figures(problems[0], true), writers::sheet_figures(problems[1], true)};
+  std::vector<std::vector<Step>> figures{writers::sheet_figures(problems[0], true),
+                                         writers::sheet_figures(problems[1], true)};
   for (std::size_t k = 0; k < 2; ++k) {
     INFO("variant " << k + 1);
     REQUIRE(figures[k].size() == 2);  // the sketch and the free body diagram
@@ -651,7 +687,8 @@ TEST_CASE("Sheet: each variant's figures are drawn at its own numbers", "[figure
     const FigureOutline* o = outline_named(*figures[k][0].figure, "suitcase");
     REQUIRE(o);
     double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-    for (const auto& c : o->corners) x0 = std::min(x0, c.x), x1 = std::max(x1, c.x), y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
+    for (const auto& c : o->corners)
+      x0 = std::min(x0, c.x), x1 = std::max(x1, c.x), y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
     CHECK(std::fabs((x1 - x0) / (y1 - y0) - (k == 0 ? r0 : r1)) < 1e-9);
   }
   // So the two variants' figures differ, and the sheet shows each one's.
@@ -670,11 +707,13 @@ namespace {
 
 // What lies between the last `open` before each `picture` in the text and the first `close`
 // after it (empty where either is missing, or where the box before it closes after `open`).
-std::vector<std::string> boxes_around(const std::string& text, const std::string& picture, const std::string& open, const std::string& close) {
+std::vector<std::string> boxes_around(const std::string& text, const std::string& picture, const std::string& open,
+                                      const std::string& close) {
   std::vector<std::string> out;
   for (std::size_t at = text.find(picture); at != std::string::npos; at = text.find(picture, at + 1)) {
     const std::size_t from = text.rfind(open, at), to = text.find(close, at), before = text.rfind(close, at);
-    const bool whole = from != std::string::npos && to != std::string::npos && (before == std::string::npos || before < from);
+    const bool whole =
+        from != std::string::npos && to != std::string::npos && (before == std::string::npos || before < from);
     out.push_back(whole ? text.substr(from, to - from) : "");
   }
   return out;
@@ -682,7 +721,10 @@ std::vector<std::string> boxes_around(const std::string& text, const std::string
 
 }  // namespace
 
-TEST_CASE("Figures: a caption stays with its figure, in latex in one minipage that a page never splits, in html in one figure element", "[figure][sheet]") {
+TEST_CASE(
+    "Figures: a caption stays with its figure, in latex in one minipage that a page never splits, in html in one "
+    "figure element",
+    "[figure][sheet]") {
   const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/incline-and-hanging-block.yaml", test::rules());
   const Derivation d = explain(*a);
   const auto captions = writers::figures_of(d, true);
@@ -702,8 +744,10 @@ TEST_CASE("Figures: a caption stays with its figure, in latex in one minipage th
   }
   // HTML: each drawing and its caption in one <figure>.
   for (const std::string& html : {write(d, Format::html, true), write_sheet(entries, Format::html, true)}) {
-    const auto boxes = boxes_around(html, "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"fbd\"", "<figure>", "</figure>");
+    const auto boxes =
+        boxes_around(html, "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"fbd\"", "<figure>", "</figure>");
     REQUIRE(boxes.size() == captions.size());
-    for (std::size_t k = 0; k < boxes.size(); ++k) CHECK(boxes[k].find("<figcaption>" + captions[k]->text + "</figcaption>") != std::string::npos);
+    for (std::size_t k = 0; k < boxes.size(); ++k)
+      CHECK(boxes[k].find("<figcaption>" + captions[k]->text + "</figcaption>") != std::string::npos);
   }
 }

@@ -60,7 +60,8 @@ TEST_CASE("Kinematics: kinetic energy, its rate and a load's power include the t
   const Turning t;
   CHECK(same(kinematics::kinetic_energy(t.m, t.body(), [](const ex& e) { return e; }),
              t.M * pow(t.xd, 2) / 2 + t.I * pow(t.thd, 2) / 2));
-  CHECK(same(kinematics::kinetic_energy_rate(t.m, t.body(), {t.xd, 0, 0}, t.thd), t.M * t.xd * t.xdd + t.I * t.thd * t.thdd));
+  CHECK(same(kinematics::kinetic_energy_rate(t.m, t.body(), {t.xd, 0, 0}, t.thd),
+             t.M * t.xd * t.xdd + t.I * t.thd * t.thdd));
   Load l;
   l.body = 0;
   const symbol F("F"), C("C");

@@ -143,8 +143,8 @@ TEST_CASE("Given: with a motion, a value in the parameters is the number it come
   // The pendulum at 30 deg with dot(theta) = sqrt(g/l) = 3.13209 rad/s: by hand T = m (g
   // cos(theta) + l dot(theta)^2) = 9.81 (0.866025 + 1) = 18.3056 N. The motion, which starts
   // from its own 'initial', keeps its coordinates free of the instant's values.
-  const auto a = test::run_text(test::example_with("rotation-pendulum.yaml", "dot(theta): {value: 2, unit: rad/s}",
-                                                   "dot(theta): sqrt(g/l)"));
+  const auto a = test::run_text(
+      test::example_with("rotation-pendulum.yaml", "dot(theta): {value: 2, unit: rad/s}", "dot(theta): sqrt(g/l)"));
   const SymbolInfo* rate = a->model.symbols->find("dot(theta)");
   REQUIRE(rate->value);
   CHECK_FALSE(rate->definition);
@@ -152,10 +152,12 @@ TEST_CASE("Given: with a motion, a value in the parameters is the number it come
   const Derivation d = explain(*a);
   REQUIRE(d.answers[1].value);
   CHECK(d.answers[1].value->approx == Approx(18.3056).epsilon(1e-5));
-  const std::string symbolic = test::example_with("rotation-pendulum.yaml", "  l: {value: 1, unit: m}", "  l: {value: 1, unit: m}\n  w: {unit: rad/s}");
+  const std::string symbolic = test::example_with("rotation-pendulum.yaml", "  l: {value: 1, unit: m}",
+                                                  "  l: {value: 1, unit: m}\n  w: {unit: rad/s}");
   CHECK(test::errors_of(std::string(symbolic).replace(symbolic.find("{value: 2, unit: rad/s}"), 23, "w")) ==
-        Messages{"t.yaml:31:52: 'given' value of 'dot(theta)': with a 'motion', the instant's given values are numbers, and "
-                 "w has no value (expected a value for it in 'parameters')"});
+        Messages{
+            "t.yaml:31:52: 'given' value of 'dot(theta)': with a 'motion', the instant's given values are numbers, and "
+            "w has no value (expected a value for it in 'parameters')"});
 }
 
 TEST_CASE("Given: a value must be a number in a unit of the quantity", "[given][errors]") {
@@ -168,13 +170,16 @@ TEST_CASE("Given: a value must be a number in a unit of the quantity", "[given][
         Messages{"t.yaml:21:24: 'x' is a length, but kg is a mass"});
   CHECK(with("x: {value: -4, unit: m}", "x: {value: k, unit: m}") ==
         Messages{"t.yaml:21:14: 'given' value of 'x': unknown name 'k' (known: m, M, h, g, t, x, y, N_C, T, l_CP)"});
-  CHECK(with("x: {value: -4, unit: m}", "x: {value: T, unit: m}") ==
-        Messages{"t.yaml:21:14: 'given' value of 'x': 'T' is not a parameter (expected a number or an expression in the "
-                 "parameters)"});
+  CHECK(
+      with("x: {value: -4, unit: m}", "x: {value: T, unit: m}") ==
+      Messages{"t.yaml:21:14: 'given' value of 'x': 'T' is not a parameter (expected a number or an expression in the "
+               "parameters)"});
   CHECK(with("x: {value: -4, unit: m}", "x: g") ==
         Messages{"t.yaml:21:6: 'given' value of 'x' is an acceleration (expected a length)"});
-  CHECK(with("x: {value: -4, unit: m}", "x: sqrt(-h)") ==
-        Messages{"t.yaml:21:6: 'given' value of 'x' is not a real number (expected a real value at the parameters' values)"});
+  CHECK(
+      with("x: {value: -4, unit: m}", "x: sqrt(-h)") ==
+      Messages{
+          "t.yaml:21:6: 'given' value of 'x' is not a real number (expected a real value at the parameters' values)"});
   CHECK(with("x: {value: -4, unit: m}", "x: {unit: m}") ==
         Messages{"t.yaml:21:13: 'given' value of 'x' has a 'unit' but no 'value'"});
   CHECK(with("x: {value: -4, unit: m}", "x: {value: -4, units: m}") ==
@@ -185,11 +190,12 @@ TEST_CASE("Given: a value must be a number in a unit of the quantity", "[given][
 
 TEST_CASE("Pulley: a radius drops out while the strands keep their directions, and says so", "[path][pulley]") {
   const std::string plain = test::read_example("incline-and-hanging-block.yaml");
-  const std::string with_radius = test::example_with("incline-and-hanging-block.yaml", "{type: pulley, at: P}",
-                                                     "{type: pulley, at: P, radius: r}") ;
-  const auto a = test::run_text(plain), b = test::run_text(std::string(with_radius).replace(
-                                                with_radius.find("  L: {value: 2, unit: m}\n"), 24,
-                                                "  L: {value: 2, unit: m}\n  r: {value: 0.05, unit: m}\n"));
+  const std::string with_radius =
+      test::example_with("incline-and-hanging-block.yaml", "{type: pulley, at: P}", "{type: pulley, at: P, radius: r}");
+  const auto a = test::run_text(plain),
+             b = test::run_text(std::string(with_radius)
+                                    .replace(with_radius.find("  L: {value: 2, unit: m}\n"), 24,
+                                             "  L: {value: 2, unit: m}\n  r: {value: 0.05, unit: m}\n"));
   const Derivation da = explain(*a), db = explain(*b);
   REQUIRE(da.answers.size() == db.answers.size());
   for (std::size_t i = 0; i < da.answers.size(); ++i) {
@@ -203,30 +209,35 @@ TEST_CASE("Pulley: a radius drops out while the strands keep their directions, a
   CHECK(a->model.assumptions.size() + 1 == said.size());
 }
 
-TEST_CASE("Pulley: a radius where a strand turns, or a radius that is not positive, is an error", "[path][pulley][errors]") {
+TEST_CASE("Pulley: a radius where a strand turns, or a radius that is not positive, is an error",
+          "[path][pulley][errors]") {
   std::string text = raised_pulley + "find: [T]\n";
   text.replace(text.find("{type: pulley, at: P}"), 21, "{type: pulley, at: P, radius: r}");
   text.replace(text.find("  g: {value"), 0, "  r: {value: 0.1, unit: m}\n");
-  CHECK(test::errors_of(text) ==
-        Messages{"t.yaml:17:5: strand C-P at point 'P' of a 'pulley' connection turns as the bodies move, so the length "
-                 "wrapped on it would change (expected strands that keep their directions there, or the pulley as a "
-                 "point: no 'radius')"});
+  CHECK(
+      test::errors_of(text) ==
+      Messages{"t.yaml:17:5: strand C-P at point 'P' of a 'pulley' connection turns as the bodies move, so the length "
+               "wrapped on it would change (expected strands that keep their directions there, or the pulley as a "
+               "point: no 'radius')"});
   text.replace(text.find("r: {value: 0.1, unit: m}"), 24, "r: {value: -0.1, unit: m, positive: false}");
-  CHECK(test::errors_of(text) ==
-        Messages{"t.yaml:17:5: strand C-P at point 'P' of a 'pulley' connection turns as the bodies move, so the length "
-                 "wrapped on it would change (expected strands that keep their directions there, or the pulley as a "
-                 "point: no 'radius')",
-                 "t.yaml:17:35: 'radius' of a 'pulley' connection is r = -0.1 m (expected a positive value)"});
+  CHECK(
+      test::errors_of(text) ==
+      Messages{"t.yaml:17:5: strand C-P at point 'P' of a 'pulley' connection turns as the bodies move, so the length "
+               "wrapped on it would change (expected strands that keep their directions there, or the pulley as a "
+               "point: no 'radius')",
+               "t.yaml:17:35: 'radius' of a 'pulley' connection is r = -0.1 m (expected a positive value)"});
 }
 
 TEST_CASE("Path: a string over a fixed point that nothing holds is an error", "[path][errors]") {
   std::string text = raised_pulley + "find: [T]\n";
   text.replace(text.find("  - {type: pulley, at: P}\n"), 26, "");
   CHECK(test::errors_of(text) ==
-        Messages{"t.yaml:17:5: the path of a 'string' connection 's' runs over point 'P', which nothing holds (expected a "
-                 "pulley there: {type: pulley, at: P})"});
+        Messages{
+            "t.yaml:17:5: the path of a 'string' connection 's' runs over point 'P', which nothing holds (expected a "
+            "pulley there: {type: pulley, at: P})"});
   // A point on a body holds the string itself (a ring on the block).
-  const std::string ring = test::example_with("figure-12.5d-motion-doubled.yaml", "connections:\n  - {type: pulley, at: B}\n", "");
+  const std::string ring =
+      test::example_with("figure-12.5d-motion-doubled.yaml", "connections:\n  - {type: pulley, at: B}\n", "");
   CHECK(test::errors_of(ring).empty());
 }
 
@@ -274,7 +285,8 @@ connections:
   - {type: roller, body: A, at: R, normal: [0, 1]}
   - {type: roller, body: A, at: S, normal: [0, 1]}
   - {type: force, on: A, at: A, force: [F, 0]}
-)" + joint + rest;
+)" + joint +
+         rest;
 }
 
 }  // namespace
@@ -295,7 +307,8 @@ TEST_CASE("Joints: a weld between two moving bodies carries a force and a couple
   // M_W = -h W_x - (x_A - b - x_B) W_y in general (W is below B's center in the layout).
   const auto& t = *a->model.symbols;
   auto s = [&](const char* n) { return t.find(n)->sym; };
-  const ex expected = s("h") * s("m_B") * s("F") / (s("m_A") + s("m_B")) + s("m_B") * s("g") * (s("x_A") - s("b") - s("x_B"));
+  const ex expected =
+      s("h") * s("m_B") * s("F") / (s("m_A") + s("m_B")) + s("m_B") * s("g") * (s("x_A") - s("b") - s("x_B"));
   CHECK(normal(*d.answers[3].closed_form - expected).is_zero());
   CHECK(d.answers[3].value->decimal == "1");
 }
@@ -422,13 +435,18 @@ motion:
   CHECK(to_text(a->model.layout.at(a->model.symbols->find("x")->sym)) == "1/2");
   REQUIRE(a->model.motion->until);
   CHECK(to_text(*a->model.motion->until) == "3");
-  auto with = [&](const std::string& from, const std::string& to) { return test::errors_of(std::string(text).replace(text.find(from), from.size(), to)); };
-  CHECK(with("until: 2*T_0", "until: 2*L") == Messages{"t.yaml:19:10: 'until' of 'motion' is a length (expected a time)"});
+  auto with = [&](const std::string& from, const std::string& to) {
+    return test::errors_of(std::string(text).replace(text.find(from), from.size(), to));
+  };
+  CHECK(with("until: 2*T_0", "until: 2*L") ==
+        Messages{"t.yaml:19:10: 'until' of 'motion' is a length (expected a time)"});
   CHECK(with("layout: {x: L/4}", "layout: {x: a}") ==
         Messages{"t.yaml:13:5: cannot tell the direction of strand A-P of spring (give 'layout' values for x)",
                  "t.yaml:14:13: layout value of 'x': 'a' has no value (expected a number, or parameters with values)"});
-  CHECK(with("layout: {x: L/4}", "layout: {x: ddot(x)}") ==
-        Messages{"t.yaml:13:5: cannot tell the direction of strand A-P of spring (give 'layout' values for x)",
-                 "t.yaml:14:13: layout value of 'x': 'ddot(x)' is not a parameter (expected a number or an expression in the "
-                 "parameters)"});
+  CHECK(
+      with("layout: {x: L/4}", "layout: {x: ddot(x)}") ==
+      Messages{
+          "t.yaml:13:5: cannot tell the direction of strand A-P of spring (give 'layout' values for x)",
+          "t.yaml:14:13: layout value of 'x': 'ddot(x)' is not a parameter (expected a number or an expression in the "
+          "parameters)"});
 }

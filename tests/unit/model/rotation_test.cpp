@@ -23,7 +23,8 @@ ex sym(const Analysis& a, const std::string& name) { return a.model.symbols->fin
 TEST_CASE("Rotation: a bar pinned at its end, AMB about the pin reads m L^2/3 ddot(theta)", "[rotation]") {
   // By hand: about O, r_G x m a_G = m L^2/4 ddot(theta) and I_G alpha = m L^2/12 ddot(theta);
   // gravity's moment -(L/2) m g cos(theta).
-  const auto a = run_text(read_example("rotation-bar-released-from-horizontal.yaml") + "derive:\n  - {amb: bar, about: O}\n");
+  const auto a =
+      run_text(read_example("rotation-bar-released-from-horizontal.yaml") + "derive:\n  - {amb: bar, about: O}\n");
   REQUIRE(a->system.equations.size() == 1);
   const Equation& amb = a->system.equations[0];
   const ex m = sym(*a, "m"), L = sym(*a, "L"), g = sym(*a, "g"), th = sym(*a, "theta"), thdd = sym(*a, "ddot(theta)");
@@ -37,7 +38,8 @@ TEST_CASE("Rotation: a point on a turning body turns with it", "[rotation]") {
   std::string text = read_example("rotation-bar-released-from-horizontal.yaml");
   text.replace(text.find("  O: [0, 0]"), 11, "  O: [0, 0]\n  E: {on: bar, offset: [\"L/2\", 0]}");
   const auto a = run_text(text);
-  const auto e = std::find_if(a->model.points.begin(), a->model.points.end(), [](const Point& p) { return p.name == "E"; });
+  const auto e =
+      std::find_if(a->model.points.begin(), a->model.points.end(), [](const Point& p) { return p.name == "E"; });
   REQUIRE(e != a->model.points.end());
   const ex L = sym(*a, "L"), th = sym(*a, "theta");
   CHECK(same(e->position[0], L * cos(th)));
@@ -53,9 +55,12 @@ parameters:
   a: {value: 0.3, unit: m}
 bodies:
 )";
-  const std::vector<std::pair<std::string, std::string>> cases = {
-      {"{disk: R}", "m*R^2/2"}, {"{ring: R}", "m*R^2"}, {"{rod: a}", "m*a^2/12"},
-      {"{sphere: R}", "2*m*R^2/5"}, {"{box: [a, R]}", "m*(a^2 + R^2)/12"}, {"point", "0"}};
+  const std::vector<std::pair<std::string, std::string>> cases = {{"{disk: R}", "m*R^2/2"},
+                                                                  {"{ring: R}", "m*R^2"},
+                                                                  {"{rod: a}", "m*a^2/12"},
+                                                                  {"{sphere: R}", "2*m*R^2/5"},
+                                                                  {"{box: [a, R]}", "m*(a^2 + R^2)/12"},
+                                                                  {"point", "0"}};
   for (const auto& [shape, formula] : cases) {
     const auto an = run_text(base + "  w: {mass: m, angle: phi, center_of_mass: [0, 0], shape: " + shape + "}\n");
     const auto expected = parse_expression(formula, *an->model.symbols);
@@ -63,11 +68,13 @@ bodies:
     CHECK(same(an->model.bodies[0].inertia, *expected.value));
   }
   CHECK(errors_of(base + "  w: {mass: m, angle: phi, center_of_mass: [0, 0], shape: {cone: R}}\n") ==
-        std::vector<std::string>{"t.yaml:8:60: unknown shape 'cone' of body 'w' (expected one of: point, disk, ring, rod, sphere, box)"});
+        std::vector<std::string>{
+            "t.yaml:8:60: unknown shape 'cone' of body 'w' (expected one of: point, disk, ring, rod, sphere, box)"});
   CHECK(errors_of(base + "  w: {mass: m, angle: phi, center_of_mass: [0, 0], shape: {box: [a]}}\n") ==
         std::vector<std::string>{"t.yaml:8:60: shape 'box' of body 'w' has 1 size (expected 2 lengths)"});
   CHECK(errors_of(base + "  w: {mass: m, angle: phi, center_of_mass: [0, 0], inertia: m*R, shape: point}\n") ==
-        std::vector<std::string>{"t.yaml:8:61: body 'w' has both 'inertia' and 'shape' (the shape gives the moment of inertia; give one)"});
+        std::vector<std::string>{
+            "t.yaml:8:61: body 'w' has both 'inertia' and 'shape' (the shape gives the moment of inertia; give one)"});
   CHECK(errors_of(base + "  w: {mass: m, angle: phi, center_of_mass: [0, 0], inertia: m*R}\n") ==
         std::vector<std::string>{"t.yaml:8:61: 'inertia' of body 'w' is a mass length (expected a moment of inertia)"});
 }
@@ -76,8 +83,9 @@ TEST_CASE("Rotation: an angle is for 2-D problems and needs a center of mass", "
   CHECK(errors_of("title: t\naxes: [x]\nbodies:\n  A: {mass: 0, position: x, angle: phi}\n") ==
         std::vector<std::string>{"t.yaml:4:36: body 'A': 'angle' is for 2-D problems (a body turns in the plane)"});
   CHECK(errors_of("title: t\naxes: [x, y]\nbodies:\n  A: {mass: 0, angle: phi}\n") ==
-        std::vector<std::string>{"t.yaml:4:23: body 'A' has an 'angle' but no 'center_of_mass' (expected its center of mass, "
-                                 "fixed or written in its coordinates)"});
+        std::vector<std::string>{
+            "t.yaml:4:23: body 'A' has an 'angle' but no 'center_of_mass' (expected its center of mass, "
+            "fixed or written in its coordinates)"});
 }
 
 TEST_CASE("Rotation: a pendulum released from 60 deg swings with the elliptic-integral period", "[rotation][motion]") {
@@ -113,10 +121,12 @@ TEST_CASE("Rotation: an initial angle may be given with its unit", "[rotation][m
   CHECK(same(a->model.motion->initial.at(sym(*a, "theta")), Pi / 3));
   std::string wrong = text;
   wrong.replace(wrong.find("{value: 60, unit: deg}"), 22, "{value: 60, unit: m}");
-  CHECK(errors_of(wrong) == std::vector<std::string>{"t.yaml:33:38: initial value of 'theta' is a pure number, but m is a length"});
+  CHECK(errors_of(wrong) ==
+        std::vector<std::string>{"t.yaml:33:38: initial value of 'theta' is a pure number, but m is a length"});
 }
 
-TEST_CASE("Rotation: a string that grips a pulley winds on by R dphi, and each side pulls with its own tension", "[rotation][string]") {
+TEST_CASE("Rotation: a string that grips a pulley winds on by R dphi, and each side pulls with its own tension",
+          "[rotation][string]") {
   // By hand (the example's notes): y_1 + R phi and y_2 - R phi are constant; AMB of the disk
   // R T_1 - R T_2 = (M R^2/2) ddot(phi).
   const auto a = run_text(read_example("rotation-atwood-massive-pulley.yaml"));
@@ -141,23 +151,27 @@ TEST_CASE("Rotation: a strand that does not leave the rim along a tangent is ref
   // along the radius.
   text.replace(text.find("E: {on: P, offset: [R, 0]"), 25, "E: {on: P, offset: [0, \"-R\"]");
   text.replace(text.find("center_of_mass: [R, y_2]"), 24, "center_of_mass: [0, y_2]");
-  CHECK(errors_of(text) == std::vector<std::string>{
-                               "t.yaml:35:5: the strand block_2-E of string s_2 does not leave body 'P' along a tangent at 'E' (a "
-                               "string winds on a turning body where it leaves the rim at right angles to the radius; expected "
-                               "the strand at right angles to the offset 0, -R)"});
+  CHECK(errors_of(text) ==
+        std::vector<std::string>{
+            "t.yaml:35:5: the strand block_2-E of string s_2 does not leave body 'P' along a tangent at 'E' (a "
+            "string winds on a turning body where it leaves the rim at right angles to the radius; expected "
+            "the strand at right angles to the offset 0, -R)"});
 }
 
 TEST_CASE("Rotation: 'turns: false' is for a point of a body that turns", "[rotation][errors]") {
   CHECK(errors_of("title: t\naxes: [x, y]\nbodies:\n  A: {mass: 0, position: x, center_of_mass: [x, 0]}\npoints:\n"
                   "  C: {on: A, offset: [0, 1], turns: false}\n") ==
-        std::vector<std::string>{"t.yaml:6:37: point 'C' has 'turns: false', but body 'A' does not turn (expected a body with an 'angle')"});
-  CHECK(errors_of("title: t\naxes: [x, y]\nbodies:\n  A: {mass: 0, position: x, center_of_mass: [x, 0]}\npoints:\n"
-                  "  C: {at: [0, 1], turns: no}\n") ==
-        std::vector<std::string>{"t.yaml:6:26: 'turns' of point 'C' is 'no' (expected true or false)",
-                                 "t.yaml:6:26: 'turns' of point 'C' needs 'on' (only a point on a body turns with it)"});
+        std::vector<std::string>{
+            "t.yaml:6:37: point 'C' has 'turns: false', but body 'A' does not turn (expected a body with an 'angle')"});
+  CHECK(
+      errors_of("title: t\naxes: [x, y]\nbodies:\n  A: {mass: 0, position: x, center_of_mass: [x, 0]}\npoints:\n"
+                "  C: {at: [0, 1], turns: no}\n") ==
+      std::vector<std::string>{"t.yaml:6:26: 'turns' of point 'C' is 'no' (expected true or false)",
+                               "t.yaml:6:26: 'turns' of point 'C' needs 'on' (only a point on a body turns with it)"});
 }
 
-TEST_CASE("Rotation: a cylinder rolls down an incline with a = 2/3 g sin(theta), tied by x + r phi", "[rotation][rolling]") {
+TEST_CASE("Rotation: a cylinder rolls down an incline with a = 2/3 g sin(theta), tied by x + r phi",
+          "[rotation][rolling]") {
   const auto a = run_text(read_example("rotation-cylinder-rolling-down-incline.yaml"));
   const ex r = sym(*a, "r"), s = sym(*a, "s"), phi = sym(*a, "phi");
   REQUIRE(a->model.constraints.size() == 1);
@@ -165,21 +179,24 @@ TEST_CASE("Rotation: a cylinder rolls down an incline with a = 2/3 g sin(theta),
   CHECK(a->power.status == PowerCheck::Status::holds);
 }
 
-TEST_CASE("Rotation: rolling needs a turning body and a contact point that keeps the ground's directions", "[rotation][rolling][errors]") {
+TEST_CASE("Rotation: rolling needs a turning body and a contact point that keeps the ground's directions",
+          "[rotation][rolling][errors]") {
   std::string text = read_example("rotation-cylinder-rolling-down-incline.yaml");
   std::string turning = text;
   turning.replace(turning.find(", turns: false}"), 15, "}");
-  CHECK(errors_of(turning) == std::vector<std::string>{
-                                  "t.yaml:37:5: the contact point 'C' of a 'rolling' connection is not a point of body 'cylinder' "
-                                  "that keeps the ground's directions (expected a point written {on: cylinder, offset: ..., turns: "
-                                  "false}, where the wheel touches the surface)"});
+  CHECK(errors_of(turning) ==
+        std::vector<std::string>{
+            "t.yaml:37:5: the contact point 'C' of a 'rolling' connection is not a point of body 'cylinder' "
+            "that keeps the ground's directions (expected a point written {on: cylinder, offset: ..., turns: "
+            "false}, where the wheel touches the surface)"});
   std::string aside = text;
   const std::string below = "offset: [\"-r*sin(theta)\", \"-r*cos(theta)\"]";
   aside.replace(aside.find(below), below.size(), "offset: [\"-r*cos(theta)\", \"r*sin(theta)\"]");
-  CHECK(errors_of(aside) == std::vector<std::string>{
-                                "t.yaml:37:5: the contact point 'C' of a 'rolling' connection is not straight across the surface "
-                                "from the center of body 'cylinder' (expected its offset -r*cos(theta), r*sin(theta) at right "
-                                "angles to the rolling direction)"});
+  CHECK(errors_of(aside) ==
+        std::vector<std::string>{
+            "t.yaml:37:5: the contact point 'C' of a 'rolling' connection is not straight across the surface "
+            "from the center of body 'cylinder' (expected its offset -r*cos(theta), r*sin(theta) at right "
+            "angles to the rolling direction)"});
 }
 
 TEST_CASE("String: a length sum in a 2-D problem pulls along each coordinate's line (the Atwood machine)", "[string]") {
@@ -203,7 +220,8 @@ find: [ddot(y_A), T]
   CHECK(same(*a->solution.value_of(sym(*a, "T")), 2 * mA * mB * g / (mA + mB)));
 }
 
-TEST_CASE("Rotation: a ball thrown without spin slides until its contact stops slipping, at t = 2 v_0/(7 mu g)", "[rotation][motion]") {
+TEST_CASE("Rotation: a ball thrown without spin slides until its contact stops slipping, at t = 2 v_0/(7 mu g)",
+          "[rotation][motion]") {
   const auto a = run_text(read_example("rotation-ball-slides-then-rolls.yaml"));
   SimulationSpec spec;
   spec.until = 2;
@@ -213,18 +231,21 @@ TEST_CASE("Rotation: a ball thrown without spin slides until its contact stops s
   CHECK_FALSE(run.complete);
   REQUIRE(run.events.size() == 1);
   CHECK(run.events[0].t == Approx(t1).epsilon(1e-9));
-  CHECK(run.events[0].what == "sliding at C: the contact stops slipping (its friction would change; the body may roll from here)");
+  CHECK(run.events[0].what ==
+        "sliding at C: the contact stops slipping (its friction would change; the body may roll from here)");
   REQUIRE(run.table.y[0].back());
   CHECK(*run.table.y[0].back() == Approx(5.0 * 8 / 7).epsilon(1e-9));  // it rolls on at 5 v_0/7
 }
 
-TEST_CASE("Rotation: with backspin the ball stops and comes back while its contact still slides forwards", "[rotation][motion]") {
+TEST_CASE("Rotation: with backspin the ball stops and comes back while its contact still slides forwards",
+          "[rotation][motion]") {
   // v_0 = 2 m/s, R omega_0 = 10 m/s of backspin: dot(x) = v_0 - mu g t turns at t = 1.019 s,
   // but the contact slides forwards, at v_0 + R omega_0 - (7/2) mu g t, until t = 2 (v_0 +
   // R omega_0)/(7 mu g) = 1.7474 s: the friction keeps its direction until then.
   std::string text = read_example("rotation-ball-slides-then-rolls.yaml");
   const std::string start = "initial: {x: 0, dot(x): 8, phi: 0, dot(phi): 0}";
-  text.replace(text.find(start), start.size(), "initial: {x: 0, dot(x): 2, phi: 0, dot(phi): {value: 90.909090909090909, unit: rad/s}}");
+  text.replace(text.find(start), start.size(),
+               "initial: {x: 0, dot(x): 2, phi: 0, dot(phi): {value: 90.909090909090909, unit: rad/s}}");
   const auto a = run_text(text);
   SimulationSpec spec;
   spec.until = 3;
@@ -233,7 +254,8 @@ TEST_CASE("Rotation: with backspin the ball stops and comes back while its conta
   CHECK(run.events[0].t == Approx(2 * 12 / (7 * 0.2 * 9.81)).epsilon(1e-9));
 }
 
-TEST_CASE("Rotation: a car on a banked curve keeps its line between two speeds, solved for v^2", "[rotation][validity]") {
+TEST_CASE("Rotation: a car on a banked curve keeps its line between two speeds, solved for v^2",
+          "[rotation][validity]") {
   // By hand (the example's notes): v^2 <= g r (sin + mu cos)/(cos - mu sin), while cos > mu
   // sin; v^2 >= g r (sin - mu cos)/(cos + mu sin).
   const auto a = run_text(read_example("rotation-car-on-banked-curve.yaml"));
@@ -249,7 +271,8 @@ TEST_CASE("Rotation: a car on a banked curve keeps its line between two speeds, 
   CHECK(same(found[1].second, g * r * (sin(b) - mu * cos(b)) / (cos(b) + mu * sin(b))));
 }
 
-TEST_CASE("Rotation: the rolling condition is solved for mu where the incline's angle is acute", "[rotation][validity]") {
+TEST_CASE("Rotation: the rolling condition is solved for mu where the incline's angle is acute",
+          "[rotation][validity]") {
   const auto a = run_text(read_example("rotation-cylinder-rolling-down-incline.yaml"));
   const ex mu = sym(*a, "mu"), th = sym(*a, "theta");
   bool found = false;
@@ -259,13 +282,14 @@ TEST_CASE("Rotation: the rolling condition is solved for mu where the incline's 
   CHECK(found);
 }
 
-TEST_CASE("Rotation: a bob written in its cart's coordinate accelerates with the cart (chain rule on every coordinate)", "[rotation]") {
+TEST_CASE("Rotation: a bob written in its cart's coordinate accelerates with the cart (chain rule on every coordinate)",
+          "[rotation]") {
   // The bob at (x + l sin(theta), -l cos(theta)): its LMB in x carries m ddot(x) too. (It did
   // not: only the body's own coordinates were differentiated, and the pendulum on a cart
   // swung as if its pin were fixed.)
   const auto a = run_text(read_example("rotation-pendulum-on-a-cart.yaml"));
-  const ex m = sym(*a, "m"), l = sym(*a, "l"), x_dd = sym(*a, "ddot(x)"), th = sym(*a, "theta"), th_d = sym(*a, "dot(theta)"),
-           th_dd = sym(*a, "ddot(theta)");
+  const ex m = sym(*a, "m"), l = sym(*a, "l"), x_dd = sym(*a, "ddot(x)"), th = sym(*a, "theta"),
+           th_d = sym(*a, "dot(theta)"), th_dd = sym(*a, "ddot(theta)");
   bool found = false;
   for (const Equation& e : a->system.equations)
     if (e.label == "LMB bob (x)") {

@@ -25,10 +25,12 @@ const Answer& answer_named(const Derivation& d, const std::string& name) {
 TEST_CASE("Steady: the rate's square is an unknown, the rate reported in the unit asked", "[steady]") {
   // By hand: omega^2 = g/(L cos(theta)) = 9.43968 rad^2/s^2, omega = 3.07241 rad/s = 3.07241 *
   // 60/(2 pi) rpm = 29.3393 rpm; the period does not depend on the unit, 2.04504 s.
-  const auto a = test::run_text(pendulum_with("steady: {rate: omega, period: tau}", "steady: {rate: omega, unit: rpm}"));
+  const auto a =
+      test::run_text(pendulum_with("steady: {rate: omega, period: tau}", "steady: {rate: omega, unit: rpm}"));
   const Derivation d = explain(*a);
   CHECK(to_text(a->model.steady->squared) == "omega^2");
-  CHECK(std::find(a->system.unknowns.begin(), a->system.unknowns.end(), a->model.steady->squared) != a->system.unknowns.end());
+  CHECK(std::find(a->system.unknowns.begin(), a->system.unknowns.end(), a->model.steady->squared) !=
+        a->system.unknowns.end());
   const Answer& omega = answer_named(d, "omega");
   REQUIRE(omega.value);
   CHECK(omega.value->unit == "rpm");
@@ -46,18 +48,21 @@ TEST_CASE("Steady: the square itself may be asked for, the rate and period follo
   CHECK(d.answers[2].name == "tau");
 }
 
-TEST_CASE("Steady: where the balances need omega^2 < 0, no rate is reported and the report says why", "[steady][validity]") {
+TEST_CASE("Steady: where the balances need omega^2 < 0, no rate is reported and the report says why",
+          "[steady][validity]") {
   // theta = 120 deg: cos(theta) = -1/2, so omega^2 = g/(L cos(theta)) = -16.35 rad^2/s^2.
-  const auto a = test::run_text(
-      pendulum_with("theta: {value: 30, unit: deg, range: [10, 80]}", "theta: {value: 120, unit: deg}"));
+  const auto a =
+      test::run_text(pendulum_with("theta: {value: 30, unit: deg, range: [10, 80]}", "theta: {value: 120, unit: deg}"));
   const Derivation d = explain(*a);
   CHECK_FALSE(answer_named(d, "omega").value);
   CHECK_FALSE(answer_named(d, "tau").value);
-  const auto c = std::find_if(d.conditions.begin(), d.conditions.end(), [](const ConditionReport& r) { return r.source == "steady motion"; });
+  const auto c = std::find_if(d.conditions.begin(), d.conditions.end(),
+                              [](const ConditionReport& r) { return r.source == "steady motion"; });
   REQUIRE(c != d.conditions.end());
   REQUIRE(c->holds);
   CHECK_FALSE(*c->holds);
-  CHECK(write(d, Format::text, true).find("This is VIOLATED for the given numbers: no real rate keeps this motion steady.") !=
+  CHECK(write(d, Format::text, true)
+            .find("This is VIOLATED for the given numbers: no real rate keeps this motion steady.") !=
         std::string::npos);
 }
 

@@ -46,12 +46,14 @@ motion:
 
 }  // namespace
 
-TEST_CASE("Starting values: the string's length needs B's start, not the fixed pulley's height", "[motion][errors][trust]") {
+TEST_CASE("Starting values: the string's length needs B's start, not the fixed pulley's height",
+          "[motion][errors][trust]") {
   // The string keeps 2 y_C - y_A - y_B; C is fixed, so y_B = y_A(0) + y_B(0) - y_A: y_C(0)
   // cancels and y_B(0) is what is missing.
   CHECK(errors_of(atwood_on_a_spring + "  initial: {y_A: -2, dot(y_A): 0}\n") ==
-        std::vector<std::string>{"t.yaml:26:3: the motion needs the initial value of y_B (the constraints fix it only up to a "
-                                 "constant; expected it in 'initial')"});
+        std::vector<std::string>{
+            "t.yaml:26:3: the motion needs the initial value of y_B (the constraints fix it only up to a "
+            "constant; expected it in 'initial')"});
 }
 
 TEST_CASE("Starting values: given B's start, the motion follows the spring through the string", "[motion][trust]") {
@@ -71,15 +73,18 @@ TEST_CASE("Starting values: given B's start, the motion follows the spring throu
   }
 }
 
-TEST_CASE("Starting values: a dependent rate that is given must agree with the constraints", "[motion][errors][trust]") {
+TEST_CASE("Starting values: a dependent rate that is given must agree with the constraints",
+          "[motion][errors][trust]") {
   // dot(y_B) = -dot(y_A) = 0 at t = 0: 0 is accepted, 1 is refused where it is written.
   CHECK(errors_of(atwood_on_a_spring + "  initial: {y_A: -2, dot(y_A): 0, y_B: -3, dot(y_B): 0}\n").empty());
   CHECK(errors_of(atwood_on_a_spring + "  initial: {y_A: -2, dot(y_A): 0.5, y_B: -3, dot(y_B): 1}\n") ==
-        std::vector<std::string>{"t.yaml:26:56: initial value of 'dot(y_B)' is 1, but the constraints give dot(y_B) = "
-                                 "-dot(y_A) = -1/2 at t = 0 (expected that value, or none: it follows from the motion's rates)"});
+        std::vector<std::string>{
+            "t.yaml:26:56: initial value of 'dot(y_B)' is 1, but the constraints give dot(y_B) = "
+            "-dot(y_A) = -1/2 at t = 0 (expected that value, or none: it follows from the motion's rates)"});
 }
 
-TEST_CASE("Starting values: a strand whose length needs a start 'initial' does not give is said not to be followed", "[motion][trust]") {
+TEST_CASE("Starting values: a strand whose length needs a start 'initial' does not give is said not to be followed",
+          "[motion][trust]") {
   // y_C(0) cancels from the motion, but the strands A-C and C-B are y_C - y_A and y_C - y_B:
   // without it, the moment A runs into the pulley cannot be found, and tackle says so.
   const auto a = run_text(atwood_on_a_spring + "  initial: {y_A: -2, dot(y_A): 0, y_B: -3}\n");
@@ -88,11 +93,13 @@ TEST_CASE("Starting values: a strand whose length needs a start 'initial' does n
   CHECK(a->motion->strands_in_state[0].first == "strand B-G of spring sp");
   REQUIRE(a->motion->not_followed.size() == 2);
   CHECK(a->motion->not_followed[0].first == "strand A-C of string s");
-  CHECK(a->motion->not_followed[0].second == "its length depends on y_C, whose value at t = 0 'initial' does not give (expected it there)");
+  CHECK(a->motion->not_followed[0].second ==
+        "its length depends on y_C, whose value at t = 0 'initial' does not give (expected it there)");
   CHECK(a->motion->not_followed[1].first == "strand C-B of string s");
 }
 
-TEST_CASE("Starting values: with the pulley's height given, A running into the pulley ends the motion", "[motion][trust]") {
+TEST_CASE("Starting values: with the pulley's height given, A running into the pulley ends the motion",
+          "[motion][trust]") {
   // From the response by hand (above), y_A(t) = y_eq + (-2 - y_eq) cos(lambda t) reaches the
   // pulley at y_C = 0 when cos(lambda t) = y_eq/(y_eq + 2); the string is still taut there
   // (T = m_A (g + y_A'') < 0 only above y_A = y_eq + g/lambda^2 = 1.48 m), and the spring's
@@ -108,7 +115,8 @@ TEST_CASE("Starting values: with the pulley's height given, A running into the p
   CHECK(s.events[0].t == Approx(std::acos(y_eq / (y_eq + 2)) / lambda).epsilon(1e-7));
 }
 
-TEST_CASE("Units: a plain number on a spring's path is read in metres, not refused as a pure number", "[motion][units]") {
+TEST_CASE("Units: a plain number on a spring's path is read in metres, not refused as a pure number",
+          "[motion][units]") {
   // G at -6 (a number, SI) instead of -d_G: the spring's force k (y_B + 6 - l) is a force.
   // (The balance's terms used to be checked after expansion, where 6 k is a stiffness.)
   std::string text = atwood_on_a_spring + "  initial: {y_A: -2, dot(y_A): 0, y_B: -3}\n";
@@ -118,10 +126,12 @@ TEST_CASE("Units: a plain number on a spring's path is read in metres, not refus
   REQUIRE(a->motion->response);
   const double lambda = std::sqrt(100.0 / 8), y_eq = 2 * 9.81 / 100 + 0.5;
   const exmap at{{a->model.time, numeric(0.7)}, {a->model.motion->lambda, numeric(lambda)}};
-  CHECK(number(a->motion->response->q, *a->model.symbols, at) == Approx(y_eq + (-2 - y_eq) * std::cos(lambda * 0.7)).epsilon(1e-9));
+  CHECK(number(a->motion->response->q, *a->model.symbols, at) ==
+        Approx(y_eq + (-2 - y_eq) * std::cos(lambda * 0.7)).epsilon(1e-9));
 }
 
-TEST_CASE("Starting values: the plain Atwood machine follows its strands when 'initial' places them", "[motion][trust]") {
+TEST_CASE("Starting values: the plain Atwood machine follows its strands when 'initial' places them",
+          "[motion][trust]") {
   // Nothing asked for needs y_B or y_C, but the strands do: from rest at y_A = -2 with
   // ddot(y_A) = (m_B - m_A) g/(m_A + m_B) = 2.4525 m/s^2, A reaches the pulley (y_C = 0) at
   // t = sqrt(2 * 2/2.4525) = 1.27710 s.

@@ -28,12 +28,14 @@ parameters:
   g: {value: 9.81, unit: m/s^2}
 gravity: [0, -g]
 bodies:
-  link_1: {mass: m, angle: theta_1, center_of_mass: [")") + f + "sin(theta_1)\", \"-" + f + "cos(theta_1)\"]" + shape + R"(}
-  link_2: {mass: m, angle: theta_2, center_of_mass: ["l*sin(theta_1) + )" + f + "sin(theta_2)\", \"-(l*cos(theta_1) + " + f +
-         "cos(theta_2))\"]" + shape + R"(}
+  link_1: {mass: m, angle: theta_1, center_of_mass: [")") +
+         f + "sin(theta_1)\", \"-" + f + "cos(theta_1)\"]" + shape + R"(}
+  link_2: {mass: m, angle: theta_2, center_of_mass: ["l*sin(theta_1) + )" +
+         f + "sin(theta_2)\", \"-(l*cos(theta_1) + " + f + "cos(theta_2))\"]" + shape + R"(}
 points:
   P: [0, 0]
-  J_2: {on: link_1, offset: [0, )" + (rods ? "\"-l/2\"" : "0") + R"(]}
+  J_2: {on: link_1, offset: [0, )" +
+         (rods ? "\"-l/2\"" : "0") + R"(]}
 connections:
   - {type: pin, body: link_1, at: P}
   - {type: pin_joint, body: link_1, other: link_2, at: J_2}
@@ -66,7 +68,8 @@ void check_chain(bool rods, const Hand& h, double lambda_low, double lambda_high
   const ex w1 = t.find("dot(theta_1)")->sym, w2 = t.find("dot(theta_2)")->sym;
   const double mv = 3, lv = 2, gv = 9.81;
   // At a few states, every entry against the hand values.
-  for (const auto& [a1, a2, r1, r2] : {std::tuple{0.5, -0.3, 1.0, 2.0}, std::tuple{-1.2, 0.7, -0.4, 0.9}, std::tuple{2.0, 2.5, 0.0, -3.0}}) {
+  for (const auto& [a1, a2, r1, r2] :
+       {std::tuple{0.5, -0.3, 1.0, 2.0}, std::tuple{-1.2, 0.7, -0.4, 0.9}, std::tuple{2.0, 2.5, 0.0, -3.0}}) {
     INFO("theta_1 = " << a1 << ", theta_2 = " << a2);
     const exmap at{{q1, a1}, {q2, a2}, {w1, r1}, {w2, r2}};
     const double c = std::cos(a1 - a2), s = std::sin(a1 - a2), ml2 = mv * lv * lv, mgl = mv * gv * lv;
@@ -81,7 +84,8 @@ void check_chain(bool rods, const Hand& h, double lambda_low, double lambda_high
   const auto rest = at_rest(model, *form);
   REQUIRE(rest);
   auto exact = [](double x) { return numeric(static_cast<long>(std::lround(x * 12)), 12); };
-  const matrix M0{2, 2, lst{exact(h.a) * m * l * l, exact(h.b) * m * l * l, exact(h.b) * m * l * l, exact(h.d) * m * l * l}};
+  const matrix M0{2, 2,
+                  lst{exact(h.a) * m * l * l, exact(h.b) * m * l * l, exact(h.b) * m * l * l, exact(h.d) * m * l * l}};
   const matrix K0{2, 2, lst{exact(h.e) * m * g * l, 0, 0, exact(h.f) * m * g * l}};
   for (unsigned i = 0; i < 2; ++i)
     for (unsigned j = 0; j < 2; ++j) {

@@ -78,7 +78,8 @@ std::pair<double, double> integrate(double until) {
 
 }  // namespace
 
-TEST_CASE("Massless ring: at one instant the ring's balance gives the tension from the turning spring", "[motion][massless][trust]") {
+TEST_CASE("Massless ring: at one instant the ring's balance gives the tension from the turning spring",
+          "[motion][massless][trust]") {
   const auto a = run_text(ring + "find: [T, ddot(x), ddot(y_R)]\n");
   const Derivation d = explain(*a);
   REQUIRE(d.answers.size() == 3);
@@ -93,7 +94,8 @@ TEST_CASE("Massless ring: at one instant the ring's balance gives the tension fr
   CHECK(d.status == "determined");
 }
 
-TEST_CASE("Massless ring: the motion follows the ring through the string, not its starting place", "[motion][massless][trust]") {
+TEST_CASE("Massless ring: the motion follows the ring through the string, not its starting place",
+          "[motion][massless][trust]") {
   const auto a = run_text(ring + "find: [T]\nmotion:\n  initial: {x: 0, dot(x): 0, y_R: -0.5}\n  until: 0.1\n");
   REQUIRE(a->motion);
   REQUIRE(a->motion->problem.empty());
@@ -112,7 +114,8 @@ TEST_CASE("Massless ring: the motion follows the ring through the string, not it
   CHECK(std::abs(*s.table.y[2].back() - tension(-0.5)) > 1);
 }
 
-TEST_CASE("Massless ring: the string goes slack when the spring lies level with the ring", "[motion][massless][trust]") {
+TEST_CASE("Massless ring: the string goes slack when the spring lies level with the ring",
+          "[motion][massless][trust]") {
   // T = 0 where H + y_R = 0: y_R = -1, so x = 1/2. The independent integration gives the time.
   const auto a = run_text(ring + "motion:\n  initial: {x: 0, dot(x): 0, y_R: -0.5}\n  until: 1\n");
   REQUIRE(a->motion);
@@ -126,7 +129,8 @@ TEST_CASE("Massless ring: the string goes slack when the spring lies level with 
   CHECK(s.events.back().t == Approx(lo).epsilon(1e-6));
 }
 
-TEST_CASE("Movable pulley: the string's condition is followed in time through x_S = 2 x + C", "[motion][massless][trust]") {
+TEST_CASE("Movable pulley: the string's condition is followed in time through x_S = 2 x + C",
+          "[motion][massless][trust]") {
   // Block A (m) pushed by F carries a pulley; the string runs from the wall W round the pulley
   // back to the massless end S of a spring (k, l_0) anchored at Q = -D. By hand: the string
   // keeps 2 x - x_S; S's balance, T = k (D + x_S - l_0); A's, m x'' = F - 2 T. From x = 1,
@@ -166,7 +170,8 @@ motion:
   CHECK(c.condition.source == "string s");
   const SymbolTable& t = *a->model.symbols;
   const double k = 200, m = 2, F = 10, l_0 = 0.2, D = 1;
-  const double x_eq = (F + 3 * k + 2 * k * l_0 - 2 * D * k) / (4 * k), amp = 2 * k * (1 - x_eq), lambda = 2 * std::sqrt(k / m);
+  const double x_eq = (F + 3 * k + 2 * k * l_0 - 2 * D * k) / (4 * k), amp = 2 * k * (1 - x_eq),
+               lambda = 2 * std::sqrt(k / m);
   const exmap lambda_value{{a->model.motion->lambda, numeric(20)}};
   for (const double time : {0.0, 0.013, 0.05}) {
     const exmap at{{a->model.time, numeric(time)}, {a->model.motion->lambda, numeric(20)}};
@@ -178,8 +183,9 @@ motion:
   CHECK(*c.holds_for_all_t == false);
   // T(t) is reported along the response too.
   REQUIRE(a->motion->quantities.size() == 1);
-  CHECK(number(a->motion->quantities[0].of_t, t, {{a->model.time, numeric(0)}, {a->model.motion->lambda, numeric(20)}}) ==
-        Approx(F / 2 + amp).epsilon(1e-9));
+  CHECK(
+      number(a->motion->quantities[0].of_t, t, {{a->model.time, numeric(0)}, {a->model.motion->lambda, numeric(20)}}) ==
+      Approx(F / 2 + amp).epsilon(1e-9));
 }
 
 namespace {
@@ -224,7 +230,8 @@ TEST_CASE("Springs in series: the massless joint's coordinate follows from its b
   CHECK(d.status == "determined");
 }
 
-TEST_CASE("Springs in series: the motion has one degree of freedom with the in_series stiffness", "[motion][massless][trust]") {
+TEST_CASE("Springs in series: the motion has one degree of freedom with the in_series stiffness",
+          "[motion][massless][trust]") {
   // m x'' + k x = k (l_1 + l_2), k = k_1 k_2/(k_1 + k_2) = 75 N/m: lambda = sqrt(37.5) rad/s, and
   // from rest at x = 1.2 m, x(t) = 1 + 0.2 cos(lambda t).
   const auto a = run_text(in_series + "motion:\n  initial: {x: 1.2, dot(x): 0}\n  until: 1\n");
@@ -248,10 +255,12 @@ TEST_CASE("Springs in series: the motion has one degree of freedom with the in_s
   CHECK(*s.table.y[1].back() == Approx((100 * (x - 0.5) + 300 * 0.5) / 400).epsilon(1e-8));
 }
 
-TEST_CASE("Springs in series: a massless body's starting place is not asked for, and a turning strand is refused", "[motion][massless][errors]") {
+TEST_CASE("Springs in series: a massless body's starting place is not asked for, and a turning strand is refused",
+          "[motion][massless][errors]") {
   CHECK(errors_of(in_series + "motion:\n  initial: {x: 1.2, dot(x): 0, x_S: 0.6}\n") ==
-        std::vector<std::string>{"t.yaml:19:32: initial value of 'x_S': body 'S' has no mass, so its balance gives it at every "
-                                 "instant (expected initial values of the motion's coordinates only)"});
+        std::vector<std::string>{
+            "t.yaml:19:32: initial value of 'x_S': body 'S' has no mass, so its balance gives it at every "
+            "instant (expected initial values of the motion's coordinates only)"});
   // A massless ring in a vertical slot pulled down by a load and up by a spring at an angle:
   // its balance is not linear in y_R.
   CHECK(errors_of(R"(title: ring on a spring at an angle
@@ -271,9 +280,10 @@ connections:
   - {type: roller, body: R, at: R, normal: [1, 0]}
   - {type: spring, name: sp, path: [R, G], k: k, rest_length: l_0}
 layout: {y_R: -0.5}
-)") == std::vector<std::string>{"t.yaml:9:3: body 'R' has no mass and no constraint ties y_R to the other coordinates, so its "
-                                 "balance fixes it; but a strand that turns with it makes that balance nonlinear in y_R "
-                                 "(expected a string or a joint that ties it, or a mass)"});
+)") == std::vector<std::string>{
+           "t.yaml:9:3: body 'R' has no mass and no constraint ties y_R to the other coordinates, so its "
+           "balance fixes it; but a strand that turns with it makes that balance nonlinear in y_R "
+           "(expected a string or a joint that ties it, or a mass)"});
 }
 
 TEST_CASE("Strands: a block pulled into its pulley ends the motion with an event (issue 30)", "[motion][trust]") {
@@ -311,7 +321,8 @@ motion:
   CHECK(s.events[0].t == Approx(std::sqrt(2 / (9.81 / 3))).epsilon(1e-8));
 }
 
-TEST_CASE("Massless ring: the motion is described by the coordinate 'initial' gives, not the first body's", "[motion][massless]") {
+TEST_CASE("Massless ring: the motion is described by the coordinate 'initial' gives, not the first body's",
+          "[motion][massless]") {
   // The ring listed first; `initial` gives the block's x and dot(x) (and y_R, which fixes the
   // string's length): the motion is described by x, and initial values are accepted as given.
   std::string yaml = ring;
@@ -350,7 +361,8 @@ const ConditionInTime* string_in_time(const Analysis& a) {
 
 }  // namespace
 
-TEST_CASE("Massless ring: the spring acts on a driven block through the string and the ring, in time (2-D)", "[motion][massless][trust]") {
+TEST_CASE("Massless ring: the spring acts on a driven block through the string and the ring, in time (2-D)",
+          "[motion][massless][trust]") {
   const auto a = run_text(read_example(driven_ring));
   REQUIRE(a->motion);
   REQUIRE(a->motion->problem.empty());
@@ -359,8 +371,9 @@ TEST_CASE("Massless ring: the spring acts on a driven block through the string a
   CHECK(to_text(eom.q[0]) == "x");
   REQUIRE(eom.linear);
   const SymbolTable& t = *a->model.symbols;
-  const ex m = t.find("m")->sym, k = t.find("k")->sym, P = t.find("P")->sym, F_0 = t.find("F_0")->sym, w = t.find("w")->sym,
-           H = t.find("H")->sym, l_0 = t.find("l_0")->sym, y_0 = t.find("y_0")->sym, time = a->model.time;
+  const ex m = t.find("m")->sym, k = t.find("k")->sym, P = t.find("P")->sym, F_0 = t.find("F_0")->sym,
+           w = t.find("w")->sym, H = t.find("H")->sym, l_0 = t.find("l_0")->sym, y_0 = t.find("y_0")->sym,
+           time = a->model.time;
   // The stiffness is the spring's (not 0, as when the ring was held at its start).
   CHECK(normal(eom.M(0, 0) - m).is_zero());
   CHECK(normal(eom.K(0, 0) - k).is_zero());
@@ -383,7 +396,8 @@ TEST_CASE("Massless ring: the spring acts on a driven block through the string a
   }
 }
 
-TEST_CASE("Massless ring: the string's steady-state condition goes through the ring's coordinate", "[motion][massless][trust]") {
+TEST_CASE("Massless ring: the string's steady-state condition goes through the ring's coordinate",
+          "[motion][massless][trust]") {
   // T = P + k F_0/(k - m w^2) cos(w t) in the steady state: it holds for all t iff
   // P^2 (k - m w^2)^2 - k^2 F_0^2 >= 0, which fails in the band k (P - F_0)/(m P) < w^2 <
   // k (P + F_0)/(m P) (50 to 150 rad^2/s^2). Before, the condition kept y_S and read
@@ -392,7 +406,8 @@ TEST_CASE("Massless ring: the string's steady-state condition goes through the r
     const auto a = run_text(yaml);
     const ConditionInTime* c = string_in_time(*a);
     const SymbolTable& t = *a->model.symbols;
-    const ex m = t.find("m")->sym, k = t.find("k")->sym, P = t.find("P")->sym, F_0 = t.find("F_0")->sym, w = t.find("w")->sym;
+    const ex m = t.find("m")->sym, k = t.find("k")->sym, P = t.find("P")->sym, F_0 = t.find("F_0")->sym,
+             w = t.find("w")->sym;
     REQUIRE(c->steady_offset);
     CHECK(normal(*c->steady_offset - P).is_zero());
     REQUIRE(c->steady_amplitude_condition);
@@ -413,7 +428,8 @@ TEST_CASE("Massless ring: the string's steady-state condition goes through the r
   }
 }
 
-TEST_CASE("Massless ring: a condition through the ring that always holds is said in words", "[motion][massless][report]") {
+TEST_CASE("Massless ring: a condition through the ring that always holds is said in words",
+          "[motion][massless][report]") {
   // Undriven, from rest at x = 0 with the ring at y_S(0) = l_0 - H + P/(2 k) (the spring
   // stretched by P/(2 k)): T = k (y_S + H - l_0) = P/2 at the start, and with y_S = y_S(0) - x,
   // T = P/2 - k x and m x'' + k x = P/2 - P: x(t) = -P/(2 k) (1 - cos(lambda t)), so
@@ -429,11 +445,13 @@ TEST_CASE("Massless ring: a condition through the ring that always holds is said
   REQUIRE(c->extreme);
   CHECK(normal(*c->extreme - P / 2).is_zero());
   const std::string text = write(explain(*a), Format::text, true);
-  CHECK(text.find("Its least value over time, P/2, is never negative: this holds for every value of P.") != std::string::npos);
+  CHECK(text.find("Its least value over time, P/2, is never negative: this holds for every value of P.") !=
+        std::string::npos);
   CHECK(text.find(">= 0    [least value over time]") == std::string::npos);
 }
 
-TEST_CASE("Massless ring: two springs in series oscillate at sqrt(k1 k2/(m (k1 + k2))) (2-D)", "[motion][massless][trust]") {
+TEST_CASE("Massless ring: two springs in series oscillate at sqrt(k1 k2/(m (k1 + k2))) (2-D)",
+          "[motion][massless][trust]") {
   // The springs in series on the x axis of a plane: block A on a smooth floor at (x, 0), the
   // massless ring S at (x_S, 0) between a spring k_2 (rest l_2) to the wall W at the origin and
   // a spring k_1 (rest l_1) to A. By hand: S's balance, k_1 (x - x_S - l_1) = k_2 (x_S - l_2),
@@ -486,12 +504,14 @@ motion:
   }
 }
 
-TEST_CASE("Massless ring: its place given at the instant does not take the block's place in the motion", "[motion][massless]") {
+TEST_CASE("Massless ring: its place given at the instant does not take the block's place in the motion",
+          "[motion][massless]") {
   // The driven ring with y_S = -0.3 m given: at the instant T = k (y_S + H - l_0) = 40 N; in
   // time the motion is still described by the block's x (its rate is in 'initial'; before, the
   // given y_S was chosen and 'initial' was asked for dot(y_S)), with the spring's stiffness,
   // and simulate follows the ring, y_S = -0.3 - x, not its given place.
-  const auto a = run_text(example_with(driven_ring, "find: [T, ddot(x)]", "given: {y_S: {value: -0.3, unit: m}}\nfind: [T, ddot(x)]"));
+  const auto a = run_text(
+      example_with(driven_ring, "find: [T, ddot(x)]", "given: {y_S: {value: -0.3, unit: m}}\nfind: [T, ddot(x)]"));
   const Derivation d = explain(*a);
   REQUIRE(d.answers.size() == 2);
   REQUIRE(d.answers[0].value);

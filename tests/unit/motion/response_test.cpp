@@ -76,7 +76,8 @@ connections:
   - {type: spring, name: sp, path: [block, Q], k: k, rest_length: l_0}
 layout: {s: 0.8}
 motion:
-  initial: )y" + initial + "\n  until: 1\n";
+  initial: )y" +
+         initial + "\n  until: 1\n";
 }
 
 }  // namespace
@@ -110,13 +111,15 @@ TEST_CASE("Response: sliding friction - the closed form holds until the block st
   CHECK(s.events.back().t == Approx(M_PI / 10).epsilon(1e-8));
 }
 
-TEST_CASE("Response: sliding friction - a start against the assumed sliding direction is refused (issue 30)", "[motion][trust]") {
+TEST_CASE("Response: sliding friction - a start against the assumed sliding direction is refused (issue 30)",
+          "[motion][trust]") {
   // By hand at s = 0.8 m: the spring is 0.7 m long, stretched 0.2 m, so it pulls up the
   // incline with 40 N against m g sin(theta) = 9.81 N down: from rest the block starts up the
   // incline, but the rule's friction (up the incline, for sliding down) would push it along.
   // Moving up at 1 m/s, the same. At s = 1.2 m from rest (compressed spring) it starts down.
-  const std::string up = "from rest, the forces start body 'block' against the sliding direction that sliding at block "
-                         "assumes (its friction would push it along, not hold it back)";
+  const std::string up =
+      "from rest, the forces start body 'block' against the sliding direction that sliding at block "
+      "assumes (its friction would push it along, not hold it back)";
   const auto a = run_text(rough_incline("{s: 0.8, dot(s): 0}"));
   REQUIRE(a->motion);
   CHECK(a->motion->direction_against == up);
@@ -127,8 +130,9 @@ TEST_CASE("Response: sliding friction - a start against the assumed sliding dire
   CHECK(!s.complete);
   const auto b = run_text(rough_incline("{s: 0.8, dot(s): 1}"));
   REQUIRE(b->motion);
-  CHECK(b->motion->direction_against == "at t = 0 body 'block' moves against the sliding direction that sliding at block "
-                                        "assumes (its friction would push it along, not hold it back)");
+  CHECK(b->motion->direction_against ==
+        "at t = 0 body 'block' moves against the sliding direction that sliding at block "
+        "assumes (its friction would push it along, not hold it back)");
   for (const char* agrees : {"{s: 1.2, dot(s): 0}", "{s: 0.8, dot(s): -1}"}) {
     const auto c = run_text(rough_incline(agrees));
     REQUIRE(c->motion);

@@ -23,8 +23,10 @@ parameters:
   m: {value: 2, unit: kg}
   r: {value: 0.5, unit: m}
   omega: {value: 2, unit: rad/s}
-  alpha: {value: )" + alpha + R"(, unit: rad/s^2}
-  mu: {value: )" + mu + R"(, positive: true}
+  alpha: {value: )" +
+         alpha + R"(, unit: rad/s^2}
+  mu: {value: )" +
+         mu + R"(, positive: true}
   g: {value: 9.81, unit: m/s^2}
 gravity: [0, 0, -g]
 bodies:
@@ -51,14 +53,16 @@ std::map<std::string, double> values(const Derivation& d) {
 
 // The friction condition (the one with the root) and its form solved for mu.
 const ConditionReport& friction_condition(const Derivation& d) {
-  const auto it = std::find_if(d.conditions.begin(), d.conditions.end(),
-                               [](const ConditionReport& c) { return c.meaning == "friction can hold (sqrt(F_1^2 + F_2^2) <= mu N)"; });
+  const auto it = std::find_if(d.conditions.begin(), d.conditions.end(), [](const ConditionReport& c) {
+    return c.meaning == "friction can hold (sqrt(F_1^2 + F_2^2) <= mu N)";
+  });
   REQUIRE(it != d.conditions.end());
   return *it;
 }
 
 const SolvedFor& solved_for(const ConditionReport& c, const std::string& parameter) {
-  const auto it = std::find_if(c.solved.begin(), c.solved.end(), [&](const SolvedFor& s) { return to_text(s.parameter) == parameter; });
+  const auto it = std::find_if(c.solved.begin(), c.solved.end(),
+                               [&](const SolvedFor& s) { return to_text(s.parameter) == parameter; });
   REQUIRE(it != c.solved.end());
   return *it;
 }
@@ -69,7 +73,8 @@ TEST_CASE("Friction 3-D: a block on a turning platform needs mu >= omega^2 r / g
   // Steady turning (alpha = 0): friction towards the axis, F_C1 = -m omega^2 r = -4 N, none
   // along the path; N_C = m g = 19.62 N; m omega^2 r <= mu m g: mu >= omega^2 r/g = 2/9.81.
   std::string steady = turntable("0", "0.4");
-  steady.erase(steady.find("  alpha: {value: 0, unit: rad/s^2}\n"), std::string("  alpha: {value: 0, unit: rad/s^2}\n").size());
+  steady.erase(steady.find("  alpha: {value: 0, unit: rad/s^2}\n"),
+               std::string("  alpha: {value: 0, unit: rad/s^2}\n").size());
   steady.replace(steady.find("\"alpha*r\""), std::string("\"alpha*r\"").size(), "0");
   const Derivation d = explain(*test::run_text(steady));
   CHECK(closed_forms(d) == std::map<std::string, std::string>{{"N_C", "g*m"}, {"F_C1", "-m*omega^2*r"}, {"F_C2", "0"}});
@@ -91,7 +96,8 @@ TEST_CASE("Friction 3-D: a turntable that speeds up needs friction in the whole 
   // |F| = 5 N, N_C = 19.62 N: mu >= r sqrt(omega^4 + alpha^2)/g = 0.5*5/9.81 = 0.254842.
   SECTION("mu = 0.4 holds it") {
     const Derivation d = explain(*test::run_text(turntable("3", "0.4")));
-    CHECK(closed_forms(d) == std::map<std::string, std::string>{{"N_C", "g*m"}, {"F_C1", "-m*omega^2*r"}, {"F_C2", "alpha*m*r"}});
+    CHECK(closed_forms(d) ==
+          std::map<std::string, std::string>{{"N_C", "g*m"}, {"F_C1", "-m*omega^2*r"}, {"F_C2", "alpha*m*r"}});
     CHECK(values(d).at("F_C2") == Approx(3.0));
     const ConditionReport& c = friction_condition(d);
     CHECK(to_text(c.simplified) == "m*r*sqrt(alpha^2 + omega^4) - g*m*mu");
@@ -111,16 +117,18 @@ TEST_CASE("Friction 3-D: a turntable that speeds up needs friction in the whole 
     std::string one = turntable("3", "0.4");
     // The 2-D rule's friction along one line, written out as a force of unknown size.
     const auto at = one.find("  - {type: sticking");
-    one = one.substr(0, at) + "  - {type: roller, body: block, at: C, normal: [0, 0, 1]}\n"
-                              "  - {type: collar, body: block, at: C, across: [1, 0, 0], across_too: [0, 0, 1], force: F_x, force_too: Q}\n"
-                              "find: [N_C, F_x]\n";
+    one = one.substr(0, at) +
+          "  - {type: roller, body: block, at: C, normal: [0, 0, 1]}\n"
+          "  - {type: collar, body: block, at: C, across: [1, 0, 0], across_too: [0, 0, 1], force: F_x, force_too: Q}\n"
+          "find: [N_C, F_x]\n";
     const auto errors = test::errors_of(one);
     REQUIRE(errors.size() == 1);
     CHECK(errors[0].find("the balances cannot all hold") != std::string::npos);
   }
 }
 
-TEST_CASE("Friction 3-D: a block on a rough incline pushed sideways, the incline written in parameters", "[rules][friction3d]") {
+TEST_CASE("Friction 3-D: a block on a rough incline pushed sideways, the incline written in parameters",
+          "[rules][friction3d]") {
   // A 3-4-5 incline: normal (-a, 0, b), up the slope (b, 0, a), a = 3, b = 4; normal x tangent
   // = (0, a^2 + b^2, 0), along +y (a and b positive). Weight m g = 20 N, a push P = 9 N along +y. By hand:
   // N_C = m g b/5 = 16 N, F_C1 = m g a/5 = 12 N up the slope, F_C2 = -P = -9 N; |F| = 15 N:
@@ -165,7 +173,8 @@ find: [N_C, F_C1, F_C2]
   for (const auto& s : c.solved) CHECK((to_text(s.parameter) != "a" && to_text(s.parameter) != "b"));
 }
 
-TEST_CASE("Friction 3-D: a normal or tangent written in parameters is a right answer or a located error", "[rules][friction3d]") {
+TEST_CASE("Friction 3-D: a normal or tangent written in parameters is a right answer or a located error",
+          "[rules][friction3d]") {
   const std::string head = R"(title: t
 axes: [x, y, z]
 parameters:
@@ -182,31 +191,40 @@ points:
 connections:
 )";
   SECTION("a tangent along the normal") {
-    CHECK(test::errors_of(head + "  - {type: sticking, body: block, at: C, normal: [0, 0, 1], tangent: [0, 0, a], mu: mu}\n") ==
-          std::vector<std::string>{"t.yaml:15:71: 'tangent' of a 'sticking' connection, [0, 0, a], is not at right angles to its "
-                                   "'normal', [0, 0, 1]: their dot product is a = 1 at the given numbers (expected a direction at "
-                                   "right angles to 'normal')"});
+    CHECK(test::errors_of(
+              head + "  - {type: sticking, body: block, at: C, normal: [0, 0, 1], tangent: [0, 0, a], mu: mu}\n") ==
+          std::vector<std::string>{
+              "t.yaml:15:71: 'tangent' of a 'sticking' connection, [0, 0, a], is not at right angles to its "
+              "'normal', [0, 0, 1]: their dot product is a = 1 at the given numbers (expected a direction at "
+              "right angles to 'normal')"});
   }
   SECTION("a tangent not at right angles to the normal") {
-    CHECK(test::errors_of(head + "  - {type: sticking, body: block, at: C, normal: [0, 0, 1], tangent: [1, 0, 1], mu: mu}\n") ==
-          std::vector<std::string>{"t.yaml:15:71: 'tangent' of a 'sticking' connection, [1, 0, 1], is not at right angles to its "
-                                   "'normal', [0, 0, 1]: their dot product is 1 (expected a direction at right angles to 'normal')"});
+    CHECK(test::errors_of(
+              head + "  - {type: sticking, body: block, at: C, normal: [0, 0, 1], tangent: [1, 0, 1], mu: mu}\n") ==
+          std::vector<std::string>{
+              "t.yaml:15:71: 'tangent' of a 'sticking' connection, [1, 0, 1], is not at right angles to its "
+              "'normal', [0, 0, 1]: their dot product is 1 (expected a direction at right angles to 'normal')"});
   }
   SECTION("a normal that is zero at the given numbers") {
-    CHECK(test::errors_of(head + "  - {type: sticking, body: block, at: C, normal: [0, 0, h], tangent: [1, 0, 0], mu: mu}\n") ==
-          std::vector<std::string>{"t.yaml:15:51: 'normal' of a 'sticking' connection is the zero vector at the given numbers "
-                                   "(expected a direction)"});
+    CHECK(test::errors_of(
+              head + "  - {type: sticking, body: block, at: C, normal: [0, 0, h], tangent: [1, 0, 0], mu: mu}\n") ==
+          std::vector<std::string>{
+              "t.yaml:15:51: 'normal' of a 'sticking' connection is the zero vector at the given numbers "
+              "(expected a direction)"});
   }
   SECTION("a normal in a parameter: the answer") {
     // normal (0, 0, a), a = 1: N_C = m g a/sqrt(a^2) (a's sign is not known), 19.62 N.
-    const Derivation d = explain(*test::run_text(head + "  - {type: sticking, body: block, at: C, normal: [0, 0, a], tangent: [1, 0, 0], mu: mu}\n"
-                                                         "find: [N_C]\n"));
+    const Derivation d =
+        explain(*test::run_text(
+            head + "  - {type: sticking, body: block, at: C, normal: [0, 0, a], tangent: [1, 0, 0], mu: mu}\n"
+                   "find: [N_C]\n"));
     REQUIRE(d.answers.size() == 1);
     CHECK(d.answers[0].value->approx == Approx(19.62));
   }
 }
 
-TEST_CASE("Friction: a normal with a parameter inside a root is answered, never 'internal error: power::degree()'", "[rules][friction3d]") {
+TEST_CASE("Friction: a normal with a parameter inside a root is answered, never 'internal error: power::degree()'",
+          "[rules][friction3d]") {
   // A contact whose normal is (sqrt(1 - a^2), a): with a = 1/2 the incline's normal is at 30
   // deg from the x axis. Weight m g = 20 N along -y. By hand: N_C = m g a = 10 N, the
   // friction along (a, -sqrt(1 - a^2)) is -m g sqrt(1 - a^2) = -17.3205 N. Solving the
@@ -242,7 +260,8 @@ connections:
                                    {"\"-sqrt(1-a^2)\"]", "\"-sqrt(1-a^2)\", 0]"}})
       text.replace(text.find(from), from.size(), to);
     const Derivation d = explain(*test::run_text(text));
-    CHECK(closed_forms(d) == std::map<std::string, std::string>{{"N_C", "a*g*m"}, {"F_C1", "-g*m*sqrt(1 - a^2)"}, {"F_C2", "0"}});
+    CHECK(closed_forms(d) ==
+          std::map<std::string, std::string>{{"N_C", "a*g*m"}, {"F_C1", "-g*m*sqrt(1 - a^2)"}, {"F_C2", "0"}});
     const ConditionReport& c = friction_condition(d);
     CHECK(to_text(c.simplified) == "g*m*(sqrt(1 - a^2) - a*mu)");
     CHECK(c.holds == std::optional<bool>(false));

@@ -57,8 +57,8 @@ derive: [{lmb: block}]
   for (const auto& ans : d.answers) r[ans.name] = to_text(*ans.closed_form);
   CHECK(r == std::map<std::string, std::string>{{"N_A", "g*m"}, {"F_A", "-P"}});
   REQUIRE(d.conditions.size() == 3);
-  CHECK(*d.conditions[0].holds);       // N >= 0
-  CHECK(*d.conditions[1].holds);       // F <= mu N: -5 <= 4
+  CHECK(*d.conditions[0].holds);        // N >= 0
+  CHECK(*d.conditions[1].holds);        // F <= mu N: -5 <= 4
   CHECK_FALSE(*d.conditions[2].holds);  // -F <= mu N: 5 <= 4 fails: it slips
   CHECK(d.conditions[2].otherwise == "the contact slips");
 }
@@ -77,9 +77,10 @@ connections:
   CHECK(r.at("F_R") == "a*m");
   CHECK(r.at("N_R") == "m*(a*h + d*g)/(c + d)");
   CHECK(r.at("N_F") == "m*(c*g - a*h)/(c + d)");
-  const auto without_mu = explain(*test::run_text(car + "  - {type: driven_wheel, body: car, at: R, normal: [0, 1], rolling: [1, 0]}\n"));
-  const auto with_mu = explain(*test::run_text(
-      car + "  - {type: driven_wheel, body: car, at: R, normal: [0, 1], rolling: [1, 0], mu: 1}\n"));
+  const auto without_mu =
+      explain(*test::run_text(car + "  - {type: driven_wheel, body: car, at: R, normal: [0, 1], rolling: [1, 0]}\n"));
+  const auto with_mu = explain(
+      *test::run_text(car + "  - {type: driven_wheel, body: car, at: R, normal: [0, 1], rolling: [1, 0], mu: 1}\n"));
   CHECK(with_mu.conditions.size() == without_mu.conditions.size() + 2);
 }
 
@@ -92,8 +93,8 @@ points: {O: [0, 0, 0]}
 bodies: {beam: {mass: m, center_of_mass: [L, 0, 0]}}
 )";
   const auto w = answers(head + "connections: [{type: weld, body: beam, at: O}]\n");
-  CHECK(w == std::map<std::string, std::string>{{"O_x", "0"}, {"O_y", "0"}, {"O_z", "g*m"},
-                                                {"M_Ox", "0"}, {"M_Oy", "-L*g*m"}, {"M_Oz", "0"}});
+  CHECK(w == std::map<std::string, std::string>{
+                 {"O_x", "0"}, {"O_y", "0"}, {"O_z", "g*m"}, {"M_Ox", "0"}, {"M_Oy", "-L*g*m"}, {"M_Oz", "0"}});
   // A hinge along z resists turning about x and y only; the weight has no moment about z.
   const auto h = answers(head + "connections: [{type: hinge_with_moments, body: beam, at: O, axis: [0, 0, 1]}]\n");
   CHECK(h.at("O_z") == "g*m");

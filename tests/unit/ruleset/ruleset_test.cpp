@@ -30,11 +30,41 @@ std::vector<std::string> rule_errors(const std::string& text, const std::string&
 
 TEST_CASE("Rules: the bundled rules load and declare what they need", "[rules]") {
   const RuleSet rules = load_rules(TACKLE_SOURCE_DIR "/rules");
-  CHECK(rules.names() == std::vector<std::string>{"ball_and_socket", "ball_joint", "cable", "collar", "contact", "couple", "damper",
-                                                 "driven_wheel", "elastic_cord", "fixed", "fixed_support", "force", "free_wheel", "friction_between", "hinge",
-                                                 "hinge_with_moments", "link", "pin", "pin_joint", "pulley", "rod", "roller", "rolling",
-                                                 "same_motion", "skidding_wheel", "slider_joint", "sliding", "sliding_between", "spring", "sticking",
-                                                 "sticking_between", "string", "unknown_force", "weld", "weld_joint"});
+  CHECK(rules.names() == std::vector<std::string>{"ball_and_socket",
+                                                  "ball_joint",
+                                                  "cable",
+                                                  "collar",
+                                                  "contact",
+                                                  "couple",
+                                                  "damper",
+                                                  "driven_wheel",
+                                                  "elastic_cord",
+                                                  "fixed",
+                                                  "fixed_support",
+                                                  "force",
+                                                  "free_wheel",
+                                                  "friction_between",
+                                                  "hinge",
+                                                  "hinge_with_moments",
+                                                  "link",
+                                                  "pin",
+                                                  "pin_joint",
+                                                  "pulley",
+                                                  "rod",
+                                                  "roller",
+                                                  "rolling",
+                                                  "same_motion",
+                                                  "skidding_wheel",
+                                                  "slider_joint",
+                                                  "sliding",
+                                                  "sliding_between",
+                                                  "spring",
+                                                  "sticking",
+                                                  "sticking_between",
+                                                  "string",
+                                                  "unknown_force",
+                                                  "weld",
+                                                  "weld_joint"});
   const Rule* s = rules.find("string");
   REQUIRE(s);
   REQUIRE(s->unknowns.size() == 1);
@@ -51,11 +81,13 @@ TEST_CASE("Rules: a rule file with errors is reported like a description, all at
       "needs: {on: bdy}\n"
       "loads:\n"
       "  - {on: on, force: \"-k*\"}\n";
-  CHECK(rule_errors(text, "rules/spring.yaml") == std::vector<std::string>{
-                   "rules/spring.yaml:2:1: unknown key 'summry' in the rule (did you mean 'summary'?)",
-                   "rules/spring.yaml:3:13: unknown argument kind 'bdy' (expected one of: body, point, points, expr, name, vector, moment)",
-                   "rules/spring.yaml:5:5: in '-k*': unknown name 'k' (known: on)",
-               });
+  CHECK(rule_errors(text, "rules/spring.yaml") ==
+        std::vector<std::string>{
+            "rules/spring.yaml:2:1: unknown key 'summry' in the rule (did you mean 'summary'?)",
+            "rules/spring.yaml:3:13: unknown argument kind 'bdy' (expected one of: body, point, points, expr, name, "
+            "vector, moment)",
+            "rules/spring.yaml:5:5: in '-k*': unknown name 'k' (known: on)",
+        });
 }
 
 TEST_CASE("Rules: a sketch kind and the summary's symbols are checked", "[rules]") {
@@ -66,14 +98,17 @@ TEST_CASE("Rules: a sketch kind and the summary's symbols are checked", "[rules]
       "needs: {on: body, mu: expr}\n"
       "unknowns:\n"
       "  - {local: N, name: N_b, dimension: force}\n";
-  CHECK(rule_errors(text, "rules/bumper.yaml") == std::vector<std::string>{
-                   "rules/bumper.yaml:3:9: 'sketch' is 'zigzag' (expected line, spring, damper, pulley, support, arrow, contact, surface, pin, joint, rod or couple)",
-                   "rules/bumper.yaml:2:10: in 'mu*M': unknown name 'M' (known: mu, N)",
-               });
+  CHECK(rule_errors(text, "rules/bumper.yaml") ==
+        std::vector<std::string>{
+            "rules/bumper.yaml:3:9: 'sketch' is 'zigzag' (expected line, spring, damper, pulley, support, arrow, "
+            "contact, surface, pin, joint, rod or couple)",
+            "rules/bumper.yaml:2:10: in 'mu*M': unknown name 'M' (known: mu, N)",
+        });
   // Read, the rule keeps them: the sketch kind, and the summary as written.
-  const Rule r = parse_rule("type: bumper\nsummary: pushing with {N}\nsketch: spring\nneeds: {on: body}\nunknowns:\n"
-                            "  - {local: N, name: N_b, dimension: force}\n",
-                            "rules/bumper.yaml");
+  const Rule r = parse_rule(
+      "type: bumper\nsummary: pushing with {N}\nsketch: spring\nneeds: {on: body}\nunknowns:\n"
+      "  - {local: N, name: N_b, dimension: force}\n",
+      "rules/bumper.yaml");
   CHECK(r.sketch == "spring");
   CHECK(r.summary == "pushing with {N}");
 }
@@ -104,7 +139,8 @@ TEST_CASE("Rules: a rule is read when first used, its problems then, or all at o
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("tackle-rules-" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  std::ofstream(dir / "good.yaml") << "type: good\nsummary: a force\nneeds: {on: body, force: expr}\nloads:\n  - {on: on, force: force}\n";
+  std::ofstream(dir / "good.yaml")
+      << "type: good\nsummary: a force\nneeds: {on: body, force: expr}\nloads:\n  - {on: on, force: force}\n";
   std::ofstream(dir / "broken.yaml") << "type: broken  # a comment\nsummry: oops\n";
   std::ofstream(dir / "flow.yaml") << "{type: flow, summry: read at once}\n";
   // The flow-style file has no plain type line: it is read at once, and its problem reported.
@@ -126,14 +162,16 @@ TEST_CASE("Rules: a rule is read when first used, its problems then, or all at o
     FAIL("expected an InputError");
   } catch (const InputError& e) {
     REQUIRE(e.diagnostics().size() == 1);
-    CHECK(format(e.diagnostics()[0]) == (dir / "broken.yaml").string() + ":2:1: unknown key 'summry' in the rule (did you mean 'summary'?)");
+    CHECK(format(e.diagnostics()[0]) ==
+          (dir / "broken.yaml").string() + ":2:1: unknown key 'summry' in the rule (did you mean 'summary'?)");
   }
   CHECK_THROWS_AS(rules.read_all(), InputError);
   CHECK_THROWS_AS(load_rules(dir.string(), RuleLoading::all), InputError);
   fs::remove_all(dir);
 }
 
-TEST_CASE("Rules: every rule compiled in is the rule its file reads as, and is used only for that very text", "[rules]") {
+TEST_CASE("Rules: every rule compiled in is the rule its file reads as, and is used only for that very text",
+          "[rules]") {
   namespace fs = std::filesystem;
   // One compiled rule per rules/*.yaml, each the same as parse_rule() of the file (a field the
   // build-time writer left out would differ here).
@@ -186,11 +224,12 @@ TEST_CASE("Rules: a mapping where a list belongs is an error, not a crash (found
       "  - a list under a key\n"
       "one_of: [[a], b]\n"
       "assumptions: {a: b}\n";
-  CHECK(rule_errors(text, "rules/skidding.yaml") == std::vector<std::string>{
-                   "rules/skidding.yaml:5:11: 'one_of' names argument 'a', which the rule does not declare",
-                   "rules/skidding.yaml:5:15: a group of 'one_of' is a scalar (expected a list)",
-                   "rules/skidding.yaml:3:3: 'unknowns' is a mapping (expected a list)",
-                   "rules/skidding.yaml:6:14: 'assumptions' is a mapping (expected a list)"});
+  CHECK(
+      rule_errors(text, "rules/skidding.yaml") ==
+      std::vector<std::string>{"rules/skidding.yaml:5:11: 'one_of' names argument 'a', which the rule does not declare",
+                               "rules/skidding.yaml:5:15: a group of 'one_of' is a scalar (expected a list)",
+                               "rules/skidding.yaml:3:3: 'unknowns' is a mapping (expected a list)",
+                               "rules/skidding.yaml:6:14: 'assumptions' is a mapping (expected a list)"});
 }
 
 TEST_CASE("Rules: a check or an assumption 'when' an argument names one the rule declares", "[rules]") {
@@ -203,7 +242,8 @@ TEST_CASE("Rules: a check or an assumption 'when' an argument names one the rule
       "assumptions:\n"
       "  - {text: \"a radius\", when: radios}\n"
       "  - {text: \"fine\", when: radius}\n";
-  CHECK(rule_errors(text, "rules/wheel.yaml") == std::vector<std::string>{
-                   "rules/wheel.yaml:5:5: 'when' names argument 'radiuss', which the rule does not declare",
-                   "rules/wheel.yaml:7:5: 'when' names argument 'radios', which the rule does not declare"});
+  CHECK(rule_errors(text, "rules/wheel.yaml") ==
+        std::vector<std::string>{
+            "rules/wheel.yaml:5:5: 'when' names argument 'radiuss', which the rule does not declare",
+            "rules/wheel.yaml:7:5: 'when' names argument 'radios', which the rule does not declare"});
 }

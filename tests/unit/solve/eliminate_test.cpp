@@ -21,7 +21,8 @@ std::string chain(int n) {
   o << "bodies:\n";
   for (int i = 1; i <= n; ++i) o << "  b" << i << ": {mass: m_" << i << ", position: x_" << i << "}\n";
   o << "loads: [{on: b" << n << ", force: F}]\nstrings:\n";
-  for (int i = 1; i < n; ++i) o << "  - {name: s" << i << ", path: [b" << i << ", b" << i + 1 << "], tension: T_" << i << "}\n";
+  for (int i = 1; i < n; ++i)
+    o << "  - {name: s" << i << ", path: [b" << i << ", b" << i + 1 << "], tension: T_" << i << "}\n";
   o << "layout: {";
   for (int i = 1; i <= n; ++i) o << (i > 1 ? ", " : "") << "x_" << i << ": " << 2 * i;
   o << "}\n";
@@ -41,7 +42,10 @@ ex difference(const Analysis& a, const std::string& name, const std::string& exp
 
 }  // namespace
 
-TEST_CASE("Elimination: a chain of 40 blocks gives F over the total mass, and the first k masses' share of F as the k-th tension", "[solve][scale]") {
+TEST_CASE(
+    "Elimination: a chain of 40 blocks gives F over the total mass, and the first k masses' share of F as the k-th "
+    "tension",
+    "[solve][scale]") {
   const int n = 40;
   const auto a = test::run_text(chain(n));
   REQUIRE(a->solution.status == Solution::Status::determined);
@@ -50,14 +54,17 @@ TEST_CASE("Elimination: a chain of 40 blocks gives F over the total mass, and th
   // 1..k pulled by T_k alone give T_k = (m_1 + ... + m_k) a, and all n by F give F = M a.
   std::string total, partial;
   for (int i = 1; i <= n; ++i) total += (i > 1 ? " + m_" : "m_") + std::to_string(i);
-  for (int i = 1; i <= n; ++i) CHECK(difference(*a, "ddot(x_" + std::to_string(i) + ")", "F/(" + total + ")").is_zero());
+  for (int i = 1; i <= n; ++i)
+    CHECK(difference(*a, "ddot(x_" + std::to_string(i) + ")", "F/(" + total + ")").is_zero());
   for (int k = 1; k < n; ++k) {
     partial += (k > 1 ? " + m_" : "m_") + std::to_string(k);
     CHECK(difference(*a, "T_" + std::to_string(k), "(" + partial + ")*F/(" + total + ")").is_zero());
   }
 }
 
-TEST_CASE("Elimination: the double Atwood machine gives the textbook tension 8 g m_1 m_2 m_3/(4 m_2 m_3 + m_1 (m_2 + m_3))", "[solve][scale]") {
+TEST_CASE(
+    "Elimination: the double Atwood machine gives the textbook tension 8 g m_1 m_2 m_3/(4 m_2 m_3 + m_1 (m_2 + m_3))",
+    "[solve][scale]") {
   // Pulley P1 hangs from the ceiling; its string carries B1 and the movable pulley P2, whose
   // string carries B2 and B3 (bench/generate.py cascade 2). By hand, y up: T_1 = 2 T_2
   // (P2 is massless), the string lengths give a_1 = -a_P2 and a_2 + a_3 = 2 a_P2, and the
@@ -152,11 +159,14 @@ TEST_CASE("Elimination: a cascade of 12 levels gives T_12 = 2^12 g/(sum of 4^(12
     CHECK(difference(*a, "T_" + std::to_string(k), std::to_string(1L << (n - k)) + "*" + t_n).is_zero());
   for (int k = 1; k <= n + 1; ++k) {
     const long w = k <= n ? (1L << (n - k)) : 1;
-    CHECK(difference(*a, "ddot(y_" + std::to_string(k) + ")", std::to_string(w) + "*" + t_n + "/m_" + std::to_string(k) + " - g").is_zero());
+    CHECK(difference(*a, "ddot(y_" + std::to_string(k) + ")",
+                     std::to_string(w) + "*" + t_n + "/m_" + std::to_string(k) + " - g")
+              .is_zero());
   }
 }
 
-TEST_CASE("Elimination: a block-and-tackle of 64 strands gives T = m (F + 65 g m_H)/(m + 4096 m_H)", "[solve][scale][string]") {
+TEST_CASE("Elimination: a block-and-tackle of 64 strands gives T = m (F + 65 g m_H)/(m + 4096 m_H)",
+          "[solve][scale][string]") {
   // bench/generate.py tackle 64. By hand: the length 64 (y_C - y_M) + (y_C - y_H) gives
   // a_H = -64 a_M; LMB L: 64 T - m g = m a_M; LMB H: T - F - m_H g = m_H a_H. So
   // a_M = (64 F + 64 m_H g - m g)/(m + 4096 m_H) and T = m (F + 65 g m_H)/(m + 4096 m_H).
@@ -171,7 +181,8 @@ gravity: -g
 bodies: {L: {mass: m, position: y_M}, H: {mass: m_H, position: y_H}}
 points: {C: 0, M: {on: L}}
 loads: [{on: H, force: -F}]
-strings: [{name: rope, path: [)" + path + R"(, H], tension: T}]
+strings: [{name: rope, path: [)" +
+                                path + R"(, H], tension: T}]
 connections: [{type: pulley, at: C}, {type: pulley, at: M}]
 layout: {y_M: -3, y_H: -1}
 )");
@@ -181,11 +192,13 @@ layout: {y_M: -3, y_H: -1}
   CHECK(difference(*a, "ddot(y_H)", "-64*(64*F + 64*g*m_H - g*m)/(m + 4096*m_H)").is_zero());
 }
 
-TEST_CASE("Elimination: in column order the unknown left free is the later one, whatever the sparsest pivot", "[solve]") {
+TEST_CASE("Elimination: in column order the unknown left free is the later one, whatever the sparsest pivot",
+          "[solve]") {
   // a + b = 1 and c = 2: b lies in the span of the columns before it, so b is free and
   // a + b = 1 is a combination, even though Markowitz's rule alone could pivot on b.
   const symbol a("a"), b("b"), c("c");
-  const std::vector<Equation> eqs{{Equation::Kind::lmb, "first", a + b, 1, {}, {}, "", {}, false}, {Equation::Kind::lmb, "second", c, 2, {}, {}, "", {}, false}};
+  const std::vector<Equation> eqs{{Equation::Kind::lmb, "first", a + b, 1, {}, {}, "", {}, false},
+                                  {Equation::Kind::lmb, "second", c, 2, {}, {}, "", {}, false}};
   const Solution s = solve_equations("t.yaml", eqs, {a, b, c});
   CHECK(s.status == Solution::Status::underdetermined);
   REQUIRE(s.free.size() == 1);
@@ -211,7 +224,9 @@ TEST_CASE("Elimination: an equation left over names the equations it combines", 
   CHECK(e.leftover[0].combination.size() == 3);
 }
 
-TEST_CASE("Elimination: a 3-D train of 12 carts joined by ball joints gives each joint the share of the carts behind it", "[solve][scale]") {
+TEST_CASE(
+    "Elimination: a 3-D train of 12 carts joined by ball joints gives each joint the share of the carts behind it",
+    "[solve][scale]") {
   // bench/generate.py carts 12. By hand: the carts share a = F/M (M = m_1 + ... + m_12);
   // the joint J_k pushes cart k+1 with -(m_1 + ... + m_k) a along x and nothing across (no
   // moment balances the y and z components about the centers of mass); each floor carries
@@ -221,12 +236,14 @@ TEST_CASE("Elimination: a 3-D train of 12 carts joined by ball joints gives each
   o << "title: carts\naxes: [x, y, z]\nparameters: {F: {unit: N}, g: {unit: m/s^2}, b: {unit: m}";
   for (int i = 1; i <= n; ++i) o << ", m_" << i << ": {unit: kg}";
   o << "}\ngravity: [0, 0, -g]\nbodies:\n";
-  for (int i = 1; i <= n; ++i) o << "  C" << i << ": {mass: m_" << i << ", position: x_" << i << ", center_of_mass: [x_" << i << ", 0, 0]}\n";
+  for (int i = 1; i <= n; ++i)
+    o << "  C" << i << ": {mass: m_" << i << ", position: x_" << i << ", center_of_mass: [x_" << i << ", 0, 0]}\n";
   o << "points:\n";
   for (int i = 1; i < n; ++i) o << "  J" << i << ": {on: C" << i + 1 << ", offset: [\"-b\", 0, 0]}\n";
   o << "connections:\n";
   for (int i = 1; i <= n; ++i) o << "  - {type: roller, body: C" << i << ", at: C" << i << ", normal: [0, 0, 1]}\n";
-  for (int i = 1; i < n; ++i) o << "  - {type: ball_joint, body: C" << i + 1 << ", other: C" << i << ", at: J" << i << "}\n";
+  for (int i = 1; i < n; ++i)
+    o << "  - {type: ball_joint, body: C" << i + 1 << ", other: C" << i << ", at: J" << i << "}\n";
   o << "  - {type: force, on: C" << n << ", at: C" << n << ", force: [F, 0, 0]}\nlayout: {";
   for (int i = 1; i <= n; ++i) o << (i > 1 ? ", " : "") << "x_" << i << ": " << 3 * i;
   o << "}\n";

@@ -41,9 +41,10 @@ loads: [{on: A, force: F}]
   CHECK(sol.conflicts == std::vector<std::string>{"LMB A (x)"});
   // ... and the pipeline refuses the description (exit 1), at the body, with what could supply it.
   CHECK(test::errors_of(text) ==
-        std::vector<std::string>{"t.yaml:4:10: the balances cannot all hold: LMB A (x) reads 0 = a force that is not zero (expected "
-                                 "body 'A' has no mass, so the forces on it must cancel: a support, a string or a contact that "
-                                 "balances them, or a mass)"});
+        std::vector<std::string>{
+            "t.yaml:4:10: the balances cannot all hold: LMB A (x) reads 0 = a force that is not zero (expected "
+            "body 'A' has no mass, so the forces on it must cancel: a support, a string or a contact that "
+            "balances them, or a mass)"});
 }
 
 TEST_CASE("Solve: a system balance next to the body balances is reported redundant", "[solve]") {
@@ -82,7 +83,8 @@ given: [ddot(x_A)]
 TEST_CASE("Dimensions: every written equation is checked, naming the term that disagrees", "[solve][units]") {
   RuleSet rules = load_rules(TACKLE_SOURCE_DIR "/rules");
   // A rule whose force argument declares no dimension: only the equation check can catch it.
-  rules.add(parse_rule("type: push\nneeds: {on: body, amount: expr}\nloads:\n  - {on: on, force: amount}\n", "push.yaml"));
+  rules.add(
+      parse_rule("type: push\nneeds: {on: body, amount: expr}\nloads:\n  - {on: on, force: amount}\n", "push.yaml"));
   const std::string text = R"(title: a push given in metres
 parameters: {m: {value: 2, unit: kg}, d: {value: 3, unit: m}}
 bodies: {A: {mass: m, position: x_A}}
@@ -94,7 +96,8 @@ connections: [{type: push, on: A, amount: d}]
   } catch (const InputError& e) {
     REQUIRE(e.diagnostics().size() == 1);
     CHECK(format(e.diagnostics()[0]) ==
-          "t.yaml: equation 'LMB A (x)' is not dimensionally consistent: the term from push on A is a length (expected a force)");
+          "t.yaml: equation 'LMB A (x)' is not dimensionally consistent: the term from push on A is a length (expected "
+          "a force)");
   }
 }
 
@@ -130,7 +133,8 @@ TEST_CASE("Simplest: a compound Atwood machine's sums over all masses but one ar
   const ex s = simplest(tension);
   CHECK(normal(s - tension).is_zero());
   CHECK(to_text(s) == to_text(expected));
-  CHECK(to_text(s) == "2*g/(1/m_1 + 4/m_2 + 16/m_3 + 64/m_4 + 256/m_5 + 1024/m_6 + 4096/m_7 + 16384/m_8 + 65536/m_9 + 262144/m_10)");
+  CHECK(to_text(s) ==
+        "2*g/(1/m_1 + 4/m_2 + 16/m_3 + 64/m_4 + 256/m_5 + 1024/m_6 + 4096/m_7 + 16384/m_8 + 65536/m_9 + 262144/m_10)");
   // A chain's sum of 64 masses, each term one mass, is not that shape: kept as it is (tried
   // once, the inversion of all 64 masses took a minute).
   ex chain_sum = 0;
@@ -142,5 +146,6 @@ TEST_CASE("Simplest: a compound Atwood machine's sums over all masses but one ar
   // A small problem keeps its polynomial form: the Atwood machine.
   const possymbol m1("m_1"), m2("m_2"), m3("m_3");
   CHECK(to_text(simplest(g * (m1 - m2) / (m1 + m2))) == "g*(m_1 - m_2)/(m_1 + m_2)");
-  CHECK(to_text(simplest(g * m1 * m2 / (m1 * m2 + 4 * m1 * m3 + m2 * m3))) == "g*m_1*m_2/(m_1*m_2 + 4*m_1*m_3 + m_2*m_3)");
+  CHECK(to_text(simplest(g * m1 * m2 / (m1 * m2 + 4 * m1 * m3 + m2 * m3))) ==
+        "g*m_1*m_2/(m_1*m_2 + 4*m_1*m_3 + m_2*m_3)");
 }

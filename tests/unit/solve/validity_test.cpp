@@ -69,7 +69,8 @@ TEST_CASE("Validity: a condition is solved for a parameter only when a coefficie
   CHECK(solve_condition(x * x - 1, ">=", {x}).empty());  // not linear
 }
 
-TEST_CASE("Validity: signs of sums and products of positive symbols are decided in both directions", "[validity][sign]") {
+TEST_CASE("Validity: signs of sums and products of positive symbols are decided in both directions",
+          "[validity][sign]") {
   const GiNaC::possymbol h("h"), mu("mu"), l_f("l_f"), l_r("l_r"), m("m");
   const GiNaC::realsymbol x("x");
   CHECK(sign_of(h * mu + l_f + l_r) == 1);
@@ -109,7 +110,8 @@ TEST_CASE("Validity: a factorization's signs are canonical, whatever order GiNaC
   CHECK(to_text(f[0]) == "-1");
 }
 
-TEST_CASE("Validity: the front-wheel-drive car's largest acceleration is found under every hash order", "[validity][sign]") {
+TEST_CASE("Validity: the front-wheel-drive car's largest acceleration is found under every hash order",
+          "[validity][sign]") {
   // Regression: the grip condition mu*N_F >= m*a is linear in a with the coefficient
   // -(h*mu + l_f + l_r); when factor() returned it as -m*(...), the sign was taken as unknown
   // and `a <= ...` was left out in about one run in three. Symbols made before the model
@@ -152,20 +154,26 @@ TEST_CASE("Validity in numbers: the banked curve keeps its line from 5.3187 to 1
   const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/rotation-car-on-banked-curve.yaml", test::rules());
   const Derivation d = explain(*a);
   const std::string text = write(d, Format::text, true);
-  CHECK(text.find("    v^2 <= g*r*(mu*cos(beta) + sin(beta))/(cos(beta) - mu*sin(beta))  = (19.1206 m/s)^2    [solved for "
-                  "v^2, while cos(beta) - mu*sin(beta) > 0 (as at the given numbers)]\n") != std::string::npos);
-  CHECK(text.find("    v^2 >= g*r*(sin(beta) - mu*cos(beta))/(cos(beta) + mu*sin(beta))  = (5.3187 m/s)^2    [solved for v^2]\n") !=
-        std::string::npos);
-  CHECK(text.find("The bound is below 0, so every value of mu down to 0 satisfies it: nothing is asked of it from below.\n") !=
-        std::string::npos);
+  CHECK(text.find(
+            "    v^2 <= g*r*(mu*cos(beta) + sin(beta))/(cos(beta) - mu*sin(beta))  = (19.1206 m/s)^2    [solved for "
+            "v^2, while cos(beta) - mu*sin(beta) > 0 (as at the given numbers)]\n") != std::string::npos);
+  CHECK(text.find("    v^2 >= g*r*(sin(beta) - mu*cos(beta))/(cos(beta) + mu*sin(beta))  = (5.3187 m/s)^2    [solved "
+                  "for v^2]\n") != std::string::npos);
+  CHECK(
+      text.find(
+          "The bound is below 0, so every value of mu down to 0 satisfies it: nothing is asked of it from below.\n") !=
+      std::string::npos);
   CHECK(text.find("  - 5.3187 m/s <= v <= 19.1206 m/s (given: 15 m/s)\n") != std::string::npos);
   const std::string latex = write(d, Format::latex, true);
   CHECK(latex.find("\\quad \\left(= \\left(19.1206\\,\\mathrm{m/s}\\right)^{2}\\right)") != std::string::npos);
-  CHECK(latex.find("\\item $5.3187\\,\\mathrm{m/s} \\le v \\le 19.1206\\,\\mathrm{m/s}$ (given: 15 m/s)") != std::string::npos);
+  CHECK(latex.find("\\item $5.3187\\,\\mathrm{m/s} \\le v \\le 19.1206\\,\\mathrm{m/s}$ (given: 15 m/s)") !=
+        std::string::npos);
   // The square's bound in SI beside its root, in the JSON.
   const std::string json = write(d, Format::json, false);
-  CHECK(json.find("\"decimal\": \"365.597\",\n            \"unit\": \"m^2*s^-2\"\n          },\n          \"root_value\": {") !=
-        std::string::npos);
+  CHECK(
+      json.find(
+          "\"decimal\": \"365.597\",\n            \"unit\": \"m^2*s^-2\"\n          },\n          \"root_value\": {") !=
+      std::string::npos);
   CHECK(json.find("\"decimal\": \"19.1206\",\n            \"unit\": \"m/s\"") != std::string::npos);
 }
 
@@ -187,19 +195,22 @@ TEST_CASE("Validity in numbers: on a steep, rough curve no speed is too low", "[
   CHECK(lowest->number->every_value);
   CHECK(lowest->number->value.approx == Approx(-8.25134).epsilon(1e-5));
   CHECK_FALSE(lowest->number->root);
-  const auto v = std::find_if(d.ranges.begin(), d.ranges.end(), [](const ParameterRange& r) { return to_text(r.parameter) == "v"; });
+  const auto v = std::find_if(d.ranges.begin(), d.ranges.end(),
+                              [](const ParameterRange& r) { return to_text(r.parameter) == "v"; });
   REQUIRE(v != d.ranges.end());
   CHECK_FALSE(v->low);
   REQUIRE(v->high);
   CHECK(v->high->approx == Approx(29.7249).epsilon(1e-5));
-  CHECK(write(d, Format::text, true).find("The bound is below 0, so every value of v down to 0 satisfies it") != std::string::npos);
+  CHECK(write(d, Format::text, true).find("The bound is below 0, so every value of v down to 0 satisfies it") !=
+        std::string::npos);
 }
 
-TEST_CASE("Validity in numbers: a bound in the parameter's own unit, and an upper bound below 0", "[validity][numbers]") {
+TEST_CASE("Validity in numbers: a bound in the parameter's own unit, and an upper bound below 0",
+          "[validity][numbers]") {
   SymbolTable table;
   const GiNaC::ex h = table.add("h", std::nullopt, SymbolRole::parameter, Dimension::length(), true, Location{}).sym;
   const GiNaC::ex a = table.add("a", std::nullopt, SymbolRole::parameter, Dimension::length(), true, Location{}).sym;
-  table.set_value("a", GiNaC::numeric(3, 10));     // 0.3 m
+  table.set_value("a", GiNaC::numeric(3, 10));  // 0.3 m
   table.set_unit("h", "cm", GiNaC::numeric(1, 100));
   // h <= 2 a = 0.6 m, said in h's unit: 60 cm.
   const auto upper = bound_number({h, "<=", 2 * a, 0, std::nullopt}, table, 6);
