@@ -560,6 +560,47 @@ CheckResult Checker::check_answer(const std::string& unknown, std::string_view a
   return check_expression(ref, text, r, start, column);
 }
 
+namespace {
+
+// Whether a number agrees with the correct one, to the significant figures asked or within
+// the relative tolerance, and how that was judged ("within 1%").
+std::pair<bool, std::string> number_agrees(double got, double want, const CheckOptions& options) {
+  if (options.significant_figures) {
+    const int n = *options.significant_figures;
+    auto round_to = [n](double x) {
+      if (x == 0) return 0.0;
+      const double scale = std::pow(10.0, n - 1 - static_cast<int>(std::floor(std::log10(std::abs(x)))));
+      return std::round(x * scale) / scale;
+    };
+    return {round_to(got) == round_to(want), "to " + std::to_string(n) + " significant figures"};
+  }
+  return {std::abs(got - want) <= options.relative_tolerance * std::abs(want) + 1e-300,
+          "within " + fmt_percent(options.relative_tolerance)};
+}
+
+// Why a number is wrong, when a usual slip explains it: the sign, a factor of ten (a unit
+// prefix), a simple factor, or g (mass for weight).
+std::optional<Finding> why_number_differs(double got, double want) {
+  const double ratio = want != 0 ? got / want : 0;
+  auto near = [](double x, double y) { return std::abs(x - y) <= 0.01 * std::abs(y); };
+  if (near(ratio, -1)) return Finding{"sign", "the sign is wrong"};
+  if (ratio == 0) return std::nullopt;
+  const double l10 = std::log10(std::abs(ratio));
+  const double k = std::round(l10);
+  if (k != 0 && std::abs(l10 - k) < 0.005)
+    return Finding{"factor", "off by a factor of 10^" + std::to_string(static_cast<int>(k)) +
+                                 ": check the unit prefix or the conversion"};
+  if (near(std::abs(ratio), 9.81) || near(std::abs(ratio), 1 / 9.81))
+    return Finding{"factor", "off by a factor of g: a mass where a weight belongs, or the reverse?"};
+  const std::pair<double, const char*> simple[] = {{2.0, "2"},       {0.5, "1/2"}, {3.0, "3"},
+                                                   {1.0 / 3, "1/3"}, {4.0, "4"},   {0.25, "1/4"}};
+  for (const auto& [f, name] : simple)
+    if (near(std::abs(ratio), f)) return Finding{"factor", std::string("off by a factor of ") + name};
+  return std::nullopt;
+}
+
+}  // namespace
+
 CheckResult Checker::check_number(const Reference& ref, std::string_view number, std::string_view unit_text,
                                   CheckResult r, const exmap* values) const {
   r.method = "number";
@@ -611,21 +652,7 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
                   "this problem gives no numbers for every parameter: answer with a closed form in its symbols");
   const numeric expect = *at_values;
   const double got = value.to_double(), want = expect.to_double();
-  bool ok;
-  std::string how;
-  if (options_.significant_figures) {
-    const int n = *options_.significant_figures;
-    auto round_to = [n](double x) {
-      if (x == 0) return 0.0;
-      const double scale = std::pow(10.0, n - 1 - static_cast<int>(std::floor(std::log10(std::abs(x)))));
-      return std::round(x * scale) / scale;
-    };
-    ok = round_to(got) == round_to(want);
-    how = "to " + std::to_string(n) + " significant figures";
-  } else {
-    ok = std::abs(got - want) <= options_.relative_tolerance * std::abs(want) + 1e-300;
-    how = "within " + fmt_percent(options_.relative_tolerance);
-  }
+  const auto [ok, how] = number_agrees(got, want, options_);
   const std::string unit = si_unit_name(expected);
   if (ok) {
     r.verdict = Verdict::correct;
@@ -638,31 +665,7 @@ CheckResult Checker::check_number(const Reference& ref, std::string_view number,
   }
   r.verdict = Verdict::incorrect;
   r.score = 0.0;
-  // Why: the sign, a factor of ten (a unit prefix), a simple factor, or g (mass for weight).
-  const double ratio = want != 0 ? got / want : 0;
-  auto near = [](double x, double y) { return std::abs(x - y) <= 0.01 * std::abs(y); };
-  if (near(ratio, -1)) {
-    r.findings.push_back({"sign", "the sign is wrong"});
-  } else if (ratio != 0) {
-    const double l10 = std::log10(std::abs(ratio));
-    const double k = std::round(l10);
-    if (k != 0 && std::abs(l10 - k) < 0.005)
-      r.findings.push_back({"factor", "off by a factor of 10^" + std::to_string(static_cast<int>(k)) +
-                                          ": check the unit prefix or the conversion"});
-    else if (near(std::abs(ratio), 9.81) || near(std::abs(ratio), 1 / 9.81))
-      r.findings.push_back({"factor", "off by a factor of g: a mass where a weight belongs, or the reverse?"});
-    else
-      for (const double f : {2.0, 0.5, 3.0, 1.0 / 3, 4.0, 0.25})
-        if (near(std::abs(ratio), f)) {
-          r.findings.push_back({"factor", "off by a factor of " + std::string(f == 2.0    ? "2"
-                                                                              : f == 0.5  ? "1/2"
-                                                                              : f == 3.0  ? "3"
-                                                                              : f == 4.0  ? "4"
-                                                                              : f == 0.25 ? "1/4"
-                                                                                          : "1/3")});
-          break;
-        }
-  }
+  if (auto why = why_number_differs(got, want)) r.findings.push_back(std::move(*why));
   const std::string got_text = decimal_string(value, 6) + (unit.empty() ? "" : " " + unit);
   r.findings.push_back({"tolerance", options_.reveal
                                          ? "expected " + decimal_string(expect, 6) + (unit.empty() ? "" : " " + unit) +

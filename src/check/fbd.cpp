@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "check/batch.hpp"
 #include "expr/print.hpp"
 #include "model/forces.hpp"
 
@@ -75,10 +74,8 @@ std::string read_kind(const yaml::Node& node, const std::string& file, Diagnosti
   return "";
 }
 
-StudentFbd read_fbd_data(const yaml::Node& node, int dims, const std::string& file, Diagnostics& diags) {
-  StudentFbd fbd;
-  fbd.where = yaml::where(node, file);
-  if (!yaml::check_map(node, {"body", "bodies", "forces", "couples"}, "the free body diagram", file, diags)) return fbd;
+// The diagram's body, or a system's bodies.
+void read_bodies(const yaml::Node& node, StudentFbd& fbd, const std::string& file, Diagnostics& diags) {
   if (node["body"] && node["bodies"]) {
     diags.error(yaml::where(node["bodies"], file), "a free body diagram has 'body' or 'bodies', not both");
   } else if (node["body"]) {
@@ -100,72 +97,110 @@ StudentFbd read_fbd_data(const yaml::Node& node, int dims, const std::string& fi
   } else {
     diags.error(fbd.where, "the free body diagram has no 'body' (expected body: NAME, or bodies: [A, B] for a system)");
   }
+}
+
+// A force's direction: a list of numbers, an angle in degrees (in the plane), or any.
+void read_direction(const yaml::Node& item, StudentForce& f, int dims, const std::string& file, Diagnostics& diags) {
+  const yaml::Node dir = item["direction"], angle = item["angle"];
+  if (dir && angle) {
+    diags.error(yaml::where(angle, file), "a force has 'direction' or 'angle', not both");
+  } else if (angle) {
+    if (dims != 2) {
+      diags.error(yaml::where(angle, file), "'angle' is for a plane problem (expected 'direction' with " +
+                                                std::to_string(dims) + " number" + (dims == 1 ? "" : "s") + ")");
+    } else if (auto t = yaml::scalar(angle, "'angle'", file, diags)) {
+      if (auto v = number_of(t->text))
+        f.direction = Triple{std::cos(*v * pi / 180), std::sin(*v * pi / 180), 0};
+      else
+        diags.error(yaml::where(angle, file), "'angle' is not a number (expected degrees from the " +
+                                                  std::string("first axis, counterclockwise)"));
+    }
+  } else if (dir && dir.is_scalar() && dir.text() == "any") {
+    // no direction: the student does not know it (a pin's force)
+  } else if (dir && dir.is_sequence()) {
+    if (dir.size() != static_cast<std::size_t>(dims)) {
+      diags.error(yaml::where(dir, file), "'direction' has " + std::to_string(dir.size()) + " number" +
+                                              (dir.size() == 1 ? "" : "s") + " (expected " + std::to_string(dims) +
+                                              ", one per axis)");
+    } else {
+      Triple d{0, 0, 0};
+      bool ok = true;
+      for (std::size_t k = 0; k < dir.size(); ++k) {
+        const auto t = yaml::scalar(dir[k], "a direction's number", file, diags);
+        if (!t) {
+          ok = false;
+          continue;
+        }
+        if (auto v = number_of(t->text))
+          d[k] = *v;
+        else {
+          diags.error(yaml::where(dir[k], file),
+                      "'" + t->text + "' is not a number (expected a number from -10^6 to 10^6)");
+          ok = false;
+        }
+      }
+      if (ok && norm3(d) < 1e-12)
+        diags.error(yaml::where(dir, file), "'direction' is zero (expected a direction along the force)");
+      else if (ok)
+        f.direction = d;
+    }
+  } else {
+    diags.error(dir ? yaml::where(dir, file) : f.where, "a force needs its 'direction' (expected a list of " +
+                                                            std::to_string(dims) + " number" + (dims == 1 ? "" : "s") +
+                                                            (dims == 2 ? ", 'angle' in degrees," : ",") + " or 'any')");
+  }
+}
+
+// One arrow: its name, kind, point and direction.
+StudentForce read_force(const yaml::Node& item, int dims, const std::string& file, Diagnostics& diags) {
+  StudentForce f;
+  f.where = yaml::where(item, file);
+  if (item["name"]) {
+    if (auto t = yaml::scalar(item["name"], "'name'", file, diags)) f.name = t->text;
+  }
+  if (item["kind"]) f.kind = read_kind(item["kind"], file, diags);
+  if (item["at"]) {
+    if (auto t = yaml::scalar(item["at"], "'at'", file, diags)) {
+      f.at = t->text;
+      f.at_where = yaml::where(item["at"], file);
+    }
+  }
+  read_direction(item, f, dims, file, diags);
+  return f;
+}
+
+// One couple: its name and sense.
+StudentCouple read_couple(const yaml::Node& item, const std::string& file, Diagnostics& diags) {
+  StudentCouple c;
+  c.where = yaml::where(item, file);
+  if (item["name"]) {
+    if (auto t = yaml::scalar(item["name"], "'name'", file, diags)) c.name = t->text;
+  }
+  if (!item["sense"]) {
+    diags.error(c.where, "a couple needs its 'sense' (expected counterclockwise, clockwise or any)");
+  } else if (auto t = yaml::scalar(item["sense"], "'sense'", file, diags)) {
+    if (t->text == "counterclockwise")
+      c.sense = 1;
+    else if (t->text == "clockwise")
+      c.sense = -1;
+    else if (t->text != "any")
+      diags.error(yaml::where(item["sense"], file),
+                  "'" + t->text + "' is not a sense (expected counterclockwise, clockwise or any)");
+  }
+  return c;
+}
+
+StudentFbd read_fbd_data(const yaml::Node& node, int dims, const std::string& file, Diagnostics& diags) {
+  StudentFbd fbd;
+  fbd.where = yaml::where(node, file);
+  if (!yaml::check_map(node, {"body", "bodies", "forces", "couples"}, "the free body diagram", file, diags)) return fbd;
+  read_bodies(node, fbd, file, diags);
   std::size_t count = 0;
   if (const yaml::Node forces = node["forces"]; forces && yaml::is_list(forces, "'forces'", file, diags)) {
     count += forces.size();
     for (const yaml::Node item : forces) {
       if (!yaml::check_map(item, {"name", "at", "direction", "angle", "kind"}, "a force", file, diags)) continue;
-      StudentForce f;
-      f.where = yaml::where(item, file);
-      if (item["name"]) {
-        if (auto t = yaml::scalar(item["name"], "'name'", file, diags)) f.name = t->text;
-      }
-      if (item["kind"]) f.kind = read_kind(item["kind"], file, diags);
-      if (item["at"]) {
-        if (auto t = yaml::scalar(item["at"], "'at'", file, diags)) {
-          f.at = t->text;
-          f.at_where = yaml::where(item["at"], file);
-        }
-      }
-      const yaml::Node dir = item["direction"], angle = item["angle"];
-      if (dir && angle) {
-        diags.error(yaml::where(angle, file), "a force has 'direction' or 'angle', not both");
-      } else if (angle) {
-        if (dims != 2) {
-          diags.error(yaml::where(angle, file), "'angle' is for a plane problem (expected 'direction' with " +
-                                                    std::to_string(dims) + " number" + (dims == 1 ? "" : "s") + ")");
-        } else if (auto t = yaml::scalar(angle, "'angle'", file, diags)) {
-          if (auto v = number_of(t->text))
-            f.direction = Triple{std::cos(*v * pi / 180), std::sin(*v * pi / 180), 0};
-          else
-            diags.error(yaml::where(angle, file), "'angle' is not a number (expected degrees from the " +
-                                                      std::string("first axis, counterclockwise)"));
-        }
-      } else if (dir && dir.is_scalar() && dir.text() == "any") {
-        // no direction: the student does not know it (a pin's force)
-      } else if (dir && dir.is_sequence()) {
-        if (dir.size() != static_cast<std::size_t>(dims)) {
-          diags.error(yaml::where(dir, file), "'direction' has " + std::to_string(dir.size()) + " number" +
-                                                  (dir.size() == 1 ? "" : "s") + " (expected " + std::to_string(dims) +
-                                                  ", one per axis)");
-        } else {
-          Triple d{0, 0, 0};
-          bool ok = true;
-          for (std::size_t k = 0; k < dir.size(); ++k) {
-            const auto t = yaml::scalar(dir[k], "a direction's number", file, diags);
-            if (!t) {
-              ok = false;
-              continue;
-            }
-            if (auto v = number_of(t->text))
-              d[k] = *v;
-            else {
-              diags.error(yaml::where(dir[k], file),
-                          "'" + t->text + "' is not a number (expected a number from -10^6 to 10^6)");
-              ok = false;
-            }
-          }
-          if (ok && norm3(d) < 1e-12)
-            diags.error(yaml::where(dir, file), "'direction' is zero (expected a direction along the force)");
-          else if (ok)
-            f.direction = d;
-        }
-      } else {
-        diags.error(dir ? yaml::where(dir, file) : f.where,
-                    "a force needs its 'direction' (expected a list of " + std::to_string(dims) + " number" +
-                        (dims == 1 ? "" : "s") + (dims == 2 ? ", 'angle' in degrees," : ",") + " or 'any')");
-      }
-      fbd.forces.push_back(std::move(f));
+      fbd.forces.push_back(read_force(item, dims, file, diags));
     }
   }
   if (const yaml::Node couples = node["couples"]; couples && yaml::is_list(couples, "'couples'", file, diags)) {
@@ -175,23 +210,7 @@ StudentFbd read_fbd_data(const yaml::Node& node, int dims, const std::string& fi
                                                   std::to_string(dims) + (dims == 1 ? " axis)" : " axes)"));
     for (const yaml::Node item : couples) {
       if (!yaml::check_map(item, {"name", "sense"}, "a couple", file, diags)) continue;
-      StudentCouple c;
-      c.where = yaml::where(item, file);
-      if (item["name"]) {
-        if (auto t = yaml::scalar(item["name"], "'name'", file, diags)) c.name = t->text;
-      }
-      if (!item["sense"]) {
-        diags.error(c.where, "a couple needs its 'sense' (expected counterclockwise, clockwise or any)");
-      } else if (auto t = yaml::scalar(item["sense"], "'sense'", file, diags)) {
-        if (t->text == "counterclockwise")
-          c.sense = 1;
-        else if (t->text == "clockwise")
-          c.sense = -1;
-        else if (t->text != "any")
-          diags.error(yaml::where(item["sense"], file),
-                      "'" + t->text + "' is not a sense (expected counterclockwise, clockwise or any)");
-      }
-      fbd.couples.push_back(std::move(c));
+      fbd.couples.push_back(read_couple(item, file, diags));
     }
   }
   if (count > max_arrows)
@@ -315,57 +334,6 @@ CheckResult fbd_result(const FbdGrade& g) {
   r.method = g.verdict == Verdict::invalid || g.verdict == Verdict::undecided ? "" : "fbd";
   r.score = g.max_score > 0 ? g.score / g.max_score : (g.verdict == Verdict::correct ? 1.0 : 0.0);
   return r;
-}
-
-std::string fbd_text(const FbdGrade& g) {
-  std::string out = fmt::format("free body diagram of {}: {}: {}\n", g.of, verdict_name(g.verdict), g.summary);
-  for (const auto& f : g.forces) {
-    std::string status = f.status == "drawn"             ? "drawn"
-                         : f.status == "wrong_direction" ? "drawn the wrong way"
-                         : f.status == "wrong_point"     ? "drawn at the wrong point"
-                         : f.status == "off_line"        ? "drawn off its line"
-                         : f.status == "zero"            ? "nothing at this position (not needed)"
-                                                         : "missing";
-    std::vector<std::string> names;
-    for (const auto& n : f.drawn_as) names.push_back(n.empty() ? "(no name)" : n);
-    if (!names.empty()) status += " as your " + join(names);
-    out += fmt::format("  {}{}: {}\n", f.phrase,
-                       f.label.empty() || f.phrase.find(" part)") != std::string::npos ? "" : " (" + f.label + ")",
-                       status);
-  }
-  for (const auto& e : g.extras) out += "  extra: " + e.message + "\n";
-  if (g.verdict == Verdict::correct || g.verdict == Verdict::incorrect)
-    out += fmt::format("score: {:g} of {:g}\n", g.score, g.max_score);
-  return out;
-}
-
-std::string fbd_json(const FbdGrade& g) {
-  std::string out = "{\n  \"version\": 1,\n  \"of\": " + json_quoted(g.of) +
-                    ",\n  \"verdict\": " + json_quoted(verdict_name(g.verdict)) +
-                    ",\n  \"summary\": " + json_quoted(g.summary) + ",\n  \"forces\": [";
-  for (std::size_t i = 0; i < g.forces.size(); ++i) {
-    const auto& f = g.forces[i];
-    std::string names = "[";
-    for (std::size_t k = 0; k < f.drawn_as.size(); ++k) names += (k ? ", " : "") + json_quoted(f.drawn_as[k]);
-    out += fmt::format(
-        "{}\n    {{\"source\": {}, \"phrase\": {}, \"label\": {}, \"status\": {}, \"drawn_as\": {}], \"weight\": {}, "
-        "\"score\": {}}}",
-        i ? "," : "", json_quoted(f.source), json_quoted(f.phrase), json_quoted(f.label), json_quoted(f.status), names,
-        json_number(f.weight), json_number(f.score));
-  }
-  out += g.forces.empty() ? "],\n" : "\n  ],\n";
-  out += "  \"extras\": [";
-  for (std::size_t i = 0; i < g.extras.size(); ++i)
-    out += fmt::format("{}\n    {{\"name\": {}, \"code\": {}, \"message\": {}}}", i ? "," : "",
-                       json_quoted(g.extras[i].name), json_quoted(g.extras[i].code), json_quoted(g.extras[i].message));
-  out += g.extras.empty() ? "],\n" : "\n  ],\n";
-  out += "  \"findings\": [";
-  for (std::size_t i = 0; i < g.findings.size(); ++i)
-    out += fmt::format("{}\n    {{\"code\": {}, \"message\": {}}}", i ? "," : "", json_quoted(g.findings[i].code),
-                       json_quoted(g.findings[i].message));
-  out += g.findings.empty() ? "],\n" : "\n  ],\n";
-  out += "  \"score\": " + json_number(g.score) + ",\n  \"max_score\": " + json_number(g.max_score) + "\n}\n";
-  return out;
 }
 
 }  // namespace tackle

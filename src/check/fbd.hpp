@@ -117,7 +117,5 @@ struct FbdGrade {
 /// verdict undecided, code `internal` (one diagram's, never a batch's or a solution's end).
 [[nodiscard]] CheckResult checked_fbd(const Model& m, const StudentFbd& fbd, const FbdRubric& rubric,
                                       std::vector<Diagnostic>& problems);
-[[nodiscard]] std::string fbd_text(const FbdGrade& g);
-[[nodiscard]] std::string fbd_json(const FbdGrade& g);
 
 }  // namespace tackle

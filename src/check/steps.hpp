@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "check/batch.hpp"
+#include "check/check.hpp"
 #include "check/check.hpp"
 #include "check/fbd.hpp"
 
@@ -93,11 +93,7 @@ struct SolutionGrade {
     const Checker& checker, const Model& model, const std::vector<SolutionStep>& steps, const Rubric& rubric,
     std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt);
 
-/// The grade as text (what a student reads) and as JSON.
-[[nodiscard]] std::string solution_text(const SolutionGrade& g);
-[[nodiscard]] std::string solution_json(const SolutionGrade& g);
-/// A grading platform's results file: one test per step (its verdict, no points of its own)
-/// and one per part of the rubric (its points); the total.
-[[nodiscard]] std::string solution_results(const SolutionGrade& g, ResultsFormat format);
+/// A step as its feedback names it: "equation", "answer for T", or its text.
+[[nodiscard]] std::string step_name(const SolutionStep& s);
 
 }  // namespace tackle

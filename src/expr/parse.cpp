@@ -1,6 +1,7 @@
 #include "expr/parse.hpp"
 
 #include <cctype>
+#include <map>
 
 #include "core/diagnostics.hpp"
 #include "core/kind.hpp"
@@ -267,28 +268,31 @@ class Parser {
     return value * GiNaC::pow(numeric(10), numeric(exp10));
   }
 
-  ex call(const Token& name) {
-    DepthGuard guard(*this, name.column);
-    advance();  // '('
-    // dot(q) and ddot(q) take the coordinate's bare name: q itself need not be a name the
-    // expression may use (an answer may use ddot(y_B) without y_B).
-    if (name.text == "dot" || name.text == "ddot") {
-      const Token q = peek();
-      if (q.kind != Tok::name)
-        fail(q.column, "'" + name.text + "' takes the name of a coordinate, as in " + name.text + "(x_A)");
-      advance();
-      if (peek().kind != Tok::rparen) fail(peek().column, "expected ')' to close '" + name.text + "('");
-      advance();
-      const std::string key = name.text + "(" + q.text + ")";
-      if (auto r = names_.resolve(key)) return *r;
-      fail(name.column, "'" + q.text + "' is not a coordinate, so '" + key + "' is not defined");
-    }
-    std::vector<ex> args;
+  // dot(q) and ddot(q) take the coordinate's bare name: q itself need not be a name the
+  // expression may use (an answer may use ddot(y_B) without y_B).
+  ex derivative(const Token& name) {
+    const Token q = peek();
+    if (q.kind != Tok::name)
+      fail(q.column, "'" + name.text + "' takes the name of a coordinate, as in " + name.text + "(x_A)");
+    advance();
+    if (peek().kind != Tok::rparen) fail(peek().column, "expected ')' to close '" + name.text + "('");
+    advance();
+    const std::string key = name.text + "(" + q.text + ")";
+    if (auto r = names_.resolve(key)) return *r;
+    fail(name.column, "'" + q.text + "' is not a coordinate, so '" + key + "' is not defined");
+  }
+
+  // A call's arguments, each with its first token (for where a problem is), and its ')'.
+  struct Arguments {
+    std::vector<ex> values;
     std::vector<Token> first_tokens;
+  };
+  Arguments arguments(const Token& name) {
+    Arguments args;
     if (peek().kind != Tok::rparen) {
       while (true) {
-        first_tokens.push_back(peek());
-        args.push_back(sum());
+        args.first_tokens.push_back(peek());
+        args.values.push_back(sum());
         if (peek().kind == Tok::comma) {
           advance();
           continue;
@@ -298,60 +302,68 @@ class Parser {
     }
     if (peek().kind != Tok::rparen) fail(peek().column, "expected ')' to close '" + name.text + "('");
     advance();
+    return args;
+  }
+
+  void arity(const Token& name, const Arguments& args, std::size_t n) {
+    if (args.values.size() != n)
+      fail(name.column, "'" + name.text + "' takes " + std::to_string(n) + (n == 1 ? " argument" : " arguments"));
+  }
+
+  ex vector_arg(const Token& name, const Arguments& args, std::size_t i) {
+    if (!is_vector(args.values[i])) fail(args.first_tokens[i].column, "'" + name.text + "' takes a vector");
+    return args.values[i];
+  }
+
+  // unit, norm, perp1 and perp2 of a vector.
+  ex of_vector(const Token& name, const Arguments& args) {
     const std::string& f = name.text;
-    auto one_arg = [&] {
-      if (args.size() != 1) fail(name.column, "'" + f + "' takes one argument");
-      return args[0];
-    };
-    auto vector_arg = [&](std::size_t i) {
-      if (!is_vector(args[i])) fail(first_tokens[i].column, "'" + f + "' takes a vector");
-      return args[i];
-    };
-    auto arity = [&](std::size_t n) {
-      if (args.size() != n)
-        fail(name.column, "'" + f + "' takes " + std::to_string(n) + (n == 1 ? " argument" : " arguments"));
-    };
-    if (f == "unit" || f == "norm" || f == "perp1" || f == "perp2") {
-      arity(1);
-      const ex v = vector_arg(0);
-      // sin^2 + cos^2 = 1 first, so that unit([-sin(theta), cos(theta)]) has no root in it.
-      const ex n = sqrt(fewer_trig_terms((v.op(0) * v.op(0) + v.op(1) * v.op(1) + v.op(2) * v.op(2)).expand()));
-      if (normal(n).is_zero()) fail(first_tokens[0].column, "'" + f + "' of a zero vector");
-      if (f == "norm") return n;
-      if (f == "unit") return scaled(v, 1 / n);
-      // perp1: the unit vector along v x e, e the coordinate axis least aligned with v;
-      // perp2 = unit(v) x perp1. Chosen from v's components when they are numbers, else e_z.
-      int least = 2;
-      if (is_a<numeric>(v.op(0)) && is_a<numeric>(v.op(1)) && is_a<numeric>(v.op(2))) {
-        least = 0;
-        for (int k = 1; k < 3; ++k)
-          if (abs(ex_to<numeric>(v.op(k))) < abs(ex_to<numeric>(v.op(least)))) least = k;
-      }
-      const ex e = make_vector(least == 0 ? 1 : 0, least == 1 ? 1 : 0, least == 2 ? 1 : 0);
-      const ex c = cross3(v, e);
-      const ex cn = sqrt(c.op(0) * c.op(0) + c.op(1) * c.op(1) + c.op(2) * c.op(2));
-      if (normal(cn).is_zero())
-        fail(first_tokens[0].column, "'" + f + "' of a vector along the z axis is taken with its numbers given");
-      const ex p1 = scaled(c, 1 / cn);
-      if (f == "perp1") return p1;
-      return cross3(scaled(v, 1 / n), p1);
+    arity(name, args, 1);
+    const ex v = vector_arg(name, args, 0);
+    // sin^2 + cos^2 = 1 first, so that unit([-sin(theta), cos(theta)]) has no root in it.
+    const ex n = sqrt(fewer_trig_terms((v.op(0) * v.op(0) + v.op(1) * v.op(1) + v.op(2) * v.op(2)).expand()));
+    if (normal(n).is_zero()) fail(args.first_tokens[0].column, "'" + f + "' of a zero vector");
+    if (f == "norm") return n;
+    if (f == "unit") return scaled(v, 1 / n);
+    // perp1: the unit vector along v x e, e the coordinate axis least aligned with v;
+    // perp2 = unit(v) x perp1. Chosen from v's components when they are numbers, else e_z.
+    int least = 2;
+    if (is_a<numeric>(v.op(0)) && is_a<numeric>(v.op(1)) && is_a<numeric>(v.op(2))) {
+      least = 0;
+      for (int k = 1; k < 3; ++k)
+        if (abs(ex_to<numeric>(v.op(k))) < abs(ex_to<numeric>(v.op(least)))) least = k;
     }
-    if (f == "cross" || f == "inner") {
-      arity(2);
-      const ex u = vector_arg(0), v = vector_arg(1);
-      if (f == "cross") return cross3(u, v);
-      return u.op(0) * v.op(0) + u.op(1) * v.op(1) + u.op(2) * v.op(2);
-    }
-    for (const auto& a : args)
+    const ex e = make_vector(least == 0 ? 1 : 0, least == 1 ? 1 : 0, least == 2 ? 1 : 0);
+    const ex c = cross3(v, e);
+    const ex cn = sqrt(c.op(0) * c.op(0) + c.op(1) * c.op(1) + c.op(2) * c.op(2));
+    if (normal(cn).is_zero())
+      fail(args.first_tokens[0].column, "'" + f + "' of a vector along the z axis is taken with its numbers given");
+    const ex p1 = scaled(c, 1 / cn);
+    if (f == "perp1") return p1;
+    return cross3(scaled(v, 1 / n), p1);
+  }
+
+  // The functions of one number; poles are input errors, found before GiNaC throws from
+  // inside a new object (which then leaks): tan at an odd multiple of pi/2, log at 0.
+  ex of_number(const Token& name, const Arguments& args) {
+    const std::string& f = name.text;
+    for (const auto& a : args.values)
       if (is_vector(a)) fail(name.column, "'" + f + "' takes a number, not a vector");
-    if (f == "sqrt") return sqrt(one_arg());
-    if (f == "abs") return abs(one_arg());
-    if (f == "sin") return sin(one_arg());
-    if (f == "cos") return cos(one_arg());
-    // Poles are input errors, found before GiNaC throws from inside a new object (which
-    // then leaks): tan at an odd multiple of pi/2, log at 0.
+    static const std::map<std::string, ex (*)(const ex&)> plain = {
+        {"sqrt", [](const ex& a) { return sqrt(a); }},     {"abs", [](const ex& a) { return ex(abs(a)); }},
+        {"sin", [](const ex& a) { return ex(sin(a)); }},   {"cos", [](const ex& a) { return ex(cos(a)); }},
+        {"exp", [](const ex& a) { return ex(exp(a)); }},   {"asin", [](const ex& a) { return ex(asin(a)); }},
+        {"acos", [](const ex& a) { return ex(acos(a)); }}, {"atan", [](const ex& a) { return ex(atan(a)); }},
+        {"sinh", [](const ex& a) { return ex(sinh(a)); }}, {"cosh", [](const ex& a) { return ex(cosh(a)); }}};
+    const auto known = plain.find(f);
+    if (known == plain.end() && f != "tan" && f != "log")
+      fail(name.column, "unknown function '" + f +
+                            "' (known: sqrt, abs, sin, cos, tan, asin, acos, atan, sinh, cosh, exp, log, dot, ddot, "
+                            "unit, norm, cross, inner, perp1, perp2)");
+    if (args.values.size() != 1) fail(name.column, "'" + f + "' takes one argument");
+    const ex& a = args.values[0];
+    if (known != plain.end()) return known->second(a);
     if (f == "tan") {
-      const ex a = one_arg();
       // (Only an argument with pi in it can be one: normal() of every tan's argument was a
       // fifth of reading an answer with a tan.)
       const auto pole = [&] {
@@ -361,20 +373,24 @@ class Parser {
       if (a.has(Pi) && pole()) fail(name.column, "tan is undefined at an odd multiple of pi/2");
       return tan(a);
     }
-    if (f == "exp") return exp(one_arg());
-    if (f == "asin") return asin(one_arg());
-    if (f == "acos") return acos(one_arg());
-    if (f == "atan") return atan(one_arg());
-    if (f == "sinh") return sinh(one_arg());
-    if (f == "cosh") return cosh(one_arg());
-    if (f == "log") {
-      const ex a = one_arg();
-      if (a.is_zero()) fail(name.column, "log is undefined at 0");
-      return log(a);
+    if (a.is_zero()) fail(name.column, "log is undefined at 0");
+    return log(a);
+  }
+
+  ex call(const Token& name) {
+    DepthGuard guard(*this, name.column);
+    advance();  // '('
+    if (name.text == "dot" || name.text == "ddot") return derivative(name);
+    const Arguments args = arguments(name);
+    const std::string& f = name.text;
+    if (f == "unit" || f == "norm" || f == "perp1" || f == "perp2") return of_vector(name, args);
+    if (f == "cross" || f == "inner") {
+      arity(name, args, 2);
+      const ex u = vector_arg(name, args, 0), v = vector_arg(name, args, 1);
+      if (f == "cross") return cross3(u, v);
+      return u.op(0) * v.op(0) + u.op(1) * v.op(1) + u.op(2) * v.op(2);
     }
-    fail(name.column, "unknown function '" + f +
-                          "' (known: sqrt, abs, sin, cos, tan, asin, acos, atan, sinh, cosh, exp, log, dot, ddot, "
-                          "unit, norm, cross, inner, perp1, perp2)");
+    return of_number(name, args);
   }
 
   ex primary() {

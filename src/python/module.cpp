@@ -13,7 +13,7 @@
 #include <regex>
 #include <sstream>
 
-#include "check/batch.hpp"
+#include "grade/batch.hpp"
 #include "check/check.hpp"
 #include "check/fbd.hpp"
 #include "check/steps.hpp"

@@ -14,6 +14,7 @@
 
 #include "equations/equations.hpp"
 #include "model/model.hpp"
+#include "expr/simplest.hpp"
 #include "numeric/evaluate.hpp"
 
 namespace tackle {
@@ -133,25 +134,6 @@ struct Solution {
 
   [[nodiscard]] std::optional<GiNaC::ex> value_of(const GiNaC::ex& unknown) const;
 };
-
-/// The sign of an expression when its symbols' domains decide it (+1, -1, 0), decided from
-/// its structure in both directions (a sum of negative terms is negative), never from the
-/// order GiNaC keeps terms in.
-[[nodiscard]] std::optional<int> sign_of(const GiNaC::ex& e);
-
-/// The factors of a polynomial in a canonical form: a numeric coefficient first (when it is
-/// not 1), then each factor expanded, every integer power of a sum oriented (positive when its
-/// sign is known, else a positive coefficient on the term that prints first), the signs taken
-/// out gathered in the coefficient. The same for every hash order.
-[[nodiscard]] std::vector<GiNaC::ex> canonical_factors(const GiNaC::ex& polynomial);
-
-/// Shortest of the normal form and its factored form (the normal form made here: there is no
-/// need to call normal() first). Remembered per thread, by `e` and by its normal form.
-[[nodiscard]] GiNaC::ex simplest(const GiNaC::ex& e);
-/// simplest(polynomial) for a polynomial known to be a number times the product of `parts`
-/// (polynomials; checked, else simplest() of the whole): its factors are the parts', each
-/// factored alone, which is far cheaper than factor() of the whole. The same form.
-[[nodiscard]] GiNaC::ex simplest_of_product(const GiNaC::ex& polynomial, const std::vector<GiNaC::ex>& parts);
 
 [[nodiscard]] Solution solve(const Model& m, const EquationSystem& s);
 

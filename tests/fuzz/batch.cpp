@@ -4,7 +4,7 @@
 
 #include <sstream>
 
-#include "check/batch.hpp"
+#include "grade/batch.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const auto analysis =

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "check/steps.hpp"
+#include "report/verdicts.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "check/batch.hpp"
+#include "grade/batch.hpp"
 #include "../../support/helpers.hpp"
 
 using namespace tackle;

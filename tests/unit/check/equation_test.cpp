@@ -6,7 +6,7 @@
 #include <map>
 #include <memory>
 
-#include "check/batch.hpp"
+#include "grade/batch.hpp"
 #include "check/steps.hpp"
 
 #include <nlohmann/json.hpp>

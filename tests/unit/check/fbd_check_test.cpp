@@ -7,7 +7,7 @@
 #include <sstream>
 #include <memory>
 
-#include "check/batch.hpp"
+#include "grade/batch.hpp"
 #include "check/fbd.hpp"
 #include "check/steps.hpp"
 

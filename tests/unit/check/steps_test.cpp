@@ -14,7 +14,7 @@
 #include <memory>
 #include <sstream>
 
-#include "check/batch.hpp"
+#include "grade/batch.hpp"
 #include "check/steps.hpp"
 
 #include <nlohmann/json.hpp>

@@ -1,4 +1,5 @@
-// Batch checking: JSON Lines in (`id`, `unknown`, `answer`), JSON Lines out, and a summary in
+// Batch grading (a room above check/ and report/: it grades with the one and writes with the
+// other). Batch checking: JSON Lines in (`id`, `unknown`, `answer`), JSON Lines out, and a summary in
 // the shape autograders read (Gradescope's results.json and PrairieLearn's external grader).
 #pragma once
 
@@ -10,19 +11,9 @@
 #include <string>
 
 #include "check/check.hpp"
+#include "report/verdicts.hpp"
 
 namespace tackle {
-
-/// The results file for a grading platform, each as the platform documents it:
-/// - gradescope: Gradescope's results.json, one test per line (`name`, `score`, `max_score`,
-///   `status`, `output`, `visibility`) and the `output` summary; no top-level `score` (it
-///   would override the tests' sum) unless `top_level_score`.
-/// - prairielearn: PrairieLearn's external grader results.json: `gradable`, `score` (0-1),
-///   `message`, `tests` (`name`, `points`, `max_points`, `message`); a submission with an answer
-///   that cannot be graded as typed is `gradable: false` with `format_errors` (no attempt is
-///   charged), and no score or tests (which would tell which other answers are right).
-/// - jsonl: the per-line results again.
-enum class ResultsFormat { gradescope, prairielearn, jsonl };
 
 /// One line of a batch once it is graded, as a gradebook takes it.
 struct GradedLine {
@@ -82,19 +73,5 @@ BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream&
                          const GradeOptions& options = {});
 /// The same, with the results file returned in `results` of the summary.
 BatchSummary check_batch(const Checker& checker, std::istream& in, std::ostream& out, const GradeOptions& options = {});
-
-/// A string as JSON writes it (quoted, escaped), and a number (".0" when whole).
-[[nodiscard]] std::string json_quoted(std::string_view s);
-[[nodiscard]] std::string json_number(double v);
-/// One test of a platform's results file (Gradescope: score, max_score, status, output;
-/// PrairieLearn: points, max_points, message), on one line.
-[[nodiscard]] std::string platform_test(ResultsFormat format, const std::string& name, double score, double max,
-                                        bool passed, const std::string& output);
-/// One result as one line of JSON, as a batch writes it (no newline).
-[[nodiscard]] std::string result_line(const CheckResult& r, const std::string& answer, const std::string& id = {});
-/// One result as a JSON object (the single-answer `--format json` output).
-[[nodiscard]] std::string result_json(const CheckResult& r, const std::string& answer, const std::string& id = {});
-/// One result as text.
-[[nodiscard]] std::string result_text(const CheckResult& r);
 
 }  // namespace tackle
