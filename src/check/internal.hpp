@@ -2,6 +2,7 @@
 // interface.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -10,6 +11,13 @@
 #include <ginac/ginac.h>
 
 namespace tackle::check_detail {
+
+/// `s` without the white space at its ends (typed.cpp).
+[[nodiscard]] std::string trim(std::string_view s);
+
+/// "6.8 N" -> ("6.8", "N"); "6.8" -> ("6.8", ""); nothing when the text is not a number,
+/// optionally followed by something that starts like a unit (a letter) (numbers.cpp).
+[[nodiscard]] std::optional<std::pair<std::string, std::string>> number_and_unit(const std::string& t);
 
 /// abs(), csgn() and step(): a kink, where the argument changes sign.
 [[nodiscard]] bool is_kink(const GiNaC::ex& e);

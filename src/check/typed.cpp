@@ -2,6 +2,7 @@
 // parser's ASCII, and degrees as radians.
 #include "check/internal.hpp"
 
+#include <cctype>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -128,6 +129,13 @@ std::string degrees_as_radians(const std::string& in, std::vector<int>& origin) 
   where.push_back(origin.back());
   origin = where;
   return out;
+}
+
+std::string trim(std::string_view s) {
+  std::size_t a = 0, b = s.size();
+  while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
+  while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
+  return std::string(s.substr(a, b - a));
 }
 
 }  // namespace tackle::check_detail
