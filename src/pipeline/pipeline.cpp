@@ -1,7 +1,6 @@
 #include "pipeline/pipeline.hpp"
 
-#include "report/sweep.hpp"
-#include "motion/simulate.hpp"
+#include "analysis/runs.hpp"
 #include "expr/parse.hpp"
 #include "expr/print.hpp"
 #include "report/narrator.hpp"
@@ -41,10 +40,39 @@ std::vector<Derivation> explain_phases(const Analysis& a, const ReportOptions& o
   return out;
 }
 
+namespace {
+
+// The motion in time, for the JSON (a copy without the simulation's state functions, which
+// point into the analysis' solution), its conditions for all t with their bounds' numbers to
+// the report's digits, and narrated.
+void tell_motion(Derivation& d, const Analysis& a, const ReportOptions& options) {
+  d.motion = *a.motion;
+  d.motion->in_state.clear();
+  d.motion->conditions_in_state.clear();
+  for (auto& c : d.motion->conditions) number_bounds(c.solved, *a.model.symbols, options.digits, a.motion->definitions);
+  if (options.narrate) narrate_motion(d, a.model, *d.motion, options);
+}
+
+// The simulated motion's figure, and what happened in the run, in words.
+void tell_run(Derivation& d, const Simulation& run) {
+  d.motion_plot = run.table;
+  d.motion_events.push_back("Integrated to t = " + decimal_string(GiNaC::numeric(run.reached), 6) + " s (" +
+                            std::to_string(run.steps) + " steps, Dormand-Prince 5(4)).");
+  for (const auto& e : run.events)
+    d.motion_events.push_back("At t = " + decimal_string(GiNaC::numeric(e.t), 6) + " s: " + e.what +
+                              (e.ends ? "; the run ends." : "."));
+  if (!run.stopped.empty() && run.events.empty()) d.motion_events.push_back("Stopped: " + run.stopped + ".");
+}
+
+}  // namespace
+
 Derivation explain(const Analysis& a, const ReportOptions& options) {
   if (!a.phases.empty()) throw InternalError("explain: a phased analysis is explained phase by phase (explain_phases)");
-  // The answers with the report's digits: a stage of their own (solve/answers), narrated here.
+  // The answers with the report's digits, and the runs the description asks for (with the
+  // narration only: their figures): stages of their own (solve/answers, analysis/runs),
+  // narrated here.
   const Answers answers = answer(a.model, a.system, a.solution, options.digits);
+  const DescribedRuns runs = options.narrate ? run_described(a, answers) : DescribedRuns{};
   Derivation d =
       explain(a.model, a.system, a.solution, answers, a.power, options, a.interval_end ? &*a.interval_end : nullptr);
   if (!a.regimes.empty()) narrate_regimes(d, a.regimes, *a.model.symbols);
@@ -52,41 +80,10 @@ Derivation explain(const Analysis& a, const ReportOptions& options) {
     narrate_impact(d, a.model, *a.impact, options);
     d.impact_equations = a.impact->equations;
   }
-  if (a.motion) {
-    d.motion = *a.motion;
-    d.motion->in_state.clear();
-    d.motion->conditions_in_state.clear();  // pointers into the analysis' solution
-    // The conditions for all t with their bounds' numbers, to the report's digits.
-    for (auto& c : d.motion->conditions)
-      number_bounds(c.solved, *a.model.symbols, options.digits, a.motion->definitions);
-    if (options.narrate) narrate_motion(d, a.model, *d.motion, options);
-    if (a.model.motion->until && options.narrate) {
-      // A figure, not a command: a second of computing at most (a hostile 'until' must not
-      // hold a report up; `tackle simulate` allows 10 s).
-      SimulationSpec spec;
-      spec.time_limit = 1;
-      const Simulation run = simulate(a, spec, a.model.motion->at);
-      d.motion_plot = run.table;
-      d.motion_events.push_back("Integrated to t = " + decimal_string(GiNaC::numeric(run.reached), 6) + " s (" +
-                                std::to_string(run.steps) + " steps, Dormand-Prince 5(4)).");
-      for (const auto& e : run.events)
-        d.motion_events.push_back("At t = " + decimal_string(GiNaC::numeric(e.t), 6) + " s: " + e.what +
-                                  (e.ends ? "; the run ends." : "."));
-      if (!run.stopped.empty() && run.events.empty()) d.motion_events.push_back("Stopped: " + run.stopped + ".");
-    }
-  }
-  if (a.model.sweep && options.narrate)
-    d.sweep_plot = run_sweep(a.model, d, sweep_spec(*a.model.sweep), a.model.sweep->at);
+  if (a.motion) tell_motion(d, a, options);
+  if (runs.motion) tell_run(d, *runs.motion);
+  if (runs.sweep) d.sweep_plot = *runs.sweep;
   return d;
-}
-
-SweepSpec sweep_spec(const SweepDesc& s) {
-  SweepSpec spec;
-  spec.vary = s.vary.text;
-  for (const auto& f : s.fix) spec.fix.push_back(f.text);
-  for (const auto& p : s.plot) spec.plot.push_back(p.text);
-  if (s.against) spec.against = s.against->text;
-  return spec;
 }
 
 }  // namespace tackle

@@ -189,3 +189,35 @@ TEST_CASE("Sweep: curves of different units get a panel each, the time axis labe
   r.units = {"m", "m", "m"};
   CHECK(sweep_pgfplots(r).find("name=panel1") == std::string::npos);
 }
+
+TEST_CASE("Sweep: the described runs are a stage of their own, which the derivation only carries", "[sweep]") {
+  // The description's sweep, computed from the analysis and its answers (analysis/runs.hpp);
+  // explain() narrates the same result, and computes nothing without the narration.
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/figure-12.28-suitcase-normal-forces.yaml", test::rules());
+  const DescribedRuns runs = run_described(*a, answer(a->model, a->system, a->solution, 6));
+  REQUIRE(runs.sweep);
+  CHECK_FALSE(runs.motion);  // no motion in time asked for
+  const Derivation d = explain(*a);
+  REQUIRE(d.sweep_plot);
+  CHECK(sweep_csv(*d.sweep_plot) == sweep_csv(*runs.sweep));
+  CHECK(sweep_svg(*d.sweep_plot) == sweep_svg(*runs.sweep));
+  CHECK(d.sweep_plot->title == a->model.title);
+  CHECK_FALSE(explain(*a, ReportOptions{.narrate = false}).sweep_plot);
+}
+
+TEST_CASE("Sweep: the described motion is run as a stage, its events told by the derivation", "[sweep][motion]") {
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/rotation-pendulum.yaml", test::rules());
+  REQUIRE(a->model.motion);
+  REQUIRE(a->model.motion->until);
+  const DescribedRuns runs = run_described(*a, answer(a->model, a->system, a->solution, 6));
+  REQUIRE(runs.motion);
+  CHECK_FALSE(runs.sweep);
+  const Derivation d = explain(*a);
+  REQUIRE(d.motion_plot);
+  CHECK(sweep_csv(*d.motion_plot) == sweep_csv(runs.motion->table));
+  REQUIRE_FALSE(d.motion_events.empty());
+  CHECK(d.motion_events.front().rfind("Integrated to t = ", 0) == 0);
+  const Derivation plain = explain(*a, ReportOptions{.narrate = false});
+  CHECK_FALSE(plain.motion_plot);
+  CHECK(plain.motion_events.empty());
+}
