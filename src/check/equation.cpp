@@ -63,23 +63,13 @@ class WithConstants : public NameResolver {
 
 }  // namespace
 
-// The source of a term as a student reads it: "a strand of string s at pA", "the weight of A",
-// "the force on A".
-std::string force_phrase(const std::string& source) {
-  const auto colon = source.find(": strand ");
-  const auto at = source.rfind(" at ");
-  if (colon != std::string::npos && at != std::string::npos && at > colon) {
-    const std::string element = source.substr(0, colon), point = source.substr(at + 4);
-    if (element.rfind("string ", 0) == 0) return "a strand of " + element + " at " + point;
-    return "the force of " + element + " at " + point;
-  }
-  if (source.rfind("gravity on ", 0) == 0) return "the weight of " + source.substr(11);
-  if (source.rfind("force ", 0) == 0) return "the " + source;
-  if (source.rfind("sliding at ", 0) == 0) return "the force of the sliding contact at " + source.substr(11);
-  return "the force of the " + source;
-}
-
 namespace {
+
+// Term `j` of a balance as a student reads it: its load's phrase ("a strand of string s at pA",
+// "the weight of A", "the force on A"); a term from no load, by its sentence.
+std::string term_phrase(const Equation& e, std::size_t j) {
+  return j < e.origins.size() ? force_phrase(e.origins[j]) : generic_phrase(e.sources[j]);
+}
 
 using Rows = std::vector<Row>;
 
@@ -680,7 +670,7 @@ void EquationChecker::diagnose_balance(const Level& level, std::size_t ei, const
   const bool lmb = e->kind == Equation::Kind::lmb;
   for (std::size_t j = 0; j < t.terms.size() && j < e->sources.size(); ++j) {
     if (!t.terms[j]) continue;
-    const std::string what = force_phrase(e->sources[j]);
+    const std::string what = term_phrase(*e, j);
     if (combined_matches(*level.truth, whole, 1, *t.terms[j], -1, v))
       say(r, "missing_force", what + " is missing (" + name + ")");
     else if (combined_matches(*level.truth, whole, 1, *t.terms[j], -2, v))
@@ -729,13 +719,13 @@ void EquationChecker::diagnose_other_forces(const Level& level, std::size_t ei, 
         bool removal = false;
         for (std::size_t i = 0; i < e->terms.size() && i < e->sources.size(); ++i) {
           removal = removal || (e->terms[i] + added).is_zero();
-          if (again.empty() && (e->terms[i] - added).is_zero()) again = force_phrase(e->sources[i]);
+          if (again.empty() && (e->terms[i] - added).is_zero()) again = term_phrase(*e, i);
         }
         if (removal) continue;
         if (!again.empty())
           say(r, "extra_force", "one force too many: " + again + " is counted once too often (" + e->label + ")");
         else
-          say(r, "extra_force", force_phrase(other->sources[j]) + " does not act on what " + e->label + " balances");
+          say(r, "extra_force", term_phrase(*other, j) + " does not act on what " + e->label + " balances");
       }
     }
   }

@@ -22,10 +22,6 @@
 
 namespace tackle {
 
-/// The source of a force as a student reads it: "a strand of string s at pA", "the weight of
-/// A", "the force on A", "the force of the sliding contact at A".
-[[nodiscard]] std::string force_phrase(const std::string& source);
-
 class EquationChecker {
  public:
   EquationChecker(const Analysis& analysis, const CheckOptions& options);

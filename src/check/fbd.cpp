@@ -294,9 +294,9 @@ std::vector<Diagnostic> fbd_rubric_problems(const Model& m, const FbdRubric& r) 
       if (std::any_of(l.force.begin(), l.force.end(), [&](const ex& c) { return c.has(u); }) ||
           std::any_of(l.couple.begin(), l.couple.end(), [&](const ex& c) { return c.has(u); }))
         add(to_text(u));
-  for (const Load& l : m.loads) add(force_key(l.source));
+  for (const Load& l : m.loads) add(force_key(l.origin));
   auto a_source = [&](const std::string& name) {
-    return std::any_of(m.loads.begin(), m.loads.end(), [&](const Load& l) { return l.source == name; });
+    return std::any_of(m.loads.begin(), m.loads.end(), [&](const Load& l) { return l.source() == name; });
   };
   std::vector<Diagnostic> problems;
   for (const auto& [name, where] : r.weight_where)

@@ -50,6 +50,7 @@ struct Entry {
   int couple_sense = 0;
   bool point_matters = false;      // its point sets its moment about its body's center of mass
   std::string kind;                // weight, tension, spring, damper, applied or support
+  std::string key;                 // its load's force_key (a carried force: its connection)
   std::vector<std::string> names;  // its unknowns' names (the first: for a student who used the same)
 };
 
@@ -78,17 +79,16 @@ struct Diagram {
 
 // The kind of force a load is, as a student names it: from the connection it comes from (the
 // sketch's drawing of it), the weight from gravity.
-std::string kind_of(const Model& m, const std::string& source) {
-  if (source.rfind("gravity on ", 0) == 0) return "weight";
+std::string kind_of(const Model& m, const LoadOrigin& origin) {
+  if (origin.kind == LoadOrigin::Kind::weight) return "weight";
   for (const auto& d : m.drawings) {
-    const bool ours = source == d.label || source.rfind(d.label + ":", 0) == 0 || source.rfind(d.label + " (", 0) == 0;
-    if (!ours) continue;
+    if (d.label != origin.connection) continue;
     if (d.as == "line") return "tension";
     if (d.as == "spring" || d.as == "damper") return d.as;
     if (d.as == "arrow" || d.as == "couple") return "applied";
     return "support";
   }
-  return source.rfind("unknown force", 0) == 0 ? "applied" : "support";
+  return origin.rule == "unknown_force" ? "applied" : "support";
 }
 
 // Where the problem's names stand: the diagram's bodies, each arrow's point; problems with them.
@@ -175,7 +175,7 @@ bool part_entry(Diagram& d, const Load& l, const ForcePart& p, Entry& e, FbdGrad
   const auto uses_defaulted = [&](const ex& x) {
     return std::any_of(d.defaulted.begin(), d.defaulted.end(), [&](const ex& s) { return x.has(s); });
   };
-  if (uses_defaulted(all) && undecided_by.empty()) undecided_by = force_phrase(l.source);
+  if (uses_defaulted(all) && undecided_by.empty()) undecided_by = force_phrase(l.origin);
   if (!p.unknown.is_zero()) {
     const auto key = d.num(p.key);
     e.lines.push_back(p.numbers);
@@ -189,7 +189,7 @@ bool part_entry(Diagram& d, const Load& l, const ForcePart& p, Entry& e, FbdGrad
   }
   const auto n = d.position(p.coefficients);
   if (!n) {
-    if (undecided_by.empty()) undecided_by = force_phrase(l.source);
+    if (undecided_by.empty()) undecided_by = force_phrase(l.origin);
     return false;
   }
   e.zero = norm3(*n) < 1e-12;
@@ -250,14 +250,9 @@ void couple_entry(Diagram& d, FbdGrade& g, std::size_t li, std::string& undecide
   e.load = li;
   e.at_name = l.at_name;
   e.couple = true;
-  e.kind = kind_of(d.m, l.source);
-  FbdGrade::Force f{l.source,
-                    l.source.rfind("couple", 0) == 0 ? "the " + l.source : "the couple of the " + l.source,
-                    to_text(l.couple[2]),
-                    "missing",
-                    {},
-                    1,
-                    0};
+  e.key = force_key(l.origin);
+  e.kind = kind_of(d.m, l.origin);
+  FbdGrade::Force f{l.source(), couple_phrase(l.origin), to_text(l.couple[2]), "missing", {}, 1, 0};
   if (const auto v = d.num(l.couple[2])) {  // its value at the sketch's position
     const bool has_unknown =
         std::any_of(d.unknowns.begin(), d.unknowns.end(), [&](const ex& u) { return l.couple[2].has(u); });
@@ -280,7 +275,7 @@ std::string forceless_connection(const Model& m, const Constraint& c) {
   std::string key = c.label;
   if (const auto open = key.rfind(" ("); open != std::string::npos && key.back() == ')') key.erase(open);
   const bool loaded = std::any_of(m.loads.begin(), m.loads.end(), [&](const Load& l) {
-    return l.source == key || l.source.rfind(key + ":", 0) == 0 || l.source.rfind(key + " (", 0) == 0;
+    return l.origin.kind != LoadOrigin::Kind::weight && l.origin.connection == key;
   });
   return loaded ? "" : key;
 }
@@ -313,6 +308,7 @@ void carried_entries(Diagram& d, FbdGrade& g) {
       e.at = d.position(body.cm);
       e.at_name = body.name;
       e.kind = "support";
+      e.key = key;
       for (int k = 0; k < d.m.dims(); ++k)
         e.lines.push_back(Triple{k == 0 ? 1.0 : 0.0, k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0});
       e.free = d.m.dims() > 1;
@@ -337,15 +333,16 @@ std::string own_diagram(Diagram& d, FbdGrade& g) {
   std::string undecided_by;
   for (std::size_t li = 0; li < d.m.loads.size(); ++li) {
     const Load& l = d.m.loads[li];
-    if (std::find(d.bodies.begin(), d.bodies.end(), l.body) == d.bodies.end() || d.internal.count(force_key(l.source)))
+    if (std::find(d.bodies.begin(), d.bodies.end(), l.body) == d.bodies.end() || d.internal.count(force_key(l.origin)))
       continue;
     std::vector<Entry> of_load;
     for (const ForcePart& p : split_force(d.m, l.force, d.unknowns, [&](const ex& e) { return d.num(e); })) {
       Entry e;
       e.load = li;
       place_at(d, l, e);
-      e.kind = kind_of(d.m, l.source);
-      FbdGrade::Force f{l.source, force_phrase(l.source), "", "missing", {}, 1, 0};
+      e.key = force_key(l.origin);
+      e.kind = kind_of(d.m, l.origin);
+      FbdGrade::Force f{l.source(), force_phrase(l.origin), "", "missing", {}, 1, 0};
       if (!part_entry(d, l, p, e, f, undecided_by)) continue;
       of_load.push_back(e);
       g.forces.push_back(f);
@@ -354,7 +351,7 @@ std::string own_diagram(Diagram& d, FbdGrade& g) {
     for (auto& e : of_load) e.point_matters = point_matters(d, l, e);
     d.entries.insert(d.entries.end(), of_load.begin(), of_load.end());
     if (d.m.dims() == 3 && !is_zero_vec(l.couple) && undecided_by.empty())
-      undecided_by = "the couple of the " + l.source;
+      undecided_by = "the couple of the " + l.source();
     if (d.m.dims() == 2 && !l.couple[2].is_zero()) couple_entry(d, g, li, undecided_by);
   }
   carried_entries(d, g);
@@ -368,7 +365,7 @@ void weigh(const Diagram& d, FbdGrade& g) {
     auto& f = g.forces[k];
     if (auto it = w.find(f.source); it != w.end())
       f.weight = it->second;
-    else if (auto it2 = w.find(force_key(f.source)); it2 != w.end())
+    else if (auto it2 = w.find(d.entries[k].key); it2 != w.end())
       f.weight = it2->second;
     else
       for (const auto& n : d.entries[k].names)
@@ -759,7 +756,7 @@ Finding extra_finding(const Diagram& d, const Matching& mt, const FbdGrade& g, s
   for (std::size_t li = 0; li < d.m.loads.size(); ++li) {
     const Load& l = d.m.loads[li];
     const bool ours = std::find(d.bodies.begin(), d.bodies.end(), l.body) != d.bodies.end();
-    if (ours && !d.internal.count(force_key(l.source))) continue;
+    if (ours && !d.internal.count(force_key(l.origin))) continue;
     Entry e;
     e.load = li;
     place_at(d, l, e);
@@ -771,9 +768,9 @@ Finding extra_finding(const Diagram& d, const Matching& mt, const FbdGrade& g, s
     if (e.lines.empty() || a.at.empty() || !same_point(d, i, e) || (a.direction && !in_span(d, *a.direction, e.lines)))
       continue;
     if (ours)
-      return {"internal_force", said(d, i) + " is " + force_phrase(l.source) + ", which is internal to " + g.of +
+      return {"internal_force", said(d, i) + " is " + force_phrase(l.origin) + ", which is internal to " + g.of +
                                     " (its forces on the system's bodies cancel)"};
-    return {"other_body", said(d, i) + " is " + force_phrase(l.source) + ", which acts on " +
+    return {"other_body", said(d, i) + " is " + force_phrase(l.origin) + ", which acts on " +
                               d.m.bodies[static_cast<std::size_t>(l.body)].name + ", not on " + g.of};
   }
   return {"extra_force",

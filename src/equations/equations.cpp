@@ -45,7 +45,8 @@ Equation lmb_along(const Model& m, const std::vector<int>& bodies, bool system, 
     if (f.is_zero()) continue;
     eq.terms.push_back(f);
     eq.built.push_back(built);
-    eq.sources.push_back(l.source);
+    eq.sources.push_back(l.source());
+    eq.origins.push_back(l.origin);
     sum += f;
   }
   for (int b : bodies) rhs += m.bodies[b].mass * inner(m.bodies[b].acceleration, direction);
@@ -70,11 +71,12 @@ Equation amb_along(const Model& m, const std::vector<int>& bodies, bool system, 
     if (l.at) moment = moment + cross(*l.at - about, l.force);
     const ex mz = fewer_trig_terms(normal(inner(moment, direction)));
     if (mz.is_zero()) {
-      if (!is_zero_vec(l.force)) eliminated.push_back(l.source);
+      if (!is_zero_vec(l.force)) eliminated.push_back(l.source());
       continue;
     }
     eq.terms.push_back(mz);
-    eq.sources.push_back(l.source);
+    eq.sources.push_back(l.source());
+    eq.origins.push_back(l.origin);
     sum += mz;
   }
   // The rate of change of angular momentum about C: r_cm/C x m a (+ I alpha).

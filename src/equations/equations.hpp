@@ -23,6 +23,9 @@ struct Equation {
   std::vector<int> bodies;           // lmb, amb: the body or the system balanced
   bool system = false;
   std::vector<GiNaC::ex> built;  // lmb: the same terms as built, not expanded (for units)
+  // lmb, amb: the load each term comes from, one per source (empty: no term is a load's). Its
+  // initializer keeps the aggregates written without it free of missing-initializer warnings.
+  std::vector<LoadOrigin> origins = {};
 };
 
 /// A constraint as the derivation shows it: the constant quantity, its rate, its acceleration.

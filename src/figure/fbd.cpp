@@ -163,7 +163,7 @@ struct FbdDraw {
   void loads_on(std::size_t i) {
     const int bi = bodies[i];
     for (const auto& l : m.loads) {
-      if (l.body != bi || internal.count(force_key(l.source))) continue;
+      if (l.body != bi || internal.count(force_key(l.origin))) continue;
       std::optional<std::array<double, 3>> at;
       if (l.at && proj.dims > 1) at = point3(*l.at);
       const bool at_cm = l.at && m.bodies[bi].has_cm && is_zero_vec(*l.at - m.bodies[bi].cm);
@@ -280,7 +280,7 @@ struct FbdDraw {
     std::set<std::string> named;
     for (int bi : bodies) {
       for (const auto& l : m.loads)
-        if (l.body == bi && l.at && !l.at_name.empty() && !internal.count(force_key(l.source)) &&
+        if (l.body == bi && l.at && !l.at_name.empty() && !internal.count(force_key(l.origin)) &&
             std::any_of(m.points.begin(), m.points.end(), [&](const Point& p) { return p.name == l.at_name; }) &&
             named.insert(l.at_name).second) {
           FigureDot dot;

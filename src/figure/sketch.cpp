@@ -387,7 +387,7 @@ struct LineSketch {
     for (const auto& d : m.drawings) {
       if (d.as != "arrow" || d.body < 0) continue;
       for (const auto& l : m.loads) {
-        if (l.source != d.label || l.body != d.body) continue;
+        if (l.source() != d.label || l.body != d.body) continue;
         const auto v = num(l.force[0]);
         if (!v || std::fabs(*v) < 1e-12) continue;
         const double dir = *v > 0 ? 1 : -1;

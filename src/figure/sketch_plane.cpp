@@ -561,7 +561,7 @@ struct PlaneSketch {
       if (d.as != "arrow" || d.body < 0 || !drawn[d.body]) continue;
       const Drawn& b = *drawn[d.body];
       for (const auto& l : m.loads) {
-        if (l.source != d.label || l.body != d.body) continue;
+        if (l.source() != d.label || l.body != d.body) continue;
         const auto v = point3(m, num, l.force);
         if (!v || len(proj(*v)) < 1e-12) continue;
         const V u = normalized(proj(*v));
@@ -593,7 +593,7 @@ struct PlaneSketch {
     for (const auto& d : m.drawings) {
       if (d.as != "couple" || d.body < 0 || !drawn[d.body]) continue;
       for (const auto& l : m.loads) {
-        if (l.source != d.label || l.body != d.body || l.couple[2].is_zero()) continue;
+        if (l.source() != d.label || l.body != d.body || l.couple[2].is_zero()) continue;
         const auto v = num(l.couple[2]);
         if (!v) return false;
         FigureCouple c;
@@ -635,7 +635,7 @@ struct PlaneSketch {
         if ((d.as != "pin" && d.as != "joint") || d.point < 0) continue;
         const V p = paper(d.point);
         const bool on_body = std::any_of(m.loads.begin(), m.loads.end(), [&](const Load& l) {
-          return l.body == static_cast<int>(b) && l.source == d.label;
+          return l.body == static_cast<int>(b) && l.source() == d.label;
         });
         if (!on_body || len(centre - p) < 0.3) continue;
         const V to = normalized(centre - p);

@@ -10,22 +10,13 @@ namespace tackle {
 
 using namespace GiNaC;
 
-std::string force_key(const std::string& source) {
-  for (const char* sep : {" at ", " on "}) {
-    const auto at = source.rfind(sep);
-    if (at != std::string::npos && source.find(':') != std::string::npos && at > source.find(':'))
-      return source.substr(0, at);
-  }
-  return source;
-}
-
 std::set<std::string> internal_forces(const Model& m, const std::vector<int>& bodies) {
   std::set<std::string> internal;
   if (bodies.size() < 2) return internal;
   std::map<std::string, Vec> sums;
   for (const auto& l : m.loads)
     if (std::find(bodies.begin(), bodies.end(), l.body) != bodies.end()) {
-      auto [it, fresh] = sums.emplace(force_key(l.source), zero_vec());
+      auto [it, fresh] = sums.emplace(force_key(l.origin), zero_vec());
       it->second = it->second + l.force;
     }
   for (const auto& [key, sum] : sums)

@@ -16,12 +16,8 @@
 
 namespace tackle {
 
-/// One connection or strand a load comes from, whichever body it acts on: "string s: strand
-/// pB-C" for "string s: strand pB-C at pB", "string s (from its length sum)" for "... on A".
-[[nodiscard]] std::string force_key(const std::string& source);
-
-/// The forces internal to a system of bodies: the keys (force_key) whose loads on the
-/// system's bodies add up to nothing. Empty for one body.
+/// The forces internal to a system of bodies: the keys (force_key of a load's origin) whose
+/// loads on the system's bodies add up to nothing. Empty for one body.
 [[nodiscard]] std::set<std::string> internal_forces(const Model& m, const std::vector<int>& bodies);
 
 /// A part of a force vector.

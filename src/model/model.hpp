@@ -11,6 +11,7 @@
 #include <ginac/ginac.h>
 
 #include "description/description.hpp"
+#include "model/load_origin.hpp"
 #include "model/symbols.hpp"
 #include "model/vec.hpp"
 #include "ruleset/ruleset.hpp"
@@ -68,7 +69,9 @@ struct Load {
   std::optional<Vec> at;  // point of application (needed for angular momentum balance)
   std::string at_name;    // the point's name, for reports
   Vec couple = zero_vec();
-  std::string source;  // "force on A", "string s: strand pB-C at pB", "gravity on A"
+  LoadOrigin origin;  // where it comes from: gravity, a connection, a strand of one
+  /// The sentence the reports print: "force on A", "string s: strand pB-C at pB", "gravity on A".
+  [[nodiscard]] std::string source() const { return sentence(origin); }
 };
 
 /// A quantity held constant in time (a string's length sum, a still body's coordinate); its

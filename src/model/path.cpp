@@ -150,7 +150,7 @@ std::optional<Path> make_path(const std::vector<int>& indices, const std::vector
 }
 
 std::vector<Load> tension_loads(const Path& p, const std::vector<Point>& points, const ex& tension,
-                                const std::string& source) {
+                                const LoadOrigin& of) {
   std::vector<Load> out;
   for (const auto& s : p.segments) {
     if (s.constant) continue;  // internal to one body, or between fixed points
@@ -164,7 +164,7 @@ std::vector<Load> tension_loads(const Path& p, const std::vector<Point>& points,
       for (int k = 0; k < 3; ++k) load.force[k] = sign * tension * s.direction[k];
       load.at = end->position;
       load.at_name = end->name;
-      load.source = source + ": strand " + strand + " at " + end->name;
+      load.origin = strand_origin(of, strand, end->name);
       out.push_back(load);
     }
   }

@@ -13,6 +13,7 @@
 #include <ginac/ginac.h>
 
 #include "core/diagnostics.hpp"
+#include "model/load_origin.hpp"
 #include "model/vec.hpp"
 
 namespace tackle {
@@ -49,8 +50,9 @@ using NameTurningLength = std::function<GiNaC::ex(const Point& from, const Point
                                             const std::string& label, const NameTurningLength& turning);
 
 /// The loads of a tension along the path: at each end (on a body) of each changing segment,
-/// `tension` times the unit vector towards the other end. `source` prefixes each load's source.
+/// `tension` times the unit vector towards the other end. Each load's origin is a strand of
+/// the connection `of` comes from.
 [[nodiscard]] std::vector<Load> tension_loads(const Path& p, const std::vector<Point>& points, const GiNaC::ex& tension,
-                                              const std::string& source);
+                                              const LoadOrigin& of);
 
 }  // namespace tackle

@@ -128,12 +128,12 @@ std::string against_at_start(const Model& m, const Solution& sol, const Dependen
              " slips against the direction it assumes (its friction would push the bodies along, not hold them back)";
   }
   for (const auto& l : m.loads) {
-    if (l.body < 0 || std::find(m.direction_assumed_by.begin(), m.direction_assumed_by.end(), l.source) ==
+    if (l.body < 0 || std::find(m.direction_assumed_by.begin(), m.direction_assumed_by.end(), l.source()) ==
                           m.direction_assumed_by.end())
       continue;
     // (Between two bodies, the relative slip above decides, not each body's own motion.)
     if (std::any_of(m.slips.begin(), m.slips.end(),
-                    [&](const Model::Slip& s) { return s.source == l.source && s.bodies.size() > 1; }))
+                    [&](const Model::Slip& s) { return s.source == l.source() && s.bodies.size() > 1; }))
       continue;
     const Body& b = m.bodies[static_cast<std::size_t>(l.body)];
     // The velocity of the point the friction acts at: the center's, unless the body turns.
@@ -154,10 +154,10 @@ std::string against_at_start(const Model& m, const Solution& sol, const Dependen
     const double tiny = 1e-9;
     if (ff == 0) continue;
     if (vv > tiny * tiny && fv > tiny * std::sqrt(ff * vv))
-      return "at t = 0 body '" + b.name + "' moves against the sliding direction that " + l.source +
+      return "at t = 0 body '" + b.name + "' moves against the sliding direction that " + l.source() +
              " assumes (its friction would push it along, not hold it back)";
     if (vv <= tiny * tiny && aa > tiny * tiny && fa > tiny * std::sqrt(ff * aa))
-      return "from rest, the forces start body '" + b.name + "' against the sliding direction that " + l.source +
+      return "from rest, the forces start body '" + b.name + "' against the sliding direction that " + l.source() +
              " assumes (its friction would push it along, not hold it back)";
   }
   return {};

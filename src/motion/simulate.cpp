@@ -294,11 +294,11 @@ std::vector<bool> slip_watched(const Model& m, const EquationsOfMotion& eom) {
   auto watched = [&](int body) {
     bool any = false;
     for (const auto& l : m.loads) {
-      if (l.body != body || std::find(m.direction_assumed_by.begin(), m.direction_assumed_by.end(), l.source) ==
+      if (l.body != body || std::find(m.direction_assumed_by.begin(), m.direction_assumed_by.end(), l.source()) ==
                                 m.direction_assumed_by.end())
         continue;
       const bool slip = std::any_of(m.slips.begin(), m.slips.end(), [&](const Model::Slip& s) {
-        return s.source == l.source && std::find(s.bodies.begin(), s.bodies.end(), body) != s.bodies.end();
+        return s.source == l.source() && std::find(s.bodies.begin(), s.bodies.end(), body) != s.bodies.end();
       });
       if (!slip) return false;
       any = true;

@@ -252,6 +252,18 @@ std::string label_of(const Instance& in) {
   return label;
 }
 
+// The origin of a connection's own loads: an applied force (rule force), a sliding contact
+// labelled by its point ("sliding at P"), else the connection.
+LoadOrigin own_origin(const Instance& in) {
+  LoadOrigin o = connection_origin(in.label, in.rule.type);
+  if (in.rule.type == "force") o.kind = LoadOrigin::Kind::applied;
+  if (in.rule.type == "sliding" && !in.c.name && in.c.arg("at")) {
+    o.kind = LoadOrigin::Kind::sliding;
+    o.point = in.c.arg("at")->items[0].text;
+  }
+  return o;
+}
+
 // `across` checks, before the loads are made of the vectors: a direction that is not zero, at
 // right angles to another (a contact's tangent to its normal), whatever the parameters it is
 // written in, or at least at their given numbers.
@@ -373,7 +385,7 @@ void add_loads(BuildContext& ctx, Instance& in) {
       }
       Load load;
       load.body = body;
-      load.source = label;
+      load.origin = own_origin(in);
       if (!l.at_arg.empty()) {
         if (auto at = point_args.find(l.at_arg); at != point_args.end()) {
           load.at = ctx.m.points[at->second].position;
@@ -423,7 +435,8 @@ void add_loads(BuildContext& ctx, Instance& in) {
       in.scope.bind("origin_length", origin_length);
       auto tension = rule_expr(ctx, in, l.expr, l.at);
       if (!tension) continue;
-      for (auto& load : tension_loads(*path, ctx.m.points, *tension, label)) ctx.m.loads.push_back(std::move(load));
+      for (auto& load : tension_loads(*path, ctx.m.points, *tension, own_origin(in)))
+        ctx.m.loads.push_back(std::move(load));
     } else {
       auto it = expr_args.find(l.arg);
       if (it == expr_args.end()) continue;
@@ -463,7 +476,7 @@ void add_loads(BuildContext& ctx, Instance& in) {
           load.at = b.cm;
           load.at_name = b.name;
         }
-        load.source = label + " (from its length sum) on " + b.name;
+        load.origin = length_sum_origin(own_origin(in), b.name);
         ctx.m.loads.push_back(load);
       }
     }
@@ -669,7 +682,7 @@ bool frictionless(BuildContext& ctx, const Instance& in) {
   const exmap values = ctx.table->values();
   bool any = false;
   for (const auto& l : ctx.m.loads) {
-    if (l.source != in.label) continue;
+    if (l.source() != in.label) continue;
     any = true;
     const ex f = evalf(substituted(inner(l.force, unit(along->second)), values));
     if (!f.is_zero()) return false;

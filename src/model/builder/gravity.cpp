@@ -35,7 +35,7 @@ void gravity(BuildContext& ctx) {
       weight.at = b.cm;
       weight.at_name = "the center of mass of " + b.name;
     }
-    weight.source = "gravity on " + b.name;
+    weight.origin = weight_origin(b.name);
     ctx.m.loads.push_back(weight);
   }
 }
