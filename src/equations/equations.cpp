@@ -118,21 +118,35 @@ bool particle(const Model& m, int body) {
 
 }  // namespace
 
-EquationSystem build_equations(const Model& m) {
+namespace {
+
+// The steps of building a model's equations and what they share: the model, the system being
+// filled, each coordinate mapped to 0 (to tell a constraint's terms that vary), and, once the
+// equations are made, their residuals and the symbols in them.
+struct EquationBuilder {
+  const Model& m;
   EquationSystem s;
   exmap still_coordinates;
-  for (const auto& c : m.coordinates) still_coordinates[c.q] = 0;
-  auto add_constraint = [&](const Constraint& c) {
-    // Constant parts (fixed points, offsets, wrap around pulleys) drop out of the derivatives;
-    // the book leaves them out of the length sum too.
-    // A term varies when it has a coordinate, or a turning strand's length (whose square does).
+  std::vector<ex> residuals;
+  std::set<ex, ex_is_less> present;
+
+  explicit EquationBuilder(const Model& model) : m(model) {
+    for (const auto& c : m.coordinates) still_coordinates[c.q] = 0;
+  }
+
+  // A term varies when it has a coordinate, or a turning strand's length (whose square does).
+  bool varies(const ex& t) const {
+    if (!(t - substituted(t, still_coordinates)).expand().is_zero()) return true;
+    return std::any_of(m.lengths.begin(), m.lengths.end(), [&](const TurningLength& l) {
+      return t.has(l.symbol) && !(l.squared - substituted(l.squared, still_coordinates)).expand().is_zero();
+    });
+  }
+
+  // The terms of a constraint's quantity that vary. Constant parts (fixed points, offsets,
+  // wrap around pulleys) drop out of the derivatives; the book leaves them out of the length
+  // sum too.
+  ex varying_part(const Constraint& c) const {
     const ex q = c.quantity.expand();
-    auto varies = [&](const ex& t) {
-      if (!(t - substituted(t, still_coordinates)).expand().is_zero()) return true;
-      return std::any_of(m.lengths.begin(), m.lengths.end(), [&](const TurningLength& l) {
-        return t.has(l.symbol) && !(l.squared - substituted(l.squared, still_coordinates)).expand().is_zero();
-      });
-    };
     ex varying = 0;
     if (is_a<add>(q)) {
       for (const auto& t : q)
@@ -140,6 +154,13 @@ EquationSystem build_equations(const Model& m) {
     } else if (varies(q)) {
       varying = q;
     }
+    return varying;
+  }
+
+  // A constraint's steps, its acceleration and rate equations, and its position equation when
+  // it has a constant.
+  void add_constraint(const Constraint& c) {
+    const ex varying = varying_part(c);
     // Nothing varies: the coordinates themselves keep it (a pendulum's string, its bob written
     // in the string's angle), and its derivatives would read 0 = 0.
     if (varying.is_zero()) return;
@@ -177,13 +198,16 @@ EquationSystem build_equations(const Model& m) {
                                       {},
                                       false,
                                       {}});
-  };
-  // One equation per axis; a 2-D moment has only a z component.
-  auto add_lmb = [&](const std::vector<int>& bodies, bool system) {
+  }
+
+  // One equation per axis.
+  void add_lmb(const std::vector<int>& bodies, bool system) {
     for (int i = 0; i < m.dims(); ++i) s.equations.push_back(lmb_along(m, bodies, system, axis_vec(i), m.axes[i]));
-  };
-  auto add_amb = [&](const std::vector<int>& bodies, bool system, const Vec& about, const std::string& about_label,
-                     const std::optional<Vec>& axis, const std::string& axis_label) {
+  }
+
+  // About the axis given, else one equation per axis; a 2-D moment has only a z component.
+  void add_amb(const std::vector<int>& bodies, bool system, const Vec& about, const std::string& about_label,
+               const std::optional<Vec>& axis, const std::string& axis_label) {
     if (axis) {
       s.equations.push_back(amb_along(m, bodies, system, about, about_label, *axis, "axis " + axis_label));
     } else if (m.dims() == 2) {
@@ -192,10 +216,11 @@ EquationSystem build_equations(const Model& m) {
       for (int i = 0; i < 3; ++i)
         s.equations.push_back(amb_along(m, bodies, system, about, about_label, axis_vec(i), m.axes[i]));
     }
-  };
-  if (m.derive.empty()) {
-    // A complete set: LMB for every body that has a mass (0 for a pulley block), AMB about
-    // its center of mass in 2-D and 3-D, and every constraint.
+  }
+
+  // A complete set: LMB for every body that has a mass (0 for a pulley block), AMB about
+  // its center of mass in 2-D and 3-D, and every constraint.
+  void complete_set() {
     for (std::size_t i = 0; i < m.bodies.size(); ++i) {
       const Body& b = m.bodies[i];
       if (!b.has_mass) continue;
@@ -206,7 +231,10 @@ EquationSystem build_equations(const Model& m) {
                 b.has_cm ? "its center of mass" : "the origin", std::nullopt, "");
     }
     for (const auto& c : m.constraints) add_constraint(c);
-  } else {
+  }
+
+  // The balances and constraints `derive` asks for, in its order.
+  void selected() {
     for (const auto& sel : m.derive) {
       if (sel.kind == Selection::Kind::lmb) {
         add_lmb(sel.bodies, sel.system);
@@ -218,57 +246,77 @@ EquationSystem build_equations(const Model& m) {
       }
     }
   }
+
   // Constant acceleration over an interval: the change of each rate given at both ends.
-  if (m.interval)
-    for (const auto& c : m.interval->changes) {
-      if (!c.to) continue;  // its end is found after the solve (motion/interval)
-      const Body& b = m.bodies[c.body];
-      Equation eq;
-      eq.kind = Equation::Kind::interval;
-      eq.label = "interval: " + to_text(b.coord);
-      if (m.interval->duration) {
-        eq.lhs = b.accel * *m.interval->duration;
-        eq.rhs = *c.to - c.from;
-        eq.sources = {"impulse and momentum: the constant acceleration times the duration is the change of " +
-                      to_text(b.rate)};
-      } else {
-        eq.lhs = 2 * b.accel * *m.interval->distance;
-        eq.rhs = pow(*c.to, 2) - pow(c.from, 2);
-        eq.sources = {"constant acceleration over the distance: " + to_text(b.rate) + "^2 changes by 2 " +
-                      to_text(b.accel) + " times the distance"};
+  void interval_changes() {
+    if (m.interval)
+      for (const auto& c : m.interval->changes) {
+        if (!c.to) continue;  // its end is found after the solve (motion/interval)
+        const Body& b = m.bodies[c.body];
+        Equation eq;
+        eq.kind = Equation::Kind::interval;
+        eq.label = "interval: " + to_text(b.coord);
+        if (m.interval->duration) {
+          eq.lhs = b.accel * *m.interval->duration;
+          eq.rhs = *c.to - c.from;
+          eq.sources = {"impulse and momentum: the constant acceleration times the duration is the change of " +
+                        to_text(b.rate)};
+        } else {
+          eq.lhs = 2 * b.accel * *m.interval->distance;
+          eq.rhs = pow(*c.to, 2) - pow(c.from, 2);
+          eq.sources = {"constant acceleration over the distance: " + to_text(b.rate) + "^2 changes by 2 " +
+                        to_text(b.accel) + " times the distance"};
+        }
+        eq.terms = {eq.lhs};
+        s.equations.push_back(eq);
       }
-      eq.terms = {eq.lhs};
-      s.equations.push_back(eq);
-    }
+  }
+
   // The candidates the equations hold, in the candidates' order. The equations' symbols are
   // gathered once: has() of each candidate in each equation is quadratic in a chain.
-  std::vector<ex> residuals;
-  std::set<ex, ex_is_less> present;
-  for (const auto& eq : s.equations) {
-    residuals.push_back(eq.lhs - eq.rhs);
-    for (const ex& x : symbols_in(residuals.back())) present.insert(x);
+  void held_candidates() {
+    for (const auto& eq : s.equations) {
+      residuals.push_back(eq.lhs - eq.rhs);
+      for (const ex& x : symbols_in(residuals.back())) present.insert(x);
+    }
+    for (const auto& u : m.candidates) {
+      const bool held = is_a<symbol>(u)
+                            ? present.count(u) != 0
+                            : std::any_of(residuals.begin(), residuals.end(), [&](const ex& r) { return r.has(u); });
+      if (held) s.unknowns.push_back(u);
+    }
   }
-  for (const auto& u : m.candidates) {
-    const bool held = is_a<symbol>(u)
-                          ? present.count(u) != 0
-                          : std::any_of(residuals.begin(), residuals.end(), [&](const ex& r) { return r.has(u); });
-    if (held) s.unknowns.push_back(u);
-  }
+
   // A massless body that no constraint ties: its balance fixes its coordinate (linearly, or
   // the problem is refused: a balance through a turning strand is not solved for it).
-  for (const auto& q : balance_coordinates(m)) {
-    const auto body =
-        std::find_if(m.bodies.begin(), m.bodies.end(), [&](const Body& b) { return b.coord.is_equal(q); });
-    for (const auto& r : residuals)
-      if (m.symbols->hidden_in_lengths(r, q))
-        throw InputError(
-            {{body->at, "body '" + body->name + "' has no mass and no constraint ties " + to_text(q) +
-                            " to the other coordinates, so its balance fixes it; but a strand that turns with it "
-                            "makes that balance nonlinear in " +
-                            to_text(q) + " (expected a string or a joint that ties it, or a mass)"}});
-    if (present.count(q) != 0) s.unknowns.push_back(q);
+  void balance_coordinates_held() {
+    for (const auto& q : balance_coordinates(m)) {
+      const auto body =
+          std::find_if(m.bodies.begin(), m.bodies.end(), [&](const Body& b) { return b.coord.is_equal(q); });
+      for (const auto& r : residuals)
+        if (m.symbols->hidden_in_lengths(r, q))
+          throw InputError(
+              {{body->at, "body '" + body->name + "' has no mass and no constraint ties " + to_text(q) +
+                              " to the other coordinates, so its balance fixes it; but a strand that turns with it "
+                              "makes that balance nonlinear in " +
+                              to_text(q) + " (expected a string or a joint that ties it, or a mass)"}});
+      if (present.count(q) != 0) s.unknowns.push_back(q);
+    }
   }
-  return s;
+};
+
+}  // namespace
+
+EquationSystem build_equations(const Model& m) {
+  EquationBuilder b(m);
+  if (m.derive.empty())
+    b.complete_set();
+  else
+    b.selected();
+  b.interval_changes();
+  b.held_candidates();
+  b.balance_coordinates_held();
+  return std::move(b.s);
 }
 
 }  // namespace tackle

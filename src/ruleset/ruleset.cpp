@@ -289,15 +289,8 @@ struct RuleReader {
     r.regimes.push_back(std::move(s));
   }
 
-  Rule read(const yaml::Node& root) {
-    Rule r;
-    r.at = where(root, file);
-    if (!check_map(root,
-                   {"type", "summary", "needs", "optional", "one_of", "unknowns", "loads", "constraints", "validity",
-                    "checks", "assumptions", "dimensions", "assumes_direction", "sketch", "two_bodies", "regimes"},
-                   "the rule", file, diags))
-      return r;
-    r.type = need_scalar(root, "type", "the rule");
+  // `summary`: one text, or one per number of axes.
+  void read_summary(const yaml::Node& root, Rule& r) {
     if (auto s = root["summary"]) {
       if (s.is_map()) {
         // One text per number of axes.
@@ -312,6 +305,11 @@ struct RuleReader {
         r.summary = scalar(s, "'summary'", file, diags).value_or(Text{}).text;
       }
     }
+  }
+
+  // `two_bodies` (the rule for two bodies, named when refusing a one-body contact) and
+  // `assumes_direction` (true or false).
+  void read_two_bodies_and_direction(const yaml::Node& root, Rule& r) {
     if (auto s = root["two_bodies"])
       if (const auto t = scalar(s, "'two_bodies'", file, diags)) r.two_bodies = t->text;
     if (auto s = root["assumes_direction"]) {
@@ -321,6 +319,10 @@ struct RuleReader {
       else if (t)
         diags.error(t->at, "'assumes_direction' is '" + t->text + "' (expected true or false)");
     }
+  }
+
+  // `sketch`: how the figure draws the connection, one of the known kinds.
+  void read_sketch(const yaml::Node& root, Rule& r) {
     if (auto s = root["sketch"]) {
       const auto t = scalar(s, "'sketch'", file, diags);
       static const std::vector<std::string> kinds{"line",    "spring",  "damper", "pulley", "support", "arrow",
@@ -332,8 +334,10 @@ struct RuleReader {
                                "' (expected line, spring, damper, pulley, support, arrow, contact, surface, pin, "
                                "joint, rod or couple)");
     }
-    if (auto n = root["needs"]) read_args(n, true, r);
-    if (auto n = root["optional"]) read_args(n, false, r);
+  }
+
+  // `one_of`: groups of arguments, exactly one of each given; each a declared argument.
+  void read_one_of(const yaml::Node& root, Rule& r) {
     if (auto n = root["one_of"]; n && is_list(n, "'one_of'", file, diags)) {
       for (const auto& group : n) {
         if (!is_list(group, "a group of 'one_of'", file, diags)) continue;
@@ -346,6 +350,10 @@ struct RuleReader {
         r.one_of.push_back(g);
       }
     }
+  }
+
+  // `dimensions`: the numbers of axes the rule is for (1, 2 or 3).
+  void read_dimensions(const yaml::Node& root, Rule& r) {
     if (auto n = root["dimensions"]; n && is_list(n, "'dimensions'", file, diags)) {
       r.dimensions.clear();
       for (const auto& k : n) {
@@ -356,102 +364,153 @@ struct RuleReader {
           diags.error(where(k, file), "'dimensions' lists '" + v + "' (expected 1, 2 or 3)");
       }
     }
-    // Names a rule's expressions may use: its expression, vector and point arguments (points
-    // as position vectors) and its unknowns.
+  }
+
+  // One of `unknowns`: its local name (added to `locals`), the name template, the argument
+  // that renames it, its dimension, its `when`.
+  void read_unknown(const yaml::Node& u, Rule& r, std::vector<std::string>& locals) {
+    if (!check_map(u, {"local", "name", "rename", "dimension", "when"}, "an unknown of the rule", file, diags)) return;
+    UnknownSpec s;
+    if (u["when"]) {
+      s.when = u["when"].text();
+      check_when(r, s.when, where(u, file));
+    }
+    s.local = need_scalar(u, "local", "an unknown");
+    s.name_template = need_scalar(u, "name", "an unknown");
+    if (auto rn = u["rename"]) {
+      s.rename_arg = rn.text();
+      if (!r.arg(*s.rename_arg))
+        diags.error(where(rn, file),
+                    "'rename' names argument '" + *s.rename_arg + "', which the rule does not declare");
+    }
+    const std::string dim = need_scalar(u, "dimension", "an unknown");
+    if (auto d = Dimension::from_name(dim))
+      s.dimension = *d;
+    else if (!dim.empty())
+      diags.error(where(u["dimension"], file), "unknown dimension '" + dim + "' (expected force, mass, length, ...)");
+    locals.push_back(s.local);
+    r.unknowns.push_back(std::move(s));
+  }
+
+  // Names a rule's expressions may use: its expression, vector and point arguments (points
+  // as position vectors) and its unknowns (read here).
+  std::vector<std::string> read_unknowns(const yaml::Node& root, Rule& r) {
     std::vector<std::string> locals;
     for (const auto& a : r.args)
       if (a.kind == ArgKind::expr || a.kind == ArgKind::vector || a.kind == ArgKind::moment || a.kind == ArgKind::point)
         locals.push_back(a.key);
-    if (auto n = root["unknowns"]; n && is_list(n, "'unknowns'", file, diags)) {
-      for (const auto& u : n) {
-        if (!check_map(u, {"local", "name", "rename", "dimension", "when"}, "an unknown of the rule", file, diags))
-          continue;
-        UnknownSpec s;
-        if (u["when"]) {
-          s.when = u["when"].text();
-          check_when(r, s.when, where(u, file));
-        }
-        s.local = need_scalar(u, "local", "an unknown");
-        s.name_template = need_scalar(u, "name", "an unknown");
-        if (auto rn = u["rename"]) {
-          s.rename_arg = rn.text();
-          if (!r.arg(*s.rename_arg))
-            diags.error(where(rn, file),
-                        "'rename' names argument '" + *s.rename_arg + "', which the rule does not declare");
-        }
-        const std::string dim = need_scalar(u, "dimension", "an unknown");
-        if (auto d = Dimension::from_name(dim))
-          s.dimension = *d;
-        else if (!dim.empty())
-          diags.error(where(u["dimension"], file),
-                      "unknown dimension '" + dim + "' (expected force, mass, length, ...)");
-        locals.push_back(s.local);
-        r.unknowns.push_back(std::move(s));
-      }
-    }
-    std::set<std::string> vectors;
-    for (const auto& a : r.args)
-      if (a.kind == ArgKind::vector || a.kind == ArgKind::moment || a.kind == ArgKind::point) vectors.insert(a.key);
-    LocalNames names(locals, vectors);
-    // A tension along a path may also use the path's length and its rate of lengthening.
-    std::vector<std::string> path_locals = locals;
-    path_locals.insert(path_locals.end(), {"length", "lengthening", "origin_length"});
-    LocalNames along_names(path_locals, vectors);
-    auto check_expr = [&](const std::string& text, const Location& at) {
-      auto res = parse_expression(text, names);
-      for (const auto& p : res.problems) diags.error(at, "in '" + text + "': " + p.message);
-    };
-    // The summary's {N}, {mu*N}: expressions in the rule's local names, typeset in the
-    // derivation with the connection's own symbols.
+    if (auto n = root["unknowns"]; n && is_list(n, "'unknowns'", file, diags))
+      for (const auto& u : n) read_unknown(u, r, locals);
+    return locals;
+  }
+
+  // The problems of an expression in `names`, reported at `at`.
+  void check_expr(const LocalNames& names, const std::string& text, const Location& at) {
+    auto res = parse_expression(text, names);
+    for (const auto& p : res.problems) diags.error(at, "in '" + text + "': " + p.message);
+  }
+
+  // The summary's {N}, {mu*N}: expressions in the rule's local names, typeset in the
+  // derivation with the connection's own symbols.
+  void check_summary(const yaml::Node& root, const Rule& r, const LocalNames& names) {
     if (auto s = root["summary"]) {
       std::vector<const std::string*> texts{&r.summary};
       for (const auto& t : r.summary_in) texts.push_back(&t);
       for (const std::string* t : texts)
-        for (const auto& ph : placeholders(*t)) check_expr(std::string(ph.name), where(s, file));
+        for (const auto& ph : placeholders(*t)) check_expr(names, std::string(ph.name), where(s, file));
     }
-    if (auto n = root["loads"]; n && is_list(n, "'loads'", file, diags)) {
-      for (const auto& l : n) {
-        if (!check_map(l, {"on", "along", "from_length", "force", "tension", "at", "couple", "when"},
-                       "a load of the rule", file, diags))
-          continue;
-        auto kind = which(l, {"on", "along", "from_length"}, "a load");
-        if (!kind) continue;
-        LoadSpec s;
-        s.at = where(l, file);
-        s.arg = l[*kind].text();
-        if (l["when"]) {
-          s.when = l["when"].text();
-          check_when(r, s.when, s.at);
-        }
-        if (*kind == "on") {
-          s.kind = LoadSpec::Kind::on;
-          if (l["force"]) s.expr = need_scalar(l, "force", "a load");
-          if (l["couple"]) {
-            s.couple = need_scalar(l, "couple", "a load");
-            if (!s.couple.empty()) check_expr(s.couple, s.at);
-          }
-          if (!l["force"] && !l["couple"]) diags.error(s.at, "a load has neither 'force' nor 'couple'");
-          if (l["at"]) {
-            s.at_arg = l["at"].text();
-            check_arg_ref(r, s.at_arg, ArgKind::point, s.at, "a load");
-          }
-          check_arg_ref(r, s.arg, ArgKind::body, s.at, "a load");
-        } else {
-          s.kind = *kind == "along" ? LoadSpec::Kind::along : LoadSpec::Kind::from_length;
-          s.expr = need_scalar(l, "tension", "a load");
-          check_arg_ref(r, s.arg, *kind == "along" ? ArgKind::points : ArgKind::expr, s.at, "a load");
-        }
-        if (!s.expr.empty()) {
-          if (s.kind == LoadSpec::Kind::along) {
-            for (const auto& p : parse_expression(s.expr, along_names).problems)
-              diags.error(s.at, "in '" + s.expr + "': " + p.message);
-          } else {
-            check_expr(s.expr, s.at);
-          }
-        }
-        r.loads.push_back(std::move(s));
+  }
+
+  // A load `on` a body or point: its force or couple, its point of application.
+  void read_load_on(const yaml::Node& l, Rule& r, LoadSpec& s, const LocalNames& names) {
+    s.kind = LoadSpec::Kind::on;
+    if (l["force"]) s.expr = need_scalar(l, "force", "a load");
+    if (l["couple"]) {
+      s.couple = need_scalar(l, "couple", "a load");
+      if (!s.couple.empty()) check_expr(names, s.couple, s.at);
+    }
+    if (!l["force"] && !l["couple"]) diags.error(s.at, "a load has neither 'force' nor 'couple'");
+    if (l["at"]) {
+      s.at_arg = l["at"].text();
+      check_arg_ref(r, s.at_arg, ArgKind::point, s.at, "a load");
+    }
+    check_arg_ref(r, s.arg, ArgKind::body, s.at, "a load");
+  }
+
+  // One of `loads`: on a body or point, along a path, or from a length sum; its expression
+  // checked (a tension along a path may use the path's length and rate of lengthening).
+  void read_load(const yaml::Node& l, Rule& r, const LocalNames& names, const LocalNames& along_names) {
+    if (!check_map(l, {"on", "along", "from_length", "force", "tension", "at", "couple", "when"}, "a load of the rule",
+                   file, diags))
+      return;
+    auto kind = which(l, {"on", "along", "from_length"}, "a load");
+    if (!kind) return;
+    LoadSpec s;
+    s.at = where(l, file);
+    s.arg = l[*kind].text();
+    if (l["when"]) {
+      s.when = l["when"].text();
+      check_when(r, s.when, s.at);
+    }
+    if (*kind == "on") {
+      read_load_on(l, r, s, names);
+    } else {
+      s.kind = *kind == "along" ? LoadSpec::Kind::along : LoadSpec::Kind::from_length;
+      s.expr = need_scalar(l, "tension", "a load");
+      check_arg_ref(r, s.arg, *kind == "along" ? ArgKind::points : ArgKind::expr, s.at, "a load");
+    }
+    if (!s.expr.empty()) {
+      if (s.kind == LoadSpec::Kind::along) {
+        for (const auto& p : parse_expression(s.expr, along_names).problems)
+          diags.error(s.at, "in '" + s.expr + "': " + p.message);
+      } else {
+        check_expr(names, s.expr, s.at);
       }
     }
+    r.loads.push_back(std::move(s));
+  }
+
+  // A constraint's kind and the arguments it names: a path's length, a length sum, a point
+  // held still, two bodies together or keeping along a direction, a body rolling.
+  void constraint_kind(const yaml::Node& c, const std::string& kind, Rule& r, ConstraintSpec& s) {
+    if (kind == "length") {
+      s.kind = ConstraintSpec::Kind::length;
+      check_arg_ref(r, s.arg, ArgKind::points, s.at, "a constraint");
+    } else if (kind == "length_sum") {
+      s.kind = ConstraintSpec::Kind::length_sum;
+      check_arg_ref(r, s.arg, ArgKind::expr, s.at, "a constraint");
+    } else if (kind == "together") {
+      s.kind = ConstraintSpec::Kind::together;
+      s.with = c["with"] ? c["with"].text() : "";
+      if (s.with.empty()) diags.error(s.at, "a 'together' constraint needs 'with' (the second body)");
+      check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
+      if (!s.with.empty()) check_arg_ref(r, s.with, ArgKind::body, s.at, "a constraint");
+    } else if (kind == "keeps") {
+      s.kind = ConstraintSpec::Kind::keeps;
+      s.with = c["with"] ? c["with"].text() : "";
+      s.along = c["along"] ? c["along"].text() : "";
+      if (s.with.empty() || s.along.empty())
+        diags.error(s.at, "a 'keeps' constraint needs 'with' (the second body) and 'along' (the direction)");
+      check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
+      if (!s.with.empty()) check_arg_ref(r, s.with, ArgKind::body, s.at, "a constraint");
+      if (!s.along.empty()) check_arg_ref(r, s.along, ArgKind::vector, s.at, "a constraint");
+    } else if (kind == "rolls") {
+      s.kind = ConstraintSpec::Kind::rolls;
+      s.point = c["at"] ? c["at"].text() : "";
+      s.with = c["along"] ? c["along"].text() : "";
+      if (s.point.empty() || s.with.empty())
+        diags.error(s.at, "a 'rolls' constraint needs 'at' (the contact point) and 'along' (the rolling direction)");
+      check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
+      if (!s.point.empty()) check_arg_ref(r, s.point, ArgKind::point, s.at, "a constraint");
+      if (!s.with.empty()) check_arg_ref(r, s.with, ArgKind::vector, s.at, "a constraint");
+    } else {
+      s.kind = ConstraintSpec::Kind::still;
+      check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
+    }
+  }
+
+  // `constraints`: each of one kind, naming the rule's arguments.
+  void read_constraints(const yaml::Node& root, Rule& r) {
     if (auto n = root["constraints"]; n && is_list(n, "'constraints'", file, diags)) {
       for (const auto& c : n) {
         if (!check_map(c, {"length", "length_sum", "still", "together", "with", "rolls", "at", "along", "keeps"},
@@ -462,47 +521,15 @@ struct RuleReader {
         ConstraintSpec s;
         s.at = where(c, file);
         s.arg = c[*kind].text();
-        if (*kind == "length") {
-          s.kind = ConstraintSpec::Kind::length;
-          check_arg_ref(r, s.arg, ArgKind::points, s.at, "a constraint");
-        } else if (*kind == "length_sum") {
-          s.kind = ConstraintSpec::Kind::length_sum;
-          check_arg_ref(r, s.arg, ArgKind::expr, s.at, "a constraint");
-        } else if (*kind == "together") {
-          s.kind = ConstraintSpec::Kind::together;
-          s.with = c["with"] ? c["with"].text() : "";
-          if (s.with.empty()) diags.error(s.at, "a 'together' constraint needs 'with' (the second body)");
-          check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
-          if (!s.with.empty()) check_arg_ref(r, s.with, ArgKind::body, s.at, "a constraint");
-        } else if (*kind == "keeps") {
-          s.kind = ConstraintSpec::Kind::keeps;
-          s.with = c["with"] ? c["with"].text() : "";
-          s.along = c["along"] ? c["along"].text() : "";
-          if (s.with.empty() || s.along.empty())
-            diags.error(s.at, "a 'keeps' constraint needs 'with' (the second body) and 'along' (the direction)");
-          check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
-          if (!s.with.empty()) check_arg_ref(r, s.with, ArgKind::body, s.at, "a constraint");
-          if (!s.along.empty()) check_arg_ref(r, s.along, ArgKind::vector, s.at, "a constraint");
-        } else if (*kind == "rolls") {
-          s.kind = ConstraintSpec::Kind::rolls;
-          s.point = c["at"] ? c["at"].text() : "";
-          s.with = c["along"] ? c["along"].text() : "";
-          if (s.point.empty() || s.with.empty())
-            diags.error(s.at,
-                        "a 'rolls' constraint needs 'at' (the contact point) and 'along' (the rolling direction)");
-          check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
-          if (!s.point.empty()) check_arg_ref(r, s.point, ArgKind::point, s.at, "a constraint");
-          if (!s.with.empty()) check_arg_ref(r, s.with, ArgKind::vector, s.at, "a constraint");
-        } else {
-          s.kind = ConstraintSpec::Kind::still;
-          check_arg_ref(r, s.arg, ArgKind::body, s.at, "a constraint");
-        }
+        constraint_kind(c, *kind, r, s);
         r.constraints.push_back(std::move(s));
       }
     }
-    // (After the arguments: a regime names them.)
-    if (auto n = root["regimes"]; n && is_list(n, "'regimes'", file, diags))
-      for (const auto& g : n) read_regime(r, g);
+  }
+
+  // `validity`: conditions in the rule's local names (and a path's length, for a rule with a
+  // force along a path), their meaning and what holds otherwise.
+  void read_validity(const yaml::Node& root, Rule& r, const LocalNames& names, const LocalNames& along_names) {
     if (auto n = root["validity"]; n && is_list(n, "'validity'", file, diags)) {
       for (const auto& v : n) {
         if (!check_map(v, {"holds", "meaning", "otherwise", "when"}, "a validity condition", file, diags)) continue;
@@ -524,37 +551,42 @@ struct RuleReader {
         r.validity.push_back(std::move(s));
       }
     }
-    if (auto n = root["checks"]; n && is_list(n, "'checks'", file, diags)) {
-      for (const auto& c : n) {
-        if (!check_map(c, {"passes_over", "positive", "steady_at", "across", "to", "when"}, "a check of the rule", file,
-                       diags))
-          continue;
-        auto kind = which(c, {"passes_over", "positive", "steady_at", "across"}, "a check");
-        if (!kind) continue;
-        const CheckSpec::Kind k = *kind == "passes_over" ? CheckSpec::Kind::passes_over
-                                  : *kind == "positive"  ? CheckSpec::Kind::positive
-                                  : *kind == "across"    ? CheckSpec::Kind::across
-                                                         : CheckSpec::Kind::steady_at;
-        CheckSpec s{k, c[*kind].text(), where(c, file), {}, {}};
-        if (k == CheckSpec::Kind::across) {
-          s.to = c["to"] ? c["to"].text() : "";
-          if (s.to.empty())
-            diags.error(s.at, "an 'across' check needs 'to' (the vector it is at right angles to)");
-          else
-            check_arg_ref(r, s.to, ArgKind::vector, s.at, "a check");
-        }
-        check_arg_ref(r, s.arg,
-                      k == CheckSpec::Kind::positive ? ArgKind::expr
-                      : k == CheckSpec::Kind::across ? ArgKind::vector
-                                                     : ArgKind::point,
-                      s.at, "a check");
-        if (c["when"]) {
-          s.when = c["when"].text();
-          check_when(r, s.when, s.at);
-        }
-        r.checks.push_back(std::move(s));
-      }
+  }
+
+  // One of `checks`: a path passing over a point, a positive value, a pulley kept steady, a
+  // vector across another.
+  void read_check(const yaml::Node& c, Rule& r) {
+    if (!check_map(c, {"passes_over", "positive", "steady_at", "across", "to", "when"}, "a check of the rule", file,
+                   diags))
+      return;
+    auto kind = which(c, {"passes_over", "positive", "steady_at", "across"}, "a check");
+    if (!kind) return;
+    const CheckSpec::Kind k = *kind == "passes_over" ? CheckSpec::Kind::passes_over
+                              : *kind == "positive"  ? CheckSpec::Kind::positive
+                              : *kind == "across"    ? CheckSpec::Kind::across
+                                                     : CheckSpec::Kind::steady_at;
+    CheckSpec s{k, c[*kind].text(), where(c, file), {}, {}};
+    if (k == CheckSpec::Kind::across) {
+      s.to = c["to"] ? c["to"].text() : "";
+      if (s.to.empty())
+        diags.error(s.at, "an 'across' check needs 'to' (the vector it is at right angles to)");
+      else
+        check_arg_ref(r, s.to, ArgKind::vector, s.at, "a check");
     }
+    check_arg_ref(r, s.arg,
+                  k == CheckSpec::Kind::positive ? ArgKind::expr
+                  : k == CheckSpec::Kind::across ? ArgKind::vector
+                                                 : ArgKind::point,
+                  s.at, "a check");
+    if (c["when"]) {
+      s.when = c["when"].text();
+      check_when(r, s.when, s.at);
+    }
+    r.checks.push_back(std::move(s));
+  }
+
+  // `assumptions`: each a sentence, or {text, when: ARG} for one that holds only when ARG is given.
+  void read_assumptions(const yaml::Node& root, Rule& r) {
     if (auto n = root["assumptions"]; n && is_list(n, "'assumptions'", file, diags)) {
       for (const auto& a : n) {
         // A sentence, or {text, when: ARG} for one that holds only when ARG is given.
@@ -571,6 +603,50 @@ struct RuleReader {
         }
       }
     }
+  }
+
+  // The rule's expressions checked in its local names: the summary's, the loads', the
+  // validity conditions'; the loads, constraints, regimes and validity read on the way.
+  void read_expressions(const yaml::Node& root, Rule& r, const std::vector<std::string>& locals) {
+    std::set<std::string> vectors;
+    for (const auto& a : r.args)
+      if (a.kind == ArgKind::vector || a.kind == ArgKind::moment || a.kind == ArgKind::point) vectors.insert(a.key);
+    LocalNames names(locals, vectors);
+    // A tension along a path may also use the path's length and its rate of lengthening.
+    std::vector<std::string> path_locals = locals;
+    path_locals.insert(path_locals.end(), {"length", "lengthening", "origin_length"});
+    LocalNames along_names(path_locals, vectors);
+    check_summary(root, r, names);
+    if (auto n = root["loads"]; n && is_list(n, "'loads'", file, diags))
+      for (const auto& l : n) read_load(l, r, names, along_names);
+    read_constraints(root, r);
+    // (After the arguments: a regime names them.)
+    if (auto n = root["regimes"]; n && is_list(n, "'regimes'", file, diags))
+      for (const auto& g : n) read_regime(r, g);
+    read_validity(root, r, names, along_names);
+  }
+
+  Rule read(const yaml::Node& root) {
+    Rule r;
+    r.at = where(root, file);
+    if (!check_map(root,
+                   {"type", "summary", "needs", "optional", "one_of", "unknowns", "loads", "constraints", "validity",
+                    "checks", "assumptions", "dimensions", "assumes_direction", "sketch", "two_bodies", "regimes"},
+                   "the rule", file, diags))
+      return r;
+    r.type = need_scalar(root, "type", "the rule");
+    read_summary(root, r);
+    read_two_bodies_and_direction(root, r);
+    read_sketch(root, r);
+    if (auto n = root["needs"]) read_args(n, true, r);
+    if (auto n = root["optional"]) read_args(n, false, r);
+    read_one_of(root, r);
+    read_dimensions(root, r);
+    const std::vector<std::string> locals = read_unknowns(root, r);
+    read_expressions(root, r, locals);
+    if (auto n = root["checks"]; n && is_list(n, "'checks'", file, diags))
+      for (const auto& c : n) read_check(c, r);
+    read_assumptions(root, r);
     return r;
   }
 };

@@ -129,152 +129,167 @@ void inertia(BuildContext& ctx, const BodyDesc& b, Body& body) {
   }
 }
 
-}  // namespace
+// The steps of reading the bodies and what they share: the number of axes and the unknown
+// accelerations (they come first among the unknowns).
+struct BodiesReader {
+  BuildContext& ctx;
+  const bool one_d;
+  std::vector<ex> accelerations;
 
-void bodies(BuildContext& ctx) {
-  const bool one_d = ctx.m.dims() == 1;
-  std::vector<ex> accelerations;  // unknown accelerations come first among the unknowns
-  for (const auto& b : ctx.d.bodies) {
-    if (!ctx.claim_place(b.name, "body")) continue;
-    Body body;
-    body.name = b.name.text;
-    body.at = b.name.at;
-    if (one_d) {
-      if (!b.position)
-        ctx.diags.error(b.at, "body '" + body.name +
-                                  "' has no 'position' (expected the name of its coordinate, e.g. x_" + body.name +
-                                  ")");
-      for (const auto* v : {&b.center_of_mass, &b.acceleration})
-        if (*v)
-          ctx.diags.error((*v)->at, "body '" + body.name +
-                                        "': 'center_of_mass' and 'acceleration' are for 2-D and 3-D problems (in 1-D, "
-                                        "'position' names the coordinate)");
-      if (b.accel_along)
-        ctx.diags.error(b.accel_along->at, "body '" + body.name + "': 'acceleration' is for 2-D and 3-D problems");
-      if (b.angle)
-        ctx.diags.error(b.angle->at,
-                        "body '" + body.name + "': 'angle' is for 2-D problems (a body turns in the plane)");
-      if (b.position && ctx.claim(*b.position, "coordinate")) {
-        const std::string q = b.position->text;
-        body.coord =
-            ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::length(), false, b.position->at).sym;
-        body.rate =
-            ctx.table
-                ->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, Dimension::velocity(), false, b.position->at)
-                .sym;
-        body.accel = ctx.table
-                         ->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, Dimension::acceleration(),
-                               false, b.position->at)
-                         .sym;
-        body.cm = {body.coord, 0, 0};
+  explicit BodiesReader(BuildContext& context) : ctx(context), one_d(context.m.dims() == 1) {}
+
+  // The coordinate `position` names, with its rate and acceleration, a length.
+  void add_position(Body& body, const Text& position) {
+    const std::string q = position.text;
+    body.coord = ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::length(), false, position.at).sym;
+    body.rate =
+        ctx.table->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, Dimension::velocity(), false, position.at).sym;
+    body.accel = ctx.table
+                     ->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, Dimension::acceleration(), false,
+                           position.at)
+                     .sym;
+  }
+
+  // In 1-D: 'position' names the coordinate, which is the center of mass; the keys for 2-D and
+  // 3-D are refused.
+  void read_1d(const BodyDesc& b, Body& body) {
+    if (!b.position)
+      ctx.diags.error(b.at, "body '" + body.name + "' has no 'position' (expected the name of its coordinate, e.g. x_" +
+                                body.name + ")");
+    for (const auto* v : {&b.center_of_mass, &b.acceleration})
+      if (*v)
+        ctx.diags.error((*v)->at, "body '" + body.name +
+                                      "': 'center_of_mass' and 'acceleration' are for 2-D and 3-D problems (in 1-D, "
+                                      "'position' names the coordinate)");
+    if (b.accel_along)
+      ctx.diags.error(b.accel_along->at, "body '" + body.name + "': 'acceleration' is for 2-D and 3-D problems");
+    if (b.angle)
+      ctx.diags.error(b.angle->at, "body '" + body.name + "': 'angle' is for 2-D problems (a body turns in the plane)");
+    if (b.position && ctx.claim(*b.position, "coordinate")) {
+      add_position(body, *b.position);
+      body.cm = {body.coord, 0, 0};
+      body.has_cm = true;
+      body.acceleration = {body.accel, 0, 0};
+      accelerations.push_back(body.accel);
+    }
+  }
+
+  // In 2-D and 3-D, a coordinate: the center of mass is written in it, and the acceleration
+  // follows (twice differentiated in time).
+  void read_position(const BodyDesc& b, Body& body) {
+    if (!b.position) return;
+    if (!b.center_of_mass)
+      ctx.diags.error(b.position->at,
+                      "body '" + body.name +
+                          "' has a 'position' but no 'center_of_mass' (expected its center of mass written in " +
+                          b.position->text + ")");
+    if (b.acceleration || b.accel_along)
+      ctx.diags.error(
+          b.position->at,
+          "body '" + body.name +
+              "' has both 'position' and 'acceleration' (its acceleration follows from its position; give one)");
+    if (ctx.claim(*b.position, "coordinate")) add_position(body, *b.position);
+  }
+
+  // An angle: the body turns in the plane (its center of mass may be written in the angle
+  // too: a pendulum's bob, a bar pinned at one end). Its coordinate into `own`.
+  void read_angle(const BodyDesc& b, Body& body, std::vector<Coordinate>& own) {
+    if (!b.angle) return;
+    if (ctx.m.dims() != 2) {
+      ctx.diags.error(b.angle->at, "body '" + body.name + "': 'angle' is for 2-D problems (a body turns in the plane)");
+    } else if (b.acceleration || b.accel_along) {
+      ctx.diags.error(
+          b.angle->at,
+          "body '" + body.name +
+              "' has both 'angle' and 'acceleration' (its acceleration follows from its coordinates; give one)");
+    } else if (ctx.claim(*b.angle, "coordinate")) {
+      const std::string q = b.angle->text;
+      const Dimension per_second{{0, 0, -1}}, per_second_squared{{0, 0, -2}};
+      body.angle = ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::none(), false, b.angle->at).sym;
+      const ex rate =
+          ctx.table->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, per_second, false, b.angle->at).sym;
+      const ex accel =
+          ctx.table
+              ->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, per_second_squared, false, b.angle->at)
+              .sym;
+      own.push_back({body.angle, rate, accel, static_cast<int>(ctx.m.bodies.size()), Coordinate::Kind::rotation});
+    }
+  }
+
+  // The center of mass, needed with an angle; written in the body's coordinate when it has one.
+  void read_center_of_mass(const BodyDesc& b, Body& body, const std::vector<Coordinate>& own) {
+    if (b.center_of_mass) {
+      if (auto cm = ctx.vector(*b.center_of_mass, *ctx.table, "'center_of_mass' of body '" + body.name + "'",
+                               Dimension::length())) {
+        body.cm = *cm;
         body.has_cm = true;
-        body.acceleration = {body.accel, 0, 0};
-        accelerations.push_back(body.accel);
       }
-    } else {
-      // A coordinate: the center of mass is written in it, and the acceleration follows
-      // (twice differentiated in time).
-      if (b.position) {
-        if (!b.center_of_mass)
-          ctx.diags.error(b.position->at,
-                          "body '" + body.name +
-                              "' has a 'position' but no 'center_of_mass' (expected its center of mass written in " +
-                              b.position->text + ")");
-        if (b.acceleration || b.accel_along)
-          ctx.diags.error(
-              b.position->at,
-              "body '" + body.name +
-                  "' has both 'position' and 'acceleration' (its acceleration follows from its position; give one)");
-        if (ctx.claim(*b.position, "coordinate")) {
-          const std::string q = b.position->text;
-          body.coord =
-              ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::length(), false, b.position->at).sym;
-          body.rate =
-              ctx.table
-                  ->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, Dimension::velocity(), false, b.position->at)
-                  .sym;
-          body.accel = ctx.table
-                           ->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, Dimension::acceleration(),
-                                 false, b.position->at)
-                           .sym;
-        }
-      }
-      // An angle: the body turns in the plane (its center of mass may be written in the angle
-      // too: a pendulum's bob, a bar pinned at one end).
-      std::vector<Coordinate> own;  // this body's coordinates
-      if (b.angle) {
-        if (ctx.m.dims() != 2) {
-          ctx.diags.error(b.angle->at,
-                          "body '" + body.name + "': 'angle' is for 2-D problems (a body turns in the plane)");
-        } else if (b.acceleration || b.accel_along) {
-          ctx.diags.error(
-              b.angle->at,
-              "body '" + body.name +
-                  "' has both 'angle' and 'acceleration' (its acceleration follows from its coordinates; give one)");
-        } else if (ctx.claim(*b.angle, "coordinate")) {
-          const std::string q = b.angle->text;
-          const Dimension per_second{{0, 0, -1}}, per_second_squared{{0, 0, -2}};
-          body.angle =
-              ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::none(), false, b.angle->at).sym;
-          const ex rate =
-              ctx.table->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, per_second, false, b.angle->at).sym;
-          const ex accel = ctx.table
-                               ->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, per_second_squared,
-                                     false, b.angle->at)
-                               .sym;
-          own.push_back({body.angle, rate, accel, static_cast<int>(ctx.m.bodies.size()), Coordinate::Kind::rotation});
-        }
-      }
-      if (b.center_of_mass) {
-        if (auto cm = ctx.vector(*b.center_of_mass, *ctx.table, "'center_of_mass' of body '" + body.name + "'",
-                                 Dimension::length())) {
-          body.cm = *cm;
-          body.has_cm = true;
-        }
-      } else if (!own.empty()) {
-        ctx.diags.error(b.angle->at, "body '" + body.name +
-                                         "' has an 'angle' but no 'center_of_mass' (expected its center of mass, "
-                                         "fixed or written in its coordinates)");
-      }
-      if (!body.coord.is_zero())
-        own.insert(own.begin(), {body.coord, body.rate, body.accel, static_cast<int>(ctx.m.bodies.size()),
-                                 Coordinate::Kind::translation});
-      if (!body.coord.is_zero() && body.has_cm) {
-        bool depends = false;
-        for (const auto& c : body.cm) depends = depends || c.has(body.coord);
-        if (!depends)
-          ctx.diags.error(b.center_of_mass->at, "'center_of_mass' of body '" + body.name +
-                                                    "' does not depend on its coordinate '" + b.position->text +
-                                                    "' (expected it written in " + b.position->text + ")");
-      }
-      if (!own.empty() && body.has_cm) {
-        // a = d2(cm)/dt2 by the chain rule on this body's coordinates (cm'' dot(q)^2 + cm'
-        // ddot(q) on a straight line; with an angle, the centripetal terms too).
-        for (int i = 0; i < 3; ++i)
-          body.acceleration[i] = time_derivative(time_derivative(body.cm[i], own, {}), own, {});
-        for (const auto& c : own) accelerations.push_back(c.accel);
-      }
-      ctx.m.coordinates.insert(ctx.m.coordinates.end(), own.begin(), own.end());
-      // (a position with an acceleration too is reported above; the position wins)
-      if (b.acceleration && !b.position) {
-        if (auto a = ctx.vector(*b.acceleration, *ctx.table, "'acceleration' of body '" + body.name + "'",
-                                Dimension::acceleration()))
-          body.acceleration = *a;
-      } else if (b.accel_along && !b.position) {
-        auto dir = ctx.vector(*b.accel_along, *ctx.table, "'along' of the acceleration of body '" + body.name + "'",
-                              std::nullopt);
-        const Text name = b.accel_name ? *b.accel_name : Text{"a_" + body.name, b.accel_along->at};
-        if (dir && is_zero_vec(*dir)) {
-          ctx.diags.error(b.accel_along->at, "the direction of motion of body '" + body.name + "' is a zero vector");
-        } else if (dir && ctx.claim(name, "acceleration")) {
-          const SymbolInfo& a =
-              ctx.table->add(name.text, std::nullopt, SymbolRole::unknown, Dimension::acceleration(), false, name.at);
-          body.accel = a.sym;
-          body.acceleration = a.sym * unit(*dir);
-          accelerations.push_back(a.sym);
-        }
+    } else if (!own.empty()) {
+      ctx.diags.error(b.angle->at, "body '" + body.name +
+                                       "' has an 'angle' but no 'center_of_mass' (expected its center of mass, "
+                                       "fixed or written in its coordinates)");
+    }
+  }
+
+  // A center of mass that does not depend on the body's coordinate is reported.
+  void check_written_in_position(const BodyDesc& b, const Body& body) {
+    if (!body.coord.is_zero() && body.has_cm) {
+      bool depends = false;
+      for (const auto& c : body.cm) depends = depends || c.has(body.coord);
+      if (!depends)
+        ctx.diags.error(b.center_of_mass->at, "'center_of_mass' of body '" + body.name +
+                                                  "' does not depend on its coordinate '" + b.position->text +
+                                                  "' (expected it written in " + b.position->text + ")");
+    }
+  }
+
+  // The acceleration given instead of a position: a vector, or a direction of motion `along`
+  // with an unknown magnitude.
+  void read_acceleration(const BodyDesc& b, Body& body) {
+    // (a position with an acceleration too is reported above; the position wins)
+    if (b.acceleration && !b.position) {
+      if (auto a = ctx.vector(*b.acceleration, *ctx.table, "'acceleration' of body '" + body.name + "'",
+                              Dimension::acceleration()))
+        body.acceleration = *a;
+    } else if (b.accel_along && !b.position) {
+      auto dir = ctx.vector(*b.accel_along, *ctx.table, "'along' of the acceleration of body '" + body.name + "'",
+                            std::nullopt);
+      const Text name = b.accel_name ? *b.accel_name : Text{"a_" + body.name, b.accel_along->at};
+      if (dir && is_zero_vec(*dir)) {
+        ctx.diags.error(b.accel_along->at, "the direction of motion of body '" + body.name + "' is a zero vector");
+      } else if (dir && ctx.claim(name, "acceleration")) {
+        const SymbolInfo& a =
+            ctx.table->add(name.text, std::nullopt, SymbolRole::unknown, Dimension::acceleration(), false, name.at);
+        body.accel = a.sym;
+        body.acceleration = a.sym * unit(*dir);
+        accelerations.push_back(a.sym);
       }
     }
+  }
+
+  // In 2-D and 3-D: the position and angle, the center of mass, the acceleration from them or
+  // as given; the body's coordinates listed.
+  void read_2d(const BodyDesc& b, Body& body) {
+    read_position(b, body);
+    std::vector<Coordinate> own;  // this body's coordinates
+    read_angle(b, body, own);
+    read_center_of_mass(b, body, own);
+    if (!body.coord.is_zero())
+      own.insert(own.begin(), {body.coord, body.rate, body.accel, static_cast<int>(ctx.m.bodies.size()),
+                               Coordinate::Kind::translation});
+    check_written_in_position(b, body);
+    if (!own.empty() && body.has_cm) {
+      // a = d2(cm)/dt2 by the chain rule on this body's coordinates (cm'' dot(q)^2 + cm'
+      // ddot(q) on a straight line; with an angle, the centripetal terms too).
+      for (int i = 0; i < 3; ++i) body.acceleration[i] = time_derivative(time_derivative(body.cm[i], own, {}), own, {});
+      for (const auto& c : own) accelerations.push_back(c.accel);
+    }
+    ctx.m.coordinates.insert(ctx.m.coordinates.end(), own.begin(), own.end());
+    read_acceleration(b, body);
+  }
+
+  // The body into the model, a point too (at its center of mass); in 1-D its coordinate listed.
+  void add(Body& body) {
     ctx.body_index[body.name] = static_cast<int>(ctx.m.bodies.size());
     ctx.point_index[body.name] = static_cast<int>(ctx.m.points.size());
     Point self;
@@ -288,11 +303,24 @@ void bodies(BuildContext& ctx) {
           {body.coord, body.rate, body.accel, static_cast<int>(ctx.m.bodies.size()), Coordinate::Kind::translation});
     ctx.m.bodies.push_back(body);
   }
-  ctx.m.candidates.insert(ctx.m.candidates.begin(), accelerations.begin(), accelerations.end());
+
+  // A body as described, when its name is free.
+  void read(const BodyDesc& b) {
+    if (!ctx.claim_place(b.name, "body")) return;
+    Body body;
+    body.name = b.name.text;
+    body.at = b.name.at;
+    if (one_d)
+      read_1d(b, body);
+    else
+      read_2d(b, body);
+    add(body);
+  }
+
   // A center of mass written in another body's coordinates too (a pendulum's bob in its
   // cart's x): its acceleration by the chain rule on every coordinate, not only its own
   // (made once every body's coordinates exist).
-  if (!one_d)
+  void accelerations_in_other_coordinates() {
     for (std::size_t i = 0; i < ctx.d.bodies.size(); ++i) {
       const auto& b = ctx.d.bodies[i];
       const auto it = ctx.body_index.find(b.name.text);
@@ -308,15 +336,11 @@ void bodies(BuildContext& ctx) {
         body.acceleration[k] =
             time_derivative(time_derivative(body.cm[k], ctx.m.coordinates, {}), ctx.m.coordinates, {});
     }
-  // Masses after every coordinate exists (a mass may not depend on them, but the message
-  // for a misused name is clearer this way).
-  for (std::size_t i = 0; i < ctx.d.bodies.size(); ++i) {
-    const auto& b = ctx.d.bodies[i];
-    auto it = ctx.body_index.find(b.name.text);
-    if (it == ctx.body_index.end()) continue;
-    Body& body = ctx.m.bodies[it->second];
-    if (b.draw_shape) draw_override(ctx, b, body);
-    if (!b.mass) continue;
+  }
+
+  // A body's mass: a mass, positive at the parameters' values, or 0 for a massless body; a
+  // body with mass needs a center of mass in 2-D and 3-D.
+  void read_mass(const BodyDesc& b, Body& body) {
     if (auto mass = ctx.parse(*b.mass, *ctx.table, "mass of body '" + body.name + "'")) {
       body.mass = *mass;
       body.has_mass = true;
@@ -336,8 +360,32 @@ void bodies(BuildContext& ctx) {
         ctx.diags.error(b.at, "body '" + body.name +
                                   "' has no 'center_of_mass' (needed for its weight and its angular momentum balance)");
     }
-    inertia(ctx, b, body);
   }
+
+  // Masses after every coordinate exists (a mass may not depend on them, but the message
+  // for a misused name is clearer this way); the drawn shape and the moment of inertia.
+  void masses() {
+    for (std::size_t i = 0; i < ctx.d.bodies.size(); ++i) {
+      const auto& b = ctx.d.bodies[i];
+      auto it = ctx.body_index.find(b.name.text);
+      if (it == ctx.body_index.end()) continue;
+      Body& body = ctx.m.bodies[it->second];
+      if (b.draw_shape) draw_override(ctx, b, body);
+      if (!b.mass) continue;
+      read_mass(b, body);
+      inertia(ctx, b, body);
+    }
+  }
+};
+
+}  // namespace
+
+void bodies(BuildContext& ctx) {
+  BodiesReader r(ctx);
+  for (const auto& b : ctx.d.bodies) r.read(b);
+  ctx.m.candidates.insert(ctx.m.candidates.begin(), r.accelerations.begin(), r.accelerations.end());
+  if (!r.one_d) r.accelerations_in_other_coordinates();
+  r.masses();
 }
 
 void points(BuildContext& ctx) {
