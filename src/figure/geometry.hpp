@@ -98,6 +98,45 @@ inline FigureOutline rectangle(V centre, V along, double w, double h) {
   return o;
 }
 
+/// v turned by a (radians, counterclockwise).
+inline V rotate(V v, double a) {
+  return {std::cos(a) * v.x - std::sin(a) * v.y, std::sin(a) * v.x + std::cos(a) * v.y};
+}
+
+/// Where the ray from p along u first reaches the outline's edge (p inside it).
+inline V leave(const FigureOutline& o, V p, V u) { return inside(o, p) ? exit_point(o, p, u) : p; }
+
+/// How far the outline reaches from p along u (0 when it does not reach past p).
+inline double reach_along(const FigureOutline& o, V p, V u) {
+  if (o.shape == FigureOutline::Shape::circle) return std::max(0.0, dot(vp(o.centre) - p, u) + o.radius);
+  double r = 0;
+  for (const auto& c : o.corners) r = std::max(r, dot(vp(c) - p, u));
+  return r;
+}
+
+/// The outline's extent along u: [lo, hi] of dot(x, u) over it.
+inline std::pair<double, double> extent_along(const FigureOutline& o, V u) {
+  if (o.shape == FigureOutline::Shape::circle)
+    return {dot(vp(o.centre), u) - o.radius, dot(vp(o.centre), u) + o.radius};
+  double lo = 1e300, hi = -1e300;
+  for (const auto& c : o.corners) {
+    lo = std::min(lo, dot(vp(c), u));
+    hi = std::max(hi, dot(vp(c), u));
+  }
+  return {lo, hi};
+}
+
+/// An arc of radius r about c from angle a0 to a1 (radians, counterclockwise when a1 > a0).
+inline std::vector<FigurePoint> arc(V c, double r, double a0, double a1) {
+  std::vector<FigurePoint> out;
+  const int n = std::max(2, static_cast<int>(std::fabs(a1 - a0) / 0.15) + 1);
+  for (int i = 0; i <= n; ++i) {
+    const double a = a0 + (a1 - a0) * i / n;
+    out.push_back(fp(c + r * V{std::cos(a), std::sin(a)}));
+  }
+  return out;
+}
+
 struct Box {
   V c;
   double w, h;

@@ -28,42 +28,6 @@ constexpr double surface_margin = 0.6;  // the ground beyond the bodies on it
 constexpr double lane = 0.3;            // a spring and a damper side by side, this far apart
 constexpr V down{0, -1};                // down the page (gravity's way)
 
-V rotate(V v, double a) { return {std::cos(a) * v.x - std::sin(a) * v.y, std::sin(a) * v.x + std::cos(a) * v.y}; }
-
-// Where the ray from p along u first reaches the outline's edge (p inside it).
-V leave(const FigureOutline& o, V p, V u) { return inside(o, p) ? exit_point(o, p, u) : p; }
-
-// How far the outline reaches from p along u (0 when it does not reach past p).
-double reach_along(const FigureOutline& o, V p, V u) {
-  if (o.shape == FigureOutline::Shape::circle) return std::max(0.0, dot(vp(o.centre) - p, u) + o.radius);
-  double r = 0;
-  for (const auto& c : o.corners) r = std::max(r, dot(vp(c) - p, u));
-  return r;
-}
-
-// The outline's extent along u: [lo, hi] of dot(x, u) over it.
-std::pair<double, double> extent_along(const FigureOutline& o, V u) {
-  if (o.shape == FigureOutline::Shape::circle)
-    return {dot(vp(o.centre), u) - o.radius, dot(vp(o.centre), u) + o.radius};
-  double lo = 1e300, hi = -1e300;
-  for (const auto& c : o.corners) {
-    lo = std::min(lo, dot(vp(c), u));
-    hi = std::max(hi, dot(vp(c), u));
-  }
-  return {lo, hi};
-}
-
-// An arc of radius r about c from angle a0 to a1 (radians, counterclockwise when a1 > a0).
-std::vector<FigurePoint> arc(V c, double r, double a0, double a1) {
-  std::vector<FigurePoint> out;
-  const int n = std::max(2, static_cast<int>(std::fabs(a1 - a0) / 0.15) + 1);
-  for (int i = 0; i <= n; ++i) {
-    const double a = a0 + (a1 - a0) * i / n;
-    out.push_back(fp(c + r * V{std::cos(a), std::sin(a)}));
-  }
-  return out;
-}
-
 // A ground surface: the line of points x with dot(x, n) = offset, from lo to hi along
 // t = perp(n); the ground is on the side away from n.
 struct Surface {

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The project's style, kept: every C++ source as .clang-format formats it, and no function in
-src/ too long to read at once (Universal Ctags' count: none over 150 lines, at most 8 over 100).
+src/ too long to read at once (Universal Ctags' count: none over 150 lines, at most 8 over 100),
+no source file in src/ over 800 lines.
 Exits 77 (skipped) when clang-format or Universal Ctags is not installed."""
 import pathlib
 import shutil
@@ -9,6 +10,7 @@ import sys
 
 root = pathlib.Path(sys.argv[1])
 LONGEST, LONG, MOST_LONG = 150, 100, 8
+LONGEST_FILE = 800
 
 
 def sources(*folders):
@@ -54,6 +56,11 @@ def main():
         print(f"{len(long)} functions are over {LONG} lines (at most {MOST_LONG}): "
               + ", ".join(f"{name} {n}" for n, _, name in long))
         failed = True
+    for f in sources("src"):
+        n = sum(1 for _ in open(f, encoding="utf-8"))
+        if n > LONGEST_FILE:
+            print(f"{f}: {n} lines (at most {LONGEST_FILE} in a file)")
+            failed = True
     print(f"{len(lengths)} functions; the longest {lengths[0][2]} ({lengths[0][0]} lines); {len(long)} over {LONG}")
     return 1 if failed else 0
 
