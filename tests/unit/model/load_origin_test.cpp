@@ -84,7 +84,8 @@ TEST_CASE("Load origin: a strand's, a weight's, an applied force's and a sliding
   }
 }
 
-TEST_CASE("Load origin: a connection's length sum keeps its body in its key; a couple's phrase", "[model][load]") {
+TEST_CASE("Load origin: a connection's length sum keeps its body in its key, and a couple's phrase is its own",
+          "[model][load]") {
   const LoadOrigin string = connection_origin("string s", "string");
   const LoadOrigin on_a = length_sum_origin(string, "A");
   CHECK(sentence(on_a) == "string s (from its length sum) on A");
