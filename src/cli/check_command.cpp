@@ -21,6 +21,118 @@ namespace tackle::cli {
 
 namespace {
 
+// check: what is checked (an answer, an equation, a worked solution, a free body diagram, a
+// batch); the options usage rules read are kept in `c`, and the unknown's is returned.
+CLI::Option* define_check_inputs(CLI::App* sub, Options& o, Commands& c) {
+  CLI::Option* unknown = nullptr;
+  sub->add_option("file", o.file, "Problem description (YAML)")->required();
+  unknown = sub->add_option("--unknown", o.unknown, "The unknown the answer is for, e.g. T_HI");
+  c.answer = sub->add_option("--answer", o.answer, "The answer: an expression, 'T = ...', or a number with a unit");
+  c.equation =
+      sub->add_option("--equation", o.equation,
+                      "An equation the student wrote, e.g. '2*T - F = m_A*ddot(x_A)': is it one of the balances and "
+                      "constraints, or does it follow from them?")
+          ->each([&](const std::string&) { o.equation_given = true; });
+  c.steps = sub->add_option("--steps", o.steps,
+                            "A worked solution (YAML: steps: [{fbd: ...}, {equation: ...}, {answer: ..., "
+                            "unknown: T}]) graded as a whole: "
+                            "each step, the equations used and missing, the first wrong step, a score");
+  c.fbd = sub->add_option(
+      "--fbd", o.fbd,
+      "A free body diagram the student drew (YAML: body: B, forces: [{name: T, at: pB, direction: [-1]}]): "
+      "each force drawn, missing, extra or the wrong way, and a score");
+  sub->add_option("--rubric", o.rubric,
+                  "With --steps or --fbd: points for FBDs, balances, constraints and answers, what a wrong "
+                  "step costs, and how an FBD is scored (YAML)");
+  c.batch = sub->add_option(
+      "--batch", o.batch,
+      "JSON Lines file of {\"id\", \"unknown\", \"answer\"}, {\"id\", \"equation\"} or {\"id\", \"fbd\"} "
+      "(- for standard input)");
+  return unknown;
+}
+
+// check: what a batch or a worked solution writes besides its lines (results for a grading
+// platform, a gradebook) and how it is graded (jobs, points).
+void define_check_grading(CLI::App* sub, Options& o, const Commands& c) {
+  auto* results_opt =
+      sub->add_option("--results", o.results, "With --batch or --steps: also write a grading platform's results file");
+  sub->add_option("--results-format", o.results_format, "The results file's platform")
+      ->check(CLI::IsMember({"gradescope", "prairielearn", "jsonl"}))
+      ->capture_default_str()
+      ->needs(results_opt);
+  auto* gradebook_opt =
+      sub->add_option("--gradebook", o.gradebook,
+                      "With --batch: also write the class's gradebook (CSV): a row per line's \"student\", "
+                      "a column per question \"id\", the points and the total");
+  sub->add_option("--gradebook-format", o.gradebook_format,
+                  "The gradebook's layout: a spreadsheet's, or Canvas's or Moodle's grade import")
+      ->check(CLI::IsMember({"plain", "canvas", "moodle"}))
+      ->capture_default_str()
+      ->needs(gradebook_opt);
+  sub->add_option("--jobs", o.jobs,
+                  "With --batch: grade with N processes side by side (0: one per core); the results are the "
+                  "same, in the batch's order")
+      ->check(CLI::Range(0, 256))
+      ->capture_default_str()
+      ->needs(c.batch);
+  sub->add_option("--points", o.points_text,
+                  "Points for each answer (N), or for one unknown's answers (NAME=N); repeatable")
+      ->needs(c.batch);
+  sub->add_flag("--top-level-score", o.top_level_score,
+                "Gradescope: also write the total as the top-level score "
+                "(it overrides the tests' sum)")
+      ->needs(results_opt);
+}
+
+// check: the numbers (a student's own values, tolerance, figures, seed, time) and the output.
+void define_check_numbers(CLI::App* sub, Options& o) {
+  sub->add_option("--set", o.set_values,
+                  "A parameter's value for this check, in its stated unit (NAME=VALUE, repeatable): "
+                  "a student's own variant");
+  sub->add_flag("--reveal", o.reveal, "Name the correct value in the feedback (never, without it)");
+  sub->add_option("--tolerance", o.tolerance, "Relative tolerance for numbers with units")
+      ->check(finite_number)
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  sub->add_option("--sig-figs", o.sig_figs,
+                  "Instead of the tolerance: numbers must match to this many significant figures")
+      ->check(CLI::Range(1, 15));
+  sub->add_option("--seed", o.seed,
+                  "Draw the check's own random points from this seed (reproducible tests only: "
+                  "a student who knows the points can build a wrong answer that passes)")
+      ->check(seed_number)
+      ->each([&](const std::string&) { o.seeded = true; });
+  sub->add_option("--time-budget", o.time_budget_ms,
+                  "Milliseconds to check one answer in; past them it is undecided (code budget). A slow or busy "
+                  "machine may need more")
+      ->check(CLI::Range(1, 600000))
+      ->capture_default_str();
+  sub->add_flag("--require-simplified", o.require_simplified, "A correct answer that is not simplified is incorrect");
+  sub->add_flag("--no-latex", o.no_latex, "Do not echo answers in LaTeX (faster batches)");
+  sub->add_option("--format", o.format, "Output format (single answers)")
+      ->check(CLI::IsMember({"text", "json"}))
+      ->capture_default_str();
+  sub->add_option("-o,--output", o.out, "Write to this file instead of standard output");
+  with_phase(sub, o);
+}
+
+// check: its options, then which need or exclude which.
+}  // namespace
+
+void define_check(CLI::App* sub, Options& o, Commands& c) {
+  CLI::Option* unknown = define_check_inputs(sub, o, c);
+  define_check_grading(sub, o, c);
+  define_check_numbers(sub, o);
+  c.answer->needs(unknown);
+  unknown->needs(c.answer);
+  c.batch->excludes(c.answer);
+  c.equation->excludes(c.answer)->excludes(c.batch)->excludes(unknown);
+  c.steps->excludes(c.answer)->excludes(c.batch)->excludes(unknown)->excludes(c.equation);
+  c.fbd->excludes(c.answer)->excludes(c.batch)->excludes(unknown)->excludes(c.equation)->excludes(c.steps);
+}
+
+namespace {
+
 using Values = std::vector<std::pair<std::string, std::string>>;
 
 // The checker's options, as the command line gave them.

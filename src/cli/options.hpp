@@ -54,6 +54,17 @@ struct Commands {
   CLI::Option *answer = nullptr, *batch = nullptr, *equation = nullptr, *steps = nullptr, *fbd = nullptr;
 };
 
+/// CLI11's ranges let NaN through and its unsigned conversion wraps -1: a finite number, and a
+/// seed (a whole number from 0 to 2^64 - 1), checked as text first.
+extern const CLI::Validator finite_number, seed_number;
+
+/// --phase, of every command that analyzes one description.
+void with_phase(CLI::App* sub, Options& o);
+
+/// check's options (check_command.cpp, beside the command's run: a new kind of check is its
+/// option and its run there); those the usage rules read are kept in `c`.
+void define_check(CLI::App* sub, Options& o, Commands& c);
+
 /// Makes every subcommand on `app` and defines the options of the one `asked` names (all of
 /// them when it names none, as for --help), reading into `o`.
 [[nodiscard]] Commands define_commands(CLI::App& app, Options& o, const std::string& asked);
