@@ -10,6 +10,7 @@
 #include "expr/parse.hpp"
 #include "expr/print.hpp"
 #include "expr/rational.hpp"
+#include "model/kinematics.hpp"
 #include "core/units.hpp"
 
 namespace tackle {
@@ -167,7 +168,8 @@ bool combined_matches(const Truth& truth, const Rows& a, const numeric& x, const
 
 EquationChecker::EquationChecker(const Analysis& analysis, const CheckOptions& options)
     : options_(options), symbols_(analysis.model.symbols), definitions_(analysis.model.symbols->definitions(true)) {
-  for (const auto& b : analysis.model.bodies) bodies_.push_back({b.name, b.has_mass ? b.mass : ex(0), b.accel});
+  for (const auto& b : analysis.model.bodies)
+    bodies_.push_back({b.name, b.has_mass ? b.mass : ex(0), kinematics::acceleration_symbol(analysis.model, b)});
   // The quantities the problem defines (`find: [{t_stop: ...}]`): a name of their own, their
   // definition put in before deciding.
   for (const auto& w : analysis.model.wanted) {

@@ -30,18 +30,18 @@ PowerCheck check_power(const Model& m, const EquationSystem& s, const Solution& 
     if (const auto v = kinematics::velocity(m, b)) {
       velocity[i] = *v;
       moving = true;
-    } else if (!is_zero_vec(b.acceleration)) {
+    } else if (!is_zero_vec(b.given_acceleration)) {
       // Straight-line motion: the velocity is along the acceleration, a signed speed v_B
       // along the one axis it has, or along the vector itself.
       int nonzero = 0, axis = 0;
       for (int k = 0; k < 3; ++k)
-        if (!b.acceleration[k].is_zero()) ++nonzero, axis = k;
+        if (!b.given_acceleration[k].is_zero()) ++nonzero, axis = k;
       const symbol v("v_" + b.name, "v_{" + b.name + "}");
       c.speeds.push_back(v);
       if (nonzero == 1)
         velocity[i][axis] = v;
       else
-        velocity[i] = v * b.acceleration;
+        velocity[i] = v * b.given_acceleration;
       moving = true;
     }
   }

@@ -49,7 +49,7 @@ Equation lmb_along(const Model& m, const std::vector<int>& bodies, bool system, 
     eq.origins.push_back(l.origin);
     sum += f;
   }
-  for (int b : bodies) rhs += m.bodies[b].mass * inner(m.bodies[b].acceleration, direction);
+  for (int b : bodies) rhs += inner(kinematics::momentum_rate(m, m.bodies[b]), direction);
   eq.lhs = sum;  // forces internal to a system cancel here
   eq.rhs = rhs.expand();
   return eq;
@@ -252,10 +252,10 @@ struct EquationBuilder {
     if (m.interval)
       for (const auto& c : m.interval->changes) {
         if (!c.to) continue;  // its end is found after the solve (motion/interval)
-        const Body& b = m.bodies[c.body];
+        const Coordinate& b = *kinematics::translation(m, m.bodies[c.body]);  // (a body whose rate is given has one)
         Equation eq;
         eq.kind = Equation::Kind::interval;
-        eq.label = "interval: " + to_text(b.coord);
+        eq.label = "interval: " + to_text(b.q);
         if (m.interval->duration) {
           eq.lhs = b.accel * *m.interval->duration;
           eq.rhs = *c.to - c.from;
@@ -291,8 +291,9 @@ struct EquationBuilder {
   // the problem is refused: a balance through a turning strand is not solved for it).
   void balance_coordinates_held() {
     for (const auto& q : balance_coordinates(m)) {
-      const auto body =
-          std::find_if(m.bodies.begin(), m.bodies.end(), [&](const Body& b) { return b.coord.is_equal(q); });
+      const auto coordinate = std::find_if(m.coordinates.begin(), m.coordinates.end(),
+                                           [&](const Coordinate& c) { return c.q.is_equal(q); });
+      const Body* body = &m.bodies[coordinate->body];
       for (const auto& r : residuals)
         if (m.symbols->hidden_in_lengths(r, q))
           throw InputError(

@@ -10,6 +10,7 @@
 #include "figure/figure.hpp"
 #include "figure/geometry.hpp"
 #include "model/forces.hpp"
+#include "model/kinematics.hpp"
 #include "numeric/layout.hpp"
 
 namespace tackle {
@@ -184,10 +185,11 @@ struct FbdDraw {
   void inertial(std::size_t i) {
     const int bi = bodies[i];
     const Body& b = m.bodies[bi];
-    if (b.has_mass && !b.mass.is_zero() && !is_zero_vec(b.acceleration)) {
+    const Vec a = kinematics::acceleration(m, b);
+    if (b.has_mass && !b.mass.is_zero() && !is_zero_vec(a)) {
       std::optional<std::array<double, 3>> at;
       if (proj.dims > 1 && b.has_cm) at = point3(b.cm);
-      decompose(bi, b.acceleration, at, b.mass, true, true);
+      decompose(bi, a, at, b.mass, true, true);
     }
     if (proj.dims == 2 && !b.angle.is_zero() && !b.inertia.is_zero()) {
       const auto q = std::find_if(m.coordinates.begin(), m.coordinates.end(),
@@ -487,14 +489,15 @@ struct BodyShape {
   // unknown in it, or the given vector (along x where it cannot be evaluated).
   V acceleration_way() const {
     V way{1, 0};
+    const Vec acceleration = kinematics::acceleration(m, b);
     std::optional<ex> u;
     for (const ex& c : m.candidates)
       for (int k = 0; k < m.dims() && !u; ++k)
-        if (b.acceleration[k].has(c)) u = c;
+        if (acceleration[k].has(c)) u = c;
     std::array<double, 3> a{0, 0, 0};
     bool ok = true;
     for (int k = 0; k < m.dims(); ++k) {
-      const ex ak = u ? b.acceleration[k].expand().coeff(*u, 1) : b.acceleration[k];
+      const ex ak = u ? acceleration[k].expand().coeff(*u, 1) : acceleration[k];
       auto v = num(ak);
       if (!v)
         ok = false;

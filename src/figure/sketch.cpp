@@ -111,7 +111,7 @@ struct LineSketch {
       if (d.as == "support" && d.body >= 0) supported.insert(d.body);
     }
     for (std::size_t b = 0; b < m.bodies.size(); ++b) {
-      body_pos[b] = num(m.bodies[b].has_cm ? m.bodies[b].cm[0] : m.bodies[b].coord);
+      body_pos[b] = num(m.bodies[b].cm[0]);
       if (!body_pos[b]) return false;
       if (massive(m.bodies[b])) used.push_back(*body_pos[b]);
     }

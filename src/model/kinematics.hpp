@@ -12,6 +12,19 @@
 
 namespace tackle::kinematics {
 
+/// The body's translation coordinate (x_A, s) with its rate and acceleration, from the
+/// model's coordinates; nothing for a body that has none (it only turns, is still, or has its
+/// acceleration given).
+[[nodiscard]] const Coordinate* translation(const Model& m, const Body& b);
+
+/// The acceleration of the body's center of mass, a_G = d^2 r_G/dt^2 by the chain rule on the
+/// model's coordinates (1-D: ddot(x_A)); for a body with no coordinate, as given.
+[[nodiscard]] Vec acceleration(const Model& m, const Body& b);
+
+/// The symbol of the body's acceleration: its translation coordinate's, ddot(x_A), or the
+/// unknown magnitude along its given line, a_B; 0 when it has neither.
+[[nodiscard]] GiNaC::ex acceleration_symbol(const Model& m, const Body& b);
+
 /// The velocity of the body's center of mass in the coordinates' rates (1-D: its rate);
 /// nothing for a body with no coordinate (at rest, or with only its acceleration given).
 /// `b` is one of `m.bodies`.
@@ -26,8 +39,8 @@ namespace tackle::kinematics {
 /// axes): v + omega x r.
 [[nodiscard]] std::optional<Vec> point_velocity(const Model& m, const Body& b, const Vec& offset);
 
-/// The rate of change of the body's linear momentum, m a.
-[[nodiscard]] Vec momentum_rate(const Body& b);
+/// The rate of change of the body's linear momentum, m a_G.
+[[nodiscard]] Vec momentum_rate(const Model& m, const Body& b);
 
 /// The rate of change of the body's angular momentum about the point `about` (fixed, or the
 /// center of mass): r_G/about x m a + I alpha (about the plane's normal).

@@ -22,12 +22,13 @@ std::unordered_set<ex, ExHash, ex_is_equal> symbols_asked(const std::vector<Want
 
 std::vector<ex> balance_coordinates(const Model& m, const SymbolTable& table) {
   std::vector<ex> out;
-  for (const auto& b : m.bodies) {
-    if (!b.has_mass || !b.mass.is_zero() || b.coord.is_zero() || contains(m.given, b.coord)) continue;
+  for (const auto& q : m.coordinates) {  // (in body order)
+    const Body& b = m.bodies[q.body];
+    if (q.kind != Coordinate::Kind::translation || !b.has_mass || !b.mass.is_zero() || contains(m.given, q.q)) continue;
     const bool tied = std::any_of(m.constraints.begin(), m.constraints.end(), [&](const Constraint& c) {
-      return c.quantity.has(b.coord) || table.hidden_in_lengths(c.quantity, b.coord);
+      return c.quantity.has(q.q) || table.hidden_in_lengths(c.quantity, q.q);
     });
-    if (!tied) out.push_back(b.coord);
+    if (!tied) out.push_back(q.q);
   }
   return out;
 }

@@ -28,20 +28,23 @@ struct Coordinate {
 };
 
 /// A body: its pose (the center of mass, and an angle: 0 for a body that only translates),
-/// its mass and its moment of inertia about its center (about the plane's normal). What
-/// follows from them (velocities, momenta, kinetic energy, power) is in model/kinematics.hpp.
+/// its mass and its moment of inertia about its center (about the plane's normal). Its
+/// coordinates are the model's (`Model::coordinates`, with their body); what follows from
+/// them (its translation coordinate, accelerations, velocities, momenta, kinetic energy,
+/// power) is in model/kinematics.hpp.
 struct Body {
   std::string name;
   GiNaC::ex mass;  // 0 for an ideal pulley block
   bool has_mass = false;
-  GiNaC::ex coord;      // its translation coordinate, x_A or s (0 when it has none)
-  GiNaC::ex rate;       // dot(x_A)
-  GiNaC::ex accel;      // ddot(x_A), or the unknown acceleration along a given line
-  Vec cm = zero_vec();  // center of mass (1-D: the coordinate)
+  Vec cm = zero_vec();  // center of mass, written in the model's coordinates (1-D: the coordinate)
   bool has_cm = false;
-  GiNaC::ex angle = 0;            // 0: the body only translates
-  GiNaC::ex inertia = 0;          // about the center of mass
-  Vec acceleration = zero_vec();  // of the center of mass (of every point, while it only translates)
+  GiNaC::ex angle = 0;    // 0: the body only translates
+  GiNaC::ex inertia = 0;  // about the center of mass
+  // The acceleration as the description gives it, for a body with no coordinate: a vector
+  // (`acceleration:`), or `along` times an unknown magnitude `along_unknown` (a_B). Zero for a
+  // body with coordinates: theirs is kinematics::acceleration, from the model's coordinates.
+  Vec given_acceleration = zero_vec();
+  GiNaC::ex along_unknown = 0;
   // How the free body diagram draws it (`draw:`, else its `shape`): "" (from its points),
   // "rectangle" (size: width, height), "circle" (size: diameter) or "rod" (size: length),
   // centred on its center of mass and turned by its angle.

@@ -140,7 +140,7 @@ std::string against_at_start(const Model& m, const Solution& sol, const Dependen
     const bool turning = !b.angle.is_zero() && l.at;
     const auto velocity = turning ? kinematics::point_velocity(m, b, *l.at - b.cm) : kinematics::velocity(m, b);
     if (!velocity) continue;
-    Vec acceleration = b.acceleration;
+    Vec acceleration = kinematics::acceleration(m, b);
     if (turning)
       for (int k = 0; k < 3; ++k) acceleration[k] = time_derivative((*velocity)[k], m);
     double fv = 0, fa = 0, ff = 0, vv = 0, aa = 0;

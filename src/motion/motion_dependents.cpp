@@ -32,11 +32,11 @@ void add_balance_coordinates(Dependents& d, const Model& m, const Solution& sol)
     if (!v) continue;  // the solve did not give it: what needs it says so
     const ex value = d.coords.empty() ? *v : substituted(*v, d.coords);
     d.coords[q] = value;
-    const auto body =
-        std::find_if(m.bodies.begin(), m.bodies.end(), [&](const Body& b) { return b.coord.is_equal(q); });
+    const auto coordinate =
+        std::find_if(m.coordinates.begin(), m.coordinates.end(), [&](const Coordinate& c) { return c.q.is_equal(q); });
     ex rate = time_derivative(value, m);
     if (!d.rates.empty()) rate = substituted(rate, d.rates);
-    d.rates[body->rate] = rate;
+    d.rates[coordinate->rate] = rate;
   }
 }
 

@@ -1,6 +1,7 @@
 #include "motion/phases.hpp"
 
 #include "expr/print.hpp"
+#include "model/kinematics.hpp"
 #include "numeric/evaluate.hpp"
 
 namespace tackle {
@@ -33,9 +34,10 @@ IntervalEnd interval_end(const Model& m, const Solution& sol) {
   const SymbolTable& table = *m.symbols;
   for (const auto& c : iv.changes) {
     const Body& b = m.bodies[c.body];
+    const Coordinate& q = *kinematics::translation(m, b);  // (a body whose rate is given has one)
     IntervalEnd::Rate r;
     r.body = c.body;
-    r.rate = b.rate;
+    r.rate = q.rate;
     r.from = c.from;
     if (c.to) {
       r.value = *c.to;
@@ -43,14 +45,14 @@ IntervalEnd interval_end(const Model& m, const Solution& sol) {
       out.rates.push_back(r);
       continue;
     }
-    const auto a = sol.value_of(b.accel);
+    const auto a = sol.value_of(q.accel);
     if (!a) {
       out.problem =
-          "the end of " + to_text(b.rate) + " needs " + to_text(b.accel) + ", which the equations do not determine";
+          "the end of " + to_text(q.rate) + " needs " + to_text(q.accel) + ", which the equations do not determine";
       return out;
     }
     if (auto other = not_a_parameter(*a, table)) {
-      out.problem = "the end of " + to_text(b.rate) + " needs a constant " + to_text(b.accel) + ", and it is " +
+      out.problem = "the end of " + to_text(q.rate) + " needs a constant " + to_text(q.accel) + ", and it is " +
                     to_text(*a) + " (it depends on " + to_text(*other) + ")";
       return out;
     }
@@ -63,7 +65,7 @@ IntervalEnd interval_end(const Model& m, const Solution& sol) {
       const ex s = *iv.distance;
       const auto s_positive = positive(s, false, table), s_negative = positive(-s, false, table);
       if (!s_positive.value_or(false) && !s_negative.value_or(false)) {
-        out.problem = "the end of " + to_text(b.rate) + " takes the sign of the distance " + to_text(s) +
+        out.problem = "the end of " + to_text(q.rate) + " takes the sign of the distance " + to_text(s) +
                       ", which is not known (expected a distance of known sign)";
         return out;
       }
@@ -82,8 +84,8 @@ IntervalEnd interval_end(const Model& m, const Solution& sol) {
       if (reached && (moving || pushed))
         r.reaches_holds = *reached && (moving.value_or(false) || pushed.value_or(false));
       if (r.reaches_holds && !*r.reaches_holds) {
-        out.problem = "body '" + b.name + "' never moves by " + to_text(s) + " (it starts with " + to_text(b.rate) +
-                      " = " + to_text(c.from) + " and has " + to_text(b.accel) + " = " + to_text(*a) +
+        out.problem = "body '" + b.name + "' never moves by " + to_text(s) + " (it starts with " + to_text(q.rate) +
+                      " = " + to_text(c.from) + " and has " + to_text(q.accel) + " = " + to_text(*a) +
                       "; expected it to reach the end of the interval)";
         return out;
       }
@@ -105,28 +107,31 @@ ImpactResult analyze_impact(const Model& m) {
   std::vector<ex> unknowns;
   for (const auto& bf : im.before) {
     const Body& b = m.bodies[bf.body];
-    momentum.lhs += b.mass * b.rate;
+    const ex& rate = kinematics::translation(m, b)->rate;  // (each body of an impact has one)
+    momentum.lhs += b.mass * rate;
     momentum.rhs += b.mass * bf.rate;
     momentum.sources.push_back(b.name + " after");
-    momentum.terms.push_back(b.mass * b.rate);
+    momentum.terms.push_back(b.mass * rate);
     out.energy_before += b.mass * pow(bf.rate, 2) / 2;
-    unknowns.push_back(b.rate);
+    unknowns.push_back(rate);
   }
   out.equations.push_back(momentum);
   const Body& first = m.bodies[im.before.front().body];
+  const ex& first_rate = kinematics::translation(m, first)->rate;
   for (std::size_t i = 1; i < im.before.size(); ++i) {
     const Body& b = m.bodies[im.before[i].body];
+    const ex& rate = kinematics::translation(m, b)->rate;
     Equation e;
     e.kind = Equation::Kind::impact;
     if (im.restitution) {
       e.label = "restitution";
-      e.lhs = b.rate - first.rate;
+      e.lhs = rate - first_rate;
       e.rhs = -*im.restitution * (im.before[i].rate - im.before.front().rate);
       e.sources = {"the rate of separation after is -e times the rate of separation before"};
     } else {
       e.label = "plastic: " + b.name + " moves with " + first.name;
-      e.lhs = b.rate;
-      e.rhs = first.rate;
+      e.lhs = rate;
+      e.rhs = first_rate;
       e.sources = {"the bodies stick together"};
     }
     e.terms = {e.lhs};
@@ -135,11 +140,12 @@ ImpactResult analyze_impact(const Model& m) {
   const Solution sol = solve_equations(m.file, out.equations, unknowns);
   for (const auto& bf : im.before) {
     const Body& b = m.bodies[bf.body];
-    const auto v = sol.value_of(b.rate);
-    if (!v) throw InternalError("the impact's rate " + to_text(b.rate) + " after it is not determined");
+    const ex& rate = kinematics::translation(m, b)->rate;  // (each body of an impact has one)
+    const auto v = sol.value_of(rate);
+    if (!v) throw InternalError("the impact's rate " + to_text(rate) + " after it is not determined");
     ImpactResult::After a;
     a.body = bf.body;
-    a.rate = b.rate;
+    a.rate = rate;
     a.before = bf.rate;
     a.after = simplest(*v);
     a.impulse_symbol = bf.impulse;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "expr/print.hpp"
+#include "model/kinematics.hpp"
 #include "report/narrator.hpp"
 
 namespace tackle {
@@ -43,7 +44,7 @@ void narrate_interval_end(Derivation& d, const Model& m, const IntervalEnd& end,
   n.section("End of the interval");
   for (const auto& r : end.rates) {
     if (r.given) continue;
-    const Body& b = m.bodies[r.body];
+    const Coordinate& b = *kinematics::translation(m, m.bodies[r.body]);  // (a body whose rate is given has one)
     if (m.interval->duration) {
       n.text_with(
           "With {} constant, the rate at the end is the rate at the start plus the acceleration times the duration:",
@@ -52,9 +53,8 @@ void narrate_interval_end(Derivation& d, const Model& m, const IntervalEnd& end,
       answer(d, n, table, r.rate, r.value, Dimension::velocity(), options, "at the end of the interval");
       if (r.displacement) {
         n.text("Over the duration the body moves by");
-        Step* st =
-            n.equation("displacement over the interval",
-                       symbol("Delta " + to_text(b.coord), "\\Delta " + table.find(b.coord)->tex), *r.displacement);
+        Step* st = n.equation("displacement over the interval",
+                              symbol("Delta " + to_text(b.q), "\\Delta " + table.find(b.q)->tex), *r.displacement);
         st->note = with_unit(evaluate(*r.displacement, table, Dimension::length(), options.digits));
       }
     } else {
@@ -85,7 +85,7 @@ void narrate_impact(Derivation& d, const Model& m, const ImpactResult& r, const 
   std::vector<ex> math;
   for (const auto& b : m.impact->before) {
     rates_before += std::string(rates_before.empty() ? "" : ", ") + "{} = {}";
-    math.push_back(m.bodies[b.body].rate);
+    math.push_back(kinematics::translation(m, m.bodies[b.body])->rate);
     math.push_back(b.rate);
   }
   n.text_with("Just before: " + rates_before + ".", math);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "expr/print.hpp"
+#include "model/kinematics.hpp"
 #include "report/html.hpp"
 #include "report/sheet.hpp"
 
@@ -332,7 +333,8 @@ std::string equation_hint(const Derivation& d, const Model& m) {
     bool plain = e.rhs.is_zero();
     if (e.bodies.size() == 1 && !e.system) {
       const Body& b = m.bodies[static_cast<std::size_t>(e.bodies.front())];
-      plain = plain || (GiNaC::is_a<GiNaC::symbol>(b.accel) && (e.rhs - b.mass * b.accel).expand().is_zero());
+      const GiNaC::ex a = kinematics::acceleration_symbol(m, b);
+      plain = plain || (GiNaC::is_a<GiNaC::symbol>(a) && (e.rhs - b.mass * a).expand().is_zero());
     }
     return e.label + ": ... = " + (plain ? to_text(e.rhs) : std::string("..."));
   }
@@ -413,8 +415,8 @@ std::string step_page(const Derivation& d, const Model& m, const std::string& en
     if ((p.kind == "parameter" || p.kind == "given") && std::find(names.begin(), names.end(), p.name) == names.end())
       names.push_back(p.name);
   for (const auto& u : d.unknowns) name_of(u);
-  for (const auto& b : m.bodies)
-    if (!b.coord.is_zero()) name_of(b.coord);
+  for (const auto& q : m.coordinates)
+    if (q.kind == Coordinate::Kind::translation) name_of(q.q);
   std::string typed;
   for (const auto& n : names) typed += (typed.empty() ? "" : ", ") + std::string("<code>") + html_escape(n) + "</code>";
 
@@ -427,11 +429,10 @@ std::string step_page(const Derivation& d, const Model& m, const std::string& en
                                       "positions) or its derivatives";
   // Rates and accelerations, shown on the problem's own first coordinate.
   std::string rates;
-  for (const auto& b : m.bodies)
-    for (const GiNaC::ex& q : {b.coord, b.angle})
-      if (const SymbolInfo* s = m.symbols && !q.is_zero() ? m.symbols->find(q) : nullptr; s && rates.empty())
-        rates = "; <code>dot(" + html_escape(s->name) + ")</code> and <code>ddot(" + html_escape(s->name) +
-                ")</code> for its rate and acceleration";
+  for (const auto& q : m.coordinates)  // (in body order, a body's position before its angle)
+    if (const SymbolInfo* s = m.symbols ? m.symbols->find(q.q) : nullptr; s && rates.empty())
+      rates = "; <code>dot(" + html_escape(s->name) + ")</code> and <code>ddot(" + html_escape(s->name) +
+              ")</code> for its rate and acceleration";
   body += "<p class=\"names\">Write each step as you would on paper, one a line: an equation (" + equations +
           "), a final answer, or a free body diagram. Each is checked as you type. Names: " + typed + rates + ".</p>\n";
   body +=

@@ -138,16 +138,21 @@ struct BodiesReader {
 
   explicit BodiesReader(BuildContext& context) : ctx(context), one_d(context.m.dims() == 1) {}
 
-  // The coordinate `position` names, with its rate and acceleration, a length.
-  void add_position(Body& body, const Text& position) {
+  // The translation coordinate `position` names, with its rate and acceleration, a length,
+  // of the body about to be added.
+  Coordinate position_coordinate(const Text& position) {
     const std::string q = position.text;
-    body.coord = ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::length(), false, position.at).sym;
-    body.rate =
+    Coordinate c;
+    c.q = ctx.table->add(q, std::nullopt, SymbolRole::coordinate, Dimension::length(), false, position.at).sym;
+    c.rate =
         ctx.table->add("dot(" + q + ")", std::nullopt, SymbolRole::rate, Dimension::velocity(), false, position.at).sym;
-    body.accel = ctx.table
-                     ->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, Dimension::acceleration(), false,
-                           position.at)
-                     .sym;
+    c.accel = ctx.table
+                  ->add("ddot(" + q + ")", std::nullopt, SymbolRole::acceleration, Dimension::acceleration(), false,
+                        position.at)
+                  .sym;
+    c.body = static_cast<int>(ctx.m.bodies.size());
+    c.kind = Coordinate::Kind::translation;
+    return c;
   }
 
   // In 1-D: 'position' names the coordinate, which is the center of mass; the keys for 2-D and
@@ -166,18 +171,18 @@ struct BodiesReader {
     if (b.angle)
       ctx.diags.error(b.angle->at, "body '" + body.name + "': 'angle' is for 2-D problems (a body turns in the plane)");
     if (b.position && ctx.claim(*b.position, "coordinate")) {
-      add_position(body, *b.position);
-      body.cm = {body.coord, 0, 0};
+      const Coordinate q = position_coordinate(*b.position);
+      body.cm = {q.q, 0, 0};
       body.has_cm = true;
-      body.acceleration = {body.accel, 0, 0};
-      accelerations.push_back(body.accel);
+      accelerations.push_back(q.accel);
+      ctx.m.coordinates.push_back(q);
     }
   }
 
   // In 2-D and 3-D, a coordinate: the center of mass is written in it, and the acceleration
   // follows (twice differentiated in time).
-  void read_position(const BodyDesc& b, Body& body) {
-    if (!b.position) return;
+  std::optional<Coordinate> read_position(const BodyDesc& b, const Body& body) {
+    if (!b.position) return std::nullopt;
     if (!b.center_of_mass)
       ctx.diags.error(b.position->at,
                       "body '" + body.name +
@@ -188,7 +193,8 @@ struct BodiesReader {
           b.position->at,
           "body '" + body.name +
               "' has both 'position' and 'acceleration' (its acceleration follows from its position; give one)");
-    if (ctx.claim(*b.position, "coordinate")) add_position(body, *b.position);
+    if (!ctx.claim(*b.position, "coordinate")) return std::nullopt;
+    return position_coordinate(*b.position);
   }
 
   // An angle: the body turns in the plane (its center of mass may be written in the angle
@@ -232,10 +238,10 @@ struct BodiesReader {
   }
 
   // A center of mass that does not depend on the body's coordinate is reported.
-  void check_written_in_position(const BodyDesc& b, const Body& body) {
-    if (!body.coord.is_zero() && body.has_cm) {
+  void check_written_in_position(const BodyDesc& b, const Body& body, const std::optional<Coordinate>& position) {
+    if (position && body.has_cm) {
       bool depends = false;
-      for (const auto& c : body.cm) depends = depends || c.has(body.coord);
+      for (const auto& c : body.cm) depends = depends || c.has(position->q);
       if (!depends)
         ctx.diags.error(b.center_of_mass->at, "'center_of_mass' of body '" + body.name +
                                                   "' does not depend on its coordinate '" + b.position->text +
@@ -250,7 +256,7 @@ struct BodiesReader {
     if (b.acceleration && !b.position) {
       if (auto a = ctx.vector(*b.acceleration, *ctx.table, "'acceleration' of body '" + body.name + "'",
                               Dimension::acceleration()))
-        body.acceleration = *a;
+        body.given_acceleration = *a;
     } else if (b.accel_along && !b.position) {
       auto dir = ctx.vector(*b.accel_along, *ctx.table, "'along' of the acceleration of body '" + body.name + "'",
                             std::nullopt);
@@ -260,35 +266,30 @@ struct BodiesReader {
       } else if (dir && ctx.claim(name, "acceleration")) {
         const SymbolInfo& a =
             ctx.table->add(name.text, std::nullopt, SymbolRole::unknown, Dimension::acceleration(), false, name.at);
-        body.accel = a.sym;
-        body.acceleration = a.sym * unit(*dir);
+        body.along_unknown = a.sym;
+        body.given_acceleration = a.sym * unit(*dir);
         accelerations.push_back(a.sym);
       }
     }
   }
 
-  // In 2-D and 3-D: the position and angle, the center of mass, the acceleration from them or
-  // as given; the body's coordinates listed.
+  // In 2-D and 3-D: the position and angle, the center of mass, or the acceleration as
+  // given; the body's coordinates listed (its acceleration follows from them:
+  // kinematics::acceleration).
   void read_2d(const BodyDesc& b, Body& body) {
-    read_position(b, body);
+    const std::optional<Coordinate> position = read_position(b, body);
     std::vector<Coordinate> own;  // this body's coordinates
     read_angle(b, body, own);
     read_center_of_mass(b, body, own);
-    if (!body.coord.is_zero())
-      own.insert(own.begin(), {body.coord, body.rate, body.accel, static_cast<int>(ctx.m.bodies.size()),
-                               Coordinate::Kind::translation});
-    check_written_in_position(b, body);
-    if (!own.empty() && body.has_cm) {
-      // a = d2(cm)/dt2 by the chain rule on this body's coordinates (cm'' dot(q)^2 + cm'
-      // ddot(q) on a straight line; with an angle, the centripetal terms too).
-      for (int i = 0; i < 3; ++i) body.acceleration[i] = time_derivative(time_derivative(body.cm[i], own, {}), own, {});
+    if (position) own.insert(own.begin(), *position);
+    check_written_in_position(b, body, position);
+    if (!own.empty() && body.has_cm)
       for (const auto& c : own) accelerations.push_back(c.accel);
-    }
     ctx.m.coordinates.insert(ctx.m.coordinates.end(), own.begin(), own.end());
     read_acceleration(b, body);
   }
 
-  // The body into the model, a point too (at its center of mass); in 1-D its coordinate listed.
+  // The body into the model, a point too (at its center of mass).
   void add(Body& body) {
     ctx.body_index[body.name] = static_cast<int>(ctx.m.bodies.size());
     ctx.point_index[body.name] = static_cast<int>(ctx.m.points.size());
@@ -298,9 +299,6 @@ struct BodiesReader {
     self.body = static_cast<int>(ctx.m.bodies.size());
     self.at = body.at;
     ctx.m.points.push_back(self);
-    if (one_d && !body.coord.is_zero())  // (the 2-D branch listed its body's coordinates)
-      ctx.m.coordinates.push_back(
-          {body.coord, body.rate, body.accel, static_cast<int>(ctx.m.bodies.size()), Coordinate::Kind::translation});
     ctx.m.bodies.push_back(body);
   }
 
@@ -315,27 +313,6 @@ struct BodiesReader {
     else
       read_2d(b, body);
     add(body);
-  }
-
-  // A center of mass written in another body's coordinates too (a pendulum's bob in its
-  // cart's x): its acceleration by the chain rule on every coordinate, not only its own
-  // (made once every body's coordinates exist).
-  void accelerations_in_other_coordinates() {
-    for (std::size_t i = 0; i < ctx.d.bodies.size(); ++i) {
-      const auto& b = ctx.d.bodies[i];
-      const auto it = ctx.body_index.find(b.name.text);
-      if (it == ctx.body_index.end() || b.acceleration || b.accel_along) continue;
-      Body& body = ctx.m.bodies[it->second];
-      if (!body.has_cm) continue;
-      bool others = false;
-      for (const auto& c : ctx.m.coordinates)
-        if (c.body != it->second)
-          for (const auto& x : body.cm) others = others || x.has(c.q);
-      if (!others) continue;
-      for (int k = 0; k < 3; ++k)
-        body.acceleration[k] =
-            time_derivative(time_derivative(body.cm[k], ctx.m.coordinates, {}), ctx.m.coordinates, {});
-    }
   }
 
   // A body's mass: a mass, positive at the parameters' values, or 0 for a massless body; a
@@ -384,7 +361,6 @@ void bodies(BuildContext& ctx) {
   BodiesReader r(ctx);
   for (const auto& b : ctx.d.bodies) r.read(b);
   ctx.m.candidates.insert(ctx.m.candidates.begin(), r.accelerations.begin(), r.accelerations.end());
-  if (!r.one_d) r.accelerations_in_other_coordinates();
   r.masses();
 }
 

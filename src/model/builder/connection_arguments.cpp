@@ -11,6 +11,7 @@
 
 #include "expr/print.hpp"
 #include "expr/trig.hpp"
+#include "model/kinematics.hpp"
 
 namespace tackle::build {
 
@@ -256,7 +257,8 @@ bool at_point_of_another_body(BuildContext& ctx, const Instance& in) {
     const Point& point = ctx.m.points[static_cast<std::size_t>(p->second)];
     if (point.body < 0 || point.body == body->second) continue;
     const Body& other = ctx.m.bodies[static_cast<std::size_t>(point.body)];
-    if (other.coord.is_zero() && other.angle.is_zero() && !other.has_mass) continue;  // a body that does not move
+    if (!kinematics::translation(ctx.m, other) && other.angle.is_zero() && !other.has_mass)
+      continue;  // a body that does not move
     const std::string& held = ctx.m.bodies[static_cast<std::size_t>(body->second)].name;
     const std::string instead = in.rule.two_bodies.empty() ? "a connection between two bodies"
                                                            : "{type: " + in.rule.two_bodies + ", body: " + held +

@@ -8,6 +8,7 @@
 
 #include "expr/print.hpp"
 #include "expr/rational.hpp"
+#include "model/kinematics.hpp"
 
 namespace tackle::build {
 
@@ -83,11 +84,11 @@ struct MotionReader {
       const Body& b = m.bodies[i];
       const bool has_coordinate = std::any_of(m.coordinates.begin(), m.coordinates.end(),
                                               [&](const Coordinate& c) { return c.body == static_cast<int>(i); });
-      if (!has_coordinate && b.has_mass && !is_zero_vec(b.acceleration)) {
+      if (!has_coordinate && b.has_mass && !is_zero_vec(b.given_acceleration)) {
         // Straight-line motion without a coordinate: nothing to integrate.
         bool unknown = false;
         for (const auto& c : m.candidates)
-          for (int k = 0; k < 3; ++k) unknown = unknown || b.acceleration[k].has(c);
+          for (int k = 0; k < 3; ++k) unknown = unknown || b.given_acceleration[k].has(c);
         if (unknown)
           ctx.diags.error(b.at, "body '" + b.name +
                                     "' moves without a coordinate (expected 'position' and a center_of_mass "
@@ -251,12 +252,12 @@ struct MotionReader {
       for (int i : moving)
         if (m.coordinates[i].q.is_equal(s->sym) || m.coordinates[i].rate.is_equal(s->sym)) body = m.coordinates[i].body;
     if (body < 0 && s) {
-      const auto fixed = std::find_if(m.bodies.begin(), m.bodies.end(), [&](const Body& b) {
-        return contains(by_balance, b.coord) && (b.coord.is_equal(s->sym) || b.rate.is_equal(s->sym));
+      const auto fixed = std::find_if(m.coordinates.begin(), m.coordinates.end(), [&](const Coordinate& c) {
+        return contains(by_balance, c.q) && (c.q.is_equal(s->sym) || c.rate.is_equal(s->sym));
       });
-      if (fixed != m.bodies.end()) {
+      if (fixed != m.coordinates.end()) {
         ctx.diags.error(key.at,
-                        "initial value of '" + key.text + "': body '" + fixed->name +
+                        "initial value of '" + key.text + "': body '" + m.bodies[fixed->body].name +
                             "' has no mass, so its balance gives it at every instant (expected initial values of the "
                             "motion's coordinates only)");
         return nullptr;
@@ -446,12 +447,11 @@ std::optional<ex> parameters_only(BuildContext& ctx, const Text& t, const std::s
 // The body whose rate `key` names (dot(x_A)), or -1 with the problem reported.
 int body_of_rate(BuildContext& ctx, const Text& key) {
   const auto r = parse_expression(key.text, *ctx.table);
-  for (std::size_t i = 0; i < ctx.m.bodies.size(); ++i)
-    if (r.value && !ctx.m.bodies[i].rate.is_zero() && ctx.m.bodies[i].rate.is_equal(*r.value))
-      return static_cast<int>(i);
+  for (const auto& q : ctx.m.coordinates)  // (in body order)
+    if (q.kind == Coordinate::Kind::translation && r.value && q.rate.is_equal(*r.value)) return q.body;
   std::vector<std::string> known;
-  for (const auto& b : ctx.m.bodies)
-    if (!b.rate.is_zero()) known.push_back(to_text(b.rate));
+  for (const auto& q : ctx.m.coordinates)
+    if (q.kind == Coordinate::Kind::translation) known.push_back(to_text(q.rate));
   ctx.unknown_name(key, "rate", known);
   return -1;
 }
@@ -486,8 +486,8 @@ void interval(BuildContext& ctx) {
   for (int b : order) {
     const auto& [from, to] = ends[b];
     if (!from) {
-      ctx.diags.error(d.at,
-                      "'interval' gives " + to_text(m.bodies[b].rate) + " at its end only (expected it in 'from' too)");
+      ctx.diags.error(d.at, "'interval' gives " + to_text(kinematics::translation(m, m.bodies[b])->rate) +
+                                " at its end only (expected it in 'from' too)");
       continue;
     }
     spec.changes.push_back({b, *from, to});
@@ -543,8 +543,8 @@ void impact(BuildContext& ctx) {
     if (!b.has_mass || b.mass.is_zero()) {
       ctx.diags.error(b.at, "body '" + b.name + "' has no mass (expected every body of an impact to have one)");
       usable = false;
-    } else if (!before.count(static_cast<int>(i)) && !b.rate.is_zero()) {
-      ctx.diags.error(d.at, "'impact' gives no rate of body '" + b.name + "' before it (expected " + to_text(b.rate) +
+    } else if (const Coordinate* q = kinematics::translation(m, b); !before.count(static_cast<int>(i)) && q) {
+      ctx.diags.error(d.at, "'impact' gives no rate of body '" + b.name + "' before it (expected " + to_text(q->rate) +
                                 " in 'from')");
       usable = false;
     }

@@ -6,6 +6,7 @@
 
 #include "expr/print.hpp"
 #include "expr/trig.hpp"
+#include "model/kinematics.hpp"
 
 namespace tackle::build {
 
@@ -95,7 +96,8 @@ const Path* path_of(BuildContext& ctx, Instance& in, const std::string& key) {
   if (it == in.path_args.end()) return nullptr;
   // A body whose coordinate could not be made has been reported already.
   for (int p : it->second)
-    if (ctx.m.dims() == 1 && ctx.m.points[p].body >= 0 && ctx.m.bodies[ctx.m.points[p].body].coord.is_zero())
+    if (ctx.m.dims() == 1 && ctx.m.points[p].body >= 0 &&
+        !kinematics::translation(ctx.m, ctx.m.bodies[ctx.m.points[p].body]))
       return nullptr;
   auto [cached, fresh] = in.paths.try_emplace(key);
   if (fresh) {

@@ -19,12 +19,10 @@ struct Turning {
     b.name = "wheel";
     b.mass = M;
     b.has_mass = true;
-    b.coord = x, b.rate = xd, b.accel = xdd;
     b.cm = {x, 0, 0};
     b.has_cm = true;
     b.angle = th;
     b.inertia = I;
-    b.acceleration = {xdd, 0, 0};
     m.bodies.push_back(b);
     m.coordinates.push_back({x, xd, xdd, 0, Coordinate::Kind::translation});
     m.coordinates.push_back({th, thd, thdd, 0, Coordinate::Kind::rotation});
@@ -84,5 +82,61 @@ TEST_CASE("Kinematics: a body that only translates has no turning terms", "[kine
   t.m.coordinates.pop_back();
   CHECK(kinematics::omega(t.m, t.body()).is_zero());
   CHECK(same(kinematics::kinetic_energy(t.m, t.body(), [](const ex& e) { return e; }), t.M * pow(t.xd, 2) / 2));
-  CHECK(same(kinematics::momentum_rate(t.body())[0], t.M * t.xdd));
+  CHECK(same(kinematics::momentum_rate(t.m, t.body())[0], t.M * t.xdd));
+}
+
+TEST_CASE("Kinematics: a body's translation coordinate and acceleration come from the model's coordinates",
+          "[kinematics]") {
+  const Turning t;
+  const Coordinate* q = kinematics::translation(t.m, t.body());
+  REQUIRE(q);
+  CHECK(q->q.is_equal(t.x));
+  CHECK(q->rate.is_equal(t.xd));
+  CHECK(kinematics::acceleration_symbol(t.m, t.body()).is_equal(t.xdd));
+  const Vec a = kinematics::acceleration(t.m, t.body());
+  CHECK(same(a[0], t.xdd));
+  CHECK(same(a[1], 0));
+}
+
+TEST_CASE("Kinematics: a pendulum's bob accelerates by L ddot(theta) along its path and L dot(theta)^2 to its pin",
+          "[kinematics]") {
+  const symbol th{"theta"}, thd{"dot(theta)"}, thdd{"ddot(theta)"}, L{"L"}, M{"M"};
+  Model m;
+  m.axes = {"x", "y"};
+  Body bob;
+  bob.name = "bob";
+  bob.mass = M;
+  bob.has_mass = true;
+  bob.cm = {L * sin(th), -L * cos(th), 0};  // the pin at the origin, theta from the downward vertical
+  bob.has_cm = true;
+  bob.angle = th;
+  m.bodies.push_back(bob);
+  m.coordinates.push_back({th, thd, thdd, 0, Coordinate::Kind::rotation});
+  CHECK(kinematics::translation(m, m.bodies[0]) == nullptr);
+  CHECK(kinematics::acceleration_symbol(m, m.bodies[0]).is_zero());
+  // By hand: tangential L ddot(theta) (cos, sin), normal L dot(theta)^2 (-sin, cos), towards the pin.
+  const Vec a = kinematics::acceleration(m, m.bodies[0]);
+  CHECK(same(a[0], L * thdd * cos(th) - L * pow(thd, 2) * sin(th)));
+  CHECK(same(a[1], L * thdd * sin(th) + L * pow(thd, 2) * cos(th)));
+  const Vec p = kinematics::momentum_rate(m, m.bodies[0]);
+  CHECK(same(p[1], M * a[1]));
+}
+
+TEST_CASE("Kinematics: a body with no coordinate has its acceleration as given", "[kinematics]") {
+  const symbol a{"a_B"}, g{"g"};
+  Model m;
+  m.axes = {"x", "y"};
+  Body b;
+  b.name = "B";
+  b.mass = symbol("m");
+  b.has_mass = true;
+  b.along_unknown = a;
+  b.given_acceleration = {a * 3 / 5, -a * 4 / 5, 0};  // along (3, -4), down a 3-4-5 slope
+  m.bodies.push_back(b);
+  CHECK(kinematics::translation(m, m.bodies[0]) == nullptr);
+  CHECK(kinematics::acceleration_symbol(m, m.bodies[0]).is_equal(a));
+  const Vec acc = kinematics::acceleration(m, m.bodies[0]);
+  CHECK(same(acc[0], 3 * a / 5));
+  CHECK(same(acc[1], -4 * a / 5));
+  CHECK_FALSE(kinematics::velocity(m, m.bodies[0]));
 }
