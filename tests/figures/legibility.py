@@ -31,11 +31,16 @@ Four kinds of defect:
   head; a couple's arc, sampled; the axes included) or covers a point's dot. One defect per
   label and crossing element (a label under five hatching strokes is five). The label's own
   arrow counts: a label must sit clear of it.
-- `overlap`: two labels' boxes overlap.
+- `overlap`: two labels' boxes overlap (by more than the tolerance below; with `--gap PX`,
+  labels closer than PX count too: crowding).
 - `detached`: an arrow (a force or an inertial term; not the axes, not a couple) whose tail and
   head are both farther than `--attach` (default 0.1 drawing units: 4 px, 1 mm) from every
   outline, every drawn point and every body's centre (a circle's centre, a polygon's
   centroid: the center of mass a weight leaves).
+- `inside` (said as a note, counted apart, not a defect: the issue's "no arrow starts inside
+  an outline unless it is a body force" needs to know which forces are body forces, which
+  the figure does not say): an arrow whose two ends both lie inside one outline, deeper than
+  `--attach`. Its lines are written with `--notes`.
 - `undrawn`: a description with no figure, a 2-D description without its sketch, or a body
   with a mass whose balance `derive` writes (every such body when the description has no
   `derive:` key) without a free body diagram naming it.
@@ -951,7 +956,7 @@ def arrow_name(fig, k):
 GRAVITY = re.compile(r"^g( (sin|cos)\(.*\))?$")
 
 
-def measure(fig, tol, attach):
+def measure(fig, tol, attach, gap=0.0):
     """The defects of one figure: a list of (kind, message)."""
     defects = []
     for li, lab in enumerate(fig.labels):
@@ -987,7 +992,7 @@ def measure(fig, tol, attach):
     for i in range(len(fig.labels)):
         for j in range(i + 1, len(fig.labels)):
             a, b = fig.labels[i], fig.labels[j]
-            if boxes_overlap(a.box, b.box, tol):
+            if boxes_overlap(a.box, b.box, tol - gap):
                 defects.append(("overlap", f"labels '{a.text}' and '{b.text}' overlap at "
                                            f"{fp(((a.box[0] + a.box[2]) / 2, (a.box[1] + a.box[3]) / 2))}"))
     anchors = [c for c, _ in fig.dots] + [c for c, _ in fig.circles]
@@ -1001,6 +1006,21 @@ def measure(fig, tol, attach):
         d += [abs(math.hypot(p[0] - c[0], p[1] - c[1]) - r) for c, r in fig.circles]
         return min(d) if d else float("inf")
 
+    for k, a in enumerate(fig.arrows):  # not a defect of the measure: said, and counted apart
+        if a.kind == "axis":
+            continue
+        for poly in fig.polygons:
+            if all(point_in_polygon(p, poly) and min(dist_point_segment(p, poly[j], poly[(j + 1) % len(poly)])
+                                                     for j in range(len(poly))) > attach for p in (a.tail, a.head)):
+                defects.append(("inside", f"note: {arrow_name(fig, k)} {fp(a.tail)}-{fp(a.head)} lies inside an "
+                                          "outline, both ends (not counted as a defect)"))
+                break
+        else:
+            for c, r in fig.circles:
+                if all(math.hypot(p[0] - c[0], p[1] - c[1]) < r - attach for p in (a.tail, a.head)):
+                    defects.append(("inside", f"note: {arrow_name(fig, k)} {fp(a.tail)}-{fp(a.head)} lies inside "
+                                              "an outline, both ends (not counted as a defect)"))
+                    break
     for k, a in enumerate(fig.arrows):
         if a.kind == "axis" or (fig.caption.startswith("Sketch") and a.label and GRAVITY.match(a.label)):
             continue  # the axes, and a sketch's gravity arrow beside the mechanism, belong to no body
@@ -1082,7 +1102,7 @@ def run(cmd):
     return r.stdout, None
 
 
-def measure_text(name, fmt, text, tol_px, attach_units, report, totals, source=None):
+def measure_text(name, fmt, text, tol_px, attach_units, report, totals, source=None, gap_px=0.0, notes=False):
     """Measures the figures of one output; returns (figures, captions)."""
     figs = []
     if fmt == "svg":
@@ -1093,17 +1113,17 @@ def measure_text(name, fmt, text, tol_px, attach_units, report, totals, source=N
                 f = Figure("svg", k + 1, "")
                 f.unread.append(f"XML: {e}")
                 figs.append(f)
-        tol, attach = tol_px, attach_units * PX_PER_UNIT
+        tol, attach, gap = tol_px, attach_units * PX_PER_UNIT, gap_px
     else:
         pics, em_cm = tikz_figures(text)
         figs = [read_tikz_figure(b, k + 1, cap, em_cm) for k, (b, cap) in enumerate(pics)]
-        tol, attach = tol_px / PX_PER_UNIT, attach_units
+        tol, attach, gap = tol_px / PX_PER_UNIT, attach_units, gap_px / PX_PER_UNIT
     entry = report.setdefault(name, {})
     counts = entry.setdefault(source or fmt, {"figures": 0, "labels": 0, "crossed": 0, "crossed_labels": 0,
-                                               "overlap": 0, "detached": 0, "unread": 0, "worst": []})
+                                               "overlap": 0, "detached": 0, "inside": 0, "unread": 0, "worst": []})
     counts["figures"] += len(figs)
     for fig in figs:
-        defects = measure(fig, tol, attach)
+        defects = measure(fig, tol, attach, gap)
         counts["labels"] += len(fig.labels)
         counts["unread"] += len(fig.unread)
         crossed_labels = set()
@@ -1112,11 +1132,13 @@ def measure_text(name, fmt, text, tol_px, attach_units, report, totals, source=N
             if kind == "crossed":
                 crossed_labels.add(msg.split("' crossed")[0])
             totals[kind] = totals.get(kind, 0) + 1
-            yield f"{name}: figure {fig.index}: {msg} [{source or fmt}: {fig.caption}]"
+            if kind != "inside" or notes:
+                yield f"{name}: figure {fig.index}: {msg} [{source or fmt}: {fig.caption}]"
         counts["crossed_labels"] += len(crossed_labels)
         totals["crossed_labels"] = totals.get("crossed_labels", 0) + len(crossed_labels)
-        if defects:
-            counts["worst"].append({"figure": fig.index, "caption": fig.caption, "defects": len(defects)})
+        counted = [d for d in defects if d[0] != "inside"]
+        if counted:
+            counts["worst"].append({"figure": fig.index, "caption": fig.caption, "defects": len(counted)})
         for u in fig.unread:
             yield f"{name}: figure {fig.index}: note: not read: {u} [{source or fmt}: {fig.caption}]"
     counts["worst"].sort(key=lambda w: -w["defects"])
@@ -1138,8 +1160,11 @@ def main(argv):
     ap.add_argument("--tolerance", type=float, default=1.0, help="px (SVG; /40 cm in TikZ) a label's box is shrunk by")
     ap.add_argument("--attach", type=float, default=0.1,
                     help="drawing units (cm; 40 px) within which an arrow's end is on an outline or point")
+    ap.add_argument("--gap", type=float, default=0.0,
+                    help="px (SVG; /40 cm in TikZ): labels closer than this count as overlapping (default 0)")
     ap.add_argument("--json", default="-", help="write the JSON summary here ('-': stdout)")
     ap.add_argument("--quiet", action="store_true", help="no defect lines")
+    ap.add_argument("--notes", action="store_true", help="also a line for each arrow inside an outline")
     try:
         a = ap.parse_args(argv)
     except SystemExit as e:
@@ -1175,7 +1200,7 @@ def main(argv):
                 errors += 1
                 report.setdefault(path, {})["error"] = err
                 continue
-            emit(measure_text(path, fmt, out, a.tolerance, a.attach, report, totals))
+            emit(measure_text(path, fmt, out, a.tolerance, a.attach, report, totals, gap_px=a.gap, notes=a.notes))
             captions[fmt] = report[path].get("_captions_" + fmt, [])
         if a.sheet and "tikz" in formats:
             out, err = run([a.tackle, "sheet", path, "--figures", "--format", "latex"])
@@ -1183,7 +1208,8 @@ def main(argv):
                 emit([f"{path}: tackle sheet failed: {err}"])
                 errors += 1
             else:
-                emit(measure_text(path, "tikz", out, a.tolerance, a.attach, report, totals, source="sheet-tikz"))
+                emit(measure_text(path, "tikz", out, a.tolerance, a.attach, report, totals, source="sheet-tikz",
+                                  gap_px=a.gap, notes=a.notes))
         for fmt, caps in captions.items():
             for msg in undrawn(path, caps):
                 undrawn_count += 1
@@ -1197,7 +1223,7 @@ def main(argv):
             except OSError as e:
                 print(f"legibility.py: {path}: {e}", file=sys.stderr)
                 return 2
-            emit(measure_text(path, fmt, text, a.tolerance, a.attach, report, totals))
+            emit(measure_text(path, fmt, text, a.tolerance, a.attach, report, totals, gap_px=a.gap, notes=a.notes))
     for entry in report.values():
         for k in [k for k in entry if k.startswith("_captions_")]:
             del entry[k]
@@ -1208,7 +1234,7 @@ def main(argv):
                 v["worst"] = v["worst"][:3]
     totals["undrawn"] = undrawn_count
     totals["errors"] = errors
-    for k in ("crossed", "crossed_labels", "overlap", "detached", "figures", "labels"):
+    for k in ("crossed", "crossed_labels", "overlap", "detached", "inside", "figures", "labels"):
         totals.setdefault(k, 0)
     totals["defects"] = totals["crossed"] + totals["overlap"] + totals["detached"] + totals["undrawn"] + errors
     by_format = {}
@@ -1216,10 +1242,10 @@ def main(argv):
         for src, v in entry.items():
             if isinstance(v, dict):
                 bf = by_format.setdefault(src, {"figures": 0, "crossed": 0, "crossed_labels": 0, "overlap": 0,
-                                                "detached": 0, "undrawn": 0, "defects": 0})
+                                                "detached": 0, "undrawn": 0, "defects": 0, "inside": 0})
                 for k in bf:
                     bf[k] += v.get(k, 0)
-    summary = {"tolerance_px": a.tolerance, "attach_units": a.attach, "totals": totals, "by_format": by_format,
+    summary = {"tolerance_px": a.tolerance, "attach_units": a.attach, "gap_px": a.gap, "totals": totals, "by_format": by_format,
                "files": report}
     text = json.dumps(summary, indent=1, ensure_ascii=False)
     if a.json == "-":

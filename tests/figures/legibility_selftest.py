@@ -145,6 +145,22 @@ class Svg(unittest.TestCase):
         d, _ = measure_svg(CLEAN + arrow)
         self.assertEqual(d, [])
 
+    def test_an_arrow_inside_its_outline_is_a_note_not_a_defect(self):
+        big = '<polygon points="20,150 220,150 220,60 20,60" fill="#ebebeb" stroke="black" stroke-width="1.6"/>\n'
+        arrow = ('<line x1="60" y1="100" x2="100" y2="100" stroke="black" stroke-width="2" marker-end="url(#h)"/>\n'
+                 + text(80, 120, "P", 9.6) + '<circle cx="60" cy="100" r="2.5" fill="black"/>\n')
+        d, _ = measure_svg(big + arrow)
+        self.assertEqual(kinds(d), ["inside"])
+        with tempfile.TemporaryDirectory() as tmp:
+            page = os.path.join(tmp, "inside.html")
+            with open(page, "w") as f:
+                f.write(svg(big + arrow))
+            out = io.StringIO()
+            with redirect_stdout(out):
+                code = L.main(["--svg", page])
+            self.assertEqual(code, 0)
+            self.assertEqual(json.loads(out.getvalue())["totals"]["inside"], 1)
+
     def test_axes_and_a_sketchs_gravity_arrow_are_not_detached(self):
         g = ('<line x1="250" y1="20" x2="250" y2="60" stroke="black" stroke-width="2" marker-end="url(#h)"/>\n'
              + text(262, 40, "g", 7.28))
