@@ -4,6 +4,7 @@
 #include <iostream>
 #include <memory>
 
+#include "analysis/regimes.hpp"
 #include "cli/output.hpp"
 #include "expr/parse.hpp"
 #include "isolate/isolate.hpp"
@@ -150,8 +151,11 @@ int run_page(const Options& o, const tackle::RuleSet& rules) {
 
 int run_isolate(const Options& o, const tackle::RuleSet& rules) {
   const tackle::Description description = tackle::read_description(o.file);
+  // Phases, and connections decided at the numbers (friction that sticks or slips), are
+  // analysed first: the model to search is the phase's, or the regime's that holds.
   std::unique_ptr<const tackle::Analysis> phased;
-  if (!description.phases.empty() || !o.phase.empty()) phased = tackle::analyze(description, rules);
+  if (!description.phases.empty() || !o.phase.empty() || !tackle::decided_connections(description, rules).empty())
+    phased = tackle::analyze(description, rules);
   const tackle::Analysis* picked = nullptr;
   if (phased) {
     std::string problem;

@@ -87,8 +87,6 @@ Equation amb_along(const Model& m, const std::vector<int>& bodies, bool system, 
   return eq;
 }
 
-namespace {
-
 // A particle: no angle, no moment of inertia, no shape or size to draw, and no load on it
 // away from its center of mass, nor a couple. It does not turn, and no balance of its moments
 // is written (it would read 0 = 0, or ask a single contact to balance a moment it cannot). A
@@ -115,8 +113,6 @@ bool particle(const Model& m, int body) {
     return bare(other) && is_zero_vec(*l.at - other.cm);
   });
 }
-
-}  // namespace
 
 namespace {
 

@@ -63,4 +63,9 @@ struct EquationSystem {
                                  const std::string& about_label, const Vec& direction,
                                  const std::string& direction_label);
 
+/// Whether body `body` is a particle: no angle, inertia or drawn size, and every load at its
+/// center of mass (or at another particle's, touching it); no balance of its moments is
+/// written for it (the idealized points of its contacts could not carry one).
+[[nodiscard]] bool particle(const Model& m, int body);
+
 }  // namespace tackle

@@ -53,6 +53,9 @@ std::vector<Equation> candidate_equations(const Model& m) {
         if (m.dims() == 2)
           out.push_back(lmb_along(m, {b}, false, unit(Vec{-along[1], along[0], 0}), "across " + p->name + q->name));
       }
+    // A particle's moments are not balanced (its contacts are idealized points): the
+    // derivation writes none, and one written here could contradict its forces.
+    if (particle(m, b)) continue;
     for (const Point* c : points) {
       if (m.dims() == 2) {
         out.push_back(amb_along(m, {b}, false, c->position, c->name, axis_vec(2), "z"));
@@ -153,7 +156,7 @@ Vec tidy(const Vec& given) {
 bool isolate_in_body(const Model& m, int b, const std::vector<ex>& unknowns, const ex& unknown, Isolation& r) {
   const int dims = m.dims();
   // Balance components, from the equations stage's own balances: LMB along each axis, AMB
-  // about the origin along each axis (z only in 2-D).
+  // about the origin along each axis (z only in 2-D) for a body that is not a particle.
   std::vector<ex> components;
   auto axis = [](int i) {
     Vec e = zero_vec();
@@ -164,7 +167,8 @@ bool isolate_in_body(const Model& m, int b, const std::vector<ex>& unknowns, con
     const Equation eq = lmb_along(m, {b}, false, axis(i), m.axes[i]);
     components.push_back((eq.lhs - eq.rhs).expand());
   }
-  const int first_moment = dims == 2 ? 2 : 0;
+  // (None for a particle: its moments are not balanced, see candidate_equations.)
+  const int first_moment = particle(m, b) ? 3 : dims == 2 ? 2 : 0;
   for (int i = first_moment; i < 3; ++i) {
     const Equation eq = amb_along(m, {b}, false, zero_vec(), "the origin", axis(i), "axis " + std::to_string(i));
     components.push_back((eq.lhs - eq.rhs).expand());

@@ -268,6 +268,28 @@ TEST_CASE("CLI: isolate finds axis OG for the sign-board's rod, with usage and i
   CHECK(j["isolations"][1]["impossible"] == true);
 }
 
+// By hand, for block A on block B with kinetic friction between them (A slips back on B):
+// A's LMB along (1, -mu_k) is mu_k N_A - mu_k (N_A - m_A g) = m_A ddot(x_A), so ddot(x_A) =
+// mu_k g; A's LMB (y) gives N_A = m_A g. B's acceleration needs the friction mu_k N_A, and
+// N_B the weight of A: each takes two of the balances. A's and B's contacts are points, so no
+// balance of B's moments is used (it would say F = m_B ddot(x_B)).
+TEST_CASE("CLI: isolate analyses friction between two blocks in the regime that holds", "[cli][isolate]") {
+  const Run r = run_tackle("isolate " + examples + "friction-block-on-block.yaml --all");
+  CHECK(r.code == 0);
+  CHECK(r.err.empty());
+  CHECK(r.out ==
+        "ddot(x_A): LMB A (along [1, -mu_k]) contains it alone.\n"
+        "    g*m_A*mu_k = m_A*ddot(x_A)\n"
+        "    ddot(x_A) = g*mu_k  = 2.4525 m/s^2\n"
+        "ddot(x_B): no single balance equation of one body contains it alone (no direction, point or axis does); it "
+        "takes a system of equations.\n"
+        "N_A: LMB A (y) contains it alone.\n"
+        "    N_A - g*m_A = 0\n"
+        "    N_A = g*m_A  = 19.62 N\n"
+        "N_B: no single balance equation of one body contains it alone (no direction, point or axis does); it takes "
+        "a system of equations.\n");
+}
+
 TEST_CASE("CLI: check one answer, as text and JSON, and usage errors exit 2", "[cli][check]") {
   const std::string board = examples + "sample-12.8-sign-board.yaml";
   Run r = run_tackle("check " + board + " --unknown T_HI --answer 'm*a*sqrt(b^2+d^2+e^2)/d'");
