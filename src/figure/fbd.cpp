@@ -7,8 +7,10 @@
 #include <set>
 
 #include "expr/print.hpp"
+#include "expr/trig.hpp"
 #include "figure/figure.hpp"
 #include "figure/geometry.hpp"
+#include "figure/labels.hpp"
 #include "model/forces.hpp"
 #include "model/kinematics.hpp"
 #include "numeric/layout.hpp"
@@ -68,6 +70,14 @@ struct FbdDraw {
   // The arrows of a force vector: one per unknown in it (its coefficient gives the
   // direction), and one per axis for what is known (pointing the way that leaves its label
   // without a minus sign: m g down, not -m g up).
+  // The length of a direction written in the parameters and coordinates: sqrt(c.c), with
+  // sin^2 + cos^2 = 1 where that leaves fewer terms.
+  ex magnitude(const Vec& c) const {
+    ex squared = 0;
+    for (int k = 0; k < m.dims(); ++k) squared += pow(c[k], 2);
+    return sqrt(fewer_trig_terms(squared.expand()));
+  }
+
   void decompose(int body, const Vec& force, std::optional<std::array<double, 3>> at, const ex& factor, bool dashed,
                  bool at_cm) {
     for (const ForcePart& part : split_force(m, force, unknowns, num)) {
@@ -80,7 +90,11 @@ struct FbdDraw {
             ++nonzero;
             which = k;
           }
-        ex label = part.key * part.unknown;
+        // Along a direction of more than one axis, an inertial arrow's size is the unknown
+        // times the direction's length: a bar's center moves by L ddot(theta)/2 as its angle
+        // turns by ddot(theta), so the arrow is m L ddot(theta)/2. (A force's direction is a
+        // unit vector, perhaps written with a string's length: its label is the unknown.)
+        ex label = (dashed ? magnitude(part.coefficients) : ex(1)) * part.key * part.unknown;
         if (nonzero == 1)
           label = (part.numbers[which] < 0 ? -part.coefficients[which] : part.coefficients[which]) * part.key *
                   part.unknown;
@@ -353,6 +367,7 @@ struct FbdDraw {
 namespace fig {
 
 void finish(Figure& f, const std::vector<V>& directions, const std::vector<std::string>& names) {
+  settle_labels(f);  // the figure whole: each label clear of everything drawn (figure/labels.hpp)
   // Bounds, then the axes at the lower left, outside everything else.
   f.min_x = f.min_y = 1e300;
   f.max_x = f.max_y = -1e300;
