@@ -31,6 +31,7 @@ struct Pending {
   ex label;
   bool dashed = false;
   bool at_cm = false;  // acts at the center of mass: drawn pulling away from it
+  bool push = false;   // a contact's normal force (N >= 0: "the contact pushes"): drawn pressing on the outline
 };
 
 // The steps of a free body diagram and what they share: the bodies drawn, the forces to
@@ -70,6 +71,16 @@ struct FbdDraw {
   // The arrows of a force vector: one per unknown in it (its coefficient gives the
   // direction), and one per axis for what is known (pointing the way that leaves its label
   // without a minus sign: m g down, not -m g up).
+  // Whether unknown `u` is a contact's normal force: its rule holds it at u >= 0 and says the
+  // contact pushes or presses ("the contact pushes", "the bodies press on each other", "the
+  // wheel presses on the ground"; a string's T >= 0 is "taut": a pull).
+  bool pushes(const ex& u) const {
+    return std::any_of(m.conditions.begin(), m.conditions.end(), [&](const Condition& c) {
+      const bool says = c.meaning.find("push") != std::string::npos || c.meaning.find("press") != std::string::npos;
+      return says && (c.op == ">=" || c.op == ">") && c.rhs.is_zero() && c.lhs.is_equal(u);
+    });
+  }
+
   // The length of a direction written in the parameters and coordinates: sqrt(c.c), with
   // sin^2 + cos^2 = 1 where that leaves fewer terms.
   ex magnitude(const Vec& c) const {
@@ -98,7 +109,8 @@ struct FbdDraw {
         if (nonzero == 1)
           label = (part.numbers[which] < 0 ? -part.coefficients[which] : part.coefficients[which]) * part.key *
                   part.unknown;
-        pending.push_back({body, at, normalized(d), factor * label, dashed, at_cm});
+        const bool push = !dashed && part.key.is_equal(1) && pushes(part.unknown);
+        pending.push_back({body, at, normalized(d), factor * label, dashed, at_cm, push});
         continue;
       }
       for (int k = 0; k < m.dims(); ++k) {
@@ -223,13 +235,27 @@ struct FbdDraw {
   // an arrow that would lie on another is moved to one side.
   void arrows() {
     std::vector<std::pair<V, V>> placed;  // tail, head
-    for (const auto& p : pending) {
+    std::vector<FigureArrow> made(pending.size());
+    offsets.assign(pending.size(), 0);
+    // A contact's push is placed last: it is the one moved along its face when it would lie on
+    // another arrow (the weight leaves the center of mass down the line it presses up along).
+    std::vector<std::size_t> order;
+    for (bool push : {false, true})
+      for (std::size_t i = 0; i < pending.size(); ++i)
+        if (pending[i].push == push) order.push_back(i);
+    for (std::size_t i : order) {
+      const Pending& p = pending[i];
       const Drawn& d = *std::find_if(drawn.begin(), drawn.end(), [&](const Drawn& x) { return x.body == p.body; });
       const V anchor0 = p.at && !d.particle ? scale * proj(*p.at) : d.centre;
       V tail, head;
       auto make = [&](double offset) {
         const V anchor = anchor0 + offset * perp(p.direction);
-        if ((p.dashed || p.at_cm) && !d.particle) {
+        if (p.push) {
+          // A contact pushing: from outside, its head on the outline where the body is pressed
+          // (the side the force comes from), wherever the model puts the contact's point.
+          head = inside(d.outline, anchor) ? exit_point(d.outline, anchor, -1 * p.direction) : anchor;
+          tail = head - arrow_length * p.direction;
+        } else if ((p.dashed || p.at_cm) && !d.particle) {
           tail = anchor;  // m a and the weight at the center of mass
           head = tail + arrow_length * p.direction;
         } else if (d.particle || !p.at) {
@@ -254,18 +280,25 @@ struct FbdDraw {
         }
         return false;
       };
+      // A push moved aside stays on the outline it presses (off it, its head would be nowhere).
+      auto off_outline = [&](double by) {
+        return p.push && inside(d.outline, anchor0) && !inside(d.outline, anchor0 + by * perp(p.direction));
+      };
       double offset = 0;
       make(0);
-      for (int k = 1; k <= 8 && clashes(); ++k) make(offset = spacing * ((k + 1) / 2) * (k % 2 ? 1 : -1));
+      for (int k = 1; k <= 8 && clashes(); ++k) {
+        const double by = spacing * ((k + 1) / 2) * (k % 2 ? 1 : -1);
+        if (off_outline(by)) continue;
+        make(offset = by);
+      }
       placed.push_back({tail, head});
-      offsets.push_back(offset);
-      FigureArrow a;
-      a.from = fp(tail);
-      a.to = fp(head);
-      a.dashed = p.dashed;
-      a.label.tex = to_latex(p.label);
-      f.arrows.push_back(a);
+      offsets[i] = offset;
+      made[i].from = fp(tail);
+      made[i].to = fp(head);
+      made[i].dashed = p.dashed;
+      made[i].label.tex = to_latex(p.label);
     }
+    f.arrows.insert(f.arrows.end(), made.begin(), made.end());
   }
 
   // In 1-D the arrows along one side of a body sit evenly about its middle (two strands
