@@ -677,10 +677,24 @@ std::string fraction_text(const Fraction& f, const print_context& like, unsigned
 
 void print_mul(const mul& m, const print_context& c, unsigned level) { print_fraction(split(ex(m)), c, level); }
 
+// An even power's sum as a textbook writes it, whichever way GiNaC keeps it (its order follows
+// hashes seeded with the run's addresses): with fewer negative terms, else the text that sorts
+// first. (A product's factors are turned in split(); this is a power alone, under a root.)
+ex even_power_base(const ex& base, const ex& expo, const print_context& c) {
+  if (!is_exactly<add>(base) || !is_exactly<numeric>(expo) || !ex_to<numeric>(expo).is_even() ||
+      !ex_to<numeric>(expo).is_positive())
+    return base;
+  const ex other = negated_sum(base);
+  if (!is_exactly<add>(other)) return base;
+  if (flip_sum(base)) return other;
+  if (balance_of(base) != 0) return base;
+  return render(other, c, 0) < render(base, c, 0) ? other : base;
+}
+
 void print_power(const power& p, const print_context& c, unsigned level) {
   const bool latex = latex_ctx(c);
   std::ostream& os = c.s;
-  const ex base = p.op(0), expo = p.op(1);
+  const ex expo = p.op(1), base = even_power_base(p.op(0), expo, c);
   if (is_exactly<numeric>(expo) && ex_to<numeric>(expo).is_negative()) {
     print_fraction(split(ex(p)), c, level);
     return;

@@ -6,6 +6,9 @@
 
 #include <cmath>
 #include <random>
+#include <string>
+
+#include <fmt/format.h>
 
 #include "expr/normal_form.hpp"
 #include "expr/print.hpp"
@@ -124,7 +127,9 @@ void sliding_interval(Motion& out, const Model& m, const MotionSpec& spec) {
         if (!w) break;
         ((*w > 0) == (start_sign > 0) && *w != 0 ? lo : hi) = mid;
       }
-      out.direction_until_s = hi;
+      // To 12 significant digits: the rate's compiled form sums in GiNaC's order, which
+      // follows the run's addresses, and its last bits (so the bisection's last step) with it.
+      out.direction_until_s = std::stod(fmt::format("{:.12g}", hi));
       return;
     }
   }

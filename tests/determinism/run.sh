@@ -28,6 +28,12 @@ for f in "$src"/tests/data/bad/*.yaml; do commands+=("derive $f"); done
 for f in "$src"/tests/fuzz/regressions/description/*; do
   commands+=("derive $f --format text" "derive $f --format latex" "solve $f --format json")
 done
+# The cross-check's regressions: motions that turn against an assumed direction, whose extreme
+# over time took the sign of a square's base and whose first stop took the last bits of a sum
+# from GiNaC's order (each varied in about every third run before).
+for f in "$src"/tests/crosscheck/regressions/*.yaml; do
+  commands+=("derive $f --format text" "derive $f --format json")
+done
 # Answer checks whose feedback could follow the order of a sum's terms (mixed dimensions,
 # the diagnoses of wrong answers).
 commands+=("check $src/examples/sample-12.8-sign-board.yaml --batch $src/tests/determinism/sign-board-answers.jsonl")
