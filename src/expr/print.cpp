@@ -1,5 +1,6 @@
 #include "expr/print.hpp"
 #include "expr/memory.hpp"
+#include "expr/names.hpp"
 
 #include "core/kind.hpp"
 #include "expr/pairs.hpp"
@@ -137,35 +138,6 @@ void trim_key_cache() {
 }
 
 std::string key_of_uncached(const ex& e);
-
-// Keys compared with their digit runs as numbers (m_2 before m_10), the way a person
-// orders indexed names; otherwise as strings.
-bool natural_less(const std::string& a, const std::string& b) {
-  std::size_t i = 0, j = 0;
-  while (i < a.size() && j < b.size()) {
-    const bool da = std::isdigit(static_cast<unsigned char>(a[i])) != 0,
-               db = std::isdigit(static_cast<unsigned char>(b[j])) != 0;
-    if (da && db) {
-      std::size_t ie = i, je = j;
-      while (ie < a.size() && std::isdigit(static_cast<unsigned char>(a[ie]))) ++ie;
-      while (je < b.size() && std::isdigit(static_cast<unsigned char>(b[je]))) ++je;
-      // Leading zeros aside, the longer run is the larger number.
-      std::size_t is = i, js = j;
-      while (is + 1 < ie && a[is] == '0') ++is;
-      while (js + 1 < je && b[js] == '0') ++js;
-      if (ie - is != je - js) return ie - is < je - js;
-      if (const int c = a.compare(is, ie - is, b, js, je - js); c != 0) return c < 0;
-      if (ie - i != je - j) return ie - i < je - j;
-      i = ie;
-      j = je;
-      continue;
-    }
-    if (a[i] != b[j]) return a[i] < b[j];
-    ++i;
-    ++j;
-  }
-  return a.size() - i < b.size() - j;
-}
 
 // Sort key: the text form of an expression without its sign and numeric coefficient.
 std::string key_of(const ex& e) {
@@ -677,28 +649,26 @@ std::string fraction_text(const Fraction& f, const print_context& like, unsigned
 
 void print_mul(const mul& m, const print_context& c, unsigned level) { print_fraction(split(ex(m)), c, level); }
 
-// An even power's sum as a textbook writes it, whichever way GiNaC keeps it (its order follows
-// hashes seeded with the run's addresses): with fewer negative terms, else the text that sorts
-// first. (A product's factors are turned in split(); this is a power alone, under a root.)
+// An even power's sum as a textbook writes it, whichever way GiNaC keeps it (GiNaC takes a
+// power's sign out by its first term, in an order that follows hashes seeded with the run's
+// addresses): with fewer negative terms, else the text that sorts first. (A product's factors
+// are turned in split(), odd powers too; this is an even power alone, under a root or in a
+// function's argument. An odd power alone is printed as it is kept.)
 ex even_power_base(const ex& base, const ex& expo, const print_context& c) {
   if (!is_exactly<add>(base) || !is_exactly<numeric>(expo) || !ex_to<numeric>(expo).is_even() ||
       !ex_to<numeric>(expo).is_positive())
     return base;
   const ex other = negated_sum(base);
-  if (!is_exactly<add>(other)) return base;
+  if (!is_exactly<add>(other) || flip_sum(other)) return base;
   if (flip_sum(base)) return other;
   if (balance_of(base) != 0) return base;
   return render(other, c, 0) < render(base, c, 0) ? other : base;
 }
 
-void print_power(const power& p, const print_context& c, unsigned level) {
+// base^expo (a square root as sqrt), in parentheses at `level` or above.
+void print_power_of(const ex& base, const ex& expo, const print_context& c, unsigned level) {
   const bool latex = latex_ctx(c);
   std::ostream& os = c.s;
-  const ex expo = p.op(1), base = even_power_base(p.op(0), expo, c);
-  if (is_exactly<numeric>(expo) && ex_to<numeric>(expo).is_negative()) {
-    print_fraction(split(ex(p)), c, level);
-    return;
-  }
   if (expo.is_equal(numeric(1, 2))) {
     if (latex)
       os << "\\sqrt{" << render(base, c, 0) << "}";
@@ -722,6 +692,15 @@ void print_power(const power& p, const print_context& c, unsigned level) {
     os << "^" << (simple ? "" : "(") << render(expo, c, 0) << (simple ? "" : ")");
   }
   if (paren) os << (latex ? "\\right)" : ")");
+}
+
+void print_power(const power& p, const print_context& c, unsigned level) {
+  const ex base = p.op(0), expo = p.op(1);
+  if (is_exactly<numeric>(expo) && ex_to<numeric>(expo).is_negative()) {
+    print_fraction(split(ex(p)), c, level);
+    return;
+  }
+  print_power_of(even_power_base(base, expo, c), expo, c, level);
 }
 
 // pi as the parser reads it (GiNaC's own text form is "Pi").

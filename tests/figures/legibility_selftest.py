@@ -13,6 +13,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import importlib.util
 import unittest
 from contextlib import redirect_stdout
 
@@ -319,7 +320,7 @@ class CommandLine(unittest.TestCase):
         self.assertEqual(r.returncode, 2)
 
 
-@unittest.skipUnless(L.expected_diagrams.__module__ and __import__("importlib").util.find_spec("yaml"),
+@unittest.skipUnless(L.expected_diagrams.__module__ and importlib.util.find_spec("yaml"),
                      "PyYAML is needed to read which bodies need a diagram")
 class Undrawn(unittest.TestCase):
     def description(self, text):
