@@ -316,9 +316,19 @@ struct FbdDraw {
       }
       const double shift = -(lo + hi) / 2;
       for (std::size_t i : members) {
-        const V by = shift * perp(pending[i].direction);
-        f.arrows[i].from = fp(vp(f.arrows[i].from) + by);
-        f.arrows[i].to = fp(vp(f.arrows[i].to) + by);
+        const V u = pending[i].direction, by = shift * perp(u);
+        V tail = vp(f.arrows[i].from) + by, head = vp(f.arrows[i].to) + by;
+        // A pull leaving the outline leaves it still where it now is: a strand off a pulley
+        // block's rim, not from a point beside it.
+        const Drawn& d = *std::find_if(drawn.begin(), drawn.end(), [&](const Drawn& x) { return x.body == key.first; });
+        const V anchor = d.centre + (offsets[i] + shift) * perp(u);
+        if (!pending[i].push && boundary_distance(d.outline, vp(f.arrows[i].from)) < 0.05 &&
+            inside(d.outline, anchor)) {
+          tail = exit_point(d.outline, anchor, u);
+          head = tail + arrow_length * u;
+        }
+        f.arrows[i].from = fp(tail);
+        f.arrows[i].to = fp(head);
       }
     }
   }
