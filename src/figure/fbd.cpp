@@ -71,15 +71,7 @@ struct FbdDraw {
   // The arrows of a force vector: one per unknown in it (its coefficient gives the
   // direction), and one per axis for what is known (pointing the way that leaves its label
   // without a minus sign: m g down, not -m g up).
-  // Whether unknown `u` is a contact's normal force: its rule holds it at u >= 0 and says the
-  // contact pushes or presses ("the contact pushes", "the bodies press on each other", "the
-  // wheel presses on the ground"; a string's T >= 0 is "taut": a pull).
-  bool pushes(const ex& u) const {
-    return std::any_of(m.conditions.begin(), m.conditions.end(), [&](const Condition& c) {
-      const bool says = c.meaning.find("push") != std::string::npos || c.meaning.find("press") != std::string::npos;
-      return says && (c.op == ">=" || c.op == ">") && c.rhs.is_zero() && c.lhs.is_equal(u);
-    });
-  }
+  bool pushes(const ex& u) const { return contact_normal(m, u); }
 
   // The length of a direction written in the parameters and coordinates: sqrt(c.c), with
   // sin^2 + cos^2 = 1 where that leaves fewer terms.

@@ -274,6 +274,23 @@ using Number = std::function<std::optional<double>(const GiNaC::ex&)>;
 // A vector of the model's at the layout's numbers (0 beyond its axes), or none.
 [[nodiscard]] std::optional<std::array<double, 3>> point3(const Model& m, const Number& num, const Vec& v);
 
+/// Whether unknown `u` is a contact's normal force: its rule holds it at u >= 0 and says the
+/// contact pushes or presses ("the contact pushes", "the bodies press on each other", "the
+/// wheel presses on the ground"; a string's T >= 0 is "taut": a pull). (figure/contacts.cpp)
+[[nodiscard]] bool contact_normal(const Model& m, const GiNaC::ex& u);
+
+/// Two bodies pressing on each other through their centers: a contact between them whose
+/// normal force is a contact_normal, its normal along the line of their centers on paper (a
+/// block on a block). `d`: the centers' distance on paper in model units; `height`: the share
+/// of a block's side that spans it (0.8, its height, when one is above the other; else 1).
+struct Stacked {
+  int a, b;
+  double d, height;
+};
+/// The stacked pairs of the model at its numbers; `body_points[b]` starts with body b's center.
+[[nodiscard]] std::vector<Stacked> stacked(const Model& m, const Number& num, const Projection& proj,
+                                           const std::vector<std::vector<std::array<double, 3>>>& body_points);
+
 /// A body's outline, as the free body diagrams and the sketches draw it: its own shape
 /// (`draw:`) turned by its angle, a small disk for a turning particle (a pendulum's bob), a
 /// block `side` wide around a body whose `points` (model units: its center of mass and where

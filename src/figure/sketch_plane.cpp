@@ -129,7 +129,7 @@ struct PlaneSketch {
   }
 
   // The scale: the mechanism sketch_extent across, and no body larger than largest_body (the
-  // outlines drawn at that scale, measured).
+  // outlines drawn at that scale, measured); blocks pressing on each other touch.
   void choose_scale(const std::vector<V>& all) {
     double extent = 0;
     for (const V& a : all)
@@ -148,18 +148,27 @@ struct PlaneSketch {
         largest = std::max({largest, x1 - x0, y1 - y0});
       }
     if (largest > largest_body) scale *= std::max(largest_body / largest, particle_side / largest);
+    for (const auto& t : stacked(m, num, proj, body_points)) scale = std::min(scale, t.height * particle_side / t.d);
   }
 
-  // A block's side: no wider than most of the distance between two bodies.
+  // A block's side: no wider than most of the distance between two bodies, but for blocks
+  // pressing on each other, which span theirs.
   void choose_side() {
+    const auto touching = stacked(m, num, proj, body_points);
+    auto is_touching = [&](std::size_t a, std::size_t b) {
+      return std::any_of(touching.begin(), touching.end(), [&](const Stacked& t) {
+        return std::min(t.a, t.b) == static_cast<int>(a) && std::max(t.a, t.b) == static_cast<int>(b);
+      });
+    };
     double closest = 1e300;
     for (std::size_t a = 0; a < m.bodies.size(); ++a)
       for (std::size_t b = a + 1; b < m.bodies.size(); ++b)
-        if (!body_points[a].empty() && !body_points[b].empty()) {
+        if (!body_points[a].empty() && !body_points[b].empty() && !is_touching(a, b)) {
           const double d = scale * len(proj(body_points[a][0]) - proj(body_points[b][0]));
           if (d > 1e-6) closest = std::min(closest, d);
         }
     side = std::clamp(0.6 * closest, 0.5, particle_side);
+    for (const auto& t : touching) side = std::min(side, std::max(scale * t.d / t.height, 0.3));
   }
 
   // The normal of each surface a body touches, on paper, and the block on it turned along it;

@@ -751,3 +751,28 @@ TEST_CASE(
       CHECK(boxes[k].find("<figcaption>" + captions[k]->text + "</figcaption>") != std::string::npos);
   }
 }
+
+// By the description: B (center h/2 above the floor) under A (center 3h/2): blocks of height h,
+// A's bottom on B's top and B's on the floor, whatever the scale.
+TEST_CASE("Sketch: a block resting on a block is drawn on it, and the lower one on the floor", "[figure][sketch]") {
+  const auto f = sketch_of("friction-block-on-block.yaml");
+  REQUIRE(f);
+  auto span = [&](const std::string& name) {
+    const auto o = std::find_if(f->outlines.begin(), f->outlines.end(), [&](const auto& x) { return x.name == name; });
+    REQUIRE(o != f->outlines.end());
+    double lo = 1e300, hi = -1e300;
+    for (const auto& c : o->corners) lo = std::min(lo, c.y), hi = std::max(hi, c.y);
+    return std::make_pair(lo, hi);
+  };
+  const auto [a_bottom, a_top] = span("A");
+  const auto [b_bottom, b_top] = span("B");
+  CHECK(a_bottom == Approx(b_top).margin(1e-9));
+  CHECK(a_top - a_bottom == Approx(b_top - b_bottom).margin(1e-9));
+  // The floor: the ground line B stands on (the lowest thick line under it).
+  double floor = -1e300;
+  for (const auto& l : f->lines)
+    if (!l.thin && l.points.size() == 2 && std::fabs(l.points[0].y - l.points[1].y) < 1e-9 &&
+        l.points[0].y <= b_bottom + 1e-9)
+      floor = std::max(floor, l.points[0].y);
+  CHECK(b_bottom == Approx(floor).margin(1e-9));
+}
