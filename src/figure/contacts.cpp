@@ -22,15 +22,19 @@ std::vector<Stacked> stacked(const Model& m, const Number& num, const Projection
     if (contact_normal(m, u)) normals.push_back(u);
   std::map<std::string, std::vector<int>> bodies_of;  // a connection's pressing loads' bodies
   std::map<std::string, std::array<double, 3>> normal_of;
-  for (const auto& l : m.loads)
+  for (const auto& l : m.loads) {
+    if (l.body < 0) continue;
+    Vec force = zero_vec();
+    for (int k = 0; k < 3; ++k) force[k] = l.force[k].expand();
     for (const ex& u : normals) {
       Vec c = zero_vec();
-      for (int k = 0; k < 3; ++k) c[k] = l.force[k].expand().coeff(u, 1);
+      for (int k = 0; k < 3; ++k) c[k] = force[k].coeff(u, 1);
       const auto n = point3(m, num, c);
-      if (l.body < 0 || is_zero_vec(c) || !n) continue;
+      if (is_zero_vec(c) || !n) continue;
       bodies_of[force_key(l.origin)].push_back(l.body);
       normal_of[force_key(l.origin)] = *n;
     }
+  }
   std::vector<Stacked> out;
   for (const auto& [key, bodies] : bodies_of) {
     if (bodies.size() != 2 || bodies[0] == bodies[1]) continue;

@@ -71,8 +71,6 @@ struct FbdDraw {
   // The arrows of a force vector: one per unknown in it (its coefficient gives the
   // direction), and one per axis for what is known (pointing the way that leaves its label
   // without a minus sign: m g down, not -m g up).
-  bool pushes(const ex& u) const { return contact_normal(m, u); }
-
   // The length of a direction written in the parameters and coordinates: sqrt(c.c), with
   // sin^2 + cos^2 = 1 where that leaves fewer terms.
   ex magnitude(const Vec& c) const {
@@ -101,7 +99,7 @@ struct FbdDraw {
         if (nonzero == 1)
           label = (part.numbers[which] < 0 ? -part.coefficients[which] : part.coefficients[which]) * part.key *
                   part.unknown;
-        const bool push = !dashed && part.key.is_equal(1) && pushes(part.unknown);
+        const bool push = !dashed && part.key.is_equal(1) && contact_normal(m, part.unknown);
         pending.push_back({body, at, normalized(d), factor * label, dashed, at_cm, push});
         continue;
       }

@@ -9,12 +9,10 @@ namespace {
 constexpr double px = 1.0 / 40;
 constexpr double dot_half = 0.0625;  // a point's dot (2.5 px in SVG, 1.5 pt in TikZ), as a square
 
+// An arc as drawn: the chords between the points of fig::arc.
 void add_chords(std::vector<Stroke>& out, V centre, double r, double from, double to) {
-  const int n = std::max(2, static_cast<int>(std::ceil(std::fabs(to - from) / (M_PI / 12))));
-  for (int k = 0; k < n; ++k) {
-    const double a0 = from + (to - from) * k / n, a1 = from + (to - from) * (k + 1) / n;
-    out.push_back({centre + r * V{std::cos(a0), std::sin(a0)}, centre + r * V{std::cos(a1), std::sin(a1)}});
-  }
+  const std::vector<FigurePoint> points = arc(centre, r, from, to);
+  for (std::size_t k = 1; k < points.size(); ++k) out.push_back({vp(points[k - 1]), vp(points[k])});
 }
 
 void add_head(std::vector<Stroke>& out, V tip, V direction, double stroke_width) {

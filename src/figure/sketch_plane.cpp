@@ -56,6 +56,7 @@ struct PlaneSketch {
   std::vector<std::vector<std::array<double, 3>>> body_points;   // a body's center of mass and points of application
   double scale = 1;                                              // model units to drawing units
   double side = particle_side;                                   // a block's side
+  std::vector<Stacked> touching;                                 // blocks pressing on each other (choose_scale)
   std::map<int, V> along;                                        // a block turned along the surface it is on
   std::vector<std::pair<const Model::Drawing*, V>> surfaces_of;  // each surface a body touches, its normal on paper
   Figure f;
@@ -148,13 +149,13 @@ struct PlaneSketch {
         largest = std::max({largest, x1 - x0, y1 - y0});
       }
     if (largest > largest_body) scale *= std::max(largest_body / largest, particle_side / largest);
-    for (const auto& t : stacked(m, num, proj, body_points)) scale = std::min(scale, t.height * particle_side / t.d);
+    touching = stacked(m, num, proj, body_points);
+    for (const auto& t : touching) scale = std::min(scale, t.height * particle_side / t.d);
   }
 
   // A block's side: no wider than most of the distance between two bodies, but for blocks
   // pressing on each other, which span theirs.
   void choose_side() {
-    const auto touching = stacked(m, num, proj, body_points);
     auto is_touching = [&](std::size_t a, std::size_t b) {
       return std::any_of(touching.begin(), touching.end(), [&](const Stacked& t) {
         return std::min(t.a, t.b) == static_cast<int>(a) && std::max(t.a, t.b) == static_cast<int>(b);

@@ -54,6 +54,13 @@ def params(pairs):
     return "\n".join(out)
 
 
+
+def contact(body, rough, normal, sliding):
+    """A body on a surface: rough (sliding with mu, `sliding` its assumed direction) or smooth."""
+    if rough:
+        return f"  - {{type: sliding, body: {body}, at: {body}, normal: {normal}, sliding: {sliding}, mu: mu}}"
+    return f"  - {{type: roller, body: {body}, at: {body}, normal: {normal}}}"
+
 def mass(rng):
     return rng.choice([1, 1.5, 2, 3, 4, 5, 6, 8, 10])
 
@@ -82,11 +89,7 @@ def incline_block(rng, i):
     w.add(f"""bodies:
   {b}: {{mass: m, position: s, center_of_mass: ["s*cos(theta)", "s*sin(theta)"]}}
 connections:""")
-    if rough:
-        w.add(f'  - {{type: sliding, body: {b}, at: {b}, normal: ["-sin(theta)", "cos(theta)"], '
-              f'sliding: ["-cos(theta)", "-sin(theta)"], mu: mu}}')
-    else:
-        w.add(f'  - {{type: roller, body: {b}, at: {b}, normal: ["-sin(theta)", "cos(theta)"]}}')
+    w.add(contact(b, rough, '["-sin(theta)", "cos(theta)"]', '["-cos(theta)", "-sin(theta)"]'))
     if push:
         w.add(f'  - {{type: force, on: {b}, at: {b}, force: ["F*cos(theta)", "F*sin(theta)"]}}')
     w.add(f"layout: {{s: {rng.choice([0.5, 1, 1.5, 2])}}}")
@@ -137,11 +140,7 @@ def incline_pulley(rng, i):
 points:
   P: ["L*cos(theta)", "L*sin(theta)"]
 connections:""")
-    if rough:
-        w.add(f'  - {{type: sliding, body: {a}, at: {a}, normal: ["-sin(theta)", "cos(theta)"], '
-              f'sliding: ["cos(theta)", "sin(theta)"], mu: mu}}')
-    else:
-        w.add(f'  - {{type: roller, body: {a}, at: {a}, normal: ["-sin(theta)", "cos(theta)"]}}')
+    w.add(contact(a, rough, '["-sin(theta)", "cos(theta)"]', '["cos(theta)", "sin(theta)"]'))
     w.add(f"""  - {{type: pulley, at: P}}
 strings:
   - {{name: s, path: [{a}, P, {b}], tension: T}}
@@ -169,10 +168,7 @@ def table_pulley(rng, i):
 points:
   P: [L, h]
 connections:""")
-    if rough:
-        w.add(f"  - {{type: sliding, body: {a}, at: {a}, normal: [0, 1], sliding: [1, 0], mu: mu}}")
-    else:
-        w.add(f"  - {{type: roller, body: {a}, at: {a}, normal: [0, 1]}}")
+    w.add(contact(a, rough, "[0, 1]", "[1, 0]"))
     w.add("  - {type: pulley, at: P}")
     if force:
         w.add(f"  - {{type: force, on: {a}, at: {a}, force: [\"-F\", 0]}}")
@@ -221,10 +217,7 @@ def floor_train(rng, i):
         w.add(f"  {b}: {{mass: m_{k + 1}, position: x_{k + 1}, center_of_mass: [x_{k + 1}, h]}}")
     w.add("connections:")
     for b in names:
-        if rough:
-            w.add(f"  - {{type: sliding, body: {b}, at: {b}, normal: [0, 1], sliding: [1, 0], mu: mu}}")
-        else:
-            w.add(f"  - {{type: roller, body: {b}, at: {b}, normal: [0, 1]}}")
+        w.add(contact(b, rough, "[0, 1]", "[1, 0]"))
     w.add(f"  - {{type: force, on: {names[-1]}, at: {names[-1]}, force: [F, 0]}}")
     w.add("strings:")
     for k in range(n - 1):
