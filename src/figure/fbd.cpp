@@ -310,7 +310,8 @@ struct FbdDraw {
         V tail = vp(f.arrows[i].from) + by, head = vp(f.arrows[i].to) + by;
         // A pull leaving the outline leaves it still where it now is: a strand off a pulley
         // block's rim, not from a point beside it.
-        const Drawn& d = *std::find_if(drawn.begin(), drawn.end(), [&](const Drawn& x) { return x.body == key.first; });
+        const Drawn& d =
+            *std::find_if(drawn.begin(), drawn.end(), [body = key.first](const Drawn& x) { return x.body == body; });
         const V anchor = d.centre + (offsets[i] + shift) * perp(u);
         if (!pending[i].push && boundary_distance(d.outline, vp(f.arrows[i].from)) < 0.05 &&
             inside(d.outline, anchor)) {
