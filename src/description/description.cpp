@@ -203,12 +203,15 @@ struct Reader {
             diags.error(
                 where(dr, file),
                 "'draw' of " + what +
-                    " is not a mapping (expected {shape: rectangle, size: [w, h]} or {shape: circle, size: [d]})");
-          else if (check_map(dr, {"shape", "size"}, "'draw' of " + what, file, diags)) {
+                    " is not a mapping (expected {shape: rectangle, size: [w, h]}, {shape: circle, size: [d]} or "
+                    "{shape: wedge, size: [base, height]})");
+          else if (check_map(dr, {"shape", "size", "face"}, "'draw' of " + what, file, diags)) {
             b.draw_shape = opt_scalar(dr, "shape", "'draw' of " + what);
             b.draw_size = opt_vector(dr, "size", "'draw' of " + what);
+            b.draw_face = opt_scalar(dr, "face", "'draw' of " + what);
             if (!b.draw_shape)
-              diags.error(where(dr, file), "'draw' of " + what + " has no 'shape' (expected rectangle or circle)");
+              diags.error(where(dr, file),
+                          "'draw' of " + what + " has no 'shape' (expected rectangle, circle or wedge)");
           }
         }
       }

@@ -55,9 +55,11 @@ struct BodyDesc {
   std::optional<Text> inertia;
   std::optional<Text> shape_kind;
   std::optional<VectorDesc> shape_size;
-  // How the free body diagram draws it: `draw: {shape: rectangle | circle, size: [w, h] | [d]}`
+  // How the figures draw it: `draw: {shape: rectangle | circle | wedge, size: [w, h] | [d] |
+  // [base, height], face: left | right}` (a wedge's sloping face: right, else left)
   std::optional<Text> draw_shape;
   std::optional<VectorDesc> draw_size;
+  std::optional<Text> draw_face;
   Location at;
 };
 

@@ -87,7 +87,7 @@ Equation amb_along(const Model& m, const std::vector<int>& bodies, bool system, 
   return eq;
 }
 
-// A particle: no angle, no moment of inertia, no shape or size to draw, and no load on it
+// A particle: no angle, no moment of inertia (a shape to draw, `draw:`, is drawing only), and no load on it
 // away from its center of mass, nor a couple. It does not turn, and no balance of its moments
 // is written (it would read 0 = 0, or ask a single contact to balance a moment it cannot). A
 // force from another particle, at that particle's center (a block pressing on the block
@@ -99,7 +99,7 @@ Equation amb_along(const Model& m, const std::vector<int>& bodies, bool system, 
 bool particle(const Model& m, int body) {
   const auto bare = [&](const Body& b) {
     // (A body with an angle turns, inertia or not: a bob on a light rod has its angle's balance.)
-    return b.angle.is_zero() && b.inertia.is_zero() && b.has_cm && b.drawn_shape.empty() && b.drawn_size.empty();
+    return b.angle.is_zero() && b.inertia.is_zero() && b.has_cm;
   };
   const Body& b = m.bodies[static_cast<std::size_t>(body)];
   if (!bare(b)) return false;

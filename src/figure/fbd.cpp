@@ -7,12 +7,14 @@
 #include <set>
 
 #include "expr/print.hpp"
+#include "equations/equations.hpp"
 #include "expr/trig.hpp"
 #include "figure/figure.hpp"
 #include "figure/geometry.hpp"
 #include "figure/labels.hpp"
 #include "model/forces.hpp"
 #include "model/kinematics.hpp"
+#include "model/path.hpp"
 #include "numeric/layout.hpp"
 
 namespace tackle {
@@ -79,6 +81,39 @@ struct FbdDraw {
     return sqrt(fewer_trig_terms(squared.expand()));
   }
 
+  // A known inertial term across more than one axis whose length is a perfect square's root
+  // (a bob's m l dot(theta)^2 towards its pin): one arrow along it, as the book draws it,
+  // labelled with its length. False where it is not one (the axes' components drawn instead).
+  bool along_one_line(int body, const Vec& c, std::optional<std::array<double, 3>> at, const ex& factor, bool at_cm) {
+    int across = 0;
+    for (int k = 0; k < m.dims(); ++k) across += !c[k].is_zero();
+    if (across < 2) return false;
+    ex squared = 0;
+    for (int k = 0; k < m.dims(); ++k) squared += pow(c[k], 2);
+    squared = squared.expand();
+    std::optional<ex> root;
+    for (const ex& form : {squared, fewer_trig_terms(squared), pythagoras(squared, true), pythagoras(squared, false)})
+      if ((root = square_root_of(form))) break;
+    if (!root) return false;
+    // Its sign where the rates are not given at the layout's numbers: a length even in every
+    // rate (dot(theta)^2) has the sign it has with the rates at 1.
+    exmap at_one, turned;
+    for (const Coordinate& q : m.coordinates) {
+      at_one[q.rate] = 1;
+      turned[q.rate] = -q.rate;
+    }
+    if (!(root->subs(turned) - *root).expand().is_zero()) return false;
+    const auto value = num(root->subs(at_one));
+    if (!value || std::fabs(*value) < 1e-12) return false;
+    const ex length = *value < 0 ? -*root : *root;
+    Vec unit = zero_vec();
+    for (int k = 0; k < m.dims(); ++k) unit[k] = normal(c[k] / length);
+    const auto numbers = point3(unit);
+    if (!numbers || len(proj(*numbers)) < 1e-9) return false;
+    pending.push_back({body, at, normalized(proj(*numbers)), factor * length, true, at_cm});
+    return true;
+  }
+
   void decompose(int body, const Vec& force, std::optional<std::array<double, 3>> at, const ex& factor, bool dashed,
                  bool at_cm) {
     for (const ForcePart& part : split_force(m, force, unknowns, num)) {
@@ -103,6 +138,7 @@ struct FbdDraw {
         pending.push_back({body, at, normalized(d), factor * label, dashed, at_cm, push});
         continue;
       }
+      if (dashed && along_one_line(body, part.coefficients, at, factor, at_cm)) continue;
       for (int k = 0; k < m.dims(); ++k) {
         const ex& rk = part.coefficients[k];
         if (rk.is_zero()) continue;
@@ -128,6 +164,10 @@ struct FbdDraw {
         else
           failed = true;
       }
+      // A particle's forces act at its center (a block under a block: the push at the upper
+      // one's center is a push on its top face): it is drawn as a block, not the box of
+      // points out to the other's center.
+      if (proj.dims > 1 && particle(m, bodies[i])) continue;
       for (const auto& l : m.loads)
         if (l.body == bodies[i] && l.at && proj.dims > 1) {
           if (auto p = point3(*l.at))
@@ -155,9 +195,22 @@ struct FbdDraw {
     scale = extent > 1e-9 ? body_extent / extent : 1;
   }
 
+  // The blocks resting on a face (a block on a wedge), turned along it (figure/contacts.cpp).
+  std::map<int, V> along_faces() const {
+    std::map<int, V> along;
+    if (proj.dims != 2) return along;
+    std::vector<std::vector<std::array<double, 3>>> centres(m.bodies.size());
+    for (std::size_t b = 0; b < m.bodies.size(); ++b)
+      if (m.bodies[b].has_cm)
+        if (auto p = point3(m.bodies[b].cm)) centres[b].push_back(*p);
+    for (const Resting& r : resting(m, num, proj, centres)) along.emplace(r.rider, face_way(r.normal));
+    return along;
+  }
+
   // Outlines: 1-D bodies side by side, the others at their centers of mass (else their
   // first point).
   void outlines() {
+    const std::map<int, V> along = along_faces();
     for (std::size_t i = 0; i < bodies.size(); ++i) {
       const Body& b = m.bodies[bodies[i]];
       V centre;
@@ -168,8 +221,9 @@ struct FbdDraw {
       } else if (!body_points[i].empty()) {
         centre = scale * proj(body_points[i].front());
       }
-      const Drawn d =
-          draw_body(m, bodies[i], body_points[i], proj, scale, num, centre, std::nullopt, particle_side, 0.3);
+      const auto a = along.find(bodies[i]);
+      const Drawn d = draw_body(m, bodies[i], body_points[i], proj, scale, num, centre,
+                                a == along.end() ? std::nullopt : std::optional<V>(a->second), particle_side, 0.3);
       f.outlines.push_back(d.outline);
       drawn.push_back(d);
     }
@@ -258,6 +312,11 @@ struct FbdDraw {
           tail = anchor;
           head = anchor + arrow_length * p.direction;
         }
+        // From a point inside the body (its center of mass, a pin at a disk's center), long
+        // enough to leave it: the head and its label outside the outline.
+        if (!p.push && !d.particle && inside(d.outline, tail))
+          head =
+              tail + std::max(arrow_length, len(exit_point(d.outline, tail, p.direction) - tail) + 0.7) * p.direction;
       };
       auto clashes = [&] {
         for (const auto& [t, h] : placed) {
@@ -324,13 +383,15 @@ struct FbdDraw {
     }
   }
 
-  // Dots at the named points where forces act (2-D and 3-D), and at each centre of mass.
+  // Dots at the named points where forces act (2-D and 3-D), and at each centre of mass; not
+  // on a body drawn around one point (a bob: its forces drawn at it, not at a pin away from it).
   void dots() {
     if (proj.dims <= 1) return;
     std::set<std::string> named;
-    for (int bi : bodies) {
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      const int bi = bodies[i];
       for (const auto& l : m.loads)
-        if (l.body == bi && l.at && !l.at_name.empty() && !internal.count(force_key(l.origin)) &&
+        if (l.body == bi && !drawn[i].particle && l.at && !l.at_name.empty() && !internal.count(force_key(l.origin)) &&
             std::any_of(m.points.begin(), m.points.end(), [&](const Point& p) { return p.name == l.at_name; }) &&
             named.insert(l.at_name).second) {
           FigureDot dot;
@@ -380,6 +441,42 @@ struct FbdDraw {
       }
   }
 
+  // The mass-times-acceleration diagram beside the free body diagram, as the book draws the
+  // two (the forces on the left equal m a_G and I alpha on the right): the bodies again, past
+  // an equals sign, m a_G from each center of mass (one arrow per unknown, the known part by
+  // axes) and I alpha as a dashed arc about it. None where nothing accelerates (statics).
+  void kinetic() {
+    Figure forces = std::move(f);
+    f = Figure{};
+    f.outlines = forces.outlines;
+    pending.clear();
+    for (std::size_t i = 0; i < bodies.size(); ++i) inertial(i);
+    if (pending.empty() && f.couples.empty()) {
+      f = std::move(forces);
+      return;
+    }
+    double middle = 0;
+    for (const Drawn& d : drawn) {
+      middle += d.centre.y / static_cast<double>(drawn.size());
+      if (proj.dims > 1 && m.bodies[d.body].has_cm) f.dots.push_back({fp(d.centre), std::nullopt});
+    }
+    arrows();
+    labels();
+    measure(forces);
+    measure(f);
+    const double room = 1.2;  // between the two diagrams, the equals sign in its middle
+    const V by{forces.max_x - f.min_x + room, 0};
+    shift(f, by);
+    FigureLabel equals;
+    equals.tex = "=";
+    equals.width = char_width + 0.12;
+    equals.height = label_height;
+    equals.at = fp({forces.max_x + room / 2, middle});
+    forces.texts.push_back(equals);
+    append(forces, f);
+    f = std::move(forces);
+  }
+
   // The axes, and the caption naming the bodies ("the system" of more than one drawn as one).
   void close(bool system) {
     std::vector<V> directions;
@@ -397,292 +494,6 @@ struct FbdDraw {
 };
 
 }  // namespace
-
-namespace fig {
-
-void finish(Figure& f, const std::vector<V>& directions, const std::vector<std::string>& names) {
-  settle_labels(f);  // the figure whole: each label clear of everything drawn (figure/labels.hpp)
-  // Bounds, then the axes at the lower left, outside everything else.
-  f.min_x = f.min_y = 1e300;
-  f.max_x = f.max_y = -1e300;
-  auto grow = [&](V p) {
-    f.min_x = std::min(f.min_x, p.x);
-    f.max_x = std::max(f.max_x, p.x);
-    f.min_y = std::min(f.min_y, p.y);
-    f.max_y = std::max(f.max_y, p.y);
-  };
-  auto grow_label = [&](const FigureLabel& l) {
-    grow(vp(l.at) + V{l.width / 2, l.height / 2});
-    grow(vp(l.at) - V{l.width / 2, l.height / 2});
-  };
-  for (const auto& o : f.outlines) {
-    if (o.shape == FigureOutline::Shape::circle) {
-      grow(vp(o.centre) + V{o.radius, o.radius});
-      grow(vp(o.centre) - V{o.radius, o.radius});
-    }
-    for (const auto& c : o.corners) grow(vp(c));
-  }
-  for (const auto& l : f.lines)
-    for (const auto& p : l.points) grow(vp(p));
-  for (const auto& t : f.texts) grow_label(t);
-  for (const auto& a : f.arrows) {
-    grow(vp(a.from));
-    grow(vp(a.to));
-    grow_label(a.label);
-  }
-  for (const auto& c : f.couples) {
-    grow(vp(c.centre) + V{c.radius, c.radius});
-    grow(vp(c.centre) - V{c.radius, c.radius});
-    grow_label(c.label);
-  }
-  for (const auto& d : f.dots) {
-    grow(vp(d.at));
-    if (d.label) grow_label(*d.label);
-  }
-  const V origin{f.min_x - 1.3, f.min_y + 0.2};
-  for (std::size_t k = 0; k < directions.size(); ++k) {
-    FigureArrow a;
-    a.axis = true;
-    a.from = fp(origin);
-    const V d = directions[k];
-    a.to = fp(origin + 0.8 * d);
-    a.label.tex = names[k];
-    a.label.width = char_width + 0.12;
-    a.label.height = label_height;
-    a.label.at = fp(origin + 1.05 * d);
-    grow(vp(a.from));
-    grow(vp(a.to));
-    grow_label(a.label);
-    f.arrows.push_back(a);
-  }
-}
-
-namespace {
-
-// A body's box in model space: the bounding box of its points (reaching as far beyond a
-// center of mass on one of its edges), and its longest side before that.
-struct Bounds {
-  std::array<double, 3> lo, hi;
-  double longest = 0;
-};
-
-// What the ways of drawing a body share: the body, its points (model units), how they go
-// onto paper, and the body as drawn so far.
-struct BodyShape {
-  const Model& m;
-  const Body& b;
-  const std::vector<std::array<double, 3>>& points;
-  const Projection& proj;
-  double scale;
-  const Number& num;
-  Drawn& d;
-
-  // A turning particle (a pendulum's bob): a small disk at its center, the forces at it.
-  void turning_particle() {
-    d.outline.shape = FigureOutline::Shape::circle;
-    d.outline.centre = fp(d.centre);
-    d.outline.radius = 0.3;
-    d.particle = true;
-  }
-
-  // Its own shape (`draw:`) turned by the body's angle where it has one: a circle, a rod (a
-  // little longer, so that no force at an end runs along an edge), else a rectangle.
-  void own_shape(double side, double overhang) {
-    const double unit = proj.dims == 1 ? side : scale;
-    const double turned = proj.dims == 2 ? num(b.angle).value_or(0) + proj.turn : 0;
-    const V along{std::cos(turned), std::sin(turned)};
-    if (b.drawn_shape == "circle") {
-      d.outline.shape = FigureOutline::Shape::circle;
-      d.outline.centre = fp(d.centre);
-      d.outline.radius = unit * num(b.drawn_size[0]).value_or(1) / 2;
-    } else if (b.drawn_shape == "rod") {
-      const double length = unit * num(b.drawn_size[0]).value_or(1);
-      d.outline = rectangle(d.centre, along, length + overhang, std::min(0.35, 0.12 * length));
-    } else {
-      d.outline =
-          rectangle(d.centre, along, unit * num(b.drawn_size[0]).value_or(1), unit * num(b.drawn_size[1]).value_or(1));
-    }
-    d.outline.name = b.name;
-    d.particle = proj.dims == 1 || points.size() <= 1;  // else forces at their points
-  }
-
-  // Whether every point is in one place (a particle).
-  bool one_place() const {
-    for (const auto& p : points)
-      for (int k = 0; k < 3; ++k)
-        if (std::fabs(p[k] - points[0][k]) > 1e-9 * (1 + std::fabs(p[k]))) return false;
-    return true;
-  }
-
-  // A particle: a pulley block's disk (1-D, no mass), else a block `side` wide turned to its
-  // line of motion (`along`, else its acceleration's), as a block on an incline is drawn.
-  void particle(std::optional<V> along, double side) {
-    d.particle = true;
-    if (proj.dims == 1 && (!b.has_mass || b.mass.is_zero())) {
-      d.outline.shape = FigureOutline::Shape::circle;
-      d.outline.centre = fp(d.centre);
-      d.outline.radius = 0.45;
-    } else {
-      V way{1, 0};
-      if (along) {
-        way = *along;
-      } else if (proj.dims > 1) {
-        way = acceleration_way();
-      }
-      d.outline = rectangle(d.centre, way, side, side * 0.8);
-    }
-    d.outline.name = b.name;
-  }
-
-  // The direction of its acceleration on paper, pointing right: the coefficient of the
-  // unknown in it, or the given vector (along x where it cannot be evaluated).
-  V acceleration_way() const {
-    V way{1, 0};
-    const Vec acceleration = kinematics::acceleration(m, b);
-    std::optional<ex> u;
-    for (const ex& c : m.candidates)
-      for (int k = 0; k < m.dims() && !u; ++k)
-        if (acceleration[k].has(c)) u = c;
-    std::array<double, 3> a{0, 0, 0};
-    bool ok = true;
-    for (int k = 0; k < m.dims(); ++k) {
-      const ex ak = u ? acceleration[k].expand().coeff(*u, 1) : acceleration[k];
-      auto v = num(ak);
-      if (!v)
-        ok = false;
-      else
-        a[k] = *v;
-    }
-    if (ok && len(proj(a)) > 1e-9) way = normalized(proj(a));
-    if (way.x < 0) way = -1 * way;
-    return way;
-  }
-
-  // The bounding box of its points; a center of mass on an edge of the box (a suitcase's at
-  // the height h of its middle): the body reaches as far beyond it.
-  Bounds bounds() const {
-    Bounds x{points[0], points[0]};
-    for (const auto& p : points)
-      for (int k = 0; k < 3; ++k) {
-        x.lo[k] = std::min(x.lo[k], p[k]);
-        x.hi[k] = std::max(x.hi[k], p[k]);
-      }
-    for (int k = 0; k < 3; ++k) x.longest = std::max(x.longest, x.hi[k] - x.lo[k]);
-    if (b.has_cm)
-      if (auto cm = point3(m, num, b.cm))
-        for (int k = 0; k < 3; ++k) {
-          const double span = x.hi[k] - x.lo[k];
-          if (span <= 0.08 * x.longest) continue;
-          if ((*cm)[k] >= x.hi[k] - 0.02 * span)
-            x.hi[k] = x.lo[k] + 2 * span;
-          else if ((*cm)[k] <= x.lo[k] + 0.02 * span)
-            x.lo[k] = x.hi[k] - 2 * span;
-        }
-    return x;
-  }
-
-  // From its points: a bar from the farthest pair of them (a little longer, so that no force
-  // at an end runs along an edge) where the box spreads along one axis, else the box's
-  // outline (a plate or a box); centred in its corners without a center of mass.
-  void from_points(double overhang) {
-    const Bounds x = bounds();
-    int spread = 0;
-    for (int k = 0; k < 3; ++k) spread += x.hi[k] - x.lo[k] > 0.08 * x.longest;
-    if (spread <= 1) {
-      V a = scale * proj(points[0]), c = a;
-      double far = -1;
-      for (const auto& p : points)
-        for (const auto& q : points)
-          if (len(proj(p) - proj(q)) > far) {
-            far = len(proj(p) - proj(q));
-            a = scale * proj(p);
-            c = scale * proj(q);
-          }
-      d.outline = rectangle(0.5 * (a + c), c - a, len(c - a) + overhang, std::min(1.0, 0.3 * len(c - a)));
-      d.outline.name = b.name;
-    } else {
-      std::vector<V> corners;
-      for (int c = 0; c < 8; ++c) {
-        std::array<double, 3> p{(c & 1) ? x.hi[0] : x.lo[0], (c & 2) ? x.hi[1] : x.lo[1], (c & 4) ? x.hi[2] : x.lo[2]};
-        corners.push_back(scale * proj(p));
-      }
-      d.outline.corners = convex_hull(corners);
-    }
-    V sum{0, 0};
-    for (const auto& c : d.outline.corners) sum = sum + vp(c);
-    if (!b.has_cm) d.centre = (1.0 / static_cast<double>(d.outline.corners.size())) * sum;
-  }
-};
-
-}  // namespace
-
-Drawn draw_body(const Model& m, int body, const std::vector<std::array<double, 3>>& points, const Projection& proj,
-                double scale, const Number& num, V centre, std::optional<V> along, double side, double overhang) {
-  const Body& b = m.bodies[body];
-  Drawn d;
-  d.body = body;
-  d.outline.name = b.name;
-  d.centre = centre;
-  BodyShape shape{m, b, points, proj, scale, num, d};
-  if (b.drawn_shape.empty() && proj.dims == 2 && !b.angle.is_zero() && b.inertia.is_zero()) {
-    shape.turning_particle();
-  } else if (!b.drawn_shape.empty()) {
-    shape.own_shape(side, overhang);
-  } else if (proj.dims == 1 || points.size() <= 1 || shape.one_place()) {
-    shape.particle(along, side);
-  } else {
-    shape.from_points(overhang);
-  }
-  return d;
-}
-
-std::vector<FigurePoint> zigzag(V a, V b, V across) {
-  // Straight leads, then coils.
-  const double l = len(b - a);
-  const V u = normalized(b - a);
-  const double lead = std::min(0.25, 0.2 * l);
-  const int n = std::max(4, static_cast<int>((l - 2 * lead) / 0.22));
-  std::vector<FigurePoint> out{fp(a), fp(a + lead * u)};
-  for (int i = 0; i < n; ++i) {
-    const double t = lead + (i + 0.5) * (l - 2 * lead) / n;
-    out.push_back(fp(a + t * u + ((i % 2 ? -1 : 1) * 0.18) * across));
-  }
-  out.push_back(fp(b - lead * u));
-  out.push_back(fp(b));
-  return out;
-}
-
-void draw_strand(Figure& f, const std::string& as, V p, V q, V across) {
-  if (as == "spring") {
-    f.lines.push_back({zigzag(p, q, across), false});
-  } else if (as == "damper") {
-    // A dashpot: the cylinder open towards the far end, the piston in it.
-    const V u = normalized(q - p);
-    const double l = len(q - p), mid = l / 2, h = 0.22, w = std::min(0.35, 0.3 * l);
-    f.lines.push_back({{fp(p), fp(p + (mid - w) * u)}, false});
-    f.lines.push_back({{fp(p + (mid + w) * u + h * across), fp(p + (mid - w) * u + h * across),
-                        fp(p + (mid - w) * u - h * across), fp(p + (mid + w) * u - h * across)},
-                       false});
-    f.lines.push_back({{fp(p + mid * u + 0.7 * h * across), fp(p + mid * u - 0.7 * h * across)}, false});
-    f.lines.push_back({{fp(p + mid * u), fp(q)}, false});
-  } else {
-    f.lines.push_back({{fp(p), fp(q)}, false});
-  }
-}
-
-void draw_ground(Figure& f, V a, V b, V into) {
-  f.lines.push_back({{fp(a), fp(b)}, false});
-  const double l = len(b - a);
-  const V u = normalized(b - a);
-  for (double s = 0; s <= l + 1e-9; s += hatch_step)
-    f.lines.push_back({{fp(a + s * u), fp(a + s * u + hatch * into + hatch * u)}, true});
-}
-
-std::optional<std::array<double, 3>> point3(const Model& m, const Number& num, const Vec& v) {
-  return point_at(m, num, v);
-}
-
-}  // namespace fig
 
 // The numbers the geometry is drawn at (layout_numbers), made once per model.
 FigureMaker::FigureMaker(const Model& m) : FigureMaker(m, {}) {}
@@ -709,14 +520,12 @@ std::optional<Figure> FigureMaker::draw(const std::vector<int>& bodies, bool sys
   if (!s.gather()) return std::nullopt;
   s.choose_scale();
   s.outlines();
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    s.loads_on(i);
-    s.inertial(i);
-  }
+  for (std::size_t i = 0; i < bodies.size(); ++i) s.loads_on(i);
   s.arrows();
   s.centre_sides();
   s.dots();
   s.labels();
+  s.kinetic();
   s.close(system);
   return s.f;
 }

@@ -49,6 +49,7 @@ struct FigureOutline {
 struct FigureDot {
   FigurePoint at;
   std::optional<FigureLabel> label;  // a named point
+  bool pin = false;                  // a pin or a hinge (the sketch's): an open circle, not a filled dot
 };
 
 // A line drawn through points: a string, a spring's coils, a support, the hatching of the ground.

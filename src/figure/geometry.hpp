@@ -115,6 +115,12 @@ inline double reach_along(const FigureOutline& o, V p, V u) {
 }
 
 /// The outline's extent along u: [lo, hi] of dot(x, u) over it.
+/// Along a face whose normal is `n` (unit, on paper): to the right, else up.
+inline V face_way(V n) {
+  const V t = perp(n);
+  return t.x < -1e-9 || (std::fabs(t.x) <= 1e-9 && t.y < 0) ? -1 * t : t;
+}
+
 inline std::pair<double, double> extent_along(const FigureOutline& o, V u) {
   if (o.shape == FigureOutline::Shape::circle)
     return {dot(vp(o.centre), u) - o.radius, dot(vp(o.centre), u) + o.radius};
@@ -291,6 +297,17 @@ struct Stacked {
 [[nodiscard]] std::vector<Stacked> stacked(const Model& m, const Number& num, const Projection& proj,
                                            const std::vector<std::vector<std::array<double, 3>>>& body_points);
 
+/// A block resting on a face of a body drawn with its own shape (a block on a wedge): a
+/// contact between them whose normal force is a contact_normal, not through both centers.
+/// `normal`: on paper, the way the base pushes the rider. The figures turn the rider along
+/// the face, and the sketch sets it on the face.
+struct Resting {
+  int rider, base;
+  V normal;
+};
+[[nodiscard]] std::vector<Resting> resting(const Model& m, const Number& num, const Projection& proj,
+                                           const std::vector<std::vector<std::array<double, 3>>>& body_points);
+
 /// A body's outline, as the free body diagrams and the sketches draw it: its own shape
 /// (`draw:`) turned by its angle, a small disk for a turning particle (a pendulum's bob), a
 /// block `side` wide around a body whose `points` (model units: its center of mass and where
@@ -302,6 +319,9 @@ struct Stacked {
                               const Projection& proj, double scale, const Number& num, V centre, std::optional<V> along,
                               double side, double overhang);
 
+constexpr double support_width = 1.0;              // a pin's or an anchor's piece of ground
+constexpr double pin_drop = 0.45;                  // a pin support's triangle, from the pin to its base
+constexpr V down{0, -1};                           // down the page (gravity's way, in a sketch)
 constexpr double hatch = 0.22, hatch_step = 0.25;  // the ground's hatching: its strokes and their spacing
 
 /// A strand from p to q as a sketch draws it: a spring's coils (across `across`), a damper's
@@ -321,6 +341,20 @@ inline FigureLabel place_at_end(Layout& lay, const FigureArrow& a, bool pressing
   return lay.place(a.label.tex, {end + out * way, 0.5 * (t + h) + beside * n, 0.5 * (t + h) - beside * n});
 }
 
+/// The ground that holds a pin at `p` (on paper) of a body whose center is `below_of`: a
+/// hanger up to a hatched ceiling when the body hangs below it (above a disk it is in), else
+/// the book's triangle on hatched ground.
+void draw_support(Figure& f, V p, V below_of);
+/// Where a block resting on a face (Resting) is drawn: its center moved along the face's
+/// normal until its side lies on the base's outline.
+[[nodiscard]] V on_face(const FigureOutline& base, const Drawn& rider, V normal);
+
+/// Sets the figure's bounds to everything drawn in it, labels included.
+void measure(Figure& f);
+/// Moves everything drawn in the figure by `by`.
+void shift(Figure& f, V by);
+/// Draws `more` into `f` (over it, in the same units).
+void append(Figure& f, const Figure& more);
 /// Bounds of everything drawn, then the axes at the lower left, outside it: `directions`
 /// are the axes' directions on paper, `names` their names.
 void finish(Figure& f, const std::vector<V>& directions, const std::vector<std::string>& names);

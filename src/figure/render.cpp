@@ -318,7 +318,8 @@ std::string to_tikz(const Figure& f) {
   }
   for (const auto& t : f.texts) out += tikz_label(t);
   for (const auto& d : f.dots) {
-    out += "  \\fill (" + num(d.at.x) + "," + num(d.at.y) + ") circle (1.5pt);\n";
+    out += d.pin ? "  \\filldraw[fill=white, thick] (" + num(d.at.x) + "," + num(d.at.y) + ") circle (2.5pt);\n"
+                 : "  \\fill (" + num(d.at.x) + "," + num(d.at.y) + ") circle (1.5pt);\n";
     if (d.label) out += tikz_label(*d.label);
   }
   for (const auto& a : f.arrows) {
@@ -386,7 +387,8 @@ std::string to_svg(const Figure& f, const std::string& ids) {
   for (const auto& t : f.texts) out += label(t);
   for (const auto& d : f.dots) {
     out += "<circle cx=\"" + num((d.at.x - f.min_x) * px) + "\" cy=\"" + num((f.max_y - d.at.y) * px) +
-           "\" r=\"2.5\" fill=\"black\"/>\n";
+           (d.pin ? "\" r=\"3.5\" fill=\"white\" stroke=\"black\" stroke-width=\"1.4\"/>\n"
+                  : "\" r=\"2.5\" fill=\"black\"/>\n");
     if (d.label) out += label(*d.label);
   }
   for (const auto& a : f.arrows) {

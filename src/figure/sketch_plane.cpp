@@ -22,11 +22,8 @@ namespace {
 constexpr double sketch_extent = 6.0;  // the mechanism's largest extent on paper
 constexpr double largest_body = 3.5;   // and its largest body's, at most
 constexpr double pulley_radius = 0.25;
-constexpr double support_width = 1.0;   // a pin's or an anchor's piece of ground
-constexpr double pin_drop = 0.45;       // a pin support's triangle, from the pin to its base
 constexpr double surface_margin = 0.6;  // the ground beyond the bodies on it
 constexpr double lane = 0.3;            // a spring and a damper side by side, this far apart
-constexpr V down{0, -1};                // down the page (gravity's way)
 
 // A ground surface: the line of points x with dot(x, n) = offset, from lo to hi along
 // t = perp(n); the ground is on the side away from n.
@@ -65,6 +62,7 @@ struct PlaneSketch {
   std::vector<Mark> marks;
   std::vector<Surface> surfaces;
   std::set<int> dotted;
+  std::set<int> pinned;                            // of the dotted: pins and hinges (drawn open)
   std::vector<std::pair<const Mark*, ex>> marked;  // the angles marked, with the symbol each is named by
 
   // Turned so that gravity points down the page.
@@ -181,9 +179,7 @@ struct PlaneSketch {
       if (!n || len(proj(*n)) < 1e-12) return false;
       const V u = normalized(proj(*n));
       surfaces_of.push_back({&d, u});
-      V t = perp(u);
-      if (t.x < -1e-9 || (std::fabs(t.x) <= 1e-9 && t.y < 0)) t = -1 * t;
-      along.emplace(d.body, t);
+      along.emplace(d.body, face_way(u));
     }
     return true;
   }
@@ -191,18 +187,36 @@ struct PlaneSketch {
   // Bodies: each outline at its place; a turning particle (a pendulum's bob) hangs from the
   // farthest point that holds it.
   void draw_bodies() {
-    for (std::size_t b = 0; b < m.bodies.size(); ++b) {
-      if (body_points[b].empty()) continue;  // nowhere: not drawn
-      const Body& body = m.bodies[b];
-      const V centre = scale * proj(body_points[b].front());
+    const std::vector<Resting> rests = resting(m, num, proj, body_points);
+    for (const Resting& r : rests) along.emplace(r.rider, face_way(r.normal));
+    auto draw_at = [&](std::size_t b, V centre) {
       const auto a = along.find(static_cast<int>(b));
       drawn[b] = draw_body(m, static_cast<int>(b), body_points[b], proj, scale, num, centre,
                            a == along.end() ? std::nullopt : std::optional<V>(a->second), side, 0);
+    };
+    for (std::size_t b = 0; b < m.bodies.size(); ++b)
+      if (!body_points[b].empty()) draw_at(b, scale * proj(body_points[b].front()));  // else nowhere: not drawn
+    // A block resting on a face (a block on a wedge) sits on it: its center moved along the
+    // face's normal until its side lies on the face.
+    for (const Resting& r : rests) {
+      draw_at(static_cast<std::size_t>(r.rider), on_face(drawn[r.base]->outline, *drawn[r.rider], r.normal));
+    }
+    for (std::size_t b = 0; b < m.bodies.size(); ++b) {
+      if (!drawn[b]) continue;
+      const Body& body = m.bodies[b];
+      const V centre = drawn[b]->centre;
       f.outlines.push_back(drawn[b]->outline);
       if (body.drawn_shape.empty() && !body.angle.is_zero() && body.inertia.is_zero()) {
+        // Its rod (or string) to the farthest point that holds it: its own, or a pin of
+        // another body (the cart's P).
         V far = centre;
-        for (const auto& p : body_points[b])
-          if (len(scale * proj(p) - centre) > len(far - centre)) far = scale * proj(p);
+        std::vector<V> holders;
+        for (const auto& p : body_points[b]) holders.push_back(scale * proj(p));
+        for (const auto& l : m.loads)
+          if (l.body == static_cast<int>(b) && l.at)
+            if (auto p = point3(m, num, *l.at)) holders.push_back(scale * proj(*p));
+        for (const V& p : holders)
+          if (len(p - centre) > len(far - centre)) far = p;
         if (len(far - centre) > drawn[b]->outline.radius)
           f.lines.push_back({{fp(far), fp(centre + drawn[b]->outline.radius * normalized(far - centre))}, false});
       }
@@ -302,19 +316,7 @@ struct PlaneSketch {
 
   // A pin's support at p: from a ceiling above when what it holds (at below_of) hangs below
   // it (or turns about its own center), else a triangle on a hatched base below.
-  void support(V p, V below_of) {
-    if (len(below_of - p) < 0.05 || dot(below_of - p, down) > 0.5 * len(below_of - p)) {
-      double top = p.y + 0.7;
-      for (const auto& o : f.outlines)
-        if (o.shape == FigureOutline::Shape::circle && len(vp(o.centre) - p) < o.radius)
-          top = std::max(top, o.centre.y + o.radius + 0.35);
-      f.lines.push_back({{fp(p), fp(V{p.x, top})}, false});
-      draw_ground(f, V{p.x - support_width / 2, top}, V{p.x + support_width / 2, top}, V{0, 1});
-    } else {
-      f.lines.push_back({{fp(p), fp(p + V{-0.3, -pin_drop}), fp(p + V{0.3, -pin_drop}), fp(p)}, false});
-      draw_ground(f, p + V{-support_width / 2, -pin_drop}, p + V{support_width / 2, -pin_drop}, down);
-    }
-  }
+  void support(V p, V below_of) { draw_support(f, p, below_of); }
 
   // Pins: the body held at its point by the ground (see support); pins and joints dotted.
   void pins() {
@@ -323,6 +325,7 @@ struct PlaneSketch {
       const V p = paper(d.point);
       if (d.as == "pin" && d.body >= 0 && drawn[d.body]) support(p, drawn[d.body]->centre);
       dotted.insert(d.point);
+      pinned.insert(d.point);
     }
   }
 
@@ -507,6 +510,7 @@ struct PlaneSketch {
     } else {
       dotted.insert(pts.front());
       dotted.insert(pts.back());
+      if (d.as == "rod") pinned.insert({pts.front(), pts.back()});
       if (fixed(pts.back()) && !held.count(pts.back()) && !on_a_body(paper(pts.back()))) {
         support(paper(pts.back()), paper(pts.front()));
         held.insert(pts.back());
@@ -750,10 +754,12 @@ struct PlaneSketch {
         for (V dir : {V{-1, 1}, V{1, 1}, V{-1, -1}, V{1, -1}, V{0, 1}, V{-1, 0}, V{1, 0}, V{0, -1}})
           cand.push_back(paper(p) + (k * r) * dir);
       dot.label = lay.place(default_tex(m.points[p].name), cand);
+      dot.pin = pinned.count(p) > 0;
       f.dots.push_back(dot);
     }
     for (int p : dotted)
-      if (std::find(shown.begin(), shown.end(), p) == shown.end()) f.dots.push_back({fp(paper(p)), std::nullopt});
+      if (std::find(shown.begin(), shown.end(), p) == shown.end())
+        f.dots.push_back({fp(paper(p)), std::nullopt, pinned.count(p) > 0});
   }
 };
 

@@ -46,10 +46,13 @@ struct Body {
   Vec given_acceleration = zero_vec();
   GiNaC::ex along_unknown = 0;
   // How the free body diagram draws it (`draw:`, else its `shape`): "" (from its points),
-  // "rectangle" (size: width, height), "circle" (size: diameter) or "rod" (size: length),
-  // centred on its center of mass and turned by its angle.
+  // "rectangle" (size: width, height), "circle" (size: diameter), "rod" (size: length) or
+  // "wedge" (size: base, height; a right triangle on its base, its sloping face to the right,
+  // or to the left where `drawn_face_left`), centred on its center of mass (a wedge's
+  // centroid) and turned by its angle. Drawing only: the mechanics never read it.
   std::string drawn_shape;
   std::vector<GiNaC::ex> drawn_size;
+  bool drawn_face_left = false;
   Location at;
 };
 

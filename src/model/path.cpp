@@ -33,37 +33,6 @@ std::optional<numeric> in_layout(const ex& e, const exmap& layout, std::string& 
   return std::nullopt;
 }
 
-// The root of a perfect square (a numeric times even powers), or nothing.
-std::optional<ex> square_root_of(const ex& squared) {
-  exmap repl;
-  const ex poly = squared.to_polynomial(repl);
-  lst syms;
-  std::set<ex, ex_is_less> seen;
-  for (const_preorder_iterator it = poly.preorder_begin(); it != poly.preorder_end(); ++it)
-    if (is_a<symbol>(*it) && seen.insert(*it).second) syms.append(*it);
-  const ex f = syms.nops() == 0 ? poly : sqrfree(poly, syms);
-  ex root = 1;
-  auto take = [&](const ex& factor) {
-    if (is_a<numeric>(factor)) {
-      if (!ex_to<numeric>(factor).is_positive()) return false;
-      root *= sqrt(factor);
-      return true;
-    }
-    if (is_a<power>(factor) && is_a<numeric>(factor.op(1)) && ex_to<numeric>(factor.op(1)).is_even()) {
-      root *= pow(factor.op(0), ex_to<numeric>(factor.op(1)) / 2);
-      return true;
-    }
-    return false;
-  };
-  if (is_a<mul>(f)) {
-    for (const auto& factor : f)
-      if (!take(factor)) return std::nullopt;
-  } else if (!take(f)) {
-    return std::nullopt;
-  }
-  return substituted(root, repl).expand();
-}
-
 // True when no root of an expression in the coordinates is left (the segment's direction
 // is then fixed while it changes length).
 bool is_polynomial_root(const ex& length) {
@@ -88,6 +57,38 @@ std::optional<ex> simplified_norm(const Vec& v, const exmap& layout, std::string
 }
 
 }  // namespace
+
+std::optional<ex> square_root_of(const ex& squared) {
+  exmap repl;
+  const ex poly = squared.to_polynomial(repl);
+  lst syms;
+  std::set<ex, ex_is_less> seen;
+  for (const_preorder_iterator it = poly.preorder_begin(); it != poly.preorder_end(); ++it)
+    if (is_a<symbol>(*it) && seen.insert(*it).second) syms.append(*it);
+  const ex f = syms.nops() == 0 ? poly : sqrfree(poly, syms);
+  ex root = 1;
+  // Each factor as it was (to_polynomial stands a symbol for a numeric's inverse, 1/4, too).
+  auto take = [&](const ex& stood) {
+    const ex factor = substituted(stood, repl);
+    if (is_a<numeric>(factor)) {
+      if (!ex_to<numeric>(factor).is_positive()) return false;
+      root *= sqrt(factor);
+      return true;
+    }
+    if (is_a<power>(factor) && is_a<numeric>(factor.op(1)) && ex_to<numeric>(factor.op(1)).is_even()) {
+      root *= pow(factor.op(0), ex_to<numeric>(factor.op(1)) / 2);
+      return true;
+    }
+    return false;
+  };
+  if (is_a<mul>(f)) {
+    for (const auto& factor : f)
+      if (!take(factor)) return std::nullopt;
+  } else if (!take(f)) {
+    return std::nullopt;
+  }
+  return root.expand();
+}
 
 std::optional<Path> make_path(const std::vector<int>& indices, const std::vector<Point>& points, int dims,
                               const exmap& layout, Diagnostics& diags, const Location& at, const std::string& label,

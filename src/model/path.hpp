@@ -40,6 +40,10 @@ struct Path {
 /// its squared length (a polynomial), returns the positive symbol that stands for the root.
 using NameTurningLength = std::function<GiNaC::ex(const Point& from, const Point& to, const GiNaC::ex& squared)>;
 
+/// The root of a perfect square (a positive numeric times even powers, of symbols or of
+/// functions such as sin(theta)), its sign as the powers' halves give it; or nothing.
+[[nodiscard]] std::optional<GiNaC::ex> square_root_of(const GiNaC::ex& squared);
+
 /// The path through `indices` in a problem with `dims` axes. A segment's length is
 /// |to - from| simplified (perfect squares come out of the root, sin^2 + cos^2 = 1), its sign
 /// and non-zero length decided by `layout` (parameter values and the layout's coordinates).

@@ -19,20 +19,25 @@ namespace {
 void draw_override(BuildContext& ctx, const BodyDesc& b, Body& body) {
   const std::string what = "'draw' of body '" + body.name + "'";
   const std::string& shape = b.draw_shape->text;
-  const std::size_t n = shape == "rectangle" ? 2 : shape == "circle" ? 1 : 0;
+  const std::size_t n = shape == "rectangle" || shape == "wedge" ? 2 : shape == "circle" ? 1 : 0;
   if (n == 0) {
-    ctx.diags.error(b.draw_shape->at, what + " has shape '" + shape + "' (expected rectangle or circle)");
+    ctx.diags.error(b.draw_shape->at, what + " has shape '" + shape + "' (expected rectangle, circle or wedge)");
     return;
   }
+  if (b.draw_face && (shape != "wedge" || (b.draw_face->text != "left" && b.draw_face->text != "right"))) {
+    ctx.diags.error(b.draw_face->at, what + " has face '" + b.draw_face->text + "' (expected " +
+                                         (shape == "wedge" ? "left or right" : "no 'face': only a wedge has one") +
+                                         ")");
+    return;
+  }
+  const std::string sizes = shape == "wedge" ? "[base, height]" : n == 2 ? "[width, height]" : "[diameter]";
   if (!b.draw_size) {
-    ctx.diags.error(b.draw_shape->at,
-                    what + " has no 'size' (expected " + (n == 2 ? "[width, height]" : "[diameter]") + ")");
+    ctx.diags.error(b.draw_shape->at, what + " has no 'size' (expected " + sizes + ")");
     return;
   }
   if (b.draw_size->items.size() != n) {
     ctx.diags.error(b.draw_size->at, what + ": 'size' has " + std::to_string(b.draw_size->items.size()) +
-                                         " entries (expected " + (n == 2 ? "2: [width, height]" : "1: [diameter]") +
-                                         ")");
+                                         " entries (expected " + std::to_string(n) + ": " + sizes + ")");
     return;
   }
   std::vector<ex> size;
@@ -50,6 +55,7 @@ void draw_override(BuildContext& ctx, const BodyDesc& b, Body& body) {
   }
   body.drawn_shape = shape;
   body.drawn_size = std::move(size);
+  body.drawn_face_left = b.draw_face && b.draw_face->text == "left";
 }
 
 // The moment of inertia about the center of mass (about the plane's normal): given, or

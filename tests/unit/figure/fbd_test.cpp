@@ -102,7 +102,7 @@ TEST_CASE("FBD: the suitcase's normal forces press on it from below, friction mu
   REQUIRE(figs.size() == 1);
   const Figure& f = figs[0];
   CHECK(f.caption == "Free body diagram of suitcase");
-  REQUIRE(f.outlines.size() == 1);
+  REQUIRE(f.outlines.size() == 2);  // the body, and again in its mass-times-acceleration diagram
   const FigurePoint A = dot_named(f, "A"), B = dot_named(f, "B");
   // N_A points up with its head at A; mu N_A points left from A (away from the body); mu N_B
   // points left with its head at B (pressing on it); the weight m g points down; m a_C is dashed.
@@ -126,6 +126,8 @@ TEST_CASE("FBD: the suitcase's normal forces press on it from below, friction mu
   const FigureArrow* ma = arrow(f, "m a_{C}");
   REQUIRE(ma);
   CHECK(ma->dashed);
+  // m a_C on the right, beside the forces: from the center of the suitcase drawn again.
+  CHECK(ma->from.x > std::max(fa->from.x, fb->from.x));
   // Two axes, x and y.
   CHECK(std::count_if(f.arrows.begin(), f.arrows.end(), [](const FigureArrow& x) { return x.axis; }) == 2);
 }
@@ -150,7 +152,7 @@ TEST_CASE("FBD: a system's diagram leaves out the forces inside it", "[figure]")
   const auto figs = figures_of(*a);
   REQUIRE(figs.size() == 1);
   CHECK(figs[0].caption == "Free body diagram of the system car1 and car2");
-  CHECK(figs[0].outlines.size() == 2);
+  CHECK(figs[0].outlines.size() == 4);  // the two cars, and again for m a
   std::vector<std::string> labels;
   for (const auto& x : figs[0].arrows)
     if (!x.axis) labels.push_back(x.label.tex);
@@ -368,7 +370,7 @@ TEST_CASE("FBD: a wrong 'draw' is located", "[figure][errors]") {
   };
   CHECK(errors("{shape: blob, size: [l]}") ==
         std::vector<std::string>{
-            "t.yaml:24:63: 'draw' of body 'suitcase' has shape 'blob' (expected rectangle or circle)"});
+            "t.yaml:24:63: 'draw' of body 'suitcase' has shape 'blob' (expected rectangle, circle or wedge)"});
   CHECK(errors("{shape: rectangle, size: [l]}") ==
         std::vector<std::string>{
             "t.yaml:24:80: 'draw' of body 'suitcase': 'size' has 1 entries (expected 2: [width, height])"});
@@ -377,6 +379,14 @@ TEST_CASE("FBD: a wrong 'draw' is located", "[figure][errors]") {
             "t.yaml:24:78: 'draw' of body 'suitcase': size '-l' is not a positive length with the given values"});
   CHECK(errors("{shape: circle}") ==
         std::vector<std::string>{"t.yaml:24:63: 'draw' of body 'suitcase' has no 'size' (expected [diameter])"});
+  CHECK(errors("{shape: wedge, size: [l, h], face: up}") ==
+        std::vector<std::string>{"t.yaml:24:90: 'draw' of body 'suitcase' has face 'up' (expected left or right)"});
+  CHECK(errors("{shape: circle, size: [l], face: left}") ==
+        std::vector<std::string>{
+            "t.yaml:24:88: 'draw' of body 'suitcase' has face 'left' (expected no 'face': only a wedge has one)"});
+  CHECK(errors("{shape: wedge, size: [l]}") ==
+        std::vector<std::string>{
+            "t.yaml:24:76: 'draw' of body 'suitcase': 'size' has 1 entries (expected 2: [base, height])"});
 }
 
 TEST_CASE("FBD: a problem in symbols only is drawn, a couple as an arc with its moment", "[figure]") {
@@ -775,4 +785,196 @@ TEST_CASE("Sketch: a block resting on a block is drawn on it, and the lower one 
         l.points[0].y <= b_bottom + 1e-9)
       floor = std::max(floor, l.points[0].y);
   CHECK(b_bottom == Approx(floor).margin(1e-9));
+}
+
+namespace {
+
+const Figure& figure_captioned(const std::vector<Figure>& figs, const std::string& caption) {
+  const auto f = std::find_if(figs.begin(), figs.end(), [&](const Figure& x) { return x.caption == caption; });
+  if (f == figs.end()) FAIL("no figure " << caption);
+  return *f;
+}
+
+fig::V unit(fig::V a) { return (1 / std::hypot(a.x, a.y)) * a; }
+fig::V direction(const FigureArrow& a) { return unit(fig::vp(a.to) - fig::vp(a.from)); }
+
+// The body's outlines: its free body diagram's, then its mass-times-acceleration diagram's.
+std::vector<const FigureOutline*> outlines_named(const Figure& f, const std::string& name) {
+  std::vector<const FigureOutline*> out;
+  for (const auto& o : f.outlines)
+    if (o.name == name) out.push_back(&o);
+  return out;
+}
+
+bool has_equals_sign(const Figure& f) {
+  return std::any_of(f.texts.begin(), f.texts.end(), [](const FigureLabel& t) { return t.tex == "="; });
+}
+
+}  // namespace
+
+TEST_CASE(
+    "FBD: the ladder's mass-times-acceleration diagram: m L theta''/2 along G's path, m L theta'^2/2 to the "
+    "corner",
+    "[figure][kinetic]") {
+  // By hand: the wall is x = 0, the floor y = 0; G = (-L cos(theta)/2, L sin(theta)/2) moves on
+  // a circle of radius L/2 about the corner: a_G = (L/2) ddot(theta) (sin, cos) + (L/2)
+  // dot(theta)^2 (cos, -sin), the second towards the corner. I alpha = m L^2 ddot(theta)/12.
+  const auto a =
+      analyze_file(TACKLE_SOURCE_DIR "/examples/rotation-ladder-sliding-on-smooth-wall-and-floor.yaml", test::rules());
+  const auto figs = figures_of(*a);
+  const Figure& f = figure_captioned(figs, "Free body diagram of ladder");
+  const auto bars = outlines_named(f, "ladder");
+  REQUIRE(bars.size() == 2);
+  const fig::V A = fig::vp(dot_named(f, "A")), B = fig::vp(dot_named(f, "B"));
+  const fig::V G = 0.5 * (A + B), corner{B.x, A.y};
+  const FigureArrow* tangential = arrow(f, "\\frac{m L \\ddot{\\theta}}{2}");
+  const FigureArrow* central = arrow(f, "\\frac{m L \\dot{\\theta}^{2}}{2}");
+  REQUIRE(tangential);
+  REQUIRE(central);
+  CHECK(tangential->dashed);
+  CHECK(central->dashed);
+  // Both from G in the diagram on the right: the first drawn again, moved along x only.
+  const fig::V moved = fig::vp(central->from) - G;
+  CHECK(moved.y == Approx(0).margin(1e-9));
+  CHECK(moved.x > 0);
+  CHECK(fig::len(fig::vp(tangential->from) - fig::vp(central->from)) < 1e-9);
+  CHECK(fig::len(direction(*central) - unit(corner - G)) < 1e-6);
+  CHECK(std::fabs(fig::dot(direction(*tangential), unit(corner - G))) < 1e-6);
+  // The tangent for a growing theta: (sin, cos), up and towards the wall (G's x grows).
+  CHECK(direction(*tangential).x > 0);
+  CHECK(direction(*tangential).y > 0);
+  // The forces stay on the left, the inertial terms on the right, an equals sign between.
+  double forces_reach = -1e300, inertial_from = 1e300;
+  for (const auto& x : f.arrows) {
+    if (x.axis) continue;
+    if (x.dashed)
+      inertial_from = std::min(inertial_from, x.from.x);
+    else
+      forces_reach = std::max({forces_reach, x.from.x, x.to.x});
+  }
+  CHECK(inertial_from > forces_reach);
+  REQUIRE(has_equals_sign(f));
+  const auto eq = std::find_if(f.texts.begin(), f.texts.end(), [](const FigureLabel& t) { return t.tex == "="; });
+  CHECK(eq->at.x > arrow(f, "N_{B}")->from.x);
+  CHECK(eq->at.x < central->from.x);
+  REQUIRE(f.couples.size() == 1);
+  CHECK(f.couples[0].dashed);
+  CHECK(f.couples[0].label.tex == "\\frac{m L^{2} \\ddot{\\theta}}{12}");
+  CHECK(fig::len(fig::vp(f.couples[0].centre) - fig::vp(central->from)) < 1e-9);
+}
+
+TEST_CASE("FBD: a bob's centripetal term is one arrow, m l theta'^2 towards its pin", "[figure][kinetic]") {
+  // By hand: the bob at l (sin(theta), -cos(theta)) from O, theta = 30 deg: towards O is
+  // (-sin(30 deg), cos(30 deg)) = (-1/2, 0.866).
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/rotation-pendulum.yaml", test::rules());
+  const auto figs = figures_of(*a);
+  const Figure& f = figure_captioned(figs, "Free body diagram of bob");
+  const FigureArrow* central = arrow(f, "m l \\dot{\\theta}^{2}");
+  REQUIRE(central);
+  CHECK(central->dashed);
+  CHECK(direction(*central).x == Approx(-0.5).margin(1e-9));
+  CHECK(direction(*central).y == Approx(std::sqrt(3.0) / 2).margin(1e-9));
+  REQUIRE(arrow(f, "m l \\ddot{\\theta}"));
+  CHECK(std::none_of(f.arrows.begin(), f.arrows.end(),
+                     [](const FigureArrow& x) { return x.label.tex.find("\\sin") != std::string::npos; }));
+}
+
+TEST_CASE("FBD: a body that does not accelerate has no mass-times-acceleration diagram", "[figure][kinetic]") {
+  // The Atwood machine's sheave C is massless: m a = 0, nothing to draw beside its forces.
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/atwood-machine.yaml", test::rules());
+  const auto figs = figures_of(*a);
+  const Figure& f = figure_captioned(figs, "Free body diagram of C");
+  CHECK(f.outlines.size() == 1);
+  CHECK(!has_equals_sign(f));
+  CHECK(std::none_of(f.arrows.begin(), f.arrows.end(), [](const FigureArrow& x) { return x.dashed; }));
+}
+
+TEST_CASE("FBD: a wedge is drawn as its triangle, the block on it turned along its face", "[figure][shape]") {
+  // The description: a right triangle of base b and height b tan(30 deg), its centroid at the
+  // center of mass, the right angle at the lower left; the block slides on the face, which
+  // falls to the right at 30 deg.
+  const auto a = analyze_file(TACKLE_SOURCE_DIR "/examples/block-on-a-moving-wedge.yaml", test::rules());
+  const auto figs = figures_of(*a);
+  const Figure& w = figure_captioned(figs, "Free body diagram of wedge");
+  const auto wedges = outlines_named(w, "wedge");
+  REQUIRE(wedges.size() == 2);
+  const auto& c = wedges[0]->corners;
+  REQUIRE(c.size() == 3);
+  const fig::V base = fig::vp(c[1]) - fig::vp(c[0]), side = fig::vp(c[2]) - fig::vp(c[0]);
+  CHECK(base.y == Approx(0).margin(1e-9));
+  CHECK(base.x > 0);
+  CHECK(side.x == Approx(0).margin(1e-9));
+  CHECK(side.y / base.x == Approx(std::tan(M_PI / 6)).epsilon(1e-9));
+  const fig::V centroid = (1.0 / 3) * (fig::vp(c[0]) + fig::vp(c[1]) + fig::vp(c[2]));
+  CHECK(std::any_of(w.dots.begin(), w.dots.end(),
+                    [&](const FigureDot& d) { return !d.label && fig::len(fig::vp(d.at) - centroid) < 1e-9; }));
+  // The block's sides along the face (30 deg down to the right) and across it.
+  const Figure& b = figure_captioned(figs, "Free body diagram of block");
+  const auto& k = outlines_named(b, "block")[0]->corners;
+  REQUIRE(k.size() == 4);
+  const fig::V edge = unit(fig::vp(k[1]) - fig::vp(k[0]));
+  CHECK(std::fabs(fig::cross(edge, fig::V{std::cos(M_PI / 6), -std::sin(M_PI / 6)})) < 1e-9);
+}
+
+TEST_CASE("Sketch: the block rests on the wedge's face, turned along it", "[figure][sketch][shape]") {
+  const auto f = sketch_of("block-on-a-moving-wedge.yaml");
+  REQUIRE(f);
+  const FigureOutline* wedge = outline_named(*f, "wedge");
+  const FigureOutline* block = outline_named(*f, "block");
+  REQUIRE(wedge);
+  REQUIRE(block);
+  REQUIRE(wedge->corners.size() == 3);
+  REQUIRE(block->corners.size() == 4);
+  // The face from the top to the foot; each of the block's corners is on it or above it, two
+  // of them on it (its bottom side lies on the face), the other two a block's height away.
+  const fig::V top = fig::vp(wedge->corners[2]), foot = fig::vp(wedge->corners[1]);
+  const fig::V along = unit(foot - top), out{-along.y, along.x};  // outward: up and to the right
+  CHECK(out.y > 0);
+  std::vector<double> heights;
+  for (const auto& p : block->corners) heights.push_back(fig::dot(fig::vp(p) - top, out));
+  std::sort(heights.begin(), heights.end());
+  CHECK(heights[0] == Approx(0).margin(1e-9));
+  CHECK(heights[1] == Approx(0).margin(1e-9));
+  CHECK(heights[2] > 0.2);
+  CHECK(heights[3] == Approx(heights[2]).margin(1e-9));
+}
+
+TEST_CASE("Sketch: the pendulum on a cart hangs on its rod from the pin P, drawn open", "[figure][sketch][shape]") {
+  const auto f = sketch_of("rotation-pendulum-on-a-cart.yaml");
+  REQUIRE(f);
+  const auto p =
+      std::find_if(f->dots.begin(), f->dots.end(), [](const FigureDot& d) { return d.label && d.label->tex == "P"; });
+  REQUIRE(p != f->dots.end());
+  CHECK(p->pin);
+  const FigureOutline* bob = outline_named(*f, "bob");
+  REQUIRE(bob);
+  REQUIRE(bob->shape == FigureOutline::Shape::circle);
+  // The rod: from P to the bob's rim, towards its center.
+  CHECK(std::any_of(f->lines.begin(), f->lines.end(), [&](const FigureLine& l) {
+    return l.points.size() == 2 && fig::len(fig::vp(l.points[0]) - fig::vp(p->at)) < 1e-9 &&
+           std::fabs(fig::len(fig::vp(l.points[1]) - fig::vp(bob->centre)) - bob->radius) < 1e-9;
+  }));
+  // In the SVG the pin is an open circle.
+  CHECK(to_svg(*f).find("fill=\"white\" stroke=\"black\"") != std::string::npos);
+}
+
+TEST_CASE("FBD: a wedge facing left is the mirror image", "[figure][shape]") {
+  const std::string yaml =
+      test::example_with("block-on-a-moving-wedge.yaml", R"y(draw: {shape: wedge, size: [b, "b*tan(theta)"]})y",
+                         R"y(draw: {shape: wedge, size: [b, "b*tan(theta)"], face: left})y");
+  const auto a = test::run_text(yaml);
+  const auto figs = figures_of(*a);
+  const Figure& w = figure_captioned(figs, "Free body diagram of wedge");
+  const auto& c = outlines_named(w, "wedge")[0]->corners;
+  REQUIRE(c.size() == 3);
+  // The right angle at the lower right, the top above it: the face looks up and to the left.
+  double lo = 1e300, hi = -1e300;
+  for (const auto& p : c) lo = std::min(lo, p.x), hi = std::max(hi, p.x);
+  const auto top = std::max_element(c.begin(), c.end(), [](const auto& p, const auto& q) { return p.y < q.y; });
+  CHECK(top->x == Approx(hi).margin(1e-9));
+  CHECK(hi > lo);
+  // Counterclockwise still (the outline's inside is on the left of each edge).
+  double area = 0;
+  for (std::size_t i = 0; i < 3; ++i) area += c[i].x * c[(i + 1) % 3].y - c[(i + 1) % 3].x * c[i].y;
+  CHECK(area > 0);
 }
