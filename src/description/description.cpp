@@ -211,7 +211,7 @@ struct Reader {
             b.draw_face = opt_scalar(dr, "face", "'draw' of " + what);
             if (!b.draw_shape)
               diags.error(where(dr, file),
-                          "'draw' of " + what + " has no 'shape' (expected rectangle, circle or wedge)");
+                          "'draw' of " + what + " has no 'shape' (expected rectangle, circle, spool or wedge)");
           }
         }
       }

@@ -55,8 +55,8 @@ struct BodyDesc {
   std::optional<Text> inertia;
   std::optional<Text> shape_kind;
   std::optional<VectorDesc> shape_size;
-  // How the figures draw it: `draw: {shape: rectangle | circle | wedge, size: [w, h] | [d] |
-  // [base, height], face: left | right}` (a wedge's sloping face: right, else left)
+  // How the figures draw it: `draw: {shape: rectangle | circle | spool | wedge, size: [w, h] |
+  // [d] | [D, hub d] | [base, height], face: left | right}` (a wedge's sloping face)
   std::optional<Text> draw_shape;
   std::optional<VectorDesc> draw_size;
   std::optional<Text> draw_face;

@@ -225,6 +225,7 @@ struct FbdDraw {
       const Drawn d = draw_body(m, bodies[i], body_points[i], proj, scale, num, centre,
                                 a == along.end() ? std::nullopt : std::optional<V>(a->second), particle_side, 0.3);
       f.outlines.push_back(d.outline);
+      draw_hub(f, d);
       drawn.push_back(d);
     }
   }
@@ -449,6 +450,7 @@ struct FbdDraw {
     Figure forces = std::move(f);
     f = Figure{};
     f.outlines = forces.outlines;
+    for (const Drawn& d : drawn) draw_hub(f, d);
     pending.clear();
     for (std::size_t i = 0; i < bodies.size(); ++i) inertial(i);
     if (pending.empty() && f.couples.empty()) {

@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <map>
+#include <set>
 #include <optional>
 #include <string>
 #include <vector>
@@ -272,7 +274,13 @@ struct Drawn {
   FigureOutline outline;
   V centre;               // on paper
   bool particle = false;  // forces start on its outline, along their line through the centre
+  double hub = 0;         // a spool's hub: its radius, on paper (0: none)
 };
+
+/// The lines a drawn body adds to its outline: a spool's hub.
+inline void draw_hub(Figure& f, const Drawn& d) {
+  if (d.hub > 0) f.lines.push_back({arc(d.centre, d.hub, 0, 2 * M_PI), false});
+}
 
 // A number of the model's geometry at the layout's numbers, or none.
 using Number = std::function<std::optional<double>(const GiNaC::ex&)>;
@@ -345,6 +353,19 @@ inline FigureLabel place_at_end(Layout& lay, const FigureArrow& a, bool pressing
 /// hanger up to a hatched ceiling when the body hangs below it (above a disk it is in), else
 /// the book's triangle on hatched ground.
 void draw_support(Figure& f, V p, V below_of);
+/// An incline from `foot` to `top` (on paper; its ground below it, `n` its upward normal) as
+/// the book draws it: a triangle on hatched ground, the bodies drawn so far in front of it; up
+/// to its top, or short of a body beside it that does not rest on it (a block hanging by the
+/// top), the rest of the slope hatched. False (nothing drawn) where that would leave less
+/// than half of it.
+bool draw_incline(Figure& f, V n, V foot, V top, const std::vector<std::optional<Drawn>>& drawn);
+/// A wheel (a `wheel` sketch: a car's) touching the ground at `contact` (on paper), `n` the
+/// ground's normal: a small disk on the ground.
+constexpr double wheel_radius = 0.3;
+void draw_wheel(Figure& f, V contact, V n);
+/// At each pulley's point (of `pulleys`): the sum of the directions its strands leave in.
+[[nodiscard]] std::map<int, V> strands_at(const Model& m, const std::set<int>& pulleys,
+                                          const std::function<V(int)>& paper);
 /// Where a block resting on a face (Resting) is drawn: its center moved along the face's
 /// normal until its side lies on the base's outline.
 [[nodiscard]] V on_face(const FigureOutline& base, const Drawn& rider, V normal);

@@ -3,6 +3,8 @@
 // and finished with its axes.
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 
 #include "figure/figure.hpp"
 #include "figure/geometry.hpp"
@@ -143,10 +145,11 @@ struct BodyShape {
     const double unit = proj.dims == 1 ? side : scale;
     const double turned = proj.dims == 2 ? num(b.angle).value_or(0) + proj.turn : 0;
     const V along{std::cos(turned), std::sin(turned)};
-    if (b.drawn_shape == "circle") {
+    if (b.drawn_shape == "circle" || b.drawn_shape == "spool") {
       d.outline.shape = FigureOutline::Shape::circle;
       d.outline.centre = fp(d.centre);
       d.outline.radius = unit * num(b.drawn_size[0]).value_or(1) / 2;
+      if (b.drawn_shape == "spool") d.hub = unit * num(b.drawn_size[1]).value_or(0) / 2;
     } else if (b.drawn_shape == "wedge") {
       // A right triangle on its base about its centroid: the right angle a third of the base
       // and of the height from it, the sloping face towards `face`.
@@ -351,6 +354,61 @@ void draw_support(Figure& f, V p, V below_of) {
     f.lines.push_back({{fp(p), fp(p + V{-0.3, -pin_drop}), fp(p + V{0.3, -pin_drop}), fp(p)}, false});
     draw_ground(f, p + V{-support_width / 2, -pin_drop}, p + V{support_width / 2, -pin_drop}, down);
   }
+}
+
+namespace {
+
+// How far up its slope an incline's triangle reaches: to its top, or short of a body beside
+// it that neither rests on it nor stands above it (a block hanging by its top); none where
+// that leaves less than half of it.
+std::optional<V> incline_end(V n, V foot, V top, const std::vector<std::optional<Drawn>>& drawn) {
+  const double way = top.x > foot.x ? 1 : -1, offset = dot(foot, n);
+  double x = top.x;
+  for (const auto& d : drawn) {
+    if (!d) continue;
+    if (extent_along(d->outline, n).first > offset - 0.05) continue;  // on it, or above it
+    const auto [x0, x1] = extent_along(d->outline, V{1, 0});
+    if (extent_along(d->outline, V{0, 1}).first >= top.y || x1 <= std::min(foot.x, x) || x0 >= std::max(foot.x, x))
+      continue;
+    x = way > 0 ? std::min(x, x0 - 0.15) : std::max(x, x1 + 0.15);
+  }
+  if (way * (x - foot.x) < 0.5 * way * (top.x - foot.x)) return std::nullopt;
+  return foot + ((x - foot.x) / (top.x - foot.x)) * (top - foot);
+}
+
+}  // namespace
+
+bool draw_incline(Figure& f, V n, V foot, V top, const std::vector<std::optional<Drawn>>& drawn) {
+  const std::optional<V> end = incline_end(n, foot, top, drawn);
+  if (!end) return false;
+  const V corner{end->x, foot.y};
+  FigureOutline o;
+  o.corners = {fp(foot), fp(corner), fp(*end)};
+  if (cross(corner - foot, *end - foot) < 0) std::swap(o.corners[1], o.corners[2]);  // counterclockwise
+  f.outlines.insert(f.outlines.begin(), o);                                          // behind the bodies
+  draw_ground(f, foot + (foot.x < corner.x ? -0.3 : 0.3) * V{1, 0}, corner, down);
+  if (len(top - *end) > 0.05) draw_ground(f, *end, top, -1 * n);  // on past a body beside it
+  return true;
+}
+
+void draw_wheel(Figure& f, V contact, V n) {
+  FigureOutline o;
+  o.shape = FigureOutline::Shape::circle;
+  o.centre = fp(contact + wheel_radius * n);
+  o.radius = wheel_radius;
+  f.outlines.push_back(o);
+}
+
+std::map<int, V> strands_at(const Model& m, const std::set<int>& pulleys, const std::function<V(int)>& paper) {
+  std::map<int, V> at;
+  for (const auto& d : m.drawings)
+    if (d.as == "line" || d.as == "spring" || d.as == "damper")
+      for (std::size_t k = 0; k < d.path.size(); ++k)
+        if (pulleys.count(d.path[k]))
+          for (std::size_t j : {k - 1, k + 1})
+            if (j < d.path.size() && len(paper(d.path[j]) - paper(d.path[k])) > 1e-9)
+              at[d.path[k]] = at[d.path[k]] + normalized(paper(d.path[j]) - paper(d.path[k]));
+  return at;
 }
 
 V on_face(const FigureOutline& base, const Drawn& rider, V normal) {

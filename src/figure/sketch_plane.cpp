@@ -63,6 +63,7 @@ struct PlaneSketch {
   std::vector<Surface> surfaces;
   std::set<int> dotted;
   std::set<int> pinned;                            // of the dotted: pins and hinges (drawn open)
+  std::vector<std::pair<int, V>> wheels;           // a wheel's point on the ground, and the ground's normal
   std::vector<std::pair<const Mark*, ex>> marked;  // the angles marked, with the symbol each is named by
 
   // Turned so that gravity points down the page.
@@ -174,18 +175,19 @@ struct PlaneSketch {
   // false where a normal cannot be evaluated.
   bool surface_normals() {
     for (const auto& d : m.drawings) {
-      if (d.as != "surface" || d.body < 0 || d.point < 0) continue;
+      if ((d.as != "surface" && d.as != "wheel") || d.body < 0 || d.point < 0) continue;
       const auto n = point3(m, num, d.vector);
       if (!n || len(proj(*n)) < 1e-12) return false;
       const V u = normalized(proj(*n));
       surfaces_of.push_back({&d, u});
+      if (d.as == "wheel") wheels.push_back({d.point, u});
       along.emplace(d.body, face_way(u));
     }
     return true;
   }
 
-  // Bodies: each outline at its place; a turning particle (a pendulum's bob) hangs from the
-  // farthest point that holds it.
+  // Bodies: each outline at its place, its wheels over it; a turning particle (a pendulum's bob)
+  // hangs from the farthest point that holds it.
   void draw_bodies() {
     const std::vector<Resting> rests = resting(m, num, proj, body_points);
     for (const Resting& r : rests) along.emplace(r.rider, face_way(r.normal));
@@ -206,6 +208,7 @@ struct PlaneSketch {
       const Body& body = m.bodies[b];
       const V centre = drawn[b]->centre;
       f.outlines.push_back(drawn[b]->outline);
+      draw_hub(f, *drawn[b]);
       if (body.drawn_shape.empty() && !body.angle.is_zero() && body.inertia.is_zero()) {
         // Its rod (or string) to the farthest point that holds it: its own, or a pin of
         // another body (the cart's P).
@@ -221,6 +224,7 @@ struct PlaneSketch {
           f.lines.push_back({{fp(far), fp(centre + drawn[b]->outline.radius * normalized(far - centre))}, false});
       }
     }
+    for (const auto& [p, n] : wheels) draw_wheel(f, paper(p), n);
   }
 
   // The drawn body a point belongs to, if any.
@@ -233,7 +237,8 @@ struct PlaneSketch {
   void note_pulleys_and_pins() {
     for (const auto& d : m.drawings) {
       if (d.as == "pulley" && d.point >= 0) pulleys.insert(d.point);
-      if ((d.as == "pin" || d.as == "joint" || d.as == "surface") && d.point >= 0) held.insert(d.point);
+      if ((d.as == "pin" || d.as == "joint" || d.as == "surface" || d.as == "wheel") && d.point >= 0)
+        held.insert(d.point);
     }
   }
 
@@ -301,51 +306,38 @@ struct PlaneSketch {
     surfaces = trimmed;
   }
 
-  // Each surface hatched; an incline's angle with the horizontal marked at its lower end.
+  // Each surface hatched; an incline (its ground below it) a triangle on hatched ground (see
+  // draw_incline); its angle with the horizontal marked at its foot.
   void draw_surfaces() {
     for (const auto& s : surfaces) {
       const V t = perp(s.n), a = s.offset * s.n + s.lo * t, b = s.offset * s.n + s.hi * t;
-      draw_ground(f, a, b, -1 * s.n);
-      if (std::fabs(t.x) > 1e-6 && std::fabs(t.y) > 1e-6) {
-        const V foot = a.y < b.y ? a : b, top = a.y < b.y ? b : a;
-        marks.push_back({foot, V{top.x > foot.x ? 1.0 : -1.0, 0}, normalized(top - foot),
-                         std::acos(std::min(1.0, std::fabs(t.x))), s.geometry, true});
+      if (std::fabs(t.x) <= 1e-6 || std::fabs(t.y) <= 1e-6) {
+        draw_ground(f, a, b, -1 * s.n);
+        continue;
       }
+      const V foot = a.y < b.y ? a : b, top = a.y < b.y ? b : a;
+      const bool triangle = s.n.y > 0 && draw_incline(f, s.n, foot, top, drawn);
+      if (!triangle) draw_ground(f, a, b, -1 * s.n);
+      marks.push_back({foot, V{top.x > foot.x ? 1.0 : -1.0, 0}, normalized(top - foot),
+                       std::acos(std::min(1.0, std::fabs(t.x))), s.geometry, !triangle});
     }
   }
 
-  // A pin's support at p: from a ceiling above when what it holds (at below_of) hangs below
-  // it (or turns about its own center), else a triangle on a hatched base below.
-  void support(V p, V below_of) { draw_support(f, p, below_of); }
-
-  // Pins: the body held at its point by the ground (see support); pins and joints dotted.
+  // Pins: the body held at its point by the ground (draw_support); pins and joints dotted.
   void pins() {
     for (const auto& d : m.drawings) {
       if ((d.as != "pin" && d.as != "joint") || d.point < 0) continue;
       const V p = paper(d.point);
-      if (d.as == "pin" && d.body >= 0 && drawn[d.body]) support(p, drawn[d.body]->centre);
+      if (d.as == "pin" && d.body >= 0 && drawn[d.body]) draw_support(f, p, drawn[d.body]->centre);
       dotted.insert(d.point);
       pinned.insert(d.point);
     }
   }
 
-  // At each pulley's point: the sum of the directions its strands leave in.
-  std::map<int, V> strands_at() {
-    std::map<int, V> at;
-    for (const auto& d : m.drawings)
-      if (d.as == "line" || d.as == "spring" || d.as == "damper")
-        for (std::size_t k = 0; k < d.path.size(); ++k)
-          if (pulleys.count(d.path[k]))
-            for (std::size_t j : {k - 1, k + 1})
-              if (j < d.path.size() && len(paper(d.path[j]) - paper(d.path[k])) > 1e-9)
-                at[d.path[k]] = at[d.path[k]] + normalized(paper(d.path[j]) - paper(d.path[k]));
-    return at;
-  }
-
   // Pulleys at their points; a fixed one held by the end of a ground surface near it (the top
   // of an incline), else on a strut to the ground, away from its strands.
   void draw_pulleys() {
-    std::map<int, V> leaving = strands_at();
+    std::map<int, V> leaving = strands_at(m, pulleys, [&](int p) { return paper(p); });
     for (int p : pulleys) {
       FigureOutline o;
       o.shape = FigureOutline::Shape::circle;
@@ -512,7 +504,7 @@ struct PlaneSketch {
       dotted.insert(pts.back());
       if (d.as == "rod") pinned.insert({pts.front(), pts.back()});
       if (fixed(pts.back()) && !held.count(pts.back()) && !on_a_body(paper(pts.back()))) {
-        support(paper(pts.back()), paper(pts.front()));
+        draw_support(f, paper(pts.back()), paper(pts.front()));
         held.insert(pts.back());
       }
     }
@@ -553,6 +545,7 @@ struct PlaneSketch {
         } else {
           a.from = fp(leave(b.outline, at, u));
           a.to = fp(vp(a.from) + arrow_length * u);
+          if (b.hub > 0 && len(vp(a.from) - at) > 1e-9) f.lines.push_back({{fp(at), a.from}, false});  // off the hub
         }
         int nonzero = 0, which = 0;
         for (int k = 0; k < 2; ++k)

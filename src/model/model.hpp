@@ -46,10 +46,11 @@ struct Body {
   Vec given_acceleration = zero_vec();
   GiNaC::ex along_unknown = 0;
   // How the free body diagram draws it (`draw:`, else its `shape`): "" (from its points),
-  // "rectangle" (size: width, height), "circle" (size: diameter), "rod" (size: length) or
-  // "wedge" (size: base, height; a right triangle on its base, its sloping face to the right,
-  // or to the left where `drawn_face_left`), centred on its center of mass (a wedge's
-  // centroid) and turned by its angle. Drawing only: the mechanics never read it.
+  // "rectangle" (size: width, height), "circle" (size: diameter), "spool" (size: diameter,
+  // its hub's diameter), "rod" (size: length) or "wedge" (size: base, height; a right
+  // triangle on its base, its sloping face to the right, or to the left where
+  // `drawn_face_left`), centred on its center of mass (a wedge's centroid) and turned by its
+  // angle. Drawing only: the mechanics never read it.
   std::string drawn_shape;
   std::vector<GiNaC::ex> drawn_size;
   bool drawn_face_left = false;
@@ -226,12 +227,13 @@ struct Model {
   std::vector<ConnectionNote> connections;  // one per connection, in the description's order
   /// What a mechanism's sketch draws of a connection (its rule's `sketch:`).
   struct Drawing {
-    std::string as;           // line, spring, damper, pulley, support, arrow, contact, surface, pin, joint, rod, couple
+    std::string as;           // line, spring, damper, pulley, support, arrow, contact, surface, wheel, pin, joint, rod,
+                              // couple
     std::string label;        // the connection's label ("force on A": its loads' source)
     std::vector<int> path;    // its path's points (line, spring, damper; contact: between)
-    int point = -1;           // its first point (pulley, surface, pin, joint, arrow)
+    int point = -1;           // its first point (pulley, surface, wheel, pin, joint, arrow)
     std::vector<int> points;  // all its points, in the rule's order (a rod's or a cable's from and to)
-    int body = -1;            // its first body (support, arrow, surface, pin, joint, rod, couple)
+    int body = -1;            // its first body (support, arrow, surface, wheel, pin, joint, rod, couple)
     Vec vector = zero_vec();  // its first vector (a surface's normal)
   };
   std::vector<Drawing> drawings;  // in the description's order

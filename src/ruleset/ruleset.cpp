@@ -325,14 +325,15 @@ struct RuleReader {
   void read_sketch(const yaml::Node& root, Rule& r) {
     if (auto s = root["sketch"]) {
       const auto t = scalar(s, "'sketch'", file, diags);
-      static const std::vector<std::string> kinds{"line",    "spring",  "damper", "pulley", "support", "arrow",
-                                                  "contact", "surface", "pin",    "joint",  "rod",     "couple"};
+      static const std::vector<std::string> kinds{"line",  "spring",  "damper",  "pulley", "support",
+                                                  "arrow", "contact", "surface", "wheel",  "pin",
+                                                  "joint", "rod",     "couple"};
       if (t && std::find(kinds.begin(), kinds.end(), t->text) != kinds.end())
         r.sketch = t->text;
       else if (t)
         diags.error(t->at, "'sketch' is '" + t->text +
-                               "' (expected line, spring, damper, pulley, support, arrow, contact, surface, pin, "
-                               "joint, rod or couple)");
+                               "' (expected line, spring, damper, pulley, support, arrow, contact, surface, wheel, "
+                               "pin, joint, rod or couple)");
     }
   }
 

@@ -16,12 +16,33 @@ namespace {
 
 // `draw: {shape, size}`: the shape the free body diagram gives a body, its sizes lengths that
 // are positive with the given values.
+// The lengths of a `draw:`'s size, each positive with the given values (`numbers`: those
+// values); none where one is not.
+std::optional<std::vector<ex>> drawn_lengths(BuildContext& ctx, const VectorDesc& items, const std::string& what,
+                                             std::vector<double>& numbers) {
+  std::vector<ex> size;
+  const exmap values = ctx.table->values();
+  for (const auto& t : items.items) {
+    auto v = ctx.parse(t, *ctx.table, what);
+    if (!v) return std::nullopt;
+    ctx.check_dimension(*v, Dimension::length(), t.at, what);
+    const ex x = v->subs(values).evalf();
+    if (!is_a<numeric>(x) || !ex_to<numeric>(x).is_real() || ex_to<numeric>(x) <= 0) {
+      ctx.diags.error(t.at, what + ": size '" + t.text + "' is not a positive length with the given values");
+      return std::nullopt;
+    }
+    size.push_back(*v);
+    numbers.push_back(ex_to<numeric>(x).to_double());
+  }
+  return size;
+}
+
 void draw_override(BuildContext& ctx, const BodyDesc& b, Body& body) {
   const std::string what = "'draw' of body '" + body.name + "'";
   const std::string& shape = b.draw_shape->text;
-  const std::size_t n = shape == "rectangle" || shape == "wedge" ? 2 : shape == "circle" ? 1 : 0;
+  const std::size_t n = shape == "rectangle" || shape == "wedge" || shape == "spool" ? 2 : shape == "circle" ? 1 : 0;
   if (n == 0) {
-    ctx.diags.error(b.draw_shape->at, what + " has shape '" + shape + "' (expected rectangle, circle or wedge)");
+    ctx.diags.error(b.draw_shape->at, what + " has shape '" + shape + "' (expected rectangle, circle, spool or wedge)");
     return;
   }
   if (b.draw_face && (shape != "wedge" || (b.draw_face->text != "left" && b.draw_face->text != "right"))) {
@@ -30,7 +51,10 @@ void draw_override(BuildContext& ctx, const BodyDesc& b, Body& body) {
                                          ")");
     return;
   }
-  const std::string sizes = shape == "wedge" ? "[base, height]" : n == 2 ? "[width, height]" : "[diameter]";
+  const std::string sizes = shape == "wedge"   ? "[base, height]"
+                            : shape == "spool" ? "[diameter, hub diameter]"
+                            : n == 2           ? "[width, height]"
+                                               : "[diameter]";
   if (!b.draw_size) {
     ctx.diags.error(b.draw_shape->at, what + " has no 'size' (expected " + sizes + ")");
     return;
@@ -40,21 +64,17 @@ void draw_override(BuildContext& ctx, const BodyDesc& b, Body& body) {
                                          " entries (expected " + std::to_string(n) + ": " + sizes + ")");
     return;
   }
-  std::vector<ex> size;
-  const exmap values = ctx.table->values();
-  for (const auto& t : b.draw_size->items) {
-    auto v = ctx.parse(t, *ctx.table, what);
-    if (!v) return;
-    ctx.check_dimension(*v, Dimension::length(), t.at, what);
-    const ex x = v->subs(values).evalf();
-    if (!is_a<numeric>(x) || !ex_to<numeric>(x).is_real() || ex_to<numeric>(x) <= 0) {
-      ctx.diags.error(t.at, what + ": size '" + t.text + "' is not a positive length with the given values");
-      return;
-    }
-    size.push_back(*v);
+  std::vector<double> numbers;
+  auto size = drawn_lengths(ctx, *b.draw_size, what, numbers);
+  if (!size) return;
+  if (shape == "spool" && numbers[1] >= numbers[0]) {
+    const auto& items = b.draw_size->items;
+    ctx.diags.error(items[1].at, what + ": the hub's diameter '" + items[1].text + "' is not less than the spool's '" +
+                                     items[0].text + "' (expected a hub inside the spool)");
+    return;
   }
   body.drawn_shape = shape;
-  body.drawn_size = std::move(size);
+  body.drawn_size = std::move(*size);
   body.drawn_face_left = b.draw_face && b.draw_face->text == "left";
 }
 

@@ -370,7 +370,7 @@ TEST_CASE("FBD: a wrong 'draw' is located", "[figure][errors]") {
   };
   CHECK(errors("{shape: blob, size: [l]}") ==
         std::vector<std::string>{
-            "t.yaml:24:63: 'draw' of body 'suitcase' has shape 'blob' (expected rectangle, circle or wedge)"});
+            "t.yaml:24:63: 'draw' of body 'suitcase' has shape 'blob' (expected rectangle, circle, spool or wedge)"});
   CHECK(errors("{shape: rectangle, size: [l]}") ==
         std::vector<std::string>{
             "t.yaml:24:80: 'draw' of body 'suitcase': 'size' has 1 entries (expected 2: [width, height])"});
@@ -384,6 +384,9 @@ TEST_CASE("FBD: a wrong 'draw' is located", "[figure][errors]") {
   CHECK(errors("{shape: circle, size: [l], face: left}") ==
         std::vector<std::string>{
             "t.yaml:24:88: 'draw' of body 'suitcase' has face 'left' (expected no 'face': only a wedge has one)"});
+  CHECK(errors("{shape: spool, size: [h, l]}") ==
+        std::vector<std::string>{"t.yaml:24:80: 'draw' of body 'suitcase': the hub's diameter 'l' is not less than the "
+                                 "spool's 'h' (expected a hub inside the spool)"});
   CHECK(errors("{shape: wedge, size: [l]}") ==
         std::vector<std::string>{
             "t.yaml:24:76: 'draw' of body 'suitcase': 'size' has 1 entries (expected 2: [base, height])"});
@@ -977,4 +980,94 @@ TEST_CASE("FBD: a wedge facing left is the mirror image", "[figure][shape]") {
   double area = 0;
   for (std::size_t i = 0; i < 3; ++i) area += c[i].x * c[(i + 1) % 3].y - c[(i + 1) % 3].x * c[i].y;
   CHECK(area > 0);
+}
+
+namespace {
+
+// The sketch's outlines of `corners` corners without a body's name (the ground's shapes).
+std::vector<const FigureOutline*> unnamed_polygons(const Figure& f, std::size_t corners) {
+  std::vector<const FigureOutline*> out;
+  for (const auto& o : f.outlines)
+    if (o.name.empty() && o.shape == FigureOutline::Shape::polygon && o.corners.size() == corners) out.push_back(&o);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("Sketch: an incline is a triangle at its angle, the cylinder rolling on its slope",
+          "[figure][sketch][shape]") {
+  // The description: the slope falls to the right at theta = 30 deg; the cylinder (radius r)
+  // touches it at C.
+  const auto f = sketch_of("rotation-cylinder-rolling-down-incline.yaml");
+  REQUIRE(f);
+  const auto triangles = unnamed_polygons(*f, 3);
+  REQUIRE(triangles.size() == 1);
+  const auto& c = triangles[0]->corners;
+  // One side horizontal (the base), one vertical (the back), the third at 30 deg.
+  int horizontal = 0, vertical = 0, slope = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const fig::V e = fig::vp(c[(i + 1) % 3]) - fig::vp(c[i]);
+    if (std::fabs(e.y) < 1e-9) ++horizontal;
+    if (std::fabs(e.x) < 1e-9) ++vertical;
+    if (std::fabs(std::fabs(e.y / e.x) - std::tan(M_PI / 6)) < 1e-9) ++slope;
+  }
+  CHECK(horizontal == 1);
+  CHECK(vertical == 1);
+  CHECK(slope == 1);
+  // The cylinder touches the slope: its center a radius from the slope's line.
+  const FigureOutline* cylinder = outline_named(*f, "cylinder");
+  REQUIRE(cylinder);
+  CHECK(fig::boundary_distance(*triangles[0], fig::vp(cylinder->centre)) == Approx(cylinder->radius).margin(1e-6));
+}
+
+TEST_CASE("Sketch: the incline's triangle stops short of the block hanging beside its top", "[figure][sketch][shape]") {
+  const auto f = sketch_of("incline-and-hanging-block.yaml");
+  REQUIRE(f);
+  const auto triangles = unnamed_polygons(*f, 3);
+  REQUIRE(triangles.size() == 1);
+  const FigureOutline* b = outline_named(*f, "B");
+  REQUIRE(b);
+  double right = -1e300;
+  for (const auto& p : triangles[0]->corners) right = std::max(right, p.x);
+  double left = 1e300;
+  for (const auto& p : b->corners) left = std::min(left, p.x);
+  CHECK(right < left);
+}
+
+TEST_CASE("Sketch: a spool shows its hub, its string leaving the hub at H", "[figure][sketch][shape]") {
+  // The description: R = 0.2 m, its hub r = 0.1 m; H is the bottom of the hub, where the
+  // string pulls to the right.
+  const auto f = sketch_of("rotation-spool-pulled-by-its-string.yaml");
+  REQUIRE(f);
+  const FigureOutline* spool = outline_named(*f, "spool");
+  REQUIRE(spool);
+  const fig::V o = fig::vp(spool->centre);
+  const auto hub = std::find_if(f->lines.begin(), f->lines.end(), [&](const FigureLine& l) {
+    return l.points.size() > 8 && std::all_of(l.points.begin(), l.points.end(), [&](const FigurePoint& p) {
+             return std::fabs(fig::len(fig::vp(p) - o) - spool->radius / 2) < 1e-6;
+           });
+  });
+  CHECK(hub != f->lines.end());
+  const fig::V h = o + fig::V{0, -spool->radius / 2};
+  CHECK(std::any_of(f->lines.begin(), f->lines.end(), [&](const FigureLine& l) {
+    return l.points.size() == 2 && fig::len(fig::vp(l.points[0]) - h) < 1e-6 &&
+           std::fabs(fig::boundary_distance(*spool, fig::vp(l.points[1]))) < 1e-6;
+  }));
+}
+
+TEST_CASE("Sketch: a car stands on its wheels, one on the ground at each wheel's point", "[figure][sketch][shape]") {
+  const auto f = sketch_of("car-braking-all.yaml");
+  REQUIRE(f);
+  std::vector<const FigureOutline*> wheels;
+  for (const auto& o : f->outlines)
+    if (o.name.empty() && o.shape == FigureOutline::Shape::circle) wheels.push_back(&o);
+  REQUIRE(wheels.size() == 2);
+  for (const auto* w : wheels) {
+    // Its lowest point on the ground line, which the hatching hangs from.
+    const double bottom = w->centre.y - w->radius;
+    CHECK(std::any_of(f->lines.begin(), f->lines.end(), [&](const FigureLine& l) {
+      return !l.thin && l.points.size() == 2 && std::fabs(l.points[0].y - bottom) < 1e-9 &&
+             std::fabs(l.points[1].y - bottom) < 1e-9;
+    }));
+  }
 }

@@ -101,7 +101,7 @@ TEST_CASE("Rules: a sketch kind and the summary's symbols are checked", "[rules]
   CHECK(rule_errors(text, "rules/bumper.yaml") ==
         std::vector<std::string>{
             "rules/bumper.yaml:3:9: 'sketch' is 'zigzag' (expected line, spring, damper, pulley, support, arrow, "
-            "contact, surface, pin, joint, rod or couple)",
+            "contact, surface, wheel, pin, joint, rod or couple)",
             "rules/bumper.yaml:2:10: in 'mu*M': unknown name 'M' (known: mu, N)",
         });
   // Read, the rule keeps them: the sketch kind, and the summary as written.
