@@ -1,4 +1,5 @@
 // A Figure as TikZ and as SVG; labels' LaTeX as SVG text.
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <vector>
@@ -282,10 +283,46 @@ std::size_t shown_length(const std::string& tex) {
 
 namespace {
 
+// The brace group at `i` (its text without the braces; `i` moved past it), or the one
+// character there.
+std::string brace_group(const std::string& s, std::size_t& i) {
+  if (i >= s.size()) return "";
+  if (s[i] != '{') return std::string(1, s[i++]);
+  int depth = 0;
+  const std::size_t from = ++i;
+  for (; i < s.size(); ++i) {
+    if (s[i] == '{') ++depth;
+    if (s[i] == '}' && depth-- == 0) break;
+  }
+  const std::string inner = s.substr(from, i - from);
+  if (i < s.size()) ++i;
+  return inner;
+}
+
+// A label's fractions written on one line, as the SVG shows them (m L \ddot{\theta}/2, not a
+// stacked fraction too small to read in a figure): a/b, with parentheses only where needed
+// (a sum above, a sum or product below).
+std::string slashed(const std::string& tex) {
+  std::string out;
+  for (std::size_t i = 0; i < tex.size();) {
+    if (tex.compare(i, 5, "\\frac") != 0 ||
+        (i + 5 < tex.size() && std::isalpha(static_cast<unsigned char>(tex[i + 5])))) {
+      out += tex[i++];
+      continue;
+    }
+    i += 5;
+    const std::string a = slashed(brace_group(tex, i)), b = slashed(brace_group(tex, i));
+    auto sum = [](const std::string& t) { return t.find_first_of("+-") != std::string::npos; };
+    out += (sum(a) ? "\\left(" + a + "\\right)" : a) + "/" +
+           (sum(b) || b.find(' ') != std::string::npos ? "\\left(" + b + "\\right)" : "{" + b + "}");
+  }
+  return out;
+}
+
 // A label as a TikZ node: its text centred in the box the layout kept, scaled down where it
 // would be wider or higher than the box (\tacklelabel, defined in each picture).
 std::string tikz_label(const FigureLabel& l) {
-  const std::string text = "$" + l.tex + "$";
+  const std::string text = "$" + slashed(l.tex) + "$";
   const std::string body = l.width > 0 && l.height > 0
                                ? "\\tacklelabel{" + num(l.width) + "cm}{" + num(l.height) + "cm}{" + text + "}"
                                : text;

@@ -347,7 +347,8 @@ TEST_CASE(
   // TikZ: the same centre, the box's size given to \tacklelabel.
   Figure f;
   f.texts.push_back(l);
-  CHECK(to_tikz(f).find("at (2,3) {\\tacklelabel{0.5cm}{0.42cm}{$" + l.tex + "$}}") != std::string::npos);
+  CHECK(to_tikz(f).find("at (2,3) {\\tacklelabel{0.5cm}{0.42cm}{$m L^{2} \\ddot{\\theta}/{12}$}}") !=
+        std::string::npos);
 }
 
 TEST_CASE("FBD: a description draws a body as it says", "[figure]") {
@@ -1070,4 +1071,22 @@ TEST_CASE("Sketch: a car stands on its wheels, one on the ground at each wheel's
              std::fabs(l.points[1].y - bottom) < 1e-9;
     }));
   }
+}
+
+TEST_CASE("FBD: a label's fractions are written on one line in TikZ, as in the SVG", "[figure]") {
+  Figure f;
+  FigureArrow a;
+  a.from = {0, 0};
+  a.to = {1, 0};
+  a.label.tex = "\\frac{m L \\ddot{\\theta}}{2}";
+  f.arrows.push_back(a);
+  FigureLabel sum;
+  sum.tex = "\\frac{a + b}{c d}";
+  f.texts.push_back(sum);
+  const std::string tikz = to_tikz(f);
+  CHECK(tikz.find("$m L \\ddot{\\theta}/{2}$") != std::string::npos);
+  CHECK(tikz.find("$\\left(a + b\\right)/\\left(c d\\right)$") != std::string::npos);
+  CHECK(tikz.find("\\frac") == std::string::npos);
+  // The SVG says the same: m L θ̈/2.
+  CHECK(svg_text("\\frac{a + b}{c d}").find("(a") != std::string::npos);
 }
